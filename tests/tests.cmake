@@ -1,0 +1,28 @@
+# Every tests/unit/test_<name>.c is one test executable linked with the engine
+# (and the renderers when they exist).
+function(bg_add_test name)
+  add_executable(test_${name} ${CMAKE_SOURCE_DIR}/tests/unit/test_${name}.c)
+  target_include_directories(test_${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/unit)
+  target_link_libraries(test_${name} PRIVATE ${BG_LIBS})
+  target_compile_definitions(test_${name} PRIVATE
+    BG_SOURCE_DIR="${CMAKE_SOURCE_DIR}" BG_BINARY_DIR="${CMAKE_BINARY_DIR}"
+    BG_EXE="$<TARGET_FILE:bgdraw>")
+  add_test(NAME ${name} COMMAND test_${name})
+  set_tests_properties(${name} PROPERTIES TIMEOUT 600
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+endfunction()
+
+file(GLOB BG_UNIT_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/unit/test_*.c)
+foreach(f ${BG_UNIT_TESTS})
+  get_filename_component(n ${f} NAME_WE)
+  string(REGEX REPLACE "^test_" "" n ${n})
+  bg_add_test(${n})
+endforeach()
+
+# Script-driven tests (shell), one per tests/*.sh
+file(GLOB BG_SCRIPT_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/*.sh)
+foreach(f ${BG_SCRIPT_TESTS})
+  get_filename_component(n ${f} NAME_WE)
+  add_test(NAME ${n} COMMAND bash ${f} $<TARGET_FILE:bgdraw>)
+  set_tests_properties(${n} PROPERTIES TIMEOUT 900 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+endforeach()

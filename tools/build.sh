@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs missing packages, configures (once) and builds bgdraw into build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/deps.sh
+BUILD_TYPE=${BUILD_TYPE:-RelWithDebInfo}
+BUILD_DIR=${BUILD_DIR:-build}
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+fi
+cmake --build "$BUILD_DIR" -j"$(nproc)" >/dev/null

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages bgdraw needs, only if some are missing.
+# Runs as root (or with sudo available). Idempotent and quick when nothing is missing.
+set -euo pipefail
+PKGS=(gcc make cmake pkg-config
+      libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev
+      fonts-dejavu-core poppler-utils libxml2-utils python3)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  echo "bgdraw: installing ${missing[*]}" >&2
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
