@@ -26,6 +26,9 @@ typedef enum {
 typedef enum { BG_FORM_ODE, BG_FORM_DAE, BG_FORM_INCOMPLETE } bg_model_form;
 typedef enum { BG_MESH_NONE, BG_MESH_EVEN, BG_MESH_ODD, BG_MESH_NEUTRAL } bg_mesh;
 typedef enum { BG_TLOOP_FLAT, BG_TLOOP_OPEN } bg_tloop_kind;
+/* path_order of a path with a source end: it closes no loop (Remark 4.1);
+ * the JSON writes null. */
+#define BG_PATH_ORDER_NONE (-1000000)
 
 /* A signal of the signal flow graph: 2*bond + 0 for its effort, + 1 for its flow. */
 #define BG_SIG_EFFORT(b) (2 * (b))

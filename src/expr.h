@@ -54,13 +54,16 @@ typedef struct bg_prog bg_prog;
 
 /* Compiles the expressions roots[0..nroots) into one program whose result k
  * is written to out[k]. Common subexpressions are not merged (yet); constant
- * subtrees are folded. The caller owns the program (bg_prog_free). */
+ * subtrees are folded. The caller owns the program (bg_prog_free); m is
+ * borrowed (tables are read from it at run time) and must outlive it.
+ * map is nullable (no variables: every expression must fold). */
 bg_prog *bg_prog_compile(const bg_model *m, const int *roots, int nroots,
                          const bg_slotmap *map);
 /* Runs the program: reads vars (laid out per the slot map), writes out.
  * No allocation, no name look-up; thread-compatible (scratch lives in p:
  * use one program per thread). */
 void bg_prog_eval(bg_prog *p, const double *vars, double *out);
+/* Length of the code (the data entries of a fused sum count as instructions). */
 int bg_prog_ninstr(const bg_prog *p);
 void bg_prog_free(bg_prog *p);
 #endif

@@ -6,12 +6,17 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "analysis.h"
+#include "causality.h"
 #include "cli_opts.h"
 #include "diag.h"
 #include "fileio.h"
+#include "json.h"
 #include "model.h"
 #include "parse.h"
+#include "paths.h"
 #include "strbuf.h"
+#include "summary.h"
 
 enum { EXIT_OK = 0, EXIT_MODEL = 1, EXIT_USAGE = 2, EXIT_SIM = 3, EXIT_WRITE = 4 };
 
@@ -27,9 +32,12 @@ typedef struct run {
   bg_diags dg;
   bg_ast *ast;
   bg_model *model;
+  bg_analysis analysis;
+  int analysed;
 } run;
 
 static void run_free(run *r) {
+  if (r->analysed) bg_analysis_free(&r->analysis);
   if (r->model) bg_model_free(r->model);
   if (r->ast) bg_ast_free(r->ast);
   bg_diags_free(&r->dg);
@@ -55,10 +63,25 @@ static int load_model(run *r) {
   return r->model && !r->dg.nerrors ? 0 : -1;
 }
 
+/* Causality and causal analysis with the method the user asked for, else
+ * the model's own, else SCAP. */
+static void analyse(run *r) {
+  int method = r->model->method;
+  if (r->opts.causality) method = bg_method_parse(r->opts.causality);
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: causality (%s)\n", bg_method_name(method));
+  bg_analysis_init(&r->analysis, r->model);
+  r->analysed = 1;
+  bg_causality_assign(r->model, method, &r->analysis, &r->dg);
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: causal paths, loops, form and index\n");
+  bg_analysis_run(r->model, &r->analysis, NULL);
+}
+
 static int print_check(run *r) {
   bg_strbuf sb = {0};
   bg_model_summary(r->model, &sb);
-  printf("%s\n", bg_sb_str(&sb));
+  bg_sb_putc(&sb, '\n');
+  bg_analysis_summary(r->model, &r->analysis, &sb);
+  fputs(bg_sb_str(&sb), stdout);
   bg_sb_free(&sb);
   return EXIT_OK;
 }
@@ -72,12 +95,32 @@ static void default_output(run *r, char *buf, size_t n) {
   r->opts.nout = 1;
 }
 
+static int write_text(const char *path, const bg_strbuf *sb) {
+  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
+  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
+  return EXIT_WRITE;
+}
+
+static int write_json(run *r, const char *path) {
+  bg_strbuf sb = {0};
+  bg_json_write_analysis(r->model, &r->analysis, &sb);
+  int rc = write_text(path, &sb);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int write_one(run *r, const bg_cli_output *out) {
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: writing %s\n", out->path);
+  if (!strcmp(out->format, "json")) return write_json(r, out->path);
+  fprintf(stderr, "bgdraw: error: %s output is not implemented yet ('%s')\n", out->format,
+          out->path);
+  return EXIT_WRITE;
+}
+
 static int write_outputs(run *r) {
   for (int i = 0; i < r->opts.nout; i++) {
-    const bg_cli_output *out = &r->opts.out[i];
-    fprintf(stderr, "bgdraw: error: %s output is not implemented yet ('%s')\n", out->format,
-            out->path);
-    return EXIT_WRITE;
+    int rc = write_one(r, &r->opts.out[i]);
+    if (rc) return rc;
   }
   return EXIT_OK;
 }
@@ -101,6 +144,7 @@ int main(int argc, char **argv) {
     run_free(&r);
     return EXIT_MODEL;
   }
+  analyse(&r);
   char defpath[1024];
   if (r.opts.check) rc = print_check(&r);
   else {

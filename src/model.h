@@ -6,6 +6,7 @@
 #include "arena.h"
 #include "ast.h"
 #include "diag.h"
+#include "strbuf.h"
 
 /* ---------------------------------------------------------------- element kinds */
 typedef enum {
@@ -205,4 +206,7 @@ int bg_model_find_elem(const bg_model *m, const char *name);
 int bg_model_find_bond(const bg_model *m, int number);
 const char *bg_method_name(int method);
 int bg_method_parse(const char *s); /* -1 if unknown */
+/* One-line human summary for --check, e.g. "rlc: 4 elements (Se 1, R 1, I 1, C 1),
+ * 1 junction, 4 bonds; 2 stores, 1 source" (no newline). */
+void bg_model_summary(const bg_model *m, bg_strbuf *out);
 #endif

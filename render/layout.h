@@ -1,0 +1,35 @@
+/* Layout: node positions (and optionally edge splines) from Graphviz. The
+ * only interface to Graphviz; everything is drawn by bgdraw itself. */
+#ifndef BG_LAYOUT_H
+#define BG_LAYOUT_H
+#include <stddef.h>
+
+typedef struct bg_layout_in {
+  int nnode;
+  const double *w, *h;       /* node box sizes in points */
+  const int *pinned;         /* nullable: node has a fixed position */
+  const double *px, *py;     /* nullable: the fixed position (points, y up) */
+  int nedge;
+  const int *tail, *head;    /* node indices */
+  const char *engine;        /* "dot", "neato", "fdp", "sfdp", "pinned" */
+  const char *rankdir;       /* dot only: "LR", "TB", "RL", "BT" */
+  double node_sep, rank_sep; /* points */
+  int splines;               /* route edges as splines (else straight lines) */
+} bg_layout_in;
+
+typedef struct bg_layout {
+  double width, height;  /* bounding box of the nodes, points */
+  double *x, *y;         /* node centres, y down, origin top-left of the box */
+  int *spladr, *spln;    /* per edge: cubic Bezier points tail → head (3k+1), n 0 = none */
+  double *splx, *sply;
+  int nspl;
+  char engine[16];       /* the engine actually used */
+} bg_layout;
+
+/* Lays out the graph. Returns 0, or -1 with a message in err. The caller
+ * frees out with bg_layout_free. */
+int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn);
+void bg_layout_free(bg_layout *l);
+/* Whether name is an engine bg_layout_run accepts. */
+int bg_layout_engine_ok(const char *name);
+#endif

@@ -1,0 +1,342 @@
+/* Causal paths and causal loops: a hand-built model, then the reference
+ * examples (EXAMPLES.md), comparing whole lists. */
+#include "harness.h"
+
+/* Loads examples/NAME.bg, assigns causality with `method` and runs the
+ * analysis. The per-bond/per-element arrays causality needs are allocated
+ * here so the test does not depend on where bg_analysis_init lives. */
+#include <stdlib.h>
+#include "causality.h"
+#include "expr.h"
+#include "parse.h"
+#include "paths.h"
+#include "sfg.h"
+
+typedef struct fx {
+  bg_model *m;
+  bg_analysis a;
+  bg_diags dg;
+  char *src;
+} fx;
+
+static void fx_init_analysis(bg_analysis *a, const bg_model *m) {
+  memset(a, 0, sizeof *a);
+  size_t nb = (size_t)m->nbond + 1, ne = (size_t)m->nelem + 1;
+  a->bond_stroke = bg_arena_alloc(&a->arena, nb * sizeof(int));
+  a->bond_reason = bg_arena_alloc(&a->arena, nb * sizeof(int));
+  a->bond_step = bg_arena_alloc(&a->arena, nb * sizeof(int));
+  a->bond_conflict = bg_arena_alloc(&a->arena, nb * sizeof(int));
+  a->elem_caus = bg_arena_alloc(&a->arena, ne * sizeof(int));
+  a->elem_inverted = bg_arena_alloc(&a->arena, ne * sizeof(int));
+  a->index_predicted = -1;
+}
+
+/* edit: optional (from, to) text replacement in the source, for variants */
+static int fx_load(fx *f, const char *name, int method, const char *set_name, double set_value,
+                   const char *from, const char *to) {
+  char path[512];
+  size_t len;
+  snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
+  memset(f, 0, sizeof *f);
+  f->src = bg_read_file(path, &len);
+  if (!f->src) { fprintf(stderr, "cannot read %s\n", path); return -1; }
+  if (from) {
+    char *p = strstr(f->src, from);
+    if (!p) { fprintf(stderr, "%s: no '%s'\n", name, from); return -1; }
+    size_t nf = strlen(from), nt = strlen(to);
+    char *s = bg_xmalloc(len - nf + nt + 1);
+    memcpy(s, f->src, (size_t)(p - f->src));
+    memcpy(s + (p - f->src), to, nt);
+    strcpy(s + (p - f->src) + nt, p + nf);
+    free(f->src);
+    f->src = s;
+    len = strlen(s);
+  }
+  bg_diags_init(&f->dg, path, f->src, len);
+  bg_ast *ast = bg_parse_string(path, f->src, len, &f->dg);
+  bg_param_override ov = {set_name, set_value};
+  if (ast && !f->dg.nerrors) f->m = bg_model_compile(ast, &ov, set_name ? 1 : 0, &f->dg);
+  if (ast) bg_ast_free(ast);
+  if (!f->m) { bg_diags_print(&f->dg, stderr); return -1; }
+  fx_init_analysis(&f->a, f->m);
+  bg_causality_assign(f->m, method, &f->a, &f->dg);
+  bg_analysis_run(f->m, &f->a, NULL);
+  return 0;
+}
+
+static void fx_free(fx *f) {
+  bg_arena_free(&f->a.arena);
+  if (f->m) bg_model_free(f->m);
+  bg_diags_free(&f->dg);
+  free(f->src);
+}
+
+/* "1,2,3" from bond numbers of a list */
+__attribute__((unused)) static const char *fx_bonds(const bg_model *m, const int *b, int n) {
+  static char buf[4][512];
+  static int k;
+  char *s = buf[k++ % 4];
+  s[0] = 0;
+  for (int i = 0; i < n; i++)
+    snprintf(s + strlen(s), 512 - strlen(s), "%s%d", i ? "," : "", m->bond_num[b[i]]);
+  return s;
+}
+
+__attribute__((unused)) static const char *fx_sigs(const bg_model *m, const int *sig, int n) {
+  static char buf[4][1024];
+  static int k;
+  char *s = buf[k++ % 4], nm[96];
+  s[0] = 0;
+  for (int i = 0; i < n; i++) {
+    bg_sfg_node_name(m, sig[i], nm, sizeof nm);
+    snprintf(s + strlen(s), 1024 - strlen(s), "%s%s", i ? " " : "", nm);
+  }
+  return s;
+}
+
+__attribute__((unused)) static void fx_dump(const fx *f) {
+  const bg_model *m = f->m;
+  const bg_analysis *a = &f->a;
+  printf("== %s complete=%d\n", m->name, a->complete);
+  for (int b = 0; b < m->nbond; b++) printf(" b%d:%s", m->bond_num[b], a->bond_stroke[b] == 1 ? "H" : a->bond_stroke[b] == 2 ? "T" : "-");
+  printf("\n");
+  for (int p = 0; p < a->npath; p++)
+    printf(" path %d: {%s} %s-%s %s class %d order %d\n", p + 1,
+           fx_bonds(m, a->path_bonds + a->path_adr[p], a->path_n[p]), m->elem_name[a->path_end0[p]],
+           m->elem_name[a->path_end1[p]], a->path_kind[p], a->path_class[p], a->path_order[p]);
+  for (int l = 0; l < a->ncloop; l++)
+    printf(" cloop %d: {%s} gain %s = %g class %d mesh %d\n", l + 1,
+           fx_bonds(m, a->cloop_bonds + a->cloop_adr[l], a->cloop_n[l]), a->cloop_gain[l],
+           a->cloop_gain_value[l], a->cloop_class[l], a->cloop_mesh[l]);
+  for (int t = 0; t < a->ntloop; t++)
+    printf(" tloop %d: %s order %d [%s] gain %s = %g alg %d cause %s\n", t + 1,
+           a->tloop_kind[t] ? "open" : "flat", a->tloop_order[t],
+           fx_sigs(m, a->tloop_signals + a->tloop_adr[t], a->tloop_n[t]), a->tloop_gain[t],
+           a->tloop_gain_value[t], a->tloop_algebraic[t], a->tloop_cause[t]);
+  printf(" states:");
+  for (int i = 0; i < a->nstates; i++) printf(" %s", a->states[i]);
+  printf("\n dependent:");
+  for (int i = 0; i < a->ndependent; i++) printf(" %s", a->dependent_stores[i]);
+  printf("\n algebraic:");
+  for (int i = 0; i < a->nalgebraic; i++) printf(" %s", a->algebraic_variables[i]);
+  printf("\n form %d index %d (%s) pdep %d disjoint %d RA %d\n", a->form, a->index_predicted,
+         a->index_reason, a->form_parameter_dependent, a->cloops_disjoint, a->rosenberg_andry);
+  for (int i = 0; i < a->nestimate; i++)
+    printf(" estimate %s path %d = %g\n", a->estimate_kind[i] ? "omega" : "tau", a->estimate_path[i] + 1,
+           a->estimate_value[i]);
+}
+
+/* ------------------------------------------------------------ list texts */
+/* One line per path: "bonds ends kind class order" (order "-" at a source). */
+static const char *path_line(const fx *f, int p) {
+  static char buf[8][600];
+  static int k;
+  const bg_model *m = f->m;
+  const bg_analysis *a = &f->a;
+  char *s = buf[k++ % 8], ord[16];
+  if (a->path_order[p] == BG_PATH_ORDER_NONE) snprintf(ord, sizeof ord, "-");
+  else snprintf(ord, sizeof ord, "%d", a->path_order[p]);
+  snprintf(s, 600, "%s %s-%s %s %d %s", fx_bonds(m, a->path_bonds + a->path_adr[p], a->path_n[p]),
+           m->elem_name[a->path_end0[p]], m->elem_name[a->path_end1[p]], a->path_kind[p],
+           a->path_class[p], ord);
+  return s;
+}
+
+static void check_paths(const fx *f, const char **want, int n) {
+  INT_EQ(f->a.npath, n);
+  INT_EQ(f->a.npath_omitted, 0);
+  for (int i = 0; i < n && i < f->a.npath; i++) STR_EQ(path_line(f, i), want[i]);
+}
+
+/* The zero-order paths between non-source ends, in list order. */
+static void check_zero_order(const fx *f, const char **want, int n) {
+  int k = 0;
+  for (int p = 0; p < f->a.npath; p++) {
+    if (f->a.path_order[p] != 0) continue;
+    if (k < n) STR_EQ(path_line(f, p), want[k]);
+    k++;
+  }
+  INT_EQ(k, n);
+}
+
+static const char *cloop_bonds(const fx *f, int l) {
+  return fx_bonds(f->m, f->a.cloop_bonds + f->a.cloop_adr[l], f->a.cloop_n[l]);
+}
+
+/* ------------------------------------------------------------ hand-built model */
+/* Series RLC: Se U -> 1 j; j -> R1, j -> L1, j -> C1, strokes as SCAP sets them. */
+static void test_hand_rlc(void) {
+  bg_model m;
+  memset(&m, 0, sizeof m);
+  static int kind[] = {BG_ELEM_SE, BG_ELEM_J1, BG_ELEM_R, BG_ELEM_I, BG_ELEM_C};
+  static const char *name[] = {"U", "j", "R1", "L1", "C1"};
+  static int bondadr[] = {0, 1, 5, 6, 7}, nbond[] = {1, 4, 1, 1, 1};
+  static int bonds[] = {0, 0, 1, 2, 3, 1, 2, 3};
+  static int expr[] = {-1, -1, -1, -1, -1}, form[] = {1, 0, 1, 1, 1}, init[] = {-1, -1, -1, -1, -1};
+  static int num[] = {1, 2, 3, 4}, tail[] = {0, 1, 1, 1}, head[] = {1, 2, 3, 4};
+  m.nelem = 5; m.nbond = 4; m.nbondref = 8;
+  m.elem_kind = kind; m.elem_name = name; m.elem_bondadr = bondadr; m.elem_nbond = nbond;
+  m.elem_bonds = bonds; m.elem_expr = expr; m.elem_form = form; m.elem_init = init;
+  m.bond_num = num; m.bond_tail = tail; m.bond_head = head;
+  bg_analysis a;
+  fx_init_analysis(&a, &m);
+  a.complete = 1;
+  int stroke[] = {BG_STROKE_HEAD, BG_STROKE_TAIL, BG_STROKE_HEAD, BG_STROKE_TAIL};
+  memcpy(a.bond_stroke, stroke, sizeof stroke);
+  bg_paths_find(&m, &a, 0);
+  bg_cloops_find(&m, &a, 0);
+  fx f = {&m, a, {0}, NULL};
+  const char *want[] = {"1,3 U-L1 S-* 0 -", "2,3 R1-L1 I-R 0 1", "3,4 L1-C1 C-I 0 2"};
+  check_paths(&f, want, 3);
+  INT_EQ(a.ncloop, 0);
+  OK(bg_paths_store_integral(&m, &a, 3));
+  OK(bg_paths_store_integral(&m, &a, 4));
+  /* a cap of 1 lists the first path found and counts the rest */
+  bg_paths_find(&m, &a, 1);
+  INT_EQ(a.npath, 1);
+  INT_EQ(a.npath_omitted, 2);
+  bg_arena_free(&a.arena);
+}
+
+/* ------------------------------------------------------------ examples */
+static void test_rlc(void) {
+  fx f;
+  if (fx_load(&f, "rlc", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  const char *want[] = {"1,3 U-L1 S-* 0 -", "2,3 R1-L1 I-R 0 1", "3,4 L1-C1 C-I 0 2"};
+  check_paths(&f, want, 3);
+  INT_EQ(f.a.ncloop, 0);
+  fx_free(&f);
+}
+
+static void test_hydraulic_bridge(void) {
+  fx f;
+  if (fx_load(&f, "hydraulic_bridge", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  const char *want[] = {"7,8,2,1 pS-R1 S-* 0 -",   "7,9,6 pS-R3 S-* 0 -",
+                        "7,8,2,10,11,12 pS-mp S-* 0 -", "1,2,3 R1-R2 R-R 2 0",
+                        "3,2,10,11,12 R2-mp I-R 0 1",  "6,5,4 R3-R4 R-R 2 0",
+                        "4,14,13,12 R4-mp I-R 0 1",    "12,15 mp-Rb I-R 0 1"};
+  check_paths(&f, want, 8);
+  const char *zero[] = {"1,2,3 R1-R2 R-R 2 0", "6,5,4 R3-R4 R-R 2 0"};
+  check_zero_order(&f, zero, 2);
+  INT_EQ(f.a.ncloop, 0);
+  fx_free(&f);
+}
+
+static void test_slider_crank(void) {
+  fx f;
+  if (fx_load(&f, "slider_crank", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  const char *zero[] = {"2,4,3,5 J-m I-I 1 0"};
+  check_zero_order(&f, zero, 1);
+  INT_EQ(f.a.ncloop, 0);
+  fx_free(&f);
+}
+
+/* The spec lists {1,2,3,4} and {5,2,6,7,8}; by the definition there is a
+ * second C1-C2 path through the transformer, {1,2,6,7,10,4} (Equation
+ * 4.31c: e4 = (n - 1)(e1 + e5) adds both routes). */
+static void test_class12(void) {
+  fx f;
+  if (fx_load(&f, "class12_paths", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  const char *zero[] = {"1,2,3,4 C1-C2 C-C 1 0", "1,2,6,7,10,4 C1-C2 C-C 1 0",
+                        "5,2,6,7,8 R1-R2 R-R 2 0"};
+  check_zero_order(&f, zero, 3);
+  INT_EQ(f.a.ncloop, 0);
+  fx_free(&f);
+}
+
+static void test_loop_class1(void) {
+  fx f;
+  if (fx_load(&f, "loop_class1", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  const char *zero[] = {"1,2,3,4,5 C1-C2 C-C 1 0", "1,2,6,7,9,5 C1-C2 C-C 1 0"};
+  check_zero_order(&f, zero, 2);
+  INT_EQ(f.a.ncloop, 1);
+  if (f.a.ncloop == 1) {
+    STR_EQ(cloop_bonds(&f, 0), "2,6,7,8");
+    STR_EQ(f.a.cloop_gain[0], "n1");
+    DBL_NEAR(f.a.cloop_gain_value[0], 2.0, 1e-12);
+    INT_EQ(f.a.cloop_class[0], 4);
+  }
+  fx_free(&f);
+}
+
+static void test_bond_loop(void) {
+  fx f;
+  if (fx_load(&f, "bond_loop", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  INT_EQ(f.a.ncloop, 1);
+  if (f.a.ncloop == 1) {
+    STR_EQ(cloop_bonds(&f, 0), "1,2,3,4");
+    STR_EQ(f.a.cloop_gain[0], "n");
+    DBL_NEAR(f.a.cloop_gain_value[0], 2.0, 1e-12);
+    INT_EQ(f.a.cloop_class[0], 4);
+    INT_EQ(f.a.cloop_mesh[0], BG_MESH_NONE);
+  }
+  OK(f.a.cloops_disjoint);
+  OK(f.a.rosenberg_andry);
+  check_zero_order(&f, NULL, 0);
+  fx_free(&f);
+  /* n = 1: gain +1, class 5 */
+  if (fx_load(&f, "bond_loop", BG_METHOD_SCAP, "n", 1.0, NULL, NULL)) { OK(0); return; }
+  INT_EQ(f.a.ncloop, 1);
+  if (f.a.ncloop == 1) {
+    DBL_NEAR(f.a.cloop_gain_value[0], 1.0, 1e-12);
+    INT_EQ(f.a.cloop_class[0], 5);
+  }
+  OK(!f.a.rosenberg_andry);
+  fx_free(&f);
+  /* bond 2 reversed: gain -n */
+  if (fx_load(&f, "bond_loop", BG_METHOD_SCAP, NULL, 0, "bond 2 jB -> jC", "bond 2 jC -> jB")) {
+    OK(0);
+    return;
+  }
+  INT_EQ(f.a.ncloop, 1);
+  if (f.a.ncloop == 1) {
+    STR_EQ(f.a.cloop_gain[0], "-n");
+    DBL_NEAR(f.a.cloop_gain_value[0], -2.0, 1e-12);
+    INT_EQ(f.a.cloop_class[0], 4);
+  }
+  fx_free(&f);
+}
+
+static void test_delta(void) {
+  fx f;
+  if (fx_load(&f, "delta", BG_METHOD_SCAP, NULL, 0, NULL, NULL)) { OK(0); return; }
+  INT_EQ(f.a.ncloop, 1);
+  if (f.a.ncloop == 1) {
+    STR_EQ(cloop_bonds(&f, 0), "2,3,8,9,6,5"); /* the six internal bonds, in loop order */
+    STR_EQ(f.a.cloop_gain[0], "1");
+    DBL_NEAR(f.a.cloop_gain_value[0], 1.0, 1e-12);
+    INT_EQ(f.a.cloop_class[0], 5);
+  }
+  OK(!f.a.rosenberg_andry);
+  check_zero_order(&f, NULL, 0);
+  fx_free(&f);
+}
+
+/* Van Dijk's modification (Figure 4.20): no causal loop, one class 1 path
+ * between the inductors, two class 2 paths between resistors. */
+static void test_delta_vandijk(void) {
+  fx f;
+  if (fx_load(&f, "delta", BG_METHOD_VANDIJK, NULL, 0, NULL, NULL)) { OK(0); return; }
+  INT_EQ(f.a.ncloop, 0);
+  int c1 = 0, c2 = 0;
+  for (int p = 0; p < f.a.npath; p++) {
+    c1 += f.a.path_class[p] == 1;
+    c2 += f.a.path_class[p] == 2;
+  }
+  INT_EQ(c1, 1);
+  INT_EQ(c2, 2);
+  fx_free(&f);
+}
+
+int main(void) {
+  test_hand_rlc();
+  test_rlc();
+  test_hydraulic_bridge();
+  test_slider_crank();
+  test_class12();
+  test_loop_class1();
+  test_bond_loop();
+  test_delta();
+  test_delta_vandijk();
+  return bg_t_done();
+}
