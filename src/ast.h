@@ -37,7 +37,10 @@ struct bg_expr {
   int nargs;
   int nrows, ncols; /* MATRIX */
   int start, end;  /* byte offsets of the expression's text in the line buffer */
-  const char *text; /* the expression's source text as written (trimmed), e.g. "C1.e" */
+  const char *text; /* the expression's source text as written (trimmed), e.g. "C1.e";
+                       set for leaves, calls and whole expressions, NULL for inner
+                       operators (copying every operator's text would be quadratic) */
+  int depth;        /* height of the tree below and including this node */
 };
 
 /* ---------------------------------------------------------------- statements */

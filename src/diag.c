@@ -73,10 +73,18 @@ static void print_one(const bg_diags *d, const bg_diag *g, FILE *out) {
   size_t len = 0;
   const char *line = find_line(d, g->loc.line, &len);
   if (!line) return;
-  fprintf(out, "%5d | %.*s\n      | ", g->loc.line, (int)len, line);
+  /* A very long line (generated input) is shown as a window around the
+   * caret, marked with "..." on the cut sides, so the caret stays visible. */
+  enum { WIDTH = 100 };
+  size_t from = 0, col = g->loc.col > 0 ? (size_t)g->loc.col - 1 : 0;
+  if (len > WIDTH && col > WIDTH / 2) from = col - WIDTH / 2;
+  if (from > len) from = len;
+  size_t shown = len - from > WIDTH ? WIDTH : len - from;
+  const char *lead = from ? "..." : "";
+  fprintf(out, "%5d | %s%.*s%s\n      | %s", g->loc.line, lead, (int)shown, line + from,
+          from + shown < len ? "..." : "", from ? "   " : "");
   /* Keep tabs so the caret lines up under the same column. */
-  for (int i = 1; i < g->loc.col && (size_t)(i - 1) < len; i++)
-    fputc(line[i - 1] == '\t' ? '\t' : ' ', out);
+  for (size_t i = from; i < col && i < len; i++) fputc(line[i] == '\t' ? '\t' : ' ', out);
   fputs("^\n", out);
 }
 

@@ -159,11 +159,24 @@ static const char *span_text(parser *p, int start, int end) {
   return s;
 }
 
-/* Sets e's span to [start, end of the last consumed token) and its text. */
+/* Deepest operator tree accepted: recursive walkers of later stages stay
+ * far from the C stack's limit even on sums of thousands of terms. */
+enum { MAX_TREE_DEPTH = 2000 };
+
+/* Sets e's span to [start, end of the last consumed token), its depth, and
+ * (except for inner operators, see ast.h) its text. */
 static bg_expr *finish(parser *p, bg_expr *e, int start) {
   e->start = start;
   e->end = p->toks.tok[p->pos - 1].end;
-  e->text = span_text(p, e->start, e->end);
+  e->depth = 1;
+  for (int i = 0; i < e->nargs; i++)
+    if (e->args[i] && e->args[i]->depth + 1 > e->depth) e->depth = e->args[i]->depth + 1;
+  if (e->depth > MAX_TREE_DEPTH)
+    fail_at(p, &p->toks.tok[p->pos - 1],
+            "expression too long: more than %d nested operations; split it into params",
+            MAX_TREE_DEPTH);
+  if (e->kind != BG_EX_BINARY && e->kind != BG_EX_UNARY)
+    e->text = span_text(p, e->start, e->end);
   return e;
 }
 
@@ -367,6 +380,7 @@ static bg_expr *parse_expr(parser *p) {
   enter(p);
   bg_expr *e = parse_level(p, 0);
   p->depth--;
+  if (!e->text) e->text = span_text(p, e->start, e->end);
   return e;
 }
 

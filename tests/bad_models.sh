@@ -38,9 +38,14 @@ check() {
 for f in tests/bad/*.bg; do check "$f"; done
 
 # Generated: nesting deeper than the parser's limit (parentheses, unary minus, powers).
-gen() { # gen NAME PREFIX ATOM SUFFIX COUNT
-  local s="" t="" i
-  for ((i = 0; i < $5; i++)); do s="$s$2"; t="$t$4"; done
+rep() { # rep TEXT COUNT: TEXT repeated COUNT times
+  [ -n "$1" ] || return 0
+  printf "%$2s" "" | sed "s/ /$1/g"
+}
+gen() { # gen NAME PREFIX ATOM SUFFIX COUNT COLUMN
+  local s t
+  s=$(rep "$2" "$5")
+  t=$(rep "$4" "$5")
   { echo "# expect: 2:$6: expression nested too deeply"
     echo "param x = $s$3$t"
     printf 'Se U = x\n1 j\nR R1 = 1\nbond U -> j\nbond j -> R1\n'; } >"$TMP/$1.bg"
@@ -48,6 +53,17 @@ gen() { # gen NAME PREFIX ATOM SUFFIX COUNT
 }
 gen deep_parens "(" 1 ")" 5000 211
 gen deep_unary "-" 1 "" 100000 210
-gen deep_power "2^" 1 "" 3000 411
+gen deep_power "2\\^" 1 "" 3000 411
+
+# Generated: a flat sum of 20 000 terms is refused by length (not by a crash
+# or quadratic memory), and its 40 000-character line is shown as a window
+# around the caret.
+{ echo "# expect: 2:4011: expression too long: more than 2000 nested operations"
+  printf 'param x = 1'; rep "+1" 19999; echo
+  printf 'Se U = x\n1 j\nR R1 = 1\nbond U -> j\nbond j -> R1\n'; } >"$TMP/long_sum.bg"
+check "$TMP/long_sum.bg"
+if ! awk 'length($0) > 200 { bad = 1 } END { exit bad }' "$TMP/stderr"; then
+  echo "FAIL long_sum: a diagnostic line longer than 200 characters"; fail=$((fail + 1))
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
