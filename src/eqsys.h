@@ -35,6 +35,12 @@ int bg_eqsys_is_differential(const bg_eqsys *s, int i);
  * a guess consistent where it can be computed explicitly, else 0). */
 void bg_eqsys_initial(const bg_eqsys *s, double *y0);
 
+/* Newton on the algebraic rows (dependent stores' constraints, algebraic
+ * unknowns) with the states of y held and yp = 0, at most maxit steps; y is
+ * updated in place. Dense: skipped above 3000 unknowns. 0, or -1 when an
+ * evaluation failed. (Called by bg_eqsys_initial.) */
+int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit);
+
 /* ODE right-hand side ydot = f(t, y) (only when bg_eqsys_is_ode).
  * Returns 0, or -1 when an evaluation produced NaN/Inf (a law evaluated
  * outside its domain); bg_eqsys_error then says which equation, in words. */
