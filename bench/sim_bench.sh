@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Benchmark (not a test): a 10 000-state RC ladder through `bgdraw --simulate`
+# and through bench/rc_ladder_hand.c (hand-written right-hand side and sparse
+# Jacobian, same CVODE BDF + KLU settings); prints both times and the ratio.
+# Usage: bash bench/sim_bench.sh PATH_TO_BGDRAW [N] [T_END]   (from the project root)
+set -eu
+BGDRAW=${1:?usage: sim_bench.sh PATH_TO_BGDRAW [N] [T_END]}
+N=${2:-10000}
+TEND=${3:-10}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# Se U -> 1 j1 (R1) -> 0 n1 (C1) -> 1 j2 (R2) -> 0 n2 (C2) ... -> 0 nN (CN)
+awk -v n="$N" -v tend="$TEND" 'BEGIN {
+  print "model rc_ladder \"RC ladder of " n " stages\""
+  print "param R0 = 1, C0 = 1, U0 = 1"
+  print "Se U = U0"
+  b = 0
+  for (k = 1; k <= n; k++) {
+    printf "1 j%d\n0 n%d\nR R%d = R0\nC C%d = C0\n", k, k, k, k
+    printf "bond %d %s -> j%d\n", ++b, (k == 1 ? "U" : "n" (k - 1)), k
+    printf "bond %d j%d -> R%d\n", ++b, k, k
+    printf "bond %d j%d -> n%d\n", ++b, k, k
+    printf "bond %d n%d -> C%d\n", ++b, k, k
+  }
+  print "simulate t_end = " tend ", solver = cvode_bdf"
+  print "plot C" n ".e"
+}' >"$tmp/rc_ladder.bg"
+
+cc -O2 -o "$tmp/hand" bench/rc_ladder_hand.c -I/usr/include/suitesparse -lsundials_cvode \
+  -lsundials_nvecserial -lsundials_sunmatrixsparse -lsundials_sunlinsolklu -lm
+
+now() { date +%s.%N; }
+s=$(now)
+"$BGDRAW" "$tmp/rc_ladder.bg" --simulate -o "$tmp/out.csv" -v 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+e=$(now)
+tool=$(echo "$e - $s" | bc -l)
+read -r hand hsteps hlast < <("$tmp/hand" "$N" "$TEND")
+tlast=$(tail -n 1 "$tmp/out.csv" | cut -d, -f2)
+grep -E 'solver|done' "$tmp/err" | sed 's/^/  /' | cut -c1-160
+printf 'states %d, t_end %s\n' "$N" "$TEND"
+printf 'bgdraw --simulate (parse, analysis, equations, simulation, CSV): %.3f s, last C%d.e %s\n' "$tool" "$N" "$tlast"
+printf 'hand-written C + CVODE BDF + KLU:                                %.3f s (%d steps), last %s\n' "$hand" "$hsteps" "$hlast"
+printf 'ratio: %.2f (goal <= 1.5)\n' "$(echo "$tool / $hand" | bc -l)"
