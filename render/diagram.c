@@ -280,6 +280,14 @@ static bg_vec node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
   return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
 }
 
+static int bond_between(const bg_model *m, int x, int y) {
+  for (int i = 0; i < m->elem_nbond[x]; i++) {
+    int b = m->elem_bonds[m->elem_bondadr[x] + i];
+    if (m->bond_tail[b] == y || m->bond_head[b] == y) return b;
+  }
+  return -1;
+}
+
 static void draw_signal(bg_diagram *d, int i) {
   const bg_model *m = d->m;
   int from = m->signal_from[i], to = m->signal_to[i];
@@ -295,9 +303,22 @@ static void draw_signal(bg_diagram *d, int i) {
                                      m->elem_name[from], m->elem_name[to]);
   it->color = c, it->width = 0.7;
   if (st->signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
-  bg_vec end = bg_vsub(p1, bg_vscale(dir, alen * 0.8));
-  bg_scene_move(&d->scene, p0.x, p0.y);
-  bg_scene_line(&d->scene, end.x, end.y);
+  int b = bond_between(m, from, to);
+  if (b >= 0) {
+    /* a bond joins the same nodes: bow the signal out to the barb side (the
+     * number is on the other) so the two stay apart */
+    bg_vec bow = bg_vscale(bg_barb_side(d, b), 16), chord = bg_vsub(p1, p0);
+    bg_vec c1 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 1.0 / 3)), bow);
+    bg_vec c2 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 2.0 / 3)), bow);
+    dir = bg_vunit(bg_vsub(p1, c2));
+    bg_vec end = bg_vsub(p1, bg_vscale(dir, alen * 0.8));
+    bg_scene_move(&d->scene, p0.x, p0.y);
+    bg_scene_curve(&d->scene, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
+  } else {
+    bg_vec end = bg_vsub(p1, bg_vscale(dir, alen * 0.8));
+    bg_scene_move(&d->scene, p0.x, p0.y);
+    bg_scene_line(&d->scene, end.x, end.y);
+  }
   it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "signal-arrow %s->%s", m->elem_name[from],
                       m->elem_name[to]);
   it->fill = it->color = c, it->width = 0;

@@ -121,7 +121,10 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   const char *gv_engine = !strcmp(engine, "pinned") ? "neato" : engine;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   agseterr(AGMAX); /* Graphviz warnings are ours to report, not its to print */
-  GVC_t *gvc = gvContext();
+  /* one context per process: creating it reads Graphviz's plugin
+   * configuration (slow, and it leaks inside libgvc 2.43 every time) */
+  static GVC_t *gvc;
+  if (!gvc) gvc = gvContext();
   Agraph_t *g = agopen("bg", Agdirected, NULL);
   graph_attrs(g, in, is_dot);
   Agnode_t **nodes = add_nodes(g, in);
@@ -137,7 +140,6 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   free(nodes);
   free(edges);
   agclose(g);
-  gvFreeContext(gvc);
   return rc == 0 ? 0 : -1;
 }
 

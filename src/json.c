@@ -129,7 +129,8 @@ static void put_paths(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
     str_or_null(o, a->path_kind ? a->path_kind[i] : NULL);
     bg_sb_puts(o, ", \"class\": ");
     int_or_null(o, a->path_class[i], a->path_class[i] == 0);
-    bg_sb_printf(o, ", \"order\": %d}", a->path_order[i]);
+    if (a->path_order[i] == BG_PATH_ORDER_NONE) bg_sb_puts(o, ", \"order\": null}");
+    else bg_sb_printf(o, ", \"order\": %d}", a->path_order[i]);
   }
   end_list(o, a->npath);
 }
@@ -234,7 +235,9 @@ static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   bg_sb_puts(o, "{\"predicted\": ");
   int_or_null(o, a->index_predicted, a->index_predicted < 0);
   /* the numeric index needs the equations (a later stage); null until then */
-  bg_sb_puts(o, ", \"numeric\": null, \"reason\": ");
+  bg_sb_puts(o, ", \"numeric\": ");
+  int_or_null(o, a->index_numeric, !a->index_numeric_set || a->index_numeric < 0);
+  bg_sb_puts(o, ", \"reason\": ");
   str_or_null(o, a->index_reason);
   bg_sb_puts(o, "},\n");
 }
@@ -306,5 +309,10 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   bg_sb_puts(o, "},\n");
   key(o, "form_parameter_dependent");
   bool_val(o, a->form_parameter_dependent);
+  if (a->reduced_form) {
+    bg_sb_puts(o, ",\n");
+    key(o, "reduced_form");
+    bg_sb_json_str(o, a->reduced_form);
+  }
   bg_sb_puts(o, "\n}\n");
 }

@@ -10,11 +10,16 @@
 #include "causality.h"
 #include "cli_opts.h"
 #include "diag.h"
+#include "eqprint.h"
+#include "eqsys.h"
+#include "index.h"
 #include "fileio.h"
 #include "json.h"
 #include "model.h"
 #include "parse.h"
 #include "paths.h"
+#include "render.h"
+#include "simulate.h"
 #include "strbuf.h"
 #include "summary.h"
 
@@ -34,9 +39,22 @@ typedef struct run {
   bg_model *model;
   bg_analysis analysis;
   int analysed;
+  bg_eqsys *eqsys;      /* NULL when the equations could not be formed */
+  char *eqsys_problem;  /* why not, in words (owned); nullable */
+  bg_index_result index;
+  int index_done;
+  bg_simresult sim;
+  int simulated;
+  bg_render_opts ropts;
+  bg_diagram *diagram; /* laid out once, on the first diagram output */
 } run;
 
 static void run_free(run *r) {
+  if (r->simulated) bg_simresult_free(&r->sim);
+  if (r->index_done) bg_index_free(&r->index);
+  if (r->eqsys) bg_eqsys_free(r->eqsys);
+  free(r->eqsys_problem);
+  if (r->diagram) bg_diagram_free(r->diagram);
   if (r->analysed) bg_analysis_free(&r->analysis);
   if (r->model) bg_model_free(r->model);
   if (r->ast) bg_ast_free(r->ast);
@@ -76,11 +94,74 @@ static void analyse(run *r) {
   bg_analysis_run(r->model, &r->analysis, NULL);
 }
 
+/* Above this many unknowns the dense index computation is skipped. */
+enum { INDEX_MAX_UNKNOWNS = 2000 };
+
+/* The equations, and the numeric index of the linearised model (JSON
+ * index.numeric). A model whose equations cannot be formed is not an error
+ * here: the reason is kept for the outputs that need equations. */
+static void derive_equations(run *r) {
+  bg_diags eqd;
+  bg_diags_init(&eqd, r->opts.model_path, r->src, r->srclen);
+  r->eqsys = bg_eqsys_build(r->model, &r->analysis, &eqd);
+  if (!r->eqsys) {
+    r->eqsys_problem = strdup(eqd.n ? eqd.items[0].msg : "the equations could not be formed");
+    bg_diags_free(&eqd);
+    return;
+  }
+  bg_diags_free(&eqd);
+  if (bg_eqsys_n(r->eqsys) > INDEX_MAX_UNKNOWNS) {
+    if (r->opts.verbose)
+      fprintf(stderr, "bgdraw: %d unknowns: numeric index skipped (dense algorithm)\n",
+              bg_eqsys_n(r->eqsys));
+    return;
+  }
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: numeric index (Algorithm 4.1)\n");
+  bg_index_compute(r->eqsys, r->model, &r->index);
+  r->index_done = 1;
+  r->analysis.index_numeric_set = r->index.index != BG_INDEX_FAILED;
+  r->analysis.index_numeric = r->index.index;
+}
+
+static int wants_simulation(const bg_cli_opts *o) {
+  if (o->simulate || o->plot) return 1;
+  for (int i = 0; i < o->nout; i++)
+    if (!strcmp(o->out[i].format, "csv")) return 1;
+  return 0;
+}
+
+/* Runs the simulation; prints the refusal or failure. EXIT_SIM on failure
+ * (partial results are still written), EXIT_OK otherwise. */
+static int simulate(run *r) {
+  bg_sim_opts so = {0};
+  so.verbose = r->opts.verbose;
+  int rc = bg_simulate(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+  r->simulated = 1;
+  if (rc == 0) {
+    if (r->opts.verbose && r->sim.solver_reason)
+      fprintf(stderr, "bgdraw: solver %s: %s\n", r->sim.solver_used, r->sim.solver_reason);
+    return EXIT_OK;
+  }
+  const char *why = r->sim.message ? r->sim.message : r->eqsys_problem;
+  fprintf(stderr, "bgdraw: %s: %s\n", rc == 1 ? "simulation refused" : "simulation failed",
+          why ? why : "unknown reason");
+  return EXIT_SIM;
+}
+
 static int print_check(run *r) {
   bg_strbuf sb = {0};
   bg_model_summary(r->model, &sb);
   bg_sb_putc(&sb, '\n');
   bg_analysis_summary(r->model, &r->analysis, &sb);
+  if (r->index_done) {
+    bg_sb_puts(&sb, "numeric index: ");
+    if (r->index.index >= 0) bg_sb_printf(&sb, "%d", r->index.index);
+    else bg_sb_puts(&sb, r->index.index == BG_INDEX_SINGULAR ? "singular" : "not computed");
+    if (r->index.message) bg_sb_printf(&sb, " (%s)", r->index.message);
+    bg_sb_putc(&sb, '\n');
+  } else if (r->eqsys_problem) {
+    bg_sb_printf(&sb, "equations: %s\n", r->eqsys_problem);
+  }
   fputs(bg_sb_str(&sb), stdout);
   bg_sb_free(&sb);
   return EXIT_OK;
@@ -109,9 +190,76 @@ static int write_json(run *r, const char *path) {
   return rc;
 }
 
+/* Diagram options from the command line; -1 on a usage error. */
+static int render_options(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  bg_render_opts *ro = &r->ropts;
+  ro->show = BG_SHOW_DEFAULT;
+  if (o->show && bg_show_parse(o->show, &ro->show) != 0) {
+    fprintf(stderr, "bgdraw: error: unknown layer in --show '%s' (layers: strokes, numbers, "
+                    "paths, loops, conflicts, signals, labels, legend; or all, none)\n", o->show);
+    return -1;
+  }
+  if (o->highlight && bg_highlight_parse(o->highlight, &ro->highlight_kind,
+                                         &ro->highlight_index) != 0) {
+    fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
+            o->highlight);
+    return -1;
+  }
+  ro->style = o->style;
+  ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
+  ro->layout = o->layout;
+  ro->verbose = o->verbose;
+  return 0;
+}
+
+static int write_diagram(run *r, const bg_cli_output *out) {
+  if (!r->diagram) {
+    r->diagram = bg_diagram_build(r->model, &r->analysis, &r->ropts, &r->dg);
+    if (!r->diagram) {
+      bg_diags_print(&r->dg, stderr);
+      return EXIT_USAGE;
+    }
+  }
+  int rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
+  if (rc == BG_RENDER_OK) return EXIT_OK;
+  bg_diags_print(&r->dg, stderr);
+  return rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}
+
+static int write_equations(run *r, const char *path, const char *form) {
+  if (!r->eqsys) {
+    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path,
+            r->eqsys_problem ? r->eqsys_problem : "unknown reason");
+    return EXIT_MODEL;
+  }
+  bg_strbuf sb = {0};
+  bg_eqprint(r->eqsys, form, &sb);
+  int rc = path ? write_text(path, &sb) : (fputs(bg_sb_str(&sb), stdout), EXIT_OK);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int write_csv(run *r, const char *path) {
+  if (!r->simulated || !r->sim.nrows) return EXIT_OK; /* refused: nothing to write */
+  bg_strbuf sb = {0};
+  bg_csv_write(&r->sim, &sb);
+  int rc = write_text(path, &sb);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int is_diagram_format(const char *f) {
+  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
+}
+
 static int write_one(run *r, const bg_cli_output *out) {
   if (r->opts.verbose) fprintf(stderr, "bgdraw: writing %s\n", out->path);
   if (!strcmp(out->format, "json")) return write_json(r, out->path);
+  if (is_diagram_format(out->format)) return write_diagram(r, out);
+  if (!strcmp(out->format, "tex")) return write_equations(r, out->path, "latex");
+  if (!strcmp(out->format, "c")) return write_equations(r, out->path, "c");
+  if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
   fprintf(stderr, "bgdraw: error: %s output is not implemented yet ('%s')\n", out->format,
           out->path);
   return EXIT_WRITE;
@@ -138,6 +286,10 @@ int main(int argc, char **argv) {
     bg_cli_free(&r.opts);
     return EXIT_OK;
   }
+  if (render_options(&r) != 0) {
+    bg_cli_free(&r.opts);
+    return EXIT_USAGE;
+  }
   int rc = load_model(&r);
   if (!r.opts.quiet || rc) bg_diags_print(&r.dg, stderr);
   if (rc) {
@@ -145,11 +297,18 @@ int main(int argc, char **argv) {
     return EXIT_MODEL;
   }
   analyse(&r);
+  derive_equations(&r);
   char defpath[1024];
   if (r.opts.check) rc = print_check(&r);
+  else if (r.opts.equations && r.opts.nout == 0) rc = write_equations(&r, NULL, r.opts.equations);
   else {
-    if (r.opts.nout == 0) default_output(&r, defpath, sizeof defpath);
-    rc = write_outputs(&r);
+    int simrc = wants_simulation(&r.opts) ? simulate(&r) : EXIT_OK;
+    int refused = simrc && !r.sim.nrows;
+    if (r.opts.equations) rc = write_equations(&r, NULL, r.opts.equations);
+    if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations)
+      default_output(&r, defpath, sizeof defpath);
+    if (!rc) rc = write_outputs(&r);
+    if (!rc) rc = refused ? EXIT_SIM : simrc;
   }
   run_free(&r);
   return rc;

@@ -143,6 +143,7 @@ static void test_generic_lists(void) {
   static int ek[1] = {0}, ep[1] = {0};
   static double ev[1] = {1e-4};
   a.nestimate = 1, a.estimate_kind = ek, a.estimate_path = ep, a.estimate_value = ev;
+  a.index_numeric_set = 1, a.index_numeric = 0, a.reduced_form = "ode";
   bg_strbuf sb = {0};
   bg_json_write_analysis(m, &a, &sb);
   const char *j = bg_sb_str(&sb);
@@ -158,7 +159,8 @@ static void test_generic_lists(void) {
   OK(has(j, "\"states\": [\"L1.p\", \"C1.q\"]"));
   OK(has(j, "\"dependent_stores\": []"));
   OK(has(j, "\"form\": \"ode\""));
-  OK(has(j, "\"index\": {\"predicted\": 0, \"numeric\": null, \"reason\": \"no zero-order path\"}"));
+  OK(has(j, "\"index\": {\"predicted\": 0, \"numeric\": 0, \"reason\": \"no zero-order path\"}"));
+  OK(has(j, "\"reduced_form\": \"ode\"\n}\n"));
   OK(has(j, "{\"kind\": \"time_constant\", \"path\": 1, \"value\": 0.0001}"));
   bg_sb_free(&sb);
   /* the arrays above are static: detach them before the arena goes */
