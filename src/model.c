@@ -194,7 +194,10 @@ static void declare_element(bg_build *b, const bg_ast_stmt *s) {
   m->elem_name[e] = bg_build_strdup(b, s->name);
   m->elem_loc[e] = s->name_loc;
   m->elem_expr[e] = m->elem_init[e] = -1;
-  b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)m->nelem * sizeof *b->elem_stmt);
+  if (m->nelem > b->elem_stmt_cap) {
+    b->elem_stmt_cap = b->elem_stmt_cap ? 2 * b->elem_stmt_cap : 64;
+    b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)b->elem_stmt_cap * sizeof *b->elem_stmt);
+  }
   b->elem_stmt[e] = s;
 }
 
@@ -336,7 +339,8 @@ static void note_param_use(void *ctx, const bg_expr *name) {
   const ns_entry *n = bg_build_lookup(g->b, name->str);
   if (!n || n->kind != NS_PARAM) return;
   int *nd = &g->ndep[g->cur];
-  g->dep[g->cur] = bg_xrealloc(g->dep[g->cur], (size_t)(*nd + 1) * sizeof(int));
+  if ((*nd & (*nd - 1)) == 0) /* 0, 1, 2, 4, ...: grow to the next power of two */
+    g->dep[g->cur] = bg_xrealloc(g->dep[g->cur], (size_t)(*nd ? 2 * *nd : 1) * sizeof(int));
   g->dep[g->cur][(*nd)++] = n->id;
 }
 

@@ -36,6 +36,7 @@ typedef struct bg_build {
   int *hash; /* -1 = empty */
   int hashcap;
   const bg_ast_stmt **elem_stmt; /* per element id */
+  int elem_stmt_cap;
   int *param_id;                 /* param file index -> param id (dependency order) */
   /* the expression being compiled */
   int allow;          /* ALLOW_* */
