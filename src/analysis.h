@@ -112,11 +112,13 @@ typedef struct bg_analysis {
   int index_predicted;       /* 0, 1, 2 (2 = "above 1"); -1 unknown */
   char *index_reason;
   int form_parameter_dependent; /* Equation 4.45 case */
-  /* Filled by the equations stage (JSON index.numeric, reduced_form); the
-   * JSON writes null / leaves the key out while they are unset. */
-  int index_numeric_set;     /* index_numeric was computed */
-  int index_numeric;         /* Algorithm 4.1 on the linearised model; < 0: singular/failed */
-  const char *reduced_form;  /* "ode" / "dae" after symbolic elimination; NULL */
+  /* Filled by the equations stage (JSON index.numeric, index.numeric_status,
+   * reduced_form); the JSON writes null while they are unset. */
+  int index_numeric_set;     /* Algorithm 4.1 ran to a verdict (not set when it failed) */
+  int index_numeric;         /* its index; < 0 with _set: singular pencil (JSON numeric
+                                null, numeric_status "singular") */
+  const char *reduced_form;  /* "ode" / "dae" after symbolic elimination of linear
+                                algebraic blocks / dependent stores; NULL: not done */
 
   /* estimates from first- and second-order paths, linearised at the initial point */
   int nestimate;

@@ -182,7 +182,9 @@ static void cloop_fill(tlist *T, int l, const bg_gain *g1, const bg_gain *g2, in
   bg_gain tmp = *g1;
   a->cloop_gain[l] = g1->ok ? bg_gain_text(&tmp, &a->arena) : bg_arena_strdup(&a->arena, "?");
   a->cloop_gain_value[l] = g1->ok ? g1->value : NAN;
-  a->cloop_class[l] = g1->ok && nearly_one(g1->value) ? 5 : 4;
+  /* class 5 when an open loop has gain +1 (the two are equal without
+   * gyrators, Definition 4.16; either one at +1 makes the loop singular) */
+  a->cloop_class[l] = (g1->ok && nearly_one(g1->value)) || (g2->ok && nearly_one(g2->value)) ? 5 : 4;
   int ngy = 0;
   for (int i = 0; i < a->cloop_n[l]; i++) ngy += is_gy(T->m->elem_kind[nodes[i]]);
   a->cloop_mesh[l] = BG_MESH_NONE;
@@ -304,10 +306,66 @@ static void add_sig_name(const bg_model *m, slist *l, bg_arena *ar, char *seen, 
   sl_add(l, ar, buf);
 }
 
+/* An R whose law (`: e = ...` / `: f = ...`) the causality inverts: its
+ * equation is an implicit algebraic one (Section 4.9), whatever the law. */
+static int inverted_law(const bg_model *m, const bg_analysis *a, int e) {
+  return m->elem_kind[e] == BG_ELEM_R && m->elem_form[e] != BG_FORM_VALUE && a->elem_inverted[e];
+}
+
+static int ninverted_laws(const bg_model *m, const bg_analysis *a, int *first) {
+  int n = 0;
+  for (int e = m->nelem - 1; e >= 0; e--)
+    if (inverted_law(m, a, e)) n++, *first = e;
+  return n;
+}
+
+/* Rank of bond b at junction j as a carrier of an algebraic state variable
+ * (Section 4.9): a nonlinear R port first, then a store in integral
+ * causality, then any R, then the rest. */
+static int carrier_rank(const bg_model *m, const bg_analysis *a, int j, int b) {
+  int o = bg_bond_other(m, b, j), k = m->elem_kind[o];
+  if (k == BG_ELEM_R) return m->elem_form[o] != BG_FORM_VALUE && !m->elem_linear[o] ? 0 : 2;
+  if ((k == BG_ELEM_C || k == BG_ELEM_I) && bg_paths_store_integral(m, a, o)) return 1;
+  return 3;
+}
+
+/* The algebraic state variables of the conflicts at junctions (Section 4.9,
+ * Equations 4.46 to 4.51): type 1, one: the common variable (effort at a
+ * 0-junction, flow at a 1-junction) of the best carrier bond; type 2 of
+ * degree k, k: of the k+1 bonds that determine the common variable, one is
+ * taken as the input (a store's state if there is one, else a bond that is
+ * not a nonlinear R port, else the first) and the others' conjugate
+ * variables (flow at a 0-junction, effort at a 1-junction) are unknown. */
+static void conflict_algebraic(const bg_model *m, bg_analysis *a, slist *l, char *seen) {
+  for (int c = 0; c < a->nconflict; c++) {
+    int j = a->conflict_node[c], kind = m->elem_kind[j];
+    if (kind != BG_ELEM_J0 && kind != BG_ELEM_J1) continue;
+    const int *cb = a->conflict_bonds + a->conflict_adr[c];
+    int n = a->conflict_n[c], best = 0;
+    if (a->conflict_type[c] == 1) {
+      for (int i = 1; i < n; i++)
+        if (carrier_rank(m, a, j, cb[i]) < carrier_rank(m, a, j, cb[best])) best = i;
+      int b = cb[best];
+      add_sig_name(m, l, &a->arena, seen, kind == BG_ELEM_J0 ? BG_SIG_EFFORT(b) : BG_SIG_FLOW(b));
+      continue;
+    }
+    int input = -1;
+    for (int i = 0; i < n && input < 0; i++)
+      if (carrier_rank(m, a, j, cb[i]) == 1) input = i;
+    for (int i = 0; i < n && input < 0; i++)
+      if (carrier_rank(m, a, j, cb[i]) != 0) input = i;
+    if (input < 0) input = 0;
+    for (int i = 0; i < n; i++)
+      if (i != input)
+        add_sig_name(m, l, &a->arena, seen, kind == BG_ELEM_J0 ? BG_SIG_FLOW(cb[i]) : BG_SIG_EFFORT(cb[i]));
+  }
+}
+
 /* One unknown per algebraic relation: both resistor outputs of a class 2
  * path; for a causal loop, the outputs on the loop of one of its nodes (a
- * TF or GY when there is one, as in Equations 4.26); for a loop from
- * internal modulation, the modulated element's output on it. */
+ * TF or GY when there is one, as in Equations 4.26); for a conflict at a
+ * junction, its algebraic state variables (conflict_algebraic); for a loop
+ * from internal modulation, the modulated element's output on it. */
 static void fill_algebraic(const bg_model *m, bg_analysis *a, const bg_sfg *g) {
   slist l = {0};
   int *nodes = bg_xcalloc((size_t)m->nbond + 2, sizeof(int));
@@ -315,8 +373,11 @@ static void fill_algebraic(const bg_model *m, bg_analysis *a, const bg_sfg *g) {
   for (int p = 0; p < a->npath; p++) {
     if (a->path_class[p] != 2) continue;
     const int *b = a->path_bonds + a->path_adr[p];
-    add_sig_name(m, &l, &a->arena, seen, out_sig(m, a, a->path_end0[p], b[0]));
-    add_sig_name(m, &l, &a->arena, seen, out_sig(m, a, a->path_end1[p], b[a->path_n[p] - 1]));
+    int s0 = out_sig(m, a, a->path_end0[p], b[0]);
+    int s1 = out_sig(m, a, a->path_end1[p], b[a->path_n[p] - 1]);
+    int first = a->path_end0[p] < a->path_end1[p]; /* resistors in file order */
+    add_sig_name(m, &l, &a->arena, seen, first ? s0 : s1);
+    add_sig_name(m, &l, &a->arena, seen, first ? s1 : s0);
   }
   for (int c = 0; c < a->ncloop; c++) {
     const int *b = a->cloop_bonds + a->cloop_adr[c];
@@ -328,6 +389,10 @@ static void fill_algebraic(const bg_model *m, bg_analysis *a, const bg_sfg *g) {
     add_sig_name(m, &l, &a->arena, seen, s1 % 2 ? s2 : s1); /* the effort first */
     add_sig_name(m, &l, &a->arena, seen, s1 % 2 ? s1 : s2);
   }
+  conflict_algebraic(m, a, &l, seen);
+  for (int e = 0; e < m->nelem; e++) /* inverted laws are solved implicitly */
+    if (inverted_law(m, a, e))
+      add_sig_name(m, &l, &a->arena, seen, out_sig(m, a, e, m->elem_bonds[m->elem_bondadr[e]]));
   for (int t = 0; t < a->ntloop; t++) {
     if (!a->tloop_algebraic[t] || strncmp(a->tloop_cause[t], "internal", 8) != 0) continue;
     const int *s = a->tloop_signals + a->tloop_adr[t];
@@ -373,6 +438,12 @@ static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
   }
   if (a->ndependent && !c1) { sb_sep(sb); bg_sb_puts(sb, "dependent stores"); }
   if (a->nconflict) { sb_sep(sb); bg_sb_puts(sb, "causal conflicts give algebraic constraints"); }
+  int inv = 0, ninv = ninverted_laws(m, a, &inv);
+  if (ninv) {
+    sb_sep(sb);
+    bg_sb_printf(sb, "%d inverted resistor law%s solved implicitly (%s%s)", ninv, ninv > 1 ? "s" : "",
+                 m->elem_name[inv], ninv > 1 ? ", ..." : "");
+  }
   for (int t = 0; t < a->ntloop; t++) {
     if (!a->tloop_algebraic[t] || strncmp(a->tloop_cause[t], "internal", 8) != 0) continue;
     sb_sep(sb);
@@ -383,7 +454,6 @@ static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
                        "form depends on parameter values%s",
                    nearly_one(a->tloop_gain_value[t]) ? "; singular at these values" : "");
   }
-  (void)m;
 }
 
 static int any_zero_order_path(const bg_model *m, const bg_analysis *a) {
@@ -394,10 +464,201 @@ static int any_zero_order_path(const bg_model *m, const bg_analysis *a) {
   return 0;
 }
 
-static void fill_form(const bg_model *m, bg_analysis *a, int nblocks) {
+/* ------------------------------------------------------------ conflicts' constraints
+ * A conflict at a junction adds algebraic equations in its algebraic state
+ * variables (conflict_algebraic). They determine those variables only when
+ * the constrained signals depend on them without integration: type 1, the
+ * balance of the junction's conjugate variables must depend on its common
+ * variable; type 2, each determining bond other than the input must have
+ * its common variable depend on its own conjugate (the R law of Equation
+ * 4.48). Otherwise the equations constrain states or inputs alone and the
+ * index is above 1 (delta with R1 in conductance causality, Figure 4.17:
+ * the balance at nC is the cut-set law, iL2 = Is - iL1, because R1's flow
+ * enters it twice with opposite signs). The dependence is the linearised
+ * derivative along the signal flow graph without integrator and
+ * differentiator edges, summed over all paths (in topological order); when
+ * that part of the graph has a cycle or the work budget runs out, the
+ * conflict is taken as solvable. */
+typedef struct lindep {
+  const bg_sfg *g;
+  int *stamp, *queue, *indeg, cur;
+  double *d, *abs_d;
+  long work;
+} lindep;
+
+#define LINDEP_BUDGET 20000000L
+
+/* The same with algebraic loops in the reached part (its nodes are
+ * L->queue[0 .. nr)): solve (I - M) d = [v in from] densely, M[v][u] the
+ * edge value u -> v; -1 when the part is too large or the system singular. */
+#define LINDEP_DENSE_MAX 300
+static int lin_depends_dense(lindep *L, int nr, const int *from, int n1, const int *to,
+                             const double *w, int n2) {
+  const bg_sfg *g = L->g;
+  if (nr > LINDEP_DENSE_MAX) return -1;
+  L->work += (long)nr * nr * nr / 4; /* the solve counts against the budget */
+  if (L->work > LINDEP_BUDGET) return -1;
+  double *A = bg_xcalloc((size_t)nr * (size_t)(nr + 1), sizeof(double)); /* row v: [nr | rhs] */
+  int *pos = L->indeg; /* reuse: node -> row */
+  for (int i = 0; i < nr; i++) pos[L->queue[i]] = i;
+  for (int i = 0; i < nr; i++) A[(size_t)i * (nr + 1) + i] = 1;
+  for (int i = 0; i < n1; i++) A[(size_t)pos[from[i]] * (nr + 1) + nr] = 1;
+  for (int i = 0; i < nr; i++) {
+    int u = L->queue[i];
+    for (int k = 0; k < g->n[u]; k++) {
+      const bg_sfg_edge *e = &g->edge[g->out[g->adr[u] + k]];
+      if (e->order != 0 || L->stamp[e->dst] != L->cur) continue;
+      int is_from = 0;
+      for (int f = 0; f < n1 && !is_from; f++) is_from = from[f] == e->dst;
+      if (!is_from) A[(size_t)pos[e->dst] * (nr + 1) + i] -= e->value;
+    }
+  }
+  int ok = 1;
+  for (int c = 0; c < nr && ok; c++) { /* Gauss-Jordan, partial pivoting */
+    int piv = c;
+    for (int r = c + 1; r < nr; r++)
+      if (fabs(A[(size_t)r * (nr + 1) + c]) > fabs(A[(size_t)piv * (nr + 1) + c])) piv = r;
+    if (fabs(A[(size_t)piv * (nr + 1) + c]) < 1e-12) { ok = 0; break; }
+    if (piv != c)
+      for (int k = 0; k <= nr; k++) {
+        double t = A[(size_t)c * (nr + 1) + k];
+        A[(size_t)c * (nr + 1) + k] = A[(size_t)piv * (nr + 1) + k];
+        A[(size_t)piv * (nr + 1) + k] = t;
+      }
+    for (int r = 0; r < nr; r++) {
+      if (r == c) continue;
+      double f = A[(size_t)r * (nr + 1) + c] / A[(size_t)c * (nr + 1) + c];
+      if (f != 0)
+        for (int k = c; k <= nr; k++) A[(size_t)r * (nr + 1) + k] -= f * A[(size_t)c * (nr + 1) + k];
+    }
+  }
+  double sum = 0, scale = 0;
+  for (int i = 0; ok && i < n2; i++) {
+    if (L->stamp[to[i]] != L->cur) continue;
+    int r = pos[to[i]];
+    double d = A[(size_t)r * (nr + 1) + nr] / A[(size_t)r * (nr + 1) + r];
+    sum += w[i] * d;
+    scale += fabs(w[i] * d);
+  }
+  free(A);
+  if (!ok || !isfinite(sum)) return -1;
+  return fabs(sum) > 1e-12 * scale;
+}
+
+/* d(sum_i w_i to_i)/d(from) where every from[i] is the same unknown:
+ * 1 when it is not zero, 0 when it is (or nothing is reached), -1 when
+ * undecided. */
+static int lin_depends(lindep *L, const int *from, int n1, const int *to, const double *w, int n2) {
+  const bg_sfg *g = L->g;
+  int tail = 0, head = 0;
+  L->cur++;
+  for (int i = 0; i < n1; i++)
+    if (L->stamp[from[i]] != L->cur) {
+      L->stamp[from[i]] = L->cur;
+      L->queue[tail++] = from[i];
+    }
+  /* the part of the graph reachable from the unknown, with in-degrees */
+  while (head < tail) {
+    int v = L->queue[head++];
+    L->indeg[v] = 0;
+    L->d[v] = L->abs_d[v] = 0;
+    for (int k = 0; k < g->n[v]; k++) {
+      const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
+      if (++L->work > LINDEP_BUDGET) return -1;
+      if (e->order != 0 || L->stamp[e->dst] == L->cur) continue;
+      L->stamp[e->dst] = L->cur;
+      L->queue[tail++] = e->dst;
+    }
+  }
+  int nreach = tail;
+  for (int i = 0; i < nreach; i++) {
+    int v = L->queue[i];
+    for (int k = 0; k < g->n[v]; k++) {
+      const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
+      if (e->order == 0) L->indeg[e->dst]++;
+    }
+  }
+  for (int i = 0; i < n1; i++) L->d[from[i]] = L->abs_d[from[i]] = 1;
+  /* Kahn's order over the reached part; queue is reused from its start */
+  head = tail = 0;
+  int *order = L->queue + nreach; /* second half of the buffer */
+  for (int i = 0; i < nreach; i++)
+    if (L->indeg[L->queue[i]] == 0) order[tail++] = L->queue[i];
+  while (head < tail) {
+    int v = order[head++];
+    for (int k = 0; k < g->n[v]; k++) {
+      const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
+      if (e->order != 0) continue;
+      L->d[e->dst] += e->value * L->d[v];
+      L->abs_d[e->dst] += fabs(e->value) * L->abs_d[v];
+      if (--L->indeg[e->dst] == 0) order[tail++] = e->dst;
+    }
+  }
+  if (tail < nreach) return lin_depends_dense(L, nreach, from, n1, to, w, n2);
+  double sum = 0, scale = 0;
+  for (int i = 0; i < n2; i++) {
+    if (L->stamp[to[i]] != L->cur) continue;
+    sum += w[i] * L->d[to[i]];
+    scale += fabs(w[i]) * L->abs_d[to[i]];
+  }
+  if (!isfinite(sum) || !isfinite(scale)) return -1;
+  return fabs(sum) > 1e-12 * scale;
+}
+
+/* The first conflict at a junction whose equations do not determine its
+ * algebraic variables, or -1; *bond gets the bond that shows it (type 2). */
+static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g, int *bond) {
+  size_t nn = (size_t)g->nnode + 1;
+  lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
+              bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
+              bg_xcalloc(nn, sizeof(double)), 0};
+  int *from = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int));
+  int *to = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int)), found = -1;
+  double *w = bg_xcalloc((size_t)m->nbondref + 2, sizeof(double));
+  for (int c = 0; c < a->nconflict && found < 0; c++) {
+    int j = a->conflict_node[c], kind = m->elem_kind[j];
+    if (kind != BG_ELEM_J0 && kind != BG_ELEM_J1) continue;
+    int j0 = kind == BG_ELEM_J0, r = 1;
+    if (a->conflict_type[c] == 1) {
+      const int *bs = m->elem_bonds + m->elem_bondadr[j];
+      int n = m->elem_nbond[j];
+      for (int i = 0; i < n; i++) {
+        from[i] = j0 ? BG_SIG_EFFORT(bs[i]) : BG_SIG_FLOW(bs[i]);
+        to[i] = j0 ? BG_SIG_FLOW(bs[i]) : BG_SIG_EFFORT(bs[i]);
+        w[i] = m->bond_head[bs[i]] == j ? 1 : -1; /* the balance: sum of sigma x = 0 */
+      }
+      r = lin_depends(&L, from, n, to, w, n);
+      *bond = -1;
+    } else {
+      const int *cb = a->conflict_bonds + a->conflict_adr[c];
+      int n = a->conflict_n[c], input = -1;
+      for (int i = 0; i < n && input < 0; i++)
+        if (carrier_rank(m, a, j, cb[i]) == 1) input = i;
+      for (int i = 0; i < n && input < 0; i++)
+        if (carrier_rank(m, a, j, cb[i]) != 0) input = i;
+      if (input < 0) input = 0;
+      for (int i = 0; i < n && r == 1; i++) {
+        if (i == input) continue;
+        from[0] = j0 ? BG_SIG_FLOW(cb[i]) : BG_SIG_EFFORT(cb[i]);
+        to[0] = j0 ? BG_SIG_EFFORT(cb[i]) : BG_SIG_FLOW(cb[i]);
+        w[0] = 1;
+        r = lin_depends(&L, from, 1, to, w, 1);
+        *bond = cb[i];
+      }
+    }
+    if (r == 0) found = c;
+    if (L.work > LINDEP_BUDGET) break; /* out of budget: the rest taken as solvable */
+  }
+  free(L.stamp), free(L.queue), free(L.indeg), free(L.d), free(L.abs_d);
+  free(from), free(to), free(w);
+  return found;
+}
+
+static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
   bg_strbuf sb = {0};
-  int p = 0, l = 0;
-  int dae = a->ndependent || nblocks || a->nconflict || a->ncloop || any_zero_order_path(m, a);
+  int p = 0, l = 0, cb = -1, c = a->complete ? conflict_unsolvable(m, a, g, &cb) : -1;
+  int inv = 0, dae = a->ndependent || nblocks || a->nconflict || a->ncloop ||
+                     any_zero_order_path(m, a) || ninverted_laws(m, a, &inv);
   a->form = !a->complete ? BG_FORM_INCOMPLETE : dae ? BG_FORM_DAE : BG_FORM_ODE;
   if (!a->complete) {
     a->index_predicted = -1;
@@ -414,6 +675,18 @@ static void fill_form(const bg_model *m, bg_analysis *a, int nblocks) {
                         "singular, index above 1", l + 1);
     else
       bg_sb_puts(&sb, "causal loops share bonds (Rosenberg-Andry not satisfied): index above 1");
+  } else if (c >= 0) {
+    a->index_predicted = 2;
+    const char *j = m->elem_name[a->conflict_node[c]];
+    int j0 = m->elem_kind[a->conflict_node[c]] == BG_ELEM_J0;
+    if (cb < 0)
+      bg_sb_printf(&sb, "type 1 conflict at %s: the balance of its %s does not depend on its "
+                        "%s, so it constrains states or inputs: index above 1", j,
+                   j0 ? "flows" : "efforts", j0 ? "effort" : "flow");
+    else
+      bg_sb_printf(&sb, "type 2 conflict at %s: the %s of bond %d does not depend on its %s, so "
+                        "it constrains states or inputs: index above 1", j, j0 ? "effort" : "flow",
+                   m->bond_num[cb], j0 ? "flow" : "effort");
   } else if (a->form == BG_FORM_ODE) {
     a->index_predicted = 0;
     bg_sb_puts(&sb, "explicit ODE: no zero-order causal path, no causal loop, no algebraic loop");
@@ -486,7 +759,7 @@ void bg_analysis_run(const bg_model *m, bg_analysis *a, const bg_analysis_limits
   fill_states(m, a);
   fill_algebraic(m, a, &g);
   int nblocks = bg_sfg_algebraic_blocks(&g, NULL);
-  fill_form(m, a, nblocks);
+  fill_form(m, a, &g, nblocks);
   fill_estimates(m, a, &g);
   free(T.v);
   free(T.sig);

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "causality.h"
 #include "summary.h"
@@ -73,8 +74,11 @@ static void put_elements(bg_strbuf *o, const bg_model *m, const bg_analysis *a) 
     bg_sb_json_str(o, m->elem_name[e]);
     bg_sb_puts(o, ", \"kind\": ");
     bg_sb_json_str(o, bg_elem_kind_name(m->elem_kind[e]));
+    /* CLI.md's vocabulary is that of 1-ports; a junction-structure node has
+     * no causality of its own (its bonds' strokes are in bonds[]): none */
+    int c = a->elem_caus[e];
     bg_sb_puts(o, ", \"causality\": ");
-    bg_sb_json_str(o, bg_caus_name(a->elem_caus[e]));
+    bg_sb_json_str(o, c == BG_CAUS_TRANSFER ? "none" : bg_caus_name(c));
     bg_sb_puts(o, ", \"inverted\": ");
     bool_val(o, a->elem_inverted[e]);
     bg_sb_putc(o, '}');
@@ -173,25 +177,26 @@ static void signal_name(bg_strbuf *o, const bg_model *m, int s) {
   bg_sb_json_str(o, buf);
 }
 
-/* The bonds a topological loop passes, in order of first appearance. */
-static void tloop_bonds(bg_strbuf *o, const bg_model *m, const int *sig, int n) {
+/* The bonds a topological loop passes, in order of first appearance;
+ * seen[b] == stamp marks a bond already written (linear in the loop). */
+static void tloop_bonds(bg_strbuf *o, const bg_model *m, const int *sig, int n, int *seen,
+                        int stamp) {
   bg_sb_putc(o, '[');
   int k = 0;
   for (int i = 0; i < n; i++) {
-    if (sig[i] >= 2 * m->nbond) continue;
-    int seen = 0;
-    for (int j = 0; j < i && !seen; j++) seen = sig[j] / 2 == sig[i] / 2 && sig[j] < 2 * m->nbond;
-    if (!seen) bg_sb_printf(o, "%s%d", k++ ? ", " : "", m->bond_num[sig[i] / 2]);
+    if (sig[i] >= 2 * m->nbond || seen[sig[i] / 2] == stamp) continue;
+    seen[sig[i] / 2] = stamp;
+    bg_sb_printf(o, "%s%d", k++ ? ", " : "", m->bond_num[sig[i] / 2]);
   }
   bg_sb_putc(o, ']');
 }
 
-static void put_tloop(bg_strbuf *o, const bg_model *m, const bg_analysis *a, int i) {
+static void put_tloop(bg_strbuf *o, const bg_model *m, const bg_analysis *a, int i, int *seen) {
   const int *sig = a->tloop_signals + a->tloop_adr[i];
   int n = a->tloop_n[i];
   bg_sb_printf(o, "{\"id\": %d, \"kind\": \"%s\", \"order\": %d, \"bonds\": ", i + 1,
                a->tloop_kind[i] == BG_TLOOP_FLAT ? "flat" : "open", a->tloop_order[i]);
-  tloop_bonds(o, m, sig, n);
+  tloop_bonds(o, m, sig, n, seen, i + 1);
   bg_sb_puts(o, ", \"signals\": [");
   for (int k = 0; k < n; k++) {
     if (k) bg_sb_puts(o, ", ");
@@ -211,10 +216,12 @@ static void put_tloop(bg_strbuf *o, const bg_model *m, const bg_analysis *a, int
 static void put_tloops(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   key(o, "topological_loops");
   bg_sb_putc(o, '[');
+  int *seen = a->ntloop ? bg_xcalloc((size_t)m->nbond + 1, sizeof(int)) : NULL;
   for (int i = 0; i < a->ntloop; i++) {
     item(o, i);
-    put_tloop(o, m, a, i);
+    put_tloop(o, m, a, i, seen);
   }
+  free(seen);
   end_list(o, a->ntloop);
 }
 
@@ -234,12 +241,16 @@ static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   key(o, "index");
   bg_sb_puts(o, "{\"predicted\": ");
   int_or_null(o, a->index_predicted, a->index_predicted < 0);
-  /* the numeric index needs the equations (a later stage); null until then */
+  /* The numeric index needs the equations (a later stage): null until it is
+   * computed, and null for a singular pencil, which has no index; the extra
+   * key numeric_status tells the two apart. */
+  int computed = a->index_numeric_set && a->index_numeric >= 0;
   bg_sb_puts(o, ", \"numeric\": ");
-  int_or_null(o, a->index_numeric, !a->index_numeric_set || a->index_numeric < 0);
+  int_or_null(o, a->index_numeric, !computed);
   bg_sb_puts(o, ", \"reason\": ");
   str_or_null(o, a->index_reason);
-  bg_sb_puts(o, "},\n");
+  bg_sb_printf(o, ", \"numeric_status\": \"%s\"},\n",
+               computed ? "computed" : a->index_numeric_set ? "singular" : "not computed");
 }
 
 static void put_estimates(bg_strbuf *o, const bg_analysis *a) {
@@ -309,10 +320,13 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   bg_sb_puts(o, "},\n");
   key(o, "form_parameter_dependent");
   bool_val(o, a->form_parameter_dependent);
-  if (a->reduced_form) {
-    bg_sb_puts(o, ",\n");
-    key(o, "reduced_form");
-    bg_sb_json_str(o, a->reduced_form);
-  }
+  bg_sb_puts(o, ",\n");
+  /* what the listing caps left out (lower bounds when a search budget ran out) */
+  key(o, "omitted");
+  bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d},\n",
+               a->npath_omitted, a->ncloop_omitted, a->ntloop_omitted);
+  /* set by the equations stage after symbolic elimination; null until then */
+  key(o, "reduced_form");
+  str_or_null(o, a->reduced_form);
   bg_sb_puts(o, "\n}\n");
 }

@@ -144,11 +144,17 @@ static void rec_add(recs *r, const search *s, int end0, int end1, int last) {
 static const recs *sort_r;
 static const bg_model *sort_m;
 
+static int imin(int a, int b) { return a < b ? a : b; }
+static int imax(int a, int b) { return a > b ? a : b; }
+
+/* By the pair of ends (lower element id first, whichever end the bonds
+ * start from), then by bond numbers in listed order. */
 static int rec_cmp(const void *pa, const void *pb) {
   const int *x = &sort_r->meta.v[4 * *(const int *)pa];
   const int *y = &sort_r->meta.v[4 * *(const int *)pb];
-  if (x[0] != y[0]) return x[0] < y[0] ? -1 : 1;
-  if (x[1] != y[1]) return x[1] < y[1] ? -1 : 1;
+  int x0 = imin(x[0], x[1]), y0 = imin(y[0], y[1]), x1 = imax(x[0], x[1]), y1 = imax(y[0], y[1]);
+  if (x0 != y0) return x0 < y0 ? -1 : 1;
+  if (x1 != y1) return x1 < y1 ? -1 : 1;
   for (int i = 0; i < x[3] && i < y[3]; i++) {
     int bx = sort_m->bond_num[sort_r->bonds.v[x[2] + i]];
     int by = sort_m->bond_num[sort_r->bonds.v[y[2] + i]];
@@ -222,15 +228,31 @@ static void path_classify(const bg_model *m, bg_analysis *a, int p) {
     order += in ? 1 : -1;
   }
   a->path_order[p] = *l0 == 'S' || *l1 == 'S' ? BG_PATH_ORDER_NONE : order;
-  int same = m->elem_kind[e[0]] == m->elem_kind[e[1]];
-  if (nstore == 2 && same && nint == 1) a->path_class[p] = 1;
+  /* class 1: an independent and a dependent storage port. Without
+   * gyrators they are of one type (C-C, I-I); through an odd number of
+   * gyrators, which swap effort and flow, a C and an I (mesh1 in test_paths) */
+  if (nstore == 2 && nint == 1) a->path_class[p] = 1;
   else if (m->elem_kind[e[0]] == BG_ELEM_R && m->elem_kind[e[1]] == BG_ELEM_R)
     a->path_class[p] = 2;
   else a->path_class[p] = 0;
 }
 
-static void paths_store(const bg_model *m, bg_analysis *a, const recs *r) {
+/* Each path starts from the end whose port bond has the lower bond number
+ * (hydraulic_bridge: {4,5,6} from R4 to R3, as the reference writes it). */
+static void paths_orient(const bg_model *m, recs *r) {
+  for (int i = 0; i < r->nrec; i++) {
+    int *x = &r->meta.v[4 * i], *b = r->bonds.v + x[2], k = x[3];
+    if (m->bond_num[b[k - 1]] >= m->bond_num[b[0]]) continue;
+    for (int lo = 0, hi = k - 1; lo < hi; lo++, hi--) { int t = b[lo]; b[lo] = b[hi]; b[hi] = t; }
+    int t = x[0];
+    x[0] = x[1];
+    x[1] = t;
+  }
+}
+
+static void paths_store(const bg_model *m, bg_analysis *a, recs *r) {
   int n = r->nrec, nb = r->bonds.n;
+  paths_orient(m, r);
   bg_arena *ar = &a->arena;
   a->npath = n;
   a->npath_omitted = r->omitted;

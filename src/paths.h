@@ -23,8 +23,9 @@ int bg_paths_is_js(int kind);
 int bg_paths_store_integral(const bg_model *m, const bg_analysis *a, int elem);
 
 /* Fills npath, npath_omitted and the path_* arrays: every causal path
- * between ports of 1-port elements, once, from its lower-file-order end,
- * sorted by ends and bond numbers; at most max_paths listed. */
+ * between ports of 1-port elements, once, listed from the end whose port
+ * bond has the lower bond number, sorted by the pair of ends (file order)
+ * and then bond numbers; at most max_paths listed. */
 void bg_paths_find(const bg_model *m, bg_analysis *a, int max_paths);
 /* Fills ncloop, ncloop_omitted and cloop_adr/n/bonds (bonds from the
  * lowest-numbered one, in the direction of its lower-numbered neighbour);

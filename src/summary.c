@@ -41,8 +41,11 @@ static void put_loops(const bg_analysis *a, bg_strbuf *out) {
   for (int i = 0; i < a->ncloop; i++)
     bg_sb_printf(out, "%sgain %s = %g, class %d", i ? "; " : " (", a->cloop_gain[i],
                  a->cloop_gain_value[i], a->cloop_class[i]);
-  bg_sb_puts(out, a->ncloop ? ")\n" : "\n");
-  bg_sb_printf(out, "topological loops: %d (%d algebraic)\n", a->ntloop, algebraic);
+  bg_sb_puts(out, a->ncloop ? ")" : "");
+  if (a->ncloop_omitted) bg_sb_printf(out, ", %d more not listed", a->ncloop_omitted);
+  bg_sb_printf(out, "\ntopological loops: %d (%d algebraic)", a->ntloop, algebraic);
+  if (a->ntloop_omitted) bg_sb_printf(out, ", at least %d more not listed", a->ntloop_omitted);
+  bg_sb_putc(out, '\n');
 }
 
 void bg_analysis_summary(const bg_model *m, const bg_analysis *a, bg_strbuf *out) {

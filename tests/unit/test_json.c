@@ -79,10 +79,15 @@ static void test_values(void) {
   OK(has(j, "{\"name\": \"L1\", \"kind\": \"I\", \"causality\": \"integral\""));
   OK(has(j, "{\"name\": \"C1\", \"kind\": \"C\", \"causality\": \"integral\""));
   OK(has(j, "{\"name\": \"U\", \"kind\": \"Se\", \"causality\": \"fixed\""));
-  OK(has(j, "{\"name\": \"j\", \"kind\": \"1\", \"causality\": \"transfer\""));
+  /* junction-structure nodes have no causality of their own in CLI.md's vocabulary */
+  OK(has(j, "{\"name\": \"j\", \"kind\": \"1\", \"causality\": \"none\", \"inverted\": false}"));
+  OK(!has(j, "transfer"));
   OK(has(j, "{\"step\": 1, \"text\": \"Se U fixes bond 1 (stroke at j)\"}"));
   OK(has(j, "\"conflicts\": [],\n"));
-  OK(has(j, "\"index\": {\"predicted\": null, \"numeric\": null, \"reason\": null}"));
+  OK(has(j, "\"index\": {\"predicted\": null, \"numeric\": null, \"reason\": null, "
+            "\"numeric_status\": \"not computed\"}"));
+  OK(has(j, "\"omitted\": {\"causal_paths\": 0, \"causal_loops\": 0, \"topological_loops\": 0},\n"
+            "  \"reduced_form\": null\n}\n"));
   OK(has(j, "\"form\": \"incomplete\""));
   free(j);
 
@@ -159,8 +164,18 @@ static void test_generic_lists(void) {
   OK(has(j, "\"states\": [\"L1.p\", \"C1.q\"]"));
   OK(has(j, "\"dependent_stores\": []"));
   OK(has(j, "\"form\": \"ode\""));
-  OK(has(j, "\"index\": {\"predicted\": 0, \"numeric\": 0, \"reason\": \"no zero-order path\"}"));
+  OK(has(j, "\"index\": {\"predicted\": 0, \"numeric\": 0, \"reason\": \"no zero-order path\", "
+            "\"numeric_status\": \"computed\"}"));
   OK(has(j, "\"reduced_form\": \"ode\"\n}\n"));
+  bg_sb_free(&sb);
+  /* a singular pencil has no index: null, and the status says why */
+  a.index_numeric = -1;
+  a.npath_omitted = 7, a.ncloop_omitted = 2, a.ntloop_omitted = 3;
+  sb = (bg_strbuf){0};
+  bg_json_write_analysis(m, &a, &sb);
+  j = bg_sb_str(&sb);
+  OK(has(j, "\"numeric\": null, \"reason\": \"no zero-order path\", \"numeric_status\": \"singular\"}"));
+  OK(has(j, "\"omitted\": {\"causal_paths\": 7, \"causal_loops\": 2, \"topological_loops\": 3}"));
   OK(has(j, "{\"kind\": \"time_constant\", \"path\": 1, \"value\": 0.0001}"));
   bg_sb_free(&sb);
   /* the arrays above are static: detach them before the arena goes */

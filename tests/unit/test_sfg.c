@@ -238,7 +238,7 @@ static void test_hydraulic_bridge(void) {
   fx f;
   LOAD(f, "hydraulic_bridge", BG_METHOD_SCAP);
   const char *w[] = {"flat 0 [R1.f f2 R2.f R2.e e2 R1.e] -R1'/R2' | causal path 4",
-                     "flat 0 [R3.f f5 R4.f R4.e e5 R3.e] -R3'/R4' | causal path 6"};
+                     "flat 0 [R4.e e5 R3.e R3.f f5 R4.f] -R3'/R4' | causal path 6"};
   double v[] = {-1.5, -1.5};
   check_algebraic(&f, w, v, 2);
   fx_free(&f);
