@@ -280,6 +280,12 @@ void bg_eqsys_add_z(bg_eqsys *s, int sig) {
   s->sig_torn[sig] = 1;
   s->sig_z[sig] = i;
   s->uname[i] = bg_eqs_signame(s, sig, &s->arena);
+  for (int k = 0; k < s->a->nlag; k++) /* an artificial flow source's flow: "ma.f" */
+    if (s->a->lag_junction[k] == s->sig_elem[sig] && (sig & 1)) {
+      char buf[300];
+      snprintf(buf, sizeof buf, "%s.f", s->m->elem_name[s->sig_elem[sig]]);
+      s->uname[i] = bg_arena_strdup(&s->arena, buf);
+    }
   s->u_elem[i] = -1, s->u_state[i] = -1, s->u_sig[i] = sig;
   s->row_kind[i] = 1;
   s->row_root[i] = s->sig_form[sig] == EQF_IMPLICIT
@@ -318,11 +324,12 @@ bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) 
     bg_diag_error(dg, none, "the causality is incomplete: no equations can be derived");
     return NULL;
   }
-  if (a->nlag > 0) {
-    bg_diag_error(dg, none, "equations for Lagrange causality (artificial flow sources) "
-                            "are not derived; use scap, relaxed or vandijk");
-    return NULL;
-  }
+  for (int k = 0; k < a->nlag; k++)
+    if (a->lag_junction[k] < 0) {
+      bg_diag_error(dg, none, "equations for Lagrange causality with a 1-junction inserted into "
+                              "a bond are not derived; use scap, relaxed or vandijk");
+      return NULL;
+    }
   bg_eqsys *s = alloc_sys(m, a);
   add_unknowns(s);
   user_state_rows(s);

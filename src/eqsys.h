@@ -20,7 +20,10 @@
 typedef struct bg_eqsys bg_eqsys;
 
 /* Builds the equation system. Returns NULL (with a diagnostic) when the
- * causality is incomplete or the system cannot be formed. */
+ * causality is incomplete, Lagrange causality inserted a 1-junction into a
+ * bond, or the system cannot be formed. Under Lagrange causality the flow
+ * of each artificial source's 1-junction is an algebraic unknown ("ma.f")
+ * whose residual is the junction's effort balance. */
 bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg);
 void bg_eqsys_free(bg_eqsys *s);
 
@@ -70,6 +73,11 @@ int bg_eqsys_linearise(bg_eqsys *s, double t, const double *y, const double *yp,
 int bg_eqsys_noutput(const bg_eqsys *s);
 const char *bg_eqsys_output_name(const bg_eqsys *s, int k);
 int bg_eqsys_outputs(bg_eqsys *s, double t, const double *y, const double *yp, double *out);
+
+/* Every bond variable at (t, y, yp) (yp nullable: zeros): e[b] and f[b] by
+ * bond id (arrays of m->nbond). 0, or -1 as bg_eqsys_residual. */
+int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, double *e,
+                     double *f);
 
 /* Times in (t0, t1) where an input is discontinuous (step, pulse and table
  * breakpoints of inputs and sources that depend on t only), sorted, unique;

@@ -60,6 +60,13 @@ int bg_eqsys_outputs(bg_eqsys *s, double t, const double *y, const double *yp, d
   return 0;
 }
 
+int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, double *e,
+                     double *f) {
+  if (bg_eqs_eval(s, t, y, yp, 0)) return -1;
+  for (int b = 0; b < s->m->nbond; b++) e[b] = s->v[s->sig_slot[2 * b]], f[b] = s->v[s->sig_slot[2 * b + 1]];
+  return 0;
+}
+
 /* ------------------------------------------------------------ initial values */
 static double init_value(const bg_model *m, int root, double t0) {
   if (root < 0) return 0;

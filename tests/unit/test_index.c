@@ -42,6 +42,49 @@ static void test_examples(void) {
   INT_EQ(index_of("bond_loop", NULL, -1, "n", 1, 1), 2);
 }
 
+/* The examples EXAMPLES.md gives no numeric index for: ODE forms 0, DAEs
+ * from internal modulation or relaxed conflicts 1 (their predicted index). */
+static void test_other_examples(void) {
+  INT_EQ(index_of("internal_mod_tf", NULL, -1, NULL, 0, 1), 1);
+  INT_EQ(index_of("internal_mod_r", NULL, -1, NULL, 0, 1), 1);
+  INT_EQ(index_of("mod_no_loop", NULL, -1, NULL, 0, 1), 0);
+  INT_EQ(index_of("series_motor", NULL, -1, NULL, 0, 1), 1);
+  INT_EQ(index_of("series_motor_L", NULL, -1, NULL, 0, 1), 0);
+  /* relaxed causality: the consistent initial values must be found (a cubic
+   * conductance has zero slope at e = 0, where the linearisation would be
+   * index 2 or singular) */
+  INT_EQ(index_of("series_conductances", NULL, -1, NULL, 0, 1), 1);
+  INT_EQ(index_of("parallel_conductance", NULL, -1, NULL, 0, 1), 1);
+  INT_EQ(index_of("hydraulic_bridge", NULL, BG_METHOD_RELAXED, NULL, 0, 1), 1);
+  INT_EQ(index_of("slider_crank", NULL, BG_METHOD_VANDIJK, NULL, 0, 1), 1);
+}
+
+/* An example's source with its first `param` line replaced. */
+static char *with_params(const char *name, const char *params) {
+  char path[512];
+  size_t len = 0;
+  snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
+  char *src = bg_read_file(path, &len);
+  if (!src) return NULL;
+  char *p = strstr(src, "\nparam ");
+  char *out = malloc(len + strlen(params) + 2);
+  if (!p) { free(out); return src; }
+  char *eol = strchr(p + 1, '\n');
+  size_t head = (size_t)(p + 1 - src);
+  memcpy(out, src, head);
+  strcpy(out + head, params);
+  strcat(out, eol ? eol : "\n");
+  free(src);
+  return out;
+}
+
+static int index_scaled(const char *name, const char *params, int method) {
+  char *text = with_params(name, params);
+  int k = text ? index_of(NULL, text, method, NULL, 0, 1) : -100;
+  free(text);
+  return k;
+}
+
 static void test_scaling(void) {
   const char *rc = "model rc\nparam C0 = 1e-9, R0 = 1e6\nSe U = 1\n1 j\nR R1 = R0\nC C1 = C0\n"
                    "bond 1 U -> j\nbond 2 j -> R1\nbond 3 j -> C1\n";
@@ -55,6 +98,17 @@ static void test_scaling(void) {
   if (f.s) INT_EQ(bg_eqsys_n(f.s) - bg_eqsys_nx(f.s), 2); /* R2.f, R1.e */
   efx_free(&f);
   INT_EQ(index_of(NULL, c2, -1, NULL, 0, 1), 1);
+  /* the reference's DAE examples with C = 1e-9, R = 1e6 (and inductances
+   * and moduli far from 1): the index must not change */
+  INT_EQ(index_scaled("class12_paths", "param n = 2, C10 = 1e-9, C20 = 0.5e-9, R10 = 1e6, R20 = 2e6, F0 = 1e-3", -1), 1);
+  INT_EQ(index_scaled("bond_loop", "param n = 2, C0 = 1e-9, I0 = 1e6, F0 = 1e-3", -1), 1);
+  INT_EQ(index_scaled("bond_loop", "param n = 1, C0 = 1e-9, I0 = 1e6, F0 = 1e-3", -1), 2);
+  INT_EQ(index_scaled("loop_class1", "param n1 = 2, n2 = 3, C10 = 1e-9, C20 = 1e-9, I0 = 1e-3, F0 = 1e-3", -1), 2);
+  INT_EQ(index_scaled("delta", "param I0 = 1e-3, R10 = 1e6, R20 = 2e6, R30 = 1e6, L10 = 1e-9, L20 = 1e-9", -1), 2);
+  INT_EQ(index_scaled("delta", "param I0 = 1e-3, R10 = 1e6, R20 = 2e6, R30 = 1e6, L10 = 1e-9, L20 = 1e-9",
+                      BG_METHOD_VANDIJK), 1);
+  INT_EQ(index_scaled("modulated_source", "param E0 = 1e-3, R10 = 1e6, R20 = 2e6, k = 1e6, C0 = 1e-9", -1), 1);
+  INT_EQ(index_scaled("modulated_source", "param E0 = 1e-3, R10 = 1e6, R20 = 2e6, k = 2e6, C0 = 1e-9", -1), 2);
 }
 
 static void test_rlc_eigen(void) {
@@ -77,6 +131,7 @@ static void test_rlc_eigen(void) {
 
 int main(void) {
   test_examples();
+  test_other_examples();
   test_scaling();
   test_rlc_eigen();
   return bg_t_done();
