@@ -18,6 +18,7 @@
 #define SIM_EIG_MAX 200        /* eigenvalues for the stiffness test up to this size */
 #define SIM_STIFF_RATIO 1e3
 #define SIM_MAX_STEPS 100000L  /* per output interval; SUNDIALS' 500 is far too few */
+#define SIM_PROGRESS_EVERY 1.0 /* -v: seconds between progress lines */
 
 static char *xstrdup_sb(bg_strbuf *sb) {
   char *s = strdup(bg_sb_str(sb));
@@ -182,16 +183,62 @@ static double store_scale(const byname *bn, const char *name) {
   return isfinite(v) && v > 0 ? v : 1.0;
 }
 
-static double *make_atol(const bg_model *m, bg_eqsys *s, double atol) {
-  int n = bg_eqsys_n(s);
-  double *v = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+static byname byname_make(const bg_model *m) {
   byname bn = {m, bg_xmalloc((size_t)(m->nelem > 0 ? m->nelem : 1) * sizeof(int))};
   for (int e = 0; e < m->nelem; e++) bn.ids[e] = e;
   sort_model = m;
   qsort(bn.ids, (size_t)m->nelem, sizeof(int), cmp_elem);
-  for (int i = 0; i < n; i++) v[i] = atol * store_scale(&bn, bg_eqsys_name(s, i));
-  free(bn.ids);
+  return bn;
+}
+
+static double *make_atol(const byname *bn, bg_eqsys *s, double atol) {
+  int n = bg_eqsys_n(s);
+  double *v = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+  for (int i = 0; i < n; i++) v[i] = atol * store_scale(bn, bg_eqsys_name(s, i));
   return v;
+}
+
+/* ------------------------------------------------------------------ initial values */
+static double init_of(const bg_model *m, int root) {
+  if (root < 0) return 0;
+  bg_xenv env = {m->sim.t0, NULL, NULL, NULL, NULL, NULL};
+  return bg_xeval(m, root, &env);
+}
+
+/* What the model says unknown i starts at: a store's q0/p0, a state's init
+ * (0 when not given). NAN for algebraic unknowns: the model gives none,
+ * their starting value is only a guess. */
+static double model_start(const byname *bn, bg_eqsys *s, int i) {
+  const bg_model *m = bn->m;
+  const char *name = bg_eqsys_name(s, i), *dot = name ? strrchr(name, '.') : NULL;
+  if (!name || !bg_eqsys_is_differential(s, i)) return NAN;
+  if (dot && (!strcmp(dot, ".q") || !strcmp(dot, ".p"))) {
+    int e = find_elem(bn, name, (size_t)(dot - name));
+    if (e >= 0 && bg_elem_is_store(m->elem_kind[e])) return init_of(m, m->elem_init[e]);
+  }
+  for (int k = 0; k < m->nstate; k++)
+    if (!strcmp(m->state_name[k], name)) return init_of(m, m->state_init[k]);
+  return NAN;
+}
+
+/* The states the solver started from that differ from the model's initial
+ * values (a dependent store's q/p follows from the independent ones; the
+ * model's default 0 is then replaced): r->ic_report, "L1.p 0 -> 1, ...". */
+static void report_start(const byname *bn, bg_eqsys *s, const double *atol, double rtol,
+                         bg_simresult *r) {
+  if (!r->y0) return;
+  bg_strbuf sb = {0};
+  int nchanged = 0;
+  for (int i = 0; i < r->n; i++) {
+    double v0 = model_start(bn, s, i), y = r->y0[i];
+    if (isnan(v0) || !(fabs(y - v0) > rtol * fabs(v0) + atol[i])) continue;
+    if (nchanged++ < 8)
+      bg_sb_printf(&sb, "%s%s %.6g -> %.6g", nchanged > 1 ? ", " : "", bg_eqsys_name(s, i), v0, y);
+  }
+  if (nchanged > 8) bg_sb_printf(&sb, " and %d more", nchanged - 8);
+  r->consistent_ic_changed = nchanged > 0;
+  if (nchanged) r->ic_report = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
 }
 
 /* ------------------------------------------------------------------ grid */
@@ -253,7 +300,13 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   memset(r, 0, sizeof *r);
   char *why = bg_simulate_refusal(m, a);
   if (why) return refuse(r, why);
-  if (!s) return refuse(r, strdup("the equations could not be formed (see the diagnostics)"));
+  if (!s) {
+    bg_strbuf sb = {0};
+    bg_sb_puts(&sb, "the equations could not be formed");
+    if (o && o->eqs_problem) bg_sb_printf(&sb, ": %s", o->eqs_problem);
+    else bg_sb_puts(&sb, " (see the diagnostics)");
+    return refuse(r, xstrdup_sb(&sb));
+  }
   if (check_spec(&m->sim, r)) return 1;
   int n = bg_eqsys_n(s), rc;
   double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
@@ -261,19 +314,23 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   int kind = choose(m, a, s, o, y0, r);
   free(y0);
   if (kind < 0) return 1;
-  if (o && o->verbose)
-    fprintf(stderr, "bgdraw: simulate: %d unknowns, solver %s (%s)\n", n, r->solver_used,
-            r->solver_reason);
   bg_simplan p = {0};
   p.kind = kind;
   p.sparse = n > SIM_SPARSE_ABOVE;
+  if (o && o->verbose)
+    fprintf(stderr, "bgdraw: simulate: %d unknowns, solver %s, %s (%s)\n", n, r->solver_used,
+            p.sparse ? "sparse Jacobian, KLU" : "dense Jacobian", r->solver_reason);
   p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
   p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : SIM_DEFAULT_RTOL;
   double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
   p.max_step = m->sim.max_step;
   p.max_steps = SIM_MAX_STEPS;
   p.verbose = o ? o->verbose : 0;
-  double *atolv = make_atol(m, s, atol), *times = make_times(&m->sim, &p.nrows);
+  p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
+  r->linear_solver = p.sparse ? "klu" : "dense";
+  r->rtol = p.rtol, r->atol = atol;
+  byname bn = byname_make(m);
+  double *atolv = make_atol(&bn, s, atol), *times = make_times(&m->sim, &p.nrows);
   double *bp = make_breakpoints(s, &m->sim, &p.nbp);
   p.atol = atolv, p.times = times, p.bp = bp;
   result_alloc(s, p.nrows, r);
@@ -281,12 +338,15 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   clock_gettime(CLOCK_MONOTONIC, &c0);
   rc = bg_sim_integrate(s, &p, r);
   clock_gettime(CLOCK_MONOTONIC, &c1);
+  if (r->nrows) report_start(&bn, s, atolv, p.rtol, r);
+  if (p.verbose && r->ic_report)
+    fprintf(stderr, "bgdraw: simulate: initial values made consistent: %s\n", r->ic_report);
   if (p.verbose)
     fprintf(stderr, "bgdraw: simulate: %s in %.3f s: %d rows, %ld steps, %ld function and %ld "
                     "Jacobian evaluations, %ld error test failures, %ld nonlinear iterations\n",
             rc ? "failed" : "done", (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec),
             r->nrows, r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
-  free(atolv), free(times), free(bp);
+  free(atolv), free(times), free(bp), free(bn.ids);
   return rc;
 }
 

@@ -17,6 +17,12 @@ typedef struct bg_sim_opts {
   int verbose;        /* progress and the solver choice on stderr */
   /* Overrides of the model's simulate block (0: the model's value). */
   double rtol, atol;
+  /* -v progress: at most one line per this many seconds of wall time
+   * (0: 1 s); a run shorter than that prints only its summary. */
+  double progress_every;
+  /* Why the equations could not be formed when bg_simulate gets s == NULL
+   * (the eqsys diagnostic), for the refusal message; nullable. */
+  const char *eqs_problem;
 } bg_sim_opts;
 
 typedef struct bg_simresult {
@@ -30,12 +36,18 @@ typedef struct bg_simresult {
   char *message;       /* why it was refused or failed, in words; NULL when ok */
   const char *solver_used; /* "cvode_bdf", "cvode_adams", "ida"; NULL when refused */
   char *solver_reason;     /* why this solver ("auto: ...", "forced by ...") */
-  char *ic_report;         /* IDA: which initial values IDACalcIC changed; nullable */
+  char *ic_report;         /* states whose start differs from the model's initial
+                              values (q0, p0, init; 0 when not given), e.g. a
+                              dependent store's: "L1.p 0 -> 1"; nullable */
   long steps, rhs_evals, jac_evals, err_test_fails, nonlin_iters;
-  int consistent_ic_changed; /* IDA changed some of the model's initial values */
+  int consistent_ic_changed; /* ic_report is not empty */
   int n;               /* unknowns of the equation system */
   double *y0, *yp0;    /* n: the initial values and derivatives the solver started
                           from (after IDACalcIC for IDA); NULL when refused */
+  const char *linear_solver; /* "dense" or "klu"; NULL when refused */
+  double rtol, atol;   /* the tolerances used (atol before the per-store scaling) */
+  int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
+                          after the model's own failed (0: the model's worked) */
 } bg_simresult;
 
 /* Runs the model's simulation. s may be NULL when the equations could not

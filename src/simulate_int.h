@@ -18,6 +18,7 @@ typedef struct bg_simplan {
   int nbp;
   const double *bp;    /* sorted breakpoints strictly inside (t0, t_end) */
   int verbose;
+  double progress_every; /* -v: seconds of wall time between progress lines */
 } bg_simplan;
 
 /* Integrates; fills r->t, r->values (preallocated for p->nrows rows), nrows,

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <cvode/cvode.h>
 #include <ida/ida.h>
@@ -38,7 +39,20 @@ typedef struct simrun {
   char err[400];                 /* the last evaluation failure, in words */
   char sunmsg[400];              /* the last SUNDIALS message */
   long st[5];                    /* statistics of earlier segments (counters reset on ReInit) */
+  /* -v progress: wall clock at the start and at the last line, evaluations
+   * since the last clock reading, latest time shown */
+  double wall0, wall_last, t_shown;
+  unsigned ncall;
 } simrun;
+
+static void progress(simrun *R, double t);
+
+static double wall(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 
 /* ------------------------------------------------------------------ callbacks
  * They run inside the solver: no allocation. An evaluation failure (NaN, a
@@ -57,14 +71,21 @@ static int keep_error(simrun *R) {
   return R->nfunc_err > SIM_MAX_EVAL_FAILS ? -1 : 1;
 }
 
+/* -v: a long output interval still shows progress; the clock is read every
+ * 256 evaluations only, and not at all without -v. */
+#define PROGRESS_POLL(R, t) \
+  do { if ((R)->p->verbose && (++(R)->ncall & 255u) == 0) progress((R), (t)); } while (0)
+
 static int cv_rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *ud) {
   simrun *R = ud;
+  PROGRESS_POLL(R, t);
   if (bg_eqsys_rhs(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) == 0) return 0;
   return keep_error(R);
 }
 
 static int ida_res(sunrealtype t, N_Vector y, N_Vector yp, N_Vector rr, void *ud) {
   simrun *R = ud;
+  PROGRESS_POLL(R, t);
   if (bg_eqsys_residual(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
                         N_VGetArrayPointer(rr)) == 0)
     return 0;
@@ -200,6 +221,8 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
   bg_eqsys_initial(s, N_VGetArrayPointer(R->y));
   N_VConst(0.0, R->yp);
   R->tcur = p->t0;
+  R->t_shown = p->t0;
+  R->wall0 = R->wall_last = wall();
   if (make_linsol(R)) return -1;
   return p->kind == BG_SIM_IDA ? setup_ida(R) : setup_cvode(R);
 }
@@ -317,21 +340,26 @@ static void fail_eval(simrun *R, bg_simresult *r) {
   bg_sb_free(&sb);
 }
 
-static void progress(simrun *R, int *next_tenth) {
+/* -v: one line with the time reached as a percentage of the span, at most
+ * one per p->progress_every seconds of wall time (a short run prints none;
+ * bg_simulate prints the summary). Called at output rows and, every 256
+ * evaluations, from the callbacks (t is then the solver's trial time). */
+static void progress(simrun *R, double t) {
   const bg_simplan *p = R->p;
-  double frac = (R->tcur - p->t0) / (p->t_end - p->t0);
-  if (!p->verbose || frac * 10.0 < *next_tenth) return;
+  double now = wall();
+  if (!p->verbose || now - R->wall_last < p->progress_every) return;
+  R->wall_last = now;
+  if (t > R->t_shown) R->t_shown = t;
   long st[5];
   stats_now(R, st);
-  fprintf(stderr, "bgdraw: simulate: t = %.6g (%d%%), %ld steps\n", R->tcur,
-          (int)(frac * 100.0 + 0.5), st[0]);
-  while (*next_tenth <= frac * 10.0) (*next_tenth)++;
+  fprintf(stderr, "bgdraw: simulate: t = %.6g (%.1f%% of the span), %ld steps, %.1f s\n",
+          R->t_shown, 100.0 * (R->t_shown - p->t0) / (p->t_end - p->t0), st[0], now - R->wall0);
 }
 
 /* ------------------------------------------------------------------ the run */
 /* One segment between input discontinuities: every output time before its
  * end, then (unless it is the last) up to just before the breakpoint. */
-static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last, int *tenth) {
+static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) {
   const bg_simplan *p = R->p;
   double span = p->t_end - p->t0;
   /* Stopping a hair before tb keeps every evaluation on the left of the jump
@@ -346,7 +374,7 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last, 
     }
     if (record(R, r, p->times[*k])) { fail_eval(R, r); return -1; }
     (*k)++;
-    progress(R, tenth);
+    if (p->verbose) progress(R, R->tcur);
   }
   if (last) return 0;
   if (R->tcur < tstop && (f = run_to(R, tstop)) < 0) { fail(R, r, f, ""); return -1; }
@@ -354,27 +382,6 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last, 
   f = run_restart(R, tb, tnext);
   if (f < 0) { fail(R, r, f, " (restarting after an input discontinuity)"); return -1; }
   return 0;
-}
-
-static void ic_report(simrun *R, const double *y0, bg_simresult *r) {
-  const double *y = N_VGetArrayPointer(R->y);
-  bg_strbuf sb = {0};
-  int nchanged = 0;
-  for (int i = 0; i < R->n; i++) {
-    double tol = R->p->rtol * fabs(y0[i]) + R->p->atol[i];
-    if (!(fabs(y[i] - y0[i]) > tol)) continue;
-    if (nchanged++ < 8)
-      bg_sb_printf(&sb, "%s%s %.6g -> %.6g", nchanged > 1 ? ", " : "", bg_eqsys_name(R->s, i),
-                   y0[i], y[i]);
-  }
-  if (nchanged > 8) bg_sb_printf(&sb, " and %d more", nchanged - 8);
-  r->consistent_ic_changed = nchanged > 0;
-  if (nchanged) {
-    r->ic_report = strdup(bg_sb_str(&sb));
-    if (R->p->verbose)
-      fprintf(stderr, "bgdraw: simulate: consistent initial values (IDACalcIC): %s\n", r->ic_report);
-  }
-  bg_sb_free(&sb);
 }
 
 /* Keeps the initial point the solver starts from (reports, tests). */
@@ -388,16 +395,54 @@ static void keep_start(simrun *R, bg_simresult *r) {
   else if (R->p->kind == BG_SIM_IDA) memcpy(r->yp0, N_VGetArrayPointer(R->yp), (size_t)R->n * sizeof(double));
 }
 
+/* IDACalcIC again from guess k (1 or 2) of the algebraic unknowns: +1 or -1,
+ * spread by up to 10 % so that a symmetric guess cannot make Newton's matrix
+ * singular (series_conductances: e3 = e4 = 0 gives a rank-1 matrix). */
+#define IC_GUESSES 2
+static int run_calcic_guess(simrun *R, const double *y0, double tnext, int k) {
+  double *y = N_VGetArrayPointer(R->y);
+  int nz = 0, j = 0;
+  for (int i = 0; i < R->n; i++) nz += !bg_eqsys_is_differential(R->s, i);
+  for (int i = 0; i < R->n; i++) {
+    y[i] = y0[i];
+    if (!bg_eqsys_is_differential(R->s, i)) y[i] = (k == 1 ? 1.0 : -1.0) * (1.0 + 0.1 * j++ / nz);
+  }
+  N_VConst(0.0, R->yp);
+  stats_now(R, R->st);
+  R->nfunc_err = 0;
+  R->sunmsg[0] = 0;
+  int f = IDAReInit(R->mem, R->p->t0, R->y, R->yp);
+  return f < 0 ? f : run_calcic(R, tnext);
+}
+
 static int run_start(simrun *R, bg_simresult *r) {
   if (R->p->kind != BG_SIM_IDA) { keep_start(R, r); return 0; }
-  int n = R->n;
+  int n = R->n, nz = 0;
   double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
   memcpy(y0, N_VGetArrayPointer(R->y), (size_t)n * sizeof(double));
+  for (int i = 0; i < n && !R->ode; i++) nz += !bg_eqsys_is_differential(R->s, i);
   double tnext = R->p->nrows > 1 ? R->p->times[1] : R->p->t_end;
   if (R->p->nbp && R->p->bp[0] < tnext) tnext = R->p->bp[0];
-  int f = run_calcic(R, tnext);
-  if (f < 0) fail(R, r, f, " (computing consistent initial values)");
-  else ic_report(R, y0, r);
+  int f = run_calcic(R, tnext), f0 = f, k;
+  /* The model's guess failed: other guesses; the message is the first failure's. */
+  char msg0[sizeof R->sunmsg], err0[sizeof R->err];
+  int nerr0 = R->nfunc_err;
+  memcpy(msg0, R->sunmsg, sizeof msg0);
+  memcpy(err0, R->err, sizeof err0);
+  for (k = 1; f < 0 && nz > 0 && k <= IC_GUESSES; k++) f = run_calcic_guess(R, y0, tnext, k);
+  if (f < 0) {
+    memcpy(R->sunmsg, msg0, sizeof msg0);
+    memcpy(R->err, err0, sizeof err0);
+    R->nfunc_err = nerr0;
+    fail(R, r, f0, nz ? " (computing consistent initial values from the model's guess and "
+                        "from guesses of +1 and -1 for the algebraic unknowns)"
+                      : " (computing consistent initial values)");
+  } else {
+    r->ic_retries = f0 < 0 ? k - 1 : 0;
+    if (r->ic_retries && R->p->verbose)
+      fprintf(stderr, "bgdraw: simulate: IDACalcIC failed from the model's guess of the "
+                      "algebraic unknowns; %s worked\n", r->ic_retries == 1 ? "+1" : "-1");
+  }
   keep_start(R, r);
   free(y0);
   return f < 0 ? -1 : 0;
@@ -405,7 +450,7 @@ static int run_start(simrun *R, bg_simresult *r) {
 
 int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r) {
   simrun R;
-  int rc = 0, k = 0, tenth = 1;
+  int rc = 0, k = 0;
   r->t_reached = p->t0;
   if (run_open(&R, s, p)) {
     r->partial = 1;
@@ -416,7 +461,7 @@ int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r) {
     rc = 2;
   } else {
     for (int j = 0; j <= p->nbp && !rc; j++)
-      rc = run_segment(&R, r, &k, j < p->nbp ? p->bp[j] : p->t_end, j == p->nbp, &tenth) ? 2 : 0;
+      rc = run_segment(&R, r, &k, j < p->nbp ? p->bp[j] : p->t_end, j == p->nbp) ? 2 : 0;
   }
   if (R.mem) {
     long st[5];

@@ -19,6 +19,12 @@ foreach(f ${BG_UNIT_TESTS})
   bg_add_test(${n})
 endforeach()
 
+# test_simalloc counts the engine's allocations through the linker's --wrap.
+if(TARGET test_simalloc)
+  target_link_options(test_simalloc PRIVATE
+    -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc)
+endif()
+
 # Script-driven tests (shell), one per tests/*.sh
 file(GLOB BG_SCRIPT_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/*.sh)
 foreach(f ${BG_SCRIPT_TESTS})
