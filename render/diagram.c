@@ -56,10 +56,22 @@ static char *elem_markup(bg_diagram *d, int e) {
   return s;
 }
 
+/* "∫ : phi": the integrator of a user state. */
+static char *state_markup(bg_diagram *d, int s) {
+  bg_strbuf b = {0};
+  bg_sb_puts(&b, "\u222b : ");
+  put_name(&b, d->m->state_name[s], d->st.font_size);
+  char *r = bg_arena_strdup(&d->arena, bg_sb_str(&b));
+  bg_sb_free(&b);
+  return r;
+}
+
 static void measure_nodes(bg_diagram *d) {
   const bg_model *m = d->m;
+  for (int i = 0; i < d->nnode; i++) d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
+  for (int s = 0; s < m->nstate; s++)
+    if (d->state_node[s] >= 0) d->nlabel[d->state_node[s]] = state_markup(d, s);
   for (int i = 0; i < d->nnode; i++) {
-    d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
     double w, h;
     bg_text_measure(d->st.font, d->st.font_size, d->nlabel[i], &w, &h);
     /* pango's logical height includes the line gap: trim it so vertical
@@ -83,31 +95,55 @@ static const char *choose_engine(const bg_diagram *d) {
   return e;
 }
 
-/* Layout edges: the bonds, then Sf* → junction for Lagrange sources. */
-static void layout_edges(const bg_diagram *d, int *tail, int *head) {
+/* Layout edges: the bonds, Sf* → junction for Lagrange sources, and for a
+ * drawn user state its inputs → integrator → modulated elements. Returns
+ * the count; *tail and *head are allocated. */
+static int layout_edges(const bg_diagram *d, int **tail, int **head) {
   const bg_model *m = d->m;
-  for (int b = 0; b < m->nbond; b++) tail[b] = m->bond_tail[b], head[b] = m->bond_head[b];
-  int k = m->nbond;
+  int cap = m->nbond + d->nnode + m->nsignal + 1, n = 0;
+  for (int s = 0; s < m->nstate; s++) cap += d->state_node[s] >= 0 ? 64 : 0;
+  int *t = bg_xcalloc((size_t)cap, sizeof *t), *h = bg_xcalloc((size_t)cap, sizeof *h);
+  for (int b = 0; b < m->nbond; b++) t[n] = m->bond_tail[b], h[n++] = m->bond_head[b];
   for (int i = 0; d->a && i < d->a->nlag; i++)
-    if (d->lag_node[i] >= 0) tail[k] = d->lag_node[i], head[k++] = d->a->lag_junction[i];
+    if (d->lag_node[i] >= 0) t[n] = d->lag_node[i], h[n++] = d->a->lag_junction[i];
+  for (int s = 0; s < m->nstate; s++) {
+    if (d->state_node[s] < 0) continue;
+    int in[64], nin = bg_state_inputs(m, s, in, 64);
+    for (int k = 0; k < nin; k++) t[n] = in[k], h[n++] = d->state_node[s];
+  }
+  for (int i = 0; i < m->nsignal; i++) {
+    int s = bg_signal_state(m, i);
+    if (s >= 0 && d->state_node[s] >= 0) t[n] = d->state_node[s], h[n++] = m->signal_to[i];
+  }
+  *tail = t, *head = h;
+  return n;
 }
 
 static int run_layout(bg_diagram *d, bg_diags *dg) {
   const bg_model *m = d->m;
-  int ne = m->nbond + d->nnode - m->nelem;
-  int *tail = bg_xcalloc((size_t)ne + 1, sizeof *tail), *head = bg_xcalloc((size_t)ne + 1, sizeof *head);
-  layout_edges(d, tail, head);
+  int *tail, *head, ne = layout_edges(d, &tail, &head);
   int *pinned = bg_xcalloc((size_t)d->nnode, sizeof *pinned);
+  unsigned char *root = bg_xcalloc((size_t)d->nnode, 1);
   double *px = bg_xcalloc((size_t)d->nnode, sizeof *px), *py = bg_xcalloc((size_t)d->nnode, sizeof *py);
-  for (int e = 0; e < m->nelem; e++)
+  for (int e = 0; e < m->nelem; e++) {
     if (m->elem_has_at && m->elem_has_at[e]) pinned[e] = 1, px[e] = m->elem_at_x[e], py[e] = m->elem_at_y[e];
+    root[e] = bg_elem_is_source(m->elem_kind[e]);
+  }
+  /* the junction structure (bonds between junctions and two-ports) straight,
+   * the one-ports hanging off it */
+  int *weight = bg_xcalloc((size_t)ne + 1, sizeof *weight);
+  for (int i = 0; i < ne; i++) {
+    int t = tail[i], h = head[i];
+    weight[i] = i < m->nbond && !bg_elem_is_oneport(m->elem_kind[t]) &&
+                        !bg_elem_is_oneport(m->elem_kind[h]) ? 4 : 1;
+  }
   bg_layout_in in = {d->nnode, d->nw, d->nh, pinned, px, py, ne, tail, head,
                      choose_engine(d), m->layout.rankdir, d->st.node_sep, d->st.rank_sep,
-                     d->st.splines};
+                     d->st.splines, root, weight};
   char err[256];
   int rc = bg_layout_run(&in, &d->lay, err, sizeof err);
   if (rc) bg_diag_error(dg, (bg_srcloc){0, 0}, "%s", err);
-  free(tail), free(head), free(pinned), free(px), free(py);
+  free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
@@ -182,73 +218,62 @@ static void draw_stroke(bg_diagram *d, int b) {
   }
 }
 
-void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size) {
-  double w, h;
-  bg_text_measure(d->st.font, size, markup, &w, &h);
-  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "halo");
-  it->fill = d->st.background, it->width = 0;
-  double hw = w / 2 + 1, hh = 0.8 * h / 2 + 0.5;
-  bg_scene_move(&d->scene, p.x - hw, p.y - hh);
-  bg_scene_line(&d->scene, p.x + hw, p.y - hh);
-  bg_scene_line(&d->scene, p.x + hw, p.y + hh);
-  bg_scene_line(&d->scene, p.x - hw, p.y + hh);
-  bg_scene_close(&d->scene);
+/* A point on bond b a fraction t of the way (the middle from the geometry,
+ * elsewhere on the chord). */
+static bg_vec along_bond(const bg_diagram *d, int b, double t) {
+  const bg_bond_geom *g = &d->bg[b];
+  if (t == 0.5) return g->mid;
+  return bg_vadd(g->tail, bg_vscale(bg_vsub(g->head, g->tail), t));
 }
 
-static int overlaps(const double r[4], double x0, double y0, double x1, double y1) {
-  return x0 < r[2] && r[0] < x1 && y0 < r[3] && r[1] < y1;
-}
-
-static int label_free(const bg_diagram *d, double x0, double y0, double x1, double y1) {
-  for (int i = 0; i < d->nnode; i++) {
-    double r[4] = {d->nx[i] - d->nw[i] / 2, d->ny[i] - d->nh[i] / 2, d->nx[i] + d->nw[i] / 2,
-                   d->ny[i] + d->nh[i] / 2};
-    if (overlaps(r, x0, y0, x1, y1)) return 0;
-  }
-  for (int i = 0; i < d->nplaced; i++)
-    if (overlaps(d->placed + 4 * i, x0, y0, x1, y1)) return 0;
-  return 1;
-}
-
-void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p) {
-  static const double steps[] = {0, 1, -1, 2, -2, 3, -3, 4, -4};
-  bg_vec best = *p;
-  for (size_t k = 0; k < sizeof steps / sizeof steps[0]; k++) {
-    bg_vec c = bg_v(p->x, p->y + steps[k] * (h + 1));
-    if (label_free(d, c.x - w / 2, c.y - h / 2, c.x + w / 2, c.y + h / 2)) {
-      best = c;
-      break;
-    }
-  }
-  if (d->nplaced == d->capplaced) {
-    d->capplaced = d->capplaced ? 2 * d->capplaced : 16;
-    d->placed = bg_xrealloc(d->placed, (size_t)d->capplaced * 4 * sizeof(double));
-  }
-  double *r = d->placed + 4 * d->nplaced++;
-  r[0] = best.x - w / 2, r[1] = best.y - h / 2, r[2] = best.x + w / 2, r[3] = best.y + h / 2;
-  *p = best;
-}
-
-/* Places text beside mid-bond on the side n, clear of the line by gap. */
-static void text_beside(bg_diagram *d, const char *markup, bg_vec mid, bg_vec n, double size,
+/* Places text beside bond b on the side n, 3.5 pt clear of the line: at the
+ * middle if that is free, else a little along the bond or further out. */
+static void text_beside(bg_diagram *d, const char *markup, int b, bg_vec n, double size,
                         bg_rgba c, const char *role) {
+  static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
+  enum { NT = sizeof ts / sizeof ts[0] };
   double w, h;
   bg_text_measure(d->st.font, size, markup, &w, &h);
-  double extent = fabs(n.x) * w / 2 + fabs(n.y) * 0.8 * h / 2;
-  bg_vec p = bg_vadd(mid, bg_vscale(n, 3.5 + extent));
+  h *= 0.8;
+  double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2;
+  bg_vec cand[2 * NT];
+  for (int j = 0; j < 2; j++)
+    for (int k = 0; k < NT; k++)
+      cand[j * NT + k] = bg_vadd(along_bond(d, b, ts[k]), bg_vscale(n, 3.5 + extent + 4 * j));
+  bg_vec p = cand[bg_place_best(d, cand, 2 * NT, w + 1, h)];
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind)
     bg_text_halo(d, markup, p, size);
   bg_scene_text(&d->scene, markup, p.x, p.y, size, 0.5, 0.5, c, role);
 }
 
+/* "e₃": a bond variable with its bond number as a subscript. */
+static void var_markup(bg_strbuf *t, char v, int num, double size) {
+  bg_sb_printf(t, "%c<span size=\"70%%\" rise=\"%.1fpt\">%d</span>", v, -0.27 * size, num);
+}
+
 static void draw_number(bg_diagram *d, int b) {
   const bg_model *m = d->m;
-  char num[32], role[48];
+  double size = d->st.font_size * d->st.number_scale;
+  bg_rgba ink = bg_diagram_ink(d, d->st.fg, d->hot_bond[b]);
+  bg_vec barb = bg_barb_side(d, b);
+  char role[48];
+  if (d->show & BG_SHOW_VARIABLES) {
+    /* effort on the barb side, flow opposite (DRAWING.md) */
+    bg_strbuf t = {0};
+    var_markup(&t, 'f', m->bond_num[b], size);
+    snprintf(role, sizeof role, "variable bond=%d f", m->bond_num[b]);
+    text_beside(d, bg_sb_str(&t), b, bg_vscale(barb, -1), size, ink, role);
+    bg_sb_clear(&t);
+    var_markup(&t, 'e', m->bond_num[b], size);
+    snprintf(role, sizeof role, "variable bond=%d e", m->bond_num[b]);
+    text_beside(d, bg_sb_str(&t), b, barb, size, ink, role);
+    bg_sb_free(&t);
+    return;
+  }
+  char num[32];
   snprintf(num, sizeof num, "%d", m->bond_num[b]);
   snprintf(role, sizeof role, "number bond=%d", m->bond_num[b]);
-  bg_vec n = bg_vscale(bg_barb_side(d, b), -1);
-  text_beside(d, num, d->bg[b].mid, n, d->st.font_size * d->st.number_scale,
-              bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
+  text_beside(d, num, b, bg_vscale(barb, -1), size, ink, role);
 }
 
 static void draw_bond_label(bg_diagram *d, int b) {
@@ -258,71 +283,28 @@ static void draw_bond_label(bg_diagram *d, int b) {
   put_escaped(&t, m->bond_label[b], strlen(m->bond_label[b]));
   char role[48];
   snprintf(role, sizeof role, "bondlabel bond=%d", m->bond_num[b]);
-  text_beside(d, bg_sb_str(&t), d->bg[b].mid, bg_barb_side(d, b),
-              d->st.font_size * d->st.number_scale, bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
+  text_beside(d, bg_sb_str(&t), b, bg_barb_side(d, b), d->st.font_size * d->st.number_scale,
+              bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
   bg_sb_free(&t);
 }
 
 static void draw_bonds(bg_diagram *d) {
   const bg_model *m = d->m;
-  for (int b = 0; b < m->nbond; b++) draw_bond(d, b);
+  for (int b = 0; b < m->nbond; b++) {
+    draw_bond(d, b);
+    bg_obstacle_item(d, d->scene.nitem - 1);
+  }
   if (d->a && (d->show & BG_SHOW_STROKES))
     for (int b = 0; b < m->nbond; b++)
       if (d->a->bond_stroke[b] != BG_STROKE_NONE) draw_stroke(d, b);
+}
+
+static void draw_numbers(bg_diagram *d) {
+  const bg_model *m = d->m;
   for (int b = 0; b < m->nbond; b++) {
-    if (d->show & BG_SHOW_NUMBERS) draw_number(d, b);
+    if (d->show & (BG_SHOW_NUMBERS | BG_SHOW_VARIABLES)) draw_number(d, b);
     if (d->show & BG_SHOW_LABELS) draw_bond_label(d, b);
   }
-}
-
-/* ---------------------------------------------------------------- signals */
-static bg_vec node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
-  return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
-}
-
-static int bond_between(const bg_model *m, int x, int y) {
-  for (int i = 0; i < m->elem_nbond[x]; i++) {
-    int b = m->elem_bonds[m->elem_bondadr[x] + i];
-    if (m->bond_tail[b] == y || m->bond_head[b] == y) return b;
-  }
-  return -1;
-}
-
-static void draw_signal(bg_diagram *d, int i) {
-  const bg_model *m = d->m;
-  int from = m->signal_from[i], to = m->signal_to[i];
-  if (from < 0 || from == to) return; /* a user state has no node to start from */
-  const bg_style *st = &d->st;
-  bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
-  bg_vec p0 = node_exit(d, from, ct, 0), p1 = node_exit(d, to, cf, 1.5);
-  bg_vec dir = bg_vunit(bg_vsub(p1, p0));
-  double alen = 6, awid = 4.5;
-  int hot = d->hot_elem[from] && d->hot_elem[to];
-  bg_rgba c = bg_diagram_ink(d, st->signal, hot);
-  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "signal %s->%s",
-                                     m->elem_name[from], m->elem_name[to]);
-  it->color = c, it->width = 0.7;
-  if (st->signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
-  int b = bond_between(m, from, to);
-  if (b >= 0) {
-    /* a bond joins the same nodes: bow the signal out to the barb side (the
-     * number is on the other) so the two stay apart */
-    bg_vec bow = bg_vscale(bg_barb_side(d, b), 16), chord = bg_vsub(p1, p0);
-    bg_vec c1 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 1.0 / 3)), bow);
-    bg_vec c2 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 2.0 / 3)), bow);
-    dir = bg_vunit(bg_vsub(p1, c2));
-    bg_vec end = bg_vsub(p1, bg_vscale(dir, alen * 0.8));
-    bg_scene_move(&d->scene, p0.x, p0.y);
-    bg_scene_curve(&d->scene, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
-  } else {
-    bg_vec end = bg_vsub(p1, bg_vscale(dir, alen * 0.8));
-    bg_scene_move(&d->scene, p0.x, p0.y);
-    bg_scene_line(&d->scene, end.x, end.y);
-  }
-  it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "signal-arrow %s->%s", m->elem_name[from],
-                      m->elem_name[to]);
-  it->fill = it->color = c, it->width = 0;
-  bg_geom_arrowhead(&d->scene, p1, dir, alen, awid);
 }
 
 /* ---------------------------------------------------------------- nodes */
@@ -368,7 +350,7 @@ static void draw_lagrange(bg_diagram *d) {
     if (n >= 0) {
       int j = a->lag_junction[i];
       bg_vec cn = bg_v(d->nx[n], d->ny[n]);
-      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, node_exit(d, j, cn, 0));
+      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, bg_node_exit(d, j, cn, 0));
     } else if (a->lag_bond[i] >= 0) {
       /* the inserted 1-junction sits on the split bond: attach beside it */
       int b = a->lag_bond[i];
@@ -429,6 +411,12 @@ static void alloc_nodes(bg_diagram *d) {
   d->nnode = m->nelem;
   for (int i = 0; i < nlag; i++)
     d->lag_node[i] = d->a->lag_junction[i] >= 0 ? d->nnode++ : -1;
+  d->state_node = bg_arena_alloc(&d->arena, sizeof(int) * ((size_t)m->nstate + 1));
+  for (int s = 0; s < m->nstate; s++) d->state_node[s] = -1;
+  for (int i = 0; (d->show & BG_SHOW_SIGNALS) && i < m->nsignal; i++) {
+    int s = bg_signal_state(m, i);
+    if (s >= 0 && d->state_node[s] < 0) d->state_node[s] = d->nnode++;
+  }
   size_t n = (size_t)d->nnode + 1;
   d->nw = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nh = bg_arena_alloc(&d->arena, n * sizeof(double));
@@ -439,17 +427,25 @@ static void alloc_nodes(bg_diagram *d) {
   d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
 }
 
+/* Drawing order: layer polylines at the bottom, then bonds, strokes,
+ * signals, numbers, labels, conflicts, and the path tags and loop gains on
+ * top. Text is placed clear of what was drawn before it (diagram_place.c);
+ * numbers see the bonds and nodes, tags and gains also the polylines. */
 static void draw_all(bg_diagram *d) {
   unsigned show = d->show;
   int hk = d->o.highlight_kind;
+  bg_obstacle_nodes(d);
+  bg_layers_prepare(d);
   if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);
   if ((show & BG_SHOW_LOOPS) || hk == 'l') bg_draw_loops(d);
   draw_bonds(d);
-  if (show & BG_SHOW_SIGNALS)
-    for (int i = 0; i < d->m->nsignal; i++) draw_signal(d, i);
+  if (show & BG_SHOW_SIGNALS) bg_draw_signals(d);
   draw_lagrange(d);
+  draw_numbers(d);
+  for (int i = 0; i < d->npoly; i++) bg_obstacle_item(d, d->poly[i]);
   draw_nodes(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
+  bg_place_layer_labels(d);
   bg_scene_fit(&d->scene, d->st.margin);
   if (show & BG_SHOW_LEGEND) {
     bg_draw_legend(d);
@@ -481,7 +477,9 @@ fail:
 void bg_diagram_free(bg_diagram *d) {
   if (!d) return;
   bg_layout_free(&d->lay);
-  free(d->placed);
+  bg_obstacles_free(d->obs);
+  free(d->labels);
+  free(d->poly);
   bg_scene_free(&d->scene);
   bg_arena_free(&d->arena);
   free(d);

@@ -17,9 +17,24 @@ static void dot_str(bg_strbuf *b, const char *s) {
 
 static double yup(const bg_diagram *d, double y) { return d->lay.height - y; }
 
+/* The user state whose integrator node n is, or -1. */
+static int node_state(const bg_diagram *d, int n) {
+  for (int s = 0; s < d->m->nstate; s++)
+    if (d->state_node[s] == n) return s;
+  return -1;
+}
+
 static void node_id(const bg_diagram *d, int n, bg_strbuf *out) {
   if (n < d->m->nelem) {
     dot_str(out, d->m->elem_name[n]);
+    return;
+  }
+  int s = node_state(d, n);
+  if (s >= 0) {
+    bg_strbuf id = {0};
+    bg_sb_printf(&id, "state:%s", d->m->state_name[s]);
+    dot_str(out, bg_sb_str(&id));
+    bg_sb_free(&id);
     return;
   }
   char id[32];
@@ -48,6 +63,12 @@ static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
     bg_sb_printf(&l, "%s : %s", bg_elem_display_kind(m, n), m->elem_name[n]);
     dot_str(out, bg_sb_str(&l));
     bg_sb_free(&l);
+  } else if (node_state(d, n) >= 0) {
+    bg_strbuf l = {0};
+    bg_sb_printf(&l, "\u222b : %s", m->state_name[node_state(d, n)]);
+    dot_str(out, bg_sb_str(&l));
+    bg_sb_free(&l);
+    bg_sb_puts(out, ", fontcolor=\"#8b3a1a\"");
   } else {
     bg_sb_puts(out, "\"Sf*\", style=dashed, shape=box");
   }
@@ -97,10 +118,23 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
 
 static void write_extras(const bg_diagram *d, bg_strbuf *out) {
   const bg_model *m = d->m;
+  for (int s = 0; s < m->nstate; s++) {
+    if (d->state_node[s] < 0) continue;
+    int in[64], nin = bg_state_inputs(m, s, in, 64);
+    for (int k = 0; k < nin; k++) {
+      bg_sb_puts(out, "  ");
+      node_id(d, in[k], out);
+      bg_sb_puts(out, " -> ");
+      node_id(d, d->state_node[s], out);
+      bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_state_input=1];\n");
+    }
+  }
   for (int i = 0; i < m->nsignal; i++) {
-    if (m->signal_from[i] < 0) continue;
+    int from = m->signal_from[i], s = bg_signal_state(m, i);
+    if (from < 0 && s >= 0) from = d->state_node[s];
+    if (from < 0) continue; /* a bond variable: no node to start from */
     bg_sb_puts(out, "  ");
-    node_id(d, m->signal_from[i], out);
+    node_id(d, from, out);
     bg_sb_puts(out, " -> ");
     node_id(d, m->signal_to[i], out);
     bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_signal=");

@@ -35,13 +35,19 @@ struct bg_diagram {
   double *nw, *nh, *nx, *ny; /* box size and centre on the page */
   char **nlabel;             /* pango markup */
   int *lag_node;             /* per Lagrange source: its node, or -1 (a split bond) */
+  int *state_node;           /* per user state: its integrator node (drawn when a signal
+                                comes from the state and signals are shown), or -1 */
   bg_layout lay;
   double *splx, *sply;       /* spline points moved onto the page */
   bg_bond_geom *bg;          /* per bond */
   unsigned char *hot_bond, *hot_elem; /* highlight: what stays in colour */
   int *side_use;             /* per bond side: layers already drawn there */
-  double *placed;            /* x0 y0 x1 y1 of free-floating labels placed so far */
-  int nplaced, capplaced;
+  struct bg_obstacles *obs;  /* what labels must avoid (diagram_place.c) */
+  int *loop_path;            /* per topological loop: the causal path whose polyline also
+                                draws it (a flat loop caused by a shown path), or -1 */
+  struct bg_layer_label *labels; /* path tags and loop gains, placed after every line */
+  int nlabels, caplabels;
+  int *poly, npoly, cappoly; /* scene items of path and loop polylines */
   bg_scene scene;
   bg_arena arena;
 };
@@ -74,14 +80,44 @@ void bg_markup_escape(bg_strbuf *b, const char *s);
  * path and loop lines. */
 void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size);
 
-/* Moves a w × h label centred at *p to the nearest of a few positions
- * (above and below) that overlaps no node and no label placed before. */
+/* placement (diagram_place.c) */
+typedef struct bg_obstacles bg_obstacles;
+void bg_obstacles_free(bg_obstacles *o);
+void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1);
+/* Every node box. */
+void bg_obstacle_nodes(bg_diagram *d);
+/* The lines of scene item i (curves flattened). */
+void bg_obstacle_item(bg_diagram *d, int i);
+/* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
+int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
+/* The index of the candidate centre with the lowest score (the first on
+ * ties); its box becomes an obstacle. */
+int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);
+/* Moves a w × h label centred at *p to the best of a few positions above
+ * and below, and registers it. */
 void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p);
 
+/* signals (diagram_signals.c) */
+/* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
+bg_vec bg_node_exit(const bg_diagram *d, int n, bg_vec toward, double gap);
+/* The user state signal i comes from, or -1. */
+int bg_signal_state(const bg_model *m, int i);
+/* Elements whose variables user state s integrates (at most cap, no repeats). */
+int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
+void bg_draw_signals(bg_diagram *d);
+
 /* layers (diagram_layers.c) */
+typedef struct bg_layer_label bg_layer_label;
+/* Decides which flat loops are drawn with their causal path (loop_path). */
+void bg_layers_prepare(bg_diagram *d);
+/* Places and draws the path tags and loop gains collected while drawing. */
+void bg_place_layer_labels(bg_diagram *d);
+void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
 void bg_draw_paths(bg_diagram *d);
 void bg_draw_loops(bg_diagram *d);
 void bg_draw_conflicts(bg_diagram *d);
+/* The direction (of 8) around node n farthest in angle from its bonds. */
+bg_vec bg_free_direction(const bg_diagram *d, int n);
 void bg_draw_legend(bg_diagram *d);
 /* Text for a path's or loop's legend line. */
 void bg_layer_describe(const bg_diagram *d, int kind, int i, bg_strbuf *out);

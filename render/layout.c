@@ -42,6 +42,7 @@ static void graph_attrs(Agraph_t *g, const bg_layout_in *in, int is_dot) {
   agattr(g, AGNODE, "fixedsize", "true");
   agattr(g, AGNODE, "label", "");
   agattr(g, AGEDGE, "dir", "none");
+  agattr(g, AGEDGE, "constraint", "true"); /* before any edge sets it to false */
 }
 
 static Agnode_t **add_nodes(Agraph_t *g, const bg_layout_in *in) {
@@ -61,13 +62,54 @@ static Agnode_t **add_nodes(Agraph_t *g, const bg_layout_in *in) {
   return nodes;
 }
 
-static Agedge_t **add_edges(Agraph_t *g, const bg_layout_in *in, Agnode_t **nodes) {
+/* Breadth-first distance of every node from the roots (all at once); a
+ * component without a root starts from its first node. */
+static int *bfs_depths(const bg_layout_in *in) {
+  int n = in->nnode, m = in->nedge;
+  int *adr = bg_xcalloc((size_t)n + 1, sizeof *adr), *adj = bg_xcalloc(2 * (size_t)m + 1, sizeof *adj);
+  int *fill = bg_xcalloc((size_t)n + 1, sizeof *fill), *depth = bg_xcalloc((size_t)n + 1, sizeof *depth);
+  int *queue = bg_xcalloc((size_t)n + 1, sizeof *queue);
+  for (int i = 0; i < m; i++) adr[in->tail[i] + 1]++, adr[in->head[i] + 1]++;
+  for (int v = 0; v < n; v++) adr[v + 1] += adr[v];
+  for (int i = 0; i < m; i++) {
+    adj[adr[in->tail[i]] + fill[in->tail[i]]++] = in->head[i];
+    adj[adr[in->head[i]] + fill[in->head[i]]++] = in->tail[i];
+  }
+  for (int v = 0; v < n; v++) depth[v] = -1;
+  int qh = 0, qt = 0;
+  for (int s = 0; s < n; s++)
+    if (in->root[s]) depth[s] = 0, queue[qt++] = s; /* one search from all roots */
+  for (int s = 0; s <= n; s++) {
+    for (; qh < qt; qh++)
+      for (int k = adr[queue[qh]]; k < adr[queue[qh] + 1]; k++)
+        if (depth[adj[k]] < 0) depth[adj[k]] = depth[queue[qh]] + 1, queue[qt++] = adj[k];
+    if (s < n && depth[s] < 0) depth[s] = 0, queue[qt++] = s; /* a component without roots */
+  }
+  free(adr), free(adj), free(fill), free(queue);
+  return depth;
+}
+
+/* Edges; with in->root (dot), each runs from the node nearer the roots to the
+ * farther one (rev[i] set where that is head → tail) and edges between nodes
+ * at the same distance do not constrain the ranks. */
+static Agedge_t **add_edges(Agraph_t *g, const bg_layout_in *in, Agnode_t **nodes, int is_dot,
+                            unsigned char *rev) {
   Agedge_t **edges = bg_xcalloc((size_t)(in->nedge ? in->nedge : 1), sizeof *edges);
+  int *depth = is_dot && in->root ? bfs_depths(in) : NULL;
   for (int i = 0; i < in->nedge; i++) {
     char name[32];
     snprintf(name, sizeof name, "e%d", i);
-    edges[i] = agedge(g, nodes[in->tail[i]], nodes[in->head[i]], name, 1);
+    int t = in->tail[i], h = in->head[i];
+    rev[i] = depth && depth[t] > depth[h];
+    edges[i] = agedge(g, nodes[rev[i] ? h : t], nodes[rev[i] ? t : h], name, 1);
+    if (depth && depth[t] == depth[h]) agsafeset(edges[i], "constraint", "false", "");
+    if (is_dot && in->weight && in->weight[i] != 1) {
+      char w[16];
+      snprintf(w, sizeof w, "%d", in->weight[i]);
+      agsafeset(edges[i], "weight", w, "1");
+    }
   }
+  free(depth);
   return edges;
 }
 
@@ -84,7 +126,8 @@ static void read_nodes(Agraph_t *g, Agnode_t **nodes, const bg_layout_in *in, bg
 }
 
 /* Spline control points of each edge, flipped like the nodes. */
-static void read_edges(Agraph_t *g, Agedge_t **edges, const bg_layout_in *in, bg_layout *out) {
+static void read_edges(Agraph_t *g, Agedge_t **edges, const bg_layout_in *in,
+                       const unsigned char *rev, bg_layout *out) {
   boxf bb = GD_bb(g);
   size_t n = (size_t)in->nedge + 1;
   out->spladr = bg_xcalloc(n, sizeof *out->spladr);
@@ -101,7 +144,7 @@ static void read_edges(Agraph_t *g, Agedge_t **edges, const bg_layout_in *in, bg
       out->sply = bg_xrealloc(out->sply, (size_t)cap * sizeof *out->sply);
     }
     for (int k = 0; k < bz->size; k++) {
-      pointf p = bz->list[k] /* Graphviz keeps tail → head order */;
+      pointf p = bz->list[rev[i] ? bz->size - 1 - k : k]; /* back to tail → head */
       out->splx[out->nspl + k] = p.x - bb.LL.x;
       out->sply[out->nspl + k] = bb.UR.y - p.y;
     }
@@ -128,17 +171,19 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   Agraph_t *g = agopen("bg", Agdirected, NULL);
   graph_attrs(g, in, is_dot);
   Agnode_t **nodes = add_nodes(g, in);
-  Agedge_t **edges = add_edges(g, in, nodes);
+  unsigned char *rev = bg_xcalloc((size_t)in->nedge + 1, 1);
+  Agedge_t **edges = add_edges(g, in, nodes, is_dot, rev);
   int rc = gvLayout(gvc, g, gv_engine);
   if (rc == 0) {
     read_nodes(g, nodes, in, out);
-    read_edges(g, edges, in, out);
+    read_edges(g, edges, in, rev, out);
     gvFreeLayout(gvc, g);
   } else {
     snprintf(err, errn, "Graphviz layout with '%s' failed", gv_engine);
   }
   free(nodes);
   free(edges);
+  free(rev);
   agclose(g);
   return rc == 0 ? 0 : -1;
 }

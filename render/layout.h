@@ -15,6 +15,10 @@ typedef struct bg_layout_in {
   const char *rankdir;       /* dot only: "LR", "TB", "RL", "BT" */
   double node_sep, rank_sep; /* points */
   int splines;               /* route edges as splines (else straight lines) */
+  const unsigned char *root; /* nullable; dot: rank nodes by their breadth-first distance
+                                from the root nodes (sources), not by edge direction */
+  const int *weight;         /* nullable; dot: per edge, how much straighter and shorter
+                                it should be than the others (1 = normal) */
 } bg_layout_in;
 
 typedef struct bg_layout {

@@ -9,8 +9,8 @@
 #include "fileio.h"
 #include "surface.h"
 
-static const char *const layer_names[] = {"strokes", "numbers",  "paths",  "loops",
-                                          "conflicts", "signals", "labels", "legend"};
+static const char *const layer_names[] = {"strokes", "numbers", "paths",  "loops",    "conflicts",
+                                          "signals", "labels",  "legend", "variables"};
 
 static int show_word(const char *w, size_t n, unsigned *bits) {
   if (n == 3 && !strncmp(w, "all", 3)) return *bits |= BG_SHOW_ALL, 0;

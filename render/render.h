@@ -24,7 +24,8 @@ enum {
   BG_SHOW_SIGNALS = 1u << 5,
   BG_SHOW_LABELS = 1u << 6,
   BG_SHOW_LEGEND = 1u << 7,
-  BG_SHOW_ALL = (1u << 8) - 1,
+  BG_SHOW_ALL = (1u << 8) - 1, /* the eight layers above */
+  BG_SHOW_VARIABLES = 1u << 8, /* e_k, f_k beside each bond instead of its number; not in "all" */
   BG_SHOW_DEFAULT = BG_SHOW_STROKES | BG_SHOW_NUMBERS | BG_SHOW_CONFLICTS | BG_SHOW_SIGNALS |
                     BG_SHOW_LABELS
 };

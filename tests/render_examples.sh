@@ -1,7 +1,10 @@
 #!/bin/bash
 # Every examples/*.bg renders to SVG, PDF, PNG and DOT under every style
 # through the bgdraw CLI; the SVG is well-formed XML (xmllint); a second run
-# gives byte-identical files. Usage: bash tests/render_examples.sh BGDRAW
+# gives byte-identical files; the DOT output agrees with the analysis JSON
+# (one stroke per causal bond, one conflict mark per conflict, one entry per
+# causal path and topological loop). The scene itself is counted item by
+# item in tests/unit/test_render.c. Usage: bash tests/render_examples.sh BGDRAW
 set -u
 BGDRAW=${1:?usage: render_examples.sh PATH_TO_BGDRAW}
 out=$(mktemp -d)
@@ -20,6 +23,19 @@ render() { # MODEL STYLE SHOW TAG
   local n; n=$(basename "$1" .bg)
   "$BGDRAW" "$1" --style "$2" --show "$3" -o "$out/$n.$2.$4.svg" -o "$out/$n.$2.$4.pdf" \
     -o "$out/$n.$2.$4.png" -o "$out/$n.$2.$4.dot" 2>"$out/err"
+}
+
+# DOT against the analysis JSON: strokes, conflicts, paths, loops.
+counts() { # MODEL DOT
+  command -v python3 >/dev/null || return 0
+  "$BGDRAW" "$1" -o "$out/counts.json" 2>/dev/null || { echo "FAIL: $1: no JSON"; return 1; }
+  local want got
+  want=$(python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
+print(sum(b["stroke"] != "none" for b in d["bonds"]), len(d["conflicts"]),
+      len(d["causal_paths"]), len(d["topological_loops"]))' "$out/counts.json")
+  got="$(grep -c 'bg_stroke=\(head\|tail\)' "$2") $(grep -c 'bg_conflict="' "$2") \
+$(grep -c '^  bg_path[0-9]*=' "$2") $(grep -c '^  bg_loop[0-9]*=' "$2")"
+  [ "$want" = "$got" ] || { echo "FAIL: $1: DOT has strokes/conflicts/paths/loops $got, JSON $want"; return 1; }
 }
 
 for f in examples/*.bg; do
@@ -44,6 +60,7 @@ for f in examples/*.bg; do
       grep -q "^digraph" "$out/$n.$style.${tag}1.dot" || { echo "FAIL: $f ($style): not DOT"; fail=1; }
     done
   done
+  counts "$f" "$out/$n.default.all1.dot" || fail=1
 done
 
 # Errors: an unknown style is a usage-level diagnostic, an unwritable output exits 4.

@@ -37,7 +37,8 @@ static const int bstroke[] = {BG_STROKE_HEAD, BG_STROKE_TAIL, BG_STROKE_HEAD, BG
 static void hand_model(bg_model *m) {
   memset(m, 0, sizeof *m);
   m->name = "hand";
-  m->nelem = NELEM, m->nbond = 7, m->nbondref = 14, m->nsignal = 1;
+  m->nelem = NELEM, m->nbond = 7, m->nbondref = 14, m->nsignal = 4;
+  m->nstate = 1, m->nxnode = 1;
   model_alloc(m);
   for (int e = 0; e < NELEM; e++) m->elem_kind[e] = kinds[e], m->elem_name[e] = names[e];
   m->elem_modulated[I2] = 1;
@@ -51,6 +52,13 @@ static void hand_model(bg_model *m) {
       if (btail[b] == e || bhead[b] == e) m->elem_bonds[k++] = b, m->elem_nbond[e]++;
   }
   m->signal_from[0] = C1, m->signal_to[0] = I2, m->signal_var[0] = "C1.e";
+  /* self-modulation (MTF T = 1 + k*T.f2^2), a bond variable, a user state */
+  m->elem_modulated[T] = 1;
+  m->signal_from[1] = T, m->signal_to[1] = T, m->signal_var[1] = "T.f2";
+  m->signal_from[2] = -1, m->signal_to[2] = R2, m->signal_var[2] = "e4";
+  m->state_name[0] = "phi", m->state_expr[0] = 0, m->state_init[0] = -1;
+  m->xnode[0] = (bg_xnode){.op = BG_X_FLOW, .ref = 0}; /* phi' = j1.f, the flow of bond 1 */
+  m->signal_from[3] = -1, m->signal_to[3] = R1, m->signal_var[3] = "phi";
 }
 
 static int *ints(bg_analysis *a, int n, const int *v) {
@@ -173,7 +181,10 @@ static void test_hand_scene(void) {
     INT_EQ(bg_diagram_count(d, "path"), 1);
     INT_EQ(bg_diagram_count(d, "loop"), 1);
     INT_EQ(bg_diagram_count(d, "gain"), 1);
-    INT_EQ(bg_diagram_count(d, "signal"), 1);
+    INT_EQ(bg_diagram_count(d, "signal"), 4);
+    INT_EQ(bg_diagram_count(d, "signal-arrow"), 4);
+    INT_EQ(bg_diagram_count(d, "state-node"), 1);
+    INT_EQ(bg_diagram_count(d, "state-input"), 1);
     INT_EQ(bg_diagram_count(d, "lagrange"), 1);
     OK(bg_diagram_count(d, "legend-text") >= 5);
     bg_strbuf dump = {0};
@@ -181,6 +192,10 @@ static void test_hand_scene(void) {
     OK(strstr(bg_sb_str(&dump), "stroke bond=6 derivative") != NULL);
     OK(strstr(bg_sb_str(&dump), "stroke bond=7 conflict") != NULL);
     OK(strstr(bg_sb_str(&dump), "signal C1->I_2") != NULL);
+    OK(strstr(bg_sb_str(&dump), "signal T->T") != NULL);
+    OK(strstr(bg_sb_str(&dump), "signal-dot e4->R2") != NULL);
+    OK(strstr(bg_sb_str(&dump), "signal phi->R1") != NULL);
+    OK(strstr(bg_sb_str(&dump), "state-input j1->phi") != NULL);
     OK(strstr(bg_sb_str(&dump), "MI : I<span size=\"70%\"") != NULL);
     OK(strstr(bg_sb_str(&dump), "type 2, k = 1") != NULL);
     bg_sb_free(&dump);
@@ -253,12 +268,90 @@ static int expected_strokes(const bg_model *m, const bg_analysis *a) {
   return n;
 }
 
-static int expected_signals(const bg_model *m) {
+/* User states some signal comes from: each gets an integrator node. */
+static int expected_state_nodes(const bg_model *m) {
   int n = 0;
-  for (int i = 0; i < m->nsignal; i++) n += m->signal_from[i] >= 0 && m->signal_from[i] != m->signal_to[i];
+  for (int s = 0; s < m->nstate; s++) {
+    int used = 0;
+    for (int i = 0; i < m->nsignal; i++)
+      used |= m->signal_from[i] < 0 && !strcmp(m->signal_var[i], m->state_name[s]);
+    n += used;
+  }
   return n;
 }
 
+static int expected_lagrange(const bg_analysis *a) {
+  int n = 0;
+  for (int i = 0; i < a->nlag; i++) n += a->lag_junction[i] >= 0 || a->lag_bond[i] >= 0;
+  return n;
+}
+
+/* Lines of the scene dump that start with `prefix` and contain `part`. */
+static int dump_lines(const bg_diagram *d, const char *prefix, const char *part) {
+  bg_strbuf dump = {0};
+  bg_diagram_dump(d, &dump);
+  int n = 0;
+  for (const char *line = bg_sb_str(&dump); line && *line;) {
+    const char *end = strchr(line, '\n');
+    size_t len = end ? (size_t)(end - line) : strlen(line);
+    char buf[512];
+    snprintf(buf, sizeof buf, "%.*s", (int)(len < 511 ? len : 511), line);
+    n += !strncmp(buf, prefix, strlen(prefix)) && strstr(buf, part);
+    line = end ? end + 1 : NULL;
+  }
+  bg_sb_free(&dump);
+  return n;
+}
+
+/* Every count the diagram must show for `show`: one stroke per causal bond,
+ * one flash per conflict, one polyline per shown path or loop (a flat loop
+ * drawn with its causal path counts as that path's "path K loop=L"), one
+ * arrow per modulating signal, one number per bond. */
+static void check_counts(const bg_diagram *d, const loaded *L, unsigned show, const char *what) {
+  const bg_model *m = L->m;
+  const bg_analysis *a = &L->a;
+  int merged = dump_lines(d, "path ", " loop=");
+#define CNT(role, expect)                                                                   \
+  BG_T_REPORT(bg_diagram_count(d, role) == (expect), "%s: %s: %d drawn, %d expected", what, \
+              role, bg_diagram_count(d, role), (int)(expect))
+  CNT("bond", m->nbond);
+  CNT("node", m->nelem);
+  CNT("stroke", show & BG_SHOW_STROKES ? expected_strokes(m, a) : 0);
+  CNT("number", show & BG_SHOW_VARIABLES ? 0 : show & BG_SHOW_NUMBERS ? m->nbond : 0);
+  CNT("variable", show & BG_SHOW_VARIABLES ? 2 * m->nbond : 0);
+  CNT("flash", show & BG_SHOW_CONFLICTS ? a->nconflict : 0);
+  CNT("conflict-text", show & BG_SHOW_CONFLICTS ? a->nconflict : 0);
+  CNT("path", show & BG_SHOW_PATHS ? a->npath : 0);
+  CNT("path-tag", show & BG_SHOW_PATHS ? a->npath : 0);
+  CNT("loop", show & BG_SHOW_LOOPS ? a->ntloop - merged : 0);
+  CNT("gain", show & BG_SHOW_LOOPS ? a->ntloop - merged : 0);
+  BG_T_REPORT(merged == dump_lines(d, "path-tag ", " gain"), "%s: merged loops keep their gain", what);
+  if (!((show & BG_SHOW_PATHS) && (show & BG_SHOW_LOOPS))) INT_EQ(merged, 0);
+  CNT("signal", show & BG_SHOW_SIGNALS ? m->nsignal : 0);
+  CNT("signal-arrow", show & BG_SHOW_SIGNALS ? m->nsignal : 0);
+  CNT("state-node", show & BG_SHOW_SIGNALS ? expected_state_nodes(m) : 0);
+  CNT("lagrange", expected_lagrange(a));
+  BG_T_REPORT((bg_diagram_count(d, "legend-text") > 0) == !!(show & BG_SHOW_LEGEND),
+              "%s: legend drawn iff shown", what);
+#undef CNT
+}
+
+static int xml_ok(const bg_strbuf *svg) {
+  char path[1024], cmd[1200];
+  snprintf(path, sizeof path, "%s/render_check.svg", BG_BINARY_DIR);
+  FILE *f = fopen(path, "wb");
+  if (!f) return 0;
+  fwrite(svg->s, 1, svg->len, f);
+  fclose(f);
+  snprintf(cmd, sizeof cmd, "xmllint --noout %s", path);
+  return system(cmd) == 0;
+}
+
+static const char *const styles[] = {"default", "print", "slides"};
+static const unsigned shows[] = {BG_SHOW_ALL, BG_SHOW_DEFAULT, BG_SHOW_DEFAULT | BG_SHOW_VARIABLES};
+
+/* One example under every style and layer set: counts, every format, and
+ * well-formed SVG. */
 static void check_example(const char *path) {
   loaded L;
   OK(load(path, &L) == 0);
@@ -267,40 +360,53 @@ static void check_example(const char *path) {
     unload(&L);
     return;
   }
-  bg_render_opts o = opts_all();
-  bg_diagram *d = bg_diagram_build(L.m, &L.a, &o, &L.dg);
-  OK(d != NULL);
-  if (d) {
-    INT_EQ(bg_diagram_count(d, "bond"), L.m->nbond);
-    INT_EQ(bg_diagram_count(d, "stroke"), expected_strokes(L.m, &L.a));
-    INT_EQ(bg_diagram_count(d, "flash"), L.a.nconflict);
-    INT_EQ(bg_diagram_count(d, "path"), L.a.npath);
-    INT_EQ(bg_diagram_count(d, "loop"), L.a.ntloop);
-    INT_EQ(bg_diagram_count(d, "signal"), expected_signals(L.m));
-    const char *formats[] = {"svg", "pdf", "png", "dot"};
-    for (int i = 0; i < 4; i++) {
-      bg_strbuf out = {0};
-      INT_EQ(bg_diagram_render(d, formats[i], &out, &L.dg), 0);
-      OK(out.len > 100);
-      bg_sb_free(&out);
+  for (int si = 0; si < 3; si++)
+    for (int k = 0; k < 3; k++) {
+      bg_render_opts o = opts_all();
+      o.style = styles[si], o.show = shows[k];
+      bg_diagram *d = bg_diagram_build(L.m, &L.a, &o, &L.dg);
+      BG_T_REPORT(d != NULL, "%s builds with style %s", path, styles[si]);
+      if (!d) continue;
+      char what[1200];
+      snprintf(what, sizeof what, "%s (%s, show %#x)", path, styles[si], shows[k]);
+      check_counts(d, &L, shows[k], what);
+      const char *formats[] = {"svg", "pdf", "png", "dot"};
+      for (int i = 0; i < 4; i++) {
+        if (k == 2 && i > 0) break; /* the variables layer: SVG is enough */
+        bg_strbuf out = {0};
+        INT_EQ(bg_diagram_render(d, formats[i], &out, &L.dg), 0);
+        OK(out.len > 100);
+        if (i == 0) BG_T_REPORT(xml_ok(&out), "%s: well-formed SVG", what);
+        bg_sb_free(&out);
+      }
+      bg_diagram_free(d);
     }
-    bg_diagram_free(d);
-  }
+  INT_EQ(L.dg.nerrors, 0);
   unload(&L);
 }
 
-static void test_examples(void) {
+static int list_examples(char **names, int cap) {
   DIR *dir = opendir(BG_SOURCE_DIR "/examples");
-  OK(dir != NULL);
-  if (!dir) return;
-  char *names[256];
+  if (!dir) return 0;
   int n = 0;
-  for (struct dirent *e; (e = readdir(dir)) && n < 256;) {
+  for (struct dirent *e; (e = readdir(dir)) && n < cap;) {
     size_t len = strlen(e->d_name);
     if (len > 3 && !strcmp(e->d_name + len - 3, ".bg")) names[n++] = strdup(e->d_name);
   }
   closedir(dir);
-  OK(n >= 10);
+  /* a fixed order: readdir's is the file system's */
+  for (int i = 1; i < n; i++)
+    for (int j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+      char *t = names[j];
+      names[j] = names[j - 1], names[j - 1] = t;
+    }
+  return n;
+}
+
+static void test_examples(void) {
+  char *names[256];
+  int n = list_examples(names, 256);
+  OK(n >= 17);
   for (int i = 0; i < n; i++) {
     char path[1024];
     snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, names[i]);
@@ -338,6 +444,49 @@ static void render_in_child(const char *tag) {
   OK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
+/* Every example under every style (all layers), in a child process: one line
+ * "example style format hash" per output, to compare two runs. */
+static unsigned long long fnv1a(const char *s, size_t n) {
+  unsigned long long h = 1469598103934665603ull;
+  for (size_t i = 0; i < n; i++) h = (h ^ (unsigned char)s[i]) * 1099511628211ull;
+  return h;
+}
+
+static void hash_examples_in_child(const char *tag) {
+  pid_t pid = fork();
+  if (pid == 0) {
+    char path[1024], *names[256];
+    snprintf(path, sizeof path, "%s/render_hashes_%s.txt", BG_BINARY_DIR, tag);
+    FILE *out = fopen(path, "w");
+    int n = list_examples(names, 256), rc = out ? 0 : 1;
+    for (int i = 0; out && i < n; i++) {
+      loaded L;
+      snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, names[i]);
+      if (load(path, &L) != 0) rc = 1;
+      for (int si = 0; L.m && si < 3; si++) {
+        bg_render_opts o = opts_all();
+        o.style = styles[si];
+        bg_diagram *d = bg_diagram_build(L.m, &L.a, &o, &L.dg);
+        const char *formats[] = {"svg", "pdf", "png", "dot"};
+        for (int k = 0; d && k < 4; k++) {
+          bg_strbuf b = {0};
+          rc |= bg_diagram_render(d, formats[k], &b, &L.dg);
+          fprintf(out, "%s %s %s %016llx\n", names[i], styles[si], formats[k], fnv1a(b.s, b.len));
+          bg_sb_free(&b);
+        }
+        rc |= d == NULL;
+        bg_diagram_free(d);
+      }
+      unload(&L);
+    }
+    if (out) fclose(out);
+    _exit(rc ? 1 : 0);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  OK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
 static int same_file(const char *a, const char *b) {
   FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
   int same = fa && fb;
@@ -364,6 +513,13 @@ static void test_determinism(void) {
   char cmd[2048];
   snprintf(cmd, sizeof cmd, "xmllint --noout %s/render_a.svg", BG_BINARY_DIR);
   INT_EQ(system(cmd), 0);
+  /* every example, style and format: byte-identical across processes */
+  hash_examples_in_child("a");
+  hash_examples_in_child("b");
+  char a[1024], b[1024];
+  snprintf(a, sizeof a, "%s/render_hashes_a.txt", BG_BINARY_DIR);
+  snprintf(b, sizeof b, "%s/render_hashes_b.txt", BG_BINARY_DIR);
+  BG_T_REPORT(same_file(a, b), "%s and %s are identical", a, b);
 }
 
 int main(void) {
