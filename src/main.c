@@ -11,14 +11,18 @@
 #include "cli_opts.h"
 #include "diag.h"
 #include "eqprint.h"
+#include "eqsym.h"
 #include "eqsys.h"
 #include "index.h"
 #include "fileio.h"
 #include "json.h"
+#include "json_sim.h"
 #include "model.h"
 #include "parse.h"
 #include "paths.h"
+#include "plot.h"
 #include "render.h"
+#include "report.h"
 #include "simulate.h"
 #include "strbuf.h"
 #include "summary.h"
@@ -44,6 +48,7 @@ typedef struct run {
   bg_index_result index;
   int index_done;
   bg_simresult sim;
+  int sim_status; /* bg_simulate: 0 ok, 1 refused, 2 failed */
   int simulated;
   bg_render_opts ropts;
   bg_diagram *diagram; /* laid out once, on the first diagram output */
@@ -110,6 +115,8 @@ static void derive_equations(run *r) {
     return;
   }
   bg_diags_free(&eqd);
+  /* what the equations become after symbolic elimination (JSON reduced_form) */
+  r->analysis.reduced_form = bg_eqred_form(r->eqsys);
   if (bg_eqsys_n(r->eqsys) > INDEX_MAX_UNKNOWNS) {
     if (r->opts.verbose)
       fprintf(stderr, "bgdraw: %d unknowns: numeric index skipped (dense algorithm)\n",
@@ -135,16 +142,20 @@ static int wants_simulation(const bg_cli_opts *o) {
 static int simulate(run *r) {
   bg_sim_opts so = {0};
   so.verbose = r->opts.verbose;
+  so.eqs_problem = r->eqsys_problem;
   int rc = bg_simulate(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+  r->sim_status = rc;
   r->simulated = 1;
+  if (r->sim.ic_report && !r->opts.quiet && !r->opts.verbose) /* -v printed it already */
+    fprintf(stderr, "bgdraw: note: initial values made consistent: %s\n", r->sim.ic_report);
   if (rc == 0) {
     if (r->opts.verbose && r->sim.solver_reason)
       fprintf(stderr, "bgdraw: solver %s: %s\n", r->sim.solver_used, r->sim.solver_reason);
     return EXIT_OK;
   }
   const char *why = r->sim.message ? r->sim.message : r->eqsys_problem;
-  fprintf(stderr, "bgdraw: %s: %s\n", rc == 1 ? "simulation refused" : "simulation failed",
-          why ? why : "unknown reason");
+  if (rc == 1) fprintf(stderr, "bgdraw: simulation refused: %s\n", why ? why : "unknown reason");
+  else fprintf(stderr, "bgdraw: %s\n", why ? why : "simulation failed"); /* "simulation failed at t = ..." */
   return EXIT_SIM;
 }
 
@@ -185,6 +196,7 @@ static int write_text(const char *path, const bg_strbuf *sb) {
 static int write_json(run *r, const char *path) {
   bg_strbuf sb = {0};
   bg_json_write_analysis(r->model, &r->analysis, &sb);
+  if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
   int rc = write_text(path, &sb);
   bg_sb_free(&sb);
   return rc;
@@ -229,7 +241,7 @@ static int write_diagram(run *r, const bg_cli_output *out) {
 
 static int write_equations(run *r, const char *path, const char *form) {
   if (!r->eqsys) {
-    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path,
+    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path ? path : "stdout",
             r->eqsys_problem ? r->eqsys_problem : "unknown reason");
     return EXIT_MODEL;
   }
@@ -273,6 +285,41 @@ static int write_outputs(run *r) {
   return EXIT_OK;
 }
 
+/* --plot FILE: the simulation plots, also of a partial run; none when the
+ * run was refused (no rows). An unknown extension is a usage error. */
+static int write_plot(run *r) {
+  const char *path = r->opts.plot, *ext = bg_path_ext(path);
+  if (strcmp(ext, "svg") && strcmp(ext, "pdf") && strcmp(ext, "png")) {
+    fprintf(stderr, "bgdraw: error: --plot writes svg, pdf or png, not '%s'\n", path);
+    return EXIT_USAGE;
+  }
+  if (!r->simulated || !r->sim.nrows) return EXIT_OK;
+  bg_diags dg;
+  bg_diags_init(&dg, "bgdraw", NULL, 0);
+  int rc = bg_plot_write(r->model, &r->sim, r->ropts.style, r->ropts.style_dir, path, &dg);
+  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
+  else if (r->opts.verbose) fprintf(stderr, "bgdraw: wrote %s\n", path);
+  bg_diags_free(&dg);
+  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}
+
+/* --report FILE.pdf; the simulation ran when the model has a simulate block. */
+static int write_report(run *r) {
+  char skipped[160] = "";
+  if (r->eqsys && !r->index_done)
+    snprintf(skipped, sizeof skipped, "%d unknowns, more than the dense algorithm's limit of %d",
+             bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
+  bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
+                        r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
+                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts};
+  bg_diags dg;
+  bg_diags_init(&dg, "bgdraw", NULL, 0);
+  int rc = bg_report_write(&in, r->opts.report, &dg);
+  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
+  bg_diags_free(&dg);
+  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}
+
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
@@ -290,6 +337,11 @@ int main(int argc, char **argv) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
   }
+  if (r.opts.report && strcmp(bg_path_ext(r.opts.report), "pdf")) {
+    fprintf(stderr, "bgdraw: error: --report writes a PDF: give a .pdf file, not '%s'\n", r.opts.report);
+    bg_cli_free(&r.opts);
+    return EXIT_USAGE;
+  }
   int rc = load_model(&r);
   if (!r.opts.quiet || rc) bg_diags_print(&r.dg, stderr);
   if (rc) {
@@ -302,12 +354,16 @@ int main(int argc, char **argv) {
   if (r.opts.check) rc = print_check(&r);
   else if (r.opts.equations && r.opts.nout == 0) rc = write_equations(&r, NULL, r.opts.equations);
   else {
-    int simrc = wants_simulation(&r.opts) ? simulate(&r) : EXIT_OK;
+    int wantsim = wants_simulation(&r.opts);
+    int simrc = wantsim || (r.opts.report && r.model->sim.present) ? simulate(&r) : EXIT_OK;
     int refused = simrc && !r.sim.nrows;
+    if (!wantsim && r.sim_status == 1) simrc = refused = 0; /* the report says why */
     if (r.opts.equations) rc = write_equations(&r, NULL, r.opts.equations);
-    if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations)
+    if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations && !r.opts.plot && !r.opts.report)
       default_output(&r, defpath, sizeof defpath);
     if (!rc) rc = write_outputs(&r);
+    if (!rc && r.opts.plot) rc = write_plot(&r);
+    if (!rc && r.opts.report) rc = write_report(&r);
     if (!rc) rc = refused ? EXIT_SIM : simrc;
   }
   run_free(&r);

@@ -1,0 +1,241 @@
+/* The report's machinery (render/report_int.h): markup pieces, greedy line
+ * breaking, equations as markup, table column widths and page breaks, two
+ * balanced columns, headings and pages of a document; then whole reports
+ * written through bg_report_write (PDF bytes, outlines, unwritable path). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "harness.h" /* first: <math.h> for eqs_fixture.h */
+#include "eqs_fixture.h"
+#include "fileio.h"
+#include "index.h"
+#include "report_int.h"
+
+static void test_words(void) {
+  rp_words w;
+  rp_words_split("a  bb c", &w);
+  INT_EQ(w.n, 3);
+  if (w.n == 3) {
+    STR_EQ(w.text[1], "bb");
+    INT_EQ(w.space_before[0], 0);
+    INT_EQ(w.space_before[1], 1);
+  }
+  rp_words_free(&w);
+  /* a space inside a tag does not split; text inside a tag does, and the
+   * tags are closed and reopened so every piece is valid markup */
+  rp_words_split("<span size=\"70%\">3</span> <b>x y</b>", &w);
+  INT_EQ(w.n, 3);
+  if (w.n == 3) {
+    STR_EQ(w.text[0], "<span size=\"70%\">3</span>");
+    STR_EQ(w.text[1], "<b>x</b>");
+    STR_EQ(w.text[2], "<b>y</b>");
+  }
+  rp_words_free(&w);
+  /* a long word breaks after * and /, without spaces between the pieces */
+  rp_words_split("abcdefgh*ijklmnop/qrstu", &w);
+  INT_EQ(w.n, 3);
+  if (w.n == 3) {
+    STR_EQ(w.text[0], "abcdefgh*");
+    STR_EQ(w.text[1], "ijklmnop/");
+    INT_EQ(w.space_before[1], 0);
+    INT_EQ(w.space_before[2], 0);
+  }
+  rp_words_free(&w);
+  rp_words_split("short*word", &w); /* at most 16 characters: kept whole */
+  INT_EQ(w.n, 1);
+  rp_words_free(&w);
+  rp_words_split("", &w);
+  INT_EQ(w.n, 0);
+  rp_words_free(&w);
+}
+
+static void test_break_lines(void) {
+  double w[] = {10, 10, 10, 40, 5};
+  int sp[] = {0, 1, 1, 1, 0}, start[5];
+  /* 10 + 2 + 10 = 22 fits 25, the third does not; 40 alone overflows; 5 glues to it */
+  int n = rp_break_lines(w, sp, 5, 2, 25, 25, start);
+  INT_EQ(n, 4);
+  INT_EQ(start[0], 0);
+  INT_EQ(start[1], 2);
+  INT_EQ(start[2], 3);
+  INT_EQ(start[3], 4);
+  /* a narrower second line (hanging indent) */
+  double w5[] = {10, 10, 10, 10, 10};
+  int sp5[] = {0, 1, 1, 1, 1};
+  n = rp_break_lines(w5, sp5, 5, 2, 40, 15, start); /* 3 pieces, then one a line */
+  INT_EQ(n, 3);
+  INT_EQ(start[1], 3);
+  INT_EQ(start[2], 4);
+  /* exactly full */
+  double w2[] = {10, 10};
+  int sp2[] = {0, 1};
+  INT_EQ(rp_break_lines(w2, sp2, 2, 5, 25, 25, start), 1);
+  INT_EQ(rp_break_lines(w2, sp2, 0, 5, 25, 25, start), 0);
+}
+
+static int has(const char *hay, const char *needle) { return strstr(hay, needle) != NULL; }
+
+static void test_eq_markup(void) {
+  bg_strbuf b = {0};
+  rp_eq_markup("e3 = e1 - e2", 10, &b);
+  OK(has(bg_sb_str(&b), "<i>e</i><span size=\"70%\" rise=\"-2.7pt\">3</span>"));
+  OK(has(bg_sb_str(&b), " \u2212 "));
+  bg_sb_clear(&b);
+  rp_eq_markup("Cs.q' = f6", 10, &b);
+  OK(has(bg_sb_str(&b), "<i>q\u0307</i><span size=\"70%\" rise=\"-2.7pt\">Cs</span>"));
+  bg_sb_clear(&b);
+  rp_eq_markup("f1 = Kv*sqrt(e1^2 + pt^2)/R0 < 1 & t", 10, &b);
+  OK(has(bg_sb_str(&b), "Kv\u00b7sqrt("));
+  OK(has(bg_sb_str(&b), "rise=\"4.2pt\">2</span>"));
+  OK(has(bg_sb_str(&b), "/R0 &lt; 1 &amp; <i>t</i>"));
+  bg_sb_clear(&b);
+  rp_eq_markup("x^(a+1) + 1e-06", 10, &b); /* a parenthesised power keeps its caret */
+  OK(has(bg_sb_str(&b), "<i>x</i>^("));
+  OK(has(bg_sb_str(&b), "1e-06"));
+  bg_sb_free(&b);
+  bg_sb_clear(&b);
+  rp_num(&b, -0.0);
+  STR_EQ(bg_sb_str(&b), "0");
+  bg_sb_clear(&b);
+  rp_num(&b, -2.5);
+  STR_EQ(bg_sb_str(&b), "\u22122.5");
+  bg_sb_free(&b);
+}
+
+static void test_widths(void) {
+  double nat[] = {20, 100, 300}, mn[] = {10, 30, 60}, out[3];
+  rp_table_widths(nat, mn, 3, 500, out); /* everything fits */
+  DBL_NEAR(out[0], 20, 1e-9);
+  DBL_NEAR(out[2], 300, 1e-9);
+  rp_table_widths(nat, mn, 3, 300, out); /* narrow columns keep their width, the wide one shrinks */
+  DBL_NEAR(out[0], 20, 1e-9);
+  DBL_NEAR(out[1], 100, 1e-9);
+  DBL_NEAR(out[0] + out[1] + out[2], 300, 1e-9);
+  rp_table_widths(nat, mn, 3, 120, out); /* two wide columns share what the narrow one leaves */
+  DBL_NEAR(out[0], 20, 1e-9);
+  DBL_NEAR(out[0] + out[1] + out[2], 120, 1e-9);
+  OK(out[1] >= 30 && out[2] >= 60);
+  rp_table_widths(nat, mn, 3, 50, out); /* not even the minimum: minimum widths */
+  DBL_NEAR(out[1], 30, 1e-9);
+  DBL_NEAR(out[2], 60, 1e-9);
+}
+
+static void test_paginate(void) {
+  double h[12];
+  int page[12];
+  for (int i = 0; i < 12; i++) h[i] = 10;
+  /* room 60: header 5 + 5 rows; then 9 rows a page (header repeated) */
+  INT_EQ(rp_paginate(h, 12, 5, 60, 100, page), 2);
+  INT_EQ(page[4], 0);
+  INT_EQ(page[5], 1);
+  INT_EQ(page[11], 1);
+  /* room 30: the header and three rows do not fit, the table starts on the next page */
+  INT_EQ(rp_paginate(h, 12, 5, 30, 100, page), 3);
+  INT_EQ(page[0], 1);
+  INT_EQ(page[9], 2);
+  /* an empty page never moves on, even when the first rows are too tall */
+  double tall[] = {200, 10};
+  INT_EQ(rp_paginate(tall, 2, 5, 100, 100, page), 2);
+  INT_EQ(page[0], 0);
+  INT_EQ(page[1], 1);
+  INT_EQ(rp_paginate(h, 0, 5, 100, 100, page), 0);
+}
+
+static void test_two_columns(void) {
+  int page[10], col[10], row[10];
+  INT_EQ(rp_two_columns(10, 3, 4, page, col, row), 2);
+  INT_EQ(page[5], 0);
+  INT_EQ(col[2], 0);
+  INT_EQ(col[3], 1);
+  INT_EQ(row[3], 0);
+  INT_EQ(row[5], 2);
+  INT_EQ(page[6], 1);
+  INT_EQ(col[7], 0);
+  INT_EQ(col[8], 1);
+  INT_EQ(row[9], 1);
+  INT_EQ(rp_two_columns(5, 10, 10, page, col, row), 1); /* balanced: 3 left, 2 right */
+  INT_EQ(col[2], 0);
+  INT_EQ(col[3], 1);
+  INT_EQ(row[4], 1);
+  INT_EQ(rp_two_columns(3, 0, 10, page, col, row), 2); /* no room on the first page */
+  INT_EQ(page[0], 1);
+}
+
+/* Headings record their page; text flows onto new pages; PDF bytes with outlines. */
+static void test_doc(void) {
+  rp_doc d;
+  rp_doc_init(&d, "DejaVu Sans");
+  rp_section(&d, "First", 1, 0, 0);
+  for (int i = 0; i < 80; i++)
+    rp_para(&d, "Lorem ipsum dolor sit amet, consectetur adipiscing elit, sed do eiusmod tempor "
+                "incididunt ut labore et dolore magna aliqua.", RP_SIZE_BODY, 0, 0, rp_ink);
+  rp_subsection(&d, "Sub", 40);
+  rp_section(&d, "Second", 1, 1, 0);
+  OK(d.npage >= 3);
+  INT_EQ(d.nhead, 3);
+  STR_EQ(d.head[0].title, "1  First");
+  INT_EQ(d.head[0].page, 0);
+  STR_EQ(d.head[2].title, "2  Second");
+  INT_EQ(d.head[2].page, d.npage - 1);
+  OK(d.head[1].page >= 1 && d.head[1].level == 1);
+  for (int p = 0; p < d.npage; p++) /* nothing below the bottom margin */
+    for (int i = 0; i < d.page[p]->sc.nitem; i++) {
+      const bg_scene_item *it = &d.page[p]->sc.item[i];
+      if (it->kind == BG_ITEM_TEXT) OK(it->y + it->th <= RP_A4_H - RP_MARGIN_BOTTOM + 1);
+    }
+  rp_decorate(&d, "header", 0, 0, d.npage);
+  rp_doc *docs[1] = {&d};
+  bg_strbuf pdf = {0};
+  INT_EQ(rp_write_pdf(docs, 1, "title", &pdf), 0);
+  OK(pdf.len > 1000 && !memcmp(pdf.s, "%PDF", 4));
+  int outlines = 0;
+  for (size_t i = 0; i + 9 <= pdf.len && !outlines; i++) outlines = !memcmp(pdf.s + i, "/Outlines", 9);
+  OK(outlines);
+  bg_sb_free(&pdf);
+  rp_doc_free(&d);
+}
+
+/* A whole report of an example: a PDF file; an unwritable path: EWRITE. */
+static void test_report(const char *name) {
+  efx f;
+  OK(efx_load(&f, name, NULL, -1, NULL, 0) == 0);
+  if (!f.s) {
+    efx_free(&f);
+    return;
+  }
+  bg_index_result ir;
+  bg_index_compute(f.s, f.m, &ir);
+  bg_render_opts o = {0};
+  o.style_dir = BG_SOURCE_DIR "/styles";
+  bg_report_input in = {f.m, &f.a, f.s, NULL, &ir, NULL, NULL, 0, &o};
+  char path[512];
+  snprintf(path, sizeof path, "%s/test_report_%s.pdf", BG_BINARY_DIR, name);
+  bg_diags dg;
+  bg_diags_init(&dg, "test", NULL, 0);
+  INT_EQ(bg_report_write(&in, path, &dg), BG_RENDER_OK);
+  size_t len = 0;
+  char *bytes = bg_read_file(path, &len);
+  OK(bytes && len > 5000 && !memcmp(bytes, "%PDF", 4));
+  free(bytes);
+  unlink(path);
+  INT_EQ(bg_report_write(&in, "/nonexistent-dir/r.pdf", &dg), BG_RENDER_EWRITE);
+  OK(dg.nerrors >= 1);
+  bg_diags_free(&dg);
+  bg_index_free(&ir);
+  efx_free(&f);
+}
+
+int main(void) {
+  test_words();
+  test_break_lines();
+  test_eq_markup();
+  test_widths();
+  test_paginate();
+  test_two_columns();
+  test_doc();
+  test_report("bond_loop");
+  test_report("hydraulic_bridge");
+  return bg_t_done();
+}
