@@ -654,6 +654,17 @@ static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg
   return found;
 }
 
+/* A linear flat algebraic loop from internal modulation (Equation 4.45)
+ * whose gain is 1 at the current parameter values, or -1. */
+static int singular_modulation_loop(const bg_analysis *a) {
+  if (!a->form_parameter_dependent) return -1;
+  for (int t = 0; t < a->ntloop; t++)
+    if (a->tloop_algebraic[t] && a->tloop_kind[t] == BG_TLOOP_FLAT &&
+        strncmp(a->tloop_cause[t], "internal", 8) == 0 && nearly_one(a->tloop_gain_value[t]))
+      return t;
+  return -1;
+}
+
 static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
   bg_strbuf sb = {0};
   int p = 0, l = 0, cb = -1, c = a->complete ? conflict_unsolvable(m, a, g, &cb) : -1;
@@ -687,6 +698,12 @@ static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nb
       bg_sb_printf(&sb, "type 2 conflict at %s: the %s of bond %d does not depend on its %s, so "
                         "it constrains states or inputs: index above 1", j, j0 ? "effort" : "flow",
                    m->bond_num[cb], j0 ? "flow" : "effort");
+  } else if ((l = singular_modulation_loop(a)) >= 0) {
+    /* The analogue of a class 5 causal loop (Figure 4.18) for Equation 4.45. */
+    a->index_predicted = 2;
+    bg_sb_printf(&sb, "algebraic loop %d from %s has gain %s = 1 at these parameter values: "
+                      "singular, (1 - gain) x = ... cannot be solved (Equation 4.45), index above 1; "
+                      "with another gain the index is 1", l + 1, a->tloop_cause[l], a->tloop_gain[l]);
   } else if (a->form == BG_FORM_ODE) {
     a->index_predicted = 0;
     bg_sb_puts(&sb, "explicit ODE: no zero-order causal path, no causal loop, no algebraic loop");

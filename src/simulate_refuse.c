@@ -85,10 +85,10 @@ char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
                     "(or use --causality relaxed or vandijk).");
   else if ((l = class5_loop(a)) >= 0)
     say_class5(m, a, l, &sb);
+  else if ((t = singular_tloop(a)) >= 0) /* before the index: its own remedies */
+    say_tloop(a, t, &sb);
   else if (a->index_predicted >= 2)
     say_index2(m, a, &sb);
-  else if ((t = singular_tloop(a)) >= 0)
-    say_tloop(a, t, &sb);
   if (!sb.len) return NULL;
   char *msg = strdup(bg_sb_str(&sb));
   bg_sb_free(&sb);

@@ -430,6 +430,9 @@ def internal_modulation():
     # the singular loop is reported
     check_gains(c, "algebraic loops", [x for x in d["topological_loops"] if x["algebraic"]], [1.0])
     eq(c, "reason says singular", "singular" in d["index"]["reason"], True)
+    # gain 1 is the analogue of a class 5 loop: index above 1, numerically 2
+    eq(c, "predicted index", d["index"]["predicted"], 2)
+    eq(c, "numeric index", d["index"]["numeric"], 2)
 
 
 def relaxed():
