@@ -93,7 +93,8 @@ typedef struct bg_analysis {
   int rosenberg_andry;      /* disjoint and no gain +1 */
 
   /* topological loops of the signal flow graph */
-  int ntloop, ntloop_omitted;
+  int ntloop, ntloop_omitted; /* omitted: a lower bound (see tloop_capped) */
+  int tloop_capped;            /* the cycle enumeration stopped at the listing cap */
   int *tloop_kind;          /* bg_tloop_kind */
   int *tloop_order;
   int *tloop_adr, *tloop_n; /* signals in order, into tloop_signals (BG_SIG_*) */

@@ -22,6 +22,7 @@ static const valued_opt valued[] = {
     OPT("--causality", causality), OPT("--show", show),     OPT("--highlight", highlight),
     OPT("--style", style),         OPT("--layout", layout), OPT("--report", report),
     OPT("--plot", plot),           OPT("--equations", equations), OPT("-T", force_format),
+    OPT("--max-list", max_list),
 };
 static const char *const flags[] = {"--simulate", "--check", "-q", "-v", "--help", "-h", "--version", "-o", "--set", NULL};
 
@@ -190,7 +191,8 @@ void bg_cli_print_help(FILE *out) {
       "\n"
       "options:\n"
       "  --causality METHOD  scap (default) | relaxed | vandijk | lagrange\n"
-      "  --show LAYERS       strokes,numbers,paths,loops,conflicts,signals,labels,legend | all | none\n"
+      "  --show LAYERS       strokes,numbers,paths,loops,conflicts,signals,labels,legend,\n"
+      "                      variables | all | none\n"
       "  --highlight ITEM    path:K | loop:K | conflict:K\n"
       "  --style NAME|FILE   default | print | slides, or a style file\n"
       "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned\n"
@@ -200,6 +202,7 @@ void bg_cli_print_help(FILE *out) {
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
+      "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  -q, -v              quieter, more verbose (progress on stderr)\n"
       "  --version, --help\n"
       "\n"

@@ -25,6 +25,7 @@ typedef struct bg_cli_opts {
   const char *report;       /* --report FILE.pdf */
   const char *plot;         /* --plot FILE */
   const char *equations;    /* --equations FORM */
+  const char *max_list;     /* --max-list N: listing cap of paths and loops */
   int simulate, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;

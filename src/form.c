@@ -39,7 +39,7 @@ typedef struct tlist {
   bg_analysis *a;
   const bg_sfg *g;
   tl *v;
-  int n, cap, max, omitted;
+  int n, cap, max, omitted, capped;
   int *sig, nsig, capsig; /* signals of all loops */
   int *hash, hcap;        /* open addressing over canonical sequences: loop index + 1 */
   int *mark;              /* per bond: signals used, for flat/open */
@@ -172,7 +172,8 @@ static void tl_from_cloop(tlist *T, int l, int *nodes, int *s, bg_gain *g1, bg_g
 static int on_cycle(void *ctx, const int *node, int n) {
   tlist *T = ctx;
   tl_add(T, node, n, NULL);
-  return T->n >= T->max; /* stop at the cap: what is left is not counted */
+  /* Stop at the cap: what is left is not counted, only flagged. */
+  return T->capped = T->n >= T->max;
 }
 
 static int nearly_one(double g) { return fabs(g - 1.0) <= 16 * DBL_EPSILON * fmax(1.0, fabs(g)); }
@@ -216,6 +217,8 @@ static void tl_store(tlist *T) {
   int n = T->n;
   a->ntloop = n;
   a->ntloop_omitted = T->omitted;
+  /* Loops along omitted causal paths are not found either. */
+  a->tloop_capped = T->capped || T->omitted || a->npath_omitted || a->ncloop_omitted;
   a->tloop_kind = bg_arena_alloc(ar, sizeof(int) * (size_t)(n + 1));
   a->tloop_order = bg_arena_alloc(ar, sizeof(int) * (size_t)(n + 1));
   a->tloop_adr = bg_arena_alloc(ar, sizeof(int) * (size_t)(n + 1));
@@ -256,6 +259,7 @@ static void find_tloops(tlist *T) {
   }
   cloops_disjoint(m, a);
   if (T->n < T->max) bg_sfg_algebraic_cycles(T->g, on_cycle, T, CYCLE_BUDGET);
+  else T->capped = 1;
   free(nodes);
   free(s);
 }
@@ -765,7 +769,7 @@ void bg_analysis_run(const bg_model *m, bg_analysis *a, const bg_analysis_limits
   bg_cloops_find(m, a, maxl);
   bg_sfg g;
   bg_sfg_build(m, a, &g);
-  tlist T = {m, a, &g, NULL, 0, 0, maxl, 0, NULL, 0, 0, NULL, 0, NULL};
+  tlist T = {m, a, &g, NULL, 0, 0, maxl, 0, 0, NULL, 0, 0, NULL, 0, NULL};
   T.hcap = 64;
   while (T.hcap < 4 * maxl) T.hcap *= 2;
   T.hash = bg_xcalloc((size_t)T.hcap, sizeof(int));

@@ -51,6 +51,7 @@ typedef struct run {
   int sim_status; /* bg_simulate: 0 ok, 1 refused, 2 failed */
   int simulated;
   bg_render_opts ropts;
+  int max_list; /* --max-list; 0: the default caps */
   bg_diagram *diagram; /* laid out once, on the first diagram output */
 } run;
 
@@ -96,16 +97,19 @@ static void analyse(run *r) {
   r->analysed = 1;
   bg_causality_assign(r->model, method, &r->analysis, &r->dg);
   if (r->opts.verbose) fprintf(stderr, "bgdraw: causal paths, loops, form and index\n");
-  bg_analysis_run(r->model, &r->analysis, NULL);
+  bg_analysis_limits lim = {r->max_list, r->max_list};
+  bg_analysis_run(r->model, &r->analysis, &lim);
 }
 
-/* Above this many unknowns the dense index computation is skipped. */
-enum { INDEX_MAX_UNKNOWNS = 2000 };
+/* Above this many unknowns the dense index computation (SVDs and a
+ * generalised eigenvalue problem, cubic in the unknowns: about 1 s at 500 in
+ * a Release build, 5 s at 1000) is skipped; docs/cli.md. */
+enum { INDEX_MAX_UNKNOWNS = 500 };
 
-/* The equations, and the numeric index of the linearised model (JSON
- * index.numeric). A model whose equations cannot be formed is not an error
+/* The equations. A model whose equations cannot be formed is not an error
  * here: the reason is kept for the outputs that need equations. */
 static void derive_equations(run *r) {
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: equations\n");
   bg_diags eqd;
   bg_diags_init(&eqd, r->opts.model_path, r->src, r->srclen);
   r->eqsys = bg_eqsys_build(r->model, &r->analysis, &eqd);
@@ -117,10 +121,15 @@ static void derive_equations(run *r) {
   bg_diags_free(&eqd);
   /* what the equations become after symbolic elimination (JSON reduced_form) */
   r->analysis.reduced_form = bg_eqred_form(r->eqsys);
+}
+
+/* The numeric index of the linearised model (JSON index.numeric). */
+static void numeric_index(run *r) {
+  if (!r->eqsys) return;
   if (bg_eqsys_n(r->eqsys) > INDEX_MAX_UNKNOWNS) {
     if (r->opts.verbose)
-      fprintf(stderr, "bgdraw: %d unknowns: numeric index skipped (dense algorithm)\n",
-              bg_eqsys_n(r->eqsys));
+      fprintf(stderr, "bgdraw: %d unknowns: numeric index skipped (dense algorithm, limit %d)\n",
+              bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
     return;
   }
   if (r->opts.verbose) fprintf(stderr, "bgdraw: numeric index (Algorithm 4.1)\n");
@@ -130,11 +139,25 @@ static void derive_equations(run *r) {
   r->analysis.index_numeric = r->index.index;
 }
 
-static int wants_simulation(const bg_cli_opts *o) {
-  if (o->simulate || o->plot) return 1;
+static int wants_format(const bg_cli_opts *o, const char *format) {
   for (int i = 0; i < o->nout; i++)
-    if (!strcmp(o->out[i].format, "csv")) return 1;
+    if (!strcmp(o->out[i].format, format)) return 1;
   return 0;
+}
+
+/* Only what some output shows is computed: a diagram alone needs neither
+ * equations nor the index, so large models draw quickly. */
+static int wants_index(const bg_cli_opts *o) {
+  return o->check || o->report || wants_format(o, "json");
+}
+
+static int wants_equations(const bg_cli_opts *o) {
+  return wants_index(o) || o->equations || o->simulate || o->plot || wants_format(o, "tex") ||
+         wants_format(o, "c") || wants_format(o, "csv");
+}
+
+static int wants_simulation(const bg_cli_opts *o) {
+  return o->simulate || o->plot || wants_format(o, "csv");
 }
 
 /* Runs the simulation; prints the refusal or failure. EXIT_SIM on failure
@@ -217,6 +240,16 @@ static int render_options(run *r) {
     fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
             o->highlight);
     return -1;
+  }
+  if (o->max_list) {
+    char *end;
+    long n = strtol(o->max_list, &end, 10);
+    if (end == o->max_list || *end || n < 1 || n > 100000000) {
+      fprintf(stderr, "bgdraw: error: --max-list takes a positive whole number, not '%s'\n",
+              o->max_list);
+      return -1;
+    }
+    r->max_list = (int)n;
   }
   ro->style = o->style;
   ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
@@ -349,7 +382,8 @@ int main(int argc, char **argv) {
     return EXIT_MODEL;
   }
   analyse(&r);
-  derive_equations(&r);
+  if (wants_equations(&r.opts)) derive_equations(&r);
+  if (wants_index(&r.opts)) numeric_index(&r);
   char defpath[1024];
   if (r.opts.check) rc = print_check(&r);
   else if (r.opts.equations && r.opts.nout == 0) rc = write_equations(&r, NULL, r.opts.equations);

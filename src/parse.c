@@ -184,7 +184,7 @@ static void push_arg(parser *p, bg_expr *e, bg_expr ***buf, int *cap, bg_expr *a
   if (e->nargs == *cap) {
     int ncap = *cap ? 2 * *cap : 4;
     bg_expr **nb = bg_arena_alloc(&p->ast->arena, (size_t)ncap * sizeof *nb);
-    if (e->nargs) memcpy(nb, *buf, (size_t)e->nargs * sizeof *nb);
+    if (e->nargs && *buf) memcpy(nb, *buf, (size_t)e->nargs * sizeof *nb);
     *buf = nb;
     *cap = ncap;
   }

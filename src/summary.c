@@ -45,6 +45,7 @@ static void put_loops(const bg_analysis *a, bg_strbuf *out) {
   if (a->ncloop_omitted) bg_sb_printf(out, ", %d more not listed", a->ncloop_omitted);
   bg_sb_printf(out, "\ntopological loops: %d (%d algebraic)", a->ntloop, algebraic);
   if (a->ntloop_omitted) bg_sb_printf(out, ", at least %d more not listed", a->ntloop_omitted);
+  else if (a->tloop_capped) bg_sb_puts(out, ", listing stopped at the cap (--max-list): more may exist");
   bg_sb_putc(out, '\n');
 }
 

@@ -470,6 +470,19 @@ def lagrange_rlc():
     eq(c, "conflicts", conflicts(d), [])
 
 
+def listing_caps():
+    # --max-list N caps the listed paths and loops and counts what was left out
+    full = analyse("delta_full", "delta")
+    c = "delta --max-list 2"
+    d = analyse("delta_cap2", "delta", ["--max-list", "2"])
+    # the first two found (enumeration order), all of them real paths
+    got = [p["bonds"] for p in d["causal_paths"]]
+    eq(c, "paths listed", (len(got), all(b in [p["bonds"] for p in full["causal_paths"]]
+                                          for b in got)), (2, True))
+    eq(c, "paths omitted", d["omitted"]["causal_paths"], len(full["causal_paths"]) - 2)
+    eq(c, "topological loops listed", len(d["topological_loops"]), 2)
+
+
 def main(argv):
     global BGDRAW, TMP
     if len(argv) != 2:
@@ -478,7 +491,8 @@ def main(argv):
     BGDRAW = os.path.abspath(argv[1])
     with tempfile.TemporaryDirectory() as TMP:
         for f in (rlc, hydraulic_bridge, bridge_compliance, slider_crank, bond_loop,
-                  class12_paths, loop_class1, delta, internal_modulation, relaxed, lagrange_rlc):
+                  class12_paths, loop_class1, delta, internal_modulation, relaxed, lagrange_rlc,
+                  listing_caps):
             try:
                 f()
             except Exception as e:  # a missing key or list: report, go on
