@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and render an example (diagram, analysis) into out/.
+# The main job: set up, build, and render an example into out/: its annotated
+# diagram (SVG and PNG), its analysis (JSON) and its multi-page report (PDF).
+# usage: bash tools/run.sh [MODEL.bg]   (default examples/hydraulic_bridge.bg)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
 mkdir -p out
 MODEL=${1:-examples/hydraulic_bridge.bg}
 NAME=$(basename "$MODEL" .bg)
-build/bgdraw "$MODEL" -o "out/$NAME.svg" -o "out/$NAME.png" -o "out/$NAME.json" --show all
-echo "wrote out/$NAME.svg, out/$NAME.png, out/$NAME.json"
+build/bgdraw "$MODEL" -q --show strokes,numbers,loops,conflicts,signals,labels,legend \
+  -o "out/$NAME.svg" -o "out/$NAME.png" -o "out/$NAME.json" --report "out/$NAME.pdf"
+echo "wrote out/$NAME.svg, out/$NAME.png, out/$NAME.json, out/$NAME.pdf"
