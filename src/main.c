@@ -1,59 +1,22 @@
-/* bgdraw: the command line. The only file that touches argv, the file
- * system's output paths and exit codes; everything else is in the engine. */
+/* bgdraw: the command line. Runs the stages a request needs (load, analyse,
+ * equations, numeric index, simulation); cli_outputs.c writes the outputs.
+ * Only the cli files touch argv, output paths and exit codes. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-#include "analysis.h"
 #include "causality.h"
-#include "cli_opts.h"
-#include "diag.h"
-#include "eqprint.h"
+#include "cli_run.h"
 #include "eqsym.h"
-#include "eqsys.h"
-#include "index.h"
 #include "fileio.h"
-#include "json.h"
-#include "json_sim.h"
-#include "model.h"
-#include "parse.h"
 #include "paths.h"
-#include "plot.h"
-#include "render.h"
-#include "report.h"
-#include "simulate.h"
 #include "strbuf.h"
 #include "summary.h"
-
-enum { EXIT_OK = 0, EXIT_MODEL = 1, EXIT_USAGE = 2, EXIT_SIM = 3, EXIT_WRITE = 4 };
 
 #ifndef BG_VERSION
 #define BG_VERSION "0.0.0"
 #endif
-
-/* Everything one run holds; freed by run_free. */
-typedef struct run {
-  bg_cli_opts opts;
-  char *src;
-  size_t srclen;
-  bg_diags dg;
-  bg_ast *ast;
-  bg_model *model;
-  bg_analysis analysis;
-  int analysed;
-  bg_eqsys *eqsys;      /* NULL when the equations could not be formed */
-  char *eqsys_problem;  /* why not, in words (owned); nullable */
-  bg_index_result index;
-  int index_done;
-  bg_simresult sim;
-  int sim_status; /* bg_simulate: 0 ok, 1 refused, 2 failed */
-  int simulated;
-  bg_render_opts ropts;
-  int max_list; /* --max-list; 0: the default caps */
-  bg_diagram *diagram; /* laid out once, on the first diagram output */
-} run;
 
 static void run_free(run *r) {
   if (r->simulated) bg_simresult_free(&r->sim);
@@ -100,11 +63,6 @@ static void analyse(run *r) {
   bg_analysis_limits lim = {r->max_list, r->max_list};
   bg_analysis_run(r->model, &r->analysis, &lim);
 }
-
-/* Above this many unknowns the dense index computation (SVDs and a
- * generalised eigenvalue problem, cubic in the unknowns: about 1 s at 500 in
- * a Release build, 5 s at 1000) is skipped; docs/cli.md. */
-enum { INDEX_MAX_UNKNOWNS = 500 };
 
 /* The equations. A model whose equations cannot be formed is not an error
  * here: the reason is kept for the outputs that need equations. */
@@ -201,158 +159,6 @@ static int print_check(run *r) {
   return EXIT_OK;
 }
 
-/* The default output when no -o is given: out/<model>.svg. */
-static void default_output(run *r, char *buf, size_t n) {
-  mkdir("out", 0777); /* may exist already */
-  snprintf(buf, n, "out/%s.svg", r->model->name);
-  r->opts.out[0].path = buf;
-  r->opts.out[0].format = "svg";
-  r->opts.nout = 1;
-}
-
-static int write_text(const char *path, const bg_strbuf *sb) {
-  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
-  return EXIT_WRITE;
-}
-
-static int write_json(run *r, const char *path) {
-  bg_strbuf sb = {0};
-  bg_json_write_analysis(r->model, &r->analysis, &sb);
-  if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
-  int rc = write_text(path, &sb);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-/* Diagram options from the command line; -1 on a usage error. */
-static int render_options(run *r) {
-  const bg_cli_opts *o = &r->opts;
-  bg_render_opts *ro = &r->ropts;
-  ro->show = BG_SHOW_DEFAULT;
-  if (o->show && bg_show_parse(o->show, &ro->show) != 0) {
-    fprintf(stderr, "bgdraw: error: unknown layer in --show '%s' (layers: strokes, numbers, "
-                    "paths, loops, conflicts, signals, labels, legend; or all, none)\n", o->show);
-    return -1;
-  }
-  if (o->highlight && bg_highlight_parse(o->highlight, &ro->highlight_kind,
-                                         &ro->highlight_index) != 0) {
-    fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
-            o->highlight);
-    return -1;
-  }
-  if (o->max_list) {
-    char *end;
-    long n = strtol(o->max_list, &end, 10);
-    if (end == o->max_list || *end || n < 1 || n > 100000000) {
-      fprintf(stderr, "bgdraw: error: --max-list takes a positive whole number, not '%s'\n",
-              o->max_list);
-      return -1;
-    }
-    r->max_list = (int)n;
-  }
-  ro->style = o->style;
-  ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
-  ro->layout = o->layout;
-  ro->verbose = o->verbose;
-  return 0;
-}
-
-static int write_diagram(run *r, const bg_cli_output *out) {
-  if (!r->diagram) {
-    r->diagram = bg_diagram_build(r->model, &r->analysis, &r->ropts, &r->dg);
-    if (!r->diagram) {
-      bg_diags_print(&r->dg, stderr);
-      return EXIT_USAGE;
-    }
-  }
-  int rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
-  if (rc == BG_RENDER_OK) return EXIT_OK;
-  bg_diags_print(&r->dg, stderr);
-  return rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
-}
-
-static int write_equations(run *r, const char *path, const char *form) {
-  if (!r->eqsys) {
-    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path ? path : "stdout",
-            r->eqsys_problem ? r->eqsys_problem : "unknown reason");
-    return EXIT_MODEL;
-  }
-  bg_strbuf sb = {0};
-  bg_eqprint(r->eqsys, form, &sb);
-  int rc = path ? write_text(path, &sb) : (fputs(bg_sb_str(&sb), stdout), EXIT_OK);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-static int write_csv(run *r, const char *path) {
-  if (!r->simulated || !r->sim.nrows) return EXIT_OK; /* refused: nothing to write */
-  bg_strbuf sb = {0};
-  bg_csv_write(&r->sim, &sb);
-  int rc = write_text(path, &sb);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-static int is_diagram_format(const char *f) {
-  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
-}
-
-static int write_one(run *r, const bg_cli_output *out) {
-  if (r->opts.verbose) fprintf(stderr, "bgdraw: writing %s\n", out->path);
-  if (!strcmp(out->format, "json")) return write_json(r, out->path);
-  if (is_diagram_format(out->format)) return write_diagram(r, out);
-  if (!strcmp(out->format, "tex")) return write_equations(r, out->path, "latex");
-  if (!strcmp(out->format, "c")) return write_equations(r, out->path, "c");
-  if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
-  fprintf(stderr, "bgdraw: error: %s output is not implemented yet ('%s')\n", out->format,
-          out->path);
-  return EXIT_WRITE;
-}
-
-static int write_outputs(run *r) {
-  for (int i = 0; i < r->opts.nout; i++) {
-    int rc = write_one(r, &r->opts.out[i]);
-    if (rc) return rc;
-  }
-  return EXIT_OK;
-}
-
-/* --plot FILE: the simulation plots, also of a partial run; none when the
- * run was refused (no rows). An unknown extension is a usage error. */
-static int write_plot(run *r) {
-  const char *path = r->opts.plot, *ext = bg_path_ext(path);
-  if (strcmp(ext, "svg") && strcmp(ext, "pdf") && strcmp(ext, "png")) {
-    fprintf(stderr, "bgdraw: error: --plot writes svg, pdf or png, not '%s'\n", path);
-    return EXIT_USAGE;
-  }
-  if (!r->simulated || !r->sim.nrows) return EXIT_OK;
-  bg_diags dg;
-  bg_diags_init(&dg, "bgdraw", NULL, 0);
-  int rc = bg_plot_write(r->model, &r->sim, r->ropts.style, r->ropts.style_dir, path, &dg);
-  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
-  else if (r->opts.verbose) fprintf(stderr, "bgdraw: wrote %s\n", path);
-  bg_diags_free(&dg);
-  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
-}
-
-/* --report FILE.pdf; the simulation ran when the model has a simulate block. */
-static int write_report(run *r) {
-  char skipped[160] = "";
-  if (r->eqsys && !r->index_done)
-    snprintf(skipped, sizeof skipped, "%d unknowns, more than the dense algorithm's limit of %d",
-             bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
-  bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
-                        r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
-                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts};
-  bg_diags dg;
-  bg_diags_init(&dg, "bgdraw", NULL, 0);
-  int rc = bg_report_write(&in, r->opts.report, &dg);
-  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
-  bg_diags_free(&dg);
-  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
-}
-
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
@@ -366,7 +172,7 @@ int main(int argc, char **argv) {
     bg_cli_free(&r.opts);
     return EXIT_OK;
   }
-  if (render_options(&r) != 0) {
+  if (cli_render_options(&r) != 0) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
   }
@@ -386,18 +192,18 @@ int main(int argc, char **argv) {
   if (wants_index(&r.opts)) numeric_index(&r);
   char defpath[1024];
   if (r.opts.check) rc = print_check(&r);
-  else if (r.opts.equations && r.opts.nout == 0) rc = write_equations(&r, NULL, r.opts.equations);
+  else if (r.opts.equations && r.opts.nout == 0) rc = cli_write_equations(&r, NULL, r.opts.equations);
   else {
     int wantsim = wants_simulation(&r.opts);
     int simrc = wantsim || (r.opts.report && r.model->sim.present) ? simulate(&r) : EXIT_OK;
     int refused = simrc && !r.sim.nrows;
     if (!wantsim && r.sim_status == 1) simrc = refused = 0; /* the report says why */
-    if (r.opts.equations) rc = write_equations(&r, NULL, r.opts.equations);
+    if (r.opts.equations) rc = cli_write_equations(&r, NULL, r.opts.equations);
     if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations && !r.opts.plot && !r.opts.report)
-      default_output(&r, defpath, sizeof defpath);
-    if (!rc) rc = write_outputs(&r);
-    if (!rc && r.opts.plot) rc = write_plot(&r);
-    if (!rc && r.opts.report) rc = write_report(&r);
+      cli_default_output(&r, defpath, sizeof defpath);
+    if (!rc) rc = cli_write_outputs(&r);
+    if (!rc && r.opts.plot) rc = cli_write_plot(&r);
+    if (!rc && r.opts.report) rc = cli_write_report(&r);
     if (!rc) rc = refused ? EXIT_SIM : simrc;
   }
   run_free(&r);
