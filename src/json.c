@@ -323,8 +323,10 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   bg_sb_puts(o, ",\n");
   /* what the listing caps left out (lower bounds when a search budget ran out) */
   key(o, "omitted");
-  bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d},\n",
-               a->npath_omitted, a->ncloop_omitted, a->ntloop_omitted);
+  bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d, "
+                 "\"topological_loops_complete\": %s},\n",
+               a->npath_omitted, a->ncloop_omitted, a->ntloop_omitted,
+               a->tloop_capped ? "false" : "true");
   /* set by the equations stage after symbolic elimination; null until then */
   key(o, "reduced_form");
   str_or_null(o, a->reduced_form);

@@ -481,6 +481,8 @@ def listing_caps():
                                           for b in got)), (2, True))
     eq(c, "paths omitted", d["omitted"]["causal_paths"], len(full["causal_paths"]) - 2)
     eq(c, "topological loops listed", len(d["topological_loops"]), 2)
+    eq(c, "topological loops complete", (full["omitted"]["topological_loops_complete"],
+                                         d["omitted"]["topological_loops_complete"]), (True, False))
 
 
 def main(argv):

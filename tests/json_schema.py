@@ -325,9 +325,15 @@ def check(name, text):
     if "form_parameter_dependent" in d:
         c.typ("form_parameter_dependent", d["form_parameter_dependent"], bool)
     if "omitted" in d and c.keys("omitted", d["omitted"],
-                                 ["causal_paths", "causal_loops", "topological_loops"]):
+                                 ["causal_paths", "causal_loops", "topological_loops",
+                                  "topological_loops_complete"]):
         for k in ("causal_paths", "causal_loops", "topological_loops"):
             c.typ("omitted." + k, d["omitted"][k], int)
+        om = d["omitted"]
+        c.typ("omitted.topological_loops_complete", om["topological_loops_complete"], bool)
+        if om["topological_loops_complete"] and (om["causal_paths"] or om["causal_loops"]
+                                                 or om["topological_loops"]):
+            c.bad("omitted", "topological loops said complete although items were left out")
     return c.problems
 
 

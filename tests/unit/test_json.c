@@ -86,7 +86,8 @@ static void test_values(void) {
   OK(has(j, "\"conflicts\": [],\n"));
   OK(has(j, "\"index\": {\"predicted\": null, \"numeric\": null, \"reason\": null, "
             "\"numeric_status\": \"not computed\"}"));
-  OK(has(j, "\"omitted\": {\"causal_paths\": 0, \"causal_loops\": 0, \"topological_loops\": 0},\n"
+  OK(has(j, "\"omitted\": {\"causal_paths\": 0, \"causal_loops\": 0, \"topological_loops\": 0, "
+                "\"topological_loops_complete\": true},\n"
             "  \"reduced_form\": null\n}\n"));
   OK(has(j, "\"form\": \"incomplete\""));
   free(j);
@@ -170,12 +171,13 @@ static void test_generic_lists(void) {
   bg_sb_free(&sb);
   /* a singular pencil has no index: null, and the status says why */
   a.index_numeric = -1;
-  a.npath_omitted = 7, a.ncloop_omitted = 2, a.ntloop_omitted = 3;
+  a.npath_omitted = 7, a.ncloop_omitted = 2, a.ntloop_omitted = 3, a.tloop_capped = 1;
   sb = (bg_strbuf){0};
   bg_json_write_analysis(m, &a, &sb);
   j = bg_sb_str(&sb);
   OK(has(j, "\"numeric\": null, \"reason\": \"no zero-order path\", \"numeric_status\": \"singular\"}"));
-  OK(has(j, "\"omitted\": {\"causal_paths\": 7, \"causal_loops\": 2, \"topological_loops\": 3}"));
+  OK(has(j, "\"omitted\": {\"causal_paths\": 7, \"causal_loops\": 2, \"topological_loops\": 3, "
+                "\"topological_loops_complete\": false}"));
   OK(has(j, "{\"kind\": \"time_constant\", \"path\": 1, \"value\": 0.0001}"));
   bg_sb_free(&sb);
   /* the arrays above are static: detach them before the arena goes */
