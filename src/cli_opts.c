@@ -5,6 +5,7 @@
 
 #include "cli_opts.h"
 #include "fileio.h"
+#include "strbuf.h"
 
 static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
@@ -47,31 +48,16 @@ static int usage_error(const char *fmt, const char *a, const char *b) {
   return -1;
 }
 
-/* Edit distance, for "did you mean" hints. */
-static int distance(const char *a, const char *b) {
-  size_t la = strlen(a), lb = strlen(b);
-  if (la > 40 || lb > 40) return 99;
-  int d[41][41];
-  for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
-  for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
-  for (size_t i = 1; i <= la; i++)
-    for (size_t j = 1; j <= lb; j++) {
-      int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-      int x = d[i - 1][j] + 1, y = d[i][j - 1] + 1;
-      d[i][j] = c < x ? (c < y ? c : y) : (x < y ? x : y);
-    }
-  return d[la][lb];
-}
 
 static const char *closest_option(const char *arg) {
   const char *best = NULL;
   int bestd = 4;
   for (size_t i = 0; i < sizeof valued / sizeof *valued; i++) {
-    int d = distance(arg, valued[i].name);
+    int d = bg_edit_distance(arg, valued[i].name);
     if (d < bestd) bestd = d, best = valued[i].name;
   }
   for (int i = 0; flags[i]; i++) {
-    int d = distance(arg, flags[i]);
+    int d = bg_edit_distance(arg, flags[i]);
     if (d < bestd) bestd = d, best = flags[i];
   }
   return best;

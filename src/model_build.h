@@ -57,7 +57,6 @@ const ns_entry *bg_build_lookup(const bg_build *b, const char *name);
 /* The closest name (edit distance) among the namespace and `extra`, or NULL. */
 const char *bg_build_suggest(const bg_build *b, const char *name, const char *const *extra,
                              int nextra);
-int bg_edit_distance(const char *a, const char *b);
 const char *bg_build_strdup(bg_build *b, const char *s);
 /* "a C", "an R", "an MTF": the kind with its article, for messages. */
 const char *bg_elem_kind_article(int kind);

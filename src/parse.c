@@ -11,6 +11,7 @@
 
 #include "lex.h"
 #include "parse.h"
+#include "strbuf.h"
 
 enum { MAX_DEPTH = 200 };
 
@@ -90,32 +91,13 @@ static int in_list(const char *s, const char *const *list, int n) {
   return 0;
 }
 
-/* Levenshtein distance, for "did you mean" (short strings only). */
-static int edit_distance(const char *a, const char *b) {
-  int la = (int)strlen(a), lb = (int)strlen(b);
-  if (la > 63 || lb > 63) return 99;
-  int row[64];
-  for (int j = 0; j <= lb; j++) row[j] = j;
-  for (int i = 1; i <= la; i++) {
-    int diag = row[0];
-    row[0] = i;
-    for (int j = 1; j <= lb; j++) {
-      int up = row[j];
-      int sub = diag + (a[i - 1] != b[j - 1]);
-      int best = up + 1 < row[j - 1] + 1 ? up + 1 : row[j - 1] + 1;
-      row[j] = sub < best ? sub : best;
-      diag = up;
-    }
-  }
-  return row[lb];
-}
 
 static const char *closest_word(const char *w) {
   const char *best = NULL;
   int bestd = strlen(w) < 3 ? 2 : 3;
   for (int i = 0; i < COUNT(kinds) + COUNT(keywords); i++) {
     const char *c = i < COUNT(kinds) ? kinds[i] : keywords[i - COUNT(kinds)];
-    int d = edit_distance(w, c);
+    int d = bg_edit_distance(w, c);
     if (d < bestd) { bestd = d; best = c; }
   }
   return best;

@@ -21,4 +21,6 @@ void bg_sb_json_num(bg_strbuf *b, double v);
 const char *bg_sb_str(const bg_strbuf *b);
 void bg_sb_clear(bg_strbuf *b);
 void bg_sb_free(bg_strbuf *b);
+/* Edit distance of two short strings (99 when one is over 63 characters). */
+int bg_edit_distance(const char *a, const char *b);
 #endif
