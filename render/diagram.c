@@ -375,22 +375,28 @@ static int count_of(const bg_analysis *a, int kind) {
   return kind == 'p' ? a->npath : kind == 'l' ? a->ntloop : a->nconflict;
 }
 
-/* Marks what the highlighted item touches; everything when there is none. */
-static int mark_hot(bg_diagram *d, bg_diags *dg) {
+/* Whether the highlighted item exists; reports it to dg when not. */
+static int check_highlight(const bg_diagram *d, bg_diags *dg) {
+  int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
+  static const char *names[] = {"causal path", "topological loop", "conflict"};
+  const char *what = names[kind == 'p' ? 0 : kind == 'l' ? 1 : 2];
+  int n = count_of(d->a, kind);
+  if (k < 0 || k >= n) {
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "--highlight: no %s %d (the model has %d)", what, k + 1, n);
+    return -1;
+  }
+  return 0;
+}
+
+/* Marks what the highlighted item (checked) touches; everything when there is none. */
+static void mark_hot(bg_diagram *d) {
   const bg_model *m = d->m;
   const bg_analysis *a = d->a;
   int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
   if (!kind) {
     memset(d->hot_bond, 1, (size_t)m->nbond + 1);
     memset(d->hot_elem, 1, (size_t)d->nnode + 1);
-    return 0;
-  }
-  static const char *names[] = {"causal path", "topological loop", "conflict"};
-  const char *what = names[kind == 'p' ? 0 : kind == 'l' ? 1 : 2];
-  int n = count_of(a, kind);
-  if (k < 0 || k >= n) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "--highlight: no %s %d (the model has %d)", what, k + 1, n);
-    return -1;
+    return;
   }
   if (kind == 'p')
     for (int i = 0; i < a->path_n[k]; i++) hot_bond(d, a->path_bonds[a->path_adr[k] + i]);
@@ -400,7 +406,6 @@ static int mark_hot(bg_diagram *d, bg_diags *dg) {
     d->hot_elem[a->conflict_node[k]] = 1;
     for (int i = 0; i < a->conflict_n[k]; i++) hot_bond(d, a->conflict_bonds[a->conflict_adr[k] + i]);
   }
-  return 0;
 }
 
 /* ---------------------------------------------------------------- build */
@@ -421,10 +426,41 @@ static void alloc_nodes(bg_diagram *d) {
   d->nw = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nh = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nlabel = bg_arena_alloc(&d->arena, n * sizeof(char *));
-  d->hot_elem = bg_arena_alloc(&d->arena, n);
-  d->hot_bond = bg_arena_alloc(&d->arena, (size_t)m->nbond + 1);
   d->bg = bg_arena_alloc(&d->arena, ((size_t)m->nbond + 1) * sizeof *d->bg);
-  d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
+}
+
+/* Moves everything drawn by v. */
+static void move_scene(bg_scene *s, bg_vec v) {
+  for (int i = 0; i < s->nop; i++)
+    for (int k = 0; k < 3; k++) s->op[i].x[k] += v.x, s->op[i].y[k] += v.y;
+  for (int i = 0; i < s->nitem; i++)
+    if (s->item[i].kind == BG_ITEM_TEXT) s->item[i].x += v.x, s->item[i].y += v.y;
+}
+
+/* The page around the drawing (bg_scene_fit), remembering the move. A
+ * redrawn diagram is not fitted: keep_page puts it on its source's page. */
+static void fit_page(bg_diagram *d) {
+  if (d->keep_page) return;
+  double x0, y0, x1, y1;
+  bg_scene_bbox(&d->scene, &x0, &y0, &x1, &y1);
+  d->shift = bg_vadd(d->shift, bg_v(d->st.margin - x0, d->st.margin - y0));
+  bg_scene_fit(&d->scene, d->st.margin);
+}
+
+/* A redrawn diagram gets its source's shift, so every node lands where it
+ * is there, and its page; the page grows (with the margin) where the drawing
+ * reaches beyond it, moving everything right or down when that is on the
+ * left or at the top. */
+static void keep_page(bg_diagram *d) {
+  bg_scene *s = &d->scene;
+  double x0, y0, x1, y1, mg = d->st.margin;
+  bg_scene_bbox(s, &x0, &y0, &x1, &y1);
+  bg_vec sh = d->keep_shift;
+  double gx = fmax(0, mg - (x0 + sh.x)), gy = fmax(0, mg - (y0 + sh.y));
+  d->shift = bg_vadd(sh, bg_v(gx, gy));
+  move_scene(s, d->shift);
+  s->width = ceil(fmax(d->keep_w, x1 + sh.x + mg) + gx);
+  s->height = ceil(fmax(d->keep_h, y1 + sh.y + mg) + gy);
 }
 
 /* Drawing order: layer polylines at the bottom, then bonds, strokes,
@@ -446,11 +482,34 @@ static void draw_all(bg_diagram *d) {
   draw_nodes(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
   bg_place_layer_labels(d);
-  bg_scene_fit(&d->scene, d->st.margin);
+  fit_page(d);
   if (show & BG_SHOW_LEGEND) {
     bg_draw_legend(d);
-    bg_scene_fit(&d->scene, d->st.margin);
+    fit_page(d);
   }
+  if (d->keep_page) keep_page(d);
+}
+
+/* The layout stage: nodes measured and laid out, where the bonds run. */
+static int lay_out(bg_diagram *d, bg_diags *dg) {
+  alloc_nodes(d);
+  measure_nodes(d);
+  if (run_layout(d, dg) != 0) return -1;
+  bg_geom_bonds(d);
+  return 0;
+}
+
+/* The scene stage: what the highlight touches, then everything drawn. */
+static void draw_scene(bg_diagram *d) {
+  const bg_model *m = d->m;
+  d->hot_elem = bg_arena_alloc(&d->arena, (size_t)d->nnode + 1);
+  d->hot_bond = bg_arena_alloc(&d->arena, (size_t)m->nbond + 1);
+  d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
+  mark_hot(d);
+  bg_scene_init(&d->scene, d->st.font);
+  d->scene.background = d->st.background;
+  d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");
+  draw_all(d);
 }
 
 bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
@@ -459,19 +518,60 @@ bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_r
   d->m = m, d->a = a, d->o = *o;
   d->show = o->show ? o->show : BG_SHOW_DEFAULT;
   if (bg_style_load(&d->st, o->style, o->style_dir, dg) != 0) goto fail;
-  alloc_nodes(d);
-  if (mark_hot(d, dg) != 0) goto fail;
-  measure_nodes(d);
-  if (run_layout(d, dg) != 0) goto fail;
-  bg_geom_bonds(d);
-  bg_scene_init(&d->scene, d->st.font);
-  d->scene.background = d->st.background;
-  d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");
-  draw_all(d);
+  /* a bad highlight is reported before the layout is paid for */
+  if (o->highlight_kind && check_highlight(d, dg) != 0) goto fail;
+  if (lay_out(d, dg) != 0) goto fail;
+  draw_scene(d);
   return d;
 fail:
   bg_diagram_free(d);
   return NULL;
+}
+
+static void *arena_dup(bg_arena *a, const void *src, size_t size) {
+  void *p = bg_arena_alloc(a, size);
+  memcpy(p, src, size);
+  return p;
+}
+
+/* The layout stage of src, copied: d shares nothing with src. */
+static void copy_layout(bg_diagram *d, const bg_diagram *src) {
+  const bg_model *m = d->m;
+  int nlag = d->a ? d->a->nlag : 0;
+  size_t nn = (size_t)src->nnode + 1, nb = (size_t)m->nbond + 1;
+  d->nnode = src->nnode;
+  d->lag_node = arena_dup(&d->arena, src->lag_node, sizeof(int) * (size_t)(nlag + 1));
+  d->state_node = arena_dup(&d->arena, src->state_node, sizeof(int) * ((size_t)m->nstate + 1));
+  d->nw = arena_dup(&d->arena, src->nw, nn * sizeof(double));
+  d->nh = arena_dup(&d->arena, src->nh, nn * sizeof(double));
+  d->nlabel = bg_arena_alloc(&d->arena, nn * sizeof(char *));
+  for (int i = 0; i < d->nnode; i++) d->nlabel[i] = bg_arena_strdup(&d->arena, src->nlabel[i]);
+  bg_layout_copy(&src->lay, &d->lay);
+  d->nx = d->lay.x, d->ny = d->lay.y;
+  d->splx = d->lay.splx, d->sply = d->lay.sply;
+  d->bg = arena_dup(&d->arena, src->bg, nb * sizeof *d->bg);
+}
+
+bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highlight_kind,
+                              int highlight_index, bg_diags *dg) {
+  const unsigned fixed = BG_SHOW_LABELS | BG_SHOW_SIGNALS; /* they decide the nodes */
+  bg_diagram *d = bg_xcalloc(1, sizeof *d);
+  d->m = src->m, d->a = src->a, d->o = src->o, d->st = src->st;
+  d->show = ((show ? show : BG_SHOW_DEFAULT) & ~fixed) | (src->show & fixed);
+  /* the names given to bg_diagram_build are not needed any more (and may be gone) */
+  d->o.style = d->o.style_dir = d->o.layout = NULL;
+  d->o.show = d->show;
+  d->o.highlight_kind = highlight_kind, d->o.highlight_index = highlight_index;
+  d->keep_page = 1;
+  d->keep_shift = src->shift;
+  d->keep_w = src->scene.width, d->keep_h = src->scene.height;
+  if (highlight_kind && check_highlight(d, dg) != 0) {
+    bg_diagram_free(d);
+    return NULL;
+  }
+  copy_layout(d, src);
+  draw_scene(d);
+  return d;
 }
 
 void bg_diagram_free(bg_diagram *d) {

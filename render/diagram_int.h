@@ -48,6 +48,10 @@ struct bg_diagram {
   struct bg_layer_label *labels; /* path tags and loop gains, placed after every line */
   int nlabels, caplabels;
   int *poly, npoly, cappoly; /* scene items of path and loop polylines */
+  bg_vec shift;              /* what the scene was moved by: page = layout + shift */
+  int keep_page;             /* drawn again (bg_diagram_redraw): placed on the page below */
+  bg_vec keep_shift;         /* that diagram's shift and page size */
+  double keep_w, keep_h;
   bg_scene scene;
   bg_arena arena;
 };

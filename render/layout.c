@@ -163,6 +163,7 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   int is_dot = !strcmp(engine, "dot");
   const char *gv_engine = !strcmp(engine, "pinned") ? "neato" : engine;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
+  out->nnode = in->nnode, out->nedge = in->nedge;
   agseterr(AGMAX); /* Graphviz warnings are ours to report, not its to print */
   /* one context per process: creating it reads Graphviz's plugin
    * configuration (slow, and it leaks inside libgvc 2.43 every time) */
@@ -196,4 +197,22 @@ void bg_layout_free(bg_layout *l) {
   free(l->splx);
   free(l->sply);
   memset(l, 0, sizeof *l);
+}
+
+static void *dup_array(const void *src, size_t n, size_t size) {
+  if (!src) return NULL;
+  void *p = bg_xmalloc(n * size);
+  memcpy(p, src, n * size);
+  return p;
+}
+
+void bg_layout_copy(const bg_layout *src, bg_layout *out) {
+  *out = *src;
+  size_t nn = (size_t)src->nnode + 1, ne = (size_t)src->nedge + 1, ns = (size_t)src->nspl;
+  out->x = dup_array(src->x, nn, sizeof *out->x);
+  out->y = dup_array(src->y, nn, sizeof *out->y);
+  out->spladr = dup_array(src->spladr, ne, sizeof *out->spladr);
+  out->spln = dup_array(src->spln, ne, sizeof *out->spln);
+  out->splx = ns ? dup_array(src->splx, ns, sizeof *out->splx) : NULL;
+  out->sply = ns ? dup_array(src->sply, ns, sizeof *out->sply) : NULL;
 }

@@ -22,6 +22,7 @@ typedef struct bg_layout_in {
 } bg_layout_in;
 
 typedef struct bg_layout {
+  int nnode, nedge;      /* as laid out */
   double width, height;  /* bounding box of the nodes, points */
   double *x, *y;         /* node centres, y down, origin top-left of the box */
   int *spladr, *spln;    /* per edge: cubic Bezier points tail → head (3k+1), n 0 = none */
@@ -34,6 +35,8 @@ typedef struct bg_layout {
  * frees out with bg_layout_free. */
 int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn);
 void bg_layout_free(bg_layout *l);
+/* A deep copy of src into out (freed with bg_layout_free). */
+void bg_layout_copy(const bg_layout *src, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */
 int bg_layout_engine_ok(const char *name);
 #endif

@@ -3,6 +3,8 @@
  *   bg_diagram *d = bg_diagram_build(m, a, &opts, dg);   // layout once
  *   bg_diagram_write(d, "x.svg", NULL, dg);               // any number of outputs
  *   bg_diagram_write(d, "x.pdf", NULL, dg);
+ *   bg_diagram *h = bg_diagram_redraw(d, 0, 'p', 2, dg);  // path 2 highlighted, same layout
+ *   bg_diagram_free(h);
  *   bg_diagram_free(d);
  *
  * Formats: svg, pdf, png (cairo) and dot (the annotated graph in Graphviz DOT
@@ -58,6 +60,16 @@ typedef struct bg_diagram bg_diagram;
  * out of range, layout failure). The caller frees the result. */
 bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
                              bg_diags *dg);
+/* Draws d's layout again with other layers (show; 0: the default layers) and
+ * another highlight (kind 0: none; else as in bg_render_opts), without a new
+ * layout: every node and bond is where it is in d, on d's page, in d's style.
+ * The page grows only where the new drawing reaches beyond it (it then moves
+ * right or down by that much). The labels and signals bits of show are d's:
+ * they decide the nodes and their sizes. Returns NULL after reporting a
+ * highlight index out of range to dg. The result is independent of d (either
+ * may be freed first); m and a must outlive it. */
+bg_diagram *bg_diagram_redraw(const bg_diagram *d, unsigned show, int highlight_kind,
+                              int highlight_index, bg_diags *dg);
 /* Writes the diagram to path atomically. format: "svg", "pdf", "png", "dot"
  * or NULL for path's extension. Returns BG_RENDER_OK, BG_RENDER_ERROR (unknown
  * format; reported to dg) or BG_RENDER_EWRITE (the file could not be written;

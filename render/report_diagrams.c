@@ -16,16 +16,11 @@
 #define MAX_GRID 1024      /* tiles of the grid, empty ones included */
 #define MAX_HL_TILES 4     /* pages for one cropped highlight */
 #define TILE_OVERLAP 18.0  /* points of the diagram repeated on neighbouring tiles */
-#define MAX_HIGHLIGHTS 12
-#define MAX_HIGHLIGHTS_LARGE 4 /* above LARGE_MODEL elements (one layout each) */
-#define LARGE_MODEL 400
+#define MAX_HIGHLIGHTS 12  /* redrawn from section 2's layout: no layout of their own */
 
 /* ---------------------------------------------------------------- building */
-static bg_diagram *build(rp_ctx *c, unsigned show, int kind, int index) {
-  bg_render_opts o = {0};
-  if (c->in->ropts) o = *c->in->ropts;
-  o.show = show, o.highlight_kind = kind, o.highlight_index = index;
-  bg_diagram *d = bg_diagram_build(c->m, c->a, &o, c->dg);
+/* Keeps d until the PDF is written; NULL marks the report failed. */
+static bg_diagram *keep(rp_ctx *c, bg_diagram *d) {
   if (!d) {
     c->failed = 1;
     return NULL;
@@ -38,6 +33,21 @@ static bg_diagram *build(rp_ctx *c, unsigned show, int kind, int index) {
   /* transparent: the page's own items (an overview grid) stay visible */
   d->scene.background.a = 0;
   return d;
+}
+
+/* Section 2's diagram: the one layout of the report. */
+static bg_diagram *build_full(rp_ctx *c) {
+  bg_render_opts o = {0};
+  if (c->in->ropts) o = *c->in->ropts;
+  o.show = BG_SHOW_ALL, o.highlight_kind = 0, o.highlight_index = 0;
+  return c->full = keep(c, bg_diagram_build(c->m, c->a, &o, c->dg));
+}
+
+/* A highlighted diagram: the full diagram's layout drawn again, so nodes are
+ * where they are in section 2. */
+static bg_diagram *build_highlight(rp_ctx *c, int kind, int index) {
+  if (!c->full) return keep(c, NULL);
+  return keep(c, bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg));
 }
 
 static double min_text(const bg_scene *s) {
@@ -215,7 +225,7 @@ static void diagram_caption(rp_ctx *c, bg_diagram *dg) {
 }
 
 void rp_sec_diagram(rp_ctx *c) {
-  bg_diagram *dg = build(c, BG_SHOW_ALL, 0, 0);
+  bg_diagram *dg = build_full(c);
   if (!dg) return;
   rp_doc *d = &c->body;
   const bg_scene *s = &dg->scene;
@@ -337,17 +347,31 @@ static int hot_item(const bg_diagram *dg, const hl *h, const bg_scene_item *it) 
   return role_is(r, "flash conflict=", k) || role_is(r, "conflict-text conflict=", k);
 }
 
-/* The region around the highlighted item, clamped to the scene: x, y, w, h. */
-static void hot_region(const bg_diagram *dg, const hl *h, double r[4]) {
+/* The region around the highlighted item, clamped to the drawn region d
+ * (x, y, w, h): x, y, w, h. */
+static void hot_region(const bg_diagram *dg, const hl *h, const double d[4], double r[4]) {
   const bg_scene *s = &dg->scene;
   double b[4] = {1e300, 1e300, -1e300, -1e300};
   for (int i = 0; i < s->nitem; i++)
     if (hot_item(dg, h, &s->item[i])) item_box(s, &s->item[i], b);
-  if (b[0] > b[2]) b[0] = b[1] = 0, b[2] = s->width, b[3] = s->height;
+  if (b[0] > b[2]) b[0] = d[0], b[1] = d[1], b[2] = d[0] + d[2], b[3] = d[1] + d[3];
   double pad = 36;
-  b[0] = fmax(0, b[0] - pad), b[1] = fmax(0, b[1] - pad);
-  b[2] = fmin(s->width, b[2] + pad), b[3] = fmin(s->height, b[3] + pad);
+  b[0] = fmax(d[0], b[0] - pad), b[1] = fmax(d[1], b[1] - pad);
+  b[2] = fmin(d[0] + d[2], b[2] + pad), b[3] = fmin(d[1] + d[3], b[3] + pad);
   r[0] = b[0], r[1] = b[1], r[2] = b[2] - b[0], r[3] = b[3] - b[1];
+}
+
+/* What is drawn with the style's margin around it, as bg_scene_fit would
+ * make the page, clamped to the page: x, y, w, h (a redrawn diagram's page
+ * is the full diagram's, legend included). */
+static void drawn_region(const bg_diagram *dg, double r[4]) {
+  const bg_scene *s = &dg->scene;
+  double x0, y0, x1, y1, mg = dg->st.margin;
+  bg_scene_bbox(s, &x0, &y0, &x1, &y1);
+  double rx = fmax(0, x0 - mg), ry = fmax(0, y0 - mg);
+  r[0] = rx, r[1] = ry;
+  r[2] = fmin(s->width, x0 - mg + ceil(x1 - x0 + 2 * mg)) - rx;
+  r[3] = fmin(s->height, y0 - mg + ceil(y1 - y0 + 2 * mg)) - ry;
 }
 
 static void hl_title(const rp_ctx *c, const hl *h, bg_strbuf *t) {
@@ -396,18 +420,20 @@ static void hl_text(const rp_ctx *c, const hl *h, bg_strbuf *t) {
 
 /* Draws one highlighted diagram at the cursor (two fit on a page when small). */
 static void show_one(rp_ctx *c, const hl *h) {
-  bg_diagram *dg = build(c, BG_SHOW_DEFAULT, h->kind, h->index + 1);
+  bg_diagram *dg = build_highlight(c, h->kind, h->index + 1);
   if (!dg) return;
   rp_doc *d = &c->body;
   const bg_scene *s = &dg->scene;
   double smin = smallest_scale(s), cw = rp_content_w(d);
   double head = 40, half = (rp_page_room(d) - 30) / 2 - head, full = rp_page_room(d) - 30 - head;
-  double r[4] = {0, 0, s->width, s->height};
+  double r[4];
+  drawn_region(dg, r);
   double sc = fit_scale(r[2], r[3], cw, half, 1);
   if (sc < smin) sc = fit_scale(r[2], r[3], cw, full, 1);
   int cropped = sc < smin;
   if (cropped) {
-    hot_region(dg, h, r);
+    double drawn[4] = {r[0], r[1], r[2], r[3]};
+    hot_region(dg, h, drawn, r);
     sc = fit_scale(r[2], r[3], cw, full, 1);
   }
   bg_strbuf t = {0}, x = {0};
@@ -457,8 +483,7 @@ void rp_sec_highlights(rp_ctx *c) {
     free(h);
     return;
   }
-  int cap = c->m->nelem > LARGE_MODEL ? MAX_HIGHLIGHTS_LARGE : MAX_HIGHLIGHTS;
-  int shown = n < cap ? n : cap;
+  int shown = n < MAX_HIGHLIGHTS ? n : MAX_HIGHLIGHTS;
   rp_para(d, "Each item in colour, everything else grey. Causal loops are drawn as one of their "
              "two open topological loops; a flat loop caused by a causal path is drawn as that path.",
           RP_SIZE_BODY, 0, 0, rp_ink);

@@ -193,6 +193,7 @@ typedef struct rp_ctx {
   bg_style st;
   rp_doc body;
   bg_diagram **diag; /* kept until the PDF is written (placed scenes are borrowed) */
+  bg_diagram *full;  /* section 2's diagram, whose layout the highlights reuse (in diag) */
   int ndiag, capdiag;
   bg_scene *plot;     /* the simulation plots (owned), nullable */
   bg_diags *dg;

@@ -29,6 +29,7 @@ static inline int efx_load(efx *f, const char *name, const char *text, int metho
     snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
     f->src = bg_read_file(path, &len);
   } else {
+    if (!text) return -1; /* neither an example nor inline text */
     snprintf(path, sizeof path, "inline.bg");
     len = strlen(text);
     f->src = malloc(len + 1);

@@ -415,6 +415,197 @@ static void test_examples(void) {
   }
 }
 
+/* ---------------------------------------------------------------- redrawing a layout */
+/* The scene dump split into lines (a copy the caller frees with free_lines). */
+typedef struct lines {
+  char **l;
+  int n;
+} lines;
+
+static lines dump_split(const bg_diagram *d) {
+  bg_strbuf dump = {0};
+  bg_diagram_dump(d, &dump);
+  lines L = {calloc((size_t)dump.len + 1, sizeof(char *)), 0};
+  for (char *p = strtok(dump.s, "\n"); p; p = strtok(NULL, "\n")) L.l[L.n++] = strdup(p);
+  bg_sb_free(&dump);
+  return L;
+}
+
+static void free_lines(lines *L) {
+  for (int i = 0; i < L->n; i++) free(L->l[i]);
+  free(L->l);
+}
+
+/* "node NAME\ttext #rrggbb X,Y size ..." → "X,Y" of every node label (and
+ * state integrator), one string "role X,Y" per node, in scene order. */
+static int node_positions(const bg_diagram *d, char out[][192], int cap) {
+  lines L = dump_split(d);
+  int n = 0;
+  for (int i = 0; i < L.n && n < cap; i++) {
+    const char *ln = L.l[i];
+    if (strncmp(ln, "node ", 5) && strncmp(ln, "state-node ", 11)) continue;
+    const char *tab = strchr(ln, '\t'), *sz = strstr(ln, " size ");
+    const char *xy = tab ? strchr(tab + 7, ' ') : NULL; /* after "\ttext #rrggbb" */
+    if (!tab || !sz || !xy) continue;
+    snprintf(out[n++], 192, "%.*s %.*s", (int)(tab - ln), ln, (int)(sz - xy - 1), xy + 1);
+  }
+  free_lines(&L);
+  return n;
+}
+
+static int same_nodes(const bg_diagram *a, const bg_diagram *b) {
+  static char pa[512][192], pb[512][192];
+  int na = node_positions(a, pa, 512), nb = node_positions(b, pb, 512), same = na == nb && na > 0;
+  for (int i = 0; same && i < na; i++) same = !strcmp(pa[i], pb[i]);
+  return same;
+}
+
+/* Two dumps show the same items (roles, colours, texts, sizes) with every
+ * point moved by one offset (within the dump's rounding). */
+static int same_up_to_offset(const bg_diagram *a, const bg_diagram *b) {
+  lines A = dump_split(a), B = dump_split(b);
+  int same = A.n == B.n, have = 0;
+  double dx = 0, dy = 0;
+  for (int i = 1; same && i < A.n; i++) { /* line 0: the page size */
+    char *sa, *sb, *ta = strtok_r(A.l[i], " ", &sa), *tb = strtok_r(B.l[i], " ", &sb);
+    for (; same && ta && tb; ta = strtok_r(NULL, " ", &sa), tb = strtok_r(NULL, " ", &sb)) {
+      double xa, ya, xb, yb;
+      char ca, cb;
+      int pa = sscanf(ta, "%lf,%lf%c", &xa, &ya, &ca) == 2, pb = sscanf(tb, "%lf,%lf%c", &xb, &yb, &cb) == 2;
+      if (pa != pb) same = 0;
+      else if (!pa) same = !strcmp(ta, tb);
+      else if (!have) dx = xa - xb, dy = ya - yb, have = 1;
+      else same = fabs(xa - xb - dx) < 0.15 && fabs(ya - yb - dy) < 0.15;
+    }
+    if (ta || tb) same = 0;
+  }
+  free_lines(&A);
+  free_lines(&B);
+  return same;
+}
+
+/* Bonds drawn in colour (not muted_color). */
+static int hot_bonds(const bg_diagram *d) {
+  lines L = dump_split(d);
+  int n = 0;
+  for (int i = 0; i < L.n; i++) n += !strncmp(L.l[i], "bond ", 5) && !strstr(L.l[i], " #c8c8c8 ");
+  free_lines(&L);
+  return n;
+}
+
+static int distinct(const int *v, int n, int half) {
+  int k = 0;
+  for (int i = 0; i < n; i++) {
+    int seen = 0;
+    for (int j = 0; j < i; j++) seen |= (half ? v[j] / 2 : v[j]) == (half ? v[i] / 2 : v[i]);
+    k += !seen;
+  }
+  return k;
+}
+
+/* Every path, loop and conflict of an example highlighted from the full
+ * diagram's layout (as the report does): the nodes stay where they are in
+ * the full diagram, on its page; the highlight draws its own layer once and
+ * its bonds in colour; and the drawing is a fresh build's, moved. */
+static void check_redraw(const char *path) {
+  loaded L;
+  OK(load(path, &L) == 0);
+  if (!L.m) {
+    unload(&L);
+    return;
+  }
+  const bg_analysis *a = &L.a;
+  bg_render_opts o = opts_all();
+  bg_diagram *full = bg_diagram_build(L.m, a, &o, &L.dg);
+  OK(full != NULL);
+  static const int kinds[] = {'p', 'l', 'c'};
+  for (int ki = 0; full && ki < 3; ki++) {
+    int kind = kinds[ki], n = kind == 'p' ? a->npath : kind == 'l' ? a->ntloop : a->nconflict;
+    for (int k = 0; k < n; k++) {
+      bg_diagram *h = bg_diagram_redraw(full, BG_SHOW_DEFAULT, kind, k + 1, &L.dg);
+      char what[1200];
+      snprintf(what, sizeof what, "%s: %c%d redrawn", path, kind, k + 1);
+      BG_T_REPORT(h != NULL, "%s", what);
+      if (!h) continue;
+      double fw, fh, hw, hh;
+      bg_diagram_size(full, &fw, &fh), bg_diagram_size(h, &hw, &hh);
+      BG_T_REPORT(fw == hw && fh == hh, "%s: on the full diagram's page", what);
+      BG_T_REPORT(same_nodes(full, h), "%s: nodes where the full diagram has them", what);
+      int want = kind == 'p' ? distinct(a->path_bonds + a->path_adr[k], a->path_n[k], 0)
+                 : kind == 'l' ? distinct(a->tloop_signals + a->tloop_adr[k], a->tloop_n[k], 1)
+                               : distinct(a->conflict_bonds + a->conflict_adr[k], a->conflict_n[k], 0);
+      BG_T_REPORT(hot_bonds(h) == want, "%s: %d bonds in colour, %d expected", what, hot_bonds(h), want);
+      BG_T_REPORT(bg_diagram_count(h, "path") == (kind == 'p') &&
+                  bg_diagram_count(h, "path-tag") == (kind == 'p') &&
+                  bg_diagram_count(h, "loop") == (kind == 'l') &&
+                  bg_diagram_count(h, "gain") == (kind == 'l'), "%s: only its own layer", what);
+      BG_T_REPORT(bg_diagram_count(h, "flash") == a->nconflict, "%s: conflicts", what);
+      BG_T_REPORT(bg_diagram_count(h, "legend-text") == 0, "%s: no legend", what);
+      bg_render_opts ho = opts_all();
+      ho.show = BG_SHOW_DEFAULT, ho.highlight_kind = kind, ho.highlight_index = k + 1;
+      bg_diagram *fresh = bg_diagram_build(L.m, a, &ho, &L.dg);
+      BG_T_REPORT(fresh && same_up_to_offset(h, fresh), "%s: a fresh build's drawing", what);
+      bg_diagram_free(fresh);
+      bg_diagram_free(h);
+    }
+  }
+  bg_diagram_free(full);
+  INT_EQ(L.dg.nerrors, 0);
+  unload(&L);
+}
+
+static void test_redraw(void) {
+  char *names[256];
+  int n = list_examples(names, 256);
+  for (int i = 0; i < n; i++) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, names[i]);
+    check_redraw(path);
+    free(names[i]);
+  }
+  /* the hand model: layers that decide the nodes stay; the page grows for a
+   * larger drawing; a bad index is an error; the copy outlives its source */
+  bg_model m;
+  bg_analysis a;
+  hand_model(&m);
+  hand_analysis(&m, &a);
+  bg_diags dg;
+  bg_diags_init(&dg, "hand", NULL, 0);
+  bg_render_opts o = opts_all();
+  o.show = BG_SHOW_DEFAULT;
+  bg_diagram *d = bg_diagram_build(&m, &a, &o, &dg);
+  bg_diagram *strokes = bg_diagram_redraw(d, BG_SHOW_STROKES, 0, 0, &dg);
+  OK(strokes && same_nodes(d, strokes));
+  INT_EQ(bg_diagram_count(strokes, "signal"), 4); /* signals decide the nodes: kept */
+  INT_EQ(bg_diagram_count(strokes, "number"), 0);
+  bg_diagram *all = bg_diagram_redraw(d, BG_SHOW_ALL, 'l', 1, &dg);
+  double w0, h0, w1, h1;
+  bg_diagram_size(d, &w0, &h0), bg_diagram_size(all, &w1, &h1);
+  OK(w1 >= w0 && h1 > h0); /* the legend below */
+  INT_EQ(bg_diagram_count(all, "path"), 1);
+  INT_EQ(bg_diagram_count(all, "loop"), 1);
+  OK(bg_diagram_count(all, "legend-text") >= 5);
+  int before = dg.nerrors;
+  OK(bg_diagram_redraw(d, 0, 'c', 2, &dg) == NULL);
+  INT_EQ(dg.nerrors, before + 1);
+  bg_diagram *again = bg_diagram_redraw(strokes, 0, 'p', 1, &dg);
+  bg_diagram_free(d);
+  bg_diagram_free(strokes);
+  OK(again && bg_diagram_count(again, "path") == 1);
+  const char *formats[] = {"svg", "pdf", "png", "dot"};
+  for (int i = 0; again && i < 4; i++) {
+    bg_strbuf out = {0};
+    INT_EQ(bg_diagram_render(again, formats[i], &out, &dg), 0);
+    OK(out.len > 100);
+    bg_sb_free(&out);
+  }
+  bg_diagram_free(again);
+  bg_diagram_free(all);
+  bg_diags_free(&dg);
+  bg_analysis_free(&a);
+  model_release(&m);
+}
+
 /* ---------------------------------------------------------------- determinism */
 /* Renders the hand model and an example in a child process (cairo's SVG ids
  * are per-process counters: a fresh process is what a user's rerun sees). */
@@ -527,6 +718,7 @@ int main(void) {
   test_styles();
   test_hand_scene();
   test_examples();
+  test_redraw();
   test_determinism();
   return bg_t_done();
 }

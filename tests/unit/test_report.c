@@ -227,6 +227,86 @@ static void test_report(const char *name) {
   efx_free(&f);
 }
 
+/* Node label positions from a diagram's scene dump ("node NAME\ttext
+ * #rrggbb X,Y size ..."), as one string. */
+static void node_positions(const bg_diagram *d, bg_strbuf *out) {
+  bg_strbuf dump = {0};
+  bg_diagram_dump(d, &dump);
+  for (const char *ln = bg_sb_str(&dump); ln && *ln;) {
+    const char *end = strchr(ln, '\n'), *tab = strchr(ln, '\t'), *sz = strstr(ln, " size ");
+    if (!end) end = ln + strlen(ln);
+    if (!strncmp(ln, "node ", 5) && tab && tab < end && sz && sz < end) {
+      const char *xy = strchr(tab + 7, ' ');
+      bg_sb_printf(out, "%.*s %.*s\n", (int)(tab - ln), ln, (int)(sz - xy - 1), xy + 1);
+    }
+    ln = *end ? end + 1 : NULL;
+  }
+  bg_sb_free(&dump);
+}
+
+/* Sections 2 and 3 alone: the full diagram is the one layout; every
+ * highlighted diagram is drawn from it, on its page, with every node where
+ * it is there; want highlights are drawn (at most 12, whatever the size). */
+static void test_highlights_share_layout(const char *name, const char *text, int want) {
+  efx f;
+  OK(efx_load(&f, name, text, -1, NULL, 0) == 0);
+  OK(f.m != NULL);
+  if (!f.m) {
+    efx_free(&f);
+    return;
+  }
+  bg_render_opts o = {0};
+  o.style_dir = BG_SOURCE_DIR "/styles";
+  bg_report_input in = {f.m, &f.a, f.s, NULL, NULL, NULL, NULL, 0, &o};
+  bg_diags dg;
+  bg_diags_init(&dg, "test", NULL, 0);
+  rp_ctx c;
+  memset(&c, 0, sizeof c);
+  c.in = &in, c.m = f.m, c.a = &f.a, c.dg = &dg;
+  OK(bg_style_load(&c.st, NULL, o.style_dir, &dg) == 0);
+  rp_doc_init(&c.body, c.st.font);
+  c.body.section = 1;
+  rp_sec_diagram(&c);
+  rp_sec_highlights(&c);
+  OK(!c.failed && c.ndiag > 0 && c.full == c.diag[0]);
+  BG_T_REPORT(c.ndiag - 1 == want, "%s: %d highlighted diagrams, %d expected", name ? name : "inline",
+              c.ndiag - 1, want);
+  bg_strbuf full = {0};
+  double fw = 0, fh = 0;
+  if (c.full) node_positions(c.full, &full), bg_diagram_size(c.full, &fw, &fh);
+  OK(full.len > 0);
+  for (int i = 1; i < c.ndiag; i++) {
+    bg_strbuf h = {0};
+    node_positions(c.diag[i], &h);
+    double w, ht;
+    bg_diagram_size(c.diag[i], &w, &ht);
+    BG_T_REPORT(!strcmp(bg_sb_str(&h), bg_sb_str(&full)) && w == fw && ht == fh,
+                "%s: highlight %d on the full diagram's layout and page", name ? name : "inline", i);
+    bg_sb_free(&h);
+  }
+  bg_sb_free(&full);
+  INT_EQ(dg.nerrors, 0);
+  for (int i = 0; i < c.ndiag; i++) bg_diagram_free(c.diag[i]);
+  free(c.diag);
+  rp_doc_free(&c.body);
+  bg_diags_free(&dg);
+  efx_free(&f);
+}
+
+/* A chain of junctions with an R, I or C on each: 2n + 1 elements. */
+static char *chain_model(int n) {
+  bg_strbuf b = {0};
+  bg_sb_puts(&b, "model chain\nSe U = 1\n");
+  static const char *kind[] = {"R r", "I m", "C c"};
+  for (int i = 1; i <= n; i++) bg_sb_printf(&b, "%d j%d\n%s%d = 1\n", i % 2, i, kind[i % 3], i);
+  bg_sb_puts(&b, "bond U -> j1\n");
+  for (int i = 1; i <= n; i++) {
+    bg_sb_printf(&b, "bond j%d -> %c%d\n", i, "rmc"[i % 3], i);
+    if (i < n) bg_sb_printf(&b, "bond j%d -> j%d\n", i, i + 1);
+  }
+  return b.s;
+}
+
 int main(void) {
   test_words();
   test_break_lines();
@@ -237,5 +317,10 @@ int main(void) {
   test_doc();
   test_report("bond_loop");
   test_report("hydraulic_bridge");
+  test_highlights_share_layout("hydraulic_bridge", NULL, 8);
+  test_highlights_share_layout("bond_loop", NULL, 3);
+  char *chain = chain_model(200); /* 401 elements: no lower cap for large models */
+  test_highlights_share_layout(NULL, chain, 12);
+  free(chain);
   return bg_t_done();
 }
