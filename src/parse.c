@@ -626,11 +626,11 @@ char *bg_read_file(const char *path, size_t *len) {
     n += r;
     if (cap - n - 1 == 0) buf = bg_xrealloc(buf, cap *= 2);
   }
-  int err = ferror(f);
+  int err = ferror(f) ? errno : 0; /* EISDIR for a directory */
   fclose(f);
   if (err) {
     free(buf);
-    errno = EIO;
+    errno = err;
     return NULL;
   }
   buf[n] = '\0';
