@@ -8,19 +8,26 @@ const char *bg_form_name(int form) {
   }
 }
 
-/* "a, b, c" or "none" */
+/* The summary is short: long lists show their first names and a count
+ * (the JSON has them all). */
+enum { MAX_NAMES = 12 };
+
+/* "a, b, c", "a, b, ... and 9 more" or "none" */
 static void put_names(bg_strbuf *out, char **names, int n) {
   if (n == 0) bg_sb_puts(out, "none");
-  for (int i = 0; i < n; i++) bg_sb_printf(out, "%s%s", i ? ", " : "", names[i]);
+  int shown = n > MAX_NAMES ? MAX_NAMES - 2 : n;
+  for (int i = 0; i < shown; i++) bg_sb_printf(out, "%s%s", i ? ", " : "", names[i]);
+  if (shown < n) bg_sb_printf(out, ", ... and %d more", n - shown);
 }
 
 static void put_conflicts(const bg_model *m, const bg_analysis *a, bg_strbuf *out) {
   bg_sb_printf(out, "conflicts: %d", a->nconflict);
-  for (int i = 0; i < a->nconflict; i++) {
+  for (int i = 0; i < a->nconflict && i < MAX_NAMES; i++) {
     bg_sb_printf(out, "%stype %d at %s", i ? ", " : " (", a->conflict_type[i],
                  m->elem_name[a->conflict_node[i]]);
     if (a->conflict_type[i] == 2) bg_sb_printf(out, " degree %d", a->conflict_degree[i]);
   }
+  if (a->nconflict > MAX_NAMES) bg_sb_printf(out, ", ... and %d more", a->nconflict - MAX_NAMES);
   bg_sb_puts(out, a->nconflict ? ")\n" : "\n");
 }
 
@@ -38,9 +45,10 @@ static void put_loops(const bg_analysis *a, bg_strbuf *out) {
   int algebraic = 0;
   for (int i = 0; i < a->ntloop; i++) algebraic += a->tloop_algebraic[i] != 0;
   bg_sb_printf(out, "causal loops: %d", a->ncloop);
-  for (int i = 0; i < a->ncloop; i++)
+  for (int i = 0; i < a->ncloop && i < MAX_NAMES; i++)
     bg_sb_printf(out, "%sgain %s = %g, class %d", i ? "; " : " (", a->cloop_gain[i],
                  a->cloop_gain_value[i], a->cloop_class[i]);
+  if (a->ncloop > MAX_NAMES) bg_sb_printf(out, "; ... and %d more", a->ncloop - MAX_NAMES);
   bg_sb_puts(out, a->ncloop ? ")" : "");
   if (a->ncloop_omitted) bg_sb_printf(out, ", %d more not listed", a->ncloop_omitted);
   bg_sb_printf(out, "\ntopological loops: %d (%d algebraic)", a->ntloop, algebraic);

@@ -16,5 +16,17 @@ for f in examples/*.bg; do
     sed 's/^/    /' "$err"
   fi
 done
+
+# The summary stays short on a large model: a 30-stage RC ladder lists ten
+# states and counts the rest.
+ladder=$(mktemp --suffix=.bg)
+python3 bench/gen_ladder.py 30 "$ladder"
+out=$("$BGDRAW" "$ladder" --check 2>/dev/null)
+rm -f "$ladder"
+if echo "$out" | grep -qx 'states (30): C1.q, C2.q, C3.q, C4.q, C5.q, C6.q, C7.q, C8.q, C9.q, C10.q, ... and 20 more'; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1)); echo "FAIL long state list not shortened:"; echo "$out" | head -3
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]
