@@ -1,17 +1,28 @@
-/* Why a model must not be handed to a solver (THEORY.md section 6): index
+/* Why a model must not be handed to a solver (docs/simulation.md): index
  * above 1, a causal loop of gain +1, an algebraic loop that is singular at
  * the current parameter values, incomplete causality. The message names the
  * loop or paths and gives the remedies of the reference text. IDA does not
- * reliably reject such systems (NUMERICS.md), so this is decided here. */
+ * reliably reject such systems, so this is decided here. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "simulate.h"
 
+/* Remedies differ by cause: van Dijk's causality removes a causal loop of
+ * gain +1 but not a class 1 path sharing bonds with a loop (Proposition
+ * 5.10), nor a conflict that constrains states. */
 static const char *const REMEDIES =
     "Remedies: use --causality vandijk (van Dijk's causality turns the loop into class 1 "
     "paths between stores, index 1); or add a small store (C or I) or a resistor in the "
     "path so the loop gets an integration (Section 4.3).";
+static const char *const REMEDIES_SHARED =
+    "Remedies: add a small store (C or I) or a resistor in the causal loop or in the class 1 "
+    "path so they no longer share bonds without an integration (Section 4.3); if a causal "
+    "stroke fixed in the model closes the loop, try the other choice; --causality vandijk "
+    "does not help here, the class 1 path stays.";
+static const char *const REMEDIES_CONFLICT =
+    "Remedies: add a small store (C at a 0-junction, I at a 1-junction) or a resistor at the "
+    "junction of the conflict, so its balance gets a variable of its own (Section 4.3).";
 
 static void bonds_list(const bg_model *m, const int *b, int n, bg_strbuf *sb) {
   for (int i = 0; i < n; i++) bg_sb_printf(sb, "%s%d", i ? ", " : "", m->bond_num[b[i]]);
@@ -55,7 +66,10 @@ static void say_index2(const bg_model *m, const bg_analysis *a, bg_strbuf *sb) {
     bg_sb_puts(sb, ". ");
   }
   bg_sb_puts(sb, "IDA cannot integrate index-2 equations reliably. ");
-  bg_sb_puts(sb, REMEDIES);
+  const char *why = a->index_reason ? a->index_reason : "";
+  if (strncmp(why, "class 1 causal path", 19) == 0) bg_sb_puts(sb, REMEDIES_SHARED);
+  else if (strstr(why, "conflict at")) bg_sb_puts(sb, REMEDIES_CONFLICT);
+  else bg_sb_puts(sb, REMEDIES);
 }
 
 static int singular_tloop(const bg_analysis *a) {

@@ -1,5 +1,8 @@
 #include "summary.h"
 
+#include <stdio.h>
+#include <string.h>
+
 const char *bg_form_name(int form) {
   switch (form) {
   case BG_FORM_ODE: return "ode";
@@ -45,9 +48,13 @@ static void put_loops(const bg_analysis *a, bg_strbuf *out) {
   int algebraic = 0;
   for (int i = 0; i < a->ntloop; i++) algebraic += a->tloop_algebraic[i] != 0;
   bg_sb_printf(out, "causal loops: %d", a->ncloop);
-  for (int i = 0; i < a->ncloop && i < MAX_NAMES; i++)
-    bg_sb_printf(out, "%sgain %s = %g, class %d", i ? "; " : " (", a->cloop_gain[i],
-                 a->cloop_gain_value[i], a->cloop_class[i]);
+  for (int i = 0; i < a->ncloop && i < MAX_NAMES; i++) {
+    char num[32];
+    snprintf(num, sizeof num, "%g", a->cloop_gain_value[i]);
+    bg_sb_printf(out, "%sgain %s", i ? "; " : " (", a->cloop_gain[i]);
+    if (strcmp(num, a->cloop_gain[i]) != 0) bg_sb_printf(out, " = %s", num); /* not "1 = 1" */
+    bg_sb_printf(out, ", class %d", a->cloop_class[i]);
+  }
   if (a->ncloop > MAX_NAMES) bg_sb_printf(out, "; ... and %d more", a->ncloop - MAX_NAMES);
   bg_sb_puts(out, a->ncloop ? ")" : "");
   if (a->ncloop_omitted) bg_sb_printf(out, ", %d more not listed", a->ncloop_omitted);

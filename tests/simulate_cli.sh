@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The CLI's simulation end to end (CLI.md): `--simulate -o X.csv` writes the
-# CSV (header, one row per output time, last time = t_end), reruns are
+# The CLI's simulation end to end (docs/cli.md, docs/simulation.md):
+# `--simulate -o X.csv` writes the CSV (header, one row per output time,
+# last time = t_end), reruns are
 # byte-identical, a failing run exits 3 and still writes the rows it has
 # with a final "# partial:" line, a refused model writes nothing and says why.
 # Usage: bash tests/simulate_cli.sh PATH_TO_BGDRAW   (from the project root)
@@ -47,6 +48,25 @@ awk -F, 'NR > 1 { p = 1 - (1 - 2 * $1 / 3) ^ 1.5; d = $2 - p; if (d < 0) d = -d
          END { exit !(n > 100 && bad == 0) }' "$tmp/pc.csv"
 check "parallel_conductance Lk.f = 1 - (1 - 2t/3)^1.5" $?
 
+# refused for a conflict that constrains states (delta with R1 forced to
+# conductance, Figure 4.17): the remedy is a store at the junction, not vandijk
+sed 's/^R   R1 = R10/R   R1 = R10 [causality = conductance]/' examples/delta.bg >"$tmp/delta_c.bg"
+"$BGDRAW" "$tmp/delta_c.bg" --simulate 2>"$tmp/err"; st=$?
+check "delta R1 conductance refused, exit 3 (got $st)" $((st != 3))
+grep -q 'type 1 conflict at nC' "$tmp/err" && grep -q 'small store (C at a 0-junction' "$tmp/err" &&
+  ! grep -q -- '--causality vandijk' "$tmp/err"
+check "conflict refusal names the junction and its own remedy" $?
+
+# lagrange_rlc: Lagrange causality (mass-matrix DAE) and SCAP give the same
+# response to 1e-4
+"$BGDRAW" examples/lagrange_rlc.bg -o "$tmp/lr.csv" 2>/dev/null; st1=$?
+"$BGDRAW" examples/lagrange_rlc.bg --causality scap -o "$tmp/lr2.csv" 2>/dev/null; st2=$?
+check "lagrange_rlc both methods run (got $st1, $st2)" $((st1 != 0 || st2 != 0))
+paste -d, "$tmp/lr.csv" "$tmp/lr2.csv" | awk -F, 'NR > 1 { for (i = 2; i <= 3; i++) {
+    d = $i - $(i + 3); if (d < 0) d = -d; if (d > 1e-4) bad++ }; n++ }
+    END { exit !(n == 1001 && bad == 0) }'
+check "lagrange_rlc: Lagrange and SCAP responses agree" $?
+
 # a failing run: exit 3, partial rows and the reason in the file and on stderr
 cat >"$tmp/blow.bg" <<'BG'
 model blow "A capacitor charged past its law's domain"
@@ -76,7 +96,7 @@ check "refused run exits 3 (got $st)" $((st != 3))
 grep -q 'causal loop 1' "$tmp/err" && grep -q -- '--causality vandijk' "$tmp/err"
 check "refused run names the loop and the remedy" $?
 
-# refusals of EXAMPLES.md, each with its reason; exit 3 and no CSV
+# the refusals of docs/examples.md, each with its reason; exit 3 and no CSV
 "$BGDRAW" examples/loop_class1.bg -o "$tmp/lc.csv" 2>"$tmp/err"; st=$?
 check "loop_class1 refused with exit 3 (got $st)" $((st != 3))
 grep -q 'index above 1' "$tmp/err" && grep -q 'Proposition 5.10' "$tmp/err"

@@ -299,8 +299,10 @@ static void test_queries(void) {
     INT_EQ(m->method, BG_METHOD_LAGRANGE);
     INT_EQ(m->method_given, 1);
     INT_EQ(m->elem_kind[elem(m, "R")], BG_ELEM_R); /* a kind word may name an element */
-    OK(!m->sim.present);
-    INT_EQ(m->nplot, 0);
+    OK(m->sim.present);
+    DBL_NEAR(m->sim.t_end, 10.0, 0);
+    INT_EQ(m->nplot, 1);
+    INT_EQ(m->plot_nexpr[0], 2);
   }
   bg_model_free(m);
 }
