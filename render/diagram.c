@@ -87,7 +87,7 @@ static const char *choose_engine(const bg_diagram *d) {
   if (d->o.layout) return d->o.layout;
   const char *e = m->layout.engine ? m->layout.engine : "dot";
   if (!strcmp(e, "dot") && d->nnode > 2000) {
-    /* dot needs ~8 s at 10 000 nodes, sfdp ~2.5 s (DRAWING.md) */
+    /* dot needs ~8 s at 10 000 nodes, sfdp ~2.5 s (docs/drawing.md) */
     if (d->o.verbose)
       fprintf(stderr, "bgdraw: %d nodes: laying out with sfdp instead of dot\n", d->nnode);
     return "sfdp";
@@ -258,7 +258,7 @@ static void draw_number(bg_diagram *d, int b) {
   bg_vec barb = bg_barb_side(d, b);
   char role[48];
   if (d->show & BG_SHOW_VARIABLES) {
-    /* effort on the barb side, flow opposite (DRAWING.md) */
+    /* effort on the barb side, flow opposite (docs/drawing.md) */
     bg_strbuf t = {0};
     var_markup(&t, 'f', m->bond_num[b], size);
     snprintf(role, sizeof role, "variable bond=%d f", m->bond_num[b]);

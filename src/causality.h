@@ -1,5 +1,5 @@
 /* Causality assignment: SCAP, relaxed causality (Joseph–Martens), van Dijk's
- * modification and Lagrange causality (THEORY.md sections 1 and 2).
+ * modification and Lagrange causality (docs/causality.md).
  *
  * Public API: bg_analysis_init / bg_analysis_free (analysis.c) and
  * bg_causality_assign. The rest of this header is the engine shared by the
@@ -43,7 +43,7 @@ typedef struct bg_ceng {
   /* Junctions that could only complete by "all but one weak -> last one
    * strong" wait here until the worklist is empty, so a determination that
    * flows from a strong bond always wins over one by elimination (this is
-   * what places relaxed-causality conflicts where EXAMPLES.md has them). */
+   * what places relaxed-causality conflicts where docs/examples.md has them). */
   int *dqueue, dhead, dlen;
   unsigned char *indq;
   int *log, nlog;           /* bonds in the order they were assigned */

@@ -1,4 +1,4 @@
-/* Command-line options of bgdraw (CLI.md). Parsing only; main.c acts on them. */
+/* Command-line options of bgdraw (docs/cli.md). Parsing only; main.c acts on them. */
 #ifndef BG_CLI_OPTS_H
 #define BG_CLI_OPTS_H
 #include <stdio.h>

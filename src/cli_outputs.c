@@ -1,5 +1,5 @@
 /* The writers of bgdraw's outputs: diagrams, JSON, equations, CSV, plots
- * and the report, each written atomically; their exit statuses (CLI.md). */
+ * and the report, each written atomically; their exit statuses (docs/cli.md). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>

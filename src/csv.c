@@ -1,4 +1,4 @@
-/* Simulation results as CSV (CLI.md): header "t,<names>", one row per output
+/* Simulation results as CSV (docs/simulation.md): header "t,<names>", one row per output
  * time, "%.17g" numbers (round-trip exact, identical on every run).
  * A name with a comma, quote or newline (a plot expression such as
  * "max(a, b)") is quoted CSV-style, with inner quotes doubled. A partial run

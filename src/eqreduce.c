@@ -18,7 +18,7 @@
  *    state when the constraint is linear in it (x_d = its solution); else it
  *    stays a state with x_d' from the solution.
  * The form and the index in the analysis stay those of the causal graph
- * (CLI.md); this is what the equations became. */
+ * (docs/json.md); this is what the equations became. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

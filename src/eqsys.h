@@ -56,7 +56,7 @@ const char *bg_eqsys_error(const bg_eqsys *s); /* nullable */
  * DAE: J = dF/dy + cj * dF/dyp. Dense: column-major n x n. */
 int bg_eqsys_jac_dense(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
                        double *J);
-/* Sparse: the pattern in CSC form including every diagonal entry (NUMERICS.md:
+/* Sparse: the pattern in CSC form including every diagonal entry (docs/simulation.md:
  * KLU is slow without it); colptr has n+1 entries. nnz from bg_eqsys_jac_nnz. */
 int bg_eqsys_jac_nnz(const bg_eqsys *s);
 void bg_eqsys_jac_pattern(const bg_eqsys *s, int *colptr, int *rowind);

@@ -164,7 +164,7 @@ void bg_eqs_tape_free(bg_eqsys *s) {
 }
 
 /* ------------------------------------------------------------ derivatives */
-/* a + b with the exact-cancellation rule of NUMERICS.md. */
+/* a + b with the exact-cancellation rule of docs/equations.md. */
 static double csum(double a, double b) {
   double r = a + b;
   return fabs(r) <= 16 * DBL_EPSILON * (fabs(a) + fabs(b)) ? 0.0 : r;

@@ -1,8 +1,8 @@
-/* Numeric index of the equations linearised at the initial point (THEORY.md
- * section 5, Algorithm 4.1 of the reference, NUMERICS.md): regularity of the
- * pencil first, then the shuffle algorithm with rank decisions by SVD on
- * equilibrated matrices; eigenvalues of the linearised model for index 0
- * and 1. Dense: fine up to a few thousand unknowns. */
+/* Numeric index of the equations linearised at the initial point (Algorithm 4.1
+ * of the reference, docs/equations.md): regularity of the pencil first, then
+ * the shuffle algorithm with rank decisions by SVD on equilibrated matrices;
+ * eigenvalues of the linearised model for index 0 and 1. Dense: fine up to a
+ * few thousand unknowns. */
 #ifndef BG_INDEX_H
 #define BG_INDEX_H
 #include "eqsys.h"

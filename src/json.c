@@ -74,7 +74,7 @@ static void put_elements(bg_strbuf *o, const bg_model *m, const bg_analysis *a) 
     bg_sb_json_str(o, m->elem_name[e]);
     bg_sb_puts(o, ", \"kind\": ");
     bg_sb_json_str(o, bg_elem_kind_name(m->elem_kind[e]));
-    /* CLI.md's vocabulary is that of 1-ports; a junction-structure node has
+    /* docs/json.md's vocabulary is that of 1-ports; a junction-structure node has
      * no causality of its own (its bonds' strokes are in bonds[]): none */
     int c = a->elem_caus[e];
     bg_sb_puts(o, ", \"causality\": ");

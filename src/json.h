@@ -1,4 +1,4 @@
-/* The analysis JSON of CLI.md (format "bgdraw-analysis", version 1):
+/* The analysis JSON of docs/json.md (format "bgdraw-analysis", version 1):
  * every required key in the schema's order, 2-space indentation, one list
  * item per line, deterministic (same model and analysis, same bytes). */
 #ifndef BG_JSON_H

@@ -1,4 +1,4 @@
-/* Causal paths and causal loops of a causal bond graph (THEORY.md section 3),
+/* Causal paths and causal loops of a causal bond graph (docs/analysis.md),
  * and the entry point of the causal analysis that follows causality
  * assignment (paths, loops, signal flow graph, form, index, estimates). */
 #ifndef BG_PATHS_H

@@ -1,4 +1,4 @@
-/* The signal flow graph of a causal bond graph (THEORY.md section 4).
+/* The signal flow graph of a causal bond graph (docs/analysis.md).
  * Nodes are the bond signals (BG_SIG_EFFORT(b), BG_SIG_FLOW(b)) followed by
  * one node per user state (2*nbond + state id). Every constitutive relation
  * and junction equation, read with the causal strokes, gives edges from its

@@ -14,7 +14,7 @@
 #define SIM_DEFAULT_RTOL 1e-6
 #define SIM_DEFAULT_ATOL 1e-9
 #define SIM_DEFAULT_ROWS 500
-#define SIM_SPARSE_ABOVE 200   /* unknowns: KLU above, dense up to (NUMERICS.md) */
+#define SIM_SPARSE_ABOVE 200   /* unknowns: KLU above, dense up to (docs/simulation.md) */
 #define SIM_EIG_MAX 200        /* eigenvalues for the stiffness test up to this size */
 #define SIM_STIFF_RATIO 1e3
 #define SIM_MAX_STEPS 100000L  /* per output interval; SUNDIALS' 500 is far too few */

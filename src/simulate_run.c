@@ -322,7 +322,7 @@ static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
   bg_sb_printf(&sb, " (%s %s", ida ? "IDA" : "CVODE", fname ? fname : "?");
   if (R->sunmsg[0]) bg_sb_printf(&sb, ": %s", R->sunmsg);
   bg_sb_puts(&sb, ")");
-  free(fname); /* allocated by SUNDIALS (NUMERICS.md) */
+  free(fname); /* allocated by SUNDIALS */
   r->partial = 1;
   if (t > r->t_reached) r->t_reached = t;
   free(r->message);

@@ -1,5 +1,5 @@
 /* Solver failure flags in plain words: what each usually means for a bond
- * graph model and what to try. NUMERICS.md: IDA fails on index-2 and
+ * graph model and what to try (docs/simulation.md). IDA fails on index-2 and
  * singular systems with generic flags, so the words for those name the
  * likely structural causes as well as the numerical ones. */
 #include <cvode/cvode.h>

@@ -18,7 +18,7 @@
  * Numeric coefficients are combined exactly where IEEE arithmetic is exact
  * (products of +-1 and moduli); a sum of numbers whose magnitude is below
  * 16 eps times the sum of magnitudes is 0, so unity-gain cancellations are
- * exact zeros (NUMERICS.md).
+ * exact zeros (docs/equations.md).
  *
  * Ownership: a context owns its nodes; ids are valid until bg_sym_free.
  * The model is borrowed. Not thread-safe. Recursion follows expression

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
-"""Every "Must find" statement of EXAMPLES.md about causality, causal paths,
-causal loops, conflicts, gains, classes, topological loops, form, index,
-estimates and Lagrange coordinates, checked on the analysis JSON that
+"""What docs/examples.md says bgdraw finds in each example about causality,
+causal paths, causal loops, conflicts, gains, classes, topological loops,
+form, index, estimates and Lagrange coordinates, checked on the analysis JSON that
 `bgdraw MODEL -o FILE.json` writes. Lists are compared whole ("exactly");
 gains and estimates to 1e-12 relative.
 
 Usage: examples_analysis.py PATH_TO_BGDRAW   (from the project root)
 
-Differences from EXAMPLES.md (argued in docs/analysis.md, "Differences from
-EXAMPLES.md"): class12_paths has a third zero-order path, {1,2,6,7,10,4}
+Differences from the chapter's text (argued in docs/analysis.md, "Differences
+from the chapter"): class12_paths has a third zero-order path, {1,2,6,7,10,4}
 between C1 and C2 (Equation 4.31c).
 """
 import json

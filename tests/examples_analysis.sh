@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The "Must find" statements of EXAMPLES.md on the analysis JSON
+# What docs/examples.md says bgdraw finds in each example, on the analysis JSON
 # (tests/examples_analysis.py: whole lists, gains to 1e-12).
 # Usage: bash tests/examples_analysis.sh PATH_TO_BGDRAW   (from the project root)
 set -u

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Checks analysis JSON files against the schema of CLI.md ("Analysis JSON,
-version 1"): required keys (top level in the schema's order, and inside every
-list item), value types and vocabularies, references (bond numbers, element
-names, path ids) and a few consistency rules. Extra keys are allowed (CLI.md),
-but the ones bgdraw adds are checked too.
+"""Checks analysis JSON files against the schema of docs/json.md (format
+"bgdraw-analysis", version 1): required keys (top level in the schema's
+order, and inside every list item), value types and vocabularies,
+references (bond numbers, element names, path ids) and a few consistency
+rules. Extra keys are allowed (docs/json.md), but the ones bgdraw adds are
+checked too.
 
 Usage: json_schema.py FILE.json...   (exit 1 and one line per problem)
 """

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The analysis JSON of every example, with every causality method and the
-# variants EXAMPLES.md asks about, against CLI.md's schema
+# variants of docs/examples.md, against the schema of docs/json.md
 # (tests/json_schema.py: required keys, vocabularies, references); each run
 # twice, byte for byte the same.
 # Usage: bash tests/json_schema.sh PATH_TO_BGDRAW   (from the project root)

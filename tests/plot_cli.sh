@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The CLI's simulation plots end to end (CLI.md, docs/plots.md): `--plot
+# The CLI's simulation plots end to end (docs/cli.md, docs/plots.md): `--plot
 # FILE.svg|pdf|png` for every example with a simulate block that simulates,
 # well-formed SVG (xmllint), file signatures, byte-identical reruns, the
 # print style, a partial run (plot written, exit 3), a refused model (no

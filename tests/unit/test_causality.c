@@ -1,5 +1,5 @@
 /* Causality assignment: SCAP, relaxed, van Dijk, Lagrange on the reference
- * examples (EXAMPLES.md) and on small hand-made graphs. */
+ * examples (docs/examples.md) and on small hand-made graphs. */
 #include <stdlib.h>
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* States, form, predicted index, algebraic variables and estimates of the
- * reference examples (EXAMPLES.md), plus the incomplete case. */
+ * reference examples (docs/examples.md), plus the incomplete case. */
 #include "harness.h"
 
 #include "analysis_fixture.h"

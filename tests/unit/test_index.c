@@ -42,8 +42,8 @@ static void test_examples(void) {
   INT_EQ(index_of("bond_loop", NULL, -1, "n", 1, 1), 2);
 }
 
-/* The examples EXAMPLES.md gives no numeric index for: ODE forms 0, DAEs
- * from internal modulation or relaxed conflicts 1 (their predicted index). */
+/* The other examples (docs/examples.md): ODE forms 0, DAEs from internal
+ * modulation or relaxed conflicts 1 (their predicted index). */
 static void test_other_examples(void) {
   INT_EQ(index_of("internal_mod_tf", NULL, -1, NULL, 0, 1), 1);
   INT_EQ(index_of("internal_mod_r", NULL, -1, NULL, 0, 1), 1);

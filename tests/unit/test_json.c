@@ -1,4 +1,4 @@
-/* The analysis JSON (CLI.md): keys in the schema's order, values of a small
+/* The analysis JSON (docs/json.md): keys in the schema's order, values of a small
  * model, the generic writers of the lists other stages fill, determinism. */
 #include <stdlib.h>
 #include <string.h>
@@ -79,7 +79,7 @@ static void test_values(void) {
   OK(has(j, "{\"name\": \"L1\", \"kind\": \"I\", \"causality\": \"integral\""));
   OK(has(j, "{\"name\": \"C1\", \"kind\": \"C\", \"causality\": \"integral\""));
   OK(has(j, "{\"name\": \"U\", \"kind\": \"Se\", \"causality\": \"fixed\""));
-  /* junction-structure nodes have no causality of their own in CLI.md's vocabulary */
+  /* junction-structure nodes have no causality of their own in docs/json.md's vocabulary */
   OK(has(j, "{\"name\": \"j\", \"kind\": \"1\", \"causality\": \"none\", \"inverted\": false}"));
   OK(!has(j, "transfer"));
   OK(has(j, "{\"step\": 1, \"text\": \"Se U fixes bond 1 (stroke at j)\"}"));

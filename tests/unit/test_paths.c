@@ -1,5 +1,5 @@
 /* Causal paths and causal loops: a hand-built model, then the reference
- * examples (EXAMPLES.md), comparing whole lists. */
+ * examples (docs/examples.md), comparing whole lists. */
 #include "harness.h"
 
 #include "analysis_fixture.h"
@@ -111,7 +111,7 @@ static void test_slider_crank(void) {
   fx_free(&f);
 }
 
-/* The spec lists {1,2,3,4} and {5,2,6,7,8}; by the definition there is a
+/* The chapter names {1,2,3,4} and {5,2,6,7,8}; by the definition there is a
  * second C1-C2 path through the transformer, {1,2,6,7,10,4} (Equation
  * 4.31c: e4 = (n - 1)(e1 + e5) adds both routes). */
 static void test_class12(void) {

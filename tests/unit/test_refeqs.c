@@ -10,7 +10,7 @@
  * hold there. Tolerance 1e-10 relative to the magnitude of the terms.
  *
  * Variables of the reference mapped to the reconstructed models
- * (EXAMPLES.md): where the chapter measures a transformer's input flow the
+ * (docs/examples.md): where the chapter measures a transformer's input flow the
  * other way (bond_loop f3, loop_class1 f6), the test says so: f_ref = -f. */
 #include "harness.h"
 #include "eqs_fixture.h"

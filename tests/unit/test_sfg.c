@@ -1,5 +1,5 @@
 /* Signal flow graph: Johnson and Tarjan on hand-built graphs, then the
- * topological loops of the reference examples (EXAMPLES.md). */
+ * topological loops of the reference examples (docs/examples.md). */
 #include "harness.h"
 
 #include "analysis_fixture.h"
