@@ -10,19 +10,6 @@
 #include "diagram_int.h"
 
 /* ---------------------------------------------------------------- labels */
-static void put_escaped(bg_strbuf *b, const char *s, size_t n) {
-  for (size_t i = 0; i < n && s[i]; i++) {
-    switch (s[i]) {
-    case '&': bg_sb_puts(b, "&amp;"); break;
-    case '<': bg_sb_puts(b, "&lt;"); break;
-    case '>': bg_sb_puts(b, "&gt;"); break;
-    case '"': bg_sb_puts(b, "&quot;"); break;
-    default: bg_sb_putc(b, s[i]);
-    }
-  }
-}
-
-void bg_markup_escape(bg_strbuf *b, const char *s) { put_escaped(b, s, strlen(s)); }
 
 /* A name with its trailing digits (or the part after the last '_') set as a
  * subscript: a pango span, since <sub> mis-scales on scaled surfaces. */
@@ -33,10 +20,10 @@ static void put_name(bg_strbuf *b, const char *name, double font_size) {
   size_t base = k, sub = k;
   if (k == n || k == 0) base = sub = n;
   if (us && us > name && us[1]) base = (size_t)(us - name), sub = base + 1;
-  put_escaped(b, name, base);
+  bg_markup_escapen(b, name, base);
   if (sub < n) {
     bg_sb_printf(b, "<span size=\"70%%\" rise=\"%.1fpt\">", -0.27 * font_size);
-    put_escaped(b, name + sub, n - sub);
+    bg_markup_escapen(b, name + sub, n - sub);
     bg_sb_puts(b, "</span>");
   }
 }
@@ -45,10 +32,10 @@ static char *elem_markup(bg_diagram *d, int e) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};
   const char *kind = bg_elem_display_kind(m, e);
-  put_escaped(&b, kind, strlen(kind));
+  bg_markup_escapen(&b, kind, strlen(kind));
   if (!bg_elem_is_junction(m->elem_kind[e]) && (d->show & BG_SHOW_LABELS)) {
     bg_sb_puts(&b, " : ");
-    if (m->elem_label && m->elem_label[e]) put_escaped(&b, m->elem_label[e], strlen(m->elem_label[e]));
+    if (m->elem_label && m->elem_label[e]) bg_markup_escapen(&b, m->elem_label[e], strlen(m->elem_label[e]));
     else put_name(&b, m->elem_name[e], d->st.font_size);
   }
   char *s = bg_arena_strdup(&d->arena, bg_sb_str(&b));
@@ -280,7 +267,7 @@ static void draw_bond_label(bg_diagram *d, int b) {
   const bg_model *m = d->m;
   if (!m->bond_label || !m->bond_label[b]) return;
   bg_strbuf t = {0};
-  put_escaped(&t, m->bond_label[b], strlen(m->bond_label[b]));
+  bg_markup_escapen(&t, m->bond_label[b], strlen(m->bond_label[b]));
   char role[48];
   snprintf(role, sizeof role, "bondlabel bond=%d", m->bond_num[b]);
   text_beside(d, bg_sb_str(&t), b, bg_barb_side(d, b), d->st.font_size * d->st.number_scale,

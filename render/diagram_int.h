@@ -78,8 +78,6 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
 bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot);
 int bg_diagram_muted(const bg_diagram *d);
 
-/* Appends s with pango markup's special characters escaped (diagram.c). */
-void bg_markup_escape(bg_strbuf *b, const char *s);
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */
 void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size);

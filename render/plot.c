@@ -48,30 +48,18 @@ typedef struct plot {
 } plot;
 
 /* ---------------------------------------------------------------- text */
-static void put_escaped(bg_strbuf *b, const char *s, size_t n) {
-  for (size_t i = 0; i < n && s[i]; i++) {
-    switch (s[i]) {
-    case '&': bg_sb_puts(b, "&amp;"); break;
-    case '<': bg_sb_puts(b, "&lt;"); break;
-    case '>': bg_sb_puts(b, "&gt;"); break;
-    case '"': bg_sb_puts(b, "&quot;"); break;
-    case '\'': bg_sb_puts(b, "&apos;"); break;
-    default: bg_sb_putc(b, s[i]);
-    }
-  }
-}
 
 /* Markup for a legend text: escaped, cut at LEGEND_TEXT_MAX bytes (on a
  * character boundary) with an ellipsis. */
 static void legend_markup(bg_strbuf *b, const char *s) {
   size_t n = strlen(s);
   if (n <= LEGEND_TEXT_MAX) {
-    put_escaped(b, s, n);
+    bg_markup_escapen(b, s, n);
     return;
   }
   n = LEGEND_TEXT_MAX;
   while (n > 0 && ((unsigned char)s[n] & 0xC0) == 0x80) n--;
-  put_escaped(b, s, n);
+  bg_markup_escapen(b, s, n);
   bg_sb_puts(b, "\xe2\x80\xa6");
 }
 
@@ -197,7 +185,7 @@ static int legend_pass(plot *P, int k, int draw) {
   double x0 = P->left;
   if (*q->ylabel) {
     bg_strbuf b = {0};
-    put_escaped(&b, q->ylabel, strlen(q->ylabel));
+    bg_markup_escapen(&b, q->ylabel, strlen(q->ylabel));
     x0 = fmax(x0, MARGIN + text_width(P, P->fs_label, bg_sb_str(&b)) + 16);
     bg_sb_free(&b);
   }
@@ -408,7 +396,7 @@ static void draw_xticks(plot *P, const panel *q, int k, int labels) {
       break;
     }
   bg_strbuf b = {0};
-  put_escaped(&b, name, strlen(name));
+  bg_markup_escapen(&b, name, strlen(name));
   bg_sb_printf(&b, " [%ss]", P->x.exp3 == BG_PLOT_NO_PREFIX ? "" : bg_plot_si_prefix(P->x.exp3));
   text(P, bg_sb_str(&b), (P->left + P->right) / 2, bot + TICK_LEN + 2 + P->h_tick + 3,
        P->fs_label, 0.5, 0, "xlabel");
@@ -420,14 +408,14 @@ static void draw_header(plot *P, const panel *q, int k) {
   bg_strbuf b = {0};
   if (q->title) {
     bg_sb_puts(&b, "<b>");
-    put_escaped(&b, q->title, strlen(q->title));
+    bg_markup_escapen(&b, q->title, strlen(q->title));
     bg_sb_puts(&b, "</b>");
     snprintf(role, sizeof role, "title %d", k + 1);
     text(P, bg_sb_str(&b), (P->left + P->right) / 2, q->top, P->fs_title, 0.5, 0, role);
     bg_sb_clear(&b);
   }
   if (*q->ylabel) {
-    put_escaped(&b, q->ylabel, strlen(q->ylabel));
+    bg_markup_escapen(&b, q->ylabel, strlen(q->ylabel));
     snprintf(role, sizeof role, "ylabel %d", k + 1);
     text(P, bg_sb_str(&b), MARGIN, q->top + (q->title ? P->h_title : 0) + P->h_row / 2,
          P->fs_label, 0, 0.5, role);

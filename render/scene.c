@@ -169,3 +169,18 @@ int bg_scene_count(const bg_scene *s, const char *prefix) {
   }
   return count;
 }
+
+/* ---------------------------------------------------------------- markup */
+void bg_markup_escapen(bg_strbuf *b, const char *s, size_t n) {
+  for (size_t i = 0; i < n && s[i]; i++) {
+    switch (s[i]) {
+    case '&': bg_sb_puts(b, "&amp;"); break;
+    case '<': bg_sb_puts(b, "&lt;"); break;
+    case '>': bg_sb_puts(b, "&gt;"); break;
+    case '"': bg_sb_puts(b, "&quot;"); break;
+    default: bg_sb_putc(b, s[i]);
+    }
+  }
+}
+
+void bg_markup_escape(bg_strbuf *b, const char *s) { bg_markup_escapen(b, s, strlen(s)); }

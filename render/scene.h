@@ -86,4 +86,9 @@ int bg_scene_count(const bg_scene *s, const char *prefix);
  * and drawing use the same font settings: the logical size in points of
  * markup set in font at size points. */
 void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h);
+/* Appends the first n bytes of s (or s up to its end) with pango markup's
+ * special characters escaped; bg_markup_escape takes all of s. Every text
+ * item that shows user text (names, labels, titles, gains) goes through it. */
+void bg_markup_escapen(bg_strbuf *b, const char *s, size_t n);
+void bg_markup_escape(bg_strbuf *b, const char *s);
 #endif
