@@ -41,6 +41,14 @@ void *bg_xcalloc(size_t n, size_t size) {
   return p;
 }
 
+void bg_ivec_push(bg_ivec *x, int value) {
+  if (x->n == x->cap) {
+    x->cap = x->cap ? 2 * x->cap : 64;
+    x->v = bg_xrealloc(x->v, (size_t)x->cap * sizeof *x->v);
+  }
+  x->v[x->n++] = value;
+}
+
 static size_t round_up(size_t n) {
   size_t a = sizeof(max_align_t);
   return (n + a - 1) / a * a;

@@ -31,4 +31,11 @@ _Noreturn void bg_fatal(const char *file, int line, const char *fmt, ...);
 void *bg_xmalloc(size_t n);
 void *bg_xrealloc(void *p, size_t n);
 void *bg_xcalloc(size_t n, size_t size);
+
+/* A growable list of ints (v[0..n)); zero-initialise, push, free(v). */
+typedef struct bg_ivec {
+  int *v;
+  int n, cap;
+} bg_ivec;
+void bg_ivec_push(bg_ivec *x, int value);
 #endif

@@ -25,27 +25,14 @@ static int elem_inverted(const bg_model *m, int e, int caus) {
   return bg_elem_is_store(kind) && caus == BG_CAUS_DERIVATIVE;
 }
 
-/* Growable int list for building conflict records. */
-typedef struct ivec {
-  int *v, n, cap;
-} ivec;
-
-static void ivec_push(ivec *x, int value) {
-  if (x->n == x->cap) {
-    x->cap = x->cap ? 2 * x->cap : 16;
-    x->v = bg_xrealloc(x->v, x->cap * sizeof(int));
-  }
-  x->v[x->n++] = value;
-}
-
-static int *arena_ints(bg_arena *ar, const ivec *x) {
+static int *arena_ints(bg_arena *ar, const bg_ivec *x) {
   int *p = bg_arena_alloc(ar, (x->n ? x->n : 1) * sizeof(int));
   if (x->n) memcpy(p, x->v, x->n * sizeof(int));
   return p;
 }
 
 typedef struct conflicts {
-  ivec node, type, degree, adr, n, bonds;
+  bg_ivec node, type, degree, adr, n, bonds;
 } conflicts;
 
 /* One conflict at node e: type 2 lists the k+1 bonds that determine the
@@ -64,13 +51,13 @@ static void add_conflict(const bg_ceng *E, conflicts *c, int e) {
     type = E->nat[e] == 2 ? 2 : 1;
     degree = type == 2;
   }
-  ivec_push(&c->node, e);
-  ivec_push(&c->type, type);
-  ivec_push(&c->degree, degree);
-  ivec_push(&c->adr, c->bonds.n);
+  bg_ivec_push(&c->node, e);
+  bg_ivec_push(&c->type, type);
+  bg_ivec_push(&c->degree, degree);
+  bg_ivec_push(&c->adr, c->bonds.n);
   for (int i = 0; i < deg; i++)
-    if (strong_at < 0 || bg_ceng_at(E, bonds[i], e) == strong_at) ivec_push(&c->bonds, bonds[i]);
-  ivec_push(&c->n, c->bonds.n - c->adr.v[c->adr.n - 1]);
+    if (strong_at < 0 || bg_ceng_at(E, bonds[i], e) == strong_at) bg_ivec_push(&c->bonds, bonds[i]);
+  bg_ivec_push(&c->n, c->bonds.n - c->adr.v[c->adr.n - 1]);
 }
 
 int bg_ceng_count_conflicts(const bg_ceng *E) {

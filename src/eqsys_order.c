@@ -9,30 +9,21 @@
 #include "eqsys_int.h"
 #include "expr.h"
 
-typedef struct ivec { int *v; int n, cap; } ivec;
-static void iv_push(ivec *x, int val) {
-  if (x->n == x->cap) {
-    x->cap = x->cap ? 2 * x->cap : 64;
-    x->v = bg_xrealloc(x->v, (size_t)x->cap * sizeof *x->v);
-  }
-  x->v[x->n++] = val;
-}
-
 /* Signals read by a model expression (recursion bounded by the parser's
  * nesting limit). */
-static void x_sigs(const bg_model *m, int root, ivec *out) {
+static void x_sigs(const bg_model *m, int root, bg_ivec *out) {
   const bg_xnode *n = &m->xnode[root];
-  if (n->op == BG_X_EFFORT) iv_push(out, 2 * n->ref);
-  else if (n->op == BG_X_FLOW) iv_push(out, 2 * n->ref + 1);
+  if (n->op == BG_X_EFFORT) bg_ivec_push(out, 2 * n->ref);
+  else if (n->op == BG_X_FLOW) bg_ivec_push(out, 2 * n->ref + 1);
   else if (n->op == BG_X_INPUT) x_sigs(m, m->input_expr[n->ref], out);
   else
     for (int k = 0; k < n->nargs && n->op != BG_X_NUM; k++) x_sigs(m, n->arg[k], out);
 }
 
-static void eq_sigs(const bg_eqsys *s, int nd, ivec *out) {
+static void eq_sigs(const bg_eqsys *s, int nd, bg_ivec *out) {
   const eq_node *n = &s->node[nd];
   switch (n->kind) {
-  case EQ_SIG: iv_push(out, n->a); break;
+  case EQ_SIG: bg_ivec_push(out, n->a); break;
   case EQ_X: x_sigs(s->m, n->a, out); break;
   case EQ_LIN:
     for (int k = 0; k < n->b; k++) eq_sigs(s, s->lin_node[n->a + k], out);
@@ -44,7 +35,7 @@ static void eq_sigs(const bg_eqsys *s, int nd, ivec *out) {
 
 void bg_eqs_deps(bg_eqsys *s) {
   int ns = s->nsig;
-  ivec all = {0}, tmp = {0};
+  bg_ivec all = {0}, tmp = {0};
   int *mark = bg_xcalloc((size_t)ns + 1, sizeof(int));
   s->dep_adr = bg_arena_alloc(&s->arena, (size_t)(ns + 1) * sizeof(int));
   s->dep_n = bg_arena_alloc(&s->arena, (size_t)(ns + 1) * sizeof(int));
@@ -53,7 +44,7 @@ void bg_eqs_deps(bg_eqsys *s) {
     eq_sigs(s, s->sig_root[v], &tmp);
     s->dep_adr[v] = all.n;
     for (int k = 0; k < tmp.n; k++)
-      if (mark[tmp.v[k]] != v + 1) mark[tmp.v[k]] = v + 1, iv_push(&all, tmp.v[k]);
+      if (mark[tmp.v[k]] != v + 1) mark[tmp.v[k]] = v + 1, bg_ivec_push(&all, tmp.v[k]);
     s->dep_n[v] = all.n - s->dep_adr[v];
   }
   s->dep = bg_arena_alloc(&s->arena, (size_t)(all.n + 1) * sizeof(int));

@@ -37,16 +37,6 @@ static int other_end(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
 }
 
-/* ------------------------------------------------------------ growable ints */
-typedef struct ivec { int *v; int n, cap; } ivec;
-static void iv_push(ivec *x, int val) {
-  if (x->n == x->cap) {
-    x->cap = x->cap ? 2 * x->cap : 64;
-    x->v = bg_xrealloc(x->v, (size_t)x->cap * sizeof *x->v);
-  }
-  x->v[x->n++] = val;
-}
-
 /* ------------------------------------------------------------ adjacency
  * For each junction-structure node, its stroked bonds in file order, split
  * by orientation: list 1 = bonds whose effort the node receives. */
@@ -124,19 +114,19 @@ static int next_bond(search *s) {
 
 /* ------------------------------------------------------------ records */
 typedef struct recs {
-  ivec meta;  /* per record: end0, end1, adr, n */
-  ivec bonds;
+  bg_ivec meta;  /* per record: end0, end1, adr, n */
+  bg_ivec bonds;
   int nrec, omitted, cap;
 } recs;
 
 static void rec_add(recs *r, const search *s, int end0, int end1, int last) {
   if (r->nrec >= r->cap) { r->omitted++; return; }
-  iv_push(&r->meta, end0);
-  iv_push(&r->meta, end1);
-  iv_push(&r->meta, r->bonds.n);
-  iv_push(&r->meta, s->depth + 1);
-  for (int i = 0; i < s->depth; i++) iv_push(&r->bonds, s->st[i].bin);
-  iv_push(&r->bonds, last);
+  bg_ivec_push(&r->meta, end0);
+  bg_ivec_push(&r->meta, end1);
+  bg_ivec_push(&r->meta, r->bonds.n);
+  bg_ivec_push(&r->meta, s->depth + 1);
+  for (int i = 0; i < s->depth; i++) bg_ivec_push(&r->bonds, s->st[i].bin);
+  bg_ivec_push(&r->bonds, last);
   r->nrec++;
 }
 
