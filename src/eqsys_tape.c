@@ -170,19 +170,6 @@ static double csum(double a, double b) {
   return fabs(r) <= 16 * DBL_EPSILON * (fabs(a) + fabs(b)) ? 0.0 : r;
 }
 
-static double table_slope(const bg_model *m, int t, double x) {
-  const double *X = m->table_x + m->table_adr[t], *Y = m->table_y + m->table_adr[t];
-  int n = m->table_n[t];
-  if (n < 2 || x < X[0] || x >= X[n - 1]) return 0; /* clamped */
-  int lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    int mid = (lo + hi) / 2;
-    if (X[mid] <= x) lo = mid;
-    else hi = mid;
-  }
-  return X[hi] > X[lo] ? (Y[hi] - Y[lo]) / (X[hi] - X[lo]) : 0;
-}
-
 static double pow_der(double x, double y, double v, double dx, double dy) {
   double r = dx != 0 ? dx * (y == 0 ? 0 : y * pow(x, y - 1)) : 0;
   if (dy != 0) r = csum(r, dy * v * log(x));
@@ -238,7 +225,7 @@ static double ins_der(const bg_eqsys *s, const tinstr *I, const double *v, const
   case BG_X_DIV: return csum(d[0], d[1] == 0 ? 0 : -y * d[1]) / x[1];
   case BG_X_POW: return pow_der(x[0], x[1], y, d[0], d[1]);
   case BG_X_CALL: return call_der(I->ref, x, d, y);
-  case BG_X_TABLE: return table_slope(s->m, I->ref, x[0]) * d[0];
+  case BG_X_TABLE: return bg_table_slope(s->m, I->ref, x[0]) * d[0];
   default: return 0; /* comparisons and logic */
   }
 }

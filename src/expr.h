@@ -29,6 +29,9 @@ double bg_xop_apply(int op, double x, double y);
 double bg_func_apply(int fn, const double *args, int nargs);
 /* Table look-up: linear interpolation, clamped at the ends. */
 double bg_table_lookup(const bg_model *m, int table, double x);
+/* d table(x)/dx: the slope of the segment holding x (right-continuous at
+ * breakpoints), 0 where the table is clamped. */
+double bg_table_slope(const bg_model *m, int table, double x);
 /* Name and arity of a function; arity -1 if not a function name. */
 const char *bg_func_name(int fn);
 int bg_func_lookup(const char *name, int *min_args, int *max_args);

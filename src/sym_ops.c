@@ -676,19 +676,6 @@ int bg_sym_size(bg_sym *S, int a) {
 }
 
 /* ------------------------------------------------------------ evaluation */
-static double table_slope(const bg_model *m, int t, double x) {
-  const double *X = m->table_x + m->table_adr[t], *Y = m->table_y + m->table_adr[t];
-  int n = m->table_n[t];
-  if (n < 2 || x < X[0] || x >= X[n - 1]) return 0;
-  int lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    int mid = (lo + hi) / 2;
-    if (X[mid] <= x) lo = mid;
-    else hi = mid;
-  }
-  return X[hi] > X[lo] ? (Y[hi] - Y[lo]) / (X[hi] - X[lo]) : 0;
-}
-
 static double powe(double b, double e) { return e == 1 ? b : e == 2 ? b * b : pow(b, e); }
 
 static double eval_rec(bg_sym *S, int a, const bg_symenv *env, memo *M) {
@@ -736,7 +723,7 @@ static double eval_rec(bg_sym *S, int a, const bg_symenv *env, memo *M) {
     case SYM_POW: r = pow(v[0], v[1]); break;
     case SYM_CALL: r = bg_func_apply(x->ref, v, n); break;
     case SYM_TABLE: r = bg_table_lookup(m, x->ref, v[0]); break;
-    case SYM_DTABLE: r = table_slope(m, x->ref, v[0]); break;
+    case SYM_DTABLE: r = bg_table_slope(m, x->ref, v[0]); break;
     default: r = bg_xop_apply(x->ref, v[0], v[1]); break;
     }
   }

@@ -71,6 +71,16 @@ double bg_func_apply(int fn, const double *a, int nargs) {
   }
 }
 
+/* The segment [tx[lo], tx[lo + 1]] holding x, for tx[0] < x < tx[n - 1]. */
+static int table_segment(const double *tx, int n, double x) {
+  int lo = 0, hi = n - 1; /* tx[lo] < x < tx[hi] */
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (tx[mid] <= x) lo = mid; else hi = mid;
+  }
+  return lo;
+}
+
 double bg_table_lookup(const bg_model *m, int table, double x) {
   const double *tx = m->table_x + m->table_adr[table];
   const double *ty = m->table_y + m->table_adr[table];
@@ -78,13 +88,18 @@ double bg_table_lookup(const bg_model *m, int table, double x) {
   if (n == 0) return NAN;
   if (x <= tx[0]) return ty[0];
   if (x >= tx[n - 1]) return ty[n - 1];
-  int lo = 0, hi = n - 1; /* tx[lo] < x < tx[hi] */
-  while (hi - lo > 1) {
-    int mid = (lo + hi) / 2;
-    if (tx[mid] <= x) lo = mid; else hi = mid;
-  }
+  int lo = table_segment(tx, n, x), hi = lo + 1;
   double w = (x - tx[lo]) / (tx[hi] - tx[lo]);
   return ty[lo] + w * (ty[hi] - ty[lo]);
+}
+
+double bg_table_slope(const bg_model *m, int table, double x) {
+  const double *tx = m->table_x + m->table_adr[table];
+  const double *ty = m->table_y + m->table_adr[table];
+  int n = m->table_n[table];
+  if (n < 2 || x < tx[0] || x >= tx[n - 1]) return 0; /* clamped outside */
+  int lo = table_segment(tx, n, x), hi = lo + 1;
+  return tx[hi] > tx[lo] ? (ty[hi] - ty[lo]) / (tx[hi] - tx[lo]) : 0;
 }
 
 static double read_var(const double *v, int i) { return v ? v[i] : NAN; }
