@@ -202,6 +202,18 @@ static void parse_list(parser *p, bg_expr *e, bg_tkind close, bg_tkind sep2) {
             e->nrows, row, e->ncols);
 }
 
+/* Consumes the closing bracket `close` of the one opened by token `open`,
+ * or fails naming both; pair is the closing and the opening character. */
+static void expect_close(parser *p, bg_tkind close, const char *pair, const bg_token *open) {
+  if (!at(p, close)) {
+    char found[128];
+    describe(cur(p), found, sizeof found);
+    fail_at(p, cur(p), "expected '%c' to close '%c' at column %d, found %s", pair[0], pair[1],
+            open->loc.col, found);
+  }
+  next(p);
+}
+
 /* name_expr := NAME ['.' NAME | '(' [args] ')'] */
 static bg_expr *parse_name(parser *p) {
   const bg_token *t = next(p);
@@ -216,12 +228,7 @@ static bg_expr *parse_name(parser *p) {
     const bg_token *open = &p->toks.tok[p->pos - 1];
     e->kind = BG_EX_CALL;
     parse_list(p, e, BG_TK_RPAREN, BG_TK_EOF);
-    if (!at(p, BG_TK_RPAREN)) {
-      char found[128];
-      describe(cur(p), found, sizeof found);
-      fail_at(p, cur(p), "expected ')' to close '(' at column %d, found %s", open->loc.col, found);
-    }
-    next(p);
+    expect_close(p, BG_TK_RPAREN, ")(", open);
   }
   return finish(p, e, t->start);
 }
@@ -238,12 +245,7 @@ static bg_expr *parse_paren(parser *p) {
     push_arg(p, e, &buf, &cap, first);
     while (accept(p, BG_TK_COMMA)) push_arg(p, e, &buf, &cap, parse_expr(p));
   }
-  if (!at(p, BG_TK_RPAREN)) {
-    char found[128];
-    describe(cur(p), found, sizeof found);
-    fail_at(p, cur(p), "expected ')' to close '(' at column %d, found %s", open->loc.col, found);
-  }
-  next(p);
+  expect_close(p, BG_TK_RPAREN, ")(", open);
   if (e == first) return e; /* keeps the inner span; parentheses carry no meaning */
   return finish(p, e, open->start);
 }
@@ -253,12 +255,7 @@ static bg_expr *parse_matrix(parser *p) {
   const bg_token *open = next(p);
   bg_expr *e = new_expr(p, BG_EX_MATRIX, open);
   parse_list(p, e, BG_TK_RBRACK, BG_TK_SEMI);
-  if (!at(p, BG_TK_RBRACK)) {
-    char found[128];
-    describe(cur(p), found, sizeof found);
-    fail_at(p, cur(p), "expected ']' to close '[' at column %d, found %s", open->loc.col, found);
-  }
-  next(p);
+  expect_close(p, BG_TK_RBRACK, "][", open);
   return finish(p, e, open->start);
 }
 
