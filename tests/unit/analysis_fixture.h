@@ -42,16 +42,8 @@ static int fx_load(fx *f, const char *name, int method, const char *set_name, do
   f->src = bg_read_file(path, &len);
   if (!f->src) { fprintf(stderr, "cannot read %s\n", path); return -1; }
   if (from) {
-    char *p = strstr(f->src, from);
-    if (!p) { fprintf(stderr, "%s: no '%s'\n", name, from); return -1; }
-    size_t nf = strlen(from), nt = strlen(to);
-    char *s = bg_xmalloc(len - nf + nt + 1);
-    memcpy(s, f->src, (size_t)(p - f->src));
-    memcpy(s + (p - f->src), to, nt);
-    strcpy(s + (p - f->src) + nt, p + nf);
-    free(f->src);
-    f->src = s;
-    len = strlen(s);
+    if (bg_t_replace(&f->src, from, to)) return -1;
+    len = strlen(f->src);
   }
   bg_diags_init(&f->dg, path, f->src, len);
   bg_ast *ast = bg_parse_string(path, f->src, len, &f->dg);

@@ -4,6 +4,7 @@
 #define BG_TEST_HARNESS_H
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int bg_t_pass, bg_t_fail;
@@ -38,6 +39,22 @@ static int bg_t_pass, bg_t_fail;
     BG_T_REPORT(fabs(a_ - b_) <= (tol), "%s ~ %s (%.17g vs %.17g, tol %g)",    \
                 #a, #b, a_, b_, (double)(tol));                                \
   } while (0)
+
+/* Replaces the first `from` in the malloc'd text *src by `to` (model
+ * variants); -1 with a message when `from` is not there. */
+static inline int bg_t_replace(char **src, const char *from, const char *to) {
+  char *p = strstr(*src, from);
+  if (!p) { fprintf(stderr, "no '%s' in the model\n", from); return -1; }
+  size_t nf = strlen(from), nt = strlen(to), len = strlen(*src), at = (size_t)(p - *src);
+  char *s = malloc(len - nf + nt + 1);
+  if (!s) return -1;
+  memcpy(s, *src, at);
+  memcpy(s + at, to, nt);
+  strcpy(s + at + nt, p + nf);
+  free(*src);
+  *src = s;
+  return 0;
+}
 
 static inline int bg_t_done(void) {
   printf("%d passed, %d failed\n", bg_t_pass, bg_t_fail);

@@ -31,18 +31,7 @@ typedef struct fx {
 } fx;
 
 /* Replaces the first `from` in f->src by `to` (model variants). */
-static int fx_edit(fx *f, const char *from, const char *to) {
-  char *p = strstr(f->src, from);
-  if (!p) { fprintf(stderr, "no '%s' in the model\n", from); return -1; }
-  size_t nf = strlen(from), nt = strlen(to), len = strlen(f->src);
-  char *s = bg_xmalloc(len - nf + nt + 1);
-  memcpy(s, f->src, (size_t)(p - f->src));
-  memcpy(s + (p - f->src), to, nt);
-  strcpy(s + (p - f->src) + nt, p + nf);
-  free(f->src);
-  f->src = s;
-  return 0;
-}
+static int fx_edit(fx *f, const char *from, const char *to) { return bg_t_replace(&f->src, from, to); }
 
 /* Parses f->src, compiles with an optional --set, assigns causality,
  * analyses, builds the equations (which may fail: s NULL) and simulates. */
