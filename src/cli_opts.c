@@ -131,6 +131,11 @@ static int validate(bg_cli_opts *o) {
                          o->out[i].path, buf);
     }
   }
+  static const char *const plot_formats[] = {"svg", "pdf", "png", NULL};
+  if (o->plot && !in_list(bg_path_ext(o->plot), plot_formats))
+    return usage_error("--plot writes svg, pdf or png, not '%s'%s", o->plot, "");
+  if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
+    return usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report, "");
   if (!o->model_path && !o->help && !o->version)
     return usage_error("no model file given%s%s", "", "");
   return 0;

@@ -119,9 +119,7 @@ static int write_one(run *r, const bg_cli_output *out) {
   if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
   if (!strcmp(out->format, "c")) return cli_write_equations(r, out->path, "c");
   if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
-  fprintf(stderr, "bgdraw: error: %s output is not implemented yet ('%s')\n", out->format,
-          out->path);
-  return EXIT_WRITE;
+  BG_FATAL("option parsing let through output format '%s'", out->format);
 }
 
 int cli_write_outputs(run *r) {
@@ -133,13 +131,9 @@ int cli_write_outputs(run *r) {
 }
 
 /* --plot FILE: the simulation plots, also of a partial run; none when the
- * run was refused (no rows). An unknown extension is a usage error. */
+ * run was refused (no rows). The extension was checked with the options. */
 int cli_write_plot(run *r) {
-  const char *path = r->opts.plot, *ext = bg_path_ext(path);
-  if (strcmp(ext, "svg") && strcmp(ext, "pdf") && strcmp(ext, "png")) {
-    fprintf(stderr, "bgdraw: error: --plot writes svg, pdf or png, not '%s'\n", path);
-    return EXIT_USAGE;
-  }
+  const char *path = r->opts.plot;
   if (!r->simulated || !r->sim.nrows) return EXIT_OK;
   bg_diags dg;
   bg_diags_init(&dg, "bgdraw", NULL, 0);

@@ -176,11 +176,6 @@ int main(int argc, char **argv) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
   }
-  if (r.opts.report && strcmp(bg_path_ext(r.opts.report), "pdf")) {
-    fprintf(stderr, "bgdraw: error: --report writes a PDF: give a .pdf file, not '%s'\n", r.opts.report);
-    bg_cli_free(&r.opts);
-    return EXIT_USAGE;
-  }
   int rc = load_model(&r);
   if (!r.opts.quiet || rc) bg_diags_print(&r.dg, stderr);
   if (rc) {

@@ -99,6 +99,9 @@ grep -q 'simulation refused' "$tmp/err"; check "refused run says why" $?
 check "unknown plot extension exits 2 (got $st)" $((st != 2))
 grep -q 'svg, pdf or png' "$tmp/err"; check "unknown plot extension: message" $?
 [ ! -e "$tmp/rlc.gif" ]; check "unknown plot extension: nothing written" $?
+# a usage error is found before any work: the diagram asked beside it is not written
+"$BGDRAW" examples/rlc.bg -o "$tmp/beside.svg" --plot "$tmp/rlc.gif" 2>/dev/null; st=$?
+[ "$st" = 2 ] && [ ! -e "$tmp/beside.svg" ]; check "unknown plot extension: no other output either" $?
 
 # an unwritable file: exit 4, no temporary left behind
 "$BGDRAW" examples/rlc.bg --plot "$tmp/no/such/dir/p.svg" 2>"$tmp/err"; st=$?
