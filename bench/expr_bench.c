@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "expr.h"
+#include "model/expr.h"
 
 static bg_model *model_new(int nstate, int cap) {
   bg_model *m = calloc(1, sizeof *m);

@@ -12,7 +12,7 @@ mkdir -p "$out"
 # Only what the evaluators need, so the benchmark does not depend on the rest
 # of the engine (or on a configured CMake build of a particular type).
 $cc -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra $cflags -I"$root/src" \
-  "$root/bench/expr_bench.c" "$root/src/xeval.c" "$root/src/prog.c" "$root/src/arena.c" \
+  "$root/bench/expr_bench.c" "$root/src/model/xeval.c" "$root/src/model/prog.c" "$root/src/base/arena.c" \
   -lm -o "$out/expr_bench"
 echo "# $($cc --version | head -n 1); CFLAGS=$cflags"
 [ $# -gt 0 ] || set -- 100 1000 10000

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "causality.h"
-#include "parse.h"
-#include "paths.h"
-#include "render.h"
+#include "causality/causality.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
+#include "diagram/render.h"
 
 static double now(void) {
   struct timespec t;

@@ -7,11 +7,11 @@
  * analysis. The per-bond/per-element arrays causality needs are allocated
  * here so the test does not depend on where bg_analysis_init lives. */
 #include <stdlib.h>
-#include "causality.h"
-#include "expr.h"
-#include "parse.h"
-#include "paths.h"
-#include "sfg.h"
+#include "causality/causality.h"
+#include "model/expr.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
+#include "analysis/sfg.h"
 
 typedef struct fx {
   bg_model *m;

@@ -5,10 +5,10 @@
 #include <lapacke.h>
 #include <stdlib.h>
 #include <string.h>
-#include "causality.h"
-#include "eqsys.h"
-#include "parse.h"
-#include "paths.h"
+#include "causality/causality.h"
+#include "equations/eqsys.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
 
 typedef struct efx {
   bg_model *m;

@@ -3,10 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "causality.h"
+#include "causality/causality.h"
 #include "harness.h"
-#include "parse.h"
-#include "strbuf.h"
+#include "lang/parse.h"
+#include "base/strbuf.h"
 
 /* ---------------------------------------------------------------- loading */
 static bg_model *load_src(const char *path, const char *src) {

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "eqprint.h"
+#include "equations/eqprint.h"
 
 static void test_text(void) {
   efx f;

@@ -2,7 +2,7 @@
  * and the eigenvalues of rlc against the roots of L C s^2 + R C s + 1. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "index.h"
+#include "equations/index.h"
 
 static int index_of(const char *name, const char *text, int method, const char *set, double val,
                     int print) {

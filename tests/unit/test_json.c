@@ -3,10 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "causality.h"
+#include "causality/causality.h"
 #include "harness.h"
-#include "json.h"
-#include "parse.h"
+#include "json/json.h"
+#include "lang/parse.h"
 
 static bg_model *load_example(const char *name) {
   char path[512];

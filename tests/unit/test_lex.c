@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
-#include "lex.h"
+#include "lang/lex.h"
 
 typedef struct lexed {
   bg_arena arena;

@@ -2,10 +2,10 @@
  * through bg_model_compile + bg_xeval), functions, tables, error recovery. */
 #include <stdlib.h>
 
-#include "expr.h"
+#include "model/expr.h"
 #include "harness.h"
-#include "model.h"
-#include "parse.h"
+#include "model/model.h"
+#include "lang/parse.h"
 
 #define PI 3.14159265358979323846
 

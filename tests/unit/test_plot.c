@@ -7,15 +7,15 @@
 
 #include <stdlib.h>
 
-#include "causality.h"
-#include "eqsys.h"
-#include "fileio.h"
-#include "parse.h"
-#include "paths.h"
-#include "plot.h"
-#include "plot_int.h"
-#include "render.h"
-#include "simulate.h"
+#include "causality/causality.h"
+#include "equations/eqsys.h"
+#include "base/fileio.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
+#include "plot/plot.h"
+#include "plot/plot_int.h"
+#include "diagram/render.h"
+#include "simulate/simulate.h"
 
 /* ---------------------------------------------------------------- fixture */
 typedef struct fx {

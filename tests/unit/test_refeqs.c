@@ -14,8 +14,8 @@
  * other way (bond_loop f3, loop_class1 f6), the test says so: f_ref = -f. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "eqprint.h"
-#include "eqsym.h"
+#include "equations/eqprint.h"
+#include "equations/eqsym.h"
 
 #define NB 32
 typedef struct pt {

@@ -6,12 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "causality.h"
+#include "causality/causality.h"
 #include "harness.h"
-#include "paths.h"
-#include "parse.h"
-#include "render.h"
-#include "style.h"
+#include "analysis/paths.h"
+#include "lang/parse.h"
+#include "diagram/render.h"
+#include "scene/style.h"
 
 /* ---------------------------------------------------------------- a hand-built model */
 static void model_alloc(bg_model *m) {

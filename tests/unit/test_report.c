@@ -1,4 +1,4 @@
-/* The report's machinery (render/report_int.h): markup pieces, greedy line
+/* The report's machinery (render/report/report_int.h): markup pieces, greedy line
  * breaking, equations as markup, table column widths and page breaks, two
  * balanced columns, headings and pages of a document; then whole reports
  * written through bg_report_write (PDF bytes, outlines, unwritable path). */
@@ -9,9 +9,9 @@
 
 #include "harness.h" /* first: <math.h> for eqs_fixture.h */
 #include "eqs_fixture.h"
-#include "fileio.h"
-#include "index.h"
-#include "report_int.h"
+#include "base/fileio.h"
+#include "equations/index.h"
+#include "report/report_int.h"
 
 static void test_words(void) {
   rp_words w;

@@ -8,11 +8,11 @@
 
 #include <stdlib.h>
 
-#include "causality.h"
-#include "eqsys.h"
-#include "fileio.h"
-#include "parse.h"
-#include "paths.h"
+#include "causality/causality.h"
+#include "equations/eqsys.h"
+#include "base/fileio.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
 
 static long nalloc;
 static int counting;

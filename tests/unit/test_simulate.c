@@ -12,13 +12,13 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include "causality.h"
-#include "eqsys.h"
-#include "expr.h"
-#include "fileio.h"
-#include "parse.h"
-#include "paths.h"
-#include "simulate.h"
+#include "causality/causality.h"
+#include "equations/eqsys.h"
+#include "model/expr.h"
+#include "base/fileio.h"
+#include "lang/parse.h"
+#include "analysis/paths.h"
+#include "simulate/simulate.h"
 
 typedef struct fx {
   bg_model *m;

@@ -9,11 +9,11 @@
  * - which examples reduce to an ODE, and the printed reduced equations. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "eqprint.h"
-#include "eqsym.h"
-#include "expr.h"
-#include "eqsys_int.h" /* row kinds */
-#include "sym.h"
+#include "equations/eqprint.h"
+#include "equations/eqsym.h"
+#include "model/expr.h"
+#include "equations/eqsys_int.h" /* row kinds */
+#include "sym/sym.h"
 
 static const char *src_small =
     "model small\nparam n = 2, R = 3, C0 = 0.5, k = 1.5\ninput u = 0.2*step(t)\n"

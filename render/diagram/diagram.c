@@ -1,0 +1,573 @@
+/* Model + analysis → scene: labels measured with pango, positions from
+ * Graphviz, then bonds with half arrows, causal strokes, bond numbers,
+ * modulating signals, Lagrange sources and the analysis layers. */
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+/* ---------------------------------------------------------------- labels */
+
+/* A name with its trailing digits (or the part after the last '_') set as a
+ * subscript: a pango span, since <sub> mis-scales on scaled surfaces. */
+static void put_name(bg_strbuf *b, const char *name, double font_size) {
+  size_t n = strlen(name), k = n;
+  while (k > 0 && isdigit((unsigned char)name[k - 1])) k--;
+  const char *us = strrchr(name, '_');
+  size_t base = k, sub = k;
+  if (k == n || k == 0) base = sub = n;
+  if (us && us > name && us[1]) base = (size_t)(us - name), sub = base + 1;
+  bg_markup_escapen(b, name, base);
+  if (sub < n) {
+    bg_sb_printf(b, "<span size=\"70%%\" rise=\"%.1fpt\">", -0.27 * font_size);
+    bg_markup_escapen(b, name + sub, n - sub);
+    bg_sb_puts(b, "</span>");
+  }
+}
+
+static char *elem_markup(bg_diagram *d, int e) {
+  const bg_model *m = d->m;
+  bg_strbuf b = {0};
+  const char *kind = bg_elem_display_kind(m, e);
+  bg_markup_escapen(&b, kind, strlen(kind));
+  if (!bg_elem_is_junction(m->elem_kind[e]) && (d->show & BG_SHOW_LABELS)) {
+    bg_sb_puts(&b, " : ");
+    if (m->elem_label && m->elem_label[e]) bg_markup_escapen(&b, m->elem_label[e], strlen(m->elem_label[e]));
+    else put_name(&b, m->elem_name[e], d->st.font_size);
+  }
+  char *s = bg_arena_strdup(&d->arena, bg_sb_str(&b));
+  bg_sb_free(&b);
+  return s;
+}
+
+/* "∫ : phi": the integrator of a user state. */
+static char *state_markup(bg_diagram *d, int s) {
+  bg_strbuf b = {0};
+  bg_sb_puts(&b, "\u222b : ");
+  put_name(&b, d->m->state_name[s], d->st.font_size);
+  char *r = bg_arena_strdup(&d->arena, bg_sb_str(&b));
+  bg_sb_free(&b);
+  return r;
+}
+
+static void measure_nodes(bg_diagram *d) {
+  const bg_model *m = d->m;
+  for (int i = 0; i < d->nnode; i++) d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
+  for (int s = 0; s < m->nstate; s++)
+    if (d->state_node[s] >= 0) d->nlabel[d->state_node[s]] = state_markup(d, s);
+  for (int i = 0; i < d->nnode; i++) {
+    double w, h;
+    bg_text_measure(d->st.font, d->st.font_size, d->nlabel[i], &w, &h);
+    /* pango's logical height includes the line gap: trim it so vertical
+     * bonds come as close to the glyphs as horizontal ones */
+    d->nw[i] = w + 2 * d->st.node_pad;
+    d->nh[i] = 0.8 * h + 2 * d->st.node_pad;
+  }
+}
+
+/* ---------------------------------------------------------------- layout */
+static const char *choose_engine(const bg_diagram *d) {
+  const bg_model *m = d->m;
+  if (d->o.layout) return d->o.layout;
+  const char *e = m->layout.engine ? m->layout.engine : "dot";
+  if (!strcmp(e, "dot") && d->nnode > 2000) {
+    /* dot needs ~8 s at 10 000 nodes, sfdp ~2.5 s (docs/drawing.md) */
+    if (d->o.verbose)
+      fprintf(stderr, "bgdraw: %d nodes: laying out with sfdp instead of dot\n", d->nnode);
+    return "sfdp";
+  }
+  return e;
+}
+
+/* Layout edges: the bonds, Sf* → junction for Lagrange sources, and for a
+ * drawn user state its inputs → integrator → modulated elements. Returns
+ * the count; *tail and *head are allocated. */
+static int layout_edges(const bg_diagram *d, int **tail, int **head) {
+  const bg_model *m = d->m;
+  int cap = m->nbond + d->nnode + m->nsignal + 1, n = 0;
+  for (int s = 0; s < m->nstate; s++) cap += d->state_node[s] >= 0 ? 64 : 0;
+  int *t = bg_xcalloc((size_t)cap, sizeof *t), *h = bg_xcalloc((size_t)cap, sizeof *h);
+  for (int b = 0; b < m->nbond; b++) t[n] = m->bond_tail[b], h[n++] = m->bond_head[b];
+  for (int i = 0; d->a && i < d->a->nlag; i++)
+    if (d->lag_node[i] >= 0) t[n] = d->lag_node[i], h[n++] = d->a->lag_junction[i];
+  for (int s = 0; s < m->nstate; s++) {
+    if (d->state_node[s] < 0) continue;
+    int in[64], nin = bg_state_inputs(m, s, in, 64);
+    for (int k = 0; k < nin; k++) t[n] = in[k], h[n++] = d->state_node[s];
+  }
+  for (int i = 0; i < m->nsignal; i++) {
+    int s = bg_signal_state(m, i);
+    if (s >= 0 && d->state_node[s] >= 0) t[n] = d->state_node[s], h[n++] = m->signal_to[i];
+  }
+  *tail = t, *head = h;
+  return n;
+}
+
+static int run_layout(bg_diagram *d, bg_diags *dg) {
+  const bg_model *m = d->m;
+  int *tail, *head, ne = layout_edges(d, &tail, &head);
+  int *pinned = bg_xcalloc((size_t)d->nnode, sizeof *pinned);
+  unsigned char *root = bg_xcalloc((size_t)d->nnode, 1);
+  double *px = bg_xcalloc((size_t)d->nnode, sizeof *px), *py = bg_xcalloc((size_t)d->nnode, sizeof *py);
+  for (int e = 0; e < m->nelem; e++) {
+    if (m->elem_has_at && m->elem_has_at[e]) pinned[e] = 1, px[e] = m->elem_at_x[e], py[e] = m->elem_at_y[e];
+    root[e] = bg_elem_is_source(m->elem_kind[e]);
+  }
+  /* the junction structure (bonds between junctions and two-ports) straight,
+   * the one-ports hanging off it */
+  int *weight = bg_xcalloc((size_t)ne + 1, sizeof *weight);
+  for (int i = 0; i < ne; i++) {
+    int t = tail[i], h = head[i];
+    weight[i] = i < m->nbond && !bg_elem_is_oneport(m->elem_kind[t]) &&
+                        !bg_elem_is_oneport(m->elem_kind[h]) ? 4 : 1;
+  }
+  bg_layout_in in = {d->nnode, d->nw, d->nh, pinned, px, py, ne, tail, head,
+                     choose_engine(d), m->layout.rankdir, d->st.node_sep, d->st.rank_sep,
+                     d->st.splines, root, weight};
+  char err[256];
+  int rc = bg_layout_run(&in, &d->lay, err, sizeof err);
+  if (rc) bg_diag_error(dg, (bg_srcloc){0, 0}, "%s", err);
+  free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
+  if (rc) return -1;
+  d->nx = d->lay.x, d->ny = d->lay.y;
+  d->splx = d->lay.splx, d->sply = d->lay.sply;
+  return 0;
+}
+
+/* ---------------------------------------------------------------- colours */
+int bg_diagram_muted(const bg_diagram *d) { return d->o.highlight_kind != 0; }
+
+bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot) {
+  return hot || !bg_diagram_muted(d) ? c : d->st.muted;
+}
+
+static bg_rgba parse_hex(const char *s, bg_rgba dflt) {
+  unsigned v;
+  if (!s || s[0] != '#' || strlen(s) != 7 || sscanf(s + 1, "%6x", &v) != 1) return dflt;
+  return (bg_rgba){((v >> 16) & 255) / 255.0, ((v >> 8) & 255) / 255.0, (v & 255) / 255.0, 1};
+}
+
+/* ---------------------------------------------------------------- bonds */
+static void draw_bond(bg_diagram *d, int b) {
+  const bg_model *m = d->m;
+  const bg_style *st = &d->st;
+  bg_rgba c = parse_hex(m->bond_color ? m->bond_color[b] : NULL, st->fg);
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "bond %d", m->bond_num[b]);
+  it->color = bg_diagram_ink(d, c, d->hot_bond[b]);
+  it->width = st->line_width;
+  it->round = 1;
+  bg_geom_bond_path(d, b);
+  /* the half arrow: one barb, 45 degrees back from the tip */
+  const bg_bond_geom *g = &d->bg[b];
+  double len = 7 * st->line_width;
+  bg_vec barb = bg_vadd(g->head, bg_vscale(bg_vsub(bg_barb_side(d, b), g->hdir), len * BG_SQRT1_2));
+  bg_scene_line(&d->scene, barb.x, barb.y);
+}
+
+static int derivative_bond(const bg_diagram *d, int b) {
+  const bg_model *m = d->m;
+  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_store(m->elem_kind[ends[k]]) && d->a->elem_caus[ends[k]] == BG_CAUS_DERIVATIVE)
+      return 1;
+  return 0;
+}
+
+static void stroke_bar(bg_diagram *d, bg_vec e, bg_vec n, double half) {
+  bg_scene_move(&d->scene, e.x + n.x * half, e.y + n.y * half);
+  bg_scene_line(&d->scene, e.x - n.x * half, e.y - n.y * half);
+}
+
+static void draw_stroke(bg_diagram *d, int b) {
+  const bg_style *st = &d->st;
+  const bg_bond_geom *g = &d->bg[b];
+  int at_head = d->a->bond_stroke[b] == BG_STROKE_HEAD;
+  int conflict = d->a->bond_conflict && d->a->bond_conflict[b];
+  int deriv = derivative_bond(d, b);
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "stroke bond=%d%s%s",
+                                     d->m->bond_num[b], deriv ? " derivative" : "",
+                                     conflict ? " conflict" : "");
+  bg_rgba c = conflict ? st->conflict : deriv ? st->derivative : st->fg;
+  it->color = bg_diagram_ink(d, c, d->hot_bond[b]);
+  it->width = 1.5 * st->line_width;
+  bg_vec e = at_head ? g->head : g->tail, dir = at_head ? g->hdir : g->tdir;
+  bg_vec n = bg_vleft(dir), back = at_head ? bg_vscale(dir, -1) : dir;
+  double half = 4.5 * st->line_width;
+  stroke_bar(d, e, n, half);
+  if (deriv && st->derivative_double) stroke_bar(d, bg_vadd(e, bg_vscale(back, 2.5 * st->line_width)), n, half);
+  if (conflict && st->conflict_cross) {
+    bg_vec c1 = bg_vadd(e, bg_vscale(back, 5 * st->line_width));
+    stroke_bar(d, c1, bg_vunit(bg_vadd(n, dir)), half * 0.7);
+    stroke_bar(d, c1, bg_vunit(bg_vsub(n, dir)), half * 0.7);
+  }
+}
+
+/* A point on bond b a fraction t of the way (the middle from the geometry,
+ * elsewhere on the chord). */
+static bg_vec along_bond(const bg_diagram *d, int b, double t) {
+  const bg_bond_geom *g = &d->bg[b];
+  if (t == 0.5) return g->mid;
+  return bg_vadd(g->tail, bg_vscale(bg_vsub(g->head, g->tail), t));
+}
+
+/* Places text beside bond b on the side n, 3.5 pt clear of the line: at the
+ * middle if that is free, else a little along the bond or further out. */
+static void text_beside(bg_diagram *d, const char *markup, int b, bg_vec n, double size,
+                        bg_rgba c, const char *role) {
+  static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
+  enum { NT = sizeof ts / sizeof ts[0] };
+  double w, h;
+  bg_text_measure(d->st.font, size, markup, &w, &h);
+  h *= 0.8;
+  double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2;
+  bg_vec cand[2 * NT];
+  for (int j = 0; j < 2; j++)
+    for (int k = 0; k < NT; k++)
+      cand[j * NT + k] = bg_vadd(along_bond(d, b, ts[k]), bg_vscale(n, 3.5 + extent + 4 * j));
+  bg_vec p = cand[bg_place_best(d, cand, 2 * NT, w + 1, h)];
+  if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind)
+    bg_text_halo(d, markup, p, size);
+  bg_scene_text(&d->scene, markup, p.x, p.y, size, 0.5, 0.5, c, role);
+}
+
+/* "e₃": a bond variable with its bond number as a subscript. */
+static void var_markup(bg_strbuf *t, char v, int num, double size) {
+  bg_sb_printf(t, "%c<span size=\"70%%\" rise=\"%.1fpt\">%d</span>", v, -0.27 * size, num);
+}
+
+static void draw_number(bg_diagram *d, int b) {
+  const bg_model *m = d->m;
+  double size = d->st.font_size * d->st.number_scale;
+  bg_rgba ink = bg_diagram_ink(d, d->st.fg, d->hot_bond[b]);
+  bg_vec barb = bg_barb_side(d, b);
+  char role[48];
+  if (d->show & BG_SHOW_VARIABLES) {
+    /* effort on the barb side, flow opposite (docs/drawing.md) */
+    bg_strbuf t = {0};
+    var_markup(&t, 'f', m->bond_num[b], size);
+    snprintf(role, sizeof role, "variable bond=%d f", m->bond_num[b]);
+    text_beside(d, bg_sb_str(&t), b, bg_vscale(barb, -1), size, ink, role);
+    bg_sb_clear(&t);
+    var_markup(&t, 'e', m->bond_num[b], size);
+    snprintf(role, sizeof role, "variable bond=%d e", m->bond_num[b]);
+    text_beside(d, bg_sb_str(&t), b, barb, size, ink, role);
+    bg_sb_free(&t);
+    return;
+  }
+  char num[32];
+  snprintf(num, sizeof num, "%d", m->bond_num[b]);
+  snprintf(role, sizeof role, "number bond=%d", m->bond_num[b]);
+  text_beside(d, num, b, bg_vscale(barb, -1), size, ink, role);
+}
+
+static void draw_bond_label(bg_diagram *d, int b) {
+  const bg_model *m = d->m;
+  if (!m->bond_label || !m->bond_label[b]) return;
+  bg_strbuf t = {0};
+  bg_markup_escapen(&t, m->bond_label[b], strlen(m->bond_label[b]));
+  char role[48];
+  snprintf(role, sizeof role, "bondlabel bond=%d", m->bond_num[b]);
+  text_beside(d, bg_sb_str(&t), b, bg_barb_side(d, b), d->st.font_size * d->st.number_scale,
+              bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
+  bg_sb_free(&t);
+}
+
+static void draw_bonds(bg_diagram *d) {
+  const bg_model *m = d->m;
+  for (int b = 0; b < m->nbond; b++) {
+    draw_bond(d, b);
+    bg_obstacle_item(d, d->scene.nitem - 1);
+  }
+  if (d->a && (d->show & BG_SHOW_STROKES))
+    for (int b = 0; b < m->nbond; b++)
+      if (d->a->bond_stroke[b] != BG_STROKE_NONE) draw_stroke(d, b);
+}
+
+static void draw_numbers(bg_diagram *d) {
+  const bg_model *m = d->m;
+  for (int b = 0; b < m->nbond; b++) {
+    if (d->show & (BG_SHOW_NUMBERS | BG_SHOW_VARIABLES)) draw_number(d, b);
+    if (d->show & BG_SHOW_LABELS) draw_bond_label(d, b);
+  }
+}
+
+/* ---------------------------------------------------------------- nodes */
+static void draw_nodes(bg_diagram *d) {
+  const bg_model *m = d->m;
+  for (int e = 0; e < m->nelem; e++) {
+    bg_rgba c = parse_hex(m->elem_color ? m->elem_color[e] : NULL, d->st.fg);
+    char role[160];
+    snprintf(role, sizeof role, "node %s", m->elem_name[e]);
+    bg_scene_text(&d->scene, d->nlabel[e], d->nx[e], d->ny[e], d->st.font_size, 0.5, 0.5,
+                  bg_diagram_ink(d, c, d->hot_elem[e]), role);
+  }
+}
+
+/* A dashed artificial flow source Sf* at c, its dashed bond to p (half arrow
+ * at p), the stroke at the source (a flow source takes the effort). */
+static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, double hh, bg_vec p) {
+  const bg_style *st = &d->st;
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange %d", i + 1);
+  it->width = 0.6, it->dash[0] = 2, it->dash[1] = 1.5, it->color = st->fg;
+  bg_scene_move(&d->scene, c.x - hw, c.y - hh);
+  bg_scene_line(&d->scene, c.x + hw, c.y - hh);
+  bg_scene_line(&d->scene, c.x + hw, c.y + hh);
+  bg_scene_line(&d->scene, c.x - hw, c.y + hh);
+  bg_scene_close(&d->scene);
+  bg_scene_text(&d->scene, "Sf*", c.x, c.y, st->font_size, 0.5, 0.5, st->fg, "lagrange-label");
+  bg_vec t = bg_box_exit(c, hw, hh, p), dir = bg_vunit(bg_vsub(p, t));
+  it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-bond %d", i + 1);
+  it->width = st->line_width, it->dash[0] = 4, it->dash[1] = 2, it->round = 1, it->color = st->fg;
+  bg_vec barb = bg_vadd(p, bg_vscale(bg_vsub(bg_vleft(dir), dir), 7 * st->line_width * BG_SQRT1_2));
+  bg_scene_move(&d->scene, t.x, t.y);
+  bg_scene_line(&d->scene, p.x, p.y);
+  bg_scene_line(&d->scene, barb.x, barb.y);
+  it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-stroke %d", i + 1);
+  it->width = 1.5 * st->line_width, it->color = st->fg;
+  stroke_bar(d, t, bg_vleft(dir), 4.5 * st->line_width);
+}
+
+static void draw_lagrange(bg_diagram *d) {
+  const bg_analysis *a = d->a;
+  for (int i = 0; a && i < a->nlag; i++) {
+    int n = d->lag_node[i];
+    if (n >= 0) {
+      int j = a->lag_junction[i];
+      bg_vec cn = bg_v(d->nx[n], d->ny[n]);
+      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, bg_node_exit(d, j, cn, 0));
+    } else if (a->lag_bond[i] >= 0) {
+      /* the inserted 1-junction sits on the split bond: attach beside it */
+      int b = a->lag_bond[i];
+      bg_vec side = bg_vscale(bg_barb_side(d, b), -1), mid = d->bg[b].mid;
+      double w, h;
+      bg_text_measure(d->st.font, d->st.font_size, "Sf*", &w, &h);
+      bg_vec c = bg_vadd(mid, bg_vscale(side, 30 + h / 2));
+      draw_lagrange_source(d, i, c, w / 2 + d->st.node_pad, 0.4 * h + d->st.node_pad,
+                           bg_vadd(mid, bg_vscale(side, 2)));
+    }
+  }
+}
+
+/* ---------------------------------------------------------------- highlight */
+static void hot_bond(bg_diagram *d, int b) {
+  d->hot_bond[b] = 1;
+  d->hot_elem[d->m->bond_tail[b]] = d->hot_elem[d->m->bond_head[b]] = 1;
+}
+
+static int count_of(const bg_analysis *a, int kind) {
+  if (!a) return 0;
+  return kind == 'p' ? a->npath : kind == 'l' ? a->ntloop : a->nconflict;
+}
+
+/* Whether the highlighted item exists; reports it to dg when not. */
+static int check_highlight(const bg_diagram *d, bg_diags *dg) {
+  int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
+  static const char *names[] = {"causal path", "topological loop", "conflict"};
+  const char *what = names[kind == 'p' ? 0 : kind == 'l' ? 1 : 2];
+  int n = count_of(d->a, kind);
+  if (k < 0 || k >= n) {
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "--highlight: no %s %d (the model has %d)", what, k + 1, n);
+    return -1;
+  }
+  return 0;
+}
+
+/* Marks what the highlighted item (checked) touches; everything when there is none. */
+static void mark_hot(bg_diagram *d) {
+  const bg_model *m = d->m;
+  const bg_analysis *a = d->a;
+  int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
+  if (!kind) {
+    memset(d->hot_bond, 1, (size_t)m->nbond + 1);
+    memset(d->hot_elem, 1, (size_t)d->nnode + 1);
+    return;
+  }
+  if (kind == 'p')
+    for (int i = 0; i < a->path_n[k]; i++) hot_bond(d, a->path_bonds[a->path_adr[k] + i]);
+  if (kind == 'l')
+    for (int i = 0; i < a->tloop_n[k]; i++) hot_bond(d, a->tloop_signals[a->tloop_adr[k] + i] / 2);
+  if (kind == 'c') {
+    d->hot_elem[a->conflict_node[k]] = 1;
+    for (int i = 0; i < a->conflict_n[k]; i++) hot_bond(d, a->conflict_bonds[a->conflict_adr[k] + i]);
+  }
+}
+
+/* ---------------------------------------------------------------- build */
+static void alloc_nodes(bg_diagram *d) {
+  const bg_model *m = d->m;
+  int nlag = d->a ? d->a->nlag : 0;
+  d->lag_node = bg_arena_alloc(&d->arena, sizeof(int) * (size_t)(nlag + 1));
+  d->nnode = m->nelem;
+  for (int i = 0; i < nlag; i++)
+    d->lag_node[i] = d->a->lag_junction[i] >= 0 ? d->nnode++ : -1;
+  d->state_node = bg_arena_alloc(&d->arena, sizeof(int) * ((size_t)m->nstate + 1));
+  for (int s = 0; s < m->nstate; s++) d->state_node[s] = -1;
+  for (int i = 0; (d->show & BG_SHOW_SIGNALS) && i < m->nsignal; i++) {
+    int s = bg_signal_state(m, i);
+    if (s >= 0 && d->state_node[s] < 0) d->state_node[s] = d->nnode++;
+  }
+  size_t n = (size_t)d->nnode + 1;
+  d->nw = bg_arena_alloc(&d->arena, n * sizeof(double));
+  d->nh = bg_arena_alloc(&d->arena, n * sizeof(double));
+  d->nlabel = bg_arena_alloc(&d->arena, n * sizeof(char *));
+  d->bg = bg_arena_alloc(&d->arena, ((size_t)m->nbond + 1) * sizeof *d->bg);
+}
+
+/* Moves everything drawn by v. */
+static void move_scene(bg_scene *s, bg_vec v) {
+  for (int i = 0; i < s->nop; i++)
+    for (int k = 0; k < 3; k++) s->op[i].x[k] += v.x, s->op[i].y[k] += v.y;
+  for (int i = 0; i < s->nitem; i++)
+    if (s->item[i].kind == BG_ITEM_TEXT) s->item[i].x += v.x, s->item[i].y += v.y;
+}
+
+/* The page around the drawing (bg_scene_fit), remembering the move. A
+ * redrawn diagram is not fitted: keep_page puts it on its source's page. */
+static void fit_page(bg_diagram *d) {
+  if (d->keep_page) return;
+  double x0, y0, x1, y1;
+  bg_scene_bbox(&d->scene, &x0, &y0, &x1, &y1);
+  d->shift = bg_vadd(d->shift, bg_v(d->st.margin - x0, d->st.margin - y0));
+  bg_scene_fit(&d->scene, d->st.margin);
+}
+
+/* A redrawn diagram gets its source's shift, so every node lands where it
+ * is there, and its page; the page grows (with the margin) where the drawing
+ * reaches beyond it, moving everything right or down when that is on the
+ * left or at the top. */
+static void keep_page(bg_diagram *d) {
+  bg_scene *s = &d->scene;
+  double x0, y0, x1, y1, mg = d->st.margin;
+  bg_scene_bbox(s, &x0, &y0, &x1, &y1);
+  bg_vec sh = d->keep_shift;
+  double gx = fmax(0, mg - (x0 + sh.x)), gy = fmax(0, mg - (y0 + sh.y));
+  d->shift = bg_vadd(sh, bg_v(gx, gy));
+  move_scene(s, d->shift);
+  s->width = ceil(fmax(d->keep_w, x1 + sh.x + mg) + gx);
+  s->height = ceil(fmax(d->keep_h, y1 + sh.y + mg) + gy);
+}
+
+/* Drawing order: layer polylines at the bottom, then bonds, strokes,
+ * signals, numbers, labels, conflicts, and the path tags and loop gains on
+ * top. Text is placed clear of what was drawn before it (diagram_place.c);
+ * numbers see the bonds and nodes, tags and gains also the polylines. */
+static void draw_all(bg_diagram *d) {
+  unsigned show = d->show;
+  int hk = d->o.highlight_kind;
+  bg_obstacle_nodes(d);
+  bg_layers_prepare(d);
+  if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);
+  if ((show & BG_SHOW_LOOPS) || hk == 'l') bg_draw_loops(d);
+  draw_bonds(d);
+  if (show & BG_SHOW_SIGNALS) bg_draw_signals(d);
+  draw_lagrange(d);
+  draw_numbers(d);
+  for (int i = 0; i < d->npoly; i++) bg_obstacle_item(d, d->poly[i]);
+  draw_nodes(d);
+  if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
+  bg_place_layer_labels(d);
+  fit_page(d);
+  if (show & BG_SHOW_LEGEND) {
+    bg_draw_legend(d);
+    fit_page(d);
+  }
+  if (d->keep_page) keep_page(d);
+}
+
+/* The layout stage: nodes measured and laid out, where the bonds run. */
+static int lay_out(bg_diagram *d, bg_diags *dg) {
+  alloc_nodes(d);
+  measure_nodes(d);
+  if (run_layout(d, dg) != 0) return -1;
+  bg_geom_bonds(d);
+  return 0;
+}
+
+/* The scene stage: what the highlight touches, then everything drawn. */
+static void draw_scene(bg_diagram *d) {
+  const bg_model *m = d->m;
+  d->hot_elem = bg_arena_alloc(&d->arena, (size_t)d->nnode + 1);
+  d->hot_bond = bg_arena_alloc(&d->arena, (size_t)m->nbond + 1);
+  d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
+  mark_hot(d);
+  bg_scene_init(&d->scene, d->st.font);
+  d->scene.background = d->st.background;
+  d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");
+  draw_all(d);
+}
+
+bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
+                             bg_diags *dg) {
+  bg_diagram *d = bg_xcalloc(1, sizeof *d);
+  d->m = m, d->a = a, d->o = *o;
+  d->show = o->show ? o->show : BG_SHOW_DEFAULT;
+  if (bg_style_load(&d->st, o->style, o->style_dir, dg) != 0) goto fail;
+  /* a bad highlight is reported before the layout is paid for */
+  if (o->highlight_kind && check_highlight(d, dg) != 0) goto fail;
+  if (lay_out(d, dg) != 0) goto fail;
+  draw_scene(d);
+  return d;
+fail:
+  bg_diagram_free(d);
+  return NULL;
+}
+
+static void *arena_dup(bg_arena *a, const void *src, size_t size) {
+  void *p = bg_arena_alloc(a, size);
+  memcpy(p, src, size);
+  return p;
+}
+
+/* The layout stage of src, copied: d shares nothing with src. */
+static void copy_layout(bg_diagram *d, const bg_diagram *src) {
+  const bg_model *m = d->m;
+  int nlag = d->a ? d->a->nlag : 0;
+  size_t nn = (size_t)src->nnode + 1, nb = (size_t)m->nbond + 1;
+  d->nnode = src->nnode;
+  d->lag_node = arena_dup(&d->arena, src->lag_node, sizeof(int) * (size_t)(nlag + 1));
+  d->state_node = arena_dup(&d->arena, src->state_node, sizeof(int) * ((size_t)m->nstate + 1));
+  d->nw = arena_dup(&d->arena, src->nw, nn * sizeof(double));
+  d->nh = arena_dup(&d->arena, src->nh, nn * sizeof(double));
+  d->nlabel = bg_arena_alloc(&d->arena, nn * sizeof(char *));
+  for (int i = 0; i < d->nnode; i++) d->nlabel[i] = bg_arena_strdup(&d->arena, src->nlabel[i]);
+  bg_layout_copy(&src->lay, &d->lay);
+  d->nx = d->lay.x, d->ny = d->lay.y;
+  d->splx = d->lay.splx, d->sply = d->lay.sply;
+  d->bg = arena_dup(&d->arena, src->bg, nb * sizeof *d->bg);
+}
+
+bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highlight_kind,
+                              int highlight_index, bg_diags *dg) {
+  const unsigned fixed = BG_SHOW_LABELS | BG_SHOW_SIGNALS; /* they decide the nodes */
+  bg_diagram *d = bg_xcalloc(1, sizeof *d);
+  d->m = src->m, d->a = src->a, d->o = src->o, d->st = src->st;
+  d->show = ((show ? show : BG_SHOW_DEFAULT) & ~fixed) | (src->show & fixed);
+  /* the names given to bg_diagram_build are not needed any more (and may be gone) */
+  d->o.style = d->o.style_dir = d->o.layout = NULL;
+  d->o.show = d->show;
+  d->o.highlight_kind = highlight_kind, d->o.highlight_index = highlight_index;
+  d->keep_page = 1;
+  d->keep_shift = src->shift;
+  d->keep_w = src->scene.width, d->keep_h = src->scene.height;
+  if (highlight_kind && check_highlight(d, dg) != 0) {
+    bg_diagram_free(d);
+    return NULL;
+  }
+  copy_layout(d, src);
+  draw_scene(d);
+  return d;
+}
+
+void bg_diagram_free(bg_diagram *d) {
+  if (!d) return;
+  bg_layout_free(&d->lay);
+  bg_obstacles_free(d->obs);
+  free(d->labels);
+  free(d->poly);
+  bg_scene_free(&d->scene);
+  bg_arena_free(&d->arena);
+  free(d);
+}

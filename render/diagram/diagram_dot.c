@@ -1,0 +1,185 @@
+/* The annotated graph in Graphviz DOT with the computed positions (points,
+ * y up, as Graphviz writes them): `neato -n2 -Tsvg x.dot` redraws it. Written
+ * by hand from the layout so the text is deterministic. */
+#include <stdio.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+static void dot_str(bg_strbuf *b, const char *s) {
+  bg_sb_putc(b, '"');
+  for (; *s; s++) {
+    if (*s == '"' || *s == '\\') bg_sb_putc(b, '\\');
+    bg_sb_putc(b, *s);
+  }
+  bg_sb_putc(b, '"');
+}
+
+static double yup(const bg_diagram *d, double y) { return d->lay.height - y; }
+
+/* The user state whose integrator node n is, or -1. */
+static int node_state(const bg_diagram *d, int n) {
+  for (int s = 0; s < d->m->nstate; s++)
+    if (d->state_node[s] == n) return s;
+  return -1;
+}
+
+static void node_id(const bg_diagram *d, int n, bg_strbuf *out) {
+  if (n < d->m->nelem) {
+    dot_str(out, d->m->elem_name[n]);
+    return;
+  }
+  int s = node_state(d, n);
+  if (s >= 0) {
+    bg_strbuf id = {0};
+    bg_sb_printf(&id, "state:%s", d->m->state_name[s]);
+    dot_str(out, bg_sb_str(&id));
+    bg_sb_free(&id);
+    return;
+  }
+  char id[32];
+  snprintf(id, sizeof id, "Sf*%d", n - d->m->nelem + 1);
+  dot_str(out, id);
+}
+
+static const char *conflict_at(const bg_diagram *d, int e, char *buf, size_t n) {
+  for (int k = 0; d->a && k < d->a->nconflict; k++) {
+    if (d->a->conflict_node[k] != e) continue;
+    if (d->a->conflict_type[k] == 1) snprintf(buf, n, "type 1");
+    else snprintf(buf, n, "type 2, k = %d", d->a->conflict_degree[k]);
+    return buf;
+  }
+  return NULL;
+}
+
+static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
+  const bg_model *m = d->m;
+  bg_sb_puts(out, "  ");
+  node_id(d, n, out);
+  bg_sb_puts(out, " [label=");
+  if (n < m->nelem && bg_elem_is_junction(m->elem_kind[n])) dot_str(out, bg_elem_display_kind(m, n));
+  else if (n < m->nelem) {
+    bg_strbuf l = {0};
+    bg_sb_printf(&l, "%s : %s", bg_elem_display_kind(m, n), m->elem_name[n]);
+    dot_str(out, bg_sb_str(&l));
+    bg_sb_free(&l);
+  } else if (node_state(d, n) >= 0) {
+    bg_strbuf l = {0};
+    bg_sb_printf(&l, "\u222b : %s", m->state_name[node_state(d, n)]);
+    dot_str(out, bg_sb_str(&l));
+    bg_sb_free(&l);
+    bg_sb_puts(out, ", fontcolor=\"#8b3a1a\"");
+  } else {
+    bg_sb_puts(out, "\"Sf*\", style=dashed, shape=box");
+  }
+  bg_sb_printf(out, ", pos=\"%.2f,%.2f\", width=%.4f, height=%.4f", d->nx[n], yup(d, d->ny[n]),
+               d->nw[n] / 72, d->nh[n] / 72);
+  char c[64];
+  if (n < m->nelem && conflict_at(d, n, c, sizeof c)) {
+    bg_sb_puts(out, ", fontcolor=red, bg_conflict=");
+    dot_str(out, c);
+  }
+  bg_sb_puts(out, "];\n");
+}
+
+static void write_pos(const bg_diagram *d, int b, bg_strbuf *out) {
+  const bg_bond_geom *g = &d->bg[b];
+  bg_sb_puts(out, ", pos=\"");
+  if (g->spln) {
+    for (int i = 0; i < g->spln; i++)
+      bg_sb_printf(out, "%s%.2f,%.2f", i ? " " : "", d->splx[g->spladr + i],
+                   yup(d, d->sply[g->spladr + i]));
+  } else {
+    for (int i = 0; i < 4; i++) {
+      double t = i / 3.0;
+      bg_sb_printf(out, "%s%.2f,%.2f", i ? " " : "", g->tail.x + t * (g->head.x - g->tail.x),
+                   yup(d, g->tail.y + t * (g->head.y - g->tail.y)));
+    }
+  }
+  bg_sb_putc(out, '"');
+}
+
+static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
+  const bg_model *m = d->m;
+  int stroke = d->a ? d->a->bond_stroke[b] : BG_STROKE_NONE;
+  bg_sb_puts(out, "  ");
+  node_id(d, m->bond_tail[b], out);
+  bg_sb_puts(out, " -> ");
+  node_id(d, m->bond_head[b], out);
+  bg_sb_printf(out, " [label=\"%d\", bg_bond=%d, arrowhead=%s", m->bond_num[b], m->bond_num[b],
+               stroke == BG_STROKE_HEAD ? "teelvee" : "lvee");
+  if (stroke == BG_STROKE_TAIL) bg_sb_puts(out, ", dir=both, arrowtail=tee");
+  bg_sb_printf(out, ", bg_stroke=%s",
+               stroke == BG_STROKE_HEAD ? "head" : stroke == BG_STROKE_TAIL ? "tail" : "none");
+  if (d->a && d->a->bond_conflict && d->a->bond_conflict[b]) bg_sb_puts(out, ", color=red, bg_conflict=1");
+  write_pos(d, b, out);
+  bg_sb_puts(out, "];\n");
+}
+
+static void write_extras(const bg_diagram *d, bg_strbuf *out) {
+  const bg_model *m = d->m;
+  for (int s = 0; s < m->nstate; s++) {
+    if (d->state_node[s] < 0) continue;
+    int in[64], nin = bg_state_inputs(m, s, in, 64);
+    for (int k = 0; k < nin; k++) {
+      bg_sb_puts(out, "  ");
+      node_id(d, in[k], out);
+      bg_sb_puts(out, " -> ");
+      node_id(d, d->state_node[s], out);
+      bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_state_input=1];\n");
+    }
+  }
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = m->signal_from[i], s = bg_signal_state(m, i);
+    if (from < 0 && s >= 0) from = d->state_node[s];
+    if (from < 0) continue; /* a bond variable: no node to start from */
+    bg_sb_puts(out, "  ");
+    node_id(d, from, out);
+    bg_sb_puts(out, " -> ");
+    node_id(d, m->signal_to[i], out);
+    bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_signal=");
+    dot_str(out, m->signal_var[i] ? m->signal_var[i] : "");
+    bg_sb_puts(out, "];\n");
+  }
+  for (int i = 0; d->a && i < d->a->nlag; i++) {
+    if (d->lag_node[i] < 0) continue;
+    bg_sb_puts(out, "  ");
+    node_id(d, d->lag_node[i], out);
+    bg_sb_puts(out, " -> ");
+    node_id(d, d->a->lag_junction[i], out);
+    bg_sb_puts(out, " [style=dashed, arrowhead=lvee, dir=both, arrowtail=tee];\n");
+  }
+}
+
+static void write_layers(const bg_diagram *d, bg_strbuf *out) {
+  const bg_analysis *a = d->a;
+  if (!a) return;
+  for (int kind = 0; kind < 2; kind++) {
+    int n = kind ? a->ntloop : a->npath;
+    for (int i = 0; i < n; i++) {
+      bg_strbuf t = {0};
+      bg_layer_describe(d, kind ? 'l' : 'p', i, &t);
+      bg_sb_printf(out, "  bg_%s%d=", kind ? "loop" : "path", i + 1);
+      dot_str(out, bg_sb_str(&t));
+      bg_sb_puts(out, ";\n");
+      bg_sb_free(&t);
+    }
+  }
+}
+
+void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out) {
+  const bg_model *m = d->m;
+  bg_sb_puts(out, "/* bgdraw: annotated bond graph; positions in points. Redraw: neato -n2 -Tsvg */\n");
+  bg_sb_puts(out, "digraph ");
+  dot_str(out, m->name ? m->name : "bg");
+  bg_sb_printf(out, " {\n  graph [bb=\"0,0,%.2f,%.2f\", bg_engine=\"%s\"];\n", d->lay.width,
+               d->lay.height, d->lay.engine);
+  bg_sb_printf(out, "  node [shape=plaintext, fixedsize=true, fontname=\"%s\", fontsize=%.1f];\n",
+               d->st.font, d->st.font_size);
+  bg_sb_printf(out, "  edge [fontsize=%.1f];\n", d->st.font_size * d->st.number_scale);
+  write_layers(d, out);
+  for (int n = 0; n < d->nnode; n++) write_node(d, n, out);
+  for (int b = 0; b < m->nbond; b++) write_bond(d, b, out);
+  write_extras(d, out);
+  bg_sb_puts(out, "}\n");
+}

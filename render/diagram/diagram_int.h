@@ -1,0 +1,130 @@
+/* Internals of the diagram builder, shared by diagram*.c and render.c. */
+#ifndef BG_DIAGRAM_INT_H
+#define BG_DIAGRAM_INT_H
+#include "causality/analysis.h"
+#include "diagram/layout.h"
+#include "model/model.h"
+#include "diagram/render.h"
+#include "scene/scene.h"
+#include "scene/style.h"
+
+/* <math.h> constants are not C11 */
+#define BG_PI 3.14159265358979323846
+#define BG_SQRT1_2 0.70710678118654752440
+
+typedef struct bg_vec {
+  double x, y;
+} bg_vec;
+
+/* Where a bond runs on the page. */
+typedef struct bg_bond_geom {
+  bg_vec tail, head;   /* end points on the node boxes */
+  bg_vec tdir, hdir;   /* unit travel direction (tail → head) at each end */
+  bg_vec mid, mdir;    /* middle point and direction there */
+  int spladr, spln;    /* Graphviz spline points (page coordinates) or spln 0: straight */
+} bg_bond_geom;
+
+struct bg_diagram {
+  const bg_model *m;
+  const bg_analysis *a; /* nullable */
+  bg_render_opts o;
+  unsigned show;
+  bg_style st;
+  /* nodes: the model's elements, then one per Lagrange flow source attached to a junction */
+  int nnode;
+  double *nw, *nh, *nx, *ny; /* box size and centre on the page */
+  char **nlabel;             /* pango markup */
+  int *lag_node;             /* per Lagrange source: its node, or -1 (a split bond) */
+  int *state_node;           /* per user state: its integrator node (drawn when a signal
+                                comes from the state and signals are shown), or -1 */
+  bg_layout lay;
+  double *splx, *sply;       /* spline points moved onto the page */
+  bg_bond_geom *bg;          /* per bond */
+  unsigned char *hot_bond, *hot_elem; /* highlight: what stays in colour */
+  int *side_use;             /* per bond side: layers already drawn there */
+  struct bg_obstacles *obs;  /* what labels must avoid (diagram_place.c) */
+  int *loop_path;            /* per topological loop: the causal path whose polyline also
+                                draws it (a flat loop caused by a shown path), or -1 */
+  struct bg_layer_label *labels; /* path tags and loop gains, placed after every line */
+  int nlabels, caplabels;
+  int *poly, npoly, cappoly; /* scene items of path and loop polylines */
+  bg_vec shift;              /* what the scene was moved by: page = layout + shift */
+  int keep_page;             /* drawn again (bg_diagram_redraw): placed on the page below */
+  bg_vec keep_shift;         /* that diagram's shift and page size */
+  double keep_w, keep_h;
+  bg_scene scene;
+  bg_arena arena;
+};
+
+/* geometry (diagram_geom.c) */
+bg_vec bg_v(double x, double y);
+bg_vec bg_vadd(bg_vec a, bg_vec b);
+bg_vec bg_vsub(bg_vec a, bg_vec b);
+bg_vec bg_vscale(bg_vec a, double k);
+bg_vec bg_vunit(bg_vec a);
+bg_vec bg_vleft(bg_vec d); /* left of travel on a y-down page */
+double bg_vlen(bg_vec a);
+/* Where the ray from a box's centre towards p leaves the box (half sizes hw, hh). */
+bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p);
+void bg_geom_bonds(bg_diagram *d);
+/* The side of the barb at the head of bond b: a unit normal. */
+bg_vec bg_barb_side(const bg_diagram *d, int b);
+/* Draws the bond's centre line as the current item's path. */
+void bg_geom_bond_path(const bg_diagram *d, int b);
+/* Filled arrowhead with its tip at p, pointing along dir. */
+void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid);
+
+/* colours with the highlight applied */
+bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot);
+int bg_diagram_muted(const bg_diagram *d);
+
+/* A patch of background behind centred text at p, so it stays readable over
+ * path and loop lines. */
+void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size);
+
+/* placement (diagram_place.c) */
+typedef struct bg_obstacles bg_obstacles;
+void bg_obstacles_free(bg_obstacles *o);
+void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1);
+/* Every node box. */
+void bg_obstacle_nodes(bg_diagram *d);
+/* The lines of scene item i (curves flattened). */
+void bg_obstacle_item(bg_diagram *d, int i);
+/* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
+int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
+/* The index of the candidate centre with the lowest score (the first on
+ * ties); its box becomes an obstacle. */
+int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);
+/* Moves a w × h label centred at *p to the best of a few positions above
+ * and below, and registers it. */
+void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p);
+
+/* signals (diagram_signals.c) */
+/* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
+bg_vec bg_node_exit(const bg_diagram *d, int n, bg_vec toward, double gap);
+/* The user state signal i comes from, or -1. */
+int bg_signal_state(const bg_model *m, int i);
+/* Elements whose variables user state s integrates (at most cap, no repeats). */
+int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
+void bg_draw_signals(bg_diagram *d);
+
+/* layers (diagram_layers.c) */
+typedef struct bg_layer_label bg_layer_label;
+/* Decides which flat loops are drawn with their causal path (loop_path). */
+void bg_layers_prepare(bg_diagram *d);
+/* Places and draws the path tags and loop gains collected while drawing. */
+void bg_place_layer_labels(bg_diagram *d);
+void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
+void bg_draw_paths(bg_diagram *d);
+void bg_draw_loops(bg_diagram *d);
+void bg_draw_conflicts(bg_diagram *d);
+/* The direction (of 8) around node n farthest in angle from its bonds. */
+bg_vec bg_free_direction(const bg_diagram *d, int n);
+void bg_draw_legend(bg_diagram *d);
+/* Text for a path's or loop's legend line. */
+void bg_layer_describe(const bg_diagram *d, int kind, int i, bg_strbuf *out);
+bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
+
+/* DOT output (diagram_dot.c) */
+void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out);
+#endif

@@ -1,0 +1,390 @@
+/* Analysis layers: causal paths and topological loops as offset dashed
+ * polylines with direction arrows, conflicts as lightning flashes. A layer
+ * always runs on the left of its direction of travel, so a flat loop (out
+ * along the path and back) surrounds its bonds and the two open loops of a
+ * causal loop, which run in opposite directions, fall on opposite sides. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+/* Bond b traversed from node u to node v. */
+typedef struct seg {
+  int b, u, v;
+  double off;
+  bg_vec dir, n;
+} seg;
+
+/* How the polyline passes a node: entry point p0, exit p1 (kind 0: p1 = p0;
+ * 1: a straight link; 2: a half-turn curve with controls c1, c2). */
+typedef struct joint {
+  int kind;
+  bg_vec p0, p1, c1, c2;
+} joint;
+
+static bg_vec centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
+
+static int other_end(const bg_model *m, int b, int e) {
+  return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
+}
+
+static void seg_geom(bg_diagram *d, seg *s) {
+  const bg_model *m = d->m;
+  s->dir = bg_vunit(bg_vsub(centre(d, s->v), centre(d, s->u)));
+  s->n = bg_vleft(s->dir);
+  int side = s->u == m->bond_tail[s->b] ? 0 : 1;
+  /* each further layer on this side 3 pt out (more for thick lines) */
+  double step = fmax(3, 2.5 * d->st.layer_width);
+  s->off = d->st.layer_offset + step * d->side_use[2 * s->b + side];
+}
+
+static void claim_sides(bg_diagram *d, const seg *s, int n) {
+  for (int i = 0; i < n; i++) d->side_use[2 * s[i].b + (s[i].u == d->m->bond_tail[s[i].b] ? 0 : 1)]++;
+}
+
+static double cross(bg_vec a, bg_vec b) { return a.x * b.y - a.y * b.x; }
+
+/* A half turn around the end of bond s->b at node s->v. */
+static joint turn(const bg_diagram *d, const seg *s) {
+  int v = s->v;
+  bg_vec e = bg_box_exit(centre(d, v), d->nw[v] / 2, d->nh[v] / 2, centre(d, s->u));
+  bg_vec t = bg_vsub(e, bg_vscale(s->dir, s->off + 1));
+  bg_vec k = bg_vscale(s->dir, 4.0 / 3 * s->off);
+  joint j = {2, bg_vadd(t, bg_vscale(s->n, s->off)), bg_vsub(t, bg_vscale(s->n, s->off)), {0, 0}, {0, 0}};
+  j.c1 = bg_vadd(j.p0, k), j.c2 = bg_vadd(j.p1, k);
+  return j;
+}
+
+/* Where the line of s stops (or t starts) beside node v: off the box of
+ * a non-junction, grown by 2, at the segment's offset. */
+static bg_vec beside_node(const bg_diagram *d, const seg *s, int v, int other) {
+  bg_vec c = centre(d, v);
+  double hw = d->nw[v] / 2 + 2, hh = d->nh[v] / 2 + 2;
+  return bg_vadd(bg_box_exit(c, hw, hh, centre(d, other)), bg_vscale(s->n, s->off));
+}
+
+/* A modulation closes the loop between different nodes (the signal of s
+ * arrives at s->v, whose variable an element's law uses: t->u): a straight
+ * line beside the modulating signal, or, back along the same bond (an
+ * element modulated by its own output), a curve bulging further out. */
+static joint jump(const bg_diagram *d, const seg *s, const seg *t) {
+  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}};
+  if (s->b != t->b) return j;
+  double k = 0.3 * bg_vlen(bg_vsub(j.p1, j.p0)) + 12, bulge = 14 + s->off;
+  j.kind = 2;
+  j.c1 = bg_vadd(j.p0, bg_vadd(bg_vscale(s->dir, k), bg_vscale(s->n, bulge)));
+  j.c2 = bg_vsub(bg_vadd(j.p1, bg_vscale(t->n, bulge)), bg_vscale(t->dir, k));
+  return j;
+}
+
+/* Where the polyline of s meets the one of t at their common node. */
+static joint join(const bg_diagram *d, const seg *s, const seg *t) {
+  int v = s->v;
+  bg_vec c = centre(d, v);
+  if (t->u != s->v) return jump(d, s, t);
+  if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s);
+  bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
+  joint j = {1, a, b, {0, 0}, {0, 0}};
+  if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
+    /* keep off the label: leave and re-enter at the box */
+    j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
+    return j;
+  }
+  double den = cross(s->dir, t->dir);
+  if (fabs(den) < 0.05) return j;
+  double u = cross(bg_vsub(b, a), t->dir) / den;
+  bg_vec x = bg_vadd(a, bg_vscale(s->dir, u));
+  double off = s->off > t->off ? s->off : t->off, dist = bg_vlen(bg_vsub(x, c));
+  /* y grows downwards: den < 0 turns towards the left, where the layer runs */
+  int inside = den < 0;
+  if (dist <= 1.3 * off || (inside && dist <= 4 * off)) {
+    j.kind = 0, j.p0 = j.p1 = x;
+  } else if (!inside) {
+    /* round the outside of a sharp turn with an arc about the junction */
+    double ang = acos(fmax(-1, fmin(1, s->n.x * t->n.x + s->n.y * t->n.y)));
+    double k = 4.0 / 3 * tan(ang / 4) * off;
+    j.kind = 2, j.c1 = bg_vadd(a, bg_vscale(s->dir, k)), j.c2 = bg_vsub(b, bg_vscale(t->dir, k));
+  }
+  return j;
+}
+
+static void emit_joint(bg_scene *sc, const joint *j) {
+  bg_scene_line(sc, j->p0.x, j->p0.y);
+  if (j->kind == 1) bg_scene_line(sc, j->p1.x, j->p1.y);
+  if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
+}
+
+bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i) {
+  if (kind == 'l' && d->loop_path && d->loop_path[i] >= 0) kind = 'p', i = d->loop_path[i];
+  int k = kind == 'p' ? i : (d->a ? d->a->npath : 0) + i;
+  return d->st.layer_color[k % d->st.nlayer_color];
+}
+
+void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]) {
+  static const double pat[4][2] = {{5, 2.5}, {1.5, 2}, {8, 3}, {3, 3}};
+  if (kind == 'l' && d->loop_path && d->loop_path[i] >= 0) kind = 'p', i = d->loop_path[i];
+  int k = kind == 'p' ? i : (d->a ? d->a->npath : 0) + i;
+  const double *p = d->st.layer_patterns ? pat[k % 4] : pat[0];
+  double z = fmax(1, d->st.layer_width / 1.2); /* thick lines: longer dashes */
+  dash[0] = z * p[0], dash[1] = z * p[1];
+}
+
+static int layer_hot(const bg_diagram *d, int kind, int i) {
+  return !d->o.highlight_kind || (d->o.highlight_kind == kind && d->o.highlight_index == i + 1);
+}
+
+/* Draws a closed layer polyline through the segments, with an arrow at the
+ * middle of each; returns the centroid of its corners. */
+static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged) {
+  const char *name = kind == 'p' ? "path" : "loop";
+  joint *j = bg_xcalloc((size_t)n, sizeof *j);
+  for (int k = 0; k < n; k++) j[k] = join(d, &s[k], &s[(k + 1) % n]);
+  bg_rgba c = bg_diagram_ink(d, bg_layer_color(d, kind, i), layer_hot(d, kind, i));
+  bg_scene_item *it = merged >= 0
+      ? bg_scene_begin(&d->scene, BG_ITEM_STROKE, "%s %d loop=%d", name, i + 1, merged + 1)
+      : bg_scene_begin(&d->scene, BG_ITEM_STROKE, "%s %d", name, i + 1);
+  if (d->npoly == d->cappoly) {
+    d->cappoly = d->cappoly ? 2 * d->cappoly : 16;
+    d->poly = bg_xrealloc(d->poly, (size_t)d->cappoly * sizeof *d->poly);
+  }
+  d->poly[d->npoly++] = d->scene.nitem - 1;
+  it->color = c, it->width = d->st.layer_width, it->round = 1;
+  bg_layer_dash(d, kind, i, it->dash);
+  bg_scene_move(&d->scene, j[n - 1].p1.x, j[n - 1].p1.y);
+  bg_vec sum = bg_v(0, 0);
+  for (int k = 0; k < n; k++) emit_joint(&d->scene, &j[k]), sum = bg_vadd(sum, j[k].p0);
+  bg_scene_close(&d->scene);
+  for (int k = 0; k < n; k++) {
+    bg_vec a = j[(k + n - 1) % n].p1, b = j[k].p0;
+    if (bg_vlen(bg_vsub(b, a)) < 14) continue; /* no room for an arrow */
+    bg_vec mid = bg_vadd(bg_vscale(bg_vadd(a, b), 0.5), bg_vscale(s[k].dir, 2.5));
+    it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-arrow %d", name, i + 1);
+    it->fill = it->color = c, it->width = 0;
+    bg_geom_arrowhead(&d->scene, mid, s[k].dir, 5, 4);
+  }
+  free(j);
+  return bg_vscale(sum, 1.0 / n);
+}
+
+/* ---------------------------------------------------------------- labels */
+/* A path tag or loop gain, placed after every line is drawn. */
+struct bg_layer_label {
+  const char *markup;
+  bg_rgba color;
+  char role[40];
+  bg_vec *cand;
+  int ncand;
+};
+
+static bg_layer_label *new_label(bg_diagram *d, const char *markup, bg_rgba c, int ncand) {
+  if (d->nlabels == d->caplabels) {
+    d->caplabels = d->caplabels ? 2 * d->caplabels : 16;
+    d->labels = bg_xrealloc(d->labels, (size_t)d->caplabels * sizeof *d->labels);
+  }
+  bg_layer_label *L = &d->labels[d->nlabels++];
+  L->markup = bg_arena_strdup(&d->arena, markup);
+  L->color = c;
+  L->cand = bg_arena_alloc(&d->arena, sizeof(bg_vec) * (size_t)(ncand + 1));
+  L->ncand = 0;
+  return L;
+}
+
+static double label_size(const bg_diagram *d) { return d->st.font_size * d->st.number_scale; }
+
+/* Candidates beside segment s, outside its line: at the middle and a third
+ * of the way from either end, at two distances. */
+static void cand_beside(const bg_diagram *d, bg_layer_label *L, const seg *s, double w, double h) {
+  static const double ts[] = {0.5, 0.3, 0.7};
+  double extent = fabs(s->n.x) * w / 2 + fabs(s->n.y) * h / 2;
+  for (int j = 0; j < 2; j++)
+    for (int k = 0; k < 3; k++) {
+      bg_vec base = bg_vadd(centre(d, s->u), bg_vscale(bg_vsub(centre(d, s->v), centre(d, s->u)), ts[k]));
+      L->cand[L->ncand++] = bg_vadd(base, bg_vscale(s->n, s->off + 2.5 + extent + j * (h + 2)));
+    }
+}
+
+/* Candidates beside the segments in `order` (6 each), those where the label
+ * can come closest to its line first: above or below a horizontal bond
+ * before beside a slanted one. */
+static void cand_segments(const bg_diagram *d, bg_layer_label *L, const seg *s, int *order,
+                          int n, double w, double h) {
+  for (int pass = 0; pass < 3; pass++)
+    for (int k = 0; k < n; k++) {
+      const seg *t = &s[order[k]];
+      double extent = fabs(t->n.x) * w / 2 + fabs(t->n.y) * h / 2;
+      int band = extent <= h ? 0 : extent <= 0.5 * (w / 2 + h) ? 1 : 2;
+      if (band == pass) cand_beside(d, L, t, w, h);
+    }
+}
+
+/* Segment indices 0..n-1 from the middle outwards. */
+static void middle_first(int *order, int n) {
+  int mid = (n - 1) / 2, k = 0;
+  order[k++] = mid;
+  for (int r = 1; k < n; r++) {
+    if (mid + r < n) order[k++] = mid + r;
+    if (k < n && mid - r >= 0) order[k++] = mid - r;
+  }
+}
+
+static void measure_label(const bg_diagram *d, const char *markup, double *w, double *h) {
+  bg_text_measure(d->st.font, label_size(d), markup, w, h);
+  *w += 2, *h = 0.8 * *h + 1;
+}
+
+void bg_place_layer_labels(bg_diagram *d) {
+  for (int i = 0; i < d->nlabels; i++) {
+    bg_layer_label *L = &d->labels[i];
+    double w, h;
+    measure_label(d, L->markup, &w, &h);
+    bg_vec p = L->cand[bg_place_best(d, L->cand, L->ncand, w, h)];
+    bg_text_halo(d, L->markup, p, label_size(d));
+    bg_scene_text(&d->scene, L->markup, p.x, p.y, label_size(d), 0.5, 0.5, L->color, L->role);
+  }
+}
+
+/* "L1: G = -n" (symbolic when short, else the value). */
+static void gain_text(const bg_diagram *d, int l, bg_strbuf *t) {
+  const bg_analysis *a = d->a;
+  bg_sb_printf(t, "L%d", l + 1);
+  const char *g = a->tloop_gain ? a->tloop_gain[l] : NULL;
+  if (g && strlen(g) <= 24) bg_sb_puts(t, ": G = "), bg_markup_escape(t, g);
+  else if (a->tloop_gain_value) bg_sb_printf(t, ": G = %.4g", a->tloop_gain_value[l]);
+}
+
+/* ---------------------------------------------------------------- paths */
+/* The flat loop a causal path's polyline also draws, or -1. */
+static int path_loop(const bg_diagram *d, int p) {
+  for (int l = 0; d->loop_path && l < d->a->ntloop; l++)
+    if (d->loop_path[l] == p) return l;
+  return -1;
+}
+
+static int path_segs(const bg_diagram *d, int p, seg *s) {
+  const bg_analysis *a = d->a;
+  int n = a->path_n[p], cur = a->path_end0[p];
+  for (int k = 0; k < n; k++) {
+    int b = a->path_bonds[a->path_adr[p] + k], nxt = other_end(d->m, b, cur);
+    s[k] = (seg){b, cur, nxt, 0, {0, 0}, {0, 0}};
+    s[2 * n - 1 - k] = (seg){b, nxt, cur, 0, {0, 0}, {0, 0}};
+    cur = nxt;
+  }
+  return 2 * n;
+}
+
+/* Order of drawing: a highlighted layer goes last, on top of the greyed ones. */
+static int layer_at(const bg_diagram *d, int kind, int k, int n) {
+  if (d->o.highlight_kind != kind) return k;
+  int hot = d->o.highlight_index - 1;
+  if (k == n - 1) return hot;
+  return k < hot ? k : k + 1;
+}
+
+static void draw_path(bg_diagram *d, int p) {
+  const bg_analysis *a = d->a;
+  if (!(d->show & BG_SHOW_PATHS) && !layer_hot(d, 'p', p)) return;
+  if (a->path_n[p] < 1) return;
+  {
+    seg *s = bg_xcalloc(2 * (size_t)a->path_n[p], sizeof *s);
+    int n = path_segs(d, p, s);
+    for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
+    int l = path_loop(d, p);
+    draw_polyline(d, s, n, 'p', p, l);
+    /* the tag (with the gain of the flat loop drawn along) outside the
+     * polyline, beside a bond from the middle of the path outwards */
+    bg_strbuf t = {0};
+    bg_sb_printf(&t, "P%d", p + 1);
+    if (l >= 0) bg_sb_puts(&t, ", "), gain_text(d, l, &t);
+    double w, h;
+    measure_label(d, bg_sb_str(&t), &w, &h);
+    int *order = bg_xcalloc((size_t)n, sizeof *order);
+    middle_first(order, n / 2);
+    for (int k = 0; k < n / 2; k++) order[n / 2 + k] = n - 1 - order[k]; /* the way back */
+    bg_layer_label *L = new_label(d, bg_sb_str(&t), bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), 6 * n);
+    snprintf(L->role, sizeof L->role, l >= 0 ? "path-tag %d gain" : "path-tag %d", p + 1);
+    cand_segments(d, L, s, order, n, w, h);
+    free(order);
+    bg_sb_free(&t);
+    claim_sides(d, s, n);
+    free(s);
+  }
+}
+
+void bg_draw_paths(bg_diagram *d) {
+  int n = d->a ? d->a->npath : 0;
+  for (int k = 0; k < n; k++) draw_path(d, layer_at(d, 'p', k, n));
+}
+
+/* ---------------------------------------------------------------- loops */
+/* Effort travels towards the stroke end, flow away from it. */
+static seg signal_seg(const bg_diagram *d, int sig) {
+  const bg_model *m = d->m;
+  int b = sig / 2, flow = sig & 1;
+  int head_stroke = d->a->bond_stroke[b] != BG_STROKE_TAIL;
+  int forward = flow ? !head_stroke : head_stroke;
+  int u = forward ? m->bond_tail[b] : m->bond_head[b];
+  return (seg){b, u, other_end(m, b, u), 0, {0, 0}, {0, 0}};
+}
+
+static void draw_loop(bg_diagram *d, int l) {
+  const bg_analysis *a = d->a;
+  if (!(d->show & BG_SHOW_LOOPS) && !layer_hot(d, 'l', l)) return;
+  if (d->loop_path[l] >= 0) return; /* drawn with its causal path */
+  int n = a->tloop_n[l];
+  if (n < 1) return;
+  {
+    seg *s = bg_xcalloc((size_t)n, sizeof *s);
+    for (int k = 0; k < n; k++) {
+      s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
+      seg_geom(d, &s[k]);
+    }
+    bg_vec c = draw_polyline(d, s, n, 'l', l, -1);
+    /* the gain: an open loop's at its centroid (inside a bond loop), a flat
+     * loop's outside its polyline, like a path tag */
+    bg_strbuf t = {0};
+    gain_text(d, l, &t);
+    double w, h;
+    measure_label(d, bg_sb_str(&t), &w, &h);
+    bg_layer_label *L = new_label(d, bg_sb_str(&t), bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), 6 * n + 5);
+    snprintf(L->role, sizeof L->role, "gain loop=%d", l + 1);
+    if (a->tloop_kind[l] == BG_TLOOP_OPEN)
+      for (int k = 0; k < 5; k++) L->cand[L->ncand++] = bg_v(c.x, c.y + ((k + 1) / 2) * (k % 2 ? -1 : 1) * (h + 1));
+    int *order = bg_xcalloc((size_t)n, sizeof *order);
+    middle_first(order, n);
+    cand_segments(d, L, s, order, n, w, h);
+    free(order);
+    bg_sb_free(&t);
+    claim_sides(d, s, n);
+    free(s);
+  }
+}
+
+void bg_draw_loops(bg_diagram *d) {
+  int n = d->a ? d->a->ntloop : 0;
+  for (int k = 0; k < n; k++) draw_loop(d, layer_at(d, 'l', k, n));
+}
+
+/* A flat loop caused by a causal path runs exactly where the path's polyline
+ * runs (out along the path and back): when both layers are shown, and the
+ * highlight does not single out either, the path's polyline draws both. */
+void bg_layers_prepare(bg_diagram *d) {
+  const bg_analysis *a = d->a;
+  int n = a ? a->ntloop : 0;
+  d->loop_path = bg_arena_alloc(&d->arena, sizeof(int) * ((size_t)n + 1));
+  int both = (d->show & BG_SHOW_PATHS) && (d->show & BG_SHOW_LOOPS);
+  for (int l = 0; l < n; l++) d->loop_path[l] = -1;
+  for (int l = 0; l < n; l++) {
+    int p = -1;
+    const char *c = a->tloop_cause ? a->tloop_cause[l] : NULL;
+    if (both && a->tloop_kind[l] == BG_TLOOP_FLAT && c && sscanf(c, "causal path %d", &p) == 1 &&
+        p >= 1 && p <= a->npath && path_loop(d, p - 1) < 0 &&
+        !(d->o.highlight_kind == 'l' && d->o.highlight_index == l + 1) &&
+        !(d->o.highlight_kind == 'p' && d->o.highlight_index == p))
+      p -= 1;
+    else
+      p = -1;
+    d->loop_path[l] = p;
+  }
+}

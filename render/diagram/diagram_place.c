@@ -1,0 +1,180 @@
+/* Free-floating text placement: bond numbers, path tags, loop gains. Every
+ * drawn node box, label box and line (bonds, signals, path and loop
+ * polylines) is an obstacle kept in a hashed grid; a label goes to the first
+ * of its candidate positions that touches the fewest obstacles. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+enum { CELL = 24, HASH = 1 << 14 };
+
+struct bg_obstacles {
+  int n, cap;
+  double *box;          /* x0 y0 x1 y1; a segment keeps its end points */
+  unsigned char *seg;   /* 1: the segment (x0,y0)-(x1,y1), 0: a rectangle */
+  unsigned *stamp;      /* per obstacle: last query that looked at it */
+  unsigned query;
+  int *head;            /* per hash bucket: first entry, -1 */
+  int *enext, *eob;     /* entries: next in bucket, obstacle */
+  int *ecx, *ecy;       /* entries: the cell */
+  int nent, capent;
+};
+
+static int cell_of(double v) { return (int)floor(v / CELL); }
+
+static unsigned bucket(int cx, int cy) {
+  return ((unsigned)cx * 73856093u ^ (unsigned)cy * 19349663u) & (HASH - 1);
+}
+
+static bg_obstacles *obstacles(bg_diagram *d) {
+  if (!d->obs) {
+    d->obs = bg_xcalloc(1, sizeof *d->obs);
+    d->obs->head = bg_xmalloc(HASH * sizeof(int));
+    for (int i = 0; i < HASH; i++) d->obs->head[i] = -1;
+  }
+  return d->obs;
+}
+
+void bg_obstacles_free(bg_obstacles *o) {
+  if (!o) return;
+  free(o->box), free(o->seg), free(o->stamp), free(o->head);
+  free(o->enext), free(o->eob), free(o->ecx), free(o->ecy);
+  free(o);
+}
+
+static void add_entry(bg_obstacles *o, int ob, int cx, int cy) {
+  if (o->nent == o->capent) {
+    o->capent = o->capent ? 2 * o->capent : 1024;
+    o->enext = bg_xrealloc(o->enext, (size_t)o->capent * sizeof(int));
+    o->eob = bg_xrealloc(o->eob, (size_t)o->capent * sizeof(int));
+    o->ecx = bg_xrealloc(o->ecx, (size_t)o->capent * sizeof(int));
+    o->ecy = bg_xrealloc(o->ecy, (size_t)o->capent * sizeof(int));
+  }
+  unsigned h = bucket(cx, cy);
+  int e = o->nent++;
+  o->eob[e] = ob, o->ecx[e] = cx, o->ecy[e] = cy, o->enext[e] = o->head[h];
+  o->head[h] = e;
+}
+
+static void add_obstacle(bg_diagram *d, int seg, double x0, double y0, double x1, double y1) {
+  bg_obstacles *o = obstacles(d);
+  if (o->n == o->cap) {
+    o->cap = o->cap ? 2 * o->cap : 256;
+    o->box = bg_xrealloc(o->box, (size_t)o->cap * 4 * sizeof(double));
+    o->seg = bg_xrealloc(o->seg, (size_t)o->cap);
+    o->stamp = bg_xrealloc(o->stamp, (size_t)o->cap * sizeof(unsigned));
+  }
+  int k = o->n++;
+  double *b = o->box + 4 * k;
+  b[0] = x0, b[1] = y0, b[2] = x1, b[3] = y1;
+  o->seg[k] = (unsigned char)seg, o->stamp[k] = 0;
+  int cx0 = cell_of(fmin(x0, x1)), cx1 = cell_of(fmax(x0, x1));
+  int cy0 = cell_of(fmin(y0, y1)), cy1 = cell_of(fmax(y0, y1));
+  for (int cy = cy0; cy <= cy1; cy++)
+    for (int cx = cx0; cx <= cx1; cx++) add_entry(o, k, cx, cy);
+}
+
+void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1) {
+  add_obstacle(d, 0, x0, y0, x1, y1);
+}
+
+/* The lines of scene item i (curves flattened) become obstacles. */
+void bg_obstacle_item(bg_diagram *d, int i) {
+  const bg_scene *s = &d->scene;
+  const bg_scene_item *it = &s->item[i];
+  double px = 0, py = 0, sx = 0, sy = 0;
+  for (int k = 0; k < it->nop; k++) {
+    const bg_scene_op *op = &s->op[it->opadr + k];
+    if (op->code == BG_OP_MOVE) {
+      px = sx = op->x[0], py = sy = op->y[0];
+    } else if (op->code == BG_OP_LINE || op->code == BG_OP_CLOSE) {
+      double x = op->code == BG_OP_LINE ? op->x[0] : sx, y = op->code == BG_OP_LINE ? op->y[0] : sy;
+      add_obstacle(d, 1, px, py, x, y);
+      px = x, py = y;
+    } else {
+      for (int j = 1; j <= 4; j++) {
+        double t = j / 4.0, u = 1 - t;
+        double x = u * u * u * px + 3 * u * u * t * op->x[0] + 3 * u * t * t * op->x[1] + t * t * t * op->x[2];
+        double y = u * u * u * py + 3 * u * u * t * op->y[0] + 3 * u * t * t * op->y[1] + t * t * t * op->y[2];
+        add_obstacle(d, 1, px, py, x, y);
+        px = x, py = y;
+      }
+    }
+  }
+}
+
+/* Whether the segment a-b meets the box (Liang-Barsky clipping). */
+static int seg_hits_box(const double *s, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1, dx = s[2] - s[0], dy = s[3] - s[1];
+  double p[4] = {-dx, dx, -dy, dy}, q[4] = {s[0] - x0, x1 - s[0], s[1] - y0, y1 - s[1]};
+  for (int k = 0; k < 4; k++) {
+    if (fabs(p[k]) < 1e-12) {
+      if (q[k] < 0) return 0;
+      continue;
+    }
+    double r = q[k] / p[k];
+    if (p[k] < 0 && r > t0) t0 = r;
+    if (p[k] > 0 && r < t1) t1 = r;
+    if (t0 > t1) return 0;
+  }
+  return 1;
+}
+
+int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) {
+  bg_obstacles *o = obstacles(d);
+  double x0 = p.x - w / 2, y0 = p.y - h / 2, x1 = p.x + w / 2, y1 = p.y + h / 2;
+  int score = 0;
+  o->query++;
+  for (int cy = cell_of(y0); cy <= cell_of(y1); cy++)
+    for (int cx = cell_of(x0); cx <= cell_of(x1); cx++)
+      for (int e = o->head[bucket(cx, cy)]; e >= 0; e = o->enext[e]) {
+        int k = o->eob[e];
+        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        o->stamp[k] = o->query;
+        const double *b = o->box + 4 * k;
+        if (o->seg[k] ? seg_hits_box(b, x0, y0, x1, y1)
+                      : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
+          score += o->seg[k] ? 1 : 10; /* covering text is worse than crossing lines */
+      }
+  return score;
+}
+
+int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) {
+  int best = 0, best_score = -1;
+  for (int k = 0; k < n && best_score != 0; k++) {
+    int s = bg_place_score(d, cand[k], w, h);
+    if (best_score < 0 || s < best_score) best = k, best_score = s;
+  }
+  bg_obstacle_rect(d, cand[best].x - w / 2, cand[best].y - h / 2, cand[best].x + w / 2,
+                   cand[best].y + h / 2);
+  return best;
+}
+
+void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p) {
+  static const double steps[] = {0, 1, -1, 2, -2, 3, -3, 4, -4};
+  enum { N = sizeof steps / sizeof steps[0] };
+  bg_vec cand[N];
+  for (int k = 0; k < N; k++) cand[k] = bg_v(p->x, p->y + steps[k] * (h + 1));
+  *p = cand[bg_place_best(d, cand, N, w, h)];
+}
+
+void bg_obstacle_nodes(bg_diagram *d) {
+  for (int i = 0; i < d->nnode; i++)
+    bg_obstacle_rect(d, d->nx[i] - d->nw[i] / 2, d->ny[i] - d->nh[i] / 2, d->nx[i] + d->nw[i] / 2,
+                     d->ny[i] + d->nh[i] / 2);
+}
+
+void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size) {
+  double w, h;
+  bg_text_measure(d->st.font, size, markup, &w, &h);
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "halo");
+  it->fill = d->st.background, it->width = 0;
+  double hw = w / 2 + 1, hh = 0.8 * h / 2 + 0.5;
+  bg_scene_move(&d->scene, p.x - hw, p.y - hh);
+  bg_scene_line(&d->scene, p.x + hw, p.y - hh);
+  bg_scene_line(&d->scene, p.x + hw, p.y + hh);
+  bg_scene_line(&d->scene, p.x - hw, p.y + hh);
+  bg_scene_close(&d->scene);
+}

@@ -1,0 +1,205 @@
+/* Modulating signals: thin lines with a filled arrowhead at the modulated
+ * element. A signal starts at the element whose variable it carries, at the
+ * middle of a bond for a bond variable (e7, f7), or at the integrator node of
+ * a user state (drawn with the signals that feed it); self-modulation is a
+ * small loop on the element. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+bg_vec bg_node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
+  return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
+}
+
+/* ---------------------------------------------------------------- user states */
+/* The user state a signal comes from, or -1. */
+int bg_signal_state(const bg_model *m, int i) {
+  if (m->signal_from[i] >= 0 || !m->signal_var[i]) return -1;
+  for (int s = 0; s < m->nstate; s++)
+    if (!strcmp(m->state_name[s], m->signal_var[i])) return s;
+  return -1;
+}
+
+/* The element a bond variable of a state expression refers to: the junction
+ * whose common variable it is (X.f of a 1-junction is its first bond's flow),
+ * else the one-port on the bond, else a two-port. The expression keeps only
+ * the bond, and these agree in value. */
+static int var_elem(const bg_model *m, int op, int b) {
+  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
+  for (int k = 0; k < 2; k++) {
+    int e = ends[k], kind = m->elem_kind[e];
+    if (((kind == BG_ELEM_J1 && op == BG_X_FLOW) || (kind == BG_ELEM_J0 && op == BG_X_EFFORT)) &&
+        m->elem_bonds[m->elem_bondadr[e]] == b)
+      return e;
+  }
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_oneport(m->elem_kind[ends[k]])) return ends[k];
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_twoport(m->elem_kind[ends[k]])) return ends[k];
+  return ends[0];
+}
+
+int bg_state_inputs(const bg_model *m, int s, int *out, int cap) {
+  int n = 0, sp = 0, root = m->state_expr[s];
+  if (root < 0) return 0;
+  int *stack = bg_xcalloc((size_t)m->nxnode + 1, sizeof *stack);
+  stack[sp++] = root;
+  while (sp > 0) {
+    const bg_xnode *x = &m->xnode[stack[--sp]];
+    for (int k = 0; k < x->nargs; k++) stack[sp++] = x->arg[k];
+    int e = x->op == BG_X_STORE ? x->ref
+            : x->op == BG_X_EFFORT || x->op == BG_X_FLOW ? var_elem(m, x->op, x->ref) : -1;
+    int seen = e < 0;
+    for (int k = 0; k < n && !seen; k++) seen = out[k] == e;
+    if (!seen && n < cap) out[n++] = e;
+  }
+  free(stack);
+  return n;
+}
+
+/* ---------------------------------------------------------------- drawing */
+static int bond_between(const bg_model *m, int x, int y) {
+  for (int i = 0; i < m->elem_nbond[x]; i++) {
+    int b = m->elem_bonds[m->elem_bondadr[x] + i];
+    if (m->bond_tail[b] == y || m->bond_head[b] == y) return b;
+  }
+  return -1;
+}
+
+enum { ALEN = 6, AWID = 4 };
+
+/* Roles: "KIND NAME" for the line ("signal w->T", counted by the tests),
+ * "KIND-arrow NAME" and "KIND-dot NAME" for the marks. */
+typedef struct sigrole {
+  const char *kind, *name;
+} sigrole;
+
+static bg_scene_item *signal_item(bg_diagram *d, sigrole role, int hot) {
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "%s %s", role.kind, role.name);
+  it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0.7;
+  if (d->st.signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
+  return it;
+}
+
+static void signal_head(bg_diagram *d, sigrole role, bg_vec tip, bg_vec dir, int hot) {
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-arrow %s", role.kind, role.name);
+  it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
+  bg_geom_arrowhead(&d->scene, tip, dir, ALEN, AWID);
+}
+
+/* A signal from p0 to the box of node `to`, bowed by `bow` (a vector, or
+ * zero for a straight line). */
+static void signal_to_node(bg_diagram *d, sigrole role, bg_vec p0, int to, bg_vec bow, int hot) {
+  bg_vec ct = bg_v(d->nx[to], d->ny[to]);
+  bg_vec aim = bg_vlen(bow) > 0 ? bg_vadd(bg_vscale(bg_vadd(p0, ct), 0.5), bow) : p0;
+  bg_vec p1 = bg_node_exit(d, to, aim, 1.5);
+  signal_item(d, role, hot);
+  bg_scene_move(&d->scene, p0.x, p0.y);
+  bg_vec dir;
+  if (bg_vlen(bow) > 0) {
+    bg_vec chord = bg_vsub(p1, p0);
+    bg_vec c1 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 0.25)), bow);
+    bg_vec c2 = bg_vadd(bg_vadd(p0, bg_vscale(chord, 0.75)), bow);
+    dir = bg_vunit(bg_vsub(p1, c2));
+    bg_vec end = bg_vsub(p1, bg_vscale(dir, ALEN * 0.8));
+    bg_scene_curve(&d->scene, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
+  } else {
+    dir = bg_vunit(bg_vsub(p1, p0));
+    bg_vec end = bg_vsub(p1, bg_vscale(dir, ALEN * 0.8));
+    bg_scene_line(&d->scene, end.x, end.y);
+  }
+  signal_head(d, role, p1, dir, hot);
+}
+
+/* Between two nodes: straight, or bowed out to the barb side of a bond that
+ * joins the same two nodes (the bond number is on the other side). */
+static void signal_between(bg_diagram *d, sigrole role, int from, int to, int hot) {
+  bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
+  bg_vec bow = bg_v(0, 0), aim = ct;
+  int b = from < d->m->nelem && to < d->m->nelem ? bond_between(d->m, from, to) : -1;
+  if (b >= 0) {
+    bow = bg_vscale(bg_barb_side(d, b), 20);
+    aim = bg_vadd(bg_vscale(bg_vadd(cf, ct), 0.5), bow);
+  }
+  signal_to_node(d, role, bg_node_exit(d, from, aim, 0), to, bow, hot);
+}
+
+/* Self-modulation: a loop leaving the box and coming back, on its free side. */
+static void signal_self(bg_diagram *d, sigrole role, int e, int hot) {
+  bg_vec c = bg_v(d->nx[e], d->ny[e]), dir = bg_free_direction(d, e), n = bg_vleft(dir);
+  /* leave and re-enter the box 8 pt either side of where `dir` leaves it */
+  bg_vec q = bg_node_exit(d, e, bg_vadd(c, bg_vscale(dir, 100)), 0);
+  bg_vec p0 = bg_node_exit(d, e, bg_vadd(q, bg_vscale(n, 8)), 0);
+  bg_vec p1 = bg_node_exit(d, e, bg_vsub(q, bg_vscale(n, 8)), 1.5);
+  bg_vec c1 = bg_vadd(p0, bg_vadd(bg_vscale(dir, 24), bg_vscale(n, 10)));
+  bg_vec c2 = bg_vadd(p1, bg_vsub(bg_vscale(dir, 24), bg_vscale(n, 10)));
+  bg_vec adir = bg_vunit(bg_vsub(p1, c2)), end = bg_vsub(p1, bg_vscale(adir, ALEN * 0.8));
+  signal_item(d, role, hot);
+  bg_scene_move(&d->scene, p0.x, p0.y);
+  bg_scene_curve(&d->scene, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
+  signal_head(d, role, p1, adir, hot);
+}
+
+/* A bond variable (e7, f7): from a dot on the bond's middle. */
+static int signal_from_bond(bg_diagram *d, sigrole role, const char *var, int to, int hot) {
+  const bg_model *m = d->m;
+  if ((var[0] != 'e' && var[0] != 'f') || !var[1]) return -1;
+  char *end;
+  long num = strtol(var + 1, &end, 10);
+  int b = *end ? -1 : bg_model_find_bond(m, (int)num);
+  if (b < 0) return -1;
+  bg_vec p0 = d->bg[b].mid;
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
+  it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
+  double r = 1.6, k = 0.5523 * r;
+  bg_scene_move(&d->scene, p0.x + r, p0.y);
+  bg_scene_curve(&d->scene, p0.x + r, p0.y + k, p0.x + k, p0.y + r, p0.x, p0.y + r);
+  bg_scene_curve(&d->scene, p0.x - k, p0.y + r, p0.x - r, p0.y + k, p0.x - r, p0.y);
+  bg_scene_curve(&d->scene, p0.x - r, p0.y - k, p0.x - k, p0.y - r, p0.x, p0.y - r);
+  bg_scene_curve(&d->scene, p0.x + k, p0.y - r, p0.x + r, p0.y - k, p0.x + r, p0.y);
+  bg_scene_close(&d->scene);
+  signal_to_node(d, role, p0, to, bg_v(0, 0), hot);
+  return 0;
+}
+
+static void draw_signal(bg_diagram *d, int i) {
+  const bg_model *m = d->m;
+  int from = m->signal_from[i], to = m->signal_to[i], s = bg_signal_state(m, i);
+  int hot = d->hot_elem[to] && (from < 0 || d->hot_elem[from]);
+  char name[160];
+  const char *fname = from >= 0 ? m->elem_name[from] : m->signal_var[i];
+  snprintf(name, sizeof name, "%s->%s", fname, m->elem_name[to]);
+  sigrole role = {"signal", name};
+  if (from == to) signal_self(d, role, to, hot);
+  else if (from >= 0) signal_between(d, role, from, to, hot);
+  else if (s >= 0 && d->state_node[s] >= 0) signal_between(d, role, d->state_node[s], to, hot);
+  else signal_from_bond(d, role, m->signal_var[i], to, hot);
+}
+
+/* The integrator of a user state and the signals that feed it. */
+static void draw_state(bg_diagram *d, int s) {
+  const bg_model *m = d->m;
+  int n = d->state_node[s];
+  if (n < 0) return;
+  char role[160];
+  snprintf(role, sizeof role, "state-node %s", m->state_name[s]);
+  bg_scene_text(&d->scene, d->nlabel[n], d->nx[n], d->ny[n], d->st.font_size, 0.5, 0.5,
+                bg_diagram_ink(d, d->st.signal, !bg_diagram_muted(d)), role);
+  int in[64], nin = bg_state_inputs(m, s, in, 64);
+  for (int k = 0; k < nin; k++) {
+    char name[160];
+    snprintf(name, sizeof name, "%s->%s", m->elem_name[in[k]], m->state_name[s]);
+    signal_between(d, (sigrole){"state-input", name}, in[k], n, !bg_diagram_muted(d));
+  }
+}
+
+void bg_draw_signals(bg_diagram *d) {
+  int first = d->scene.nitem;
+  for (int s = 0; s < d->m->nstate; s++) draw_state(d, s);
+  for (int i = 0; i < d->m->nsignal; i++) draw_signal(d, i);
+  for (int i = first; i < d->scene.nitem; i++) /* numbers and tags keep off the lines */
+    if (d->scene.item[i].kind == BG_ITEM_STROKE) bg_obstacle_item(d, i);
+}

@@ -1,0 +1,218 @@
+/* Graphviz layout through libgvc/libcgraph (never the dot program): fixed
+ * size, unlabelled box nodes whose sizes come from pango measurements, so the
+ * positions fit the labels bgdraw draws. Graphviz's y axis points up: we flip. */
+#include "diagram/layout.h"
+
+#include <graphviz/cgraph.h>
+#include <graphviz/gvc.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/arena.h"
+
+static const char *const engines[] = {"dot", "neato", "fdp", "sfdp", "pinned"};
+
+int bg_layout_engine_ok(const char *name) {
+  for (size_t i = 0; i < sizeof engines / sizeof engines[0]; i++)
+    if (name && !strcmp(name, engines[i])) return 1;
+  return 0;
+}
+
+static void set_num(void *obj, const char *attr, double v) {
+  char buf[64];
+  snprintf(buf, sizeof buf, "%.4f", v);
+  agsafeset(obj, (char *)attr, buf, "");
+}
+
+static void graph_attrs(Agraph_t *g, const bg_layout_in *in, int is_dot) {
+  agsafeset(g, "splines", in->splines && is_dot ? "true" : "false", "");
+  set_num(g, "nodesep", in->node_sep / 72);
+  if (is_dot) {
+    agsafeset(g, "rankdir", (char *)(in->rankdir ? in->rankdir : "LR"), "");
+    set_num(g, "ranksep", in->rank_sep / 72);
+  } else {
+    agsafeset(g, "overlap", "false", "");
+    set_num(g, "sep", in->node_sep / 2);
+    set_num(g, "K", (in->rank_sep + 30) / 72);
+    agsafeset(g, "inputscale", "72", "");
+    agsafeset(g, "start", "1", ""); /* a fixed seed: reproducible layouts */
+  }
+  agattr(g, AGNODE, "shape", "box");
+  agattr(g, AGNODE, "fixedsize", "true");
+  agattr(g, AGNODE, "label", "");
+  agattr(g, AGEDGE, "dir", "none");
+  agattr(g, AGEDGE, "constraint", "true"); /* before any edge sets it to false */
+}
+
+static Agnode_t **add_nodes(Agraph_t *g, const bg_layout_in *in) {
+  Agnode_t **nodes = bg_xcalloc((size_t)in->nnode, sizeof *nodes);
+  for (int i = 0; i < in->nnode; i++) {
+    char name[32];
+    snprintf(name, sizeof name, "n%d", i);
+    nodes[i] = agnode(g, name, 1);
+    set_num(nodes[i], "width", in->w[i] / 72);
+    set_num(nodes[i], "height", in->h[i] / 72);
+    if (in->pinned && in->pinned[i]) {
+      char pos[96];
+      snprintf(pos, sizeof pos, "%.3f,%.3f!", in->px[i], in->py[i]);
+      agsafeset(nodes[i], "pos", pos, "");
+    }
+  }
+  return nodes;
+}
+
+/* Breadth-first distance of every node from the roots (all at once); a
+ * component without a root starts from its first node. */
+static int *bfs_depths(const bg_layout_in *in) {
+  int n = in->nnode, m = in->nedge;
+  int *adr = bg_xcalloc((size_t)n + 1, sizeof *adr), *adj = bg_xcalloc(2 * (size_t)m + 1, sizeof *adj);
+  int *fill = bg_xcalloc((size_t)n + 1, sizeof *fill), *depth = bg_xcalloc((size_t)n + 1, sizeof *depth);
+  int *queue = bg_xcalloc((size_t)n + 1, sizeof *queue);
+  for (int i = 0; i < m; i++) adr[in->tail[i] + 1]++, adr[in->head[i] + 1]++;
+  for (int v = 0; v < n; v++) adr[v + 1] += adr[v];
+  for (int i = 0; i < m; i++) {
+    adj[adr[in->tail[i]] + fill[in->tail[i]]++] = in->head[i];
+    adj[adr[in->head[i]] + fill[in->head[i]]++] = in->tail[i];
+  }
+  for (int v = 0; v < n; v++) depth[v] = -1;
+  int qh = 0, qt = 0;
+  for (int s = 0; s < n; s++)
+    if (in->root[s]) depth[s] = 0, queue[qt++] = s; /* one search from all roots */
+  for (int s = 0; s <= n; s++) {
+    for (; qh < qt; qh++)
+      for (int k = adr[queue[qh]]; k < adr[queue[qh] + 1]; k++)
+        if (depth[adj[k]] < 0) depth[adj[k]] = depth[queue[qh]] + 1, queue[qt++] = adj[k];
+    if (s < n && depth[s] < 0) depth[s] = 0, queue[qt++] = s; /* a component without roots */
+  }
+  free(adr), free(adj), free(fill), free(queue);
+  return depth;
+}
+
+/* Edges; with in->root (dot), each runs from the node nearer the roots to the
+ * farther one (rev[i] set where that is head → tail) and edges between nodes
+ * at the same distance do not constrain the ranks. */
+static Agedge_t **add_edges(Agraph_t *g, const bg_layout_in *in, Agnode_t **nodes, int is_dot,
+                            unsigned char *rev) {
+  Agedge_t **edges = bg_xcalloc((size_t)(in->nedge ? in->nedge : 1), sizeof *edges);
+  int *depth = is_dot && in->root ? bfs_depths(in) : NULL;
+  for (int i = 0; i < in->nedge; i++) {
+    char name[32];
+    snprintf(name, sizeof name, "e%d", i);
+    int t = in->tail[i], h = in->head[i];
+    rev[i] = depth && depth[t] > depth[h];
+    edges[i] = agedge(g, nodes[rev[i] ? h : t], nodes[rev[i] ? t : h], name, 1);
+    if (depth && depth[t] == depth[h]) agsafeset(edges[i], "constraint", "false", "");
+    if (is_dot && in->weight && in->weight[i] != 1) {
+      char w[16];
+      snprintf(w, sizeof w, "%d", in->weight[i]);
+      agsafeset(edges[i], "weight", w, "1");
+    }
+  }
+  free(depth);
+  return edges;
+}
+
+static void read_nodes(Agraph_t *g, Agnode_t **nodes, const bg_layout_in *in, bg_layout *out) {
+  boxf bb = GD_bb(g);
+  out->width = bb.UR.x - bb.LL.x;
+  out->height = bb.UR.y - bb.LL.y;
+  out->x = bg_xcalloc((size_t)in->nnode + 1, sizeof *out->x);
+  out->y = bg_xcalloc((size_t)in->nnode + 1, sizeof *out->y);
+  for (int i = 0; i < in->nnode; i++) {
+    out->x[i] = ND_coord(nodes[i]).x - bb.LL.x;
+    out->y[i] = bb.UR.y - ND_coord(nodes[i]).y;
+  }
+}
+
+/* Spline control points of each edge, flipped like the nodes. */
+static void read_edges(Agraph_t *g, Agedge_t **edges, const bg_layout_in *in,
+                       const unsigned char *rev, bg_layout *out) {
+  boxf bb = GD_bb(g);
+  size_t n = (size_t)in->nedge + 1;
+  out->spladr = bg_xcalloc(n, sizeof *out->spladr);
+  out->spln = bg_xcalloc(n, sizeof *out->spln);
+  int cap = 0;
+  for (int i = 0; i < in->nedge; i++) {
+    splines *spl = ED_spl(edges[i]);
+    out->spladr[i] = out->nspl;
+    if (!spl || spl->size < 1 || !in->splines) continue;
+    bezier *bz = &spl->list[0]; /* one piece: no compound or multi-part edges */
+    if (out->nspl + bz->size > cap) {
+      cap = 2 * (out->nspl + bz->size) + 64;
+      out->splx = bg_xrealloc(out->splx, (size_t)cap * sizeof *out->splx);
+      out->sply = bg_xrealloc(out->sply, (size_t)cap * sizeof *out->sply);
+    }
+    for (int k = 0; k < bz->size; k++) {
+      pointf p = bz->list[rev[i] ? bz->size - 1 - k : k]; /* back to tail → head */
+      out->splx[out->nspl + k] = p.x - bb.LL.x;
+      out->sply[out->nspl + k] = bb.UR.y - p.y;
+    }
+    out->spln[i] = bz->size;
+    out->nspl += bz->size;
+  }
+}
+
+int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn) {
+  memset(out, 0, sizeof *out);
+  const char *engine = in->engine ? in->engine : "dot";
+  if (!bg_layout_engine_ok(engine)) {
+    snprintf(err, errn, "unknown layout engine '%s' (dot, neato, fdp, sfdp, pinned)", engine);
+    return -1;
+  }
+  int is_dot = !strcmp(engine, "dot");
+  const char *gv_engine = !strcmp(engine, "pinned") ? "neato" : engine;
+  snprintf(out->engine, sizeof out->engine, "%s", engine);
+  out->nnode = in->nnode, out->nedge = in->nedge;
+  agseterr(AGMAX); /* Graphviz warnings are ours to report, not its to print */
+  /* one context per process: creating it reads Graphviz's plugin
+   * configuration (slow, and it leaks inside libgvc 2.43 every time) */
+  static GVC_t *gvc;
+  if (!gvc) gvc = gvContext();
+  Agraph_t *g = agopen("bg", Agdirected, NULL);
+  graph_attrs(g, in, is_dot);
+  Agnode_t **nodes = add_nodes(g, in);
+  unsigned char *rev = bg_xcalloc((size_t)in->nedge + 1, 1);
+  Agedge_t **edges = add_edges(g, in, nodes, is_dot, rev);
+  int rc = gvLayout(gvc, g, gv_engine);
+  if (rc == 0) {
+    read_nodes(g, nodes, in, out);
+    read_edges(g, edges, in, rev, out);
+    gvFreeLayout(gvc, g);
+  } else {
+    snprintf(err, errn, "Graphviz layout with '%s' failed", gv_engine);
+  }
+  free(nodes);
+  free(edges);
+  free(rev);
+  agclose(g);
+  return rc == 0 ? 0 : -1;
+}
+
+void bg_layout_free(bg_layout *l) {
+  free(l->x);
+  free(l->y);
+  free(l->spladr);
+  free(l->spln);
+  free(l->splx);
+  free(l->sply);
+  memset(l, 0, sizeof *l);
+}
+
+static void *dup_array(const void *src, size_t n, size_t size) {
+  if (!src) return NULL;
+  void *p = bg_xmalloc(n * size);
+  memcpy(p, src, n * size);
+  return p;
+}
+
+void bg_layout_copy(const bg_layout *src, bg_layout *out) {
+  *out = *src;
+  size_t nn = (size_t)src->nnode + 1, ne = (size_t)src->nedge + 1, ns = (size_t)src->nspl;
+  out->x = dup_array(src->x, nn, sizeof *out->x);
+  out->y = dup_array(src->y, nn, sizeof *out->y);
+  out->spladr = dup_array(src->spladr, ne, sizeof *out->spladr);
+  out->spln = dup_array(src->spln, ne, sizeof *out->spln);
+  out->splx = ns ? dup_array(src->splx, ns, sizeof *out->splx) : NULL;
+  out->sply = ns ? dup_array(src->sply, ns, sizeof *out->sply) : NULL;
+}

@@ -1,0 +1,26 @@
+/* Simulation plots: one panel per `plot` statement of the model (or one
+ * panel of the states when there is none), stacked over a shared time axis,
+ * drawn into a bg_scene so the same surfaces (SVG, PDF, PNG) replay them and
+ * the report can place them on a page. Conventions: docs/plots.md. */
+#ifndef BG_PLOT_H
+#define BG_PLOT_H
+#include "base/diag.h"
+#include "model/model.h"
+#include "scene/scene.h"
+#include "simulate/simulate.h"
+#include "scene/style.h"
+
+/* Draws every panel of r into out (initialised by the caller with
+ * bg_scene_init), within a box of width x height points at the origin.
+ * height <= 0 chooses a height from the number of panels. A partial result
+ * is marked where it stops. */
+void bg_plot_scene(const bg_model *m, const bg_simresult *r, const bg_style *st, double width,
+                   double height, bg_scene *out);
+
+/* --plot FILE: writes the plots to path (svg, pdf or png by its extension)
+ * atomically. style and style_dir as in bg_render_opts. Returns
+ * BG_RENDER_OK, BG_RENDER_ERROR or BG_RENDER_EWRITE (see render.h), with
+ * errors reported to dg. */
+int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
+                  const char *style_dir, const char *path, bg_diags *dg);
+#endif

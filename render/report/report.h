@@ -1,0 +1,34 @@
+/* The multi-page A4 PDF analysis report (--report FILE.pdf): title page
+ * with a verdict, the diagram with all layers, highlighted diagrams per
+ * path, loop and conflict, the causality trace, tables of paths, loops and
+ * conflicts, form and index with the rank history, the equations, the
+ * estimates beside the eigenvalues, the simulation plots and statistics.
+ * Contents list, page numbers and PDF outlines. Conventions: docs/report.md. */
+#ifndef BG_REPORT_H
+#define BG_REPORT_H
+#include "causality/analysis.h"
+#include "base/diag.h"
+#include "equations/eqsys.h"
+#include "equations/index.h"
+#include "model/model.h"
+#include "diagram/render.h"
+#include "simulate/simulate.h"
+
+/* What one run knows; everything borrowed; the nullable parts are missing
+ * when that stage did not run or failed (the report then says why). */
+typedef struct bg_report_input {
+  const bg_model *m;
+  const bg_analysis *a;
+  const bg_eqsys *eqs;          /* nullable */
+  const char *eqs_problem;      /* nullable: why there are no equations */
+  const bg_index_result *index; /* nullable: numeric index not computed */
+  const char *index_skipped;    /* nullable: why not (e.g. too many unknowns) */
+  const bg_simresult *sim;      /* nullable: no simulate block / not run */
+  int sim_status;               /* bg_simulate's return: 0 ok, 1 refused, 2 failed */
+  const bg_render_opts *ropts;  /* style, layout, verbose */
+} bg_report_input;
+
+/* Writes the report to path atomically. Returns BG_RENDER_OK,
+ * BG_RENDER_ERROR or BG_RENDER_EWRITE (render.h), errors reported to dg. */
+int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg);
+#endif

@@ -1,0 +1,494 @@
+/* Report sections 2 and 3: the diagram with every layer, and one
+ * highlighted diagram per path, loop and conflict worth showing. A diagram
+ * is scaled to fit its space, but never so far that its smallest text falls
+ * below RP_MIN_TEXT points: then it is cut into tiles on several pages
+ * (the whole diagram) or cropped to the highlighted item (highlights). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+#include "report/report_int.h"
+
+#define MAX_SCALE 1.25     /* small diagrams are enlarged at most this much */
+#define MAX_TILES 48       /* pages for the whole diagram */
+#define MAX_GRID 1024      /* tiles of the grid, empty ones included */
+#define MAX_HL_TILES 4     /* pages for one cropped highlight */
+#define TILE_OVERLAP 18.0  /* points of the diagram repeated on neighbouring tiles */
+#define MAX_HIGHLIGHTS 12  /* redrawn from section 2's layout: no layout of their own */
+
+/* ---------------------------------------------------------------- building */
+/* Keeps d until the PDF is written; NULL marks the report failed. */
+static bg_diagram *keep(rp_ctx *c, bg_diagram *d) {
+  if (!d) {
+    c->failed = 1;
+    return NULL;
+  }
+  if (c->ndiag == c->capdiag) {
+    c->capdiag = c->capdiag ? 2 * c->capdiag : 8;
+    c->diag = bg_xrealloc(c->diag, (size_t)c->capdiag * sizeof *c->diag);
+  }
+  c->diag[c->ndiag++] = d;
+  /* transparent: the page's own items (an overview grid) stay visible */
+  d->scene.background.a = 0;
+  return d;
+}
+
+/* Section 2's diagram: the one layout of the report. */
+static bg_diagram *build_full(rp_ctx *c) {
+  bg_render_opts o = {0};
+  if (c->in->ropts) o = *c->in->ropts;
+  o.show = BG_SHOW_ALL, o.highlight_kind = 0, o.highlight_index = 0;
+  return c->full = keep(c, bg_diagram_build(c->m, c->a, &o, c->dg));
+}
+
+/* A highlighted diagram: the full diagram's layout drawn again, so nodes are
+ * where they are in section 2. */
+static bg_diagram *build_highlight(rp_ctx *c, int kind, int index) {
+  if (!c->full) return keep(c, NULL);
+  return keep(c, bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg));
+}
+
+static double min_text(const bg_scene *s) {
+  double m = 0;
+  for (int i = 0; i < s->nitem; i++)
+    if (s->item[i].kind == BG_ITEM_TEXT && (m == 0 || s->item[i].size < m)) m = s->item[i].size;
+  return m > 0 ? m : RP_MIN_TEXT;
+}
+
+static double smallest_scale(const bg_scene *s) { return RP_MIN_TEXT / min_text(s); }
+
+static double fit_scale(double w, double h, double availw, double availh, double cap) {
+  double s = availw / w;
+  if (availh / h < s) s = availh / h;
+  return s < cap ? s : cap;
+}
+
+static void note(rp_doc *d, const char *fmt, double v) {
+  char buf[256];
+  snprintf(buf, sizeof buf, fmt, v);
+  rp_para(d, buf, RP_SIZE_SMALL, 0, 0, rp_grey);
+}
+
+/* ---------------------------------------------------------------- tiles */
+typedef struct tiling {
+  int nx, ny;
+  double tw, th;     /* tile size in diagram points */
+  double stepx, stepy;
+  double scale;
+  int num[MAX_GRID]; /* part number of each tile (row-major), 0: nothing drawn there */
+  int nused;
+} tiling;
+
+static void item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) {
+  if (it->kind == BG_ITEM_TEXT) {
+    double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;
+    b[0] = fmin(b[0], x), b[1] = fmin(b[1], y);
+    b[2] = fmax(b[2], x + it->tw), b[3] = fmax(b[3], y + it->th);
+    return;
+  }
+  for (int i = 0; i < it->nop; i++) {
+    const bg_scene_op *o = &s->op[it->opadr + i];
+    int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
+    for (int k = 0; k < npt; k++) {
+      b[0] = fmin(b[0], o->x[k]), b[1] = fmin(b[1], o->y[k]);
+      b[2] = fmax(b[2], o->x[k]), b[3] = fmax(b[3], o->y[k]);
+    }
+  }
+}
+
+
+static int tiles_for(double w, double h, double cw, double ch, double scale, tiling *t) {
+  t->scale = scale;
+  t->tw = cw / scale, t->th = ch / scale;
+  if (t->tw > w) t->tw = w;
+  if (t->th > h) t->th = h;
+  t->nx = w <= t->tw + 0.5 ? 1 : (int)ceil((w - TILE_OVERLAP) / (t->tw - TILE_OVERLAP));
+  t->ny = h <= t->th + 0.5 ? 1 : (int)ceil((h - TILE_OVERLAP) / (t->th - TILE_OVERLAP));
+  t->stepx = t->nx > 1 ? (w - t->tw) / (t->nx - 1) : 0;
+  t->stepy = t->ny > 1 ? (h - t->th) / (t->ny - 1) : 0;
+  return t->nx * t->ny;
+}
+
+/* Tiles [lo, hi] along one axis that [a, b] (relative to the region)
+ * reaches into by more than half the overlap. */
+static void tile_range(double a, double b, double step, double size, int n, int *lo, int *hi) {
+  double in = TILE_OVERLAP / 2;
+  if (step <= 0) {
+    *lo = 0, *hi = n - 1;
+    return;
+  }
+  *lo = (int)ceil((a - size + in) / step), *hi = (int)floor((b - in) / step);
+  if (*lo < 0) *lo = 0;
+  if (*hi > n - 1) *hi = n - 1;
+}
+
+/* Marks a box (region coordinates) in every tile it reaches. */
+static void mark_box(tiling *t, const double b[4]) {
+  int i0, i1, j0, j1;
+  tile_range(b[0], b[2], t->stepx, t->tw, t->nx, &i0, &i1);
+  tile_range(b[1], b[3], t->stepy, t->th, t->ny, &j0, &j1);
+  for (int j = j0; j <= j1; j++)
+    for (int i = i0; i <= i1; i++) t->num[j * t->nx + i] = 1;
+}
+
+/* Numbers the tiles of region r that show something: a text or a path
+ * point of the scene beyond the overlap. Returns the count. */
+static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
+  memset(t->num, 0, sizeof t->num);
+  for (int k = 0; k < s->nitem; k++) {
+    const bg_scene_item *it = &s->item[k];
+    if (it->kind == BG_ITEM_TEXT) {
+      double b[4] = {1e300, 1e300, -1e300, -1e300};
+      item_box(s, it, b);
+      double rb[4] = {b[0] - r[0], b[1] - r[1], b[2] - r[0], b[3] - r[1]};
+      mark_box(t, rb);
+      continue;
+    }
+    for (int i = 0; i < it->nop; i++) {
+      const bg_scene_op *o = &s->op[it->opadr + i];
+      int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
+      for (int q = 0; q < npt; q++) {
+        double rb[4] = {o->x[q] - r[0], o->y[q] - r[1], o->x[q] - r[0], o->y[q] - r[1]};
+        mark_box(t, rb);
+      }
+    }
+  }
+  t->nused = 0;
+  for (int i = 0; i < t->nx * t->ny; i++)
+    if (t->num[i]) t->num[i] = ++t->nused;
+  return t->nused;
+}
+
+/* The largest scale not above `scale` with at most max pages showing
+ * something (smaller than asked only when even that many are not enough). */
+static void plan_tiles(const bg_scene *s, const double r[4], double cw, double ch, double scale,
+                       int max, tiling *t) {
+  for (;; scale *= 0.92)
+    if (tiles_for(r[2], r[3], cw, ch, scale, t) <= MAX_GRID && number_tiles(s, r, t) <= max) return;
+}
+
+/* A map of the tiles: the whole region shrunk onto the page with the parts numbered. */
+static void overview(rp_doc *d, const bg_scene *s, const double r[4], const tiling *t) {
+  double cw = rp_content_w(d), ch = rp_room(d) - 10;
+  double sc = fit_scale(r[2], r[3], cw, ch, 1);
+  double x0 = rp_left() + (cw - r[2] * sc) / 2, y0 = d->y;
+  bg_scene *pg = rp_scene(d);
+  for (int j = 0; j < t->ny; j++)
+    for (int i = 0; i < t->nx; i++) {
+      if (!t->num[j * t->nx + i]) continue;
+      double x = x0 + i * t->stepx * sc, y = y0 + j * t->stepy * sc;
+      bg_scene_item *it = bg_scene_begin(pg, BG_ITEM_FILL, "tile");
+      it->fill = (bg_rgba){0.2, 0.35, 0.7, 0.06}, it->color = (bg_rgba){0.2, 0.35, 0.7, 0.8};
+      it->width = 0.6;
+      bg_scene_move(pg, x, y), bg_scene_line(pg, x + t->tw * sc, y);
+      bg_scene_line(pg, x + t->tw * sc, y + t->th * sc), bg_scene_line(pg, x, y + t->th * sc);
+      bg_scene_close(pg);
+      char num[32];
+      snprintf(num, sizeof num, "<b>%d</b>", t->num[j * t->nx + i]);
+      rp_text(d, num, x + 3, y + 2, 9, 0, (bg_rgba){0.2, 0.35, 0.7, 1});
+    }
+  rp_place(d, s, r[0], r[1], r[2], r[3], x0, y0, sc);
+  d->y += r[3] * sc + 6;
+}
+
+/* The region r (x, y, w, h of scene s) over t->nx x t->ny pages. */
+static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const tiling *t,
+                       int landscape, const char *what) {
+  for (int j = 0; j < t->ny; j++)
+    for (int i = 0; i < t->nx; i++) {
+      if (!t->num[j * t->nx + i]) continue;
+      rp_new_page(d, landscape);
+      char cap[256];
+      snprintf(cap, sizeof cap, "%s, part %d of %d (row %d, column %d), at %.0f %%", what,
+               t->num[j * t->nx + i], t->nused, j + 1, i + 1, 100 * t->scale);
+      rp_para(d, cap, RP_SIZE_SMALL, 0, 0, rp_grey);
+      d->y += 2;
+      double sx = r[0] + i * t->stepx, sy = r[1] + j * t->stepy;
+      rp_place(d, s, sx, sy, t->tw, t->th, rp_left(), d->y, t->scale);
+      d->y += t->th * t->scale;
+    }
+}
+
+/* ---------------------------------------------------------------- section 2 */
+static void diagram_caption(rp_ctx *c, bg_diagram *dg) {
+  bg_strbuf b = {0};
+  bg_sb_puts(&b, "Every layer: causal strokes (derivative causality in orange, conflicts in red), "
+                 "bond numbers, causal paths P<i>k</i>, topological loops L<i>k</i> with their gains, "
+                 "conflicts, modulating signals and the legend. Layout: ");
+  rp_esc(&b, bg_diagram_engine(dg));
+  bg_sb_puts(&b, ".");
+  rp_para(&c->body, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
+  bg_sb_free(&b);
+  rp_gap(&c->body, 4);
+}
+
+void rp_sec_diagram(rp_ctx *c) {
+  bg_diagram *dg = build_full(c);
+  if (!dg) return;
+  rp_doc *d = &c->body;
+  const bg_scene *s = &dg->scene;
+  double w = s->width, h = s->height, smin = smallest_scale(s);
+  int land = w > 1.15 * h;
+  rp_new_page(d, land);
+  rp_section(d, "Diagram", 1, 0, 0);
+  diagram_caption(c, dg);
+  double cw = rp_content_w(d), ch = rp_room(d) - 14;
+  double sc = fit_scale(w, h, cw, ch, MAX_SCALE);
+  double r[4] = {0, 0, w, h};
+  if (sc >= smin) {
+    rp_place(d, s, 0, 0, w, h, rp_left() + (cw - w * sc) / 2, d->y, sc);
+    d->y += h * sc + 4;
+    note(d, "Shown at %.0f %% of its natural size.", 100 * sc);
+    return;
+  }
+  tiling t;
+  double full = rp_page_room(d) - 14;
+  plan_tiles(s, r, cw, full, smin, MAX_TILES, &t);
+  bg_strbuf b = {0};
+  bg_sb_printf(&b, "The diagram is too large for one page at a readable size (its smallest text "
+                   "would be below %.0f pt), so it follows in %d parts at %.0f %%; the map below "
+                   "shows where each part lies.", RP_MIN_TEXT, t.nused, 100 * t.scale);
+  if (t.scale < smin) bg_sb_puts(&b, " Even so the diagram needs more pages than the report allows, "
+                                     "so its text is below that size.");
+  rp_para(d, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
+  bg_sb_free(&b);
+  rp_gap(d, 4);
+  overview(d, s, r, &t);
+  emit_tiles(d, s, r, &t, land, "Diagram");
+}
+
+/* ---------------------------------------------------------------- section 3: choice */
+typedef struct hl {
+  int kind;  /* 'p', 'l', 'c' */
+  int index; /* 0-based */
+  int prio;  /* lower is shown first */
+  int cloop; /* 'l': the causal loop it stands for, or -1 */
+} hl;
+
+static int cause_is(const bg_analysis *a, int l, const char *what, int *k) {
+  const char *cs = a->tloop_cause ? a->tloop_cause[l] : NULL;
+  size_t n = strlen(what);
+  if (!cs || strncmp(cs, what, n) || cs[n] != ' ') return 0;
+  *k = atoi(cs + n + 1) - 1;
+  return 1;
+}
+
+static int path_prio(const bg_analysis *a, int p) {
+  if (a->path_class[p] == 1 || a->path_class[p] == 2) return 1;
+  if (a->path_order[p] == 0) return 2;
+  return a->path_order[p] == BG_PATH_ORDER_NONE ? 4 : 3;
+}
+
+static int loop_candidate(const bg_analysis *a, int l, hl *h) {
+  int k;
+  if (cause_is(a, l, "causal path", &k)) return 0; /* drawn as that path */
+  if (cause_is(a, l, "causal loop", &k)) {
+    for (int j = 0; j < l; j++) {
+      int k2;
+      if (cause_is(a, j, "causal loop", &k2) && k2 == k) return 0; /* its other open loop */
+    }
+    *h = (hl){'l', l, 0, k};
+    return 1;
+  }
+  *h = (hl){'l', l, a->tloop_algebraic[l] ? 1 : 5, -1};
+  return 1;
+}
+
+static int kind_rank(int kind) { return kind == 'p' ? 0 : kind == 'l' ? 1 : 2; }
+
+static int by_prio(const void *x, const void *y) {
+  const hl *a = x, *b = y;
+  if (a->prio != b->prio) return a->prio - b->prio;
+  if (kind_rank(a->kind) != kind_rank(b->kind)) return kind_rank(a->kind) - kind_rank(b->kind);
+  return a->index - b->index;
+}
+
+static int by_kind(const void *x, const void *y) {
+  const hl *a = x, *b = y;
+  if (kind_rank(a->kind) != kind_rank(b->kind)) return kind_rank(a->kind) - kind_rank(b->kind);
+  return a->index - b->index;
+}
+
+/* Candidates, most telling first; returns how many. */
+static int candidates(const bg_analysis *a, hl **out) {
+  hl *h = bg_xmalloc(((size_t)a->npath + (size_t)a->ntloop + (size_t)a->nconflict + 1) * sizeof *h);
+  int n = 0;
+  for (int k = 0; k < a->nconflict; k++) h[n++] = (hl){'c', k, 0, -1};
+  for (int p = 0; p < a->npath; p++) h[n++] = (hl){'p', p, path_prio(a, p), -1};
+  for (int l = 0; l < a->ntloop; l++) n += loop_candidate(a, l, &h[n]);
+  qsort(h, (size_t)n, sizeof *h, by_prio);
+  *out = h;
+  return n;
+}
+
+/* ---------------------------------------------------------------- section 3: drawing */
+static int role_is(const char *role, const char *prefix, int k) {
+  char want[64];
+  snprintf(want, sizeof want, "%s%d", prefix, k);
+  return !strcmp(role, want);
+}
+
+/* Is item it part of the highlighted item (its layer, hot nodes and bonds)? */
+static int hot_item(const bg_diagram *dg, const hl *h, const bg_scene_item *it) {
+  const char *r = it->role;
+  int k = h->index + 1;
+  if (!strncmp(r, "node ", 5)) {
+    int e = bg_model_find_elem(dg->m, r + 5);
+    return e >= 0 && dg->hot_elem[e];
+  }
+  if (!strncmp(r, "bond ", 5)) {
+    int b = bg_model_find_bond(dg->m, atoi(r + 5));
+    return b >= 0 && dg->hot_bond[b];
+  }
+  if (h->kind == 'p') return role_is(r, "path ", k) || role_is(r, "path-tag ", k);
+  if (h->kind == 'l') return role_is(r, "loop ", k) || role_is(r, "gain loop=", k);
+  return role_is(r, "flash conflict=", k) || role_is(r, "conflict-text conflict=", k);
+}
+
+/* The region around the highlighted item, clamped to the drawn region d
+ * (x, y, w, h): x, y, w, h. */
+static void hot_region(const bg_diagram *dg, const hl *h, const double d[4], double r[4]) {
+  const bg_scene *s = &dg->scene;
+  double b[4] = {1e300, 1e300, -1e300, -1e300};
+  for (int i = 0; i < s->nitem; i++)
+    if (hot_item(dg, h, &s->item[i])) item_box(s, &s->item[i], b);
+  if (b[0] > b[2]) b[0] = d[0], b[1] = d[1], b[2] = d[0] + d[2], b[3] = d[1] + d[3];
+  double pad = 36;
+  b[0] = fmax(d[0], b[0] - pad), b[1] = fmax(d[1], b[1] - pad);
+  b[2] = fmin(d[0] + d[2], b[2] + pad), b[3] = fmin(d[1] + d[3], b[3] + pad);
+  r[0] = b[0], r[1] = b[1], r[2] = b[2] - b[0], r[3] = b[3] - b[1];
+}
+
+/* What is drawn with the style's margin around it, as bg_scene_fit would
+ * make the page, clamped to the page: x, y, w, h (a redrawn diagram's page
+ * is the full diagram's, legend included). */
+static void drawn_region(const bg_diagram *dg, double r[4]) {
+  const bg_scene *s = &dg->scene;
+  double x0, y0, x1, y1, mg = dg->st.margin;
+  bg_scene_bbox(s, &x0, &y0, &x1, &y1);
+  double rx = fmax(0, x0 - mg), ry = fmax(0, y0 - mg);
+  r[0] = rx, r[1] = ry;
+  r[2] = fmin(s->width, x0 - mg + ceil(x1 - x0 + 2 * mg)) - rx;
+  r[3] = fmin(s->height, y0 - mg + ceil(y1 - y0 + 2 * mg)) - ry;
+}
+
+static void hl_title(const rp_ctx *c, const hl *h, bg_strbuf *t) {
+  const bg_analysis *a = c->a;
+  const bg_model *m = c->m;
+  if (h->kind == 'p')
+    bg_sb_printf(t, "Causal path %d (%s, %s to %s)", h->index + 1, a->path_kind[h->index],
+                 m->elem_name[a->path_end0[h->index]], m->elem_name[a->path_end1[h->index]]);
+  else if (h->kind == 'c')
+    bg_sb_printf(t, "Conflict %d at %s", h->index + 1, m->elem_name[a->conflict_node[h->index]]);
+  else if (h->cloop >= 0)
+    bg_sb_printf(t, "Causal loop %d (topological loop %d)", h->cloop + 1, h->index + 1);
+  else
+    bg_sb_printf(t, "Topological loop %d (%s)", h->index + 1,
+                 a->tloop_cause && a->tloop_cause[h->index] ? a->tloop_cause[h->index] : "loop");
+}
+
+static void hl_text(const rp_ctx *c, const hl *h, bg_strbuf *t) {
+  const bg_analysis *a = c->a;
+  const bg_model *m = c->m;
+  int k = h->index;
+  if (h->kind == 'p') {
+    bg_sb_puts(t, "Bonds ");
+    rp_bond_list(t, m, a->path_bonds + a->path_adr[k], a->path_n[k]);
+    if (a->path_class[k]) bg_sb_printf(t, "; class %d", a->path_class[k]);
+    if (a->path_order[k] != BG_PATH_ORDER_NONE) bg_sb_printf(t, "; order %d%s", a->path_order[k],
+                                                             a->path_order[k] == 0 ? " (algebraic)" : "");
+    bg_sb_puts(t, ".");
+  } else if (h->kind == 'c') {
+    bg_sb_printf(t, "Type %d", a->conflict_type[k]);
+    if (a->conflict_type[k] == 2) bg_sb_printf(t, ", degree %d", a->conflict_degree[k]);
+    bg_sb_puts(t, "; bonds ");
+    rp_bond_list(t, m, a->conflict_bonds + a->conflict_adr[k], a->conflict_n[k]);
+    bg_sb_puts(t, ".");
+  } else {
+    bg_sb_printf(t, "%s loop of order %d, gain ", a->tloop_kind[k] == BG_TLOOP_FLAT ? "Flat" : "Open",
+                 a->tloop_order[k]);
+    rp_esc(t, a->tloop_gain[k]);
+    bg_sb_puts(t, " = ");
+    rp_num(t, a->tloop_gain_value[k]);
+    if (a->tloop_algebraic[k]) bg_sb_puts(t, " (algebraic)");
+    if (h->cloop >= 0) bg_sb_puts(t, "; the loop's other open loop runs the other way on the far side of its bonds");
+    bg_sb_puts(t, ".");
+  }
+}
+
+/* Draws one highlighted diagram at the cursor (two fit on a page when small). */
+static void show_one(rp_ctx *c, const hl *h) {
+  bg_diagram *dg = build_highlight(c, h->kind, h->index + 1);
+  if (!dg) return;
+  rp_doc *d = &c->body;
+  const bg_scene *s = &dg->scene;
+  double smin = smallest_scale(s), cw = rp_content_w(d);
+  double head = 40, half = (rp_page_room(d) - 30) / 2 - head, full = rp_page_room(d) - 30 - head;
+  double r[4];
+  drawn_region(dg, r);
+  double sc = fit_scale(r[2], r[3], cw, half, 1);
+  if (sc < smin) sc = fit_scale(r[2], r[3], cw, full, 1);
+  int cropped = sc < smin;
+  if (cropped) {
+    double drawn[4] = {r[0], r[1], r[2], r[3]};
+    hot_region(dg, h, drawn, r);
+    sc = fit_scale(r[2], r[3], cw, full, 1);
+  }
+  bg_strbuf t = {0}, x = {0};
+  hl_title(c, h, &t);
+  hl_text(c, h, &x);
+  if (cropped) bg_sb_puts(&x, " The diagram is cropped to the highlighted item.");
+  if (sc >= smin) {
+    rp_subsection(d, bg_sb_str(&t), 16 + r[3] * sc);
+    rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
+    d->y += 4;
+    rp_place(d, s, r[0], r[1], r[2], r[3], rp_left() + (cw - r[2] * sc) / 2, d->y, sc);
+    d->y += r[3] * sc + 10;
+  } else {
+    tiling tl;
+    plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, MAX_HL_TILES, &tl);
+    rp_subsection(d, bg_sb_str(&t), 30);
+    bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
+    rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
+    emit_tiles(d, s, r, &tl, 0, bg_sb_str(&t));
+  }
+  bg_sb_free(&t);
+  bg_sb_free(&x);
+}
+
+static void rest_note(rp_ctx *c, const hl *h, int from, int n) {
+  int np = 0, nl = 0, nc = 0;
+  for (int i = from; i < n; i++) np += h[i].kind == 'p', nl += h[i].kind == 'l', nc += h[i].kind == 'c';
+  bg_strbuf b = {0};
+  bg_sb_printf(&b, "%d more not drawn here (", n - from);
+  int first = 1;
+  if (np) rp_count(&b, np, "causal path"), first = 0;
+  if (nl) bg_sb_puts(&b, first ? "" : ", "), rp_count(&b, nl, "loop"), first = 0;
+  if (nc) bg_sb_puts(&b, first ? "" : ", "), rp_count(&b, nc, "conflict");
+  bg_sb_puts(&b, "); the tables list them all, and --highlight path:K, loop:K or conflict:K "
+                 "draws any one of them.");
+  rp_para(&c->body, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
+  bg_sb_free(&b);
+}
+
+void rp_sec_highlights(rp_ctx *c) {
+  rp_doc *d = &c->body;
+  hl *h;
+  int n = candidates(c->a, &h);
+  rp_section(d, "Highlighted paths, loops and conflicts", 1, 1, 0);
+  if (n == 0) {
+    rp_para(d, "The model has no causal paths, loops or conflicts to highlight.", RP_SIZE_BODY, 0, 0, rp_ink);
+    free(h);
+    return;
+  }
+  int shown = n < MAX_HIGHLIGHTS ? n : MAX_HIGHLIGHTS;
+  rp_para(d, "Each item in colour, everything else grey. Causal loops are drawn as one of their "
+             "two open topological loops; a flat loop caused by a causal path is drawn as that path.",
+          RP_SIZE_BODY, 0, 0, rp_ink);
+  if (shown < n) rest_note(c, h, shown, n);
+  qsort(h, (size_t)shown, sizeof *h, by_kind);
+  for (int i = 0; i < shown && !c->failed; i++) show_one(c, &h[i]);
+  free(h);
+}

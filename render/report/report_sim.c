@@ -1,0 +1,117 @@
+/* Report section 9: the simulation plots and the solver's statistics, or
+ * the reason there is no simulation. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "plot/plot.h"
+#include "report/report_int.h"
+
+static void para(rp_ctx *c, const char *markup) {
+  rp_para(&c->body, markup, RP_SIZE_BODY, 0, 0, rp_ink);
+  rp_gap(&c->body, 3);
+}
+
+static void row(rp_table *t, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static void row(rp_table *t, const char *key, const char *fmt, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  rp_table_cell(t, "%s", key);
+  rp_table_text(t, buf);
+}
+
+static void stats(rp_ctx *c, const bg_simresult *r) {
+  const bg_simspec *sp = &c->m->sim;
+  static const char *head[] = {"Solver statistics", ""};
+  rp_table t;
+  rp_table_init(&t, 2, head, "ll");
+  row(&t, "Solver", "%s%s%s", r->solver_used ? r->solver_used : "none",
+      r->linear_solver ? ", linear algebra " : "", r->linear_solver ? r->linear_solver : "");
+  if (r->solver_reason) row(&t, "Why this solver", "%s", r->solver_reason);
+  row(&t, "Time span", "%g to %g s%s", sp->t0, sp->t_end, r->partial ? " (stopped early)" : "");
+  if (r->partial) row(&t, "Time reached", "%.8g s", r->t_reached);
+  row(&t, "Output rows", "%d", r->nrows);
+  if (r->rtol > 0) row(&t, "Tolerances", "rtol %g, atol %g", r->rtol, r->atol);
+  row(&t, "Steps", "%ld", r->steps);
+  row(&t, "Function evaluations", "%ld", r->rhs_evals);
+  row(&t, "Jacobian evaluations", "%ld", r->jac_evals);
+  row(&t, "Error test failures", "%ld", r->err_test_fails);
+  row(&t, "Nonlinear iterations", "%ld", r->nonlin_iters);
+  if (r->ic_report && *r->ic_report) row(&t, "Initial values changed", "%s", r->ic_report);
+  if (r->ic_retries) row(&t, "Initial guesses retried", "%d", r->ic_retries);
+  rp_table_emit(&c->body, &t);
+}
+
+/* The plots' scene (kept in c until the PDF is written) and its scale on a
+ * page; NULL when there is nothing to plot. */
+static const bg_scene *plot_scene(rp_ctx *c, const bg_simresult *r, double *scale) {
+  if (!r || r->nrows < 1 || r->nout < 1) return NULL;
+  rp_doc *d = &c->body;
+  bg_scene *s = bg_xcalloc(1, sizeof *s);
+  bg_scene_init(s, c->st.font);
+  bg_plot_scene(c->m, r, &c->st, rp_content_w(d), 0, s);
+  s->background.a = 0;
+  c->plot = s;
+  double room = rp_page_room(d) - 30;
+  *scale = rp_content_w(d) / s->width;
+  if (s->height * *scale > room) *scale = room / s->height;
+  return s;
+}
+
+static void plots(rp_ctx *c, const bg_simresult *r, const bg_scene *s, double sc) {
+  if (!s) return;
+  rp_doc *d = &c->body;
+  double w = s->width, h = s->height;
+  rp_subsection(d, r->partial ? "Plots (partial results)" : "Plots", h * sc);
+  rp_place(d, s, 0, 0, w, h, rp_left() + (rp_content_w(d) - w * sc) / 2, d->y, sc);
+  d->y += h * sc + 8;
+}
+
+void rp_sec_simulation(rp_ctx *c) {
+  const bg_report_input *in = c->in;
+  const bg_simresult *r = in->sim;
+  double sc = 1;
+  const bg_scene *ps = in->sim_status != 1 ? plot_scene(c, r, &sc) : NULL;
+  double keep = ps ? ps->height * sc + 60 : 80;
+  if (keep > rp_page_room(&c->body) - 40) keep = rp_page_room(&c->body) - 40;
+  rp_section(&c->body, "Simulation", 1, 0, keep);
+  if (!c->m->sim.present) {
+    para(c, "The model has no <tt>simulate</tt> block, so there is nothing to plot. Add one, e.g. "
+            "<tt>simulate t_end = 1, dt = 0.01</tt>, and the report shows the plots here.");
+    return;
+  }
+  if (!r) {
+    para(c, "The simulation was not run.");
+    return;
+  }
+  bg_strbuf b = {0};
+  if (in->sim_status == 1) {
+    bg_sb_puts(&b, "<b>Simulation refused</b> (no solver was called). ");
+    const char *why = r->message ? r->message : in->eqs_problem ? in->eqs_problem : "no reason given";
+    size_t at = b.len;
+    rp_esc(&b, why);
+    if (b.s[at] >= 'a' && b.s[at] <= 'z') b.s[at] = (char)(b.s[at] - 'a' + 'A');
+    para(c, bg_sb_str(&b));
+    bg_sb_free(&b);
+    return;
+  }
+  if (in->sim_status == 2) {
+    const char *msg = r->message ? r->message : "no reason given", *pre = "simulation failed";
+    int same = !strncmp(msg, pre, strlen(pre));
+    bg_sb_puts(&b, same ? "<b>Simulation failed</b>" : "<b>Simulation failed</b>: ");
+    rp_esc(&b, same ? msg + strlen(pre) : msg);
+    bg_sb_puts(&b, r->nrows ? " The plots show the results up to the time reached." : "");
+    para(c, bg_sb_str(&b));
+  } else {
+    bg_sb_printf(&b, "From t = %g to %g s with <b>%s</b>: %d output rows.", c->m->sim.t0,
+                 c->m->sim.t_end, r->solver_used ? r->solver_used : "?", r->nrows);
+    para(c, bg_sb_str(&b));
+  }
+  bg_sb_free(&b);
+  plots(c, r, ps, sc);
+  stats(c, r);
+}

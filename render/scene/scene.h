@@ -1,0 +1,94 @@
+/* bg_scene: a backend-neutral display list. diagram.c fills it from the model
+ * and the analysis; each surface (SVG, PDF, PNG) replays it unchanged, so all
+ * formats show the same picture. Coordinates are points, y pointing down,
+ * origin at the top-left corner of the page. Every item carries a role tag
+ * ("stroke bond=3", "flash conflict=1") so tests can count what was drawn
+ * from a text dump instead of parsing SVG. */
+#ifndef BG_SCENE_H
+#define BG_SCENE_H
+#include "base/arena.h"
+#include "base/strbuf.h"
+
+typedef struct bg_rgba {
+  double r, g, b, a;
+} bg_rgba;
+
+typedef enum { BG_OP_MOVE, BG_OP_LINE, BG_OP_CURVE, BG_OP_CLOSE } bg_scene_opcode;
+
+/* One path operation; CURVE uses all three points (two controls, the end). */
+typedef struct bg_scene_op {
+  int code; /* bg_scene_opcode */
+  double x[3], y[3];
+} bg_scene_op;
+
+typedef enum {
+  BG_ITEM_STROKE, /* the path is stroked */
+  BG_ITEM_FILL,   /* the path is filled, then outlined when width > 0 */
+  BG_ITEM_TEXT    /* pango markup anchored at (x, y) */
+} bg_item_kind;
+
+typedef struct bg_scene_item {
+  int kind;         /* bg_item_kind */
+  int opadr, nop;   /* path operations, into bg_scene.op */
+  bg_rgba color;    /* line or text colour */
+  bg_rgba fill;     /* FILL only */
+  double width;     /* line width; FILL: outline width, 0 = none */
+  double dash[2];   /* on, off lengths; dash[0] == 0: solid */
+  int round;        /* round caps and joins (else butt caps, miter joins) */
+  const char *text; /* TEXT: pango markup, owned by the scene */
+  double x, y;      /* TEXT: anchor */
+  double size;      /* TEXT: font size in points */
+  double halign, valign; /* TEXT: 0 left/top, 0.5 centre, 1 right/bottom */
+  double tw, th;    /* TEXT: measured size, points */
+  const char *role; /* owned by the scene */
+} bg_scene_item;
+
+typedef struct bg_scene {
+  double width, height; /* page size in points */
+  bg_rgba background;
+  const char *font;     /* font family for every text item; owned */
+  const char *title;    /* nullable; owned */
+  bg_scene_item *item;
+  int nitem, capitem;
+  bg_scene_op *op;
+  int nop, capop;
+  bg_arena arena;       /* strings */
+} bg_scene;
+
+void bg_scene_init(bg_scene *s, const char *font);
+void bg_scene_free(bg_scene *s);
+/* Starts a new item (path items get their operations from the calls below).
+ * The returned pointer is valid until the next bg_scene_begin. */
+bg_scene_item *bg_scene_begin(bg_scene *s, int kind, const char *role_fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void bg_scene_move(bg_scene *s, double x, double y);
+void bg_scene_line(bg_scene *s, double x, double y);
+void bg_scene_curve(bg_scene *s, double x1, double y1, double x2, double y2, double x3,
+                    double y3);
+void bg_scene_close(bg_scene *s);
+/* A text item; markup is copied. */
+bg_scene_item *bg_scene_text(bg_scene *s, const char *markup, double x, double y, double size,
+                             double halign, double valign, bg_rgba color, const char *role);
+/* Bounding box of everything drawn (line widths and text boxes included);
+ * returns 0 when the scene is empty. */
+int bg_scene_bbox(const bg_scene *s, double *x0, double *y0, double *x1, double *y1);
+/* Moves everything so the bounding box starts at (margin, margin) and sets
+ * the page size to the box plus margins. */
+void bg_scene_fit(bg_scene *s, double margin);
+/* Lists every item, one a line: role, kind, colour and rounded geometry.
+ * Stable text, meant for tests and debugging. */
+void bg_scene_dump(const bg_scene *s, bg_strbuf *out);
+/* Number of items whose role starts with prefix followed by a space or the
+ * end of the role ("path" counts "path 1", not "path-arrow 1"). */
+int bg_scene_count(const bg_scene *s, const char *prefix);
+
+/* Text metrics, implemented with pango in surface_cairo.c so that measuring
+ * and drawing use the same font settings: the logical size in points of
+ * markup set in font at size points. */
+void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h);
+/* Appends the first n bytes of s (or s up to its end) with pango markup's
+ * special characters escaped; bg_markup_escape takes all of s. Every text
+ * item that shows user text (names, labels, titles, gains) goes through it. */
+void bg_markup_escapen(bg_strbuf *b, const char *s, size_t n);
+void bg_markup_escape(bg_strbuf *b, const char *s);
+#endif

@@ -1,0 +1,47 @@
+/* Surfaces: replay a bg_scene with cairo into SVG, PDF or PNG bytes.
+ * surface_cairo.c holds the replay and the pango text code shared by the
+ * three format files; only these four files include cairo or pango. */
+#ifndef BG_SURFACE_H
+#define BG_SURFACE_H
+#include "scene/scene.h"
+#include "base/strbuf.h"
+
+/* Each appends the whole file to out and returns 0, or -1 when cairo failed
+ * (nothing useful in out). */
+int bg_surface_svg_write(const bg_scene *s, bg_strbuf *out);
+int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out);
+/* scale: pixels per point (2 gives 144 dpi). */
+int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out);
+
+/* ---------------------------------------------------------------- multi-page PDF
+ * (the report). A page is its own scene (page size = scene size) with other
+ * scenes placed on it: the rectangle (sx, sy, sw, sh) of `scene`, in that
+ * scene's points, drawn scaled by `scale` with its corner at page point
+ * (x, y) and clipped to the rectangle. Placed scenes are drawn after the
+ * page's own items; everything is borrowed. */
+typedef struct bg_surface_place {
+  const bg_scene *scene;
+  double sx, sy, sw, sh;
+  double x, y, scale;
+} bg_surface_place;
+
+typedef struct bg_surface_page {
+  const bg_scene *scene;
+  const bg_surface_place *place;
+  int nplace;
+} bg_surface_page;
+
+/* A PDF outline entry (bookmark): level 0 at the top, level k under the
+ * last entry of level k - 1; page 0-based, y from the page's top. */
+typedef struct bg_surface_outline {
+  const char *title;
+  int level;
+  int page;
+  double y;
+} bg_surface_outline;
+
+/* Writes every page, the outlines and the metadata (title nullable; fixed
+ * creation date as in bg_surface_pdf_write) to out. 0, or -1 when cairo failed. */
+int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surface_outline *ol,
+                         int nol, const char *title, bg_strbuf *out);
+#endif

@@ -1,0 +1,130 @@
+/* Scene replay with cairo and text with pango (through pangocairo). Text is
+ * measured and drawn with the same settings — no hint metrics, no glyph
+ * position rounding, 72 units per inch — so SVG, PDF and PNG agree with the
+ * layout's idea of every label's size. */
+#include "scene/surface_cairo.h"
+
+#include <pango/pangocairo.h>
+#include <string.h>
+
+cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigned int len) {
+  bg_sb_putn((bg_strbuf *)closure, (const char *)data, len);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+/* Font options free of the surface's defaults (hinting differs per backend). */
+static cairo_font_options_t *neutral_font_options(void) {
+  cairo_font_options_t *fo = cairo_font_options_create();
+  cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+  cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+  return fo;
+}
+
+static void setup_context(PangoContext *ctx) {
+  cairo_font_options_t *fo = neutral_font_options();
+  pango_cairo_context_set_font_options(ctx, fo);
+  cairo_font_options_destroy(fo);
+  pango_cairo_context_set_resolution(ctx, 72);
+  pango_context_set_round_glyph_positions(ctx, FALSE);
+}
+
+static PangoLayout *make_layout(PangoContext *ctx, const char *font, double size,
+                                const char *markup) {
+  PangoLayout *lay = pango_layout_new(ctx);
+  PangoFontDescription *fd = pango_font_description_from_string(font);
+  pango_font_description_set_absolute_size(fd, size * PANGO_SCALE);
+  pango_layout_set_font_description(lay, fd);
+  pango_font_description_free(fd);
+  pango_layout_set_markup(lay, markup, -1);
+  return lay;
+}
+
+static void layout_size(PangoLayout *lay, double *w, double *h) {
+  PangoRectangle logical;
+  pango_layout_get_extents(lay, NULL, &logical);
+  *w = (double)logical.width / PANGO_SCALE;
+  *h = (double)logical.height / PANGO_SCALE;
+}
+
+/* One measuring context for the process; surfaces get their own contexts
+ * with the same settings. */
+void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h) {
+  static PangoContext *ctx;
+  if (!ctx) {
+    ctx = pango_font_map_create_context(pango_cairo_font_map_get_default());
+    setup_context(ctx);
+  }
+  PangoLayout *lay = make_layout(ctx, font, size, markup);
+  layout_size(lay, w, h);
+  g_object_unref(lay);
+}
+
+static void set_color(cairo_t *cr, bg_rgba c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a); }
+
+static void replay_path(cairo_t *cr, const bg_scene *s, const bg_scene_item *it) {
+  cairo_new_path(cr);
+  for (int i = 0; i < it->nop; i++) {
+    const bg_scene_op *o = &s->op[it->opadr + i];
+    switch (o->code) {
+    case BG_OP_MOVE: cairo_move_to(cr, o->x[0], o->y[0]); break;
+    case BG_OP_LINE: cairo_line_to(cr, o->x[0], o->y[0]); break;
+    case BG_OP_CURVE:
+      cairo_curve_to(cr, o->x[0], o->y[0], o->x[1], o->y[1], o->x[2], o->y[2]);
+      break;
+    default: cairo_close_path(cr); break;
+    }
+  }
+}
+
+static void set_line(cairo_t *cr, const bg_scene_item *it) {
+  cairo_set_line_width(cr, it->width);
+  cairo_set_line_cap(cr, it->round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+  cairo_set_line_join(cr, it->round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_MITER);
+  if (it->dash[0] > 0) cairo_set_dash(cr, it->dash, 2, 0);
+  else cairo_set_dash(cr, NULL, 0, 0);
+}
+
+static void replay_shape(cairo_t *cr, const bg_scene *s, const bg_scene_item *it) {
+  replay_path(cr, s, it);
+  set_line(cr, it);
+  if (it->kind == BG_ITEM_FILL) {
+    set_color(cr, it->fill);
+    if (it->width > 0) {
+      cairo_fill_preserve(cr);
+      set_color(cr, it->color);
+      cairo_stroke(cr);
+    } else {
+      cairo_fill(cr);
+    }
+  } else {
+    set_color(cr, it->color);
+    cairo_stroke(cr);
+  }
+}
+
+static void replay_text(cairo_t *cr, PangoContext *ctx, const bg_scene *s,
+                        const bg_scene_item *it) {
+  PangoLayout *lay = make_layout(ctx, s->font, it->size, it->text);
+  double w, h;
+  layout_size(lay, &w, &h);
+  set_color(cr, it->color);
+  cairo_move_to(cr, it->x - it->halign * w, it->y - it->valign * h);
+  pango_cairo_show_layout(cr, lay);
+  g_object_unref(lay);
+}
+
+void bg_surface_replay(cairo_t *cr, const bg_scene *s) {
+  cairo_font_options_t *fo = neutral_font_options();
+  cairo_set_font_options(cr, fo);
+  cairo_font_options_destroy(fo);
+  PangoContext *ctx = pango_cairo_create_context(cr);
+  setup_context(ctx);
+  set_color(cr, s->background);
+  cairo_paint(cr);
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    if (it->kind == BG_ITEM_TEXT) replay_text(cr, ctx, s, it);
+    else replay_shape(cr, s, it);
+  }
+  g_object_unref(ctx);
+}

@@ -1,0 +1,14 @@
+/* Shared by the cairo surface files: scene replay and a byte sink. */
+#ifndef BG_SURFACE_CAIRO_H
+#define BG_SURFACE_CAIRO_H
+#include <cairo.h>
+
+#include "scene/scene.h"
+#include "base/strbuf.h"
+
+/* Draws every item of s on cr (background first). Sets font options that
+ * make text metrics identical on every surface. */
+void bg_surface_replay(cairo_t *cr, const bg_scene *s);
+/* A cairo_write_func_t appending to the bg_strbuf passed as closure. */
+cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigned int len);
+#endif

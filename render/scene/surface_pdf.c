@@ -1,0 +1,94 @@
+/* PDF output through cairo's PDF surface. cairo 1.16 stamps the creation
+ * date from the clock and ignores SOURCE_DATE_EPOCH, so we set it ourselves
+ * (from SOURCE_DATE_EPOCH when set, else a fixed date) for reproducible files. */
+#include <cairo-pdf.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "scene/surface.h"
+#include "scene/surface_cairo.h"
+
+/* ISO 8601 date for the PDF metadata. */
+static void creation_date(char *buf, size_t n) {
+  const char *sde = getenv("SOURCE_DATE_EPOCH");
+  char *end = NULL;
+  long long secs = sde ? strtoll(sde, &end, 10) : 0;
+  if (!sde || end == sde || *end || secs < 0) secs = 946684800; /* 2000-01-01 */
+  time_t t = (time_t)secs;
+  struct tm tm;
+  gmtime_r(&t, &tm);
+  strftime(buf, n, "%Y-%m-%dT%H:%M:%SZ", &tm);
+}
+
+int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
+  cairo_surface_t *sf =
+      cairo_pdf_surface_create_for_stream(bg_surface_sink, out, s->width, s->height);
+  char date[64];
+  creation_date(date, sizeof date);
+  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_CREATE_DATE, date);
+  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_MOD_DATE, date);
+  if (s->title) cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_TITLE, s->title);
+  cairo_t *cr = cairo_create(sf);
+  bg_surface_replay(cr, s);
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(sf);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
+  cairo_surface_destroy(sf);
+  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+}
+
+/* ---------------------------------------------------------------- multi-page */
+static void draw_place(cairo_t *cr, const bg_surface_place *p) {
+  cairo_save(cr);
+  cairo_rectangle(cr, p->x, p->y, p->sw * p->scale, p->sh * p->scale);
+  cairo_clip(cr);
+  cairo_translate(cr, p->x, p->y);
+  cairo_scale(cr, p->scale, p->scale);
+  cairo_translate(cr, -p->sx, -p->sy);
+  bg_surface_replay(cr, p->scene);
+  cairo_restore(cr);
+}
+
+/* Outline ids by level; an entry whose parent level is missing hangs at the root. */
+static void add_outlines(cairo_surface_t *sf, const bg_surface_outline *ol, int nol) {
+  enum { MAXLEVEL = 8 };
+  int parent[MAXLEVEL + 1] = {CAIRO_PDF_OUTLINE_ROOT};
+  for (int i = 0; i < nol; i++) {
+    int lv = ol[i].level < 0 ? 0 : ol[i].level > MAXLEVEL - 1 ? MAXLEVEL - 1 : ol[i].level;
+    char link[96];
+    snprintf(link, sizeof link, "page=%d pos=[0 %.0f]", ol[i].page + 1, ol[i].y);
+    int id = cairo_pdf_surface_add_outline(sf, parent[lv], ol[i].title, link,
+                                           lv == 0 ? CAIRO_PDF_OUTLINE_FLAG_OPEN : 0);
+    parent[lv + 1] = id;
+    for (int k = lv + 2; k <= MAXLEVEL; k++) parent[k] = CAIRO_PDF_OUTLINE_ROOT;
+  }
+}
+
+int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surface_outline *ol,
+                         int nol, const char *title, bg_strbuf *out) {
+  if (npage < 1) return -1;
+  const bg_scene *first = pages[0].scene;
+  cairo_surface_t *sf =
+      cairo_pdf_surface_create_for_stream(bg_surface_sink, out, first->width, first->height);
+  char date[64];
+  creation_date(date, sizeof date);
+  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_CREATE_DATE, date);
+  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_MOD_DATE, date);
+  if (title) cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_TITLE, title);
+  cairo_t *cr = cairo_create(sf);
+  for (int i = 0; i < npage && cairo_status(cr) == CAIRO_STATUS_SUCCESS; i++) {
+    cairo_pdf_surface_set_size(sf, pages[i].scene->width, pages[i].scene->height);
+    bg_surface_replay(cr, pages[i].scene);
+    for (int k = 0; k < pages[i].nplace; k++) draw_place(cr, &pages[i].place[k]);
+    cairo_show_page(cr);
+  }
+  add_outlines(sf, ol, nol);
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(sf);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
+  cairo_surface_destroy(sf);
+  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+}

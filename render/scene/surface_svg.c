@@ -1,0 +1,20 @@
+/* SVG output through cairo's SVG surface (version 1.1, points). */
+#include <cairo-svg.h>
+
+#include "scene/surface.h"
+#include "scene/surface_cairo.h"
+
+int bg_surface_svg_write(const bg_scene *s, bg_strbuf *out) {
+  cairo_surface_t *sf =
+      cairo_svg_surface_create_for_stream(bg_surface_sink, out, s->width, s->height);
+  cairo_svg_surface_restrict_to_version(sf, CAIRO_SVG_VERSION_1_1);
+  cairo_svg_surface_set_document_unit(sf, CAIRO_SVG_UNIT_PT);
+  cairo_t *cr = cairo_create(sf);
+  bg_surface_replay(cr, s);
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(sf);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
+  cairo_surface_destroy(sf);
+  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+}

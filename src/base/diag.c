@@ -1,0 +1,111 @@
+#include "base/diag.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/arena.h"
+
+void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen) {
+  memset(d, 0, sizeof *d);
+  d->file = file;
+  d->src = src;
+  d->srclen = srclen;
+}
+
+void bg_diags_free(bg_diags *d) {
+  for (int i = 0; i < d->n; i++) free(d->items[i].msg);
+  free(d->items);
+  d->items = NULL;
+  d->n = d->cap = 0;
+}
+
+static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va_list ap) {
+  va_list ap2;
+  va_copy(ap2, ap);
+  int n = vsnprintf(NULL, 0, fmt, ap);
+  char *msg = bg_xmalloc((size_t)(n > 0 ? n : 0) + 1);
+  vsnprintf(msg, (size_t)(n > 0 ? n : 0) + 1, fmt, ap2);
+  va_end(ap2);
+  if (d->n == d->cap) {
+    d->cap = d->cap ? d->cap * 2 : 16;
+    d->items = bg_xrealloc(d->items, (size_t)d->cap * sizeof *d->items);
+  }
+  d->items[d->n++] = (bg_diag){sev, loc, msg};
+  if (sev == BG_SEV_ERROR) d->nerrors++;
+  if (sev == BG_SEV_WARNING) d->nwarnings++;
+}
+
+#define DEFINE_ADDER(name, sev)                                        \
+  void name(bg_diags *d, bg_srcloc loc, const char *fmt, ...) {        \
+    va_list ap;                                                        \
+    va_start(ap, fmt);                                                 \
+    add(d, sev, loc, fmt, ap);                                         \
+    va_end(ap);                                                        \
+  }
+DEFINE_ADDER(bg_diag_error, BG_SEV_ERROR)
+DEFINE_ADDER(bg_diag_warning, BG_SEV_WARNING)
+DEFINE_ADDER(bg_diag_note, BG_SEV_NOTE)
+
+/* The text of source line `line` (1-based) without its line end. */
+static const char *find_line(const bg_diags *d, int line, size_t *len) {
+  if (!d->src || line < 1) return NULL;
+  const char *p = d->src, *end = d->src + d->srclen;
+  for (int l = 1; l < line; l++) {
+    p = memchr(p, '\n', (size_t)(end - p));
+    if (!p) return NULL;
+    p++;
+  }
+  const char *e = memchr(p, '\n', (size_t)(end - p));
+  if (!e) e = end;
+  if (e > p && e[-1] == '\r') e--;
+  *len = (size_t)(e - p);
+  return p;
+}
+
+static void print_one(const bg_diags *d, const bg_diag *g, FILE *out) {
+  static const char *const sevname[] = {"error", "warning", "note"};
+  if (g->loc.line > 0)
+    fprintf(out, "%s:%d:%d: %s: %s\n", d->file, g->loc.line, g->loc.col,
+            sevname[g->sev], g->msg);
+  else
+    fprintf(out, "%s: %s: %s\n", d->file, sevname[g->sev], g->msg);
+  size_t len = 0;
+  const char *line = find_line(d, g->loc.line, &len);
+  if (!line) return;
+  /* A very long line (generated input) is shown as a window around the
+   * caret, marked with "..." on the cut sides, so the caret stays visible. */
+  enum { WIDTH = 100 };
+  size_t from = 0, col = g->loc.col > 0 ? (size_t)g->loc.col - 1 : 0;
+  if (len > WIDTH && col > WIDTH / 2) from = col - WIDTH / 2;
+  if (from > len) from = len;
+  size_t shown = len - from > WIDTH ? WIDTH : len - from;
+  const char *lead = from ? "..." : "";
+  fprintf(out, "%5d | %s%.*s%s\n      | %s", g->loc.line, lead, (int)shown, line + from,
+          from + shown < len ? "..." : "", from ? "   " : "");
+  /* Keep tabs so the caret lines up under the same column. */
+  for (size_t i = from; i < col && i < len; i++) fputc(line[i] == '\t' ? '\t' : ' ', out);
+  fputs("^\n", out);
+}
+
+static int cmp_pos(const void *a, const void *b) {
+  const bg_diag *x = *(bg_diag *const *)a, *y = *(bg_diag *const *)b;
+  if (x->loc.line != y->loc.line) return x->loc.line < y->loc.line ? -1 : 1;
+  if (x->loc.col != y->loc.col) return x->loc.col < y->loc.col ? -1 : 1;
+  return x < y ? -1 : (x > y);
+}
+
+void bg_diags_print(const bg_diags *d, FILE *out) {
+  /* Notes stay right after the diagnostic they follow; only the others sort. */
+  const bg_diag **order = bg_xmalloc((size_t)(d->n ? d->n : 1) * sizeof *order);
+  int k = 0;
+  for (int i = 0; i < d->n; i++)
+    if (d->items[i].sev != BG_SEV_NOTE || i == 0) order[k++] = &d->items[i];
+  qsort(order, (size_t)k, sizeof *order, cmp_pos);
+  for (int i = 0; i < k; i++) {
+    print_one(d, order[i], out);
+    for (const bg_diag *g = order[i] + 1; g < d->items + d->n && g->sev == BG_SEV_NOTE; g++)
+      print_one(d, g, out);
+  }
+  free(order);
+}

@@ -1,0 +1,111 @@
+#include "base/strbuf.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/arena.h"
+
+static void reserve(bg_strbuf *b, size_t extra) {
+  if (b->len + extra + 1 <= b->cap) return;
+  size_t cap = b->cap ? b->cap * 2 : 64;
+  while (cap < b->len + extra + 1) cap *= 2;
+  b->s = bg_xrealloc(b->s, cap);
+  b->cap = cap;
+}
+
+void bg_sb_putn(bg_strbuf *b, const char *s, size_t n) {
+  reserve(b, n);
+  memcpy(b->s + b->len, s, n);
+  b->len += n;
+  b->s[b->len] = '\0';
+}
+
+void bg_sb_putc(bg_strbuf *b, char c) { bg_sb_putn(b, &c, 1); }
+void bg_sb_puts(bg_strbuf *b, const char *s) { bg_sb_putn(b, s, strlen(s)); }
+
+void bg_sb_printf(bg_strbuf *b, const char *fmt, ...) {
+  va_list ap, ap2;
+  va_start(ap, fmt);
+  va_copy(ap2, ap);
+  int n = vsnprintf(NULL, 0, fmt, ap);
+  va_end(ap);
+  if (n > 0) {
+    reserve(b, (size_t)n);
+    vsnprintf(b->s + b->len, (size_t)n + 1, fmt, ap2);
+    b->len += (size_t)n;
+  }
+  va_end(ap2);
+}
+
+void bg_sb_json_str(bg_strbuf *b, const char *s) {
+  bg_sb_putc(b, '"');
+  for (; *s; s++) {
+    unsigned char c = (unsigned char)*s;
+    if (c == '"' || c == '\\') {
+      bg_sb_putc(b, '\\');
+      bg_sb_putc(b, (char)c);
+    } else if (c == '\n') {
+      bg_sb_puts(b, "\\n");
+    } else if (c == '\t') {
+      bg_sb_puts(b, "\\t");
+    } else if (c < 0x20) {
+      bg_sb_printf(b, "\\u%04x", c);
+    } else {
+      bg_sb_putc(b, (char)c);
+    }
+  }
+  bg_sb_putc(b, '"');
+}
+
+void bg_sb_json_num(bg_strbuf *b, double v) {
+  if (!isfinite(v)) {
+    bg_sb_puts(b, "null");
+    return;
+  }
+  if (v == 0) v = 0; /* no "-0" */
+  char buf[40];
+  /* The shortest of %.15g..%.17g that reads back as the same double. */
+  for (int prec = 15; prec <= 17; prec++) {
+    snprintf(buf, sizeof buf, "%.*g", prec, v);
+    if (strtod(buf, NULL) == v) break;
+  }
+  bg_sb_puts(b, buf);
+}
+
+const char *bg_sb_str(const bg_strbuf *b) { return b->s ? b->s : ""; }
+
+void bg_sb_clear(bg_strbuf *b) {
+  b->len = 0;
+  if (b->s) b->s[0] = '\0';
+}
+
+void bg_sb_free(bg_strbuf *b) {
+  free(b->s);
+  b->s = NULL;
+  b->len = b->cap = 0;
+}
+
+/* Levenshtein distance for "did you mean" hints; strings longer than 63
+ * characters are simply far (99). */
+int bg_edit_distance(const char *a, const char *b) {
+  int la = (int)strlen(a), lb = (int)strlen(b);
+  if (la > 63 || lb > 63) return 99;
+  int row[64];
+  for (int j = 0; j <= lb; j++) row[j] = j;
+  for (int i = 1; i <= la; i++) {
+    int diag = row[0];
+    row[0] = i;
+    for (int j = 1; j <= lb; j++) {
+      int up = row[j];
+      int best = diag + (a[i - 1] != b[j - 1]);
+      if (up + 1 < best) best = up + 1;
+      if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
+      row[j] = best;
+      diag = up;
+    }
+  }
+  return row[lb];
+}

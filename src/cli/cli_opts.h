@@ -1,0 +1,40 @@
+/* Command-line options of bgdraw (docs/cli.md). Parsing only; main.c acts on them. */
+#ifndef BG_CLI_OPTS_H
+#define BG_CLI_OPTS_H
+#include <stdio.h>
+
+#include "model/model.h"
+
+enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64 };
+
+typedef struct bg_cli_output {
+  const char *path;
+  const char *format; /* svg pdf png json dot tex c csv */
+} bg_cli_output;
+
+typedef struct bg_cli_opts {
+  const char *model_path;
+  bg_cli_output out[BG_MAX_OUTPUTS];
+  int nout;
+  const char *force_format; /* -T */
+  const char *causality;    /* --causality, NULL = model's or scap */
+  const char *show;         /* --show */
+  const char *highlight;    /* --highlight */
+  const char *style;        /* --style */
+  const char *layout;       /* --layout */
+  const char *report;       /* --report FILE.pdf */
+  const char *plot;         /* --plot FILE */
+  const char *equations;    /* --equations FORM */
+  const char *max_list;     /* --max-list N: listing cap of paths and loops */
+  int simulate, check, quiet, verbose, help, version;
+  bg_param_override sets[BG_MAX_SETS];
+  int nsets;
+} bg_cli_opts;
+
+/* Parses argv into o. On a usage error prints "bgdraw: error: ..." with a
+ * hint to stderr and returns -1 (the caller exits 2). */
+int bg_cli_parse(int argc, char **argv, bg_cli_opts *o);
+void bg_cli_print_help(FILE *out);
+/* Frees what parsing allocated (the --set names). */
+void bg_cli_free(bg_cli_opts *o);
+#endif

@@ -1,0 +1,162 @@
+/* The writers of bgdraw's outputs: diagrams, JSON, equations, CSV, plots
+ * and the report, each written atomically; their exit statuses (docs/cli.md). */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli/cli_run.h"
+#include "equations/eqprint.h"
+#include "base/fileio.h"
+#include "json/json.h"
+#include "json/json_sim.h"
+#include "plot/plot.h"
+#include "report/report.h"
+#include "base/strbuf.h"
+
+/* Diagram options from the command line; -1 on a usage error. */
+int cli_render_options(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  bg_render_opts *ro = &r->ropts;
+  ro->show = BG_SHOW_DEFAULT;
+  if (o->show && bg_show_parse(o->show, &ro->show) != 0) {
+    fprintf(stderr, "bgdraw: error: unknown layer in --show '%s' (layers: strokes, numbers, "
+                    "paths, loops, conflicts, signals, labels, legend; or all, none)\n", o->show);
+    return -1;
+  }
+  if (o->highlight && bg_highlight_parse(o->highlight, &ro->highlight_kind,
+                                         &ro->highlight_index) != 0) {
+    fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
+            o->highlight);
+    return -1;
+  }
+  if (o->max_list) {
+    char *end;
+    long n = strtol(o->max_list, &end, 10);
+    if (end == o->max_list || *end || n < 1 || n > 100000000) {
+      fprintf(stderr, "bgdraw: error: --max-list takes a positive whole number, not '%s'\n",
+              o->max_list);
+      return -1;
+    }
+    r->max_list = (int)n;
+  }
+  ro->style = o->style;
+  ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
+  ro->layout = o->layout;
+  ro->verbose = o->verbose;
+  return 0;
+}
+
+/* The default output when no -o is given: out/<model>.svg. */
+void cli_default_output(run *r, char *buf, size_t n) {
+  mkdir("out", 0777); /* may exist already */
+  snprintf(buf, n, "out/%s.svg", r->model->name);
+  r->opts.out[0].path = buf;
+  r->opts.out[0].format = "svg";
+  r->opts.nout = 1;
+}
+
+static int write_text(const char *path, const bg_strbuf *sb) {
+  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
+  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
+  return EXIT_WRITE;
+}
+
+static int write_json(run *r, const char *path) {
+  bg_strbuf sb = {0};
+  bg_json_write_analysis(r->model, &r->analysis, &sb);
+  if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
+  int rc = write_text(path, &sb);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int write_diagram(run *r, const bg_cli_output *out) {
+  if (!r->diagram) {
+    r->diagram = bg_diagram_build(r->model, &r->analysis, &r->ropts, &r->dg);
+    if (!r->diagram) {
+      bg_diags_print(&r->dg, stderr);
+      return EXIT_USAGE;
+    }
+  }
+  int rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
+  if (rc == BG_RENDER_OK) return EXIT_OK;
+  bg_diags_print(&r->dg, stderr);
+  return rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}
+
+int cli_write_equations(run *r, const char *path, const char *form) {
+  if (!r->eqsys) {
+    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path ? path : "stdout",
+            r->eqsys_problem ? r->eqsys_problem : "unknown reason");
+    return EXIT_MODEL;
+  }
+  bg_strbuf sb = {0};
+  bg_eqprint(r->eqsys, form, &sb);
+  int rc = path ? write_text(path, &sb) : (fputs(bg_sb_str(&sb), stdout), EXIT_OK);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int write_csv(run *r, const char *path) {
+  if (!r->simulated || !r->sim.nrows) return EXIT_OK; /* refused: nothing to write */
+  bg_strbuf sb = {0};
+  bg_csv_write(&r->sim, &sb);
+  int rc = write_text(path, &sb);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int is_diagram_format(const char *f) {
+  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
+}
+
+static int write_one(run *r, const bg_cli_output *out) {
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: writing %s\n", out->path);
+  if (!strcmp(out->format, "json")) return write_json(r, out->path);
+  if (is_diagram_format(out->format)) return write_diagram(r, out);
+  if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
+  if (!strcmp(out->format, "c")) return cli_write_equations(r, out->path, "c");
+  if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
+  BG_FATAL("option parsing let through output format '%s'", out->format);
+}
+
+int cli_write_outputs(run *r) {
+  for (int i = 0; i < r->opts.nout; i++) {
+    int rc = write_one(r, &r->opts.out[i]);
+    if (rc) return rc;
+  }
+  return EXIT_OK;
+}
+
+/* --plot FILE: the simulation plots, also of a partial run; none when the
+ * run was refused (no rows). The extension was checked with the options. */
+int cli_write_plot(run *r) {
+  const char *path = r->opts.plot;
+  if (!r->simulated || !r->sim.nrows) return EXIT_OK;
+  bg_diags dg;
+  bg_diags_init(&dg, "bgdraw", NULL, 0);
+  int rc = bg_plot_write(r->model, &r->sim, r->ropts.style, r->ropts.style_dir, path, &dg);
+  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
+  else if (r->opts.verbose) fprintf(stderr, "bgdraw: wrote %s\n", path);
+  bg_diags_free(&dg);
+  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}
+
+/* --report FILE.pdf; the simulation ran when the model has a simulate block. */
+int cli_write_report(run *r) {
+  char skipped[160] = "";
+  if (r->eqsys && !r->index_done)
+    snprintf(skipped, sizeof skipped, "%d unknowns, more than the dense algorithm's limit of %d",
+             bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
+  bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
+                        r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
+                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts};
+  bg_diags dg;
+  bg_diags_init(&dg, "bgdraw", NULL, 0);
+  int rc = bg_report_write(&in, r->opts.report, &dg);
+  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
+  bg_diags_free(&dg);
+  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+}

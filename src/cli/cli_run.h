@@ -1,0 +1,59 @@
+/* One run of the bgdraw command line: what it holds, and the writers of its
+ * outputs (cli_outputs.c). main.c runs the stages; only these CLI files
+ * touch argv, output paths and exit codes. */
+#ifndef BG_CLI_RUN_H
+#define BG_CLI_RUN_H
+#include <stddef.h>
+
+#include "causality/analysis.h"
+#include "cli/cli_opts.h"
+#include "base/diag.h"
+#include "equations/eqsys.h"
+#include "equations/index.h"
+#include "model/model.h"
+#include "lang/parse.h"
+#include "diagram/render.h"
+#include "simulate/simulate.h"
+
+enum { EXIT_OK = 0, EXIT_MODEL = 1, EXIT_USAGE = 2, EXIT_SIM = 3, EXIT_WRITE = 4 };
+
+/* Above this many unknowns the dense index computation (SVDs and a
+ * generalised eigenvalue problem, cubic in the unknowns: about 1 s at 500 in
+ * a Release build, 5 s at 1000) is skipped; docs/cli.md. */
+enum { INDEX_MAX_UNKNOWNS = 500 };
+
+/* Everything one run holds; freed by run_free. */
+typedef struct run {
+  bg_cli_opts opts;
+  char *src;
+  size_t srclen;
+  bg_diags dg;
+  bg_ast *ast;
+  bg_model *model;
+  bg_analysis analysis;
+  int analysed;
+  bg_eqsys *eqsys;      /* NULL when the equations could not be formed */
+  char *eqsys_problem;  /* why not, in words (owned); nullable */
+  bg_index_result index;
+  int index_done;
+  bg_simresult sim;
+  int sim_status; /* bg_simulate: 0 ok, 1 refused, 2 failed */
+  int simulated;
+  bg_render_opts ropts;
+  int max_list; /* --max-list; 0: the default caps */
+  bg_diagram *diagram; /* laid out once, on the first diagram output */
+} run;
+
+/* Diagram options from the command line (and --max-list); -1 after a
+ * usage message. */
+int cli_render_options(run *r);
+/* The default output when no -o is given: out/<model>.svg (buf holds the path). */
+void cli_default_output(run *r, char *buf, size_t n);
+/* Every -o in order; the first failure's exit status, or EXIT_OK. */
+int cli_write_outputs(run *r);
+/* --equations FORM to path, or to stdout when path is NULL. */
+int cli_write_equations(run *r, const char *path, const char *form);
+/* --plot FILE and --report FILE.pdf. */
+int cli_write_plot(run *r);
+int cli_write_report(run *r);
+#endif

@@ -1,0 +1,206 @@
+/* bgdraw: the command line. Runs the stages a request needs (load, analyse,
+ * equations, numeric index, simulation); cli_outputs.c writes the outputs.
+ * Only the cli files touch argv, output paths and exit codes. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "causality/causality.h"
+#include "cli/cli_run.h"
+#include "equations/eqsym.h"
+#include "base/fileio.h"
+#include "analysis/paths.h"
+#include "base/strbuf.h"
+#include "analysis/summary.h"
+
+#ifndef BG_VERSION
+#define BG_VERSION "0.0.0"
+#endif
+
+static void run_free(run *r) {
+  if (r->simulated) bg_simresult_free(&r->sim);
+  if (r->index_done) bg_index_free(&r->index);
+  if (r->eqsys) bg_eqsys_free(r->eqsys);
+  free(r->eqsys_problem);
+  if (r->diagram) bg_diagram_free(r->diagram);
+  if (r->analysed) bg_analysis_free(&r->analysis);
+  if (r->model) bg_model_free(r->model);
+  if (r->ast) bg_ast_free(r->ast);
+  bg_diags_free(&r->dg);
+  free(r->src);
+  bg_cli_free(&r->opts);
+}
+
+/* Reads, parses and compiles the model; diagnostics stay in r->dg. */
+static int load_model(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  r->src = bg_read_file(o->model_path, &r->srclen);
+  bg_diags_init(&r->dg, o->model_path, r->src, r->srclen);
+  if (!r->src) {
+    bg_srcloc none = {0, 0};
+    bg_diag_error(&r->dg, none, "cannot read the model: %s", strerror(errno));
+    return -1;
+  }
+  r->ast = bg_parse_string(o->model_path, r->src, r->srclen, &r->dg);
+  if (!r->ast || r->dg.nerrors) return -1;
+  r->model = bg_model_compile(r->ast, o->sets, o->nsets, &r->dg);
+  bg_ast_free(r->ast);
+  r->ast = NULL;
+  return r->model && !r->dg.nerrors ? 0 : -1;
+}
+
+/* Causality and causal analysis with the method the user asked for, else
+ * the model's own, else SCAP. */
+static void analyse(run *r) {
+  int method = r->model->method;
+  if (r->opts.causality) method = bg_method_parse(r->opts.causality);
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: causality (%s)\n", bg_method_name(method));
+  bg_analysis_init(&r->analysis, r->model);
+  r->analysed = 1;
+  bg_causality_assign(r->model, method, &r->analysis, &r->dg);
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: causal paths, loops, form and index\n");
+  bg_analysis_limits lim = {r->max_list, r->max_list};
+  bg_analysis_run(r->model, &r->analysis, &lim);
+}
+
+/* The equations. A model whose equations cannot be formed is not an error
+ * here: the reason is kept for the outputs that need equations. */
+static void derive_equations(run *r) {
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: equations\n");
+  bg_diags eqd;
+  bg_diags_init(&eqd, r->opts.model_path, r->src, r->srclen);
+  r->eqsys = bg_eqsys_build(r->model, &r->analysis, &eqd);
+  if (!r->eqsys) {
+    r->eqsys_problem = strdup(eqd.n ? eqd.items[0].msg : "the equations could not be formed");
+    bg_diags_free(&eqd);
+    return;
+  }
+  bg_diags_free(&eqd);
+  /* what the equations become after symbolic elimination (JSON reduced_form) */
+  r->analysis.reduced_form = bg_eqred_form(r->eqsys);
+}
+
+/* The numeric index of the linearised model (JSON index.numeric). */
+static void numeric_index(run *r) {
+  if (!r->eqsys) return;
+  if (bg_eqsys_n(r->eqsys) > INDEX_MAX_UNKNOWNS) {
+    if (r->opts.verbose)
+      fprintf(stderr, "bgdraw: %d unknowns: numeric index skipped (dense algorithm, limit %d)\n",
+              bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
+    return;
+  }
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: numeric index (Algorithm 4.1)\n");
+  bg_index_compute(r->eqsys, r->model, &r->index);
+  r->index_done = 1;
+  r->analysis.index_numeric_set = r->index.index != BG_INDEX_FAILED;
+  r->analysis.index_numeric = r->index.index;
+}
+
+static int wants_format(const bg_cli_opts *o, const char *format) {
+  for (int i = 0; i < o->nout; i++)
+    if (!strcmp(o->out[i].format, format)) return 1;
+  return 0;
+}
+
+/* Only what some output shows is computed: a diagram alone needs neither
+ * equations nor the index, so large models draw quickly. */
+static int wants_index(const bg_cli_opts *o) {
+  return o->check || o->report || wants_format(o, "json");
+}
+
+static int wants_equations(const bg_cli_opts *o) {
+  return wants_index(o) || o->equations || o->simulate || o->plot || wants_format(o, "tex") ||
+         wants_format(o, "c") || wants_format(o, "csv");
+}
+
+static int wants_simulation(const bg_cli_opts *o) {
+  return o->simulate || o->plot || wants_format(o, "csv");
+}
+
+/* Runs the simulation; prints the refusal or failure. EXIT_SIM on failure
+ * (partial results are still written), EXIT_OK otherwise. */
+static int simulate(run *r) {
+  bg_sim_opts so = {0};
+  so.verbose = r->opts.verbose;
+  so.eqs_problem = r->eqsys_problem;
+  int rc = bg_simulate(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+  r->sim_status = rc;
+  r->simulated = 1;
+  if (r->sim.ic_report && !r->opts.quiet && !r->opts.verbose) /* -v printed it already */
+    fprintf(stderr, "bgdraw: note: initial values made consistent: %s\n", r->sim.ic_report);
+  if (rc == 0) {
+    if (r->opts.verbose && r->sim.solver_reason)
+      fprintf(stderr, "bgdraw: solver %s: %s\n", r->sim.solver_used, r->sim.solver_reason);
+    return EXIT_OK;
+  }
+  const char *why = r->sim.message ? r->sim.message : r->eqsys_problem;
+  if (rc == 1) fprintf(stderr, "bgdraw: simulation refused: %s\n", why ? why : "unknown reason");
+  else fprintf(stderr, "bgdraw: %s\n", why ? why : "simulation failed"); /* "simulation failed at t = ..." */
+  return EXIT_SIM;
+}
+
+static int print_check(run *r) {
+  bg_strbuf sb = {0};
+  bg_model_summary(r->model, &sb);
+  bg_sb_putc(&sb, '\n');
+  bg_analysis_summary(r->model, &r->analysis, &sb);
+  if (r->index_done) {
+    bg_sb_puts(&sb, "numeric index: ");
+    if (r->index.index >= 0) bg_sb_printf(&sb, "%d", r->index.index);
+    else bg_sb_puts(&sb, r->index.index == BG_INDEX_SINGULAR ? "singular" : "not computed");
+    if (r->index.message) bg_sb_printf(&sb, " (%s)", r->index.message);
+    bg_sb_putc(&sb, '\n');
+  } else if (r->eqsys_problem) {
+    bg_sb_printf(&sb, "equations: %s\n", r->eqsys_problem);
+  }
+  fputs(bg_sb_str(&sb), stdout);
+  bg_sb_free(&sb);
+  return EXIT_OK;
+}
+
+int main(int argc, char **argv) {
+  run r;
+  memset(&r, 0, sizeof r);
+  if (bg_cli_parse(argc, argv, &r.opts) != 0) {
+    bg_cli_free(&r.opts);
+    return EXIT_USAGE;
+  }
+  if (r.opts.help || r.opts.version) {
+    if (r.opts.help) bg_cli_print_help(stdout);
+    else printf("bgdraw %s\n", BG_VERSION);
+    bg_cli_free(&r.opts);
+    return EXIT_OK;
+  }
+  if (cli_render_options(&r) != 0) {
+    bg_cli_free(&r.opts);
+    return EXIT_USAGE;
+  }
+  int rc = load_model(&r);
+  if (!r.opts.quiet || rc) bg_diags_print(&r.dg, stderr);
+  if (rc) {
+    run_free(&r);
+    return EXIT_MODEL;
+  }
+  analyse(&r);
+  if (wants_equations(&r.opts)) derive_equations(&r);
+  if (wants_index(&r.opts)) numeric_index(&r);
+  char defpath[1024];
+  if (r.opts.check) rc = print_check(&r);
+  else if (r.opts.equations && r.opts.nout == 0) rc = cli_write_equations(&r, NULL, r.opts.equations);
+  else {
+    int wantsim = wants_simulation(&r.opts);
+    int simrc = wantsim || (r.opts.report && r.model->sim.present) ? simulate(&r) : EXIT_OK;
+    int refused = simrc && !r.sim.nrows;
+    if (!wantsim && r.sim_status == 1) simrc = refused = 0; /* the report says why */
+    if (r.opts.equations) rc = cli_write_equations(&r, NULL, r.opts.equations);
+    if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations && !r.opts.plot && !r.opts.report)
+      cli_default_output(&r, defpath, sizeof defpath);
+    if (!rc) rc = cli_write_outputs(&r);
+    if (!rc && r.opts.plot) rc = cli_write_plot(&r);
+    if (!rc && r.opts.report) rc = cli_write_report(&r);
+    if (!rc) rc = refused ? EXIT_SIM : simrc;
+  }
+  run_free(&r);
+  return rc;
+}

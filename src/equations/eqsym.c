@@ -1,0 +1,118 @@
+/* Equation trees of bg_eqsys (eqsys_int.h) as bg_sym expressions, and the
+ * names of their leaves (eqsym.h). */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "equations/eqsym.h"
+#include "equations/eqsys_int.h"
+
+/* What a model expression reads: 1 bond variables, 2 states/time/inputs. */
+static int x_reads(const bg_model *m, int root) {
+  const bg_xnode *n = &m->xnode[root];
+  int r = 0;
+  switch (n->op) {
+  case BG_X_EFFORT: case BG_X_FLOW: return 1;
+  case BG_X_STATE: case BG_X_STORE: case BG_X_TIME: case BG_X_INPUT: return 2;
+  case BG_X_NUM: case BG_X_PARAM: return 0;
+  default:
+    for (int k = 0; k < n->nargs && k < 3; k++) {
+      int q = x_reads(m, n->arg[k]);
+      r = q == 1 || r == 1 ? 1 : r > q ? r : q;
+    }
+    return r;
+  }
+}
+
+/* The two-port whose modulus is expression root when it is modulated by
+ * states only (an MTF T(phi)): it prints as its name; else -1. */
+static int modulus_elem(const bg_model *m, int root) {
+  for (int e = 0; e < m->nelem; e++)
+    if (bg_elem_is_twoport(m->elem_kind[e]) && m->elem_expr[e] == root) return x_reads(m, root) == 2 ? e : -1;
+  return -1;
+}
+
+/* Signals replaced by the expressions of a map (read only). */
+static int sig_cb(void *ctx, int kind, int ref) {
+  const int *map = ctx;
+  return kind == SYM_SIG && map[ref] >= 0 ? map[ref] : -1;
+}
+
+int bg_eqsym_tree(bg_sym *S, const bg_eqsys *s, int nd, const int *sigmap) {
+  const eq_node *n = &s->node[nd];
+  const bg_model *m = s->m;
+  int state0 = s->nint - m->nstate; /* unknown index of user state 0 */
+  switch (n->kind) {
+  case EQ_NUM: return bg_sym_num(S, n->c);
+  case EQ_SIG: return sigmap && sigmap[n->a] >= 0 ? sigmap[n->a] : bg_sym_leaf(S, SYM_SIG, n->a);
+  case EQ_Y: return bg_sym_leaf(S, SYM_Y, n->a);
+  case EQ_YP: return bg_sym_leaf(S, SYM_YP, n->a);
+  case EQ_X: {
+    int st[64], *sy = m->nstate <= 64 ? st : bg_xmalloc((size_t)m->nstate * sizeof(int));
+    for (int k = 0; k < m->nstate; k++) sy[k] = state0 + k;
+    int r = bg_sym_from_x(S, n->a, sy, s->store_y), e = modulus_elem(m, n->a);
+    if (sy != st) free(sy);
+    if (e >= 0) return bg_sym_alias(S, e, r);
+    return sigmap ? bg_sym_subst(S, r, sig_cb, (void *)sigmap) : r;
+  }
+  case EQ_MUL: case EQ_DIV: {
+    int a = bg_eqsym_tree(S, s, n->a, sigmap), b = bg_eqsym_tree(S, s, n->b, sigmap);
+    return n->kind == EQ_MUL ? bg_sym_mul(S, a, b) : bg_sym_div(S, a, b);
+  }
+  default: { /* EQ_LIN */
+    int tmp[32], *t = n->b <= 32 ? tmp : bg_xmalloc((size_t)n->b * sizeof(int));
+    for (int k = 0; k < n->b; k++) t[k] = bg_eqsym_tree(S, s, s->lin_node[n->a + k], sigmap);
+    int r = bg_sym_sum(S, 0, n->b, t, s->lin_coef + n->a);
+    if (t != tmp) free(t);
+    return r;
+  }
+  }
+}
+
+/* ------------------------------------------------------------ names */
+void bg_eqsym_latex_name(const char *nm, bg_strbuf *out) {
+  const char *dot = strrchr(nm, '.');
+  if (dot && dot[1]) {
+    bg_sb_printf(out, "%s_{\\mathrm{", dot + 1);
+    bg_sb_putn(out, nm, (size_t)(dot - nm));
+    bg_sb_puts(out, "}}");
+  } else if ((nm[0] == 'e' || nm[0] == 'f') && isdigit((unsigned char)nm[1])) {
+    bg_sb_printf(out, "%c_{%s}", nm[0], nm + 1);
+  } else if (nm[0] && !nm[1]) {
+    bg_sb_puts(out, nm);
+  } else {
+    bg_sb_printf(out, "\\mathrm{%s}", nm);
+  }
+}
+
+void bg_eqsym_name(void *ctx, int kind, int ref, int latex, bg_strbuf *out) {
+  const bg_eqsys *s = ctx;
+  const bg_model *m = s->m;
+  const char *nm = NULL;
+  switch (kind) {
+  case SYM_PARAM: nm = m->param_name[ref]; break;
+  case SYM_INPUT: nm = m->input_name[ref]; break;
+  case SYM_T: nm = "t"; break;
+  case SYM_Y: nm = s->uname[ref]; break;
+  case SYM_ALIAS: nm = m->elem_name[ref]; break;
+  case SYM_YP:
+    if (latex) bg_sb_puts(out, "\\dot{"), bg_eqsym_latex_name(s->uname[ref], out), bg_sb_puts(out, "}");
+    else bg_sb_printf(out, "%s'", s->uname[ref]);
+    return;
+  default:
+    bg_sb_printf(out, latex ? "%c_{%d}" : "%c%d", ref & 1 ? 'f' : 'e', m->bond_num[ref / 2]);
+    return;
+  }
+  if (latex) bg_eqsym_latex_name(nm, out);
+  else bg_sb_puts(out, nm);
+}
+
+void bg_eqsym_aliases(bg_sym *S, const bg_eqsys *s, int latex, bg_strbuf *out) {
+  for (int k = 0; k < S->nalias; k++) {
+    if (S->alias_expr[k] < 0) continue;
+    bg_eqsym_name((void *)s, SYM_ALIAS, k, latex, out);
+    bg_sb_puts(out, latex ? " &= " : " = ");
+    bg_sym_print(S, S->alias_expr[k], latex, bg_eqsym_name, (void *)s, out);
+    bg_sb_puts(out, latex ? " \\\\\n" : "\n");
+  }
+}

@@ -1,0 +1,86 @@
+/* bg_eqsys: the model's equations in computational order, ready to evaluate
+ * numerically (simulation, linearisation, index). Built from a causal bond
+ * graph (bg_model + bg_analysis); never modifies either.
+ *
+ * Unknowns y = [differential unknowns (states: integral stores' q/p, user
+ * states, dependent stores' q/p); algebraic unknowns z (the algebraic
+ * variables of algebraic blocks, after eliminating what can be computed
+ * explicitly in sorted order)]. An ODE has nz = 0 and no dependent stores.
+ *
+ * Ownership: bg_eqsys_build returns an object the caller frees with
+ * bg_eqsys_free; the model and analysis are borrowed and must outlive it.
+ * Evaluation functions use scratch memory inside the object: not
+ * thread-safe, no allocation. */
+#ifndef BG_EQSYS_H
+#define BG_EQSYS_H
+#include "causality/analysis.h"
+#include "base/diag.h"
+#include "model/model.h"
+
+typedef struct bg_eqsys bg_eqsys;
+
+/* Builds the equation system. Returns NULL (with a diagnostic) when the
+ * causality is incomplete, Lagrange causality inserted a 1-junction into a
+ * bond, or the system cannot be formed. Under Lagrange causality the flow
+ * of each artificial source's 1-junction is an algebraic unknown ("ma.f")
+ * whose residual is the junction's effort balance. */
+bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg);
+void bg_eqsys_free(bg_eqsys *s);
+
+int bg_eqsys_n(const bg_eqsys *s);          /* nx + nz */
+int bg_eqsys_nx(const bg_eqsys *s);         /* differential unknowns, first in y */
+int bg_eqsys_is_ode(const bg_eqsys *s);     /* nz == 0 and every state independent */
+const char *bg_eqsys_name(const bg_eqsys *s, int i); /* "L1.p", "phi", "e4", "R1.e" */
+/* 1 for unknowns whose derivative appears (IDASetId), 0 for algebraic ones. */
+int bg_eqsys_is_differential(const bg_eqsys *s, int i);
+
+/* Initial values from the model (q0, p0, state init; algebraic unknowns get
+ * a guess consistent where it can be computed explicitly, else 0). */
+void bg_eqsys_initial(const bg_eqsys *s, double *y0);
+
+/* Newton on the algebraic rows (dependent stores' constraints, algebraic
+ * unknowns) with the states of y held and yp = 0, at most maxit steps; y is
+ * updated in place. Dense: skipped above 3000 unknowns. 0, or -1 when an
+ * evaluation failed. (Called by bg_eqsys_initial.) */
+int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit);
+
+/* ODE right-hand side ydot = f(t, y) (only when bg_eqsys_is_ode).
+ * Returns 0, or -1 when an evaluation produced NaN/Inf (a law evaluated
+ * outside its domain); bg_eqsys_error then says which equation, in words. */
+int bg_eqsys_rhs(bg_eqsys *s, double t, const double *y, double *ydot);
+/* DAE residual F(t, y, yp) = 0 (any form; for an ODE F = yp - f(t, y)). */
+int bg_eqsys_residual(bg_eqsys *s, double t, const double *y, const double *yp, double *res);
+const char *bg_eqsys_error(const bg_eqsys *s); /* nullable */
+
+/* Jacobians, exact (not finite differences): ODE: J = df/dy;
+ * DAE: J = dF/dy + cj * dF/dyp. Dense: column-major n x n. */
+int bg_eqsys_jac_dense(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
+                       double *J);
+/* Sparse: the pattern in CSC form including every diagonal entry (docs/simulation.md:
+ * KLU is slow without it); colptr has n+1 entries. nnz from bg_eqsys_jac_nnz. */
+int bg_eqsys_jac_nnz(const bg_eqsys *s);
+void bg_eqsys_jac_pattern(const bg_eqsys *s, int *colptr, int *rowind);
+int bg_eqsys_jac_sparse(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
+                        double *values); /* in the pattern's order */
+
+/* Linearisation at (t, y, yp): A = dF/dyp, B = dF/dy (dense, column-major),
+ * so that A x' + B x = f approximates the model (Equation 4.5). */
+int bg_eqsys_linearise(bg_eqsys *s, double t, const double *y, const double *yp, double *A,
+                       double *B);
+
+/* Values of the model's plot expressions (m->plotexpr_root order), or of the
+ * states when the model has no plot statement (bg_eqsys_noutput/_output_name). */
+int bg_eqsys_noutput(const bg_eqsys *s);
+const char *bg_eqsys_output_name(const bg_eqsys *s, int k);
+int bg_eqsys_outputs(bg_eqsys *s, double t, const double *y, const double *yp, double *out);
+
+/* Every bond variable at (t, y, yp) (yp nullable: zeros): e[b] and f[b] by
+ * bond id (arrays of m->nbond). 0, or -1 as bg_eqsys_residual. */
+int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, double *e,
+                     double *f);
+
+/* Times in (t0, t1) where an input is discontinuous (step, pulse and table
+ * breakpoints of inputs and sources that depend on t only), sorted, unique;
+ * returns the count (at most max written). */
+int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times, int max);
+#endif

@@ -1,0 +1,200 @@
+/* bg_eqsys evaluation entry points: initial values, right-hand side,
+ * residual, exact Jacobians, linearisation, outputs, breakpoints. */
+#include <lapacke.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "equations/eqsys_int.h"
+#include "model/expr.h"
+
+int bg_eqsys_rhs(bg_eqsys *s, double t, const double *y, double *ydot) {
+  if (bg_eqs_eval(s, t, y, NULL, 0)) return -1;
+  for (int i = 0; i < s->nx; i++) ydot[i] = s->v[s->row_slot[i]];
+  return 0;
+}
+
+int bg_eqsys_residual(bg_eqsys *s, double t, const double *y, const double *yp, double *res) {
+  if (bg_eqs_eval(s, t, y, yp, 0)) return -1;
+  for (int i = 0; i < s->n; i++) {
+    double r = s->v[s->row_slot[i]];
+    res[i] = s->row_kind[i] == 0 ? yp[i] - r : r;
+  }
+  return 0;
+}
+
+int bg_eqsys_jac_dense(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
+                       double *J) {
+  int ode = bg_eqsys_is_ode(s);
+  if (bg_eqs_eval(s, t, y, ode ? NULL : yp, 0)) return -1;
+  bg_eqs_jac(s, cj, !ode, J, 0, ode, 0);
+  return 0;
+}
+
+int bg_eqsys_jac_nnz(const bg_eqsys *s) { return s->nnz; }
+
+void bg_eqsys_jac_pattern(const bg_eqsys *s, int *colptr, int *rowind) {
+  memcpy(colptr, s->colptr, (size_t)(s->n + 1) * sizeof(int));
+  memcpy(rowind, s->rowind, (size_t)s->nnz * sizeof(int));
+}
+
+int bg_eqsys_jac_sparse(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
+                        double *values) {
+  int ode = bg_eqsys_is_ode(s);
+  if (bg_eqs_eval(s, t, y, ode ? NULL : yp, 0)) return -1;
+  bg_eqs_jac(s, cj, !ode, values, 1, ode, 0);
+  return 0;
+}
+
+int bg_eqsys_linearise(bg_eqsys *s, double t, const double *y, const double *yp, double *A,
+                       double *B) {
+  if (bg_eqs_eval(s, t, y, yp, 0)) return -1;
+  bg_eqs_jac(s, 0, 1, A, 0, 0, 1);
+  bg_eqs_jac(s, 0, 1, B, 0, 1, 0);
+  return 0;
+}
+
+int bg_eqsys_outputs(bg_eqsys *s, double t, const double *y, const double *yp, double *out) {
+  if (bg_eqs_eval(s, t, y, yp, 1)) return -1;
+  for (int k = 0; k < s->nout; k++) out[k] = s->v[s->out_slot[k]];
+  return 0;
+}
+
+int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, double *e,
+                     double *f) {
+  if (bg_eqs_eval(s, t, y, yp, 0)) return -1;
+  for (int b = 0; b < s->m->nbond; b++) e[b] = s->v[s->sig_slot[2 * b]], f[b] = s->v[s->sig_slot[2 * b + 1]];
+  return 0;
+}
+
+/* ------------------------------------------------------------ initial values */
+static double init_value(const bg_model *m, int root, double t0) {
+  if (root < 0) return 0;
+  bg_xenv env = {t0, NULL, NULL, NULL, NULL, NULL};
+  return bg_xeval(m, root, &env);
+}
+
+static double max_abs_alg(const bg_eqsys *s, const double *r) {
+  double mx = 0;
+  for (int i = 0; i < s->n; i++)
+    if (s->row_kind[i] == 1 && fabs(r[i]) > mx) mx = fabs(r[i]);
+  return mx;
+}
+
+/* Newton on the algebraic rows (constraints of dependent stores and the
+ * residuals of torn variables) in their unknowns, states held, yp = 0:
+ * the exact Jacobian, a dense solve, step halving when the residual grows. */
+int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit) {
+  int n = s->n, na = 0;
+  if (n == 0 || n > 3000) return 0;
+  int *ix = malloc((size_t)n * sizeof(int)), *piv = malloc((size_t)n * sizeof(int));
+  double *yp = calloc((size_t)n, sizeof(double)), *r = malloc((size_t)n * sizeof(double));
+  double *J = malloc((size_t)n * n * sizeof(double)), *M = malloc((size_t)n * n * sizeof(double));
+  double *y1 = malloc((size_t)n * sizeof(double)), *rb = malloc((size_t)n * sizeof(double));
+  for (int i = 0; i < n; i++)
+    if (s->row_kind[i] == 1) ix[na++] = i;
+  int ok = na == 0 || !bg_eqsys_residual(s, t, y, yp, r);
+  for (int it = 0; ok && na && it < maxit && max_abs_alg(s, r) > 0; it++) {
+    bg_eqs_jac(s, 0, 1, J, 0, 1, 0);
+    for (int a = 0; a < na; a++) {
+      rb[a] = -r[ix[a]];
+      for (int b = 0; b < na; b++) M[(size_t)b * na + a] = J[(size_t)ix[b] * n + ix[a]];
+    }
+    if (LAPACKE_dgesv(LAPACK_COL_MAJOR, na, 1, M, na, piv, rb, na) != 0) break;
+    double r0 = max_abs_alg(s, r), lam = 1, step = 0, ymax = 0;
+    for (int a = 0; a < na; a++) step = fmax(step, fabs(rb[a])), ymax = fmax(ymax, fabs(y[ix[a]]));
+    for (int h = 0; h < 12; h++, lam /= 2) {
+      memcpy(y1, y, (size_t)n * sizeof *y);
+      for (int a = 0; a < na; a++) y1[ix[a]] += lam * rb[a];
+      if (!bg_eqsys_residual(s, t, y1, yp, r) && max_abs_alg(s, r) < r0 * (1 + 1e-12) + 1e-300) break;
+    }
+    memcpy(y, y1, (size_t)n * sizeof *y);
+    ok = !bg_eqsys_residual(s, t, y, yp, r);
+    if (max_abs_alg(s, r) >= r0 || step <= 1e-15 * (1 + ymax)) break;
+  }
+  free(ix), free(piv), free(yp), free(r), free(J), free(M), free(y1), free(rb);
+  return ok ? 0 : -1;
+}
+
+void bg_eqsys_initial(const bg_eqsys *cs, double *y0) {
+  const bg_model *m = cs->m;
+  double t0 = m->sim.present ? m->sim.t0 : 0;
+  for (int i = 0; i < cs->n; i++) {
+    y0[i] = 0;
+    if (cs->u_elem[i] >= 0) y0[i] = init_value(m, m->elem_init[cs->u_elem[i]], t0);
+    else if (cs->u_state[i] >= 0) y0[i] = init_value(m, m->state_init[cs->u_state[i]], t0);
+  }
+  /* The evaluation scratch is not observable state: solving for consistent
+   * algebraic values leaves the system as it was. */
+  bg_eqsys *s = (bg_eqsys *)cs;
+  bg_eqsys_consistent(s, t0, y0, 30);
+  s->has_err = 0;
+}
+
+/* ------------------------------------------------------------ breakpoints */
+typedef struct bpl { double *v; int n, cap; } bpl;
+static void bp_add(bpl *L, double x) {
+  if (!isfinite(x)) return;
+  if (L->n == L->cap) {
+    L->cap = L->cap ? 2 * L->cap : 16;
+    L->v = bg_xrealloc(L->v, (size_t)L->cap * sizeof *L->v);
+  }
+  L->v[L->n++] = x;
+}
+
+/* x = t + off? Constants are what evaluates without any variable. */
+static int affine_t(const bg_model *m, int x, double *off) {
+  const bg_xnode *n = &m->xnode[x];
+  if (n->op == BG_X_TIME) return *off = 0, 1;
+  if (n->op != BG_X_ADD && n->op != BG_X_SUB) return 0;
+  const bg_xnode *l = &m->xnode[n->arg[0]], *r = &m->xnode[n->arg[1]];
+  if (l->op == BG_X_TIME) {
+    double c = bg_xeval(m, n->arg[1], NULL);
+    if (!isfinite(c)) return 0;
+    *off = n->op == BG_X_SUB ? c : -c;
+    return 1;
+  }
+  if (r->op == BG_X_TIME && n->op == BG_X_ADD) {
+    double c = bg_xeval(m, n->arg[0], NULL);
+    if (!isfinite(c)) return 0;
+    *off = -c;
+    return 1;
+  }
+  return 0;
+}
+
+static void bp_walk(const bg_model *m, int root, bpl *L) {
+  const bg_xnode *n = &m->xnode[root];
+  double off;
+  if (n->op == BG_X_CALL && n->nargs >= 1 && affine_t(m, n->arg[0], &off)) {
+    if (n->ref == BG_FN_STEP || n->ref == BG_FN_RAMP || n->ref == BG_FN_PULSE) bp_add(L, off);
+    if (n->ref == BG_FN_PULSE) bp_add(L, off + bg_xeval(m, n->arg[1], NULL));
+  }
+  if (n->op == BG_X_TABLE && affine_t(m, n->arg[0], &off))
+    for (int k = 0; k < m->table_n[n->ref]; k++) bp_add(L, off + m->table_x[m->table_adr[n->ref] + k]);
+  if (n->op == BG_X_INPUT) bp_walk(m, m->input_expr[n->ref], L);
+  else if (n->op != BG_X_NUM)
+    for (int k = 0; k < n->nargs; k++) bp_walk(m, n->arg[k], L);
+}
+
+static int cmp_d(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return x < y ? -1 : x > y;
+}
+
+int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times, int max) {
+  const bg_model *m = s->m;
+  bpl L = {0};
+  for (int e = 0; e < m->nelem; e++)
+    if (bg_elem_is_source(m->elem_kind[e]) && m->elem_expr[e] >= 0) bp_walk(m, m->elem_expr[e], &L);
+  for (int k = 0; k < m->ninput; k++) bp_walk(m, m->input_expr[k], &L);
+  if (L.n) qsort(L.v, (size_t)L.n, sizeof *L.v, cmp_d);
+  int cnt = 0;
+  for (int i = 0; i < L.n; i++) {
+    if (!(L.v[i] > t0 && L.v[i] < t1)) continue;
+    if (cnt && times[cnt - 1] == L.v[i]) continue;
+    if (cnt < max) times[cnt++] = L.v[i];
+  }
+  free(L.v);
+  return cnt;
+}

@@ -1,0 +1,129 @@
+/* Internals of bg_eqsys shared by eqsys.c (derivation of the equations),
+ * eqsys_order.c (sorting and tearing), eqsys_tape.c (evaluation and exact
+ * Jacobians), eqprint.c and index.c. Not a public interface. */
+#ifndef BG_EQSYS_INT_H
+#define BG_EQSYS_INT_H
+#include "base/arena.h"
+#include "equations/eqsys.h"
+#include "base/strbuf.h"
+
+/* Equation trees: a tiny expression language over model expressions (EQ_X),
+ * bond signals and unknowns, so the printers and the tape compiler read the
+ * same equations. Children are node ids. */
+typedef enum {
+  EQ_NUM, /* c */
+  EQ_X,   /* a = root xnode of a model expression */
+  EQ_SIG, /* a = signal: 2*bond (effort), 2*bond+1 (flow) */
+  EQ_Y,   /* a = unknown index */
+  EQ_YP,  /* a = unknown index: its time derivative */
+  EQ_LIN, /* sum of lin_coef[k] * node lin_node[k], k in [a, a+b) */
+  EQ_MUL, /* a * b */
+  EQ_DIV  /* a / b */
+} eq_kind;
+
+typedef struct eq_node {
+  int kind, a, b;
+  double c;
+} eq_node;
+
+/* How a signal's equation reads. */
+enum { EQF_EXPLICIT, /* signal = tree */ EQF_IMPLICIT /* 0 = tree, solved for signal */ };
+
+/* Tape instruction: out = op(args). op is a bg_xop (arithmetic, comparison,
+ * BG_X_CALL with ref = bg_func, BG_X_TABLE with ref = table) or T_LIN. */
+#define T_LIN 200
+typedef struct tinstr {
+  unsigned char op, na;
+  int ref;     /* function or table id; T_LIN: first index into lin arrays */
+  int out;
+  int a[3];    /* argument slots; T_LIN: a[0] = number of terms */
+  int eq;      /* which equation (signal, or -1 - row) for error messages */
+} tinstr;
+
+struct bg_eqsys {
+  const bg_model *m;
+  const bg_analysis *a;
+  bg_arena arena;
+  int nsig;               /* 2 * nbond */
+  int nx, nz, n, ndep, nint; /* nint: integral stores + user states */
+
+  /* equation trees */
+  eq_node *node;
+  int nnode, capnode;
+  double *lin_coef;
+  int *lin_node;
+  int nlin, caplin;
+
+  /* per signal */
+  int *sig_form;  /* EQF_* */
+  int *sig_root;  /* equation tree */
+  int *sig_elem;  /* element whose relation it is */
+  const char **sig_what; /* "law", "value", "balance", "modulus", ... */
+  int *sig_torn;  /* an algebraic unknown: sig_z[s] is its index in y */
+  int *sig_z;
+  int *dep_adr, *dep_n, *dep; /* signals each signal's equation reads */
+
+  /* computational order of the explicit signals */
+  int norder;
+  int *order;
+
+  /* per unknown */
+  const char **uname;
+  int *u_elem;     /* store element, or -1 */
+  int *u_state;    /* user state id, or -1 */
+  int *u_sig;      /* torn signal for algebraic unknowns, else -1 */
+  int *row_kind;   /* 0: res = yp - root (rhs form); 1: res = root */
+  int *row_root;   /* equation tree of the row */
+  int *store_y;    /* per element: unknown index of a store's state, -1 */
+
+  /* the tape */
+  tinstr *code;
+  int ncode, capcode, nmain; /* [0, nmain): unknowns -> residual; rest: outputs */
+  int *tl_slot;
+  double *tl_coef;
+  int ntl, captl;
+  double *v, *dv; /* values and one directional derivative per slot */
+  unsigned char *is_const;
+  int nslot, capslot;
+  int slot_y, slot_yp; /* slot of y[0], yp[0]; slot 0 is t */
+  int *sig_slot;
+  int *row_slot;
+  int *input_slot;
+
+  /* outputs */
+  int nout;
+  const char **out_name;
+  int *out_slot;
+
+  /* Jacobian pattern (CSC, with the diagonal) and its column colouring */
+  int nnz, *colptr, *rowind;
+  int ncolor, *color;
+  int *color_adr, *color_cols;
+
+  double *work;     /* n-sized scratch */
+  char err[256];
+  int has_err;
+};
+
+/* eqsys.c */
+int bg_eqs_node(bg_eqsys *s, int kind, int a, int b, double c);
+const char *bg_eqs_signame(const bg_eqsys *s, int sig, bg_arena *ar);
+/* Makes signal sig the next algebraic unknown, with its residual row. */
+void bg_eqsys_add_z(bg_eqsys *s, int sig);
+/* eqprint_c.c: the C printer. */
+void bg_eqprint_c_tape(const bg_eqsys *s, bg_strbuf *out);
+/* eqsys_order.c: dependency lists, tearing and the computational order. */
+void bg_eqs_deps(bg_eqsys *s);
+void bg_eqs_sort(bg_eqsys *s);
+/* eqsys_tape.c */
+void bg_eqs_compile(bg_eqsys *s);
+void bg_eqs_pattern(bg_eqsys *s);
+void bg_eqs_tape_free(bg_eqsys *s);
+/* Runs the main tape (and the outputs with `outputs`); 0, or -1 with s->err. */
+int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs);
+/* Jacobian columns: fills J (dense column-major, or CSC values when sparse)
+ * with dF/dy + cj dF/dyp (rhs form rows as residual rows when `resid`, else
+ * as the ODE right-hand side). Values must be current (bg_eqs_eval). */
+void bg_eqs_jac(bg_eqsys *s, double cj, int resid, double *J, int sparse, int only_y,
+                int only_yp);
+#endif

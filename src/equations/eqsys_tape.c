@@ -1,0 +1,412 @@
+/* The equations compiled to one straight-line tape over a slot array
+ * [t | y | yp | constants and intermediate values], evaluated with no
+ * allocation, and differentiated exactly by forward-mode automatic
+ * differentiation (one pass per colour of a column colouring of the sparse
+ * Jacobian pattern). Operators and functions are applied with the shared
+ * definitions of expr.h; their derivatives are here. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "equations/eqsys_int.h"
+#include "model/expr.h"
+
+/* ------------------------------------------------------------ slots and code */
+static int new_slot(bg_eqsys *s, int cst, double val) {
+  if (s->nslot == s->capslot) {
+    s->capslot = s->capslot ? 2 * s->capslot : 256;
+    s->v = bg_xrealloc(s->v, (size_t)s->capslot * sizeof *s->v);
+    s->is_const = bg_xrealloc(s->is_const, (size_t)s->capslot);
+  }
+  s->v[s->nslot] = val;
+  s->is_const[s->nslot] = (unsigned char)cst;
+  return s->nslot++;
+}
+
+static void push_code(bg_eqsys *s, tinstr I) {
+  if (s->ncode == s->capcode) {
+    s->capcode = s->capcode ? 2 * s->capcode : 256;
+    s->code = bg_xrealloc(s->code, (size_t)s->capcode * sizeof *s->code);
+  }
+  s->code[s->ncode++] = I;
+}
+
+static int tl_push(bg_eqsys *s, int slot, double c) {
+  if (s->ntl == s->captl) {
+    s->captl = s->captl ? 2 * s->captl : 256;
+    s->tl_slot = bg_xrealloc(s->tl_slot, (size_t)s->captl * sizeof *s->tl_slot);
+    s->tl_coef = bg_xrealloc(s->tl_coef, (size_t)s->captl * sizeof *s->tl_coef);
+  }
+  s->tl_slot[s->ntl] = slot;
+  s->tl_coef[s->ntl] = c;
+  return s->ntl++;
+}
+
+static double ins_val(const bg_eqsys *s, const tinstr *I, const double *v) {
+  switch (I->op) {
+  case T_LIN: {
+    double r = 0;
+    for (int k = 0; k < I->a[0]; k++) r += s->tl_coef[I->ref + k] * v[s->tl_slot[I->ref + k]];
+    return r;
+  }
+  case BG_X_CALL: {
+    double args[3] = {0, 0, 0};
+    for (int k = 0; k < I->na; k++) args[k] = v[I->a[k]];
+    return bg_func_apply(I->ref, args, I->na);
+  }
+  case BG_X_TABLE: return bg_table_lookup(s->m, I->ref, v[I->a[0]]);
+  default: return bg_xop_apply(I->op, v[I->a[0]], I->na > 1 ? v[I->a[1]] : 0);
+  }
+}
+
+/* Emits out = op(args), folding it when every argument is a constant. */
+static int emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
+  tinstr I = {(unsigned char)op, (unsigned char)na, ref, -1, {0, 0, 0}, eq};
+  int cst = 1;
+  for (int k = 0; k < na && op != T_LIN; k++) I.a[k] = args[k], cst &= s->is_const[args[k]];
+  if (op == T_LIN) {
+    I.a[0] = na;
+    for (int k = 0; k < na; k++) cst &= s->is_const[s->tl_slot[ref + k]];
+  }
+  if (cst) return new_slot(s, 1, ins_val(s, &I, s->v));
+  I.out = new_slot(s, 0, 0);
+  push_code(s, I);
+  return I.out;
+}
+
+/* ------------------------------------------------------------ compilation */
+static int cx(bg_eqsys *s, int root, int eq) {
+  const bg_model *m = s->m;
+  const bg_xnode *n = &m->xnode[root];
+  int args[3], slot;
+  switch (n->op) {
+  case BG_X_NUM: return new_slot(s, 1, n->num);
+  case BG_X_TIME: return 0;
+  case BG_X_PARAM: return new_slot(s, 1, m->param_value[n->ref]);
+  case BG_X_INPUT:
+    if (s->input_slot[n->ref] < 0) s->input_slot[n->ref] = cx(s, m->input_expr[n->ref], eq);
+    return s->input_slot[n->ref];
+  case BG_X_STATE: return s->slot_y + (s->nint - m->nstate) + n->ref;
+  case BG_X_STORE: return s->slot_y + s->store_y[n->ref];
+  case BG_X_EFFORT: case BG_X_FLOW:
+    slot = s->sig_slot[2 * n->ref + (n->op == BG_X_FLOW)];
+    if (slot < 0) BG_FATAL("eqsys: bond variable used before it is computed");
+    return slot;
+  default:
+    for (int k = 0; k < n->nargs; k++) args[k] = cx(s, n->arg[k], eq);
+    return emit(s, n->op, n->ref, n->nargs, args, eq);
+  }
+}
+
+static int ce(bg_eqsys *s, int nd, int eq) {
+  const eq_node *n = &s->node[nd];
+  int args[2], slot;
+  switch (n->kind) {
+  case EQ_NUM: return new_slot(s, 1, n->c);
+  case EQ_X: return cx(s, n->a, eq);
+  case EQ_SIG:
+    slot = s->sig_slot[n->a];
+    if (slot < 0) BG_FATAL("eqsys: bond variable used before it is computed");
+    return slot;
+  case EQ_Y: return s->slot_y + n->a;
+  case EQ_YP: return s->slot_yp + n->a;
+  case EQ_MUL: case EQ_DIV:
+    args[0] = ce(s, n->a, eq), args[1] = ce(s, n->b, eq);
+    return emit(s, n->kind == EQ_MUL ? BG_X_MUL : BG_X_DIV, 0, 2, args, eq);
+  default: { /* EQ_LIN: children first, then the terms contiguously */
+    if (n->b == 1 && s->lin_coef[n->a] == 1) return ce(s, s->lin_node[n->a], eq);
+    int tmp[64], *cs = n->b <= 64 ? tmp : bg_xmalloc((size_t)n->b * sizeof(int));
+    for (int k = 0; k < n->b; k++) cs[k] = ce(s, s->lin_node[n->a + k], eq);
+    int adr = s->ntl;
+    for (int k = 0; k < n->b; k++) tl_push(s, cs[k], s->lin_coef[n->a + k]);
+    if (cs != tmp) free(cs);
+    return emit(s, T_LIN, adr, n->b, NULL, eq);
+  }
+  }
+}
+
+static void compile_outputs(bg_eqsys *s) {
+  const bg_model *m = s->m;
+  int np = m->nplotexpr;
+  s->nout = np ? np : s->nx;
+  s->out_name = bg_arena_alloc(&s->arena, (size_t)(s->nout + 1) * sizeof(char *));
+  s->out_slot = bg_arena_alloc(&s->arena, (size_t)(s->nout + 1) * sizeof(int));
+  for (int k = 0; k < s->nout; k++) {
+    s->out_name[k] = np ? m->plotexpr_text[k] : s->uname[k];
+    s->out_slot[k] = np ? cx(s, m->plotexpr_root[k], -1000000 - k) : s->slot_y + k;
+  }
+}
+
+void bg_eqs_compile(bg_eqsys *s) {
+  int n = s->n;
+  new_slot(s, 0, 0); /* t */
+  s->slot_y = 1, s->slot_yp = 1 + n;
+  for (int i = 0; i < 2 * n; i++) new_slot(s, 0, 0);
+  s->sig_slot = bg_arena_alloc(&s->arena, (size_t)(s->nsig + 1) * sizeof(int));
+  s->row_slot = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
+  s->input_slot = bg_arena_alloc(&s->arena, (size_t)(s->m->ninput + 1) * sizeof(int));
+  for (int k = 0; k < s->m->ninput; k++) s->input_slot[k] = -1;
+  for (int v = 0; v < s->nsig; v++) s->sig_slot[v] = s->sig_torn[v] ? s->slot_y + s->sig_z[v] : -1;
+  for (int k = 0; k < s->norder; k++) {
+    int v = s->order[k];
+    s->sig_slot[v] = ce(s, s->sig_root[v], v);
+  }
+  for (int i = 0; i < n; i++) s->row_slot[i] = ce(s, s->row_root[i], -1 - i);
+  s->nmain = s->ncode;
+  compile_outputs(s);
+  s->dv = bg_xcalloc((size_t)s->nslot + 1, sizeof(double));
+}
+
+void bg_eqs_tape_free(bg_eqsys *s) {
+  free(s->code), free(s->tl_slot), free(s->tl_coef), free(s->v), free(s->dv), free(s->is_const);
+}
+
+/* ------------------------------------------------------------ derivatives */
+/* a + b with the exact-cancellation rule of docs/equations.md. */
+static double csum(double a, double b) {
+  double r = a + b;
+  return fabs(r) <= 16 * DBL_EPSILON * (fabs(a) + fabs(b)) ? 0.0 : r;
+}
+
+static double pow_der(double x, double y, double v, double dx, double dy) {
+  double r = dx != 0 ? dx * (y == 0 ? 0 : y * pow(x, y - 1)) : 0;
+  if (dy != 0) r = csum(r, dy * v * log(x));
+  return r;
+}
+
+static double call_der(int fn, const double *x, const double *d, double v) {
+  switch (fn) {
+  case BG_FN_ABS: return x[0] > 0 ? d[0] : x[0] < 0 ? -d[0] : 0;
+  case BG_FN_SQRT: return d[0] / (2 * v);
+  case BG_FN_EXP: return v * d[0];
+  case BG_FN_LOG: return d[0] / x[0];
+  case BG_FN_LOG10: return d[0] / (x[0] * log(10.0));
+  case BG_FN_SIN: return cos(x[0]) * d[0];
+  case BG_FN_COS: return -sin(x[0]) * d[0];
+  case BG_FN_TAN: return (1 + v * v) * d[0];
+  case BG_FN_ASIN: return d[0] / sqrt(1 - x[0] * x[0]);
+  case BG_FN_ACOS: return -d[0] / sqrt(1 - x[0] * x[0]);
+  case BG_FN_ATAN: return d[0] / (1 + x[0] * x[0]);
+  case BG_FN_ATAN2: return csum(x[1] * d[0], -x[0] * d[1]) / (x[0] * x[0] + x[1] * x[1]);
+  case BG_FN_SINH: return cosh(x[0]) * d[0];
+  case BG_FN_COSH: return sinh(x[0]) * d[0];
+  case BG_FN_TANH: return (1 - v * v) * d[0];
+  case BG_FN_MIN: return x[0] <= x[1] ? d[0] : d[1];
+  case BG_FN_MAX: return x[0] >= x[1] ? d[0] : d[1];
+  case BG_FN_POW: return pow_der(x[0], x[1], v, d[0], d[1]);
+  case BG_FN_IF: return x[0] != 0 ? d[1] : d[2];
+  case BG_FN_RAMP: return x[0] < 0 ? 0 : d[0];
+  case BG_FN_SAT: return x[0] < x[1] ? d[1] : x[0] > x[2] ? d[2] : d[0];
+  default: return 0; /* sign, floor, ceil, step, pulse: piecewise constant */
+  }
+}
+
+static double ins_der(const bg_eqsys *s, const tinstr *I, const double *v, const double *dv) {
+  if (I->op == T_LIN) {
+    double r = 0, mag = 0;
+    for (int k = 0; k < I->a[0]; k++) {
+      double t = s->tl_coef[I->ref + k] * dv[s->tl_slot[I->ref + k]];
+      r += t, mag += fabs(t);
+    }
+    return fabs(r) <= 16 * DBL_EPSILON * mag ? 0.0 : r;
+  }
+  double x[3] = {0, 0, 0}, d[3] = {0, 0, 0};
+  int any = 0;
+  for (int k = 0; k < I->na; k++) x[k] = v[I->a[k]], d[k] = dv[I->a[k]], any |= d[k] != 0;
+  if (!any) return 0; /* also keeps 0 * inf (sqrt at 0) out of constant directions */
+  double y = v[I->out];
+  switch (I->op) {
+  case BG_X_NEG: return -d[0];
+  case BG_X_ADD: return csum(d[0], d[1]);
+  case BG_X_SUB: return csum(d[0], -d[1]);
+  case BG_X_MUL: return csum(d[0] == 0 ? 0 : d[0] * x[1], d[1] == 0 ? 0 : x[0] * d[1]);
+  case BG_X_DIV: return csum(d[0], d[1] == 0 ? 0 : -y * d[1]) / x[1];
+  case BG_X_POW: return pow_der(x[0], x[1], y, d[0], d[1]);
+  case BG_X_CALL: return call_der(I->ref, x, d, y);
+  case BG_X_TABLE: return bg_table_slope(s->m, I->ref, x[0]) * d[0];
+  default: return 0; /* comparisons and logic */
+  }
+}
+
+/* ------------------------------------------------------------ evaluation */
+static void describe(bg_eqsys *s, const tinstr *I, double t) {
+  const bg_model *m = s->m;
+  double x0 = s->v[I->a[0]];
+  const char *what = "a value that is not a finite number";
+  if (I->op == BG_X_DIV) what = "a division by zero";
+  else if (I->op == BG_X_POW || (I->op == BG_X_CALL && I->ref == BG_FN_POW)) what = "a power outside its domain";
+  else if (I->op == BG_X_CALL && I->ref == BG_FN_SQRT && x0 < 0) what = "sqrt of a negative number";
+  else if (I->op == BG_X_CALL && (I->ref == BG_FN_LOG || I->ref == BG_FN_LOG10) && x0 <= 0) what = "log of a non-positive number";
+  else if (I->op == BG_X_CALL && (I->ref == BG_FN_ASIN || I->ref == BG_FN_ACOS)) what = "asin/acos of a number outside [-1, 1]";
+  else if (I->op == BG_X_CALL) what = "an overflow in a function";
+  char where[160];
+  if (I->eq >= 0) {
+    int e = s->sig_elem[I->eq];
+    snprintf(where, sizeof where, "the %s of %s", s->sig_what[I->eq], m->elem_name[e]);
+  } else if (I->eq > -1000000) {
+    snprintf(where, sizeof where, "the equation of %s", s->uname[-1 - I->eq]);
+  } else {
+    snprintf(where, sizeof where, "plot expression %s", m->plotexpr_text[-1000000 - I->eq]);
+  }
+  snprintf(s->err, sizeof s->err, "%s in %s at t = %g", what, where, t);
+}
+
+static int diagnose(bg_eqsys *s, int c0, int c1, double t) {
+  s->has_err = 1;
+  for (int i = 0; i < s->n; i++)
+    if (!isfinite(s->v[s->slot_y + i])) {
+      snprintf(s->err, sizeof s->err, "the unknown %s is not a finite number at t = %g",
+               s->uname[i], t);
+      return -1;
+    }
+  for (int k = c0; k < c1; k++) {
+    const tinstr *I = &s->code[k];
+    if (isfinite(s->v[I->out])) continue;
+    describe(s, I, t);
+    return -1;
+  }
+  snprintf(s->err, sizeof s->err, "a value that is not a finite number at t = %g", t);
+  return -1;
+}
+
+int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs) {
+  double *v = s->v;
+  int n = s->n, c1 = outputs ? s->ncode : s->nmain;
+  v[0] = t;
+  memcpy(v + s->slot_y, y, (size_t)n * sizeof *v);
+  if (yp) memcpy(v + s->slot_yp, yp, (size_t)n * sizeof *v);
+  else memset(v + s->slot_yp, 0, (size_t)n * sizeof *v);
+  for (int k = 0; k < c1; k++) v[s->code[k].out] = ins_val(s, &s->code[k], v);
+  s->has_err = 0;
+  int bad = 0;
+  for (int i = 0; i < n; i++) bad |= !isfinite(v[s->row_slot[i]]);
+  for (int k = 0; outputs && k < s->nout; k++) bad |= !isfinite(v[s->out_slot[k]]);
+  return bad ? diagnose(s, 0, c1, t) : 0;
+}
+
+/* ------------------------------------------------------------ Jacobians */
+static void seed(bg_eqsys *s, int c, double sy, double syp) {
+  memset(s->dv + s->slot_y, 0, (size_t)(2 * s->n) * sizeof(double));
+  for (int k = s->color_adr[c]; k < s->color_adr[c + 1]; k++) {
+    int j = s->color_cols[k];
+    s->dv[s->slot_y + j] = sy, s->dv[s->slot_yp + j] = syp;
+  }
+  for (int k = 0; k < s->nmain; k++) s->dv[s->code[k].out] = ins_der(s, &s->code[k], s->v, s->dv);
+}
+
+void bg_eqs_jac(bg_eqsys *s, double cj, int resid, double *J, int sparse, int only_y, int only_yp) {
+  int n = s->n;
+  double sy = only_yp ? 0 : 1, syp = only_y ? 0 : only_yp ? 1 : cj;
+  if (!sparse) memset(J, 0, (size_t)n * (size_t)n * sizeof *J);
+  for (int c = 0; c < s->ncolor; c++) {
+    seed(s, c, sy, syp);
+    for (int q = s->color_adr[c]; q < s->color_adr[c + 1]; q++) {
+      int j = s->color_cols[q];
+      for (int k = s->colptr[j]; k < s->colptr[j + 1]; k++) {
+        int i = s->rowind[k];
+        double d = s->dv[s->row_slot[i]];
+        if (s->row_kind[i] == 0 && resid) d = (i == j ? syp : 0) - d;
+        if (sparse) J[k] = d;
+        else J[(size_t)j * n + i] = d;
+      }
+    }
+  }
+}
+
+/* ------------------------------------------------------------ pattern */
+typedef struct sets { int *adr, *cnt, *pool; int npool, cap; } sets;
+
+static void set_union(sets *S, int out, const int *in, int nin, int *mark, int stamp) {
+  S->adr[out] = S->npool;
+  for (int k = 0; k < nin; k++) {
+    int a = in[k];
+    for (int q = S->adr[a]; q < S->adr[a] + S->cnt[a]; q++) {
+      int j = S->pool[q];
+      if (mark[j] == stamp) continue;
+      mark[j] = stamp;
+      if (S->npool == S->cap) {
+        S->cap = S->cap ? 2 * S->cap : 1024;
+        S->pool = bg_xrealloc(S->pool, (size_t)S->cap * sizeof(int));
+      }
+      S->pool[S->npool++] = j;
+    }
+  }
+  S->cnt[out] = S->npool - S->adr[out];
+}
+
+/* Column j of row i is structurally nonzero when the row reads y_j or yp_j. */
+static void slot_sets(bg_eqsys *s, sets *S, int *mark) {
+  int n = s->n;
+  S->adr = bg_xcalloc((size_t)s->nslot + 1, sizeof(int));
+  S->cnt = bg_xcalloc((size_t)s->nslot + 1, sizeof(int));
+  S->cap = 2 * n + 16, S->pool = bg_xmalloc((size_t)S->cap * sizeof(int));
+  for (int j = 0; j < n; j++) {
+    S->adr[s->slot_y + j] = S->npool, S->cnt[s->slot_y + j] = 1, S->pool[S->npool++] = j;
+    S->adr[s->slot_yp + j] = S->npool, S->cnt[s->slot_yp + j] = 1, S->pool[S->npool++] = j;
+  }
+  int tmp[3];
+  for (int k = 0; k < s->nmain; k++) {
+    const tinstr *I = &s->code[k];
+    if (I->op == T_LIN) set_union(S, I->out, s->tl_slot + I->ref, I->a[0], mark, k + 1);
+    else {
+      for (int q = 0; q < I->na; q++) tmp[q] = I->a[q];
+      set_union(S, I->out, tmp, I->na, mark, k + 1);
+    }
+  }
+}
+
+static void colour(bg_eqsys *s, const int *radr, const int *rcols) {
+  int n = s->n, *forbid = bg_xmalloc((size_t)(n + 1) * sizeof(int));
+  s->color = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
+  for (int j = 0; j <= n; j++) s->color[j] = -1, forbid[j] = -1;
+  s->ncolor = 0;
+  for (int j = 0; j < n; j++) {
+    for (int k = s->colptr[j]; k < s->colptr[j + 1]; k++) {
+      int i = s->rowind[k];
+      for (int q = radr[i]; q < radr[i + 1]; q++)
+        if (s->color[rcols[q]] >= 0) forbid[s->color[rcols[q]]] = j;
+    }
+    int c = 0;
+    while (forbid[c] == j) c++;
+    s->color[j] = c;
+    if (c + 1 > s->ncolor) s->ncolor = c + 1;
+  }
+  s->color_adr = bg_arena_alloc(&s->arena, (size_t)(s->ncolor + 2) * sizeof(int));
+  s->color_cols = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
+  for (int j = 0; j < n; j++) s->color_adr[s->color[j] + 1]++;
+  for (int c = 0; c < s->ncolor; c++) s->color_adr[c + 1] += s->color_adr[c];
+  int *pos = bg_xcalloc((size_t)s->ncolor + 1, sizeof(int));
+  for (int j = 0; j < n; j++) s->color_cols[s->color_adr[s->color[j]] + pos[s->color[j]]++] = j;
+  free(pos), free(forbid);
+}
+
+void bg_eqs_pattern(bg_eqsys *s) {
+  int n = s->n, *mark = bg_xmalloc((size_t)(n + 1) * sizeof(int));
+  for (int j = 0; j <= n; j++) mark[j] = -1;
+  sets S = {0};
+  slot_sets(s, &S, mark);
+  /* rows (CSR, with the diagonal), then transposed to CSC */
+  int *radr = bg_xcalloc((size_t)n + 1, sizeof(int)), nr = 0, capr = 4 * n + 16;
+  int *rcols = bg_xmalloc((size_t)capr * sizeof(int));
+  for (int i = 0; i < n; i++) {
+    int sl = s->row_slot[i], stamp = -2 - i;
+    radr[i] = nr;
+    if (nr + S.cnt[sl] + 1 > capr) capr = 2 * (nr + S.cnt[sl] + 1), rcols = bg_xrealloc(rcols, (size_t)capr * sizeof(int));
+    rcols[nr++] = i, mark[i] = stamp;
+    for (int q = S.adr[sl]; q < S.adr[sl] + S.cnt[sl]; q++)
+      if (mark[S.pool[q]] != stamp) mark[S.pool[q]] = stamp, rcols[nr++] = S.pool[q];
+  }
+  radr[n] = nr;
+  s->nnz = nr;
+  s->colptr = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
+  s->rowind = bg_arena_alloc(&s->arena, (size_t)(nr + 1) * sizeof(int));
+  for (int q = 0; q < nr; q++) s->colptr[rcols[q] + 1]++;
+  for (int j = 0; j < n; j++) s->colptr[j + 1] += s->colptr[j];
+  int *pos = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int i = 0; i < n; i++) /* rows in increasing order within each column */
+    for (int q = radr[i]; q < radr[i + 1]; q++) s->rowind[s->colptr[rcols[q]] + pos[rcols[q]]++] = i;
+  colour(s, radr, rcols);
+  free(pos), free(radr), free(rcols), free(mark), free(S.adr), free(S.cnt), free(S.pool);
+}

@@ -1,0 +1,33 @@
+/* Numeric index of the equations linearised at the initial point (Algorithm 4.1
+ * of the reference, docs/equations.md): regularity of the pencil first, then
+ * the shuffle algorithm with rank decisions by SVD on equilibrated matrices;
+ * eigenvalues of the linearised model for index 0 and 1. Dense: fine up to a
+ * few thousand unknowns. */
+#ifndef BG_INDEX_H
+#define BG_INDEX_H
+#include "equations/eqsys.h"
+#include "model/model.h"
+#include "base/strbuf.h"
+
+#define BG_INDEX_SINGULAR (-1)  /* singular pencil: no (unique) solution */
+#define BG_INDEX_FAILED (-2)    /* the equations could not be evaluated */
+
+typedef struct bg_index_result {
+  int index;        /* 0, 1, 2, ... or BG_INDEX_SINGULAR / BG_INDEX_FAILED */
+  int n;            /* unknowns */
+  int nhist;        /* rank history, one text line per decision */
+  char **hist;
+  int neig;         /* finite generalized eigenvalues, sorted by (re, im) */
+  double *eig_re, *eig_im;
+  char *message;    /* one line: what was found and why */
+} bg_index_result;
+
+/* Linearises at t0 and consistent initial values (bg_eqsys_initial), then
+ * runs the algorithm. Returns out->index. The caller frees with bg_index_free. */
+int bg_index_compute(bg_eqsys *s, const bg_model *m, bg_index_result *out);
+/* The same on a given pencil A x' + B x (column-major n x n; copied). */
+int bg_index_pencil(const double *A, const double *B, int n, bg_index_result *out);
+void bg_index_free(bg_index_result *r);
+/* The rank history and the eigenvalues as report text. */
+void bg_index_report(const bg_index_result *r, bg_strbuf *out);
+#endif

@@ -1,0 +1,13 @@
+/* The analysis JSON of docs/json.md (format "bgdraw-analysis", version 1):
+ * every required key in the schema's order, 2-space indentation, one list
+ * item per line, deterministic (same model and analysis, same bytes). */
+#ifndef BG_JSON_H
+#define BG_JSON_H
+#include "causality/analysis.h"
+#include "model/model.h"
+#include "base/strbuf.h"
+
+/* Appends the whole document (ending with a newline) to out. Lists the
+ * analysis has not filled (count 0) are written empty. */
+void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *out);
+#endif

@@ -1,0 +1,66 @@
+/* The "simulation" key of the analysis JSON (docs/cli.md): how a simulation
+ * that ran with the analysis went (status, solver and why, tolerances,
+ * statistics, consistent initial values). Kept apart from src/json.c, which
+ * writes the analysis itself; this only appends one key to its document. */
+#include "json/json_sim.h"
+
+#include <string.h>
+
+static void str_or_null(bg_strbuf *o, const char *s) {
+  if (s) bg_sb_json_str(o, s);
+  else bg_sb_puts(o, "null");
+}
+
+static const char *status_name(int status) {
+  return status == 0 ? "ok" : status == 1 ? "refused" : "failed";
+}
+
+void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
+  bg_sb_puts(o, "  \"simulation\": {\n    \"status\": ");
+  bg_sb_json_str(o, status_name(status));
+  bg_sb_puts(o, ",\n    \"message\": ");
+  str_or_null(o, r->message);
+  bg_sb_puts(o, ",\n    \"solver\": ");
+  str_or_null(o, r->solver_used);
+  bg_sb_puts(o, ",\n    \"solver_reason\": ");
+  str_or_null(o, r->solver_reason);
+  bg_sb_puts(o, ",\n    \"linear_solver\": ");
+  str_or_null(o, r->linear_solver);
+  bg_sb_puts(o, ",\n    \"unknowns\": ");
+  if (r->solver_used) bg_sb_printf(o, "%d", r->n);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ",\n    \"rtol\": ");
+  if (r->solver_used) bg_sb_json_num(o, r->rtol);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ",\n    \"atol\": ");
+  if (r->solver_used) bg_sb_json_num(o, r->atol);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ",\n    \"t0\": ");
+  bg_sb_json_num(o, m->sim.t0);
+  bg_sb_puts(o, ",\n    \"t_end\": ");
+  bg_sb_json_num(o, m->sim.t_end);
+  bg_sb_puts(o, ",\n    \"t_reached\": ");
+  if (r->solver_used) bg_sb_json_num(o, r->t_reached);
+  else bg_sb_puts(o, "null");
+  bg_sb_printf(o, ",\n    \"rows\": %d,\n    \"partial\": %s", r->nrows, r->partial ? "true" : "false");
+  bg_sb_printf(o, ",\n    \"statistics\": {\"steps\": %ld, \"function_evaluations\": %ld, "
+                  "\"jacobian_evaluations\": %ld, \"error_test_failures\": %ld, "
+                  "\"nonlinear_iterations\": %ld}",
+               r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
+  bg_sb_printf(o, ",\n    \"initial_values\": {\"changed\": %s, \"guess_retries\": %d, \"report\": ",
+               r->consistent_ic_changed ? "true" : "false", r->ic_retries);
+  str_or_null(o, r->ic_report);
+  bg_sb_puts(o, "}\n  }");
+}
+
+void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
+                               int status) {
+  static const char end[] = "\n}\n";
+  size_t ne = sizeof end - 1;
+  if (doc->len < ne || memcmp(doc->s + doc->len - ne, end, ne) != 0) return;
+  doc->len -= ne; /* reopen the document's top-level object */
+  doc->s[doc->len] = 0;
+  bg_sb_puts(doc, ",\n");
+  bg_json_write_simulation(m, r, status, doc);
+  bg_sb_puts(doc, end);
+}

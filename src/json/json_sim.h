@@ -1,0 +1,19 @@
+/* The "simulation" key of the analysis JSON (docs/cli.md), written when the
+ * run simulated: status, solver and why, linear solver, tolerances, times,
+ * rows, solver statistics, consistent initial values. Deterministic (no
+ * wall-clock times), like the rest of the document. */
+#ifndef BG_JSON_SIM_H
+#define BG_JSON_SIM_H
+#include "model/model.h"
+#include "simulate/simulate.h"
+#include "base/strbuf.h"
+
+/* Appends `  "simulation": {...}` (no trailing comma or newline) to out.
+ * status is bg_simulate's return: 0 ok, 1 refused, 2 failed. */
+void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *out);
+
+/* Adds the key to a finished analysis document (bg_json_write_analysis,
+ * ending "\n}\n") as its last key. Leaves doc unchanged if it does not end so. */
+void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
+                               int status);
+#endif

@@ -1,0 +1,516 @@
+/* The model compiler, part 1: the driver, the namespace, bonds, params,
+ * inputs and states. Elements and the other statements are in
+ * model_stmt.c, expressions in model_expr.c, queries in model_query.c. */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/expr.h"
+#include "model/model_build.h"
+
+/* ---------------------------------------------------------------- arrays */
+static void *reserve(void *p, int n, int *cap, size_t size) {
+  if (n < *cap) return p;
+  int ncap = *cap ? 2 * *cap : 16;
+  while (ncap <= n) ncap *= 2;
+  p = bg_xrealloc(p, (size_t)ncap * size);
+  memset((char *)p + (size_t)*cap * size, 0, (size_t)(ncap - *cap) * size);
+  *cap = ncap;
+  return p;
+}
+
+int bg_build_new(bg_build *b, int *count) {
+  bg_model *m = b->m;
+#define BG_X_GROW(type, name, cnt) \
+  if (&m->cnt == count) m->name = reserve(m->name, *count, &b->cap.name, sizeof(type));
+  BG_MODEL_ARRAYS(BG_X_GROW)
+#undef BG_X_GROW
+  return (*count)++;
+}
+
+/* Moves every array into the model's arena (one owner for everything). */
+static void move_to_arena(bg_model *m) {
+#define BG_X_MOVE(type, name, cnt)                                          \
+  {                                                                         \
+    type *a = bg_arena_alloc(&m->arena, sizeof(type) * (size_t)(m->cnt ? m->cnt : 1)); \
+    if (m->cnt) memcpy(a, m->name, sizeof(type) * (size_t)m->cnt);         \
+    free(m->name);                                                          \
+    m->name = a;                                                            \
+  }
+  BG_MODEL_ARRAYS(BG_X_MOVE)
+#undef BG_X_MOVE
+}
+
+static void free_arrays(bg_model *m) {
+#define BG_X_FREE(type, name, cnt) free(m->name);
+  BG_MODEL_ARRAYS(BG_X_FREE)
+#undef BG_X_FREE
+}
+
+const char *bg_build_strdup(bg_build *b, const char *s) {
+  return s ? bg_arena_strdup(&b->m->arena, s) : NULL;
+}
+
+/* ---------------------------------------------------------------- namespace */
+static unsigned hash_str(const char *s) {
+  unsigned h = 2166136261u;
+  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
+  return h;
+}
+
+static void rehash(bg_build *b) {
+  free(b->hash);
+  b->hashcap = 64;
+  while (b->hashcap < 2 * b->nns + 2) b->hashcap *= 2;
+  b->hash = bg_xmalloc((size_t)b->hashcap * sizeof *b->hash);
+  for (int i = 0; i < b->hashcap; i++) b->hash[i] = -1;
+  for (int i = 0; i < b->nns; i++) {
+    unsigned h = hash_str(b->ns[i].name) & (unsigned)(b->hashcap - 1);
+    while (b->hash[h] >= 0) h = (h + 1) & (unsigned)(b->hashcap - 1);
+    b->hash[h] = i;
+  }
+}
+
+const ns_entry *bg_build_lookup(const bg_build *b, const char *name) {
+  if (!b->hash) return NULL;
+  unsigned h = hash_str(name) & (unsigned)(b->hashcap - 1);
+  for (; b->hash[h] >= 0; h = (h + 1) & (unsigned)(b->hashcap - 1))
+    if (strcmp(b->ns[b->hash[h]].name, name) == 0) return &b->ns[b->hash[h]];
+  return NULL;
+}
+
+/* e7, f12: reserved for bond variables */
+static int is_bond_var_name(const char *s) {
+  if ((s[0] != 'e' && s[0] != 'f') || !s[1]) return 0;
+  for (const char *c = s + 1; *c; c++)
+    if (!isdigit((unsigned char)*c)) return 0;
+  return 1;
+}
+
+/* Declares a name; reports duplicates and reserved names. 0 on success. */
+static int declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
+  const ns_entry *old = bg_build_lookup(b, name);
+  if (old) {
+    bg_diag_error(b->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
+    return -1;
+  }
+  if (is_bond_var_name(name) || strcmp(name, "t") == 0 || strcmp(name, "pi") == 0) {
+    bg_diag_error(b->dg, loc, "'%s' is reserved (%s) and cannot be declared", name,
+                  name[1] ? "a bond variable" : name[0] == 't' ? "time" : "the constant pi");
+    return -1;
+  }
+  if (b->nns == b->nscap) {
+    b->nscap = b->nscap ? 2 * b->nscap : 64;
+    b->ns = bg_xrealloc(b->ns, (size_t)b->nscap * sizeof *b->ns);
+  }
+  b->ns[b->nns++] = (ns_entry){name, kind, id, loc};
+  if (2 * b->nns + 2 > b->hashcap) rehash(b);
+  else {
+    unsigned h = hash_str(name) & (unsigned)(b->hashcap - 1);
+    while (b->hash[h] >= 0) h = (h + 1) & (unsigned)(b->hashcap - 1);
+    b->hash[h] = b->nns - 1;
+  }
+  return 0;
+}
+
+static int common_prefix(const char *a, const char *b) {
+  int n = 0;
+  while (a[n] && a[n] == b[n]) n++;
+  return n;
+}
+
+/* Closest by edit distance; ties go to the longer common prefix ("sinn": sin, not sign). */
+static void consider(const char *name, const char *cand, const char **best, int *bestd) {
+  int d = bg_edit_distance(name, cand);
+  if (d == 0) return;
+  if (d < *bestd || (d == *bestd && *best && common_prefix(name, cand) > common_prefix(name, *best))) {
+    *bestd = d;
+    *best = cand;
+  }
+}
+
+const char *bg_build_suggest(const bg_build *b, const char *name, const char *const *extra,
+                             int nextra) {
+  const char *best = NULL;
+  int bestd = strlen(name) < 3 ? 2 : 3; /* at most 1 edit for short names, else 2 */
+  for (int i = 0; b && i < b->nns; i++) consider(name, b->ns[i].name, &best, &bestd);
+  for (int i = 0; i < nextra; i++) consider(name, extra[i], &best, &bestd);
+  return best;
+}
+
+/* ---------------------------------------------------------------- declarations */
+static const char *const kind_names[BG_ELEM_COUNT] = {
+    [BG_ELEM_SE] = "Se", [BG_ELEM_SF] = "Sf", [BG_ELEM_MSE] = "MSe", [BG_ELEM_MSF] = "MSf",
+    [BG_ELEM_C] = "C",   [BG_ELEM_I] = "I",   [BG_ELEM_R] = "R",     [BG_ELEM_TF] = "TF",
+    [BG_ELEM_MTF] = "MTF", [BG_ELEM_GY] = "GY", [BG_ELEM_MGY] = "MGY",
+    [BG_ELEM_J0] = "0",  [BG_ELEM_J1] = "1"};
+
+const char *bg_elem_kind_name(int kind) {
+  return kind >= 0 && kind < BG_ELEM_COUNT ? kind_names[kind] : "?";
+}
+
+const char *bg_elem_kind_article(int kind) {
+  static const char *const texts[BG_ELEM_COUNT] = {
+      [BG_ELEM_SE] = "an Se", [BG_ELEM_SF] = "an Sf", [BG_ELEM_MSE] = "an MSe",
+      [BG_ELEM_MSF] = "an MSf", [BG_ELEM_C] = "a C", [BG_ELEM_I] = "an I", [BG_ELEM_R] = "an R",
+      [BG_ELEM_TF] = "a TF", [BG_ELEM_MTF] = "an MTF", [BG_ELEM_GY] = "a GY",
+      [BG_ELEM_MGY] = "an MGY", [BG_ELEM_J0] = "a 0-junction", [BG_ELEM_J1] = "a 1-junction"};
+  return kind >= 0 && kind < BG_ELEM_COUNT ? texts[kind] : "?";
+}
+
+static int kind_from_word(const char *w) {
+  for (int k = 0; k < BG_ELEM_COUNT; k++)
+    if (strcmp(kind_names[k], w) == 0) return k;
+  return -1;
+}
+
+static void declare_element(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int kind = kind_from_word(s->kindword);
+  if (kind < 0) BG_FATAL("parser let through element kind '%s'", s->kindword);
+  if (declare(b, s->name, s->name_loc, NS_ELEM, m->nelem) != 0) return;
+  int e = bg_build_new(b, &m->nelem);
+  m->elem_kind[e] = kind;
+  m->elem_name[e] = bg_build_strdup(b, s->name);
+  m->elem_loc[e] = s->name_loc;
+  m->elem_expr[e] = m->elem_init[e] = -1;
+  if (m->nelem > b->elem_stmt_cap) {
+    b->elem_stmt_cap = b->elem_stmt_cap ? 2 * b->elem_stmt_cap : 64;
+    b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)b->elem_stmt_cap * sizeof *b->elem_stmt);
+  }
+  b->elem_stmt[e] = s;
+}
+
+/* Declares every name in file order (one namespace). */
+static void declare_all(bg_build *b, int *nparam_decl) {
+  bg_model *m = b->m;
+  for (int i = 0; i < b->ast->nstmts; i++) {
+    const bg_ast_stmt *s = &b->ast->stmts[i];
+    if (s->kind == BG_ST_ELEMENT) declare_element(b, s);
+    else if (s->kind == BG_ST_PARAM) {
+      if (declare(b, s->name, s->name_loc, NS_PARAM, *nparam_decl) == 0) (*nparam_decl)++;
+    } else if (s->kind == BG_ST_INPUT) {
+      if (declare(b, s->name, s->name_loc, NS_INPUT, m->ninput) != 0) continue;
+      int k = bg_build_new(b, &m->ninput);
+      m->input_name[k] = bg_build_strdup(b, s->name);
+      m->input_loc[k] = s->name_loc;
+    } else if (s->kind == BG_ST_STATE) {
+      if (declare(b, s->name, s->name_loc, NS_STATE, m->nstate) != 0) continue;
+      int k = bg_build_new(b, &m->nstate);
+      m->state_name[k] = bg_build_strdup(b, s->name);
+      m->state_loc[k] = s->name_loc;
+      m->state_init[k] = -1;
+    }
+  }
+}
+
+/* ---------------------------------------------------------------- bonds */
+/* The element id of a bond end, or -1 (reported). */
+static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
+  static const char *const what[] = {"an element", "a param", "an input", "a state"};
+  const ns_entry *n = bg_build_lookup(b, name);
+  if (n && n->kind == NS_ELEM) return n->id;
+  if (n) {
+    bg_diag_error(b->dg, loc, "'%s' is %s (line %d); a bond joins elements and junctions",
+                  name, what[n->kind], n->loc.line);
+    return -1;
+  }
+  const char *s = bg_build_suggest(b, name, NULL, 0);
+  if (s) bg_diag_error(b->dg, loc, "undefined name '%s' (did you mean '%s'?)", name, s);
+  else bg_diag_error(b->dg, loc, "undefined name '%s' (no element or junction has this name)", name);
+  return -1;
+}
+
+static void add_bond(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int tail = bond_end(b, s->from, s->from_loc), head = bond_end(b, s->to, s->to_loc);
+  if (tail >= 0 && tail == head) /* still recorded: bond ids stay in statement order */
+    bg_diag_error(b->dg, s->to_loc, "a bond cannot join '%s' to itself", s->to);
+  int k = bg_build_new(b, &m->nbond);
+  m->bond_num[k] = s->number;
+  m->bond_tail[k] = tail;
+  m->bond_head[k] = head;
+  m->bond_fix[k] = s->arrow == BG_ARROW_STROKE_HEAD   ? BG_FIX_HEAD
+                   : s->arrow == BG_ARROW_STROKE_TAIL ? BG_FIX_TAIL : BG_FIX_NONE;
+  m->bond_loc[k] = s->loc;
+}
+
+/* Explicit numbers must be unique; unnumbered bonds take the smallest free
+ * numbers in file order. */
+static void number_bonds(bg_build *b, const bg_ast_stmt **stmt) {
+  bg_model *m = b->m;
+  int n = m->nbond;
+  int *owner = bg_xmalloc((size_t)(n + 2) * sizeof *owner); /* number <= n+1 -> bond */
+  for (int i = 0; i < n + 2; i++) owner[i] = -1;
+  for (int k = 0; k < n; k++) {
+    int num = m->bond_num[k];
+    if (num == 0) continue;
+    int other = -1;
+    for (int j = 0; j < k && num > n + 1 && other < 0; j++)
+      if (m->bond_num[j] == num) other = j;
+    if (num <= n + 1) other = owner[num];
+    if (other >= 0)
+      bg_diag_error(b->dg, stmt[k]->number_loc, "bond %d already defined at line %d", num,
+                    m->bond_loc[other].line);
+    else if (num <= n + 1) owner[num] = k;
+  }
+  int next = 1;
+  for (int k = 0; k < n; k++) {
+    if (m->bond_num[k] != 0) continue;
+    while (owner[next] >= 0) next++;
+    owner[next] = k;
+    m->bond_num[k] = next;
+  }
+  free(owner);
+}
+
+/* elem_bonds: per element its bonds in file order. */
+static void index_bonds(bg_build *b) {
+  bg_model *m = b->m;
+  for (int k = 0; k < m->nbond; k++) {
+    if (m->bond_tail[k] >= 0) m->elem_nbond[m->bond_tail[k]]++;
+    if (m->bond_head[k] >= 0) m->elem_nbond[m->bond_head[k]]++;
+  }
+  int adr = 0;
+  for (int e = 0; e < m->nelem; e++) {
+    m->elem_bondadr[e] = adr;
+    adr += m->elem_nbond[e];
+    m->elem_nbond[e] = 0;
+  }
+  for (int i = 0; i < adr; i++) bg_build_new(b, &m->nbondref);
+  for (int k = 0; k < m->nbond; k++) {
+    int ends[2] = {m->bond_tail[k], m->bond_head[k]};
+    for (int j = 0; j < 2; j++)
+      if (ends[j] >= 0) m->elem_bonds[m->elem_bondadr[ends[j]] + m->elem_nbond[ends[j]]++] = k;
+  }
+}
+
+static void build_bonds(bg_build *b) {
+  const bg_ast_stmt **stmt = NULL;
+  int cap = 0;
+  for (int i = 0; i < b->ast->nstmts; i++) {
+    const bg_ast_stmt *s = &b->ast->stmts[i];
+    if (s->kind != BG_ST_BOND) continue;
+    int before = b->m->nbond;
+    add_bond(b, s);
+    if (b->m->nbond > cap) {
+      cap = cap ? 2 * cap : 64;
+      stmt = bg_xrealloc(stmt, (size_t)cap * sizeof *stmt);
+    }
+    stmt[before] = s;
+  }
+  number_bonds(b, stmt); /* bond options are read in model_stmt.c */
+  free(stmt);
+  index_bonds(b);
+}
+
+/* ---------------------------------------------------------------- params */
+typedef struct param_graph {
+  const bg_ast_stmt **stmt; /* by param file index */
+  int **dep;                /* param file indices each one uses */
+  int *ndep;
+  int n;
+  bg_build *b;
+  int cur;
+} param_graph;
+
+static void note_param_use(void *ctx, const bg_expr *name) {
+  param_graph *g = ctx;
+  const ns_entry *n = bg_build_lookup(g->b, name->str);
+  if (!n || n->kind != NS_PARAM) return;
+  int *nd = &g->ndep[g->cur];
+  if ((*nd & (*nd - 1)) == 0) /* 0, 1, 2, 4, ...: grow to the next power of two */
+    g->dep[g->cur] = bg_xrealloc(g->dep[g->cur], (size_t)(*nd ? 2 * *nd : 1) * sizeof(int));
+  g->dep[g->cur][(*nd)++] = n->id;
+}
+
+/* Reports the cycle that closes at param `at`: the stack from `at` to its top. */
+static void report_cycle(param_graph *g, const int *stack, int top, int at) {
+  bg_strbuf sb = {0};
+  int from = top;
+  while (stack[from] != at) from--;
+  for (int i = from; i <= top; i++) bg_sb_printf(&sb, "%s -> ", g->stmt[stack[i]]->name);
+  bg_sb_puts(&sb, g->stmt[at]->name);
+  bg_diag_error(g->b->dg, g->stmt[at]->name_loc, "cyclic param definition: %s", bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+/* Depth-first post-order with an explicit stack: dependencies first, otherwise
+ * file order. state: 0 new, 1 on the stack, 2 done. Fills order[]. */
+static int order_params(param_graph *g, int *order) {
+  int *state = bg_xcalloc((size_t)g->n + 1, sizeof *state);
+  int *stack = bg_xmalloc(((size_t)g->n + 1) * sizeof *stack);
+  int *nexti = bg_xcalloc((size_t)g->n + 1, sizeof *nexti);
+  int norder = 0;
+  for (int root = 0; root < g->n; root++) {
+    if (state[root]) continue;
+    int top = 0;
+    stack[0] = root;
+    state[root] = 1;
+    while (top >= 0) {
+      int v = stack[top];
+      if (nexti[v] < g->ndep[v]) {
+        int w = g->dep[v][nexti[v]++];
+        if (state[w] == 1) report_cycle(g, stack, top, w);
+        if (state[w]) continue;
+        state[w] = 1;
+        stack[++top] = w;
+      } else {
+        state[v] = 2;
+        order[norder++] = v;
+        top--;
+      }
+    }
+  }
+  free(state);
+  free(stack);
+  free(nexti);
+  return norder;
+}
+
+static void apply_overrides(bg_build *b, const bg_param_override *ov, int nov) {
+  bg_model *m = b->m;
+  bg_srcloc none = {0, 0};
+  for (int i = 0; i < nov; i++) {
+    const ns_entry *n = bg_build_lookup(b, ov[i].name);
+    if (n && n->kind == NS_PARAM) {
+      m->param_value[b->param_id[n->id]] = ov[i].value;
+      m->param_overridden[b->param_id[n->id]] = 1;
+      continue;
+    }
+    const char *s = bg_build_suggest(b, ov[i].name, NULL, 0);
+    const ns_entry *sn = s ? bg_build_lookup(b, s) : NULL;
+    if (sn && sn->kind == NS_PARAM)
+      bg_diag_error(b->dg, none, "--set %s: no param '%s' in the model (did you mean '%s'?)",
+                    ov[i].name, ov[i].name, s);
+    else
+      bg_diag_error(b->dg, none, "--set %s: no param '%s' in the model", ov[i].name, ov[i].name);
+  }
+}
+
+/* Params in dependency order, compiled, overridden, then evaluated. */
+static void build_params(bg_build *b, int ndecl, const bg_param_override *ov, int nov) {
+  bg_model *m = b->m;
+  param_graph g = {bg_xcalloc((size_t)ndecl + 1, sizeof(void *)),
+                   bg_xcalloc((size_t)ndecl + 1, sizeof(int *)),
+                   bg_xcalloc((size_t)ndecl + 1, sizeof(int)), ndecl, b, 0};
+  for (int i = 0, k = 0; i < b->ast->nstmts; i++) {
+    const bg_ast_stmt *s = &b->ast->stmts[i];
+    const ns_entry *n = s->kind == BG_ST_PARAM ? bg_build_lookup(b, s->name) : NULL;
+    if (!n || n->kind != NS_PARAM || n->id != k || n->loc.line != s->name_loc.line ||
+        n->loc.col != s->name_loc.col)
+      continue; /* not a param, or a duplicate (reported) */
+    g.stmt[k] = s;
+    g.cur = k++;
+    bg_build_names(s->expr, note_param_use, &g);
+  }
+  int *order = bg_xmalloc(((size_t)ndecl + 1) * sizeof *order);
+  order_params(&g, order);
+  b->param_id = bg_xmalloc(((size_t)ndecl + 1) * sizeof *b->param_id);
+  for (int i = 0; i < ndecl; i++) {
+    int id = bg_build_new(b, &m->nparam);
+    b->param_id[order[i]] = id;
+    m->param_name[id] = bg_build_strdup(b, g.stmt[order[i]]->name);
+    m->param_desc[id] = bg_build_strdup(b, g.stmt[order[i]]->text);
+    m->param_loc[id] = g.stmt[order[i]]->name_loc;
+  }
+  b->allow = 0;
+  b->what = "a param (params may use numbers, pi and other params)";
+  for (int i = 0; i < ndecl; i++) m->param_expr[b->param_id[i]] = bg_build_expr(b, g.stmt[i]->expr);
+  apply_overrides(b, ov, nov);
+  for (int id = 0; id < m->nparam; id++)
+    if (!m->param_overridden[id]) m->param_value[id] = bg_xeval(m, m->param_expr[id], NULL);
+  for (int i = 0; i < ndecl; i++) free(g.dep[i]);
+  free(g.dep);
+  free(g.ndep);
+  free(g.stmt);
+  free(order);
+}
+
+/* ---------------------------------------------------------------- inputs, states */
+static void build_inputs_states(bg_build *b) {
+  bg_model *m = b->m;
+  int input = 0, state = 0;
+  for (int i = 0; i < b->ast->nstmts; i++) {
+    const bg_ast_stmt *s = &b->ast->stmts[i];
+    const ns_entry *n = s->name ? bg_build_lookup(b, s->name) : NULL;
+    if (s->kind == BG_ST_INPUT && n && n->kind == NS_INPUT && n->loc.line == s->name_loc.line) {
+      b->allow = ALLOW_TIME | ALLOW_INPUT;
+      b->input_limit = input++;
+      b->what = "an input (inputs may use t, params and inputs defined before them)";
+      m->input_expr[n->id] = bg_build_expr(b, s->expr);
+    } else if (s->kind == BG_ST_STATE && n && n->kind == NS_STATE &&
+               n->loc.line == s->name_loc.line) {
+      b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
+      b->input_limit = m->ninput;
+      b->what = "a state equation";
+      m->state_expr[n->id] = bg_build_expr(b, s->expr);
+      state++;
+    }
+  }
+  (void)state;
+}
+
+/* ---------------------------------------------------------------- driver */
+static const char *file_stem(bg_build *b, const char *path) {
+  const char *base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  const char *dot = strrchr(base, '.');
+  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+  if (n == 0) return "model";
+  return bg_arena_strndup(&b->m->arena, base, n);
+}
+
+static const char *dir_of(bg_build *b, const char *path) {
+  const char *slash = strrchr(path, '/');
+  if (!slash) return ".";
+  return bg_arena_strndup(&b->m->arena, path, (size_t)(slash - path + (slash == path)));
+}
+
+static void build_free(bg_build *b) {
+  free(b->ns);
+  free(b->hash);
+  free(b->elem_stmt);
+  free(b->param_id);
+}
+
+bg_model *bg_model_compile(const bg_ast *ast, const bg_param_override *ov, int nov,
+                           bg_diags *dg) {
+  bg_model *m = bg_xcalloc(1, sizeof *m);
+  bg_build b;
+  memset(&b, 0, sizeof b);
+  b.m = m;
+  b.ast = ast;
+  b.dg = dg;
+  b.elem = b.law_elem = -1;
+  int errors0 = dg->nerrors, ndecl = 0;
+  const char *path = ast->path ? ast->path : "";
+  m->path = bg_arena_strdup(&m->arena, path);
+  m->name = file_stem(&b, path);
+  b.base_dir = dir_of(&b, path);
+  m->sim.solver = "auto";
+  m->layout.engine = "dot";
+  m->layout.rankdir = "LR";
+  rehash(&b);
+  declare_all(&b, &ndecl);
+  build_bonds(&b);
+  build_params(&b, ndecl, ov, nov);
+  build_inputs_states(&b);
+  bg_build_elements(&b);
+  bg_build_statements(&b);
+  build_free(&b);
+  if (dg->nerrors > errors0) {
+    free_arrays(m);
+    bg_arena_free(&m->arena);
+    free(m);
+    return NULL;
+  }
+  move_to_arena(m);
+  return m;
+}
+
+void bg_model_free(bg_model *m) {
+  if (!m) return;
+  bg_arena_free(&m->arena);
+  free(m);
+}

@@ -1,0 +1,78 @@
+/* Internal to the model compiler (model*.c): the state of one compile.
+ * Arrays of the model grow with malloc while compiling and are moved into
+ * the model's arena at the end. */
+#ifndef BG_MODEL_BUILD_H
+#define BG_MODEL_BUILD_H
+#include "lang/ast.h"
+#include "model/model.h"
+
+/* What a name in the shared namespace is. */
+typedef enum { NS_ELEM, NS_PARAM, NS_INPUT, NS_STATE } ns_kind;
+
+typedef struct ns_entry {
+  const char *name;
+  ns_kind kind;
+  int id;        /* element id, param file index, input id, state id */
+  bg_srcloc loc; /* of the declaration */
+} ns_entry;
+
+/* What an expression being compiled may read. */
+enum {
+  ALLOW_TIME = 1,   /* t */
+  ALLOW_INPUT = 2,  /* inputs (with id < input_limit) */
+  ALLOW_MODEL = 4   /* states, bond and element variables */
+};
+
+typedef struct bg_build {
+  bg_model *m;
+  const bg_ast *ast;
+  bg_diags *dg;
+#define BG_X_CAP(type, name, count) int name;
+  struct { BG_MODEL_ARRAYS(BG_X_CAP) } cap;
+#undef BG_X_CAP
+  /* namespace: entries in declaration order, open-addressing hash of indices */
+  ns_entry *ns;
+  int nns, nscap;
+  int *hash; /* -1 = empty */
+  int hashcap;
+  const bg_ast_stmt **elem_stmt; /* per element id */
+  int elem_stmt_cap;
+  int *param_id;                 /* param file index -> param id (dependency order) */
+  /* the expression being compiled */
+  int allow;          /* ALLOW_* */
+  const char *what;   /* "a param", ... for messages */
+  int input_limit;    /* inputs with id < this may be read */
+  int elem;           /* element whose value/law is compiled (signals), or -1 */
+  int law_elem;       /* element whose law is compiled (own e, f, q, p), or -1 */
+  char law_lhs;       /* the law's left-hand side letter */
+  const char *modvar; /* first model variable met (for "modulated by ...") */
+  bg_srcloc modvar_loc;
+  const char *base_dir; /* the model file's directory, for table CSV files */
+} bg_build;
+
+/* ---- model.c */
+/* Index of a new object of the family counted by *count (zeroed slots). */
+int bg_build_new(bg_build *b, int *count);
+const ns_entry *bg_build_lookup(const bg_build *b, const char *name);
+/* The closest name (edit distance) among the namespace and `extra`, or NULL. */
+const char *bg_build_suggest(const bg_build *b, const char *name, const char *const *extra,
+                             int nextra);
+const char *bg_build_strdup(bg_build *b, const char *s);
+/* "a C", "an R", "an MTF": the kind with its article, for messages. */
+const char *bg_elem_kind_article(int kind);
+
+/* ---- model_expr.c */
+/* Compiles e into xnodes under the current context; returns the root (a
+ * NaN placeholder after an error, already reported). */
+int bg_build_expr(bg_build *b, const bg_expr *e);
+/* Compiles and evaluates a constant expression (numbers, pi, params). */
+double bg_build_const(bg_build *b, const bg_expr *e, const char *what);
+/* Is the tree at root affine in the variable (op, ref)? */
+int bg_build_is_affine(const bg_model *m, int root, int op, int ref);
+/* Param names used by e (for the dependency order); calls fn for each. */
+void bg_build_names(const bg_expr *e, void (*fn)(void *ctx, const bg_expr *name), void *ctx);
+
+/* ---- model_stmt.c */
+void bg_build_elements(bg_build *b);
+void bg_build_statements(bg_build *b);
+#endif

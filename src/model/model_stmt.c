@@ -1,0 +1,388 @@
+/* The model compiler, part 3: elements (bond counts, values and laws,
+ * modulation, linearity, options) and the statements model, causality,
+ * simulate, layout, plot, and the options of bonds and states. */
+#include <stdio.h>
+#include <string.h>
+
+#include "model/expr.h"
+#include "model/model_build.h"
+
+/* ---------------------------------------------------------------- options */
+/* Reports unknown and repeated option keys; `valid` is "a, b, c". */
+static void check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose) {
+  for (int i = 0; i < s->nopts; i++) {
+    const char *key = s->opts[i].key;
+    size_t n = strlen(key);
+    const char *p = valid;
+    int found = 0;
+    while ((p = strstr(p, key)) != NULL && !found) {
+      found = (p == valid || p[-1] == ' ') && (p[n] == ',' || p[n] == '\0');
+      p += n;
+    }
+    if (!found) {
+      bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (valid: %s)", key, whose,
+                    valid);
+      continue;
+    }
+    for (int j = 0; j < i; j++)
+      if (strcmp(s->opts[j].key, key) == 0) {
+        bg_diag_error(b->dg, s->opts[i].loc, "option '%s' given twice (first at column %d)", key,
+                      s->opts[j].loc.col);
+        break;
+      }
+  }
+}
+
+static const bg_ast_option *find_opt(const bg_ast_stmt *s, const char *key) {
+  for (int i = 0; i < s->nopts; i++)
+    if (strcmp(s->opts[i].key, key) == 0) return &s->opts[i];
+  return NULL;
+}
+
+/* A string option ("..."); NULL if absent or wrong (reported). */
+static const char *string_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
+  const bg_ast_option *o = find_opt(s, key);
+  if (!o) return NULL;
+  if (o->value->kind != BG_EX_STR) {
+    bg_diag_error(b->dg, o->value->loc, "option '%s' needs a string in quotes, e.g. %s = \"...\"",
+                  key, key);
+    return NULL;
+  }
+  return bg_build_strdup(b, o->value->str);
+}
+
+static int is_hex(char c) {
+  return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+}
+
+static const char *color_opt(bg_build *b, const bg_ast_stmt *s) {
+  const char *c = string_opt(b, s, "color");
+  if (!c) return NULL;
+  int ok = strlen(c) == 7 && c[0] == '#';
+  for (int i = 1; ok && i < 7; i++) ok = is_hex(c[i]);
+  if (!ok) {
+    bg_diag_error(b->dg, find_opt(s, "color")->value->loc,
+                  "color must be \"#rrggbb\" (6 hex digits), not \"%s\"", c);
+    return NULL;
+  }
+  return c;
+}
+
+/* A word option (a name or a string) that must be one of `valid` ("a, b"). */
+static const char *word_opt(bg_build *b, const bg_ast_stmt *s, const char *key, const char *valid) {
+  const bg_ast_option *o = find_opt(s, key);
+  if (!o) return NULL;
+  const bg_expr *v = o->value;
+  if (v->kind == BG_EX_NAME || v->kind == BG_EX_STR) {
+    const char *p = valid;
+    size_t n = strlen(v->str);
+    while (n && (p = strstr(p, v->str)) != NULL) {
+      if ((p == valid || p[-1] == ' ') && (p[n] == ',' || p[n] == '\0'))
+        return bg_build_strdup(b, v->str);
+      p += n;
+    }
+  }
+  bg_diag_error(b->dg, v->loc, "invalid %s '%s' (valid: %s)", key, v->text, valid);
+  return NULL;
+}
+
+/* A numeric option: a constant expression of params; `def` when absent. */
+static double num_opt(bg_build *b, const bg_ast_stmt *s, const char *key, double def) {
+  const bg_ast_option *o = find_opt(s, key);
+  if (!o) return def;
+  char what[96];
+  snprintf(what, sizeof what, "option '%s' (use numbers, pi and params)", key);
+  return bg_build_const(b, o->value, what);
+}
+
+/* An initial value (q0, p0, init): root xnode of a constant expression, -1 if absent. */
+static int init_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
+  const bg_ast_option *o = find_opt(s, key);
+  if (!o) return -1;
+  int allow = b->allow, elem = b->elem, law = b->law_elem;
+  b->allow = 0;
+  b->elem = b->law_elem = -1;
+  b->what = "an initial value (use numbers, pi and params)";
+  int root = bg_build_expr(b, o->value);
+  b->allow = allow;
+  b->elem = elem;
+  b->law_elem = law;
+  return root;
+}
+
+/* ---------------------------------------------------------------- elements */
+static void check_bond_count(bg_build *b, int e) {
+  const bg_model *m = b->m;
+  int kind = m->elem_kind[e], n = m->elem_nbond[e];
+  const char *name = m->elem_name[e], *kn = bg_elem_kind_name(kind);
+  if (n == 0) {
+    bg_diag_error(b->dg, m->elem_loc[e], "'%s' has no bond (every element and junction needs "
+                  "at least one)", name);
+  } else if (bg_elem_is_oneport(kind) && n != 1) {
+    bg_diag_error(b->dg, m->elem_loc[e], "'%s' has %d bonds; %s element has exactly one",
+                  name, n, bg_elem_kind_article(kind));
+  } else if (bg_elem_is_twoport(kind)) {
+    int in = 0, out = 0;
+    for (int i = 0; i < n; i++) {
+      int bond = m->elem_bonds[m->elem_bondadr[e] + i];
+      in += m->bond_head[bond] == e;
+      out += m->bond_tail[bond] == e;
+    }
+    if (in != 1 || out != 1)
+      bg_diag_error(b->dg, m->elem_loc[e], "%s '%s' needs one bond pointing in and one pointing "
+                    "out (it has %d in, %d out)", kn, name, in, out);
+  } else if (bg_elem_is_junction(kind) && n < 2) {
+    bg_diag_error(b->dg, m->elem_loc[e], "junction '%s' has 1 bond; a junction needs at least two",
+                  name);
+  }
+}
+
+/* The law's left-hand side: 'e' or 'f' as the kind allows; 0 after an error. */
+static char law_lhs(bg_build *b, int e, const bg_ast_stmt *s) {
+  int kind = b->m->elem_kind[e];
+  const char *lhs = s->law_lhs;
+  if (kind != BG_ELEM_C && kind != BG_ELEM_I && kind != BG_ELEM_R) {
+    bg_diag_error(b->dg, s->law_loc, "%s takes no law; write '%s %s = EXPR'",
+                  bg_elem_kind_article(kind), bg_elem_kind_name(kind), s->name);
+    return 0;
+  }
+  if (kind == BG_ELEM_C && strcmp(lhs, "e") != 0) {
+    bg_diag_error(b->dg, s->law_loc, "a C law is 'e = F(q)', not '%s = ...'", lhs);
+    return 0;
+  }
+  if (kind == BG_ELEM_I && strcmp(lhs, "f") != 0) {
+    bg_diag_error(b->dg, s->law_loc, "an I law is 'f = F(p)', not '%s = ...'", lhs);
+    return 0;
+  }
+  if (kind == BG_ELEM_R && strcmp(lhs, "e") != 0 && strcmp(lhs, "f") != 0) {
+    bg_diag_error(b->dg, s->law_loc, "an R law is 'e = F(f)' or 'f = G(e)', not '%s = ...'", lhs);
+    return 0;
+  }
+  return lhs[0];
+}
+
+/* elem_linear of a law: affine in the element's own input variable. */
+static int law_linear(const bg_model *m, int e) {
+  int kind = m->elem_kind[e], root = m->elem_expr[e];
+  if (kind == BG_ELEM_C || kind == BG_ELEM_I) return bg_build_is_affine(m, root, BG_X_STORE, e);
+  int bond = bg_elem_port_bond(m, e);
+  if (bond < 0) return 0;
+  return bg_build_is_affine(m, root, m->elem_form[e] == BG_FORM_LAW_E ? BG_X_FLOW : BG_X_EFFORT,
+                            bond);
+}
+
+/* A plain source or two-port may not read model variables; C, I, R become MC, MI, MR. */
+static void check_modulation(bg_build *b, int e) {
+  bg_model *m = b->m;
+  int kind = m->elem_kind[e];
+  if (!b->modvar) return;
+  static const int plain[] = {BG_ELEM_SE, BG_ELEM_SF, BG_ELEM_TF, BG_ELEM_GY};
+  static const int mod[] = {BG_ELEM_MSE, BG_ELEM_MSF, BG_ELEM_MTF, BG_ELEM_MGY};
+  for (int i = 0; i < 4; i++)
+    if (kind == plain[i]) {
+      bg_diag_error(b->dg, b->modvar_loc, "%s %s is modulated by %s: declare it %s",
+                    bg_elem_kind_name(kind), m->elem_name[e], b->modvar, bg_elem_kind_name(mod[i]));
+      return;
+    }
+  m->elem_modulated[e] = 1;
+}
+
+static void compile_element_expr(bg_build *b, int e, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int kind = m->elem_kind[e];
+  if (bg_elem_is_junction(kind)) {
+    if (s->expr)
+      bg_diag_error(b->dg, s->has_law ? s->law_loc : s->expr->loc,
+                    "a junction takes no value or law");
+    return;
+  }
+  if (!s->expr) {
+    bg_diag_error(b->dg, s->name_loc, "%s '%s' needs a value: '%s %s = EXPR'%s",
+                  bg_elem_kind_name(kind), s->name, bg_elem_kind_name(kind), s->name,
+                  kind == BG_ELEM_C || kind == BG_ELEM_I || kind == BG_ELEM_R ? " or a law ': v = EXPR'" : "");
+    return;
+  }
+  char lhs = s->has_law ? law_lhs(b, e, s) : 0;
+  if (s->has_law && !lhs) return;
+  b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
+  b->input_limit = m->ninput;
+  b->what = "an element";
+  b->elem = e;
+  b->law_elem = lhs ? e : -1;
+  b->law_lhs = lhs;
+  b->modvar = NULL;
+  m->elem_expr[e] = bg_build_expr(b, s->expr);
+  m->elem_form[e] = !lhs ? BG_FORM_VALUE : lhs == 'e' ? BG_FORM_LAW_E : BG_FORM_LAW_F;
+  m->elem_linear[e] = !lhs || law_linear(m, e);
+  check_modulation(b, e);
+  b->elem = b->law_elem = -1;
+}
+
+static int caus_opt(bg_build *b, int e, const bg_ast_stmt *s) {
+  int kind = b->m->elem_kind[e];
+  const char *valid = bg_elem_is_store(kind) ? "integral, derivative" : "resistance, conductance";
+  const char *w = word_opt(b, s, "causality", valid);
+  if (!w) return BG_CAUS_OPT_NONE;
+  if (!strcmp(w, "integral")) return BG_CAUS_OPT_INTEGRAL;
+  if (!strcmp(w, "derivative")) return BG_CAUS_OPT_DERIVATIVE;
+  if (!strcmp(w, "resistance")) return BG_CAUS_OPT_RESISTANCE;
+  return BG_CAUS_OPT_CONDUCTANCE;
+}
+
+static void at_opt(bg_build *b, int e, const bg_ast_stmt *s) {
+  const bg_ast_option *o = find_opt(s, "at");
+  if (!o) return;
+  if (o->value->kind != BG_EX_TUPLE || o->value->nargs != 2) {
+    bg_diag_error(b->dg, o->value->loc, "option 'at' needs a position (X, Y)");
+    return;
+  }
+  b->m->elem_has_at[e] = 1;
+  b->m->elem_at_x[e] = bg_build_const(b, o->value->args[0], "a position (use numbers and params)");
+  b->m->elem_at_y[e] = bg_build_const(b, o->value->args[1], "a position (use numbers and params)");
+}
+
+static void element_options(bg_build *b, int e, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int kind = m->elem_kind[e];
+  const char *valid = kind == BG_ELEM_C   ? "label, color, at, causality, q0"
+                      : kind == BG_ELEM_I ? "label, color, at, causality, p0"
+                      : kind == BG_ELEM_R ? "label, color, at, causality"
+                                          : "label, color, at";
+  char whose[160];
+  snprintf(whose, sizeof whose, "%s '%s'", bg_elem_kind_name(kind), s->name);
+  check_options(b, s, valid, whose);
+  m->elem_label[e] = string_opt(b, s, "label");
+  m->elem_color[e] = color_opt(b, s);
+  at_opt(b, e, s);
+  if (kind == BG_ELEM_C || kind == BG_ELEM_I || kind == BG_ELEM_R) m->elem_causopt[e] = caus_opt(b, e, s);
+  if (kind == BG_ELEM_C) m->elem_init[e] = init_opt(b, s, "q0");
+  if (kind == BG_ELEM_I) m->elem_init[e] = init_opt(b, s, "p0");
+}
+
+void bg_build_elements(bg_build *b) {
+  for (int e = 0; e < b->m->nelem; e++) check_bond_count(b, e);
+  for (int e = 0; e < b->m->nelem; e++) {
+    compile_element_expr(b, e, b->elem_stmt[e]);
+    element_options(b, e, b->elem_stmt[e]);
+  }
+}
+
+/* ---------------------------------------------------------------- statements */
+/* At most one of model, causality, simulate, layout. */
+static int once(bg_build *b, const bg_ast_stmt *s, const bg_ast_stmt **first, const char *word) {
+  if (*first) {
+    bg_diag_error(b->dg, s->loc, "'%s' already given at line %d (at most one per model)", word,
+                  (*first)->loc.line);
+    return 0;
+  }
+  *first = s;
+  return 1;
+}
+
+static void st_causality(bg_build *b, const bg_ast_stmt *s) {
+  int meth = bg_method_parse(s->name);
+  if (meth < 0) {
+    static const char *const names[] = {"scap", "relaxed", "vandijk", "lagrange"};
+    const char *sug = bg_build_suggest(NULL, s->name, names, 4);
+    bg_diag_error(b->dg, s->name_loc, "unknown causality method '%s'%s%s%s; valid: scap, relaxed, "
+                  "vandijk, lagrange", s->name, sug ? " (did you mean '" : "", sug ? sug : "",
+                  sug ? "'?)" : "");
+    return;
+  }
+  b->m->method = meth;
+  b->m->method_given = 1;
+}
+
+static void st_simulate(bg_build *b, const bg_ast_stmt *s) {
+  bg_simspec *sim = &b->m->sim;
+  check_options(b, s, "t_end, t0, dt, solver, rtol, atol, max_step", "simulate");
+  sim->present = 1;
+  sim->loc = s->loc;
+  sim->t0 = num_opt(b, s, "t0", 0);
+  sim->t_end = num_opt(b, s, "t_end", 0);
+  sim->dt = num_opt(b, s, "dt", 0);
+  sim->rtol = num_opt(b, s, "rtol", 0);
+  sim->atol = num_opt(b, s, "atol", 0);
+  sim->max_step = num_opt(b, s, "max_step", 0);
+  const char *solver = word_opt(b, s, "solver", "auto, cvode_bdf, cvode_adams, ida");
+  if (solver) sim->solver = solver;
+  if (!find_opt(s, "t_end")) {
+    bg_diag_error(b->dg, s->loc, "simulate needs t_end (e.g. simulate t_end = 10)");
+    return;
+  }
+  if (!(sim->t_end > sim->t0))
+    bg_diag_error(b->dg, find_opt(s, "t_end")->value->loc, "t_end (%g) must be greater than t0 (%g)",
+                  sim->t_end, sim->t0);
+  static const char *const positive[] = {"dt", "rtol", "atol", "max_step"};
+  const double vals[] = {sim->dt, sim->rtol, sim->atol, sim->max_step};
+  for (int i = 0; i < 4; i++)
+    if (find_opt(s, positive[i]) && !(vals[i] > 0))
+      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be positive, not %g",
+                    positive[i], vals[i]);
+}
+
+static void st_layout(bg_build *b, const bg_ast_stmt *s) {
+  check_options(b, s, "engine, rankdir", "layout");
+  const char *engine = word_opt(b, s, "engine", "dot, neato, fdp, sfdp, pinned");
+  const char *rankdir = word_opt(b, s, "rankdir", "LR, TB, RL, BT");
+  if (engine) b->m->layout.engine = engine;
+  if (rankdir) b->m->layout.rankdir = rankdir;
+}
+
+static void st_plot(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  check_options(b, s, "title, ylabel, xlabel", "plot");
+  int p = bg_build_new(b, &m->nplot);
+  m->plot_expradr[p] = m->nplotexpr;
+  m->plot_nexpr[p] = s->nexprs;
+  m->plot_title[p] = string_opt(b, s, "title");
+  m->plot_ylabel[p] = string_opt(b, s, "ylabel");
+  m->plot_xlabel[p] = string_opt(b, s, "xlabel");
+  if (!m->plot_ylabel[p]) m->plot_ylabel[p] = "";
+  if (!m->plot_xlabel[p]) m->plot_xlabel[p] = "t";
+  b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
+  b->input_limit = m->ninput;
+  b->what = "a plot";
+  for (int i = 0; i < s->nexprs; i++) {
+    int root = bg_build_expr(b, s->exprs[i]);
+    int k = bg_build_new(b, &m->nplotexpr);
+    m->plotexpr_root[k] = root;
+    m->plotexpr_text[k] = bg_build_strdup(b, s->exprs[i]->text);
+  }
+}
+
+static void st_state(bg_build *b, const bg_ast_stmt *s) {
+  const ns_entry *n = bg_build_lookup(b, s->name);
+  check_options(b, s, "init", "a state");
+  if (!n || n->kind != NS_STATE || n->loc.line != s->name_loc.line) return;
+  b->m->state_init[n->id] = init_opt(b, s, "init");
+}
+
+static void st_bond(bg_build *b, const bg_ast_stmt *s, int bond) {
+  check_options(b, s, "label, color", "a bond");
+  b->m->bond_label[bond] = string_opt(b, s, "label");
+  b->m->bond_color[bond] = color_opt(b, s);
+}
+
+static void st_model(bg_build *b, const bg_ast_stmt *s) {
+  b->m->name = bg_build_strdup(b, s->name);
+  b->m->title = bg_build_strdup(b, s->text);
+}
+
+void bg_build_statements(bg_build *b) {
+  const bg_ast_stmt *model = NULL, *caus = NULL, *sim = NULL, *layout = NULL;
+  int bond = 0;
+  for (int i = 0; i < b->ast->nstmts; i++) {
+    const bg_ast_stmt *s = &b->ast->stmts[i];
+    switch (s->kind) {
+    case BG_ST_MODEL: if (once(b, s, &model, "model")) st_model(b, s); break;
+    case BG_ST_CAUSALITY: if (once(b, s, &caus, "causality")) st_causality(b, s); break;
+    case BG_ST_SIMULATE: if (once(b, s, &sim, "simulate")) st_simulate(b, s); break;
+    case BG_ST_LAYOUT: if (once(b, s, &layout, "layout")) st_layout(b, s); break;
+    case BG_ST_PLOT: st_plot(b, s); break;
+    case BG_ST_STATE: st_state(b, s); break;
+    case BG_ST_BOND: st_bond(b, s, bond++); break;
+    default: break;
+    }
+  }
+}

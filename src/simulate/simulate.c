@@ -1,0 +1,363 @@
+/* bg_simulate: decides whether and how to simulate (refusal, solver choice
+ * and why, tolerances, output grid, input breakpoints), then hands the plan
+ * to the SUNDIALS driver (simulate_run.c). */
+#include <lapacke.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "model/expr.h"
+#include "simulate/simulate_int.h"
+
+#define SIM_DEFAULT_RTOL 1e-6
+#define SIM_DEFAULT_ATOL 1e-9
+#define SIM_DEFAULT_ROWS 500
+#define SIM_SPARSE_ABOVE 200   /* unknowns: KLU above, dense up to (docs/simulation.md) */
+#define SIM_EIG_MAX 200        /* eigenvalues for the stiffness test up to this size */
+#define SIM_STIFF_RATIO 1e3
+#define SIM_MAX_STEPS 100000L  /* per output interval; SUNDIALS' 500 is far too few */
+#define SIM_PROGRESS_EVERY 1.0 /* -v: seconds between progress lines */
+
+static char *xstrdup_sb(bg_strbuf *sb) {
+  char *s = strdup(bg_sb_str(sb));
+  bg_sb_free(sb);
+  return s;
+}
+
+/* ------------------------------------------------------------------ stiffness */
+typedef struct scales {
+  double fast, slow; /* smallest and largest time scale [s]; 0 when none */
+  double decay;      /* fastest decay time scale [s] (1 / largest -Re lambda); 0: none */
+  const char *from;  /* where they came from */
+} scales;
+
+static void scale_add(scales *sc, double tau) {
+  if (!(tau > 0) || !isfinite(tau)) return;
+  if (sc->fast == 0 || tau < sc->fast) sc->fast = tau;
+  if (tau > sc->slow) sc->slow = tau;
+}
+
+/* Time scales 1/|lambda| of the Jacobian's eigenvalues at the initial point
+ * (eigenvalues that are zero to rounding, pure integrators, are left out). */
+static int scales_eig(bg_eqsys *s, double t0, const double *y0, scales *sc) {
+  int n = bg_eqsys_n(s), ok = 0;
+  double *J = bg_xmalloc((size_t)n * n * sizeof(double));
+  double *wr = bg_xmalloc((size_t)n * sizeof(double)), *wi = bg_xmalloc((size_t)n * sizeof(double));
+  if (bg_eqsys_jac_dense(s, t0, y0, NULL, 0.0, J) == 0 &&
+      LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'N', n, J, n, wr, wi, NULL, 1, NULL, 1) == 0) {
+    double big = 0;
+    for (int i = 0; i < n; i++) big = fmax(big, hypot(wr[i], wi[i]));
+    for (int i = 0; i < n; i++) {
+      double mag = hypot(wr[i], wi[i]);
+      if (mag > 1e-10 * big) scale_add(sc, 1.0 / mag);
+      if (-wr[i] > 1e-10 * big && (sc->decay == 0 || -1.0 / wr[i] < sc->decay)) sc->decay = -1.0 / wr[i];
+    }
+    sc->from = "eigenvalues of the Jacobian at t0";
+    ok = 1;
+  }
+  free(J), free(wr), free(wi);
+  return ok;
+}
+
+/* Time constants and 1/omega0 of the analysis' first- and second-order paths. */
+static void scales_estimates(const bg_analysis *a, scales *sc) {
+  for (int i = 0; i < a->nestimate; i++) {
+    double v = a->estimate_value[i];
+    scale_add(sc, a->estimate_kind[i] == 0 ? v : 1.0 / v);
+    if (a->estimate_kind[i] == 0 && v > 0 && (sc->decay == 0 || v < sc->decay)) sc->decay = v;
+  }
+  sc->from = "time constants and natural frequencies of the causal paths";
+}
+
+/* Auto choice for an ODE: BDF when the time scales spread over more than
+ * SIM_STIFF_RATIO, or when the simulated span is more than SIM_STIFF_RATIO
+ * times the fastest decay (a single fast decay over a long run is stiff too:
+ * Adams would be held to steps of that size long after it died out). */
+static int choose_ode(const bg_analysis *a, bg_eqsys *s, const bg_simspec *sp, const double *y0,
+                      bg_strbuf *why) {
+  scales sc = {0, 0, 0, NULL};
+  double span = sp->t_end - sp->t0;
+  if (bg_eqsys_n(s) > SIM_EIG_MAX || !scales_eig(s, sp->t0, y0, &sc)) scales_estimates(a, &sc);
+  if (sc.fast == 0) {
+    int big = bg_eqsys_n(s) > SIM_EIG_MAX;
+    bg_sb_printf(why, "auto: no time scale known (%s); %s", big ? "large system" : "none found",
+                 big ? "BDF is the safe choice for a large system" : "non-stiff Adams");
+    return big ? BG_SIM_BDF : BG_SIM_ADAMS;
+  }
+  double ratio = sc.slow / sc.fast, sratio = sc.decay > 0 ? span / sc.decay : 0;
+  int stiff = ratio > SIM_STIFF_RATIO || sratio > SIM_STIFF_RATIO;
+  bg_sb_printf(why, "auto: time scales from %.3g s to %.3g s (%s), ratio %.3g; span %.3g s / "
+                    "fastest decay %.3g s = %.3g; %s than %.0e: %s", sc.fast, sc.slow, sc.from,
+               ratio, span, sc.decay, sratio, stiff ? "more" : "neither more", SIM_STIFF_RATIO,
+               stiff ? "stiff, BDF" : "not stiff, Adams");
+  return stiff ? BG_SIM_BDF : BG_SIM_ADAMS;
+}
+
+static int kind_parse(const char *name) {
+  if (!strcmp(name, "cvode_bdf")) return BG_SIM_BDF;
+  if (!strcmp(name, "cvode_adams")) return BG_SIM_ADAMS;
+  if (!strcmp(name, "ida")) return BG_SIM_IDA;
+  return -1;
+}
+
+static const char *kind_name(int kind) {
+  return kind == BG_SIM_BDF ? "cvode_bdf" : kind == BG_SIM_ADAMS ? "cvode_adams" : "ida";
+}
+
+/* Returns the solver kind, or -1 with r->message when the choice is impossible. */
+static int choose(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                  const double *y0, bg_simresult *r) {
+  const char *forced = o && o->solver ? o->solver : m->sim.solver;
+  bg_strbuf why = {0};
+  int kind = -1, ode = bg_eqsys_is_ode(s);
+  if (forced && strcmp(forced, "auto") != 0) {
+    kind = kind_parse(forced);
+    if (kind < 0) {
+      bg_sb_printf(&why, "unknown solver '%s' (auto, cvode_bdf, cvode_adams or ida)", forced);
+      r->message = xstrdup_sb(&why);
+      return -1;
+    }
+    if (kind != BG_SIM_IDA && !ode) {
+      bg_sb_printf(&why, "solver %s cannot integrate this model: its equations are a DAE "
+                         "(%d algebraic unknowns, %d dependent stores); use ida or auto",
+                   forced, bg_eqsys_n(s) - bg_eqsys_nx(s), a->ndependent);
+      r->message = xstrdup_sb(&why);
+      return -1;
+    }
+    bg_sb_printf(&why, "forced by %s", o && o->solver ? "the command line" : "the model's solver =");
+  } else if (!ode) {
+    kind = BG_SIM_IDA;
+    bg_sb_printf(&why, "auto: the equations are a DAE (%d algebraic unknown%s, %d dependent "
+                       "store%s), index %d: IDA", bg_eqsys_n(s) - bg_eqsys_nx(s),
+                 bg_eqsys_n(s) - bg_eqsys_nx(s) == 1 ? "" : "s", a->ndependent,
+                 a->ndependent == 1 ? "" : "s", a->index_predicted > 0 ? a->index_predicted : 1);
+  } else {
+    kind = choose_ode(a, s, &m->sim, y0, &why);
+  }
+  r->solver_used = kind_name(kind);
+  r->solver_reason = xstrdup_sb(&why);
+  return kind;
+}
+
+/* ------------------------------------------------------------------ tolerances */
+/* atol is meant for efforts and flows: a linear store's state q = C e (p = I f)
+ * gets atol times its capacitance (inertance), so that 1e-9 on a 1 uF
+ * capacitor's charge does not mean 1e-3 V. Other unknowns get atol as is. */
+typedef struct byname {
+  const bg_model *m;
+  int *ids; /* element ids sorted by name: the look-up per unknown must not be linear */
+} byname;
+
+static const bg_model *sort_model; /* qsort has no context argument in C11 */
+
+static int cmp_elem(const void *x, const void *y) {
+  return strcmp(sort_model->elem_name[*(const int *)x], sort_model->elem_name[*(const int *)y]);
+}
+
+static int find_elem(const byname *bn, const char *name, size_t len) {
+  int lo = 0, hi = bn->m->nelem - 1;
+  while (lo <= hi) {
+    int mid = (lo + hi) / 2;
+    const char *s = bn->m->elem_name[bn->ids[mid]];
+    int c = strncmp(s, name, len);
+    if (c == 0) c = s[len] != 0; /* s longer than the prefix sorts after it */
+    if (c == 0) return bn->ids[mid];
+    if (c < 0) lo = mid + 1;
+    else hi = mid - 1;
+  }
+  return -1;
+}
+
+static double store_scale(const byname *bn, const char *name) {
+  const bg_model *m = bn->m;
+  const char *dot = name ? strrchr(name, '.') : NULL;
+  if (!dot || (strcmp(dot, ".q") && strcmp(dot, ".p"))) return 1.0;
+  int e = find_elem(bn, name, (size_t)(dot - name));
+  if (e < 0 || !bg_elem_is_store(m->elem_kind[e]) || m->elem_form[e] != BG_FORM_VALUE ||
+      m->elem_modulated[e] || m->elem_expr[e] < 0)
+    return 1.0;
+  bg_xenv env = {m->sim.t0, NULL, NULL, NULL, NULL, NULL};
+  double v = fabs(bg_xeval(m, m->elem_expr[e], &env));
+  return isfinite(v) && v > 0 ? v : 1.0;
+}
+
+static byname byname_make(const bg_model *m) {
+  byname bn = {m, bg_xmalloc((size_t)(m->nelem > 0 ? m->nelem : 1) * sizeof(int))};
+  for (int e = 0; e < m->nelem; e++) bn.ids[e] = e;
+  sort_model = m;
+  qsort(bn.ids, (size_t)m->nelem, sizeof(int), cmp_elem);
+  return bn;
+}
+
+static double *make_atol(const byname *bn, bg_eqsys *s, double atol) {
+  int n = bg_eqsys_n(s);
+  double *v = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+  for (int i = 0; i < n; i++) v[i] = atol * store_scale(bn, bg_eqsys_name(s, i));
+  return v;
+}
+
+/* ------------------------------------------------------------------ initial values */
+static double init_of(const bg_model *m, int root) {
+  if (root < 0) return 0;
+  bg_xenv env = {m->sim.t0, NULL, NULL, NULL, NULL, NULL};
+  return bg_xeval(m, root, &env);
+}
+
+/* What the model says unknown i starts at: a store's q0/p0, a state's init
+ * (0 when not given). NAN for algebraic unknowns: the model gives none,
+ * their starting value is only a guess. */
+static double model_start(const byname *bn, bg_eqsys *s, int i) {
+  const bg_model *m = bn->m;
+  const char *name = bg_eqsys_name(s, i), *dot = name ? strrchr(name, '.') : NULL;
+  if (!name || !bg_eqsys_is_differential(s, i)) return NAN;
+  if (dot && (!strcmp(dot, ".q") || !strcmp(dot, ".p"))) {
+    int e = find_elem(bn, name, (size_t)(dot - name));
+    if (e >= 0 && bg_elem_is_store(m->elem_kind[e])) return init_of(m, m->elem_init[e]);
+  }
+  for (int k = 0; k < m->nstate; k++)
+    if (!strcmp(m->state_name[k], name)) return init_of(m, m->state_init[k]);
+  return NAN;
+}
+
+/* The states the solver started from that differ from the model's initial
+ * values (a dependent store's q/p follows from the independent ones; the
+ * model's default 0 is then replaced): r->ic_report, "L1.p 0 -> 1, ...". */
+static void report_start(const byname *bn, bg_eqsys *s, const double *atol, double rtol,
+                         bg_simresult *r) {
+  if (!r->y0) return;
+  bg_strbuf sb = {0};
+  int nchanged = 0;
+  for (int i = 0; i < r->n; i++) {
+    double v0 = model_start(bn, s, i), y = r->y0[i];
+    if (isnan(v0) || !(fabs(y - v0) > rtol * fabs(v0) + atol[i])) continue;
+    if (nchanged++ < 8)
+      bg_sb_printf(&sb, "%s%s %.6g -> %.6g", nchanged > 1 ? ", " : "", bg_eqsys_name(s, i), v0, y);
+  }
+  if (nchanged > 8) bg_sb_printf(&sb, " and %d more", nchanged - 8);
+  r->consistent_ic_changed = nchanged > 0;
+  if (nchanged) r->ic_report = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+/* ------------------------------------------------------------------ grid */
+static double *make_times(const bg_simspec *sp, int *nrows) {
+  double span = sp->t_end - sp->t0;
+  double dt = sp->dt > 0 ? sp->dt : span / SIM_DEFAULT_ROWS;
+  double steps = ceil(span / dt - 1e-9);
+  if (steps < 1) steps = 1;
+  if (steps > 1e8) steps = 1e8;
+  int n = (int)steps + 1;
+  double *t = bg_xmalloc((size_t)n * sizeof(double));
+  for (int k = 0; k < n - 1; k++) t[k] = sp->t0 + k * dt;
+  t[n - 1] = sp->t_end;
+  *nrows = n;
+  return t;
+}
+
+static double *make_breakpoints(bg_eqsys *s, const bg_simspec *sp, int *nbp) {
+  int cap = 256, n;
+  double *bp = NULL;
+  for (;;) {
+    bp = bg_xrealloc(bp, (size_t)cap * sizeof(double));
+    n = bg_eqsys_breakpoints(s, sp->t0, sp->t_end, bp, cap);
+    if (n < cap) break;
+    cap *= 4;
+  }
+  int w = 0; /* keep the contract's promise locally: inside (t0, t_end), increasing */
+  for (int i = 0; i < n; i++)
+    if (bp[i] > sp->t0 && bp[i] < sp->t_end && (w == 0 || bp[i] > bp[w - 1])) bp[w++] = bp[i];
+  *nbp = w;
+  return bp;
+}
+
+/* ------------------------------------------------------------------ entry */
+static void result_alloc(bg_eqsys *s, int nrows, bg_simresult *r) {
+  r->nout = bg_eqsys_noutput(s);
+  r->names = bg_xmalloc((size_t)(r->nout > 0 ? r->nout : 1) * sizeof(char *));
+  for (int k = 0; k < r->nout; k++) r->names[k] = bg_eqsys_output_name(s, k);
+  r->t = bg_xmalloc((size_t)nrows * sizeof(double));
+  r->values = bg_xmalloc((size_t)nrows * (size_t)(r->nout > 0 ? r->nout : 1) * sizeof(double));
+}
+
+static int refuse(bg_simresult *r, char *msg) {
+  r->message = msg;
+  return 1;
+}
+
+static int check_spec(const bg_simspec *sp, bg_simresult *r) {
+  if (sp->t_end > sp->t0 && isfinite(sp->t_end) && isfinite(sp->t0)) return 0;
+  if (!sp->present) return refuse(r, strdup("the model has no simulate block (simulate t_end = ...)"));
+  char buf[160];
+  snprintf(buf, sizeof buf, "nothing to simulate: t_end (%g) must be greater than t0 (%g)",
+           sp->t_end, sp->t0);
+  return refuse(r, strdup(buf));
+}
+
+int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                bg_simresult *r) {
+  memset(r, 0, sizeof *r);
+  char *why = bg_simulate_refusal(m, a);
+  if (why) return refuse(r, why);
+  if (!s) {
+    bg_strbuf sb = {0};
+    bg_sb_puts(&sb, "the equations could not be formed");
+    if (o && o->eqs_problem) bg_sb_printf(&sb, ": %s", o->eqs_problem);
+    else bg_sb_puts(&sb, " (see the diagnostics)");
+    return refuse(r, xstrdup_sb(&sb));
+  }
+  if (check_spec(&m->sim, r)) return 1;
+  int n = bg_eqsys_n(s), rc;
+  double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+  bg_eqsys_initial(s, y0);
+  int kind = choose(m, a, s, o, y0, r);
+  free(y0);
+  if (kind < 0) return 1;
+  bg_simplan p = {0};
+  p.kind = kind;
+  p.sparse = n > SIM_SPARSE_ABOVE;
+  if (o && o->verbose)
+    fprintf(stderr, "bgdraw: simulate: %d unknowns, solver %s, %s (%s)\n", n, r->solver_used,
+            p.sparse ? "sparse Jacobian, KLU" : "dense Jacobian", r->solver_reason);
+  p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
+  p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : SIM_DEFAULT_RTOL;
+  double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
+  p.max_step = m->sim.max_step;
+  p.max_steps = SIM_MAX_STEPS;
+  p.verbose = o ? o->verbose : 0;
+  p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
+  r->linear_solver = p.sparse ? "klu" : "dense";
+  r->rtol = p.rtol, r->atol = atol;
+  byname bn = byname_make(m);
+  double *atolv = make_atol(&bn, s, atol), *times = make_times(&m->sim, &p.nrows);
+  double *bp = make_breakpoints(s, &m->sim, &p.nbp);
+  p.atol = atolv, p.times = times, p.bp = bp;
+  result_alloc(s, p.nrows, r);
+  struct timespec c0, c1;
+  clock_gettime(CLOCK_MONOTONIC, &c0);
+  rc = bg_sim_integrate(s, &p, r);
+  clock_gettime(CLOCK_MONOTONIC, &c1);
+  if (r->nrows) report_start(&bn, s, atolv, p.rtol, r);
+  if (p.verbose && r->ic_report)
+    fprintf(stderr, "bgdraw: simulate: initial values made consistent: %s\n", r->ic_report);
+  if (p.verbose)
+    fprintf(stderr, "bgdraw: simulate: %s in %.3f s: %d rows, %ld steps, %ld function and %ld "
+                    "Jacobian evaluations, %ld error test failures, %ld nonlinear iterations\n",
+            rc ? "failed" : "done", (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec),
+            r->nrows, r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
+  free(atolv), free(times), free(bp), free(bn.ids);
+  return rc;
+}
+
+void bg_simresult_free(bg_simresult *r) {
+  free(r->names);
+  free(r->t);
+  free(r->values);
+  free(r->message);
+  free(r->solver_reason);
+  free(r->ic_report);
+  free(r->y0);
+  free(r->yp0);
+  memset(r, 0, sizeof *r);
+}

@@ -1,0 +1,72 @@
+/* Simulation: integrates a model's equation system (bg_eqsys) over its
+ * `simulate` block with SUNDIALS (CVODE BDF or Adams for ODEs, IDA for
+ * index-1 DAEs). Refuses, without calling a solver, models whose index is
+ * above 1 or whose junction structure / algebraic loop is singular at the
+ * current parameter values, and says why and what to do.
+ *
+ * Only src/simulate*.c include SUNDIALS headers. */
+#ifndef BG_SIMULATE_H
+#define BG_SIMULATE_H
+#include "causality/analysis.h"
+#include "equations/eqsys.h"
+#include "model/model.h"
+#include "base/strbuf.h"
+
+typedef struct bg_sim_opts {
+  const char *solver; /* NULL: the model's `solver =` (default "auto") */
+  int verbose;        /* progress and the solver choice on stderr */
+  /* Overrides of the model's simulate block (0: the model's value). */
+  double rtol, atol;
+  /* -v progress: at most one line per this many seconds of wall time
+   * (0: 1 s); a run shorter than that prints only its summary. */
+  double progress_every;
+  /* Why the equations could not be formed when bg_simulate gets s == NULL
+   * (the eqsys diagnostic), for the refusal message; nullable. */
+  const char *eqs_problem;
+} bg_sim_opts;
+
+typedef struct bg_simresult {
+  int nout;            /* output columns (without t) */
+  const char **names;  /* nout names, borrowed from the eqsys (valid while it lives) */
+  int nrows;           /* rows actually computed */
+  double *t;           /* nrows times */
+  double *values;      /* nrows x nout, row-major */
+  int partial;         /* the run stopped before t_end */
+  double t_reached;    /* last time the solution is known at */
+  char *message;       /* why it was refused or failed, in words; NULL when ok */
+  const char *solver_used; /* "cvode_bdf", "cvode_adams", "ida"; NULL when refused */
+  char *solver_reason;     /* why this solver ("auto: ...", "forced by ...") */
+  char *ic_report;         /* states whose start differs from the model's initial
+                              values (q0, p0, init; 0 when not given), e.g. a
+                              dependent store's: "L1.p 0 -> 1"; nullable */
+  long steps, rhs_evals, jac_evals, err_test_fails, nonlin_iters;
+  int consistent_ic_changed; /* ic_report is not empty */
+  int n;               /* unknowns of the equation system */
+  double *y0, *yp0;    /* n: the initial values and derivatives the solver started
+                          from (after IDACalcIC for IDA); NULL when refused */
+  const char *linear_solver; /* "dense" or "klu"; NULL when refused */
+  double rtol, atol;   /* the tolerances used (atol before the per-store scaling) */
+  int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
+                          after the model's own failed (0: the model's worked) */
+} bg_simresult;
+
+/* Runs the model's simulation. s may be NULL when the equations could not
+ * be built (the result is then a refusal). Returns 0 ok, 1 refused (no
+ * solver was called; r->message names the loop or paths and the remedies),
+ * 2 failed (r->message says what went wrong and at which time; the rows up
+ * to r->t_reached are kept and r->partial is set). r is always filled and
+ * must be freed with bg_simresult_free. */
+int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                bg_simresult *r);
+void bg_simresult_free(bg_simresult *r);
+
+/* Why the analysis forbids simulating this model (index above 1, a class 5
+ * causal loop, a singular algebraic loop, incomplete causality), as a
+ * malloc'd message with remedies; NULL when nothing forbids it. */
+char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a);
+
+/* The results as CSV: header "t,<names...>" (a name containing a comma or a
+ * quote is quoted CSV-style), one row per output time, numbers "%.17g".
+ * A partial run ends with one comment line "# partial: <message>". */
+void bg_csv_write(const bg_simresult *r, bg_strbuf *out);
+#endif

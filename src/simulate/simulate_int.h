@@ -1,0 +1,27 @@
+/* Internal to src/simulate*.c: the plan bg_simulate makes (solver, tolerances,
+ * output grid, input breakpoints) and the SUNDIALS driver that carries it out. */
+#ifndef BG_SIMULATE_INT_H
+#define BG_SIMULATE_INT_H
+#include "simulate/simulate.h"
+
+enum { BG_SIM_BDF, BG_SIM_ADAMS, BG_SIM_IDA };
+
+typedef struct bg_simplan {
+  int kind;         /* BG_SIM_* */
+  int sparse;       /* KLU with the eqsys sparsity pattern (else dense) */
+  double t0, t_end; /* t_end > t0 */
+  double rtol, max_step; /* max_step 0: no limit */
+  long max_steps;   /* per output interval */
+  const double *atol; /* n, per unknown */
+  int nrows;
+  const double *times; /* nrows output times, times[0] = t0, last = t_end */
+  int nbp;
+  const double *bp;    /* sorted breakpoints strictly inside (t0, t_end) */
+  int verbose;
+  double progress_every; /* -v: seconds of wall time between progress lines */
+} bg_simplan;
+
+/* Integrates; fills r->t, r->values (preallocated for p->nrows rows), nrows,
+ * the statistics, t_reached, partial and message. Returns 0 or 2 (failed). */
+int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r);
+#endif

@@ -1,0 +1,110 @@
+/* Why a model must not be handed to a solver (docs/simulation.md): index
+ * above 1, a causal loop of gain +1, an algebraic loop that is singular at
+ * the current parameter values, incomplete causality. The message names the
+ * loop or paths and gives the remedies of the reference text. IDA does not
+ * reliably reject such systems, so this is decided here. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "simulate/simulate.h"
+
+/* Remedies differ by cause: van Dijk's causality removes a causal loop of
+ * gain +1 but not a class 1 path sharing bonds with a loop (Proposition
+ * 5.10), nor a conflict that constrains states. */
+static const char *const REMEDIES =
+    "Remedies: use --causality vandijk (van Dijk's causality turns the loop into class 1 "
+    "paths between stores, index 1); or add a small store (C or I) or a resistor in the "
+    "path so the loop gets an integration (Section 4.3).";
+static const char *const REMEDIES_SHARED =
+    "Remedies: add a small store (C or I) or a resistor in the causal loop or in the class 1 "
+    "path so they no longer share bonds without an integration (Section 4.3); if a causal "
+    "stroke fixed in the model closes the loop, try the other choice; --causality vandijk "
+    "does not help here, the class 1 path stays.";
+static const char *const REMEDIES_CONFLICT =
+    "Remedies: add a small store (C at a 0-junction, I at a 1-junction) or a resistor at the "
+    "junction of the conflict, so its balance gets a variable of its own (Section 4.3).";
+
+static void bonds_list(const bg_model *m, const int *b, int n, bg_strbuf *sb) {
+  for (int i = 0; i < n; i++) bg_sb_printf(sb, "%s%d", i ? ", " : "", m->bond_num[b[i]]);
+}
+
+/* Gain +1 to within rounding: the loop equation (1 - g) x = ... is singular. */
+static int unity(double g) { return fabs(g - 1.0) <= 1e-12; }
+
+static int class5_loop(const bg_analysis *a) {
+  for (int l = 0; l < a->ncloop; l++)
+    if (a->cloop_class[l] == 5) return l;
+  return -1;
+}
+
+static void say_class5(const bg_model *m, const bg_analysis *a, int l, bg_strbuf *sb) {
+  bg_sb_printf(sb, "causal loop %d (bonds ", l + 1);
+  bonds_list(m, a->cloop_bonds + a->cloop_adr[l], a->cloop_n[l], sb);
+  bg_sb_puts(sb, ") has gain +1 (class 5");
+  if (a->cloop_gain[l] && strcmp(a->cloop_gain[l], "1") != 0)
+    bg_sb_printf(sb, ": gain %s = 1 at these parameter values", a->cloop_gain[l]);
+  bg_sb_puts(sb, "): the junction structure is singular and the index is above 1, so no "
+                 "solver can integrate the equations as they stand. ");
+  bg_sb_puts(sb, REMEDIES);
+}
+
+/* Class 1 paths sharing bonds with a causal loop, and any other index-2
+ * pattern the analysis found: its reason text already names them. */
+static void say_index2(const bg_model *m, const bg_analysis *a, bg_strbuf *sb) {
+  bg_sb_printf(sb, "predicted index above 1: %s. ",
+               a->index_reason ? a->index_reason : "the causal pattern gives index 2");
+  for (int l = 0; l < a->ncloop; l++) {
+    bg_sb_printf(sb, "Causal loop %d runs through bonds ", l + 1);
+    bonds_list(m, a->cloop_bonds + a->cloop_adr[l], a->cloop_n[l], sb);
+    bg_sb_puts(sb, ". ");
+  }
+  for (int p = 0; p < a->npath; p++) {
+    if (a->path_class[p] != 1) continue;
+    bg_sb_printf(sb, "Class 1 causal path %d (%s to %s) runs through bonds ", p + 1,
+                 m->elem_name[a->path_end0[p]], m->elem_name[a->path_end1[p]]);
+    bonds_list(m, a->path_bonds + a->path_adr[p], a->path_n[p], sb);
+    bg_sb_puts(sb, ". ");
+  }
+  bg_sb_puts(sb, "IDA cannot integrate index-2 equations reliably. ");
+  const char *why = a->index_reason ? a->index_reason : "";
+  if (strncmp(why, "class 1 causal path", 19) == 0) bg_sb_puts(sb, REMEDIES_SHARED);
+  else if (strstr(why, "conflict at")) bg_sb_puts(sb, REMEDIES_CONFLICT);
+  else bg_sb_puts(sb, REMEDIES);
+}
+
+static int singular_tloop(const bg_analysis *a) {
+  for (int t = 0; t < a->ntloop; t++)
+    if (a->tloop_algebraic[t] && unity(a->tloop_gain_value[t])) return t;
+  return -1;
+}
+
+static void say_tloop(const bg_analysis *a, int t, bg_strbuf *sb) {
+  const char *cause = a->tloop_cause[t] ? a->tloop_cause[t] : "the signal flow graph";
+  bg_sb_printf(sb, "algebraic loop %d (from %s) has gain %s = 1 at these parameter values: "
+                   "the loop equation (1 - gain) x = ... cannot be solved for x (Equation 4.45)"
+                   ", the equations are singular. ", t + 1, cause, a->tloop_gain[t]);
+  if (a->tloop_cause[t] && strncmp(a->tloop_cause[t], "internal", 8) == 0)
+    bg_sb_puts(sb, "Remedies: change the parameters so the loop gain differs from 1, or add "
+                   "a small store (C or I) in the loop (Section 4.3).");
+  else
+    bg_sb_puts(sb, REMEDIES);
+}
+
+char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
+  bg_strbuf sb = {0};
+  int l, t;
+  if (!a->complete || a->form == BG_FORM_INCOMPLETE)
+    bg_sb_puts(&sb, "causality is incomplete: some bonds have no causal stroke, so the "
+                    "equations cannot be formed. Fix the conflicts the analysis reports "
+                    "(or use --causality relaxed or vandijk).");
+  else if ((l = class5_loop(a)) >= 0)
+    say_class5(m, a, l, &sb);
+  else if ((t = singular_tloop(a)) >= 0) /* before the index: its own remedies */
+    say_tloop(a, t, &sb);
+  else if (a->index_predicted >= 2)
+    say_index2(m, a, &sb);
+  if (!sb.len) return NULL;
+  char *msg = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+  return msg;
+}

@@ -1,0 +1,474 @@
+/* The SUNDIALS driver: CVODE (BDF/Adams) or IDA over a bg_eqsys, dense or
+ * KLU linear algebra with the eqsys' exact Jacobian, output on a fixed grid,
+ * never stepping over an input discontinuity (stop just before each
+ * breakpoint, re-initialise at it). Failures are put into words here.
+ * With src/simulate_words.c, the only place that includes SUNDIALS headers. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <cvode/cvode.h>
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "base/arena.h"
+#include "simulate/simulate_int.h"
+#include "simulate/simulate_words.h"
+
+typedef struct simrun {
+  bg_eqsys *s;
+  const bg_simplan *p;
+  int n, ode;
+  SUNContext ctx;
+  void *mem;
+  N_Vector y, yp, atol, id;
+  SUNMatrix A;
+  SUNLinearSolver LS;
+  sunindextype *colptr, *rowind; /* the sparse pattern, copied in at each evaluation */
+  int nnz, *diagpos;             /* position of each diagonal entry in the pattern */
+  double tcur;                   /* where the solution is known */
+  int nfunc_err;                 /* equation evaluation failures since the last output */
+  char err[400];                 /* the last evaluation failure, in words */
+  char sunmsg[400];              /* the last SUNDIALS message */
+  long st[5];                    /* statistics of earlier segments (counters reset on ReInit) */
+  /* -v progress: wall clock at the start and at the last line, evaluations
+   * since the last clock reading, latest time shown */
+  double wall0, wall_last, t_shown;
+  unsigned ncall;
+} simrun;
+
+static void progress(simrun *R, double t);
+
+static double wall(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+
+/* ------------------------------------------------------------------ callbacks
+ * They run inside the solver: no allocation. An evaluation failure (NaN, a
+ * law outside its domain) is recoverable at first: a Newton iterate or a
+ * too-long step may overshoot into a region the solution never visits, and
+ * the solver retries with a smaller step. When failures keep coming, the
+ * solution itself has left the law's domain: creeping along the edge with
+ * ever smaller steps would only produce wrong values, so the failure
+ * becomes unrecoverable. Its text is kept for the message. */
+#define SIM_MAX_EVAL_FAILS 25 /* per output interval */
+
+static int keep_error(simrun *R) {
+  const char *e = bg_eqsys_error(R->s);
+  R->nfunc_err++;
+  snprintf(R->err, sizeof R->err, "%s", e ? e : "an equation evaluated to NaN or infinity");
+  return R->nfunc_err > SIM_MAX_EVAL_FAILS ? -1 : 1;
+}
+
+/* -v: a long output interval still shows progress; the clock is read every
+ * 256 evaluations only, and not at all without -v. */
+#define PROGRESS_POLL(R, t) \
+  do { if ((R)->p->verbose && (++(R)->ncall & 255u) == 0) progress((R), (t)); } while (0)
+
+static int cv_rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *ud) {
+  simrun *R = ud;
+  PROGRESS_POLL(R, t);
+  if (bg_eqsys_rhs(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) == 0) return 0;
+  return keep_error(R);
+}
+
+static int ida_res(sunrealtype t, N_Vector y, N_Vector yp, N_Vector rr, void *ud) {
+  simrun *R = ud;
+  PROGRESS_POLL(R, t);
+  if (bg_eqsys_residual(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
+                        N_VGetArrayPointer(rr)) == 0)
+    return 0;
+  return keep_error(R);
+}
+
+/* Jacobian into J. For an ODE the eqsys gives df/dy (yp NULL); IDA on an ODE
+ * wants dF/dy + cj dF/dyp = cj I - df/dy, built here from it. */
+static int fill_jac(simrun *R, double t, N_Vector y, N_Vector yp, double cj, SUNMatrix J) {
+  const double *yv = N_VGetArrayPointer(y);
+  const double *ypv = R->ode ? NULL : N_VGetArrayPointer(yp);
+  int n = R->n, rc;
+  double *v;
+  if (R->p->sparse) {
+    memcpy(SUNSparseMatrix_IndexPointers(J), R->colptr, (size_t)(n + 1) * sizeof(sunindextype));
+    memcpy(SUNSparseMatrix_IndexValues(J), R->rowind, (size_t)R->nnz * sizeof(sunindextype));
+    v = SUNSparseMatrix_Data(J);
+    rc = bg_eqsys_jac_sparse(R->s, t, yv, ypv, R->ode ? 0.0 : cj, v);
+  } else {
+    v = SUNDenseMatrix_Data(J);
+    rc = bg_eqsys_jac_dense(R->s, t, yv, ypv, R->ode ? 0.0 : cj, v);
+  }
+  if (rc) return keep_error(R);
+  if (R->ode && yp) { /* IDA on an ODE */
+    long len = R->p->sparse ? R->nnz : (long)n * n;
+    for (long k = 0; k < len; k++) v[k] = -v[k];
+    for (int i = 0; i < n; i++) v[R->p->sparse ? R->diagpos[i] : (long)i * n + i] += cj;
+  }
+  return 0;
+}
+
+static int cv_jac(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vector t1,
+                  N_Vector t2, N_Vector t3) {
+  (void)fy, (void)t1, (void)t2, (void)t3;
+  return fill_jac(ud, t, y, NULL, 0.0, J);
+}
+
+static int ida_jac(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r,
+                   SUNMatrix J, void *ud, N_Vector t1, N_Vector t2, N_Vector t3) {
+  (void)r, (void)t1, (void)t2, (void)t3;
+  return fill_jac(ud, t, y, yp, cj, J);
+}
+
+/* SUNDIALS would print to stderr; keep the text for our own message. */
+static void on_sunerr(int code, const char *module, const char *fn, char *msg, void *ud) {
+  simrun *R = ud;
+  (void)code;
+  snprintf(R->sunmsg, sizeof R->sunmsg, "%s/%s: %s", module, fn, msg);
+  if (R->p->verbose > 1) fprintf(stderr, "bgdraw: %s\n", R->sunmsg);
+}
+
+/* ------------------------------------------------------------------ set-up */
+static int make_pattern(simrun *R) {
+  int n = R->n;
+  R->nnz = bg_eqsys_jac_nnz(R->s);
+  int *cp = bg_xmalloc((size_t)(n + 1) * sizeof(int));
+  int *ri = bg_xmalloc((size_t)(R->nnz > 0 ? R->nnz : 1) * sizeof(int));
+  bg_eqsys_jac_pattern(R->s, cp, ri);
+  R->colptr = bg_xmalloc((size_t)(n + 1) * sizeof(sunindextype));
+  R->rowind = bg_xmalloc((size_t)(R->nnz > 0 ? R->nnz : 1) * sizeof(sunindextype));
+  R->diagpos = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(int));
+  int ok = 1;
+  for (int j = 0; j <= n; j++) R->colptr[j] = cp[j];
+  for (int k = 0; k < R->nnz; k++) R->rowind[k] = ri[k];
+  for (int j = 0; j < n; j++) {
+    R->diagpos[j] = -1;
+    for (int k = cp[j]; k < cp[j + 1]; k++)
+      if (ri[k] == j) R->diagpos[j] = k;
+    ok &= R->diagpos[j] >= 0; /* the contract: every diagonal entry is stored */
+  }
+  free(cp);
+  free(ri);
+  return ok ? 0 : -1;
+}
+
+static int make_linsol(simrun *R) {
+  if (R->p->sparse) {
+    if (make_pattern(R)) return -1;
+    R->A = SUNSparseMatrix(R->n, R->n, R->nnz, CSC_MAT, R->ctx);
+    R->LS = SUNLinSol_KLU(R->y, R->A, R->ctx);
+  } else {
+    R->A = SUNDenseMatrix(R->n, R->n, R->ctx);
+    R->LS = SUNLinSol_Dense(R->y, R->A, R->ctx);
+  }
+  return R->A && R->LS ? 0 : -1;
+}
+
+static int setup_cvode(simrun *R) {
+  const bg_simplan *p = R->p;
+  R->mem = CVodeCreate(p->kind == BG_SIM_ADAMS ? CV_ADAMS : CV_BDF, R->ctx);
+  if (!R->mem) return -1;
+  int f = CVodeSetErrHandlerFn(R->mem, on_sunerr, R);
+  f |= CVodeInit(R->mem, cv_rhs, p->t0, R->y);
+  f |= CVodeSVtolerances(R->mem, p->rtol, R->atol);
+  f |= CVodeSetUserData(R->mem, R);
+  f |= CVodeSetMaxNumSteps(R->mem, p->max_steps);
+  if (p->max_step > 0) f |= CVodeSetMaxStep(R->mem, p->max_step);
+  f |= CVodeSetLinearSolver(R->mem, R->LS, R->A);
+  f |= CVodeSetJacFn(R->mem, cv_jac);
+  return f ? -1 : 0;
+}
+
+static int setup_ida(simrun *R) {
+  const bg_simplan *p = R->p;
+  R->mem = IDACreate(R->ctx);
+  if (!R->mem) return -1;
+  R->id = N_VNew_Serial(R->n, R->ctx);
+  double *id = N_VGetArrayPointer(R->id);
+  for (int i = 0; i < R->n; i++) id[i] = R->ode || bg_eqsys_is_differential(R->s, i) ? 1.0 : 0.0;
+  int f = IDASetErrHandlerFn(R->mem, on_sunerr, R);
+  f |= IDAInit(R->mem, ida_res, p->t0, R->y, R->yp);
+  f |= IDASVtolerances(R->mem, p->rtol, R->atol);
+  f |= IDASetUserData(R->mem, R);
+  f |= IDASetId(R->mem, R->id);
+  f |= IDASetMaxNumSteps(R->mem, p->max_steps);
+  if (p->max_step > 0) f |= IDASetMaxStep(R->mem, p->max_step);
+  f |= IDASetLinearSolver(R->mem, R->LS, R->A);
+  f |= IDASetJacFn(R->mem, ida_jac);
+  return f ? -1 : 0;
+}
+
+static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
+  memset(R, 0, sizeof *R);
+  R->s = s;
+  R->p = p;
+  R->n = bg_eqsys_n(s);
+  R->ode = bg_eqsys_is_ode(s);
+  if (SUNContext_Create(NULL, &R->ctx)) return -1;
+  R->y = N_VNew_Serial(R->n, R->ctx);
+  R->yp = N_VNew_Serial(R->n, R->ctx);
+  R->atol = N_VNew_Serial(R->n, R->ctx);
+  memcpy(N_VGetArrayPointer(R->atol), p->atol, (size_t)R->n * sizeof(double));
+  bg_eqsys_initial(s, N_VGetArrayPointer(R->y));
+  N_VConst(0.0, R->yp);
+  R->tcur = p->t0;
+  R->t_shown = p->t0;
+  R->wall0 = R->wall_last = wall();
+  if (make_linsol(R)) return -1;
+  return p->kind == BG_SIM_IDA ? setup_ida(R) : setup_cvode(R);
+}
+
+static void run_close(simrun *R) {
+  if (R->mem) {
+    if (R->p->kind == BG_SIM_IDA) IDAFree(&R->mem);
+    else CVodeFree(&R->mem);
+  }
+  if (R->LS) SUNLinSolFree(R->LS);
+  if (R->A) SUNMatDestroy(R->A);
+  N_Vector v[] = {R->y, R->yp, R->atol, R->id};
+  for (int i = 0; i < 4; i++)
+    if (v[i]) N_VDestroy(v[i]);
+  free(R->colptr);
+  free(R->rowind);
+  free(R->diagpos);
+  if (R->ctx) SUNContext_Free(&R->ctx);
+}
+
+/* ------------------------------------------------------------------ stepping */
+static void stats_now(simrun *R, long st[5]) {
+  long v[5] = {0, 0, 0, 0, 0};
+  if (R->p->kind == BG_SIM_IDA) {
+    IDAGetNumSteps(R->mem, &v[0]);
+    IDAGetNumResEvals(R->mem, &v[1]);
+    IDAGetNumJacEvals(R->mem, &v[2]);
+    IDAGetNumErrTestFails(R->mem, &v[3]);
+    IDAGetNumNonlinSolvIters(R->mem, &v[4]);
+  } else {
+    CVodeGetNumSteps(R->mem, &v[0]);
+    CVodeGetNumRhsEvals(R->mem, &v[1]);
+    CVodeGetNumJacEvals(R->mem, &v[2]);
+    CVodeGetNumErrTestFails(R->mem, &v[3]);
+    CVodeGetNumNonlinSolvIters(R->mem, &v[4]);
+  }
+  for (int i = 0; i < 5; i++) st[i] = R->st[i] + v[i];
+}
+
+static int run_stop_at(simrun *R, double tstop) {
+  return R->p->kind == BG_SIM_IDA ? IDASetStopTime(R->mem, tstop) : CVodeSetStopTime(R->mem, tstop);
+}
+
+/* Advances to tout; returns the solver flag (< 0 failure) with R->tcur set. */
+static int run_to(simrun *R, double tout) {
+  double tret = R->tcur;
+  int f;
+  if (R->p->kind == BG_SIM_IDA)
+    f = IDASolve(R->mem, tout, &tret, R->y, R->yp, IDA_NORMAL);
+  else
+    f = CVode(R->mem, tout, R->y, &tret, CV_NORMAL);
+  R->tcur = tret;
+  return f;
+}
+
+/* IDA: consistent algebraic values and derivatives at R->tcur, looking
+ * ahead to tnext. Returns the IDA flag. */
+static int run_calcic(simrun *R, double tnext) {
+  int f = IDACalcIC(R->mem, IDA_YA_YDP_INIT, tnext);
+  if (f >= 0) f = IDAGetConsistentIC(R->mem, R->y, R->yp);
+  return f;
+}
+
+/* Restart after a breakpoint: the inputs jump, the states do not. */
+static int run_restart(simrun *R, double tb, double tnext) {
+  stats_now(R, R->st);
+  R->tcur = tb;
+  if (R->p->kind != BG_SIM_IDA) return CVodeReInit(R->mem, tb, R->y);
+  int f = IDAReInit(R->mem, tb, R->y, R->yp);
+  return f < 0 ? f : run_calcic(R, tnext);
+}
+
+/* ------------------------------------------------------------------ results */
+static int record(simrun *R, bg_simresult *r, double t) {
+  double *out = r->values + (size_t)r->nrows * (size_t)r->nout;
+  double *y = N_VGetArrayPointer(R->y), *yp = N_VGetArrayPointer(R->yp);
+  /* An ODE's outputs are functions of (t, y) alone: no derivative needed
+   * (one evaluation per row instead of two; rows can outnumber steps). */
+  if (R->p->kind != BG_SIM_IDA) yp = NULL;
+  if (bg_eqsys_outputs(R->s, R->tcur, y, yp, out)) {
+    keep_error(R);
+    return -1;
+  }
+  r->t[r->nrows++] = t;
+  r->t_reached = t;
+  R->nfunc_err = 0;
+  return 0;
+}
+
+static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
+  bg_strbuf sb = {0};
+  int ida = R->p->kind == BG_SIM_IDA;
+  char *fname = ida ? IDAGetReturnFlagName(flag) : CVodeGetReturnFlagName(flag);
+  double t = R->tcur > r->t_reached ? R->tcur : r->t_reached;
+  bg_sb_printf(&sb, "simulation failed at t = %.9g%s: ", t, during);
+  bg_sim_explain(ida, flag, R->nfunc_err ? R->err : NULL, &sb);
+  bg_sb_printf(&sb, " (%s %s", ida ? "IDA" : "CVODE", fname ? fname : "?");
+  if (R->sunmsg[0]) bg_sb_printf(&sb, ": %s", R->sunmsg);
+  bg_sb_puts(&sb, ")");
+  free(fname); /* allocated by SUNDIALS */
+  r->partial = 1;
+  if (t > r->t_reached) r->t_reached = t;
+  free(r->message);
+  r->message = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+static void fail_eval(simrun *R, bg_simresult *r) {
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "simulation failed at t = %.9g: the equations could not be evaluated: %s",
+               R->tcur, R->err);
+  r->partial = 1;
+  free(r->message);
+  r->message = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+/* -v: one line with the time reached as a percentage of the span, at most
+ * one per p->progress_every seconds of wall time (a short run prints none;
+ * bg_simulate prints the summary). Called at output rows and, every 256
+ * evaluations, from the callbacks (t is then the solver's trial time). */
+static void progress(simrun *R, double t) {
+  const bg_simplan *p = R->p;
+  double now = wall();
+  if (!p->verbose || now - R->wall_last < p->progress_every) return;
+  R->wall_last = now;
+  if (t > R->t_shown) R->t_shown = t;
+  long st[5];
+  stats_now(R, st);
+  fprintf(stderr, "bgdraw: simulate: t = %.6g (%.1f%% of the span), %ld steps, %.1f s\n",
+          R->t_shown, 100.0 * (R->t_shown - p->t0) / (p->t_end - p->t0), st[0], now - R->wall0);
+}
+
+/* ------------------------------------------------------------------ the run */
+/* One segment between input discontinuities: every output time before its
+ * end, then (unless it is the last) up to just before the breakpoint. */
+static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) {
+  const bg_simplan *p = R->p;
+  double span = p->t_end - p->t0;
+  /* Stopping a hair before tb keeps every evaluation on the left of the jump
+   * (a step at tb evaluates to its new value at tb itself). */
+  double tstop = last ? p->t_end : tb - 1e-12 * fmax(fabs(tb), span);
+  int f = run_stop_at(R, tstop);
+  while (f >= 0 && *k < p->nrows && (last || p->times[*k] < tstop)) {
+    double tout = last && *k == p->nrows - 1 ? p->t_end : p->times[*k];
+    if (tout > R->tcur + 1e-14 * span) {
+      f = run_to(R, tout);
+      if (f < 0) { fail(R, r, f, ""); return -1; }
+    }
+    if (record(R, r, p->times[*k])) { fail_eval(R, r); return -1; }
+    (*k)++;
+    if (p->verbose) progress(R, R->tcur);
+  }
+  if (last) return 0;
+  if (R->tcur < tstop && (f = run_to(R, tstop)) < 0) { fail(R, r, f, ""); return -1; }
+  double tnext = *k < p->nrows && p->times[*k] > tb ? p->times[*k] : tb + 1e-3 * span;
+  f = run_restart(R, tb, tnext);
+  if (f < 0) { fail(R, r, f, " (restarting after an input discontinuity)"); return -1; }
+  return 0;
+}
+
+/* Keeps the initial point the solver starts from (reports, tests). */
+static void keep_start(simrun *R, bg_simresult *r) {
+  size_t sz = (size_t)(R->n > 0 ? R->n : 1) * sizeof(double);
+  r->n = R->n;
+  r->y0 = bg_xmalloc(sz);
+  r->yp0 = bg_xmalloc(sz);
+  memcpy(r->y0, N_VGetArrayPointer(R->y), (size_t)R->n * sizeof(double));
+  if (R->p->kind != BG_SIM_IDA && bg_eqsys_rhs(R->s, R->tcur, r->y0, r->yp0)) memset(r->yp0, 0, sz);
+  else if (R->p->kind == BG_SIM_IDA) memcpy(r->yp0, N_VGetArrayPointer(R->yp), (size_t)R->n * sizeof(double));
+}
+
+/* IDACalcIC again from guess k (1 or 2) of the algebraic unknowns: +1 or -1,
+ * spread by up to 10 % so that a symmetric guess cannot make Newton's matrix
+ * singular (series_conductances: e3 = e4 = 0 gives a rank-1 matrix). */
+#define IC_GUESSES 2
+static int run_calcic_guess(simrun *R, const double *y0, double tnext, int k) {
+  double *y = N_VGetArrayPointer(R->y);
+  int nz = 0, j = 0;
+  for (int i = 0; i < R->n; i++) nz += !bg_eqsys_is_differential(R->s, i);
+  for (int i = 0; i < R->n; i++) {
+    y[i] = y0[i];
+    if (!bg_eqsys_is_differential(R->s, i)) y[i] = (k == 1 ? 1.0 : -1.0) * (1.0 + 0.1 * j++ / nz);
+  }
+  N_VConst(0.0, R->yp);
+  stats_now(R, R->st);
+  R->nfunc_err = 0;
+  R->sunmsg[0] = 0;
+  int f = IDAReInit(R->mem, R->p->t0, R->y, R->yp);
+  return f < 0 ? f : run_calcic(R, tnext);
+}
+
+static int run_start(simrun *R, bg_simresult *r) {
+  if (R->p->kind != BG_SIM_IDA) { keep_start(R, r); return 0; }
+  int n = R->n, nz = 0;
+  double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+  memcpy(y0, N_VGetArrayPointer(R->y), (size_t)n * sizeof(double));
+  for (int i = 0; i < n && !R->ode; i++) nz += !bg_eqsys_is_differential(R->s, i);
+  double tnext = R->p->nrows > 1 ? R->p->times[1] : R->p->t_end;
+  if (R->p->nbp && R->p->bp[0] < tnext) tnext = R->p->bp[0];
+  int f = run_calcic(R, tnext), f0 = f, k;
+  /* The model's guess failed: other guesses; the message is the first failure's. */
+  char msg0[sizeof R->sunmsg], err0[sizeof R->err];
+  int nerr0 = R->nfunc_err;
+  memcpy(msg0, R->sunmsg, sizeof msg0);
+  memcpy(err0, R->err, sizeof err0);
+  for (k = 1; f < 0 && nz > 0 && k <= IC_GUESSES; k++) f = run_calcic_guess(R, y0, tnext, k);
+  if (f < 0) {
+    memcpy(R->sunmsg, msg0, sizeof msg0);
+    memcpy(R->err, err0, sizeof err0);
+    R->nfunc_err = nerr0;
+    fail(R, r, f0, nz ? " (computing consistent initial values from the model's guess and "
+                        "from guesses of +1 and -1 for the algebraic unknowns)"
+                      : " (computing consistent initial values)");
+  } else {
+    r->ic_retries = f0 < 0 ? k - 1 : 0;
+    if (r->ic_retries && R->p->verbose)
+      fprintf(stderr, "bgdraw: simulate: IDACalcIC failed from the model's guess of the "
+                      "algebraic unknowns; %s worked\n", r->ic_retries == 1 ? "+1" : "-1");
+  }
+  keep_start(R, r);
+  free(y0);
+  return f < 0 ? -1 : 0;
+}
+
+int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r) {
+  simrun R;
+  int rc = 0, k = 0;
+  r->t_reached = p->t0;
+  if (run_open(&R, s, p)) {
+    r->partial = 1;
+    r->message = strdup("simulation failed at the start: the solver could not be set up "
+                        "(the Jacobian pattern lacks a diagonal entry, or out of memory)");
+    rc = 2;
+  } else if (run_start(&R, r)) {
+    rc = 2;
+  } else {
+    for (int j = 0; j <= p->nbp && !rc; j++)
+      rc = run_segment(&R, r, &k, j < p->nbp ? p->bp[j] : p->t_end, j == p->nbp) ? 2 : 0;
+  }
+  if (R.mem) {
+    long st[5];
+    stats_now(&R, st);
+    r->steps = st[0], r->rhs_evals = st[1], r->jac_evals = st[2];
+    r->err_test_fails = st[3], r->nonlin_iters = st[4];
+  }
+  run_close(&R);
+  return rc;
+}

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""The dependency rule of docs/architecture.md: a file in a stage folder includes
+only headers of its own stage and of the stages below it.
+
+The stage order is read from CMakeLists.txt (BG_ENGINE_STAGES, then
+BG_RENDER_STAGES, then cli on top), so the build and this check cannot disagree.
+Every folder of src/ and render/ must be a stage, and every project include is
+written "stage/name.h" (a bare "name.h" only for a header of the same folder).
+
+usage: include_rule.py [ROOT]     exit 0 when the tree keeps the rule
+"""
+import os
+import re
+import sys
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def stage_order(root):
+    text = open(os.path.join(root, "CMakeLists.txt")).read()
+    order = []
+    for var in ("BG_ENGINE_STAGES", "BG_RENDER_STAGES"):
+        m = re.search(r"set\(%s\s+([^)]*)\)" % var, text)
+        if not m:
+            sys.exit("include_rule: CMakeLists.txt has no set(%s ...)" % var)
+        order += m.group(1).split()
+    return order + ["cli"]
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else "."
+    order = stage_order(root)
+    rank = {s: i for i, s in enumerate(order)}
+    home = {s: ("render" if s in order[order.index("scene"):-1] else "src") for s in order}
+    problems = []
+    checked = 0
+    for top in ("src", "render"):
+        for entry in sorted(os.listdir(os.path.join(root, top))):
+            path = os.path.join(root, top, entry)
+            if not os.path.isdir(path):
+                problems.append("%s/%s: a file outside every stage folder" % (top, entry))
+                continue
+            if entry not in rank or home[entry] != top:
+                problems.append("%s/%s/: not a stage of CMakeLists.txt" % (top, entry))
+                continue
+            for name in sorted(os.listdir(path)):
+                if not name.endswith((".c", ".h")):
+                    continue
+                rel = "%s/%s/%s" % (top, entry, name)
+                text = open(os.path.join(path, name), encoding="utf-8").read()
+                for inc in INCLUDE.findall(text):
+                    checked += 1
+                    parts = inc.split("/")
+                    if len(parts) == 1:
+                        if not os.path.exists(os.path.join(path, inc)):
+                            problems.append('%s: "%s" is not in %s/ (write "stage/%s")'
+                                            % (rel, inc, entry, inc))
+                        continue
+                    if len(parts) != 2 or parts[0] not in rank:
+                        problems.append('%s: "%s" names no stage' % (rel, inc))
+                        continue
+                    if rank[parts[0]] > rank[entry]:
+                        problems.append('%s: stage %s includes "%s" of the higher stage %s'
+                                        % (rel, entry, inc, parts[0]))
+                    elif not os.path.exists(os.path.join(root, home[parts[0]], inc)):
+                        problems.append('%s: "%s" does not exist' % (rel, inc))
+    for p in problems:
+        print("include rule: " + p)
+    print("include rule: %d includes checked, %d violations (stages: %s)"
+          % (checked, len(problems), " < ".join(order)))
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
