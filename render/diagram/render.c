@@ -85,6 +85,8 @@ int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_dia
 
 void bg_diagram_dump(const bg_diagram *d, bg_strbuf *out) { bg_scene_dump(&d->scene, out); }
 
+const bg_scene *bg_diagram_scene(const bg_diagram *d) { return &d->scene; }
+
 int bg_diagram_count(const bg_diagram *d, const char *prefix) {
   return bg_scene_count(&d->scene, prefix);
 }

@@ -80,6 +80,10 @@ int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diag
 /* A text listing of the scene, one drawn item a line with its role tag
  * ("stroke bond=3", "flash conflict=1", "path 1", "signal w->T"). */
 void bg_diagram_dump(const bg_diagram *d, bg_strbuf *out);
+/* The diagram's scene (render/scene/scene.h), for checks that read its
+ * geometry (tests/unit/figure_check.h). Valid while d lives. */
+struct bg_scene;
+const struct bg_scene *bg_diagram_scene(const bg_diagram *d);
 /* Items whose role is prefix or starts with prefix + ' ' ("path" counts "path 1"). */
 int bg_diagram_count(const bg_diagram *d, const char *prefix);
 /* The layout engine used (after automatic choices, e.g. "sfdp"). */

@@ -32,7 +32,8 @@ static void fx_init_analysis(bg_analysis *a, const bg_model *m) {
   a->index_predicted = -1;
 }
 
-/* edit: optional (from, to) text replacement in the source, for variants */
+/* method < 0: the model's own; edit: optional (from, to) text replacement in
+ * the source, for variants */
 static int fx_load(fx *f, const char *name, int method, const char *set_name, double set_value,
                    const char *from, const char *to) {
   char path[512];
@@ -52,7 +53,7 @@ static int fx_load(fx *f, const char *name, int method, const char *set_name, do
   if (ast) bg_ast_free(ast);
   if (!f->m) { bg_diags_print(&f->dg, stderr); return -1; }
   fx_init_analysis(&f->a, f->m);
-  bg_causality_assign(f->m, method, &f->a, &f->dg);
+  bg_causality_assign(f->m, method < 0 ? f->m->method : method, &f->a, &f->dg);
   bg_analysis_run(f->m, &f->a, NULL);
   return 0;
 }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "causality/causality.h"
+#include "examples_list.h"
 #include "harness.h"
 #include "analysis/paths.h"
 #include "lang/parse.h"
@@ -385,27 +386,9 @@ static void check_example(const char *path) {
   unload(&L);
 }
 
-static int list_examples(char **names, int cap) {
-  DIR *dir = opendir(BG_SOURCE_DIR "/examples");
-  if (!dir) return 0;
-  int n = 0;
-  for (struct dirent *e; (e = readdir(dir)) && n < cap;) {
-    size_t len = strlen(e->d_name);
-    if (len > 3 && !strcmp(e->d_name + len - 3, ".bg")) names[n++] = strdup(e->d_name);
-  }
-  closedir(dir);
-  /* a fixed order: readdir's is the file system's */
-  for (int i = 1; i < n; i++)
-    for (int j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
-      char *t = names[j];
-      names[j] = names[j - 1], names[j - 1] = t;
-    }
-  return n;
-}
-
 static void test_examples(void) {
   char *names[256];
-  int n = list_examples(names, 256);
+  int n = bg_t_list_examples(names, 256);
   OK(n >= 17);
   for (int i = 0; i < n; i++) {
     char path[1024];
@@ -556,7 +539,7 @@ static void check_redraw(const char *path) {
 
 static void test_redraw(void) {
   char *names[256];
-  int n = list_examples(names, 256);
+  int n = bg_t_list_examples(names, 256);
   for (int i = 0; i < n; i++) {
     char path[1024];
     snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, names[i]);
@@ -649,7 +632,7 @@ static void hash_examples_in_child(const char *tag) {
     char path[1024], *names[256];
     snprintf(path, sizeof path, "%s/render_hashes_%s.txt", BG_BINARY_DIR, tag);
     FILE *out = fopen(path, "w");
-    int n = list_examples(names, 256), rc = out ? 0 : 1;
+    int n = bg_t_list_examples(names, 256), rc = out ? 0 : 1;
     for (int i = 0; out && i < n; i++) {
       loaded L;
       snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, names[i]);

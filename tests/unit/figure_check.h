@@ -1,0 +1,332 @@
+/* A geometry checker for diagrams: reads a scene (every item has a role,
+ * render/scene/scene.h) and counts what a textbook figure must not have:
+ * slanted bonds, causal strokes touching a neighbouring bond, labels over
+ * lines or other labels, bond numbers nearer another bond than their own,
+ * path tags and gains away from their line, overlays and lines through
+ * element labels, and bond crossings. Used by test_figures.c; the
+ * definitions are in docs/drawing.md ("Measured geometry"). */
+#ifndef BG_TEST_FIGURE_CHECK_H
+#define BG_TEST_FIGURE_CHECK_H
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/scene.h"
+
+typedef struct fc_stats {
+  int bonds, slanted;        /* bonds; bonds with a segment off the axes */
+  int strokes, touching;     /* causal strokes; those touching another bond */
+  int labels, over;          /* numbers, tags, gains, conflict texts; those over a line or label */
+  int numbers, astray;       /* bond numbers and variables; those nearer another bond */
+  int tags, tags_far;        /* path tags and gains; nearer another overlay or > 12 pt off */
+  int through;               /* overlay polylines × element labels they run through */
+  int lines_through;         /* bonds and signals × element labels they run through */
+  int crossings;             /* pairs of bonds that cross */
+} fc_stats;
+
+enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_OTHER };     /* line kinds */
+enum { FC_NODE, FC_NUMBER, FC_TAG, FC_TEXT, FC_IGNORED };         /* text kinds */
+
+typedef struct fc_seg {
+  double x0, y0, x1, y1;
+} fc_seg;
+
+typedef struct fc_line {
+  int kind, id, nseg, barb; /* id: bond number, path/loop number; barb: last seg is the half arrow */
+  int loop;                 /* overlays: "loop K" or "path K loop=K" draws loop K, else 0 */
+  double width;
+  fc_seg *seg;
+} fc_line;
+
+typedef struct fc_box {
+  int kind, id, loop; /* numbers: bond; tags: path (loop 0) or loop (id 0) */
+  double x0, y0, x1, y1;
+} fc_box;
+
+typedef struct fc_scene {
+  fc_line *line;
+  int nline;
+  fc_box *box;
+  int nbox;
+} fc_scene;
+
+static int fc_starts(const char *role, const char *prefix) {
+  size_t n = strlen(prefix);
+  return !strncmp(role, prefix, n) && (role[n] == ' ' || role[n] == '\0');
+}
+
+static int fc_num_after(const char *role, const char *key) {
+  const char *p = strstr(role, key);
+  return p ? atoi(p + strlen(key)) : 0;
+}
+
+static int fc_line_kind(const char *r, int *id, int *loop) {
+  *loop = 0;
+  if (fc_starts(r, "bond") || fc_starts(r, "lagrange-bond")) {
+    *id = fc_starts(r, "bond") ? atoi(r + 5) : -atoi(r + 14); /* Sf* bonds: negative */
+    return FC_BOND;
+  }
+  if (fc_starts(r, "stroke") || fc_starts(r, "lagrange-stroke")) {
+    *id = fc_starts(r, "stroke") ? fc_num_after(r, "bond=") : -atoi(r + 16);
+    return FC_STROKE;
+  }
+  if (fc_starts(r, "signal") || fc_starts(r, "state-input")) return *id = 0, FC_SIGNAL;
+  if (fc_starts(r, "path")) {
+    *id = atoi(r + 5), *loop = fc_num_after(r, "loop=");
+    return FC_OVERLAY;
+  }
+  if (fc_starts(r, "loop")) return *id = 0, *loop = atoi(r + 5), FC_OVERLAY;
+  return *id = 0, FC_OTHER;
+}
+
+static int fc_text_kind(const char *r, int *id, int *loop) {
+  *id = *loop = 0;
+  if (fc_starts(r, "node") || fc_starts(r, "state-node") || fc_starts(r, "lagrange-label")) return FC_NODE;
+  if (fc_starts(r, "number") || fc_starts(r, "variable") || fc_starts(r, "bondlabel")) {
+    *id = fc_num_after(r, "bond=");
+    return FC_NUMBER;
+  }
+  if (fc_starts(r, "path-tag")) return *id = atoi(r + 9), FC_TAG;
+  if (fc_starts(r, "gain")) return *loop = fc_num_after(r, "loop="), FC_TAG;
+  if (fc_starts(r, "conflict-text")) return FC_TEXT;
+  return FC_IGNORED; /* legend text, titles */
+}
+
+/* The item's path as segments, curves flattened into 8 chords. */
+static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) {
+  int cap = 8 * it->nop + 1, n = 0;
+  fc_seg *seg = malloc((size_t)cap * sizeof *seg);
+  double px = 0, py = 0, sx = 0, sy = 0;
+  for (int k = 0; k < it->nop; k++) {
+    const bg_scene_op *o = &s->op[it->opadr + k];
+    if (o->code == BG_OP_MOVE) {
+      px = sx = o->x[0], py = sy = o->y[0];
+    } else if (o->code == BG_OP_LINE || o->code == BG_OP_CLOSE) {
+      double x = o->code == BG_OP_LINE ? o->x[0] : sx, y = o->code == BG_OP_LINE ? o->y[0] : sy;
+      seg[n++] = (fc_seg){px, py, x, y};
+      px = x, py = y;
+    } else {
+      for (int j = 1; j <= 8; j++) {
+        double t = j / 8.0, u = 1 - t;
+        double x = u * u * u * px + 3 * u * u * t * o->x[0] + 3 * u * t * t * o->x[1] + t * t * t * o->x[2];
+        double y = u * u * u * py + 3 * u * u * t * o->y[0] + 3 * u * t * t * o->y[1] + t * t * t * o->y[2];
+        seg[n++] = (fc_seg){px, py, x, y};
+        px = x, py = y;
+      }
+    }
+  }
+  *out = seg;
+  return n;
+}
+
+/* Text boxes as placement sees them: the measured width, 80 % of pango's
+ * logical height (its line gap trimmed). */
+static fc_box fc_text_box(const bg_scene_item *it, int kind, int id, int loop) {
+  double h = 0.8 * it->th, cx = it->x + (0.5 - it->halign) * it->tw;
+  double cy = it->y + (0.5 - it->valign) * it->th;
+  return (fc_box){kind, id, loop, cx - it->tw / 2, cy - h / 2, cx + it->tw / 2, cy + h / 2};
+}
+
+static void fc_read(const bg_scene *s, fc_scene *f) {
+  memset(f, 0, sizeof *f);
+  f->line = calloc((size_t)s->nitem + 1, sizeof *f->line);
+  f->box = calloc((size_t)s->nitem + 1, sizeof *f->box);
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    int id, loop;
+    if (it->kind == BG_ITEM_TEXT) {
+      int k = fc_text_kind(it->role, &id, &loop);
+      if (k != FC_IGNORED) f->box[f->nbox++] = fc_text_box(it, k, id, loop);
+    } else if (it->kind == BG_ITEM_STROKE) {
+      int k = fc_line_kind(it->role, &id, &loop);
+      if (k == FC_OTHER) continue;
+      fc_line *l = &f->line[f->nline++];
+      l->kind = k, l->id = id, l->loop = loop, l->width = it->width;
+      l->nseg = fc_flatten(s, it, &l->seg);
+      l->barb = k == FC_BOND && l->nseg > 1;
+    }
+  }
+}
+
+static void fc_free(fc_scene *f) {
+  for (int i = 0; i < f->nline; i++) free(f->line[i].seg);
+  free(f->line), free(f->box);
+}
+
+/* ---------------------------------------------------------------- distances */
+static double fc_pt_seg(double px, double py, const fc_seg *s) {
+  double dx = s->x1 - s->x0, dy = s->y1 - s->y0, l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? ((px - s->x0) * dx + (py - s->y0) * dy) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return hypot(px - s->x0 - t * dx, py - s->y0 - t * dy);
+}
+
+static double fc_orient(double ax, double ay, double bx, double by, double cx, double cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+/* Whether the segments cross at a point inside both (not at an end). */
+static int fc_cross(const fc_seg *a, const fc_seg *b) {
+  double d1 = fc_orient(a->x0, a->y0, a->x1, a->y1, b->x0, b->y0);
+  double d2 = fc_orient(a->x0, a->y0, a->x1, a->y1, b->x1, b->y1);
+  double d3 = fc_orient(b->x0, b->y0, b->x1, b->y1, a->x0, a->y0);
+  double d4 = fc_orient(b->x0, b->y0, b->x1, b->y1, a->x1, a->y1);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+static double fc_seg_seg(const fc_seg *a, const fc_seg *b) {
+  if (fc_cross(a, b)) return 0;
+  double d = fc_pt_seg(a->x0, a->y0, b);
+  d = fmin(d, fc_pt_seg(a->x1, a->y1, b));
+  d = fmin(d, fc_pt_seg(b->x0, b->y0, a));
+  return fmin(d, fc_pt_seg(b->x1, b->y1, a));
+}
+
+static int fc_in_box(double x, double y, const fc_box *b) {
+  return x > b->x0 && x < b->x1 && y > b->y0 && y < b->y1;
+}
+
+static double fc_seg_box(const fc_seg *s, const fc_box *b) {
+  if (fc_in_box(s->x0, s->y0, b) || fc_in_box(s->x1, s->y1, b)) return 0;
+  fc_seg e[4] = {{b->x0, b->y0, b->x1, b->y0}, {b->x1, b->y0, b->x1, b->y1},
+                 {b->x1, b->y1, b->x0, b->y1}, {b->x0, b->y1, b->x0, b->y0}};
+  double d = 1e300;
+  for (int k = 0; k < 4; k++) d = fmin(d, fc_seg_seg(s, &e[k]));
+  return d;
+}
+
+/* Nearest approach of a line (its half arrow excluded when nobarb) to a point or a box. */
+static double fc_line_pt(const fc_line *l, double x, double y, int nobarb) {
+  double d = 1e300;
+  for (int k = 0; k < l->nseg - (nobarb && l->barb); k++) d = fmin(d, fc_pt_seg(x, y, &l->seg[k]));
+  return d;
+}
+
+static double fc_line_box(const fc_line *l, const fc_box *b) {
+  double d = 1e300;
+  for (int k = 0; k < l->nseg; k++) d = fmin(d, fc_seg_box(&l->seg[k], b));
+  return d;
+}
+
+static fc_box fc_shrink(const fc_box *b, double by) {
+  return (fc_box){b->kind, b->id, b->loop, b->x0 + by, b->y0 + by, b->x1 - by, b->y1 - by};
+}
+
+static int fc_boxes_meet(const fc_box *a, const fc_box *b) {
+  return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
+}
+
+/* ---------------------------------------------------------------- counts */
+static int fc_slanted(const fc_line *l) {
+  for (int k = 0; k < l->nseg - l->barb; k++) {
+    const fc_seg *s = &l->seg[k];
+    if (fmin(fabs(s->x1 - s->x0), fabs(s->y1 - s->y0)) > 0.05) return 1;
+  }
+  return 0;
+}
+
+/* A stroke touches another bond when their inked widths meet. */
+static int fc_touching(const fc_scene *f, const fc_line *st) {
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *b = &f->line[j];
+    if (b->kind != FC_BOND || b->id == st->id) continue;
+    for (int p = 0; p < st->nseg; p++)
+      for (int q = 0; q < b->nseg; q++)
+        if (fc_seg_seg(&st->seg[p], &b->seg[q]) < (st->width + b->width) / 2) return 1;
+  }
+  return 0;
+}
+
+static int fc_crosses(const fc_line *a, const fc_line *b) {
+  for (int p = 0; p < a->nseg - a->barb; p++)
+    for (int q = 0; q < b->nseg - b->barb; q++)
+      if (fc_cross(&a->seg[p], &b->seg[q])) return 1;
+  return 0;
+}
+
+/* A label over a line or another label (0.5 pt of slack for touching boxes). */
+static int fc_label_over(const fc_scene *f, int i) {
+  fc_box b = fc_shrink(&f->box[i], 0.5);
+  for (int j = 0; j < f->nline; j++)
+    if (f->line[j].kind != FC_STROKE && fc_line_box(&f->line[j], &b) == 0) return 1;
+  for (int j = 0; j < f->nbox; j++)
+    if (j != i && fc_boxes_meet(&b, &f->box[j])) return 1;
+  return 0;
+}
+
+/* A bond number (or variable, bond label) nearer to another bond than to its own. */
+static int fc_number_astray(const fc_scene *f, const fc_box *n) {
+  double cx = (n->x0 + n->x1) / 2, cy = (n->y0 + n->y1) / 2, own = 1e300, other = 1e300;
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *l = &f->line[j];
+    if (l->kind != FC_BOND) continue;
+    double d = fc_line_pt(l, cx, cy, 1);
+    if (l->id == n->id) own = fmin(own, d);
+    else other = fmin(other, d);
+  }
+  return other < own;
+}
+
+static int fc_own_overlay(const fc_line *l, const fc_box *t) {
+  return t->loop ? l->loop == t->loop : l->id == t->id;
+}
+
+/* A tag or gain whose nearest overlay is not its own, or more than 12 pt from its own. */
+static int fc_tag_far(const fc_scene *f, const fc_box *t) {
+  double own = 1e300, other = 1e300;
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *l = &f->line[j];
+    if (l->kind != FC_OVERLAY) continue;
+    double d = fc_line_box(l, t);
+    if (fc_own_overlay(l, t)) own = fmin(own, d);
+    else other = fmin(other, d);
+  }
+  return other < own || own > 12;
+}
+
+/* Lines of `kind` × element labels they run through (the label's ink box,
+ * 1 pt inside, so a line ending on its own element's box does not count). */
+static int fc_through(const fc_scene *f, int kind) {
+  int n = 0;
+  for (int j = 0; j < f->nline; j++) {
+    if (f->line[j].kind != kind) continue;
+    for (int i = 0; i < f->nbox; i++) {
+      if (f->box[i].kind != FC_NODE) continue;
+      fc_box b = fc_shrink(&f->box[i], 1);
+      if (b.x0 < b.x1 && b.y0 < b.y1 && fc_line_box(&f->line[j], &b) == 0) n++;
+    }
+  }
+  return n;
+}
+
+static void fc_count(const bg_scene *s, fc_stats *st) {
+  fc_scene f;
+  fc_read(s, &f);
+  for (int j = 0; j < f.nline; j++) {
+    const fc_line *l = &f.line[j];
+    if (l->kind == FC_BOND) {
+      st->bonds++, st->slanted += fc_slanted(l);
+      for (int k = j + 1; k < f.nline; k++)
+        if (f.line[k].kind == FC_BOND) st->crossings += fc_crosses(l, &f.line[k]);
+    }
+    if (l->kind == FC_STROKE) st->strokes++, st->touching += fc_touching(&f, l);
+  }
+  for (int i = 0; i < f.nbox; i++) {
+    const fc_box *b = &f.box[i];
+    if (b->kind == FC_NODE) continue;
+    st->labels++, st->over += fc_label_over(&f, i);
+    if (b->kind == FC_NUMBER) st->numbers++, st->astray += fc_number_astray(&f, b);
+    if (b->kind == FC_TAG) st->tags++, st->tags_far += fc_tag_far(&f, b);
+  }
+  st->through += fc_through(&f, FC_OVERLAY);
+  st->lines_through += fc_through(&f, FC_BOND) + fc_through(&f, FC_SIGNAL);
+  fc_free(&f);
+}
+
+static void fc_add(fc_stats *sum, const fc_stats *s) {
+  const int *a = (const int *)s;
+  int *b = (int *)sum;
+  for (size_t k = 0; k < sizeof *s / sizeof(int); k++) b[k] += a[k];
+}
+#endif
