@@ -9,6 +9,7 @@
 #include "model/expr.h"
 #include "analysis/paths.h"
 #include "analysis/sfg.h"
+#include "base/scc.h"
 #include "base/strbuf.h"
 
 #define E_(b) BG_SIG_EFFORT(b)
@@ -538,38 +539,17 @@ static void dgraph_build(const bg_sfg *g, int skip_order, dgraph *d) {
 
 static void dgraph_free(dgraph *d) { free(d->adr); free(d->n); free(d->out); }
 
-/* Tarjan's strongly connected components with an explicit call stack.
- * comp[v] = component id; nontrivial[c] = 1 for size > 1 or a self-loop. */
+/* Strongly connected components (base/scc.h); nontrivial[c] = 1 for a
+ * component of more than one node or with a self-loop. Returns their count. */
 static int tarjan(const dgraph *d, int *comp, char *nontrivial) {
-  int nn = d->nn, idx = 0, sp = 0, fp = 0, nc = 0, nbig = 0;
-  int *index = bg_xmalloc(sizeof(int) * (size_t)(nn + 1)), *low = bg_xmalloc(sizeof(int) * (size_t)(nn + 1));
-  int *stk = bg_xmalloc(sizeof(int) * (size_t)(nn + 1)), *fv = bg_xmalloc(sizeof(int) * (size_t)(nn + 1));
-  int *fpos = bg_xmalloc(sizeof(int) * (size_t)(nn + 1));
-  char *on = bg_xcalloc((size_t)nn + 1, 1);
-  for (int v = 0; v < nn; v++) index[v] = -1;
-  for (int r = 0; r < nn; r++) {
-    if (index[r] >= 0) continue;
-    index[r] = low[r] = idx++; stk[sp++] = r; on[r] = 1; fv[fp] = r; fpos[fp++] = 0;
-    while (fp > 0) {
-      int v = fv[fp - 1];
-      if (fpos[fp - 1] < d->n[v]) {
-        int w = d->out[d->adr[v] + fpos[fp - 1]++];
-        if (index[w] < 0) {
-          index[w] = low[w] = idx++; stk[sp++] = w; on[w] = 1; fv[fp] = w; fpos[fp++] = 0;
-        } else if (on[w] && index[w] < low[v]) low[v] = index[w];
-        continue;
-      }
-      if (low[v] == index[v]) {
-        int size = 0, self = 0, w;
-        do { w = stk[--sp]; on[w] = 0; comp[w] = nc; size++; } while (w != v);
-        for (int i = 0; i < d->n[v]; i++) self |= d->out[d->adr[v] + i] == v;
-        nontrivial[nc] = size > 1 || self;
-        nbig += nontrivial[nc++];
-      }
-      if (--fp > 0 && low[v] < low[fv[fp - 1]]) low[fv[fp - 1]] = low[v];
-    }
-  }
-  free(index); free(low); free(stk); free(fv); free(fpos); free(on);
+  int *size = bg_xcalloc((size_t)d->nn + 1, sizeof(int)), nbig = 0;
+  int nc = bg_scc(d->nn, d->adr, d->n, d->out, comp, NULL, NULL);
+  for (int v = 0; v < d->nn; v++) size[comp[v]]++;
+  for (int c = 0; c < nc; c++) nontrivial[c] = size[c] > 1;
+  for (int v = 0; v < d->nn; v++)
+    for (int i = 0; i < d->n[v]; i++) nontrivial[comp[v]] |= d->out[d->adr[v] + i] == v;
+  for (int c = 0; c < nc; c++) nbig += nontrivial[c];
+  free(size);
   return nbig;
 }
 

@@ -1,11 +1,12 @@
 /* Computational order of the bond variables (Tarjan's strongly connected
- * components on "signal reads signal", iterative) and tearing of algebraic
+ * components, base/scc.h, on "signal reads signal") and tearing of algebraic
  * blocks: each cyclic block gives up algebraic unknowns (the analysis'
  * algebraic variables first, then the vertex with most edges inside the
  * block) until the rest is acyclic. Implicit equations are always torn. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/scc.h"
 #include "equations/eqsys_int.h"
 #include "model/expr.h"
 
@@ -52,9 +53,9 @@ void bg_eqs_deps(bg_eqsys *s) {
   free(all.v), free(tmp.v), free(mark);
 }
 
-/* ------------------------------------------------------------ Tarjan */
+/* ------------------------------------------------------------ components */
 typedef struct tarjan {
-  int *idx, *low, *onstk, *stk, *cv, *ce, *comp;
+  int *deg, *comp;
   int *ord, *cadr; /* emission order; component k is ord[cadr[k] .. cadr[k+1]) */
   int ncomp;
 } tarjan;
@@ -62,35 +63,8 @@ typedef struct tarjan {
 /* Edges v -> deps of v, none out of torn vertices. Components come out with
  * their dependencies first: a computational order. */
 static void tarjan_run(const bg_eqsys *s, const int *torn, tarjan *T) {
-  int ns = s->nsig, counter = 0, sp = 0, cs = 0, no = 0;
-  T->ncomp = 0;
-  for (int i = 0; i < ns; i++) T->idx[i] = -1, T->onstk[i] = 0;
-  for (int r = 0; r < ns; r++) {
-    if (T->idx[r] >= 0) continue;
-    T->cv[cs] = r, T->ce[cs++] = 0;
-    T->idx[r] = T->low[r] = counter++, T->stk[sp++] = r, T->onstk[r] = 1;
-    while (cs) {
-      int v = T->cv[cs - 1], ne = torn[v] ? 0 : s->dep_n[v];
-      if (T->ce[cs - 1] < ne) {
-        int u = s->dep[s->dep_adr[v] + T->ce[cs - 1]++];
-        if (T->idx[u] < 0) {
-          T->idx[u] = T->low[u] = counter++, T->stk[sp++] = u, T->onstk[u] = 1;
-          T->cv[cs] = u, T->ce[cs++] = 0;
-        } else if (T->onstk[u] && T->idx[u] < T->low[v]) T->low[v] = T->idx[u];
-        continue;
-      }
-      cs--;
-      if (cs && T->low[v] < T->low[T->cv[cs - 1]]) T->low[T->cv[cs - 1]] = T->low[v];
-      if (T->low[v] != T->idx[v]) continue;
-      T->cadr[T->ncomp] = no;
-      int u;
-      do {
-        u = T->stk[--sp], T->onstk[u] = 0, T->comp[u] = T->ncomp, T->ord[no++] = u;
-      } while (u != v);
-      T->ncomp++;
-    }
-  }
-  T->cadr[T->ncomp] = no;
+  for (int v = 0; v < s->nsig; v++) T->deg[v] = torn[v] ? 0 : s->dep_n[v];
+  T->ncomp = bg_scc(s->nsig, s->dep_adr, T->deg, s->dep, T->comp, T->ord, T->cadr);
 }
 
 static int self_dep(const bg_eqsys *s, int v) {
@@ -156,7 +130,7 @@ static int tear_round(bg_eqsys *s, tarjan *T, int *torn, const int *pref, int *c
 void bg_eqs_sort(bg_eqsys *s) {
   int ns = s->nsig, nn = ns + 1;
   tarjan T;
-  int **arrs[] = {&T.idx, &T.low, &T.onstk, &T.stk, &T.cv, &T.ce, &T.comp, &T.ord, &T.cadr};
+  int **arrs[] = {&T.deg, &T.comp, &T.ord, &T.cadr};
   for (size_t i = 0; i < sizeof arrs / sizeof *arrs; i++) *arrs[i] = bg_xcalloc((size_t)nn + 1, sizeof(int));
   int *torn = bg_xcalloc((size_t)nn, sizeof(int)), *pref = bg_xcalloc((size_t)nn, sizeof(int));
   int *cnt = bg_xcalloc((size_t)nn, sizeof(int));
