@@ -60,19 +60,29 @@ void bg_sb_json_str(bg_strbuf *b, const char *s) {
   bg_sb_putc(b, '"');
 }
 
+void bg_num_format(char *buf, size_t size, double v, int min_digits) {
+  /* 17 significant digits always read back (IEEE double), so the loop ends */
+  for (int prec = min_digits; prec <= 17; prec++) {
+    snprintf(buf, size, "%.*g", prec, v);
+    if (strtod(buf, NULL) == v) return;
+  }
+}
+
+void bg_sb_num(bg_strbuf *b, double v) {
+  if (isnan(v)) { bg_sb_puts(b, "nan"); return; }
+  if (isinf(v)) { bg_sb_puts(b, v < 0 ? "-inf" : "inf"); return; }
+  char buf[40];
+  bg_num_format(buf, sizeof buf, v, 15);
+  bg_sb_puts(b, buf);
+}
+
 void bg_sb_json_num(bg_strbuf *b, double v) {
   if (!isfinite(v)) {
     bg_sb_puts(b, "null");
     return;
   }
   if (v == 0) v = 0; /* no "-0" */
-  char buf[40];
-  /* The shortest of %.15g..%.17g that reads back as the same double. */
-  for (int prec = 15; prec <= 17; prec++) {
-    snprintf(buf, sizeof buf, "%.*g", prec, v);
-    if (strtod(buf, NULL) == v) break;
-  }
-  bg_sb_puts(b, buf);
+  bg_sb_num(b, v);
 }
 
 const char *bg_sb_str(const bg_strbuf *b) { return b->s ? b->s : ""; }

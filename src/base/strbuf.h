@@ -15,7 +15,17 @@ void bg_sb_printf(bg_strbuf *b, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 /* Appends s as a JSON string literal, quotes included. */
 void bg_sb_json_str(bg_strbuf *b, const char *s);
-/* Appends a double the way JSON and CSV want it (%.17g, finite only; null otherwise). */
+/* The one number printer: the shortest "%.Ng" with N from min_digits to 17
+ * that reads back as the same double (finite v; buf of at least 32 bytes).
+ * Every number bgdraw writes for a program to read (JSON, CSV, equations,
+ * generated C, re-parsable expressions) goes through it; min_digits 15 is the
+ * usual choice (the digits of the shortest decimal that round-trips), 6 gives
+ * %g's exponent style for round numbers (1e+06 instead of 1000000). */
+void bg_num_format(char *buf, size_t size, double v, int min_digits);
+/* Appends bg_num_format(v, 15); "nan", "inf" or "-inf" when not finite. */
+void bg_sb_num(bg_strbuf *b, double v);
+/* Appends a double the way JSON wants it: bg_num_format(v, 15), no "-0",
+ * null when not finite. */
 void bg_sb_json_num(bg_strbuf *b, double v);
 /* The text so far (never NULL: "" when empty). */
 const char *bg_sb_str(const bg_strbuf *b);

@@ -12,7 +12,7 @@
 static void num(bg_strbuf *o, double c) {
   if (isnan(c)) bg_sb_puts(o, "NAN");
   else if (isinf(c)) bg_sb_puts(o, c > 0 ? "HUGE_VAL" : "(-HUGE_VAL)");
-  else bg_sb_printf(o, "%.17g", c);
+  else bg_sb_num(o, c);
 }
 
 /* Function values and derivatives: copies of bg_func_apply and call_der. */

@@ -59,18 +59,6 @@ static const char *op_text(int op) {
   }
 }
 
-/* Shortest of %.15g..%.17g that reads back as the same double. */
-static void put_num(bg_strbuf *out, double v) {
-  char buf[40];
-  if (isnan(v)) { bg_sb_puts(out, "nan"); return; }
-  if (isinf(v)) { bg_sb_puts(out, v < 0 ? "-inf" : "inf"); return; }
-  for (int digits = 15; digits <= 17; digits++) {
-    snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (strtod(buf, NULL) == v) break;
-  }
-  bg_sb_puts(out, buf);
-}
-
 static void put_store(const bg_model *m, int elem, bg_strbuf *out) {
   bg_sb_puts(out, m->elem_name[elem]);
   bg_sb_puts(out, m->elem_kind[elem] == BG_ELEM_I ? ".p" : ".q");
@@ -149,7 +137,7 @@ static void print_binary(const bg_model *m, const bg_xnode *n, bg_strbuf *out) {
 static void print_node(const bg_model *m, int x, bg_strbuf *out) {
   const bg_xnode *n = &m->xnode[x];
   switch (n->op) {
-  case BG_X_NUM: put_num(out, n->num); break;
+  case BG_X_NUM: bg_sb_num(out, n->num); break;
   case BG_X_TIME: bg_sb_putc(out, 't'); break;
   case BG_X_PARAM: bg_sb_puts(out, m->param_name[n->ref]); break;
   case BG_X_INPUT: bg_sb_puts(out, m->input_name[n->ref]); break;

@@ -1,5 +1,6 @@
 /* Simulation results as CSV (docs/simulation.md): header "t,<names>", one row per output
- * time, "%.17g" numbers (round-trip exact, identical on every run).
+ * time, numbers in the shortest form that reads back exactly (bg_sb_num),
+ * identical on every run.
  * A name with a comma, quote or newline (a plot expression such as
  * "max(a, b)") is quoted CSV-style, with inner quotes doubled. A partial run
  * (the solver failed) ends with one comment line "# partial: <message>":
@@ -20,12 +21,6 @@ static void put_name(bg_strbuf *out, const char *s) {
   bg_sb_putc(out, '"');
 }
 
-static void put_num(bg_strbuf *out, double v) {
-  char buf[40];
-  snprintf(buf, sizeof buf, "%.17g", v);
-  bg_sb_puts(out, buf);
-}
-
 /* The message on one line: newlines would start a row. */
 static void put_comment(bg_strbuf *out, const char *msg) {
   bg_sb_puts(out, "# partial: ");
@@ -41,10 +36,10 @@ void bg_csv_write(const bg_simresult *r, bg_strbuf *out) {
   }
   bg_sb_putc(out, '\n');
   for (int i = 0; i < r->nrows; i++) {
-    put_num(out, r->t[i]);
+    bg_sb_num(out, r->t[i]);
     for (int k = 0; k < r->nout; k++) {
       bg_sb_putc(out, ',');
-      put_num(out, r->values[(size_t)i * (size_t)r->nout + (size_t)k]);
+      bg_sb_num(out, r->values[(size_t)i * (size_t)r->nout + (size_t)k]);
     }
     bg_sb_putc(out, '\n');
   }

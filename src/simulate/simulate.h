@@ -66,7 +66,7 @@ void bg_simresult_free(bg_simresult *r);
 char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a);
 
 /* The results as CSV: header "t,<names...>" (a name containing a comma or a
- * quote is quoted CSV-style), one row per output time, numbers "%.17g".
+ * quote is quoted CSV-style), one row per output time, numbers in the shortest round-trip form (bg_sb_num).
  * A partial run ends with one comment line "# partial: <message>". */
 void bg_csv_write(const bg_simresult *r, bg_strbuf *out);
 #endif

@@ -25,10 +25,7 @@ static void put_num(pctx *P, double v, bg_strbuf *out) {
   char buf[40];
   if (isnan(v)) { bg_sb_puts(out, "nan"); return; }
   if (isinf(v)) { bg_sb_puts(out, v < 0 ? "-inf" : "inf"); return; }
-  for (int d = 6; d <= 17; d++) { /* shortest that reads back, at least %g's */
-    snprintf(buf, sizeof buf, "%.*g", d, v);
-    if (strtod(buf, NULL) == v) break;
-  }
+  bg_num_format(buf, sizeof buf, v, 6); /* %g's style for round numbers */
   char *e = strchr(buf, 'e');
   if (!P->latex || !e) { bg_sb_puts(out, buf); return; }
   *e = 0;
