@@ -116,7 +116,7 @@ check "path under a file exits 4 (got $st)" $((st != 4))
 mkdir "$tmp/adir.pdf"
 "$BGDRAW" examples/rlc.bg --report "$tmp/adir.pdf" 2>/dev/null; st=$?
 check "a directory as the report path exits 4 (got $st)" $((st != 4))
-[ -z "$(ls "$tmp" | grep '\.tmp[0-9]')" ] && [ -z "$(ls "$tmp/adir.pdf")" ]; check "no temporary file left" $?
+[ -z "$(ls -A "$tmp" | grep '^\.')" ] && [ -z "$(ls "$tmp/adir.pdf")" ]; check "no temporary file left" $?
 
 "$BGDRAW" examples/rlc.bg --report "$tmp/r.svg" 2>/dev/null; st=$?
 check "--report x.svg is a usage error (got $st)" $((st != 2))

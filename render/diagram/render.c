@@ -74,7 +74,7 @@ int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_dia
   bg_strbuf out = {0};
   int rc = bg_diagram_render(d, format, &out, dg);
   if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
   if (rc == BG_RENDER_OK && d->o.verbose)

@@ -617,7 +617,7 @@ int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
     bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the %s plot", fmt);
     rc = BG_RENDER_ERROR;
   } else if (bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
   bg_sb_free(&out);

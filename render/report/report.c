@@ -81,7 +81,7 @@ int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
     bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the report");
     rc = BG_RENDER_ERROR;
   } else if (bg_write_file_atomic(path, pdf.s ? pdf.s : "", pdf.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   } else if (o && o->verbose) {
     fprintf(stderr, "bgdraw: wrote %s (%zu bytes)\n", path, pdf.len);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/arena.h"
+#include "base/fileio.h"
 
 typedef enum { K_STR, K_NUM, K_COLOR, K_BOOL, K_HARPOON, K_COLORS } key_type;
 
@@ -197,24 +198,12 @@ int bg_style_parse(bg_style *st, const char *text, const char *origin, bg_diags 
 }
 
 /* ---------------------------------------------------------------- files */
-static char *slurp(const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  bg_strbuf b = {0};
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, f)) > 0) bg_sb_putn(&b, buf, n);
-  fclose(f);
-  if (!b.s) bg_sb_puts(&b, "");
-  return b.s;
-}
-
 static int is_path(const char *name) {
   size_t n = strlen(name);
   return strchr(name, '/') || (n > 6 && !strcmp(name + n - 6, ".style"));
 }
 
-static void style_file(const char *name, const char *style_dir, char *buf, size_t n) {
+void bg_style_path(const char *name, const char *style_dir, char *buf, size_t n) {
   if (is_path(name)) {
     snprintf(buf, n, "%s", name);
     return;
@@ -227,13 +216,13 @@ int bg_style_load(bg_style *st, const char *name, const char *style_dir, bg_diag
   bg_style_default(st);
   if (!name) name = "default";
   char path[4096];
-  style_file(name, style_dir, path, sizeof path);
-  char *text = slurp(path);
+  bg_style_path(name, style_dir, path, sizeof path);
+  char *text = bg_read_file(path, NULL);
   if (!text) {
     if (!strcmp(name, "default")) return 0;
     bg_srcloc none = {0, 0};
     bg_diag_error(dg, none, "unknown style '%s' (cannot read '%s': %s)", name, path,
-                  strerror(errno));
+                  bg_file_strerror(errno));
     return -1;
   }
   int rc = bg_style_parse(st, text, path, dg);

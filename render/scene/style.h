@@ -40,4 +40,6 @@ int bg_style_parse(bg_style *st, const char *text, const char *origin, bg_diags 
  * ".style"). NULL or "default" without a file gives the built-in default.
  * Returns 0, or -1 with an error in dg. */
 int bg_style_load(bg_style *st, const char *name, const char *style_dir, bg_diags *dg);
+/* The file bg_style_load reads for name (into buf), by the same rules. */
+void bg_style_path(const char *name, const char *style_dir, char *buf, size_t n);
 #endif

@@ -1,44 +1,234 @@
+/* Output files that never damage what they point at (fileio.h): regular
+ * files are replaced atomically through a mkstemp file beside them, devices,
+ * FIFOs and sockets are written in place, symlinks are followed, inputs and
+ * block devices are refused. A signal between creating the temporary file
+ * and renaming it removes the temporary file. */
 #include "base/fileio.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <stdio.h>
-#include <string.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 #include <unistd.h>
 
 #include "base/arena.h"
 
-char *bg_atomic_tmp_path(const char *path) {
-  size_t n = strlen(path) + 32;
-  char *tmp = bg_xmalloc(n);
-  snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
-  return tmp;
+/* ------------------------------------------------- the signal clean-up */
+/* The one temporary file in existence (outputs are written one at a time). */
+static char pending_tmp[PATH_MAX + 64];
+static volatile sig_atomic_t pending_set;
+static int handlers_installed;
+static void (*before_rename_hook)(const char *tmp);
+
+void bg_fileio_set_before_rename_hook(void (*hook)(const char *tmp)) { before_rename_hook = hook; }
+
+static void remove_pending_and_die(int sig) {
+  if (pending_set) unlink(pending_tmp); /* async-signal-safe */
+  signal(sig, SIG_DFL);
+  raise(sig);
 }
 
-int bg_atomic_commit(const char *tmp, const char *path) {
-  if (rename(tmp, path) != 0) {
-    int e = errno;
-    remove(tmp);
-    errno = e;
-    return -1;
+static const int cleanup_signals[] = {SIGINT, SIGTERM, SIGHUP};
+
+/* Installs the handlers once, leaving alone a signal someone ignores or
+ * handles already (nohup, a host program). */
+static void install_handlers(void) {
+  if (handlers_installed) return;
+  handlers_installed = 1;
+  for (size_t i = 0; i < sizeof cleanup_signals / sizeof *cleanup_signals; i++) {
+    struct sigaction old, sa;
+    if (sigaction(cleanup_signals[i], NULL, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = remove_pending_and_die;
+    sigemptyset(&sa.sa_mask);
+    sigaction(cleanup_signals[i], &sa, NULL);
+  }
+}
+
+/* Blocks (or restores) the clean-up signals around the steps that create or
+ * rename the temporary file, so no signal falls between a step and its
+ * bookkeeping. */
+static void block_signals(sigset_t *saved) {
+  sigset_t s;
+  sigemptyset(&s);
+  for (size_t i = 0; i < sizeof cleanup_signals / sizeof *cleanup_signals; i++)
+    sigaddset(&s, cleanup_signals[i]);
+  sigprocmask(SIG_BLOCK, &s, saved);
+}
+
+static void restore_signals(const sigset_t *saved) { sigprocmask(SIG_SETMASK, saved, NULL); }
+
+/* ------------------------------------------------------------ helpers */
+static int write_all(int fd, const char *p, size_t len) {
+  while (len > 0) {
+    ssize_t w = write(fd, p, len);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return -1;
+    p += w;
+    len -= (size_t)w;
   }
   return 0;
 }
 
-void bg_atomic_abort(const char *tmp) { remove(tmp); }
-
-int bg_write_file_atomic(const char *path, const void *data, size_t len) {
-  char *tmp = bg_atomic_tmp_path(path);
-  FILE *f = fopen(tmp, "wb");
-  int rc = -1;
-  if (f) {
-    size_t w = fwrite(data, 1, len, f);
-    int closed = fclose(f);
-    if (w == len && closed == 0) rc = bg_atomic_commit(tmp, path);
-    else bg_atomic_abort(tmp);
+/* Follows symlinks at the last component of path; the final name (which
+ * may not exist yet) in a buffer the caller frees, or NULL (ELOOP, ...). */
+static char *resolve_links(const char *path) {
+  char *p = strdup(path);
+  for (int hops = 0; p && hops < 40; hops++) {
+    struct stat st;
+    if (lstat(p, &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    char link[PATH_MAX];
+    ssize_t n = readlink(p, link, sizeof link - 1);
+    if (n < 0) break;
+    link[n] = '\0';
+    const char *slash = strrchr(p, '/');
+    size_t dirlen = link[0] == '/' || !slash ? 0 : (size_t)(slash - p) + 1;
+    char *next = bg_xmalloc(dirlen + (size_t)n + 1);
+    memcpy(next, p, dirlen);
+    memcpy(next + dirlen, link, (size_t)n + 1);
+    free(p);
+    p = next;
   }
-  free(tmp);
+  if (p) errno = ELOOP;
+  free(p);
+  return NULL;
+}
+
+/* A character device, FIFO or terminal: written where it is. */
+static int write_in_place(const char *path, const void *data, size_t len) {
+  int fd = open(path, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  int rc = write_all(fd, data, len);
+  int e = errno;
+  if (close(fd) != 0 && rc == 0) return -1;
+  errno = e;
   return rc;
+}
+
+/* A Unix-domain socket: connected to and written as a stream. */
+static int write_socket(const char *path, const void *data, size_t len) {
+  struct sockaddr_un sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sun_family = AF_UNIX;
+  if (strlen(path) >= sizeof sa.sun_path) {
+    errno = ENAMETOOLONG;
+    return -1;
+  }
+  strcpy(sa.sun_path, path);
+  int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  int rc = connect(fd, (struct sockaddr *)&sa, sizeof sa) == 0 ? write_all(fd, data, len) : -1;
+  int e = errno;
+  close(fd);
+  errno = e;
+  return rc;
+}
+
+/* The temporary name's template: ".<name>.XXXXXX" in the target's folder
+ * (the name shortened so the result stays within NAME_MAX). */
+static char *tmp_template(const char *target) {
+  const char *slash = strrchr(target, '/');
+  size_t dirlen = slash ? (size_t)(slash - target) + 1 : 0;
+  const char *base = target + dirlen;
+  size_t baselen = strlen(base) > 200 ? 200 : strlen(base);
+  char *t = bg_xmalloc(dirlen + baselen + 16);
+  snprintf(t, dirlen + baselen + 16, "%.*s.%.*s.XXXXXX", (int)dirlen, target, (int)baselen, base);
+  return t;
+}
+
+/* Creates the temporary file with the mode the result must have: the old
+ * file's, or the umask's default for a new one. -1 on failure. */
+static int create_tmp(char *tmpl, const struct stat *old) {
+  sigset_t saved;
+  install_handlers();
+  block_signals(&saved);
+  int fd = mkstemp(tmpl);
+  if (fd >= 0) {
+    snprintf(pending_tmp, sizeof pending_tmp, "%s", tmpl);
+    pending_set = 1;
+  }
+  restore_signals(&saved);
+  if (fd < 0) return -1;
+  mode_t mode;
+  if (old) {
+    mode = old->st_mode & 07777;
+    if (geteuid() == 0 && fchown(fd, old->st_uid, old->st_gid) != 0) { /* keep root's owner */ }
+  } else {
+    mode_t mask = umask(0);
+    umask(mask);
+    mode = 0666 & ~mask;
+  }
+  fchmod(fd, mode);
+  return fd;
+}
+
+/* Renames tmp onto target (or removes it) and forgets it. */
+static int finish_tmp(const char *tmp, const char *target, int ok) {
+  sigset_t saved;
+  block_signals(&saved);
+  int rc = ok ? rename(tmp, target) : -1;
+  int e = errno;
+  if (rc != 0) unlink(tmp);
+  pending_set = 0;
+  restore_signals(&saved);
+  errno = e;
+  return rc;
+}
+
+/* A regular file or a new name: replaced atomically. */
+static int replace_file(const char *target, const struct stat *old, const void *data, size_t len) {
+  char *tmpl = tmp_template(target);
+  int fd = create_tmp(tmpl, old);
+  if (fd < 0) {
+    free(tmpl);
+    return -1;
+  }
+  int ok = write_all(fd, data, len) == 0;
+  int e = errno;
+  if (close(fd) != 0 && ok) {
+    ok = 0;
+    e = errno;
+  }
+  if (ok && before_rename_hook) before_rename_hook(tmpl);
+  errno = e;
+  int rc = finish_tmp(tmpl, target, ok);
+  if (!ok) errno = e;
+  free(tmpl);
+  return rc;
+}
+
+/* ------------------------------------------------------------- public */
+int bg_write_file_atomic(const char *path, const void *data, size_t len) {
+  char *target = resolve_links(path);
+  if (!target) return -1;
+  struct stat st;
+  int rc = -1;
+  if (stat(target, &st) != 0) {
+    if (errno == ENOENT) rc = replace_file(target, NULL, data, len);
+  } else if (bg_path_is_input(target)) errno = BG_EISINPUT;
+  else if (S_ISDIR(st.st_mode)) errno = EISDIR;
+  else if (S_ISBLK(st.st_mode)) errno = BG_EBLOCKDEV;
+  else if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) rc = write_in_place(target, data, len);
+  else if (S_ISSOCK(st.st_mode)) rc = write_socket(target, data, len);
+  else rc = replace_file(target, &st, data, len);
+  int e = errno;
+  free(target);
+  errno = e;
+  return rc;
+}
+
+int bg_write_stream(FILE *f, const void *data, size_t len) {
+  errno = 0;
+  size_t w = len ? fwrite(data, 1, len, f) : 0;
+  if (w == len && fflush(f) == 0 && !ferror(f)) return 0;
+  if (!errno) errno = EIO;
+  return -1;
 }
 
 const char *bg_path_ext(const char *path) {

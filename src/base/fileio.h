@@ -1,18 +1,64 @@
-/* Atomic output files: write to a temporary file beside the target, then
- * rename, so a failed run never leaves a half-written output. */
+/* Files: bounded reads of the inputs (remembered by device and inode, so no
+ * output can replace one), and outputs that never damage what they point at
+ * (docs/cli.md, "Output files").
+ *
+ * Every function reports failure as -1 / NULL with errno set; errno may be
+ * one of bgdraw's own codes below, so print it with bg_file_strerror, not
+ * strerror. */
 #ifndef BG_FILEIO_H
 #define BG_FILEIO_H
 #include <stddef.h>
+#include <stdio.h>
 
-/* Writes len bytes to path atomically. Returns 0, or -1 with errno set. */
+/* The largest input file (model, table, style) bgdraw reads: 64 MiB. */
+#define BG_INPUT_MAX_BYTES ((size_t)64 << 20)
+
+/* bgdraw's own errno values (beyond the system's), for bg_file_strerror. */
+enum {
+  BG_ENOTREG = 100001, /* an input that is not a regular file (FIFO, device, ...) */
+  BG_ETOOBIG,          /* an input larger than BG_INPUT_MAX_BYTES */
+  BG_EISINPUT,         /* an output that is one of the run's inputs */
+  BG_EBLOCKDEV         /* an output that is a block device */
+};
+/* strerror for the system's errno values and bgdraw's own. */
+const char *bg_file_strerror(int err);
+
+/* ------------------------------------------------------------------ inputs */
+/* Reads a whole regular file (at most BG_INPUT_MAX_BYTES) into a
+ * NUL-terminated buffer the caller frees, and remembers its device and inode
+ * as an input of this run. NULL with errno set (BG_ENOTREG, BG_ETOOBIG,
+ * EISDIR, ENOENT, ...) when it cannot. */
+char *bg_read_file(const char *path, size_t *len);
+/* The same for an open stream (stdin), with the same size limit. */
+char *bg_read_stream(FILE *f, size_t *len);
+/* Remembers an existing file as an input without reading it (a style file
+ * read later); a path that does not exist is ignored. */
+void bg_input_note(const char *path);
+/* 1 if path (following symlinks) is a file this run read or noted. */
+int bg_path_is_input(const char *path);
+
+/* ----------------------------------------------------------------- outputs */
+/* Writes len bytes to path without ever damaging what it points at:
+ * - a regular file (or a new name) is replaced atomically: the bytes go to a
+ *   mkstemp file in the target's directory, get the target's mode (or the
+ *   umask's default for a new file), and are renamed onto it; a failed write
+ *   leaves the old file as it was, and SIGINT/SIGTERM/SIGHUP remove the
+ *   temporary file;
+ * - a symlink is followed: its final target is written (atomically when
+ *   regular) and the link stays;
+ * - a character device, FIFO, terminal or socket is written in place;
+ * - a block device, a directory or one of the run's inputs is refused
+ *   (BG_EBLOCKDEV, EISDIR, BG_EISINPUT).
+ * Returns 0, or -1 with errno set. */
 int bg_write_file_atomic(const char *path, const void *data, size_t len);
+/* Writes len bytes to an open stream (stdout) and flushes it: 0, or -1 with
+ * errno set on any write error (ENOSPC on /dev/full, EPIPE, ...). */
+int bg_write_stream(FILE *f, const void *data, size_t len);
 
-/* For writers that need a file name (cairo surfaces): a temporary path beside
- * `path` (caller frees), to be renamed with bg_atomic_commit or removed with
- * bg_atomic_abort. */
-char *bg_atomic_tmp_path(const char *path);
-int bg_atomic_commit(const char *tmp, const char *path); /* 0 or -1 (errno) */
-void bg_atomic_abort(const char *tmp);
+/* For tests of the signal clean-up: called with the temporary file's path
+ * after its bytes are written and before the rename (NULL: none). */
+void bg_fileio_set_before_rename_hook(void (*hook)(const char *tmp));
+
 /* The extension of path without the dot ("svg"), or "" */
 const char *bg_path_ext(const char *path);
 #endif

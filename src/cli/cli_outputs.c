@@ -13,6 +13,7 @@
 #include "json/json_sim.h"
 #include "plot/plot.h"
 #include "report/report.h"
+#include "scene/style.h"
 #include "base/strbuf.h"
 
 /* Diagram options from the command line; -1 on a usage error. */
@@ -48,6 +49,28 @@ int cli_render_options(run *r) {
   return 0;
 }
 
+/* No output may be a file the run reads (model, tables, style): compared by
+ * device and inode, so another name or a symlink for an input is refused
+ * too. A usage error, found before anything is written. */
+int cli_check_outputs(run *r) {
+  char style[4096];
+  bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style,
+                sizeof style);
+  bg_input_note(style);
+  const char *paths[BG_MAX_OUTPUTS + 2];
+  int n = 0;
+  for (int i = 0; i < r->opts.nout; i++) paths[n++] = r->opts.out[i].path;
+  if (r->opts.plot) paths[n++] = r->opts.plot;
+  if (r->opts.report) paths[n++] = r->opts.report;
+  for (int i = 0; i < n; i++) {
+    if (!bg_path_is_input(paths[i])) continue;
+    fprintf(stderr, "bgdraw: error: output '%s' is one of the run's input files (the model, a "
+                    "table or a style file); refusing to overwrite it\n", paths[i]);
+    return EXIT_USAGE;
+  }
+  return EXIT_OK;
+}
+
 /* The default output when no -o is given: out/<model>.svg. */
 void cli_default_output(run *r, char *buf, size_t n) {
   mkdir("out", 0777); /* may exist already */
@@ -59,7 +82,13 @@ void cli_default_output(run *r, char *buf, size_t n) {
 
 static int write_text(const char *path, const bg_strbuf *sb) {
   if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
+  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
+  return EXIT_WRITE;
+}
+
+int cli_write_stdout(const bg_strbuf *sb) {
+  if (bg_write_stream(stdout, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
+  fprintf(stderr, "bgdraw: error: cannot write to stdout: %s\n", bg_file_strerror(errno));
   return EXIT_WRITE;
 }
 
@@ -94,7 +123,7 @@ int cli_write_equations(run *r, const char *path, const char *form) {
   }
   bg_strbuf sb = {0};
   bg_eqprint(r->eqsys, form, &sb);
-  int rc = path ? write_text(path, &sb) : (fputs(bg_sb_str(&sb), stdout), EXIT_OK);
+  int rc = path ? write_text(path, &sb) : cli_write_stdout(&sb);
   bg_sb_free(&sb);
   return rc;
 }

@@ -8,6 +8,7 @@
 #include "causality/analysis.h"
 #include "cli/cli_opts.h"
 #include "base/diag.h"
+#include "base/strbuf.h"
 #include "equations/eqsys.h"
 #include "equations/index.h"
 #include "model/model.h"
@@ -47,6 +48,10 @@ typedef struct run {
 /* Diagram options from the command line (and --max-list); -1 after a
  * usage message. */
 int cli_render_options(run *r);
+/* EXIT_USAGE (with a message) when an output is one of the run's inputs. */
+int cli_check_outputs(run *r);
+/* Text to stdout, flushed; EXIT_WRITE (with a message) on a write error. */
+int cli_write_stdout(const bg_strbuf *sb);
 /* The default output when no -o is given: out/<model>.svg (buf holds the path). */
 void cli_default_output(run *r, char *buf, size_t n);
 /* Every -o in order; the first failure's exit status, or EXIT_OK. */

@@ -39,7 +39,7 @@ static int load_model(run *r) {
   bg_diags_init(&r->dg, o->model_path, r->src, r->srclen);
   if (!r->src) {
     bg_srcloc none = {0, 0};
-    bg_diag_error(&r->dg, none, "cannot read the model: %s", strerror(errno));
+    bg_diag_error(&r->dg, none, "cannot read the model: %s", bg_file_strerror(errno));
     return -1;
   }
   r->ast = bg_parse_string(o->model_path, r->src, r->srclen, &r->dg);
@@ -154,9 +154,9 @@ static int print_check(run *r) {
   } else if (r->eqsys_problem) {
     bg_sb_printf(&sb, "equations: %s\n", r->eqsys_problem);
   }
-  fputs(bg_sb_str(&sb), stdout);
+  int rc = cli_write_stdout(&sb);
   bg_sb_free(&sb);
-  return EXIT_OK;
+  return rc;
 }
 
 int main(int argc, char **argv) {
@@ -182,10 +182,17 @@ int main(int argc, char **argv) {
     run_free(&r);
     return EXIT_MODEL;
   }
+  char defpath[1024];
+  if (!r.opts.check && r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations &&
+      !r.opts.plot && !r.opts.report)
+    cli_default_output(&r, defpath, sizeof defpath);
+  if ((rc = cli_check_outputs(&r)) != 0) {
+    run_free(&r);
+    return rc;
+  }
   analyse(&r);
   if (wants_equations(&r.opts)) derive_equations(&r);
   if (wants_index(&r.opts)) numeric_index(&r);
-  char defpath[1024];
   if (r.opts.check) rc = print_check(&r);
   else if (r.opts.equations && r.opts.nout == 0) rc = cli_write_equations(&r, NULL, r.opts.equations);
   else {
@@ -194,8 +201,6 @@ int main(int argc, char **argv) {
     int refused = simrc && !r.sim.nrows;
     if (!wantsim && r.sim_status == 1) simrc = refused = 0; /* the report says why */
     if (r.opts.equations) rc = cli_write_equations(&r, NULL, r.opts.equations);
-    if (r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations && !r.opts.plot && !r.opts.report)
-      cli_default_output(&r, defpath, sizeof defpath);
     if (!rc) rc = cli_write_outputs(&r);
     if (!rc && r.opts.plot) rc = cli_write_plot(&r);
     if (!rc && r.opts.report) rc = cli_write_report(&r);

@@ -612,25 +612,3 @@ void bg_ast_free(bg_ast *ast) {
   bg_arena_free(&ast->arena);
   free(ast);
 }
-
-char *bg_read_file(const char *path, size_t *len) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 4096, n = 0;
-  char *buf = bg_xmalloc(cap);
-  size_t r;
-  while ((r = fread(buf + n, 1, cap - n - 1, f)) > 0) {
-    n += r;
-    if (cap - n - 1 == 0) buf = bg_xrealloc(buf, cap *= 2);
-  }
-  int err = ferror(f) ? errno : 0; /* EISDIR for a directory */
-  fclose(f);
-  if (err) {
-    free(buf);
-    errno = err;
-    return NULL;
-  }
-  buf[n] = '\0';
-  if (len) *len = n;
-  return buf;
-}

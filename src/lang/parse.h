@@ -3,6 +3,7 @@
 #define BG_PARSE_H
 #include "lang/ast.h"
 #include "base/diag.h"
+#include "base/fileio.h" /* bg_read_file, for the parser's callers */
 
 /* Parses src (len bytes; need not be NUL-terminated) of the file `path`.
  * Every syntax error goes to dg (parsing resumes at the next statement), so
@@ -12,7 +13,4 @@
 bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags *dg);
 void bg_ast_free(bg_ast *ast);
 
-/* Reads a whole file into a NUL-terminated buffer the caller frees;
- * NULL (and errno set) if it cannot be read. */
-char *bg_read_file(const char *path, size_t *len);
 #endif

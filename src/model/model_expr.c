@@ -314,7 +314,7 @@ static int file_table(bg_build *b, const bg_expr *file, bg_srcloc at) {
   char *text = bg_read_file(path, &len);
   if (!text) {
     bg_diag_error(b->dg, at, "cannot read table file '%s' (%s): %s", file->str, path,
-                  strerror(errno));
+                  bg_file_strerror(errno));
     return -1;
   }
   csv_data d = {0};
