@@ -25,11 +25,19 @@ static int x_reads(const bg_model *m, int root) {
 }
 
 /* The two-port whose modulus is expression root when it is modulated by
- * states only (an MTF T(phi)): it prints as its name; else -1. */
-static int modulus_elem(const bg_model *m, int root) {
-  for (int e = 0; e < m->nelem; e++)
-    if (bg_elem_is_twoport(m->elem_kind[e]) && m->elem_expr[e] == root) return x_reads(m, root) == 2 ? e : -1;
-  return -1;
+ * states only (an MTF T(phi)) prints as its name: x_modulus[root] is that
+ * element, else -1. The lowest-numbered two-port owning a root decides. */
+void bg_eqs_sym_lookups(bg_eqsys *s) {
+  const bg_model *m = s->m;
+  s->state_y = bg_arena_alloc(&s->arena, (size_t)(m->nstate + 1) * sizeof(int));
+  for (int k = 0; k < m->nstate; k++) s->state_y[k] = s->nint - m->nstate + k;
+  s->x_modulus = bg_arena_alloc(&s->arena, (size_t)(m->nxnode + 1) * sizeof(int));
+  for (int x = 0; x < m->nxnode; x++) s->x_modulus[x] = -1;
+  for (int e = m->nelem - 1; e >= 0; e--) {
+    int root = m->elem_expr[e];
+    if (bg_elem_is_twoport(m->elem_kind[e]) && root >= 0 && root < m->nxnode)
+      s->x_modulus[root] = x_reads(m, root) == 2 ? e : -1;
+  }
 }
 
 /* Signals replaced by the expressions of a map (read only). */
@@ -40,18 +48,13 @@ static int sig_cb(void *ctx, int kind, int ref) {
 
 int bg_eqsym_tree(bg_sym *S, const bg_eqsys *s, int nd, const int *sigmap) {
   const eq_node *n = &s->node[nd];
-  const bg_model *m = s->m;
-  int state0 = s->nint - m->nstate; /* unknown index of user state 0 */
   switch (n->kind) {
   case EQ_NUM: return bg_sym_num(S, n->c);
   case EQ_SIG: return sigmap && sigmap[n->a] >= 0 ? sigmap[n->a] : bg_sym_leaf(S, SYM_SIG, n->a);
   case EQ_Y: return bg_sym_leaf(S, SYM_Y, n->a);
   case EQ_YP: return bg_sym_leaf(S, SYM_YP, n->a);
   case EQ_X: {
-    int st[64], *sy = m->nstate <= 64 ? st : bg_xmalloc((size_t)m->nstate * sizeof(int));
-    for (int k = 0; k < m->nstate; k++) sy[k] = state0 + k;
-    int r = bg_sym_from_x(S, n->a, sy, s->store_y), e = modulus_elem(m, n->a);
-    if (sy != st) free(sy);
+    int r = bg_sym_from_x(S, n->a, s->state_y, s->store_y), e = s->x_modulus[n->a];
     if (e >= 0) return bg_sym_alias(S, e, r);
     return sigmap ? bg_sym_subst(S, r, sig_cb, (void *)sigmap) : r;
   }

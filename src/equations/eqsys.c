@@ -332,6 +332,7 @@ bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) 
     }
   bg_eqsys *s = alloc_sys(m, a);
   add_unknowns(s);
+  bg_eqs_sym_lookups(s);
   user_state_rows(s);
   derive d = {s, dg, 0};
   derive_all(&d);

@@ -75,6 +75,10 @@ struct bg_eqsys {
   int *row_kind;   /* 0: res = yp - root (rhs form); 1: res = root */
   int *row_root;   /* equation tree of the row */
   int *store_y;    /* per element: unknown index of a store's state, -1 */
+  int *state_y;    /* per user state: its unknown index */
+  int *x_modulus;  /* per model xnode: the state-modulated two-port whose modulus
+                      it is (printed by name), else -1; built once, so printing
+                      an expression node costs no scan of the elements */
 
   /* the tape */
   tinstr *code;
@@ -115,6 +119,8 @@ void bg_eqprint_c_tape(const bg_eqsys *s, bg_strbuf *out);
 /* eqsys_order.c: dependency lists, tearing and the computational order. */
 void bg_eqs_deps(bg_eqsys *s);
 void bg_eqs_sort(bg_eqsys *s);
+/* eqsym.c: fills state_y and x_modulus. */
+void bg_eqs_sym_lookups(bg_eqsys *s);
 /* eqsys_tape.c */
 void bg_eqs_compile(bg_eqsys *s);
 void bg_eqs_pattern(bg_eqsys *s);
