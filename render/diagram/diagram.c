@@ -74,10 +74,11 @@ static const char *choose_engine(const bg_diagram *d) {
   if (d->o.layout) return d->o.layout;
   const char *e = m->layout.engine ? m->layout.engine : "dot";
   if (!strcmp(e, "dot") && d->nnode > 2000) {
-    /* dot needs ~8 s at 10 000 nodes, sfdp ~2.5 s (docs/drawing.md) */
+    /* dot and sfdp need 10-30 s at 10 000 nodes, rows (linear) a few ms
+     * (docs/drawing.md) */
     if (d->o.verbose)
-      fprintf(stderr, "bgdraw: %d nodes: laying out with sfdp instead of dot\n", d->nnode);
-    return "sfdp";
+      fprintf(stderr, "bgdraw: %d nodes: laying out with rows instead of dot\n", d->nnode);
+    return "rows";
   }
   return e;
 }

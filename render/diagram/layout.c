@@ -11,7 +11,7 @@
 
 #include "base/arena.h"
 
-static const char *const engines[] = {"dot", "neato", "fdp", "sfdp", "pinned"};
+static const char *const engines[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows"};
 
 int bg_layout_engine_ok(const char *name) {
   for (size_t i = 0; i < sizeof engines / sizeof engines[0]; i++)
@@ -62,9 +62,10 @@ static Agnode_t **add_nodes(Agraph_t *g, const bg_layout_in *in) {
   return nodes;
 }
 
-/* Breadth-first distance of every node from the roots (all at once); a
- * component without a root starts from its first node. */
-static int *bfs_depths(const bg_layout_in *in) {
+/* Breadth-first distance of every node from the roots (all at once; in->root
+ * may be NULL); a component without a root starts from its
+ * first node. order (nullable) receives the nodes in the order reached. */
+int *bg_layout_depths(const bg_layout_in *in, int *order) {
   int n = in->nnode, m = in->nedge;
   int *adr = bg_xcalloc((size_t)n + 1, sizeof *adr), *adj = bg_xcalloc(2 * (size_t)m + 1, sizeof *adj);
   int *fill = bg_xcalloc((size_t)n + 1, sizeof *fill), *depth = bg_xcalloc((size_t)n + 1, sizeof *depth);
@@ -78,13 +79,14 @@ static int *bfs_depths(const bg_layout_in *in) {
   for (int v = 0; v < n; v++) depth[v] = -1;
   int qh = 0, qt = 0;
   for (int s = 0; s < n; s++)
-    if (in->root[s]) depth[s] = 0, queue[qt++] = s; /* one search from all roots */
+    if (in->root && in->root[s]) depth[s] = 0, queue[qt++] = s; /* one search from all roots */
   for (int s = 0; s <= n; s++) {
     for (; qh < qt; qh++)
       for (int k = adr[queue[qh]]; k < adr[queue[qh] + 1]; k++)
         if (depth[adj[k]] < 0) depth[adj[k]] = depth[queue[qh]] + 1, queue[qt++] = adj[k];
     if (s < n && depth[s] < 0) depth[s] = 0, queue[qt++] = s; /* a component without roots */
   }
+  if (order) memcpy(order, queue, (size_t)n * sizeof *order);
   free(adr), free(adj), free(fill), free(queue);
   return depth;
 }
@@ -95,7 +97,7 @@ static int *bfs_depths(const bg_layout_in *in) {
 static Agedge_t **add_edges(Agraph_t *g, const bg_layout_in *in, Agnode_t **nodes, int is_dot,
                             unsigned char *rev) {
   Agedge_t **edges = bg_xcalloc((size_t)(in->nedge ? in->nedge : 1), sizeof *edges);
-  int *depth = is_dot && in->root ? bfs_depths(in) : NULL;
+  int *depth = is_dot && in->root ? bg_layout_depths(in, NULL) : NULL;
   for (int i = 0; i < in->nedge; i++) {
     char name[32];
     snprintf(name, sizeof name, "e%d", i);
@@ -157,8 +159,13 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   memset(out, 0, sizeof *out);
   const char *engine = in->engine ? in->engine : "dot";
   if (!bg_layout_engine_ok(engine)) {
-    snprintf(err, errn, "unknown layout engine '%s' (dot, neato, fdp, sfdp, pinned)", engine);
+    snprintf(err, errn, "unknown layout engine '%s' (dot, neato, fdp, sfdp, pinned, rows)", engine);
     return -1;
+  }
+  if (!strcmp(engine, "rows")) {
+    snprintf(out->engine, sizeof out->engine, "rows");
+    out->nnode = in->nnode, out->nedge = in->nedge;
+    return bg_layout_rows(in, out);
   }
   int is_dot = !strcmp(engine, "dot");
   const char *gv_engine = !strcmp(engine, "pinned") ? "neato" : engine;

@@ -11,7 +11,7 @@ typedef struct bg_layout_in {
   const double *px, *py;     /* nullable: the fixed position (points, y up) */
   int nedge;
   const int *tail, *head;    /* node indices */
-  const char *engine;        /* "dot", "neato", "fdp", "sfdp", "pinned" */
+  const char *engine;        /* "dot", "neato", "fdp", "sfdp", "pinned", "rows" */
   const char *rankdir;       /* dot only: "LR", "TB", "RL", "BT" */
   double node_sep, rank_sep; /* points */
   int splines;               /* route edges as splines (else straight lines) */
@@ -37,6 +37,12 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
 void bg_layout_free(bg_layout *l);
 /* A deep copy of src into out (freed with bg_layout_free). */
 void bg_layout_copy(const bg_layout *src, bg_layout *out);
+/* Breadth-first distance of each node from in->root (nullable; a component
+ * without a root starts from its first node);
+ * order (nullable, nnode) gets the nodes in the order reached. Caller frees. */
+int *bg_layout_depths(const bg_layout_in *in, int *order);
+/* layout_rows.c: the "rows" engine (bg_layout_run calls it for "rows"). */
+int bg_layout_rows(const bg_layout_in *in, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */
 int bg_layout_engine_ok(const char *name);
 #endif

@@ -10,7 +10,7 @@
 static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
-static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", NULL};
+static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
 
 /* Options taking a value, and where it goes. */
 typedef struct {
@@ -186,7 +186,7 @@ void bg_cli_print_help(FILE *out) {
       "                      variables | all | none\n"
       "  --highlight ITEM    path:K | loop:K | conflict:K\n"
       "  --style NAME|FILE   default | print | slides, or a style file\n"
-      "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned\n"
+      "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned | rows\n"
       "  --report FILE.pdf   the full analysis report\n"
       "  --simulate          run the model's simulate block (with --plot FILE, -o FILE.csv)\n"
       "  --plot FILE         simulation plot (svg, pdf, png)\n"

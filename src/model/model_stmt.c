@@ -323,7 +323,7 @@ static void st_simulate(bg_build *b, const bg_ast_stmt *s) {
 
 static void st_layout(bg_build *b, const bg_ast_stmt *s) {
   check_options(b, s, "engine, rankdir", "layout");
-  const char *engine = word_opt(b, s, "engine", "dot, neato, fdp, sfdp, pinned");
+  const char *engine = word_opt(b, s, "engine", "dot, neato, fdp, sfdp, pinned, rows");
   const char *rankdir = word_opt(b, s, "rankdir", "LR, TB, RL, BT");
   if (engine) b->m->layout.engine = engine;
   if (rankdir) b->m->layout.rankdir = rankdir;
