@@ -382,7 +382,9 @@ static void estimates_table(rp_ctx *c) {
   rp_table_emit(&c->body, &t);
 }
 
-static void eig_cells(rp_table *t, double re, double im) {
+static void eig_cells(rp_table *t, const bg_index_result *r, int k) {
+  double re = r->eig_re[k], im = r->eig_im[k];
+  bg_eig_kind kind = bg_index_eig_kind(r, k);
   bg_strbuf b = {0};
   complex_text(&b, re, im);
   rp_table_cell(t, "%s", bg_sb_str(&b));
@@ -391,14 +393,25 @@ static void eig_cells(rp_table *t, double re, double im) {
   rp_num(&b, mag);
   rp_table_cell(t, "%s", bg_sb_str(&b));
   bg_sb_clear(&b);
-  if (im == 0 && re != 0) bg_sb_puts(&b, "\u03c4 = "), rp_num(&b, 1 / fabs(re)), bg_sb_puts(&b, " s");
-  else if (im != 0) {
+  if (kind == BG_EIG_ZERO) bg_sb_puts(&b, "pure integration: ");
+  else if (im == 0) bg_sb_puts(&b, "\u03c4 = "), rp_num(&b, 1 / fabs(re)), bg_sb_puts(&b, " s");
+  else {
     bg_sb_puts(&b, "\u03c9 = "), rp_num(&b, fabs(im)), bg_sb_puts(&b, " rad/s, \u03b6 = ");
-    rp_num(&b, -re / mag);
-  } else bg_sb_puts(&b, "pure integration");
-  if (re > 0) bg_sb_puts(&b, " (unstable)");
+    rp_num(&b, kind == BG_EIG_UNDAMPED ? 0.0 : -re / mag);
+  }
+  if (kind == BG_EIG_ZERO) bg_sb_puts(&b, bg_index_eig_word(kind));
+  else if (kind != BG_EIG_DECAYING) bg_sb_printf(&b, " (%s)", bg_index_eig_word(kind));
   rp_table_cell(t, "%s", bg_sb_str(&b));
   bg_sb_free(&b);
+}
+
+/* A pair is one row, "re ± im": the member with im > 0 is skipped when its
+ * conjugate is in the list (index.c keeps pairs exactly conjugate). */
+static int conjugate_listed(const bg_index_result *r, int k) {
+  if (r->eig_im[k] <= 0) return 0;
+  for (int j = 0; j < r->neig; j++)
+    if (r->eig_im[j] == -r->eig_im[k] && r->eig_re[j] == r->eig_re[k]) return 1;
+  return 0;
 }
 
 static void eigen_table(rp_ctx *c) {
@@ -424,10 +437,9 @@ static void eigen_table(rp_ctx *c) {
   int n = r->neig < MAX_EIGS ? r->neig : MAX_EIGS;
   int shown = 0;
   for (int k = 0; k < n; k++) {
-    if (r->eig_im[k] > 0 && k > 0 && r->eig_im[k - 1] == -r->eig_im[k] && r->eig_re[k - 1] == r->eig_re[k])
-      continue; /* its conjugate was listed, as ± */
+    if (conjugate_listed(r, k)) continue; /* listed as ± with its conjugate */
     rp_table_cell(&t, "%d", ++shown);
-    eig_cells(&t, r->eig_re[k], r->eig_im[k]);
+    eig_cells(&t, r, k);
   }
   rp_table_emit(&c->body, &t);
   more_rows(c, n, r->neig, 0, "eigenvalues");

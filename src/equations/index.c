@@ -187,11 +187,16 @@ static void eigen(bg_index_result *r, const double *A0, const double *B0, int n,
   r->neig = 0;
   for (int k = 0; info == 0 && k < n; k++) {
     double mag = fmax(hypot(ar[k], ai[k]), fabs(be[k]));
-    if (fabs(be[k]) <= 1e3 * n * DBL_EPSILON * mag) continue; /* infinite */
+    /* dggev gives a complex pair as (k, k+1) with alphai(k) > 0; each has its
+     * own beta, so the two quotients can differ in the last bits and sort
+     * apart. One quotient for both keeps the pair exactly conjugate. */
+    int pair = ai[k] > 0 && k + 1 < n;
+    if (fabs(be[k]) <= 1e3 * n * DBL_EPSILON * mag) { k += pair; continue; } /* infinite */
     double re = ts * ar[k] / be[k], im = ts * ai[k] / be[k];
     if (fabs(im) <= 1e-13 * fabs(re)) im = 0;
     re += 0.0, im += 0.0; /* no -0 in reports */
     pairs[2 * r->neig] = re, pairs[2 * r->neig + 1] = im, r->neig++;
+    if (pair) pairs[2 * r->neig] = re, pairs[2 * r->neig + 1] = -im + 0.0, r->neig++, k++;
   }
   qsort(pairs, (size_t)r->neig, 2 * sizeof *pairs, cmp_eig);
   r->eig_re = bg_xmalloc((size_t)(r->neig + 1) * sizeof(double));
@@ -311,11 +316,31 @@ void bg_index_free(bg_index_result *r) {
   memset(r, 0, sizeof *r);
 }
 
+bg_eig_kind bg_index_eig_kind(const bg_index_result *r, int k) {
+  double big = 0;
+  for (int j = 0; j < r->neig; j++) big = fmax(big, hypot(r->eig_re[j], r->eig_im[j]));
+  double tol = BG_EIG_ZERO_REL * big, re = r->eig_re[k];
+  if (hypot(re, r->eig_im[k]) <= tol) return BG_EIG_ZERO;
+  if (fabs(re) <= tol) return BG_EIG_UNDAMPED;
+  return re > 0 ? BG_EIG_UNSTABLE : BG_EIG_DECAYING;
+}
+
+const char *bg_index_eig_word(bg_eig_kind kind) {
+  switch (kind) {
+  case BG_EIG_ZERO: return "zero (a conserved quantity)";
+  case BG_EIG_UNDAMPED: return "undamped";
+  case BG_EIG_UNSTABLE: return "unstable";
+  default: return "decaying";
+  }
+}
+
 void bg_index_report(const bg_index_result *r, bg_strbuf *out) {
   bg_sb_printf(out, "%s\n", r->message ? r->message : "");
   for (int k = 0; k < r->nhist; k++) bg_sb_printf(out, "  %s\n", r->hist[k]);
   for (int k = 0; k < r->neig; k++) {
-    if (r->eig_im[k] == 0) bg_sb_printf(out, "  eigenvalue %.6g\n", r->eig_re[k]);
-    else bg_sb_printf(out, "  eigenvalue %.6g %c %.6gi\n", r->eig_re[k], r->eig_im[k] < 0 ? '-' : '+', fabs(r->eig_im[k]));
+    bg_eig_kind kind = bg_index_eig_kind(r, k);
+    if (r->eig_im[k] == 0) bg_sb_printf(out, "  eigenvalue %.6g", r->eig_re[k]);
+    else bg_sb_printf(out, "  eigenvalue %.6g %c %.6gi", r->eig_re[k], r->eig_im[k] < 0 ? '-' : '+', fabs(r->eig_im[k]));
+    bg_sb_printf(out, kind == BG_EIG_DECAYING ? "\n" : " (%s)\n", bg_index_eig_word(kind));
   }
 }

@@ -28,6 +28,14 @@ int bg_index_compute(bg_eqsys *s, const bg_model *m, bg_index_result *out);
 /* The same on a given pencil A x' + B x (column-major n x n; copied). */
 int bg_index_pencil(const double *A, const double *B, int n, bg_index_result *out);
 void bg_index_free(bg_index_result *r);
+/* What eigenvalue k means for stability. "Zero" and "undamped" are decided
+ * relative to the largest magnitude (BG_EIG_ZERO_REL of it): a conserved
+ * quantity's eigenvalue comes out as ~1e-16 of the largest, of either sign,
+ * and is neither a time constant nor unstable. */
+#define BG_EIG_ZERO_REL 1e-10
+typedef enum { BG_EIG_DECAYING, BG_EIG_ZERO, BG_EIG_UNDAMPED, BG_EIG_UNSTABLE } bg_eig_kind;
+bg_eig_kind bg_index_eig_kind(const bg_index_result *r, int k);
+const char *bg_index_eig_word(bg_eig_kind kind); /* "zero (a conserved quantity)", ... */
 /* The rank history and the eigenvalues as report text. */
 void bg_index_report(const bg_index_result *r, bg_strbuf *out);
 #endif
