@@ -3,6 +3,7 @@
  * variables), with the reduced form (eqsym.h) after them; C from the
  * evaluation tape. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "equations/eqprint.h"
@@ -123,17 +124,78 @@ static void json_tree(prn *P, int nd, bg_strbuf *out) {
   bg_sb_free(&t);
 }
 
-void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
-  prn P = {s, bg_sym_new(s->m), ST_TEXT};
-  bg_sb_puts(out, "{\"model\": ");
-  bg_sb_json_str(out, s->m->name);
-  bg_sb_printf(out, ", \"form\": \"%s\", \"unknowns\": [", bg_eqsys_is_ode(s) ? "ode" : "dae");
+/* What the equations read besides the unknowns: params with their values
+ * (after --set), named inputs as written, tables as breakpoints. */
+static void json_givens(const bg_eqsys *s, bg_sym *S, bg_strbuf *out) {
+  const bg_model *m = s->m;
+  bg_sb_puts(out, "\"parameters\": [");
+  for (int k = 0; k < m->nparam; k++) {
+    bg_sb_printf(out, "%s{\"name\": ", k ? ", " : "");
+    bg_sb_json_str(out, m->param_name[k]);
+    bg_sb_puts(out, ", \"value\": ");
+    bg_sb_json_num(out, m->param_value[k]);
+    bg_sb_puts(out, "}");
+  }
+  bg_sb_puts(out, "], \"inputs\": [");
+  bg_strbuf t = {0};
+  for (int k = 0; k < m->ninput; k++) {
+    bg_sb_printf(out, "%s{\"name\": ", k ? ", " : "");
+    bg_sb_json_str(out, m->input_name[k]);
+    bg_sb_clear(&t);
+    /* through the symbols, so a table prints as the equations print it (#1) */
+    bg_sym_print(S, bg_sym_from_x(S, m->input_expr[k], NULL, s->store_y), 0, bg_eqsym_name, (void *)s, &t);
+    bg_sb_puts(out, ", \"expr\": ");
+    bg_sb_json_str(out, bg_sb_str(&t));
+    bg_sb_puts(out, "}");
+  }
+  bg_sb_free(&t);
+  bg_sb_puts(out, "], \"tables\": [");
+  for (int k = 0; k < m->ntable; k++) {
+    const double *x = m->table_x + m->table_adr[k], *y = m->table_y + m->table_adr[k];
+    bg_sb_printf(out, "%s{\"name\": \"#%d\", \"x\": [", k ? ", " : "", k + 1);
+    for (int i = 0; i < m->table_n[k]; i++) bg_sb_puts(out, i ? ", " : ""), bg_sb_json_num(out, x[i]);
+    bg_sb_puts(out, "], \"y\": [");
+    for (int i = 0; i < m->table_n[k]; i++) bg_sb_puts(out, i ? ", " : ""), bg_sb_json_num(out, y[i]);
+    bg_sb_puts(out, "]}");
+  }
+  bg_sb_puts(out, "], ");
+}
+
+/* Unknowns with their kind and the value the model starts them from (q0,
+ * p0, init; an algebraic unknown's is bg_eqsys_initial's guess). */
+static void json_unknowns(const bg_eqsys *s, bg_strbuf *out) {
+  double *y0 = bg_xmalloc((size_t)(s->n + 1) * sizeof(double));
+  bg_eqsys_initial(s, y0);
+  bg_sb_puts(out, "\"unknowns\": [");
   for (int i = 0; i < s->n; i++) {
     bg_sb_printf(out, "%s{\"name\": ", i ? ", " : "");
     bg_sb_json_str(out, s->uname[i]);
-    bg_sb_printf(out, ", \"kind\": \"%s\"}", i >= s->nx ? "algebraic" : s->row_kind[i] ? "dependent" : "state");
+    bg_sb_printf(out, ", \"kind\": \"%s\", \"initial\": ",
+                 i >= s->nx ? "algebraic" : s->row_kind[i] ? "dependent" : "state");
+    bg_sb_json_num(out, y0[i]);
+    if (s->u_sig[i] >= 0) { /* the equations read it by its bond variable */
+      bg_sb_puts(out, ", \"signal\": \"");
+      pr_sig(s, s->u_sig[i], ST_TEXT, out);
+      bg_sb_puts(out, "\"");
+    }
+    bg_sb_puts(out, "}");
   }
-  bg_sb_puts(out, "], \"equations\": [");
+  bg_sb_puts(out, "], ");
+  free(y0);
+}
+
+/* Self-contained: every name an equation uses is defined in the document
+ * (docs/json.md, "The equations document"). */
+void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
+  prn P = {s, bg_sym_new(s->m), ST_TEXT};
+  bg_sb_puts(out, "{\"format\": \"bgdraw-equations\", \"version\": 1, \"model\": ");
+  bg_sb_json_str(out, s->m->name);
+  bg_sb_printf(out, ", \"form\": \"%s\", \"t0\": ", bg_eqsys_is_ode(s) ? "ode" : "dae");
+  bg_sb_json_num(out, s->m->sim.present ? s->m->sim.t0 : 0.0);
+  bg_sb_puts(out, ", ");
+  json_givens(s, P.S, out);
+  json_unknowns(s, out);
+  bg_sb_puts(out, "\"equations\": [");
   for (int k = 0; k < s->norder; k++) {
     int v = s->order[k];
     bg_sb_printf(out, "%s{\"lhs\": \"%c%d\", \"rhs\": ", k ? ", " : "", v & 1 ? 'f' : 'e', s->m->bond_num[v / 2]);
@@ -151,11 +213,17 @@ void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
     bg_sb_puts(out, "}");
   }
   bg_sb_puts(out, "], ");
-  bg_sym_free(P.S);
   bg_eqred *r = bg_eqred_build(s);
   bg_eqred_json(r, out);
+  bg_strbuf seen = {0};
+  int first = 1;
+  bg_sb_puts(out, ", \"definitions\": [");
+  bg_eqsym_json_defs(P.S, s, &seen, &first, out);
+  bg_eqsym_json_defs(bg_eqred_sym(r), s, &seen, &first, out);
+  bg_sb_puts(out, "]}\n");
+  bg_sb_free(&seen);
   bg_eqred_free(r);
-  bg_sb_puts(out, "}\n");
+  bg_sym_free(P.S);
 }
 
 /* ------------------------------------------------------------ C */

@@ -582,22 +582,35 @@ void bg_eqred_print(bg_eqred *r, int latex, bg_strbuf *out) {
   for (int k = 0; k < r->nst; k++) put_row(r, r->st_u[k], 1, r->st_print[k], latex, out);
 }
 
+/* One row of the reduced form: lhs, rhs and what the row is. */
+static void json_row(bg_eqred *r, int u, int deriv, int e, const char *kind, int *first,
+                     bg_strbuf *out) {
+  bg_strbuf t = {0};
+  put_lhs(r, u, deriv, 0, &t);
+  bg_sb_puts(out, *first ? "{\"lhs\": " : ", {\"lhs\": ");
+  *first = 0;
+  bg_sb_json_str(out, bg_sb_str(&t));
+  bg_sb_clear(&t);
+  bg_sym_print(r->S, e, 0, bg_eqsym_name, (void *)r->s, &t);
+  bg_sb_puts(out, ", \"rhs\": ");
+  bg_sb_json_str(out, bg_sb_str(&t));
+  bg_sb_printf(out, ", \"kind\": \"%s\"}", kind);
+  bg_sb_free(&t);
+}
+
+/* The rows the text prints, in its order: the eliminated unknowns, the
+ * dependent stores that are no longer states (C1.q = 1), the state rows. */
 void bg_eqred_json(bg_eqred *r, bg_strbuf *out) {
   bg_sb_printf(out, "\"reduced_form\": \"%s\", \"reduced_note\": ", r->ode ? "ode" : "dae");
   bg_sb_json_str(out, r->note);
   bg_sb_puts(out, ", \"reduced\": [");
-  bg_strbuf t = {0};
-  for (int k = 0; r->ode && k < r->nst; k++) {
-    bg_sb_clear(&t);
-    put_lhs(r, r->st_u[k], 1, 0, &t);
-    bg_sb_printf(out, "%s{\"lhs\": ", k ? ", " : "");
-    bg_sb_json_str(out, bg_sb_str(&t));
-    bg_sb_clear(&t);
-    bg_sym_print(r->S, r->st_print[k], 0, bg_eqsym_name, (void *)r->s, &t);
-    bg_sb_puts(out, ", \"rhs\": ");
-    bg_sb_json_str(out, bg_sb_str(&t));
-    bg_sb_puts(out, "}");
-  }
-  bg_sb_free(&t);
+  int first = 1;
+  for (int k = 0; r->ode && r->changed && k < r->nsol; k++)
+    json_row(r, r->sol_u[k], 0, r->sol_expr[k], "solved", &first, out);
+  for (int k = 0; r->ode && r->changed && k < r->ndef; k++)
+    json_row(r, r->def_u[k], 0, r->def_expr[k], "dependent", &first, out);
+  for (int k = 0; r->ode && k < r->nst; k++) json_row(r, r->st_u[k], 1, r->st_print[k], "state", &first, out);
   bg_sb_puts(out, "]");
 }
+
+bg_sym *bg_eqred_sym(bg_eqred *r) { return r->S; }

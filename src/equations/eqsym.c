@@ -119,3 +119,40 @@ void bg_eqsym_aliases(bg_sym *S, const bg_eqsys *s, int latex, bg_strbuf *out) {
     bg_sb_puts(out, latex ? " \\\\\n" : "\n");
   }
 }
+
+/* One definition, unless its name was emitted already. */
+static void json_def(bg_sym *S, const bg_eqsys *s, const char *name, const char *kind, int e,
+                     bg_strbuf *seen, int *first, bg_strbuf *out) {
+  const char *p = bg_sb_str(seen);
+  size_t len = strlen(name);
+  for (const char *q = p; (q = strstr(q, name)) != NULL; q += len)
+    if ((q == p || q[-1] == '\n') && q[len] == '\n') return;
+  bg_sb_printf(seen, "%s\n", name);
+  bg_sb_puts(out, *first ? "{\"name\": " : ", {\"name\": ");
+  *first = 0;
+  bg_sb_json_str(out, name);
+  bg_sb_printf(out, ", \"kind\": \"%s\", \"expr\": ", kind);
+  bg_strbuf t = {0};
+  bg_sym_print(S, e, 0, bg_eqsym_name, (void *)s, &t);
+  bg_sb_json_str(out, bg_sb_str(&t));
+  bg_sb_free(&t);
+  bg_sb_puts(out, "}");
+}
+
+void bg_eqsym_json_defs(bg_sym *S, const bg_eqsys *s, bg_strbuf *seen, int *first, bg_strbuf *out) {
+  bg_strbuf nm = {0};
+  for (int k = 0; k < S->nalias; k++)
+    if (S->alias_expr[k] >= 0) json_def(S, s, s->m->elem_name[k], "alias", S->alias_expr[k], seen, first, out);
+  for (int k = 0; k < S->ndalias; k++) {
+    bg_sb_clear(&nm);
+    bg_sym_print(S, bg_sym_leaf(S, SYM_DALIAS, k), 0, bg_eqsym_name, (void *)s, &nm);
+    const char *txt = bg_sb_str(&nm); /* "(dT/dphi)": the name without its parentheses */
+    size_t len = strlen(txt);
+    char *bare = bg_xmalloc(len + 1);
+    memcpy(bare, txt[0] == '(' ? txt + 1 : txt, len);
+    bare[len - (txt[0] == '(' ? 2 : 0)] = 0;
+    json_def(S, s, bare, "derivative", S->dalias_expr[k], seen, first, out);
+    free(bare);
+  }
+  bg_sb_free(&nm);
+}

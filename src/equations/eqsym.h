@@ -19,6 +19,11 @@ void bg_eqsym_name(void *ctx, int kind, int ref, int latex, bg_strbuf *out);
 void bg_eqsym_aliases(bg_sym *S, const bg_eqsys *s, int latex, bg_strbuf *out);
 /* "C1.q" -> "q_{\mathrm{C1}}", "e4" -> "e_{4}", other names upright. */
 void bg_eqsym_latex_name(const char *nm, bg_strbuf *out);
+/* JSON objects {"name", "kind": "alias"|"derivative", "expr"} for the aliases
+ * (T) and their derivative leaves (dT/dphi, printed "(dT/dphi)") of S that
+ * are not yet in `seen` (names, one a line; the new ones are added), each
+ * preceded by ", " unless it is the first of the list (*first). */
+void bg_eqsym_json_defs(bg_sym *S, const bg_eqsys *s, bg_strbuf *seen, int *first, bg_strbuf *out);
 
 /* ---------------------------------------------------------------- reduced form
  * Owns its symbols; s is borrowed and must outlive it. Never NULL. */
@@ -61,4 +66,6 @@ int bg_eqsym_rows(bg_sym *S, const bg_eqsys *s, int *rows);
 void bg_eqred_print(bg_eqred *r, int latex, bg_strbuf *out);
 /* As JSON members: "reduced_form": "ode", "reduced": [{"lhs":, "rhs":}]. */
 void bg_eqred_json(bg_eqred *r, bg_strbuf *out);
+/* The symbols of the reduced form (its aliases and their derivatives). */
+bg_sym *bg_eqred_sym(bg_eqred *r);
 #endif
