@@ -37,7 +37,7 @@ static void test_text(void) {
   OK(strstr(t, "0 = f3 - n*f4    (solved for f3)") != NULL);
   bg_sb_clear(&sb);
   OK(bg_eqprint(f.s, "json", &sb) == 0);
-  OK(strstr(bg_sb_str(&sb), "{\"name\": \"e4\", \"kind\": \"algebraic\"}") != NULL);
+  OK(strstr(bg_sb_str(&sb), "{\"name\": \"e4\", \"kind\": \"algebraic\", \"initial\": 0, \"signal\": \"e4\"}") != NULL);
   OK(bg_eqprint(f.s, "xml", &sb) == -1);
   bg_sb_free(&sb);
   efx_free(&f);

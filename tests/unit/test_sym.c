@@ -267,7 +267,7 @@ static void test_printed(void) {
     bg_sb_clear(&sb);
     bg_eqprint_json(f.s, &sb);
     OK(strstr(bg_sb_str(&sb), "\"reduced_form\": \"ode\"") != NULL);
-    OK(strstr(bg_sb_str(&sb), "{\"lhs\": \"Cs.q'\", \"rhs\": \"(n*F0*step(t) - Is.p/I0)/(n - 1)\"}") != NULL);
+    OK(strstr(bg_sb_str(&sb), "{\"lhs\": \"Cs.q'\", \"rhs\": \"(n*F0*step(t) - Is.p/I0)/(n - 1)\", \"kind\": \"state\"}") != NULL);
   }
   efx_free(&f);
   /* slider_crank: the modulus prints as T, the ODE as Equation 4.53 */
