@@ -288,7 +288,8 @@ static void fill_states(const bg_model *m, bg_analysis *a) {
   for (int e = 0; e < m->nelem; e++) {
     int k = m->elem_kind[e];
     if ((k != BG_ELEM_C && k != BG_ELEM_I) || m->elem_nbond[e] != 1) continue;
-    if (a->bond_stroke[m->elem_bonds[m->elem_bondadr[e]]] == BG_STROKE_NONE) continue;
+    int pb = m->elem_bonds[m->elem_bondadr[e]];
+    if (a->bond_stroke[pb] == BG_STROKE_NONE && !bg_analysis_bond_split(a, pb)) continue;
     if (bg_paths_store_integral(m, a, e)) {
       snprintf(buf, sizeof buf, "%s.%c", m->elem_name[e], k == BG_ELEM_C ? 'q' : 'p');
       sl_add(&st, &a->arena, buf);

@@ -28,8 +28,8 @@ int bg_paths_effort_in(const bg_model *m, const bg_analysis *a, int elem, int b)
 
 int bg_paths_store_integral(const bg_model *m, const bg_analysis *a, int elem) {
   int b = m->elem_bonds[m->elem_bondadr[elem]];
-  if (a->bond_stroke[b] == BG_STROKE_NONE) return 0;
-  int in = bg_paths_effort_in(m, a, elem, b);
+  if (a->bond_stroke[b] == BG_STROKE_NONE && !bg_analysis_bond_split(a, b)) return 0;
+  int in = bg_paths_effort_in(m, a, elem, b); /* 0 on a split bond: it gets the flow */
   return m->elem_kind[elem] == BG_ELEM_C ? !in : in;
 }
 

@@ -129,4 +129,11 @@ typedef struct bg_analysis {
 
   bg_arena arena; /* owns everything above */
 } bg_analysis;
+
+/* Bond b was split by a 1-junction that Lagrange causality inserted: it has
+ * no stroke of its own, and both its original ends receive the inserted
+ * junction's flow (the stroke is "away" from both; docs/causality.md). */
+static inline int bg_analysis_bond_split(const bg_analysis *a, int b) {
+  return a->bond_stroke[b] == BG_STROKE_NONE && a->bond_reason[b] == BG_REASON_LAGRANGE;
+}
 #endif

@@ -421,6 +421,17 @@ static void describe(red *R) {
   note(r, buf);
 }
 
+/* W and its equations, then the linear blocks solved; 0 or eliminate's code. */
+static int collect_and_eliminate(red *R) {
+  collect_w(R);
+  R->sol = bg_xcalloc((size_t)R->nw + 1, sizeof(int));
+  if (bg_sym_full(R->S)) {
+    note(R->r, "the equations are too large for symbolic elimination");
+    return -7;
+  }
+  return eliminate(R);
+}
+
 static void reduce(red *R) {
   bg_eqred *r = R->r;
   const bg_eqsys *s = R->s;
@@ -428,13 +439,22 @@ static void reduce(red *R) {
   R->lagv = bg_xcalloc((size_t)s->n + 1, sizeof(int));
   for (int i = s->nx; i < s->n; i++)
     for (int k = 0; k < s->a->nlag; k++)
-      if (s->a->lag_junction[k] == s->sig_elem[s->u_sig[i]]) R->lagv[i] = 1, r->lagrange = 1;
-  collect_w(R);
-  R->sol = bg_xcalloc((size_t)R->nw + 1, sizeof(int));
-  if (bg_sym_full(R->S) || eliminate(R)) {
-    if (bg_sym_full(R->S)) note(r, "the equations are too large for symbolic elimination");
-    return;
+      if (s->a->lag_junction[k] == s->sig_elem[s->u_sig[i]] || /* or an inserted one's flow */
+          (s->a->lag_junction[k] < 0 && s->u_sig[i] == 2 * s->a->lag_bond[k] + 1))
+        R->lagv[i] = 1, r->lagrange = 1;
+  int rc = collect_and_eliminate(R);
+  if (rc <= -3 && rc >= -4 && r->lagrange && !bg_sym_full(R->S)) {
+    /* No Lagrange equations of second order: a coordinate whose balance
+     * holds no acceleration but other unknowns (resistive or dependent
+     * storage ports only) is not a state. Eliminate the velocities like
+     * any other algebraic unknown. */
+    free(R->w_leaf), free(R->w_u), free(R->w_isyp), free(R->eq), free(R->diffed), free(R->sol);
+    R->nw = R->ne = 0;
+    memset(R->lagv, 0, (size_t)(s->n + 1) * sizeof(int));
+    r->lagrange = 0;
+    rc = collect_and_eliminate(R);
   }
+  if (rc) return;
   if (r->lagrange) mass_rows(R);
   for (int i = s->nx; i < s->n; i++) r->inv[i] = (unsigned char)R->diffed[i]; /* Lagrange balances */
   drop_dependent(R);
@@ -539,6 +559,15 @@ static void put_row(bg_eqred *r, int u, int deriv, int e, int latex, bg_strbuf *
   bg_sb_puts(out, latex ? " \\\\\n" : "\n");
 }
 
+/* The coefficient prints with a leading minus sign. */
+static int coef_negative(bg_sym *S, int M, int latex, const bg_eqsys *s) {
+  bg_strbuf sb = {0};
+  bg_sym_print(S, M, latex, bg_eqsym_name, (void *)s, &sb);
+  int neg = bg_sb_str(&sb)[0] == '-';
+  bg_sb_free(&sb);
+  return neg;
+}
+
 /* sum_j M_kj v_j' with each coefficient first: (J0 + m0*T^2)*w.f'. */
 static void print_mass_lhs(bg_eqred *r, int lhs, int latex, bg_strbuf *out) {
   bg_sym *S = r->S;
@@ -553,8 +582,12 @@ static void print_mass_lhs(bg_eqred *r, int lhs, int latex, bg_strbuf *out) {
       if (S->node[S->arg[m->adr + q]].kind == SYM_YP && S->w[m->adr + q] == 1) yp = S->arg[m->adr + q];
     if (m->kind == SYM_YP) yp = t;
     int M = yp >= 0 ? bg_sym_scale(S, w, bg_sym_div(S, t, yp)) : bg_sym_scale(S, w, t);
-    if (k) bg_sb_puts(out, " + ");
     int paren = S->node[M].kind == SYM_ADD;
+    if (k && !paren && coef_negative(S, M, latex, r->s)) { /* "a - b*v'", not "a + -b*v'" */
+      M = bg_sym_scale(S, -1, M);
+      bg_sb_puts(out, " - ");
+    } else if (k)
+      bg_sb_puts(out, " + ");
     if (!(S->node[M].kind == SYM_NUM && S->node[M].c == 1)) {
       if (paren) bg_sb_puts(out, latex ? "\\left(" : "(");
       bg_sym_print(S, M, latex, bg_eqsym_name, (void *)r->s, out);

@@ -64,8 +64,26 @@ typedef struct derive {
   int bad;
 } derive;
 
+/* A bond split by an inserted Lagrange 1-junction has two efforts, one at
+ * each original end, and one flow, the inserted junction's (a generalised
+ * velocity). Its tail's relation gives e_b; the head's relation says what
+ * the effort at the head must be, and the inserted junction's effort balance
+ * (no source or store on it: the efforts into the artificial flow source sum
+ * to zero, Section 4.10.3) makes the two equal. So the head's relation
+ * becomes the implicit equation of the flow: 0 = e_b - (head's effort), or
+ * the head's own residual when it is implicit already. */
+static int split_head(bg_eqsys *s, int *sig, int *form, int *root, int elem) {
+  int b = *sig / 2;
+  if ((*sig & 1) || !bg_analysis_bond_split(s->a, b) || s->m->bond_head[b] != elem) return 0;
+  if (*form == EQF_EXPLICIT) *root = n_lin2(s, 1, bg_eqs_node(s, EQ_SIG, *sig, 0, 0), -1, *root);
+  *form = EQF_IMPLICIT;
+  *sig += 1;
+  return 1;
+}
+
 static void set_eq(derive *d, int sig, int form, int root, int elem, const char *what) {
   bg_eqsys *s = d->s;
+  if (split_head(s, &sig, &form, &root, elem)) what = "inserted junction";
   if (s->sig_root[sig] >= 0) { /* two producers: causality inconsistent */
     d->bad = 1;
     return;
@@ -324,12 +342,6 @@ bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) 
     bg_diag_error(dg, none, "the causality is incomplete: no equations can be derived");
     return NULL;
   }
-  for (int k = 0; k < a->nlag; k++)
-    if (a->lag_junction[k] < 0) {
-      bg_diag_error(dg, none, "equations for Lagrange causality with a 1-junction inserted into "
-                              "a bond are not derived; use scap, relaxed or vandijk");
-      return NULL;
-    }
   bg_eqsys *s = alloc_sys(m, a);
   add_unknowns(s);
   bg_eqs_sym_lookups(s);

@@ -20,10 +20,12 @@
 typedef struct bg_eqsys bg_eqsys;
 
 /* Builds the equation system. Returns NULL (with a diagnostic) when the
- * causality is incomplete, Lagrange causality inserted a 1-junction into a
- * bond, or the system cannot be formed. Under Lagrange causality the flow
- * of each artificial source's 1-junction is an algebraic unknown ("ma.f")
- * whose residual is the junction's effort balance. */
+ * causality is incomplete or the system cannot be formed. Under Lagrange
+ * causality the flow of each artificial source's 1-junction is an algebraic
+ * unknown ("ma.f") whose residual is the junction's effort balance; a bond
+ * split by an inserted 1-junction keeps one flow (the unknown, named like the
+ * bond's flow: "Cp.f", "f3") and its head's relation becomes that unknown's
+ * residual (the two efforts of the bond agree). */
 bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg);
 void bg_eqsys_free(bg_eqsys *s);
 
@@ -37,6 +39,11 @@ int bg_eqsys_is_differential(const bg_eqsys *s, int i);
 /* Initial values from the model (q0, p0, state init; algebraic unknowns get
  * a guess consistent where it can be computed explicitly, else 0). */
 void bg_eqsys_initial(const bg_eqsys *s, double *y0);
+/* The same, with the derivatives that go with it: under Lagrange causality
+ * every store keeps its model value (dependent ones too: they fix the
+ * generalised velocities) and the algebraic unknowns and yp are solved
+ * together; otherwise yp0 is 0 (IDACalcIC computes it). */
+void bg_eqsys_initial_yp(const bg_eqsys *s, double *y0, double *yp0);
 
 /* Newton on the algebraic rows (dependent stores' constraints, algebraic
  * unknowns) with the states of y held and yp = 0, at most maxit steps; y is

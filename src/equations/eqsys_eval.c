@@ -117,17 +117,24 @@ int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit) {
 }
 
 void bg_eqsys_initial(const bg_eqsys *cs, double *y0) {
+  double *yp0 = bg_xcalloc((size_t)cs->n + 1, sizeof *yp0);
+  bg_eqsys_initial_yp(cs, y0, yp0);
+  free(yp0);
+}
+
+void bg_eqsys_initial_yp(const bg_eqsys *cs, double *y0, double *yp0) {
   const bg_model *m = cs->m;
   double t0 = m->sim.present ? m->sim.t0 : 0;
   for (int i = 0; i < cs->n; i++) {
-    y0[i] = 0;
+    y0[i] = 0, yp0[i] = 0;
     if (cs->u_elem[i] >= 0) y0[i] = init_value(m, m->elem_init[cs->u_elem[i]], t0);
     else if (cs->u_state[i] >= 0) y0[i] = init_value(m, m->state_init[cs->u_state[i]], t0);
   }
   /* The evaluation scratch is not observable state: solving for consistent
    * algebraic values leaves the system as it was. */
   bg_eqsys *s = (bg_eqsys *)cs;
-  bg_eqsys_consistent(s, t0, y0, 30);
+  if (s->a->nlag == 0 || bg_eqs_lagrange_start(s, t0, y0, yp0, 30))
+    bg_eqsys_consistent(s, t0, y0, 30);
   s->has_err = 0;
 }
 

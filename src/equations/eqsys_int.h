@@ -121,6 +121,9 @@ void bg_eqs_deps(bg_eqsys *s);
 void bg_eqs_sort(bg_eqsys *s);
 /* eqsym.c: fills state_y and x_modulus. */
 void bg_eqs_sym_lookups(bg_eqsys *s);
+/* eqsys_lagstart.c: Lagrange causality's initial point, every store held;
+ * y and yp updated only on success (0). */
+int bg_eqs_lagrange_start(bg_eqsys *s, double t, double *y, double *yp, int maxit);
 /* eqsys_tape.c */
 void bg_eqs_compile(bg_eqsys *s);
 void bg_eqs_pattern(bg_eqsys *s);

@@ -218,8 +218,7 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
   R->yp = N_VNew_Serial(R->n, R->ctx);
   R->atol = N_VNew_Serial(R->n, R->ctx);
   memcpy(N_VGetArrayPointer(R->atol), p->atol, (size_t)R->n * sizeof(double));
-  bg_eqsys_initial(s, N_VGetArrayPointer(R->y));
-  N_VConst(0.0, R->yp);
+  bg_eqsys_initial_yp(s, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp));
   R->tcur = p->t0;
   R->t_shown = p->t0;
   R->wall0 = R->wall_last = wall();
