@@ -313,19 +313,23 @@ static void loops_from(search *s, recs *r, const int *rank, int s0) {
   s->on[t] = 0;
 }
 
-/* Bond ids ordered by bond number, and each bond's rank in that order. */
+static const bg_model *sort_model; /* qsort has no context argument */
+
+static int by_bond_number(const void *a, const void *b) {
+  int na = sort_model->bond_num[*(const int *)a], nb = sort_model->bond_num[*(const int *)b];
+  return (na > nb) - (na < nb);
+}
+
+/* Bond ids ordered by bond number, and each bond's rank in that order.
+ * Sorted, not bucketed: bond numbers may be as large as 10^9, and no array
+ * is sized by one. */
 static int *bond_ranks(const bg_model *m, int **order_out) {
   int *ord = bg_xcalloc((size_t)m->nbond + 1, sizeof(int));
   int *rank = bg_xcalloc((size_t)m->nbond + 1, sizeof(int));
-  int maxnum = 0;
-  for (int b = 0; b < m->nbond; b++) maxnum = m->bond_num[b] > maxnum ? m->bond_num[b] : maxnum;
-  /* counting sort over bond numbers: linear, numbers are unique */
-  int *slot = bg_xcalloc((size_t)maxnum + 2, sizeof(int));
-  for (int b = 0; b < m->nbond; b++) slot[m->bond_num[b]] = b + 1;
-  int k = 0;
-  for (int n = 0; n <= maxnum; n++)
-    if (slot[n]) { ord[k] = slot[n] - 1; rank[ord[k]] = k; k++; }
-  free(slot);
+  for (int b = 0; b < m->nbond; b++) ord[b] = b;
+  sort_model = m;
+  qsort(ord, (size_t)m->nbond, sizeof *ord, by_bond_number);
+  for (int k = 0; k < m->nbond; k++) rank[ord[k]] = k;
   *order_out = ord;
   return rank;
 }

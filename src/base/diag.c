@@ -11,7 +11,10 @@ void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen
   d->file = file;
   d->src = src;
   d->srclen = srclen;
+  d->max_errors = BG_DIAG_MAX_ERRORS;
 }
+
+int bg_diags_full(const bg_diags *d) { return d->max_errors > 0 && d->nerrors >= d->max_errors; }
 
 void bg_diags_free(bg_diags *d) {
   for (int i = 0; i < d->n; i++) free(d->items[i].msg);
@@ -21,6 +24,14 @@ void bg_diags_free(bg_diags *d) {
 }
 
 static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va_list ap) {
+  /* beyond the limit an error is only counted, and so are its notes */
+  if (sev == BG_SEV_ERROR && bg_diags_full(d)) {
+    d->dropped++;
+    d->dropping = 1;
+    return;
+  }
+  if (sev == BG_SEV_NOTE && d->dropping) return;
+  d->dropping = 0;
   va_list ap2;
   va_copy(ap2, ap);
   int n = vsnprintf(NULL, 0, fmt, ap);
@@ -47,15 +58,26 @@ DEFINE_ADDER(bg_diag_error, BG_SEV_ERROR)
 DEFINE_ADDER(bg_diag_warning, BG_SEV_WARNING)
 DEFINE_ADDER(bg_diag_note, BG_SEV_NOTE)
 
+/* Finds source lines for diagnostics printed in line order: a cursor that
+ * moves forward, so printing k diagnostics reads the source once (it restarts
+ * only for a note about an earlier line). */
+typedef struct line_cursor {
+  const char *p; /* start of line `line` */
+  int line;
+} line_cursor;
+
 /* The text of source line `line` (1-based) without its line end. */
-static const char *find_line(const bg_diags *d, int line, size_t *len) {
+static const char *find_line(const bg_diags *d, line_cursor *c, int line, size_t *len) {
   if (!d->src || line < 1) return NULL;
-  const char *p = d->src, *end = d->src + d->srclen;
-  for (int l = 1; l < line; l++) {
-    p = memchr(p, '\n', (size_t)(end - p));
-    if (!p) return NULL;
-    p++;
+  const char *end = d->src + d->srclen;
+  if (!c->p || line < c->line) c->p = d->src, c->line = 1;
+  while (c->line < line) {
+    const char *nl = memchr(c->p, '\n', (size_t)(end - c->p));
+    if (!nl) return NULL;
+    c->p = nl + 1;
+    c->line++;
   }
+  const char *p = c->p;
   const char *e = memchr(p, '\n', (size_t)(end - p));
   if (!e) e = end;
   if (e > p && e[-1] == '\r') e--;
@@ -63,7 +85,7 @@ static const char *find_line(const bg_diags *d, int line, size_t *len) {
   return p;
 }
 
-static void print_one(const bg_diags *d, const bg_diag *g, FILE *out) {
+static void print_one(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE *out) {
   static const char *const sevname[] = {"error", "warning", "note"};
   if (g->loc.line > 0)
     fprintf(out, "%s:%d:%d: %s: %s\n", d->file, g->loc.line, g->loc.col,
@@ -71,7 +93,7 @@ static void print_one(const bg_diags *d, const bg_diag *g, FILE *out) {
   else
     fprintf(out, "%s: %s: %s\n", d->file, sevname[g->sev], g->msg);
   size_t len = 0;
-  const char *line = find_line(d, g->loc.line, &len);
+  const char *line = find_line(d, c, g->loc.line, &len);
   if (!line) return;
   /* A very long line (generated input) is shown as a window around the
    * caret, marked with "..." on the cut sides, so the caret stays visible. */
@@ -102,10 +124,15 @@ void bg_diags_print(const bg_diags *d, FILE *out) {
   for (int i = 0; i < d->n; i++)
     if (d->items[i].sev != BG_SEV_NOTE || i == 0) order[k++] = &d->items[i];
   qsort(order, (size_t)k, sizeof *order, cmp_pos);
+  line_cursor c = {NULL, 0};
   for (int i = 0; i < k; i++) {
-    print_one(d, order[i], out);
+    print_one(d, &c, order[i], out);
     for (const bg_diag *g = order[i] + 1; g < d->items + d->n && g->sev == BG_SEV_NOTE; g++)
-      print_one(d, g, out);
+      print_one(d, &c, g, out);
   }
   free(order);
+  if (d->dropped)
+    fprintf(out, "%s: note: %d more error%s not shown: stopped at %d errors "
+                 "(--max-errors N changes the limit, 0 shows all)\n",
+            d->file, d->dropped, d->dropped == 1 ? "" : "s", d->max_errors);
 }

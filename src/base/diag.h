@@ -24,7 +24,14 @@ typedef struct bg_diags {
   bg_diag *items; /* owned */
   int n, cap;
   int nerrors, nwarnings;
+  int max_errors;  /* errors kept and printed at most (0: no limit); bg_diags_init sets
+                      BG_DIAG_MAX_ERRORS */
+  int dropped;     /* errors beyond max_errors: counted, not kept */
+  int dropping;    /* the last error was dropped, and so are its notes */
 } bg_diags;
+
+/* The default error limit (--max-errors changes it; docs/cli.md). */
+enum { BG_DIAG_MAX_ERRORS = 100 };
 
 void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen);
 void bg_diags_free(bg_diags *d);
@@ -34,7 +41,10 @@ void bg_diag_warning(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void bg_diag_note(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* 1 when the error limit is reached: the stages may stop looking for more. */
+int bg_diags_full(const bg_diags *d);
 /* Prints every diagnostic in source order (stable for equal positions):
- * "FILE:LINE:COL: error: MSG", then the source line and a caret under COL. */
+ * "FILE:LINE:COL: error: MSG", then the source line and a caret under COL;
+ * after the limit, a note that more errors were not shown. */
 void bg_diags_print(const bg_diags *d, FILE *out);
 #endif

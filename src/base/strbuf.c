@@ -119,3 +119,42 @@ int bg_edit_distance(const char *a, const char *b) {
   }
   return row[lb];
 }
+
+/* The length of the valid UTF-8 sequence starting at p (lead byte c >=
+ * 0x80), or 0 (RFC 3629: the second byte's range excludes overlong forms,
+ * surrogates and values above U+10FFFF). */
+static size_t utf8_sequence(const unsigned char *p, size_t left) {
+  unsigned c = p[0];
+  size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+  if (n == 0 || left < n) return 0;
+  unsigned lo = 0x80, hi = 0xBF;
+  if (c == 0xE0) lo = 0xA0;
+  else if (c == 0xED) hi = 0x9F;
+  else if (c == 0xF0) lo = 0x90;
+  else if (c == 0xF4) hi = 0x8F;
+  if (p[1] < lo || p[1] > hi) return 0;
+  for (size_t i = 2; i < n; i++)
+    if ((p[i] & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+size_t bg_text_bad_byte(const char *s, size_t len, const char **why) {
+  const unsigned char *p = (const unsigned char *)s;
+  for (size_t i = 0; i < len;) {
+    if (p[i] == 0) {
+      if (why) *why = "a NUL byte";
+      return i;
+    }
+    if (p[i] < 0x80) {
+      i++;
+      continue;
+    }
+    size_t n = utf8_sequence(p + i, len - i);
+    if (n == 0) {
+      if (why) *why = "a byte that is not valid UTF-8";
+      return i;
+    }
+    i += n;
+  }
+  return len;
+}

@@ -33,4 +33,9 @@ void bg_sb_clear(bg_strbuf *b);
 void bg_sb_free(bg_strbuf *b);
 /* Edit distance of two short strings (99 when one is over 63 characters). */
 int bg_edit_distance(const char *a, const char *b);
+/* The offset of the first byte of s[0..len) that makes it no text: a NUL,
+ * or a byte of no valid UTF-8 sequence (overlong forms, surrogates and code
+ * points above U+10FFFF are invalid); len when the text is valid. *why
+ * (nullable) says which. */
+size_t bg_text_bad_byte(const char *s, size_t len, const char **why);
 #endif

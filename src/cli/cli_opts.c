@@ -23,7 +23,7 @@ static const valued_opt valued[] = {
     OPT("--causality", causality), OPT("--show", show),     OPT("--highlight", highlight),
     OPT("--style", style),         OPT("--layout", layout), OPT("--report", report),
     OPT("--plot", plot),           OPT("--equations", equations), OPT("-T", force_format),
-    OPT("--max-list", max_list),
+    OPT("--max-list", max_list),   OPT("--max-errors", max_errors),
 };
 static const char *const flags[] = {"--simulate", "--check", "-q", "-v", "--help", "-h", "--version", "-o", "--set", NULL};
 
@@ -194,6 +194,7 @@ void bg_cli_print_help(FILE *out) {
       "  --equations FORM    print equations: text | latex | c | json\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
+      "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"
       "  -q, -v              quieter, more verbose (progress on stderr)\n"
       "  --version, --help\n"
       "\n"

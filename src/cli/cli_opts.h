@@ -26,6 +26,7 @@ typedef struct bg_cli_opts {
   const char *plot;         /* --plot FILE */
   const char *equations;    /* --equations FORM */
   const char *max_list;     /* --max-list N: listing cap of paths and loops */
+  const char *max_errors;   /* --max-errors N: diagnostics' error limit (0: none) */
   int simulate, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;

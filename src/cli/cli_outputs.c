@@ -42,6 +42,17 @@ int cli_render_options(run *r) {
     }
     r->max_list = (int)n;
   }
+  r->max_errors = BG_DIAG_MAX_ERRORS;
+  if (o->max_errors) {
+    char *end;
+    long n = strtol(o->max_errors, &end, 10);
+    if (end == o->max_errors || *end || n < 0 || n > 1000000000) {
+      fprintf(stderr, "bgdraw: error: --max-errors takes a whole number (0: no limit), not '%s'\n",
+              o->max_errors);
+      return -1;
+    }
+    r->max_errors = (int)n;
+  }
   ro->style = o->style;
   ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
   ro->layout = o->layout;

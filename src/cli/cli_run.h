@@ -42,6 +42,7 @@ typedef struct run {
   int simulated;
   bg_render_opts ropts;
   int max_list; /* --max-list; 0: the default caps */
+  int max_errors; /* --max-errors; BG_DIAG_MAX_ERRORS by default, 0: no limit */
   bg_diagram *diagram; /* laid out once, on the first diagram output */
 } run;
 

@@ -37,6 +37,7 @@ static int load_model(run *r) {
   const bg_cli_opts *o = &r->opts;
   r->src = bg_read_file(o->model_path, &r->srclen);
   bg_diags_init(&r->dg, o->model_path, r->src, r->srclen);
+  r->dg.max_errors = r->max_errors;
   if (!r->src) {
     bg_srcloc none = {0, 0};
     bg_diag_error(&r->dg, none, "cannot read the model: %s", bg_file_strerror(errno));

@@ -3,6 +3,9 @@
 #ifndef BG_AST_H
 #define BG_AST_H
 #include "base/arena.h"
+
+/* The largest bond number a model may write (docs/format.md). */
+#define BG_BOND_NUMBER_MAX 1000000000
 #include "base/diag.h"
 
 /* ---------------------------------------------------------------- expressions */
@@ -71,7 +74,7 @@ typedef struct bg_ast_stmt {
   bg_srcloc law_loc;
   int has_law;
   /* BOND */
-  int number;         /* 0 = unnumbered */
+  int number;         /* 0 = unnumbered; else 1..BG_BOND_NUMBER_MAX */
   bg_srcloc number_loc;
   const char *from, *to;
   bg_srcloc from_loc, to_loc;

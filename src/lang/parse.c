@@ -3,6 +3,7 @@
  * one run reports every error. Expressions are parsed by recursive descent
  * with a nesting limit (no unbounded recursion on user input). */
 #include <errno.h>
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -467,8 +468,10 @@ static void parse_bond(parser *p, const bg_token *kw) {
   bg_srcloc numloc = kw->loc;
   if (at(p, BG_TK_NUMBER)) {
     const bg_token *n = next(p);
-    if (n->num < 1 || n->num != (double)(int)n->num || n->num > 1e9)
-      fail_at(p, n, "a bond number must be a positive integer, not '%s'", n->text);
+    /* the range first: converting a double beyond int's range is undefined */
+    if (!(n->num >= 1 && n->num <= BG_BOND_NUMBER_MAX) || n->num != floor(n->num))
+      fail_at(p, n, "a bond number must be a whole number from 1 to %d, not '%s'",
+              BG_BOND_NUMBER_MAX, n->text);
     number = (int)n->num;
     numloc = n->loc;
   }
@@ -589,6 +592,23 @@ static void parse_line(parser *p) {
   accept(p, BG_TK_EOL);
 }
 
+/* A model is UTF-8 text without NUL bytes: anything else (a binary file, a
+ * Latin-1 file) is refused at its first bad byte, instead of a flood of
+ * errors, and no invalid text ever reaches pango and cairo. */
+static int is_text(const char *src, size_t len, bg_diags *dg) {
+  const char *why;
+  size_t bad = bg_text_bad_byte(src, len, &why);
+  if (bad == len) return 1;
+  bg_srcloc at = {1, 1};
+  for (size_t i = 0; i < bad; i++) {
+    if (src[i] == '\n') at.line++, at.col = 1;
+    else at.col++;
+  }
+  bg_diag_error(dg, at, "not a text file: %s (0x%02X) at byte %zu; a model is UTF-8 text",
+                why, (unsigned char)src[bad], bad);
+  return 0;
+}
+
 bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags *dg) {
   bg_ast *ast = bg_xcalloc(1, sizeof *ast);
   ast->path = bg_arena_strdup(&ast->arena, path ? path : "");
@@ -596,8 +616,9 @@ bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags 
   p->src = src;
   p->ast = ast;
   p->dg = dg;
+  if (!is_text(src, len, dg)) len = 0; /* parse nothing: one error, at the byte */
   bg_lex_all(src, len, &ast->arena, dg, &p->toks);
-  while (!at(p, BG_TK_EOF)) parse_line(p);
+  while (!at(p, BG_TK_EOF) && !bg_diags_full(dg)) parse_line(p);
   ast->stmts = bg_arena_alloc(&ast->arena, (size_t)(p->nstmts ? p->nstmts : 1) * sizeof *ast->stmts);
   if (p->nstmts) memcpy(ast->stmts, p->stmts, (size_t)p->nstmts * sizeof *ast->stmts);
   ast->nstmts = p->nstmts;

@@ -235,33 +235,51 @@ static void add_bond(bg_build *b, const bg_ast_stmt *s) {
   m->bond_loc[k] = s->loc;
 }
 
-/* Explicit numbers must be unique; unnumbered bonds take the smallest free
- * numbers in file order. */
+typedef struct numbered_bond {
+  int num, bond;
+} numbered_bond;
+
+static int by_number_then_bond(const void *a, const void *b) {
+  const numbered_bond *x = a, *y = b;
+  if (x->num != y->num) return (x->num > y->num) - (x->num < y->num);
+  return (x->bond > y->bond) - (x->bond < y->bond);
+}
+
+/* Explicit numbers must be unique: sorted, so a model of many bonds with
+ * large numbers stays n log n and no array is sized by a number. */
+static void check_unique_numbers(bg_build *b, const bg_ast_stmt **stmt) {
+  bg_model *m = b->m;
+  numbered_bond *nb = bg_xmalloc((size_t)(m->nbond + 1) * sizeof *nb);
+  int n = 0;
+  for (int k = 0; k < m->nbond; k++)
+    if (m->bond_num[k]) nb[n++] = (numbered_bond){m->bond_num[k], k};
+  qsort(nb, (size_t)n, sizeof *nb, by_number_then_bond);
+  for (int i = 1; i < n; i++) {
+    if (nb[i].num != nb[i - 1].num) continue;
+    int first = i - 1;
+    while (first > 0 && nb[first - 1].num == nb[i].num) first--;
+    bg_diag_error(b->dg, stmt[nb[i].bond]->number_loc, "bond %d already defined at line %d",
+                  nb[i].num, m->bond_loc[nb[first].bond].line);
+  }
+  free(nb);
+}
+
+/* Unnumbered bonds take the smallest free numbers in file order. */
 static void number_bonds(bg_build *b, const bg_ast_stmt **stmt) {
   bg_model *m = b->m;
   int n = m->nbond;
-  int *owner = bg_xmalloc((size_t)(n + 2) * sizeof *owner); /* number <= n+1 -> bond */
-  for (int i = 0; i < n + 2; i++) owner[i] = -1;
-  for (int k = 0; k < n; k++) {
-    int num = m->bond_num[k];
-    if (num == 0) continue;
-    int other = -1;
-    for (int j = 0; j < k && num > n + 1 && other < 0; j++)
-      if (m->bond_num[j] == num) other = j;
-    if (num <= n + 1) other = owner[num];
-    if (other >= 0)
-      bg_diag_error(b->dg, stmt[k]->number_loc, "bond %d already defined at line %d", num,
-                    m->bond_loc[other].line);
-    else if (num <= n + 1) owner[num] = k;
-  }
+  check_unique_numbers(b, stmt);
+  char *taken = bg_xcalloc((size_t)n + 2, 1); /* numbers <= n+1 are all a bond can need */
+  for (int k = 0; k < n; k++)
+    if (m->bond_num[k] >= 1 && m->bond_num[k] <= n + 1) taken[m->bond_num[k]] = 1;
   int next = 1;
   for (int k = 0; k < n; k++) {
     if (m->bond_num[k] != 0) continue;
-    while (owner[next] >= 0) next++;
-    owner[next] = k;
+    while (taken[next]) next++;
+    taken[next] = 1;
     m->bond_num[k] = next;
   }
-  free(owner);
+  free(taken);
 }
 
 /* elem_bonds: per element its bonds in file order. */

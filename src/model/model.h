@@ -77,6 +77,9 @@ typedef struct bg_xnode {
 /* ---------------------------------------------------------------- the model
  * Arrays are named <object>_<field> next to their count n<object> (MuJoCo).
  * BG_MODEL_ARRAYS lists each once: X(type, name, count). */
+/* The largest coordinate an `at` position may have, in points. */
+#define BG_POSITION_MAX 1e6
+
 #define BG_MODEL_ARRAYS(X)                                                     \
   /* elements and junctions (one namespace with params, inputs, states) */     \
   X(int, elem_kind, nelem)          /* bg_elem_kind */                         \
@@ -91,7 +94,7 @@ typedef struct bg_xnode {
   X(const char *, elem_label, nelem) /* nullable */                            \
   X(const char *, elem_color, nelem) /* "#rrggbb" or NULL */                   \
   X(int, elem_has_at, nelem)                                                   \
-  X(double, elem_at_x, nelem)                                                  \
+  X(double, elem_at_x, nelem)       /* points, |x| <= BG_POSITION_MAX */        \
   X(double, elem_at_y, nelem)                                                  \
   X(int, elem_bondadr, nelem)       /* first index into elem_bonds */          \
   X(int, elem_nbond, nelem)                                                    \

@@ -3,6 +3,7 @@
  * loads table() data, and checks laws for linearity. Recursion follows the
  * AST, whose depth the parser limits. */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -89,10 +90,13 @@ static int own_var(bg_build *b, char v, const bg_expr *e) {
 
 /* ---------------------------------------------------------------- names */
 static int bond_var(bg_build *b, const bg_expr *e) {
-  int num = atoi(e->str + 1);
-  int bond = bg_model_find_bond(b->m, num);
+  /* digits only (is_bond_var); beyond int range it names no bond, and must
+   * not wrap around to a small one (e4294967298 is not e2) */
+  errno = 0;
+  long num = strtol(e->str + 1, NULL, 10);
+  int bond = errno || num > INT_MAX ? -1 : bg_model_find_bond(b->m, (int)num);
   if (bond < 0) {
-    bg_diag_error(b->dg, e->loc, "'%s': the model has no bond %d", e->str, num);
+    bg_diag_error(b->dg, e->loc, "'%s': the model has no bond %s", e->str, e->str + 1);
     return bad(b, e->loc);
   }
   if (!check_allowed(b, ALLOW_MODEL, e)) return bad(b, e->loc);

@@ -1,6 +1,7 @@
 /* The model compiler, part 3: elements (bond counts, values and laws,
  * modulation, linearity, options) and the statements model, causality,
  * simulate, layout, plot, and the options of bonds and states. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -229,6 +230,21 @@ static int caus_opt(bg_build *b, int e, const bg_ast_stmt *s) {
   return BG_CAUS_OPT_CONDUCTANCE;
 }
 
+/* One coordinate of `at`: finite and within BG_POSITION_MAX points, so the
+ * layout and the drawing never see NaN, infinities or absurd sizes. */
+static double position(bg_build *b, const bg_expr *x) {
+  int nerr = b->dg->nerrors;
+  double v = bg_build_const(b, x, "a position (use numbers and params)");
+  if (b->dg->nerrors == nerr && !(fabs(v) <= BG_POSITION_MAX)) {
+    char val[32];
+    snprintf(val, sizeof val, isnan(v) ? "NaN" : "%g", v);
+    bg_diag_error(b->dg, x->loc, "a position must be a finite number of points from -%.0f to "
+                  "%.0f, not %s", BG_POSITION_MAX, BG_POSITION_MAX, val);
+    return 0;
+  }
+  return v;
+}
+
 static void at_opt(bg_build *b, int e, const bg_ast_stmt *s) {
   const bg_ast_option *o = find_opt(s, "at");
   if (!o) return;
@@ -237,8 +253,8 @@ static void at_opt(bg_build *b, int e, const bg_ast_stmt *s) {
     return;
   }
   b->m->elem_has_at[e] = 1;
-  b->m->elem_at_x[e] = bg_build_const(b, o->value->args[0], "a position (use numbers and params)");
-  b->m->elem_at_y[e] = bg_build_const(b, o->value->args[1], "a position (use numbers and params)");
+  b->m->elem_at_x[e] = position(b, o->value->args[0]);
+  b->m->elem_at_y[e] = position(b, o->value->args[1]);
 }
 
 static void element_options(bg_build *b, int e, const bg_ast_stmt *s) {

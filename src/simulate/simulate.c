@@ -19,6 +19,8 @@
 #define SIM_STIFF_RATIO 1e3
 #define SIM_MAX_STEPS 100000L  /* per output interval; SUNDIALS' 500 is far too few */
 #define SIM_PROGRESS_EVERY 1.0 /* -v: seconds between progress lines */
+#define SIM_MAX_ROWS 1000000   /* output rows at most (docs/simulation.md) */
+#define SIM_MAX_CELLS 5e7      /* rows x columns at most: 400 MB of results */
 
 static char *xstrdup_sb(bg_strbuf *sb) {
   char *s = strdup(bg_sb_str(sb));
@@ -242,13 +244,37 @@ static void report_start(const byname *bn, bg_eqsys *s, const double *atol, doub
 }
 
 /* ------------------------------------------------------------------ grid */
-static double *make_times(const bg_simspec *sp, int *nrows) {
+static int refuse(bg_simresult *r, char *msg);
+
+/* The grid's rows: t0, t0 + dt, ..., t_end (dt 0: SIM_DEFAULT_ROWS intervals). */
+static double grid_rows(const bg_simspec *sp) {
   double span = sp->t_end - sp->t0;
   double dt = sp->dt > 0 ? sp->dt : span / SIM_DEFAULT_ROWS;
   double steps = ceil(span / dt - 1e-9);
-  if (steps < 1) steps = 1;
-  if (steps > 1e8) steps = 1e8;
-  int n = (int)steps + 1;
+  return (steps < 1 ? 1 : steps) + 1;
+}
+
+/* A grid beyond the row limits is refused before anything runs (never
+ * capped silently): the message says how many rows and the dt that fits. */
+static int check_grid(const bg_simspec *sp, int nout, bg_simresult *r) {
+  double rows = grid_rows(sp), cols = nout > 0 ? nout : 1;
+  double limit = fmin(SIM_MAX_ROWS, SIM_MAX_CELLS / cols);
+  if (rows <= limit) return 0;
+  char buf[400], why[160] = "";
+  if (limit < SIM_MAX_ROWS)
+    snprintf(why, sizeof why, " for %d columns (at most %.0f values in all)", nout, SIM_MAX_CELLS);
+  /* the smallest dt that fits, rounded up to three digits so it still fits */
+  double fit = (sp->t_end - sp->t0) / (floor(limit) - 1), unit = pow(10, floor(log10(fit)) - 2);
+  fit = ceil(fit / unit * (1 - 1e-12)) * unit;
+  snprintf(buf, sizeof buf, "dt = %g gives %.3g output rows over [%g, %g], more than the limit "
+           "of %.0f rows%s; use dt >= %.3g (or leave dt out for %d intervals)", sp->dt, rows,
+           sp->t0, sp->t_end, floor(limit), why, fit, SIM_DEFAULT_ROWS);
+  return refuse(r, strdup(buf));
+}
+
+static double *make_times(const bg_simspec *sp, int *nrows) {
+  double dt = sp->dt > 0 ? sp->dt : (sp->t_end - sp->t0) / SIM_DEFAULT_ROWS;
+  int n = (int)grid_rows(sp); /* within the limits: check_grid */
   double *t = bg_xmalloc((size_t)n * sizeof(double));
   for (int k = 0; k < n - 1; k++) t[k] = sp->t0 + k * dt;
   t[n - 1] = sp->t_end;
@@ -295,6 +321,21 @@ static int check_spec(const bg_simspec *sp, bg_simresult *r) {
   return refuse(r, strdup(buf));
 }
 
+/* No unknowns: the outputs over the grid, without a solver. */
+static int simulate_algebraic(const bg_model *m, bg_eqsys *s, bg_simresult *r) {
+  bg_simplan p = {0};
+  p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
+  double *times = make_times(&m->sim, &p.nrows);
+  p.times = times;
+  result_alloc(s, p.nrows, r);
+  r->solver_used = "none";
+  r->solver_reason = strdup("no states and no algebraic unknowns: the outputs are functions of "
+                            "t alone, evaluated at each output time");
+  int rc = bg_sim_algebraic(s, &p, r);
+  free(times);
+  return rc;
+}
+
 int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                 bg_simresult *r) {
   memset(r, 0, sizeof *r);
@@ -307,8 +348,9 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
     else bg_sb_puts(&sb, " (see the diagnostics)");
     return refuse(r, xstrdup_sb(&sb));
   }
-  if (check_spec(&m->sim, r)) return 1;
+  if (check_spec(&m->sim, r) || check_grid(&m->sim, bg_eqsys_noutput(s), r)) return 1;
   int n = bg_eqsys_n(s), rc;
+  if (n == 0) return simulate_algebraic(m, s, r);
   double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
   bg_eqsys_initial(s, y0);
   int kind = choose(m, a, s, o, y0, r);

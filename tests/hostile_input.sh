@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Hostile input is refused quickly and with a reason (issues 20 and 22):
+# - an error flood stops at the limit (100, or --max-errors N; 0: all) with
+#   a note, in well under a second; a 1 MB binary file is one "not a text
+#   file" error at its first bad byte;
+# - a sparse bond number (10^9) costs no memory or time: --check and a
+#   diagram under a 1 GB virtual-memory limit, within 2 s;
+# - a purely algebraic model (no states) simulates without a solver: the
+#   CSV rows are the analytic f = (1 + t) / R0; JSON, plot and report too;
+# - a dt whose grid exceeds the row limit is refused before it starts
+#   (status 3, the row count, the dt that fits, no CSV), in well under a second.
+# Usage: bash tests/hostile_input.sh PATH_TO_BGDRAW   (from the project root)
+set -u
+BGDRAW=${1:?usage: hostile_input.sh PATH_TO_BGDRAW}
+case $BGDRAW in /*) ;; *) BGDRAW=$PWD/$BGDRAW ;; esac
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+check() { # NAME STATUS
+  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
+}
+cd "$tmp"
+asan=0
+ldd "$BGDRAW" 2>/dev/null | grep -q 'libasan' && asan=1
+ms() { date +%s%3N; }
+
+# ------------------------------------------------------------- error floods
+{ echo "model flood"; for i in $(seq 1 20000); do echo "R R$i = \$"; done; } > flood.bg
+t0=$(ms); "$BGDRAW" flood.bg --check 2>err; st=$?; t1=$(ms)
+check "flood exits 1 (got $st)" $((st != 1))
+n=$(grep -c ': error: ' err)
+check "flood: 100 errors shown (got $n)" $((n != 100))
+grep -q "flood.bg: note: 19900 more errors not shown: stopped at 100 errors (--max-errors N" err
+check "flood: the note names the limit and the option" $?
+check "flood: under 3 s (took $((t1 - t0)) ms)" $((t1 - t0 > 3000))
+"$BGDRAW" flood.bg --check --max-errors 3 2>err
+n=$(grep -c ': error: ' err); check "--max-errors 3 shows 3 (got $n)" $((n != 3))
+"$BGDRAW" flood.bg --check --max-errors 0 2>err
+n=$(grep -c ': error: ' err); check "--max-errors 0 shows all 20000 (got $n)" $((n != 20000))
+! grep -q "more errors not shown" err; check "--max-errors 0: no note" $?
+"$BGDRAW" flood.bg --max-errors -1 2>err; st=$?
+check "--max-errors -1 is a usage error (got $st)" $((st != 2))
+
+head -c 1000000 /dev/urandom > bin.bg
+printf 'model b\n' | cat - bin.bg > bin2.bg
+t0=$(ms); "$BGDRAW" bin2.bg --check 2>err; st=$?; t1=$(ms)
+check "binary file exits 1 (got $st)" $((st != 1))
+n=$(grep -c ': error: ' err); check "binary file: one error (got $n)" $((n != 1))
+grep -q "^bin2.bg:2:[0-9]*: error: not a text file: .* at byte [0-9]*; a model is UTF-8 text" err
+check "binary file: not a text file, at the byte" $?
+check "binary file: under 2 s (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
+
+# ------------------------------------------------------ sparse bond numbers
+cat > sparse.bg <<'M'
+model sparse
+Se U = 1
+1 j
+R R1 = 2
+C C1 = 1
+bond 1000000000 U -> j
+bond 2 j -> R1
+bond 3 j -> C1
+M
+limit=""
+[ $asan -eq 0 ] && limit="ulimit -v 1000000;" # ASan reserves terabytes of address space
+t0=$(ms); bash -c "$limit \"$BGDRAW\" sparse.bg --check > sum.txt -o x.svg" 2>err; st=$?; t1=$(ms)
+bash -c "$limit \"$BGDRAW\" sparse.bg -o sparse.svg -o sparse.json" 2>>err; st2=$?
+check "bond 10^9 under 1 GB of address space exits 0 (got $st, $st2)" $((st + st2))
+grep -q '{"id": 1000000000, "from": "U", "to": "j"' sparse.json; check "bond 10^9 keeps its number" $?
+check "bond 10^9: --check under 2 s (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
+
+# ------------------------------------------------------ algebraic models
+cat > alg.bg <<'M'
+model alg
+param R0 = 4
+Se U = 1 + t
+R R1 = R0
+bond U -> R1
+simulate t_end = 2, dt = 0.5
+plot R1.f, U.e
+M
+"$BGDRAW" alg.bg --simulate -o alg.csv -o alg.json --plot alg.svg; st=$?
+check "algebraic model simulates (got $st)" $st
+python3 - <<'PY'; check "algebraic CSV: f = (1 + t) / 4 on t = 0, 0.5, ..., 2" $?
+import csv, json, sys
+rows = list(csv.reader(open("alg.csv")))
+ok = rows[0] == ["t", "R1.f", "U.e"] and len(rows) == 6
+for r in rows[1:]:
+    t, f, e = map(float, r)
+    ok = ok and abs(f - (1 + t) / 4) < 1e-15 and abs(e - (1 + t)) < 1e-15
+sim = json.load(open("alg.json"))["simulation"]
+ok = ok and sim["status"] == "ok" and sim["solver"] == "none" and sim["rows"] == 5
+sys.exit(0 if ok else 1)
+PY
+grep -q "<svg" alg.svg; check "algebraic model: plot written" $?
+"$BGDRAW" alg.bg --report alg.pdf; st=$?
+check "algebraic model: report (got $st)" $st
+printf 'model z\nSe U = 1\nR R1 = 2\nbond U -> R1\nsimulate t_end = 1\n' > z.bg
+"$BGDRAW" z.bg --simulate -o z.csv 2>err; st=$?
+check "the issue's model without plot simulates (got $st)" $st
+! grep -q "DGEEV\|Parameter" err; check "no LAPACK complaint" $?
+
+# ------------------------------------------------------------ row limit
+sed 's/dt = 0.5/dt = 1e-300/' alg.bg > tiny.bg
+t0=$(ms); "$BGDRAW" tiny.bg --simulate -o tiny.csv 2>err; st=$?; t1=$(ms)
+check "dt = 1e-300 exits 3 (got $st)" $((st != 3))
+grep -q "dt = 1e-300 gives 2e+300 output rows over \[0, 2\], more than the limit of 1000000 rows; use dt >= 2.01e-06" err
+check "dt = 1e-300: rows, limit and the fix" $?
+[ ! -e tiny.csv ]; check "dt = 1e-300: no CSV" $?
+check "dt = 1e-300: refused at once (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
+sed 's/dt = 0.5/dt = 2e-6/' alg.bg > edge.bg
+"$BGDRAW" edge.bg --simulate -o edge.csv 2>err; st=$?
+check "dt = 2e-6: 1000001 rows are refused too (got $st)" $((st != 3))
+fix=$(sed -n 's/.*use dt >= \([0-9.e+-]*\) .*/\1/p' err)
+sed "s/dt = 0.5/dt = $fix/" alg.bg > fixed.bg
+"$BGDRAW" fixed.bg --simulate -o fixed.csv; st=$?
+n=$(($(wc -l < fixed.csv) - 1))
+check "the suggested dt = $fix runs (got $st, $n rows, at most 1000000)" $((st != 0 || n > 1000000 || n < 900000))
+
+echo "hostile_input: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
