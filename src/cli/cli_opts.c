@@ -9,6 +9,7 @@
 
 static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
+static const char *const lin_forms[] = {"text", "latex", "json", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
 static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
 
@@ -23,7 +24,7 @@ static const valued_opt valued[] = {
     OPT("--causality", causality), OPT("--show", show),     OPT("--highlight", highlight),
     OPT("--style", style),         OPT("--layout", layout), OPT("--report", report),
     OPT("--plot", plot),           OPT("--equations", equations), OPT("-T", force_format),
-    OPT("--max-list", max_list),   OPT("--max-errors", max_errors),
+    OPT("--max-list", max_list),   OPT("--max-errors", max_errors), OPT("--linear", linear),
 };
 static const char *const flags[] = {"--simulate", "--check", "-q", "-v", "--help", "-h", "--version", "-o", "--set", NULL};
 
@@ -134,6 +135,8 @@ static int validate(bg_cli_opts *o) {
   static const char *const plot_formats[] = {"svg", "pdf", "png", NULL};
   if (o->plot && !in_list(bg_path_ext(o->plot), plot_formats))
     return usage_error("--plot writes svg, pdf or png, not '%s'%s", o->plot, "");
+  if (o->linear && check_choice("--linear", o->linear, lin_forms)) return -1;
+
   if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
     return usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report, "");
   if (!o->model_path && !o->help && !o->version)
@@ -192,6 +195,7 @@ void bg_cli_print_help(FILE *out) {
       "  --plot FILE         simulation plot (svg, pdf, png)\n"
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"
+      "  --linear FORM       linear analysis: text | latex | json (docs/linear.md)\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"

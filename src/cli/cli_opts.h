@@ -9,7 +9,7 @@ enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64 };
 
 typedef struct bg_cli_output {
   const char *path;
-  const char *format; /* svg pdf png json dot tex c csv */
+  const char *format; /* svg pdf png json dot tex c csv m py */
 } bg_cli_output;
 
 typedef struct bg_cli_opts {
@@ -27,6 +27,8 @@ typedef struct bg_cli_opts {
   const char *equations;    /* --equations FORM */
   const char *max_list;     /* --max-list N: listing cap of paths and loops */
   const char *max_errors;   /* --max-errors N: diagnostics' error limit (0: none) */
+  const char *linear;       /* --linear FORM: text | latex | json (docs/linear.md) */
+  const char *bode, *nyquist, *step; /* --bode/--nyquist/--step FILE (svg pdf png) */
   int simulate, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;

@@ -11,6 +11,7 @@
 #include "base/fileio.h"
 #include "json/json.h"
 #include "json/json_sim.h"
+#include "json/json_linear.h"
 #include "plot/plot.h"
 #include "report/report.h"
 #include "scene/style.h"
@@ -107,6 +108,7 @@ static int write_json(run *r, const char *path) {
   bg_strbuf sb = {0};
   bg_json_write_analysis(r->model, &r->analysis, &sb);
   if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
+  if (r->lin_done) bg_json_append_linear(&sb, &r->lin);
   int rc = write_text(path, &sb);
   bg_sb_free(&sb);
   return rc;

@@ -15,6 +15,7 @@
 #include "lang/parse.h"
 #include "diagram/render.h"
 #include "simulate/simulate.h"
+#include "linear/linear.h"
 
 enum { EXIT_OK = 0, EXIT_MODEL = 1, EXIT_USAGE = 2, EXIT_SIM = 3, EXIT_WRITE = 4 };
 
@@ -44,6 +45,8 @@ typedef struct run {
   int max_list; /* --max-list; 0: the default caps */
   int max_errors; /* --max-errors; BG_DIAG_MAX_ERRORS by default, 0: no limit */
   bg_diagram *diagram; /* laid out once, on the first diagram output */
+  bg_linear lin;       /* the linear analysis (cli_linear.c) */
+  int lin_done;
 } run;
 
 /* Diagram options from the command line (and --max-list); -1 after a
@@ -62,4 +65,13 @@ int cli_write_equations(run *r, const char *path, const char *form);
 /* --plot FILE and --report FILE.pdf. */
 int cli_write_plot(run *r);
 int cli_write_report(run *r);
+/* The linear analysis (cli_linear.c): wanted by the options or the model's
+ * `linearise` statement; computed; --linear FORM on stdout, --bode,
+ * --nyquist, --step; .m and .py outputs. EXIT_SIM when it was asked for and
+ * refused. */
+int cli_wants_linear(const run *r);
+int cli_linear_asked(const bg_cli_opts *o); /* --linear, --bode, ..., .m, .py */
+int cli_linear_only(const bg_cli_opts *o);  /* and nothing else: no default diagram */
+void cli_linearise(run *r);
+int cli_write_linear(run *r);
 #endif

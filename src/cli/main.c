@@ -19,6 +19,7 @@
 #endif
 
 static void run_free(run *r) {
+  if (r->lin_done) bg_linear_free(&r->lin);
   if (r->simulated) bg_simresult_free(&r->sim);
   if (r->index_done) bg_index_free(&r->index);
   if (r->eqsys) bg_eqsys_free(r->eqsys);
@@ -185,7 +186,7 @@ int main(int argc, char **argv) {
   }
   char defpath[1024];
   if (!r.opts.check && r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations &&
-      !r.opts.plot && !r.opts.report)
+      !r.opts.plot && !r.opts.report && !cli_linear_asked(&r.opts))
     cli_default_output(&r, defpath, sizeof defpath);
   if ((rc = cli_check_outputs(&r)) != 0) {
     run_free(&r);
@@ -194,8 +195,10 @@ int main(int argc, char **argv) {
   analyse(&r);
   if (wants_equations(&r.opts)) derive_equations(&r);
   if (wants_index(&r.opts)) numeric_index(&r);
+  if (cli_wants_linear(&r)) cli_linearise(&r);
   if (r.opts.check) rc = print_check(&r);
   else if (r.opts.equations && r.opts.nout == 0) rc = cli_write_equations(&r, NULL, r.opts.equations);
+  else if (cli_linear_only(&r.opts)) rc = cli_write_linear(&r);
   else {
     int wantsim = wants_simulation(&r.opts);
     int simrc = wantsim || (r.opts.report && r.model->sim.present) ? simulate(&r) : EXIT_OK;
@@ -205,6 +208,7 @@ int main(int argc, char **argv) {
     if (!rc) rc = cli_write_outputs(&r);
     if (!rc && r.opts.plot) rc = cli_write_plot(&r);
     if (!rc && r.opts.report) rc = cli_write_report(&r);
+    if (!rc) rc = cli_write_linear(&r);
     if (!rc) rc = refused ? EXIT_SIM : simrc;
   }
   run_free(&r);

@@ -336,7 +336,8 @@ static int user_state_rows(bg_eqsys *s) {
   return 0;
 }
 
-bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) {
+static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
+                       bg_diags *dg) {
   bg_srcloc none = {0, 0};
   if (!a->complete) {
     bg_diag_error(dg, none, "the causality is incomplete: no equations can be derived");
@@ -358,10 +359,27 @@ bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) 
   bg_eqs_deps(s);
   bg_eqs_sort(s); /* tears: adds the algebraic unknowns */
   s->n = s->nx + s->nz;
+  if (inputs) {
+    s->lin_nu = nu, s->lin_nh = m->noutput;
+    s->lin_ref = bg_arena_alloc(&s->arena, (size_t)(nu + 1) * sizeof(int));
+    s->lin_uslot = bg_arena_alloc(&s->arena, (size_t)(nu + 1) * sizeof(int));
+    s->lin_hslot = bg_arena_alloc(&s->arena, (size_t)(m->noutput + 1) * sizeof(int));
+    memcpy(s->lin_ref, inputs, (size_t)nu * sizeof(int));
+  }
   bg_eqs_compile(s);
   bg_eqs_pattern(s);
   s->work = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   return s;
+}
+
+bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) {
+  return build(m, a, NULL, 0, dg);
+}
+
+bg_eqsys *bg_eqsys_build_io(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
+                            bg_diags *dg) {
+  static const int none = 0;
+  return build(m, a, inputs ? inputs : &none, inputs ? nu : 0, dg);
 }
 
 void bg_eqsys_free(bg_eqsys *s) {

@@ -75,6 +75,20 @@ int bg_eqsys_jac_sparse(bg_eqsys *s, double t, const double *y, const double *yp
 int bg_eqsys_linearise(bg_eqsys *s, double t, const double *y, const double *yp, double *A,
                        double *B);
 
+/* Linear analysis (docs/linear.md). An equation system like bg_eqsys_build's
+ * whose inputs can be perturbed: inputs[k] >= 0 is a source element, whose
+ * value becomes value + u_k; inputs[k] < 0 is the model input -1 - inputs[k],
+ * likewise. The model's outputs (m->output_expr) are compiled too. With
+ * u = 0 it evaluates exactly as bg_eqsys_build's system. */
+bg_eqsys *bg_eqsys_build_io(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
+                            bg_diags *dg);
+/* Exact derivatives at (t, y, yp), u = 0, of the residual F (n rows) and the
+ * outputs h (m->noutput rows) with respect to y, yp and u: dense column-major
+ * Fy, Fyp (n x n), Fu (n x nu), Hy, Hyp (nh x n), Hu (nh x nu); h gets the
+ * outputs' values. Any pointer may be NULL. 0, or -1 as bg_eqsys_residual. */
+int bg_eqsys_jac_io(bg_eqsys *s, double t, const double *y, const double *yp, double *Fy,
+                    double *Fyp, double *Fu, double *Hy, double *Hyp, double *Hu, double *h);
+
 /* Values of the model's plot expressions (m->plotexpr_root order), or of the
  * states when the model has no plot statement (bg_eqsys_noutput/_output_name). */
 int bg_eqsys_noutput(const bg_eqsys *s);

@@ -99,6 +99,11 @@ struct bg_eqsys {
   const char **out_name;
   int *out_slot;
 
+  /* linear analysis (bg_eqsys_build_io): perturbable inputs u_k added to a
+   * source's value or an input's value, and the model's outputs */
+  int lin_nu, *lin_ref, *lin_uslot;
+  int lin_nh, *lin_hslot;
+
   /* Jacobian pattern (CSC, with the diagonal) and its column colouring */
   int nnz, *colptr, *rowind;
   int ncolor, *color;

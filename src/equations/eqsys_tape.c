@@ -77,6 +77,17 @@ static int emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
 }
 
 /* ------------------------------------------------------------ compilation */
+/* Linear analysis: the value of input k of the linearisation plus u_k, a
+ * slot that stays 0 except while differentiating (bg_eqsys_jac_io). */
+static int lin_offset(bg_eqsys *s, int ref, int slot, int eq) {
+  for (int k = 0; k < s->lin_nu; k++)
+    if (s->lin_ref[k] == ref) {
+      int args[2] = {slot, s->lin_uslot[k]};
+      return emit(s, BG_X_ADD, 0, 2, args, eq);
+    }
+  return slot;
+}
+
 static int cx(bg_eqsys *s, int root, int eq) {
   const bg_model *m = s->m;
   const bg_xnode *n = &m->xnode[root];
@@ -86,7 +97,8 @@ static int cx(bg_eqsys *s, int root, int eq) {
   case BG_X_TIME: return 0;
   case BG_X_PARAM: return new_slot(s, 1, m->param_value[n->ref]);
   case BG_X_INPUT:
-    if (s->input_slot[n->ref] < 0) s->input_slot[n->ref] = cx(s, m->input_expr[n->ref], eq);
+    if (s->input_slot[n->ref] < 0)
+      s->input_slot[n->ref] = lin_offset(s, -1 - n->ref, cx(s, m->input_expr[n->ref], eq), eq);
     return s->input_slot[n->ref];
   case BG_X_STATE: return s->slot_y + (s->nint - m->nstate) + n->ref;
   case BG_X_STORE: return s->slot_y + s->store_y[n->ref];
@@ -105,7 +117,12 @@ static int ce(bg_eqsys *s, int nd, int eq) {
   int args[2], slot;
   switch (n->kind) {
   case EQ_NUM: return new_slot(s, 1, n->c);
-  case EQ_X: return cx(s, n->a, eq);
+  case EQ_X: /* a linearisation source's value (its own equation, or a conflict's) */
+    slot = cx(s, n->a, eq);
+    for (int k = 0; k < s->lin_nu; k++)
+      if (s->lin_ref[k] >= 0 && s->m->elem_expr[s->lin_ref[k]] == n->a)
+        return lin_offset(s, s->lin_ref[k], slot, eq);
+    return slot;
   case EQ_SIG:
     slot = s->sig_slot[n->a];
     if (slot < 0) BG_FATAL("eqsys: bond variable used before it is computed");
@@ -137,6 +154,7 @@ static void compile_outputs(bg_eqsys *s) {
     s->out_name[k] = np ? m->plotexpr_text[k] : s->uname[k];
     s->out_slot[k] = np ? cx(s, m->plotexpr_root[k], -1000000 - k) : s->slot_y + k;
   }
+  for (int k = 0; k < s->lin_nh; k++) s->lin_hslot[k] = cx(s, m->output_expr[k], -2000000 - k);
 }
 
 void bg_eqs_compile(bg_eqsys *s) {
@@ -148,6 +166,7 @@ void bg_eqs_compile(bg_eqsys *s) {
   s->row_slot = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
   s->input_slot = bg_arena_alloc(&s->arena, (size_t)(s->m->ninput + 1) * sizeof(int));
   for (int k = 0; k < s->m->ninput; k++) s->input_slot[k] = -1;
+  for (int k = 0; k < s->lin_nu; k++) s->lin_uslot[k] = new_slot(s, 0, 0);
   for (int v = 0; v < s->nsig; v++) s->sig_slot[v] = s->sig_torn[v] ? s->slot_y + s->sig_z[v] : -1;
   for (int k = 0; k < s->norder; k++) {
     int v = s->order[k];
@@ -247,6 +266,8 @@ static void describe(bg_eqsys *s, const tinstr *I, double t) {
     snprintf(where, sizeof where, "the %s of %s", s->sig_what[I->eq], m->elem_name[e]);
   } else if (I->eq > -1000000) {
     snprintf(where, sizeof where, "the equation of %s", s->uname[-1 - I->eq]);
+  } else if (I->eq <= -2000000) {
+    snprintf(where, sizeof where, "output %s", m->output_name[-2000000 - I->eq]);
   } else {
     snprintf(where, sizeof where, "plot expression %s", m->plotexpr_text[-1000000 - I->eq]);
   }
@@ -283,6 +304,7 @@ int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int ou
   int bad = 0;
   for (int i = 0; i < n; i++) bad |= !isfinite(v[s->row_slot[i]]);
   for (int k = 0; outputs && k < s->nout; k++) bad |= !isfinite(v[s->out_slot[k]]);
+  for (int k = 0; outputs && k < s->lin_nh; k++) bad |= !isfinite(v[s->lin_hslot[k]]);
   return bad ? diagnose(s, 0, c1, t) : 0;
 }
 
@@ -409,4 +431,38 @@ void bg_eqs_pattern(bg_eqsys *s) {
     for (int q = radr[i]; q < radr[i + 1]; q++) s->rowind[s->colptr[rcols[q]] + pos[rcols[q]]++] = i;
   colour(s, radr, rcols);
   free(pos), free(radr), free(rcols), free(mark), free(S.adr), free(S.cnt), free(S.pool);
+}
+
+/* ------------------------------------------------------------ linear analysis */
+/* One forward pass through the whole tape (equations and outputs) in the
+ * direction seeded into dv (y, yp and u slots); values must be current. */
+static void sweep_all(bg_eqsys *s) {
+  for (int k = 0; k < s->ncode; k++) s->dv[s->code[k].out] = ins_der(s, &s->code[k], s->v, s->dv);
+}
+
+/* Column j of the residual and output derivatives for the current direction. */
+static void io_column(const bg_eqsys *s, int j, double *F, double *H) {
+  int n = s->n;
+  for (int i = 0; F && i < n; i++) {
+    double d = s->dv[s->row_slot[i]];
+    F[(size_t)j * n + i] = s->row_kind[i] == 0 ? s->dv[s->slot_yp + i] - d : d;
+  }
+  for (int k = 0; H && k < s->lin_nh; k++) H[(size_t)j * s->lin_nh + k] = s->dv[s->lin_hslot[k]];
+}
+
+int bg_eqsys_jac_io(bg_eqsys *s, double t, const double *y, const double *yp, double *Fy,
+                    double *Fyp, double *Fu, double *Hy, double *Hyp, double *Hu, double *h) {
+  if (bg_eqs_eval(s, t, y, yp, 1)) return -1;
+  for (int k = 0; h && k < s->lin_nh; k++) h[k] = s->v[s->lin_hslot[k]];
+  int n = s->n, nu = s->lin_nu;
+  for (int dir = 0; dir < 2 * n + nu; dir++) {
+    int which = dir < n ? 0 : dir < 2 * n ? 1 : 2, j = which == 0 ? dir : which == 1 ? dir - n : dir - 2 * n;
+    double *F = which == 0 ? Fy : which == 1 ? Fyp : Fu, *H = which == 0 ? Hy : which == 1 ? Hyp : Hu;
+    if (!F && !H) continue;
+    memset(s->dv, 0, (size_t)s->nslot * sizeof *s->dv);
+    s->dv[which == 0 ? s->slot_y + j : which == 1 ? s->slot_yp + j : s->lin_uslot[j]] = 1;
+    sweep_all(s);
+    io_column(s, j, F, H);
+  }
+  return 0;
 }

@@ -53,14 +53,19 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
   bg_sb_puts(o, "}\n  }");
 }
 
-void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
-                               int status) {
+int bg_json_reopen(bg_strbuf *doc) {
   static const char end[] = "\n}\n";
   size_t ne = sizeof end - 1;
-  if (doc->len < ne || memcmp(doc->s + doc->len - ne, end, ne) != 0) return;
+  if (doc->len < ne || memcmp(doc->s + doc->len - ne, end, ne) != 0) return -1;
   doc->len -= ne; /* reopen the document's top-level object */
   doc->s[doc->len] = 0;
   bg_sb_puts(doc, ",\n");
+  return 0;
+}
+
+void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
+                               int status) {
+  if (bg_json_reopen(doc)) return;
   bg_json_write_simulation(m, r, status, doc);
-  bg_sb_puts(doc, end);
+  bg_sb_puts(doc, "\n}\n");
 }

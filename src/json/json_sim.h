@@ -16,4 +16,8 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
  * ending "\n}\n") as its last key. Leaves doc unchanged if it does not end so. */
 void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
                                int status);
+/* Removes the closing "\n}\n" of a finished document and writes ",\n" so
+ * one more top-level key can follow (then close with "\n}\n"); -1 when the
+ * document does not end so (left unchanged). */
+int bg_json_reopen(bg_strbuf *doc);
 #endif

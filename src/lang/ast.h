@@ -55,7 +55,8 @@ typedef struct bg_ast_option {
 
 typedef enum {
   BG_ST_MODEL, BG_ST_PARAM, BG_ST_INPUT, BG_ST_STATE, BG_ST_ELEMENT,
-  BG_ST_BOND, BG_ST_CAUSALITY, BG_ST_SIMULATE, BG_ST_PLOT, BG_ST_LAYOUT
+  BG_ST_BOND, BG_ST_CAUSALITY, BG_ST_SIMULATE, BG_ST_PLOT, BG_ST_LAYOUT,
+  BG_ST_OUTPUT, BG_ST_LINEARISE /* linear analysis: docs/linear.md */
 } bg_stkind;
 
 typedef enum { BG_ARROW_PLAIN, BG_ARROW_STROKE_HEAD /* ->| */, BG_ARROW_STROKE_TAIL /* |-> */ } bg_arrow;
@@ -64,9 +65,9 @@ typedef struct bg_ast_stmt {
   bg_stkind kind;
   bg_srcloc loc;      /* of the statement's first token */
   const char *kindword; /* ELEMENT: the kind as written ("Se", "MTF", "0", ...) */
-  const char *name;   /* MODEL, PARAM, INPUT, STATE, ELEMENT name; CAUSALITY method */
+  const char *name;   /* MODEL, PARAM, INPUT, STATE, OUTPUT, ELEMENT name; CAUSALITY method */
   bg_srcloc name_loc;
-  const char *text;   /* MODEL title, PARAM description; nullable */
+  const char *text;   /* MODEL title, PARAM and OUTPUT description; nullable */
   /* ELEMENT: either a shorthand value (law_var == 0) or a law "v = EXPR" (law_var 'e','f'). */
   bg_expr *expr;      /* PARAM/INPUT/STATE right-hand side; ELEMENT value or law rhs; nullable */
   char law_var;       /* ELEMENT with ": v = ..." : 'e' or 'f' (or the letter written) */

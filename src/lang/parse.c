@@ -29,7 +29,8 @@ typedef struct parser {
 } parser;
 
 static const char *const keywords[] = {"model", "param", "input", "state", "bond",
-                                       "simulate", "plot", "layout", "causality"};
+                                       "simulate", "plot", "layout", "causality",
+                                       "output", "linearise"};
 static const char *const kinds[] = {"Se", "Sf", "MSe", "MSf", "C", "I", "R",
                                     "TF", "MTF", "GY", "MGY", "0", "1"};
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -419,13 +420,16 @@ static void parse_model(parser *p, const bg_token *kw) {
   if (at(p, BG_TK_STRING)) s->text = next(p)->text;
 }
 
-/* param_stmt := 'param' NAME '=' expr [STRING] {',' NAME '=' expr [STRING]} */
-static void parse_param(parser *p, const bg_token *kw) {
+/* A list of named definitions with optional descriptions, one statement each:
+ * param_stmt  := 'param'  NAME '=' expr [STRING] {',' NAME '=' expr [STRING]}
+ * output_stmt := 'output' NAME '=' expr [STRING] {',' NAME '=' expr [STRING]} */
+static void parse_definitions(parser *p, const bg_token *kw, bg_stkind kind, const char *what,
+                              const char *after) {
   do {
-    const bg_token *n = expect_name(p, "a param name");
-    expect(p, BG_TK_ASSIGN, "after the param name");
+    const bg_token *n = expect_name(p, what);
+    expect(p, BG_TK_ASSIGN, after);
     bg_expr *e = parse_expr(p);
-    bg_ast_stmt *s = new_stmt(p, BG_ST_PARAM, kw);
+    bg_ast_stmt *s = new_stmt(p, kind, kw);
     s->name = n->text;
     s->name_loc = n->loc;
     s->expr = e;
@@ -557,7 +561,8 @@ static void parse_statement(parser *p) {
   }
   const char *w = t->text;
   if (strcmp(w, "model") == 0) parse_model(p, t);
-  else if (strcmp(w, "param") == 0) parse_param(p, t);
+  else if (strcmp(w, "param") == 0)
+    parse_definitions(p, t, BG_ST_PARAM, "a param name", "after the param name");
   else if (strcmp(w, "input") == 0) parse_input(p, t);
   else if (strcmp(w, "state") == 0) parse_state(p, t);
   else if (strcmp(w, "bond") == 0) parse_bond(p, t);
@@ -565,6 +570,10 @@ static void parse_statement(parser *p) {
   else if (strcmp(w, "plot") == 0) parse_plot(p, t);
   else if (strcmp(w, "simulate") == 0) parse_options(new_stmt(p, BG_ST_SIMULATE, t), p, 1);
   else if (strcmp(w, "layout") == 0) parse_options(new_stmt(p, BG_ST_LAYOUT, t), p, 1);
+  else if (strcmp(w, "output") == 0)
+    parse_definitions(p, t, BG_ST_OUTPUT, "an output name",
+                      "after the output name (write: output y = EXPR)");
+  else if (strcmp(w, "linearise") == 0) parse_options(new_stmt(p, BG_ST_LINEARISE, t), p, 1);
   else if (in_list(w, kinds, COUNT(kinds))) parse_element(p, t);
   else {
     const char *s = closest_word(w);

@@ -135,6 +135,16 @@ typedef struct bg_xnode {
   X(const char *, plot_xlabel, nplot)                                          \
   X(int, plotexpr_root, nplotexpr)                                             \
   X(const char *, plotexpr_text, nplotexpr) /* as written, for CSV headers */  \
+  /* outputs of the linear analysis (docs/linear.md): `output` statements in  \
+     file order; a detector element adds one too (output_elem >= 0) */        \
+  X(const char *, output_name, noutput)                                        \
+  X(int, output_expr, noutput)      /* root xnode */                           \
+  X(const char *, output_desc, noutput) /* nullable */                         \
+  X(int, output_elem, noutput)      /* detector element, or -1 */              \
+  X(bg_srcloc, output_loc, noutput)                                            \
+  /* inputs named by `linearise inputs = (...)`: a source element id, or       \
+     -1 - id of an `input` */                                                  \
+  X(int, lininput_ref, nlininput)                                              \
   /* lookup tables (from CSV files or inline), breakpoints sorted by x */      \
   X(int, table_adr, ntable)                                                    \
   X(int, table_n, ntable)                                                      \
@@ -151,6 +161,18 @@ typedef struct bg_simspec {
   bg_srcloc loc;
 } bg_simspec;
 
+/* The `linearise` statement (docs/linear.md); absent: present = 0, defaults. */
+typedef struct bg_linspec {
+  int present;
+  int steady;          /* at = steady: Newton steady state; else the initial point */
+  int inputs_given;    /* inputs = (...) given: lininput_ref, else every source */
+  double t;            /* time of the operating point (inputs held at their value) */
+  int t_given;         /* else the simulate block's t0, or 0 */
+  double w_min, w_max; /* frequency range [rad/s]; 0: automatic */
+  double t_end;        /* step and impulse responses; 0: automatic */
+  bg_srcloc loc;
+} bg_linspec;
+
 typedef struct bg_layoutspec {
   const char *engine;  /* "dot" (default), "neato", "fdp", "sfdp", "pinned" */
   const char *rankdir; /* "LR" (default), "TB", "RL", "BT" */
@@ -164,6 +186,8 @@ typedef struct bg_model {
   int method_given;  /* the model has a `causality` statement */
   bg_simspec sim;
   bg_layoutspec layout;
+  bg_linspec linear;
+  int noutput, nlininput;
   int nelem, nbondref, nbond, nparam, ninput, nstate, nsignal, nplot, nplotexpr;
   int ntable, ntabledata, nxnode;
 #define BG_X_DECLARE(type, name, count) type *name;

@@ -385,8 +385,86 @@ static void st_model(bg_build *b, const bg_ast_stmt *s) {
   b->m->title = bg_build_strdup(b, s->text);
 }
 
+/* output NAME = EXPR ["description"]: an output of the linear analysis. */
+static void st_output(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  const ns_entry *n = bg_build_lookup(b, s->name);
+  static const char *const what[] = {"an element", "a param", "an input", "a state"};
+  if (n) {
+    bg_diag_error(b->dg, s->name_loc, "'%s' is already %s (line %d); an output needs a name of "
+                  "its own", s->name, what[n->kind], n->loc.line);
+    return;
+  }
+  for (int k = 0; k < m->noutput; k++)
+    if (strcmp(m->output_name[k], s->name) == 0) {
+      bg_diag_error(b->dg, s->name_loc, "output '%s' already defined at line %d", s->name,
+                    m->output_loc[k].line);
+      return;
+    }
+  b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
+  b->input_limit = m->ninput;
+  b->what = "an output";
+  int root = bg_build_expr(b, s->expr);
+  int k = bg_build_new(b, &m->noutput);
+  m->output_name[k] = bg_build_strdup(b, s->name);
+  m->output_expr[k] = root;
+  m->output_desc[k] = bg_build_strdup(b, s->text);
+  m->output_elem[k] = -1;
+  m->output_loc[k] = s->name_loc;
+}
+
+/* One name of `inputs = (...)`: a source element or an `input`. */
+static void lin_input(bg_build *b, const bg_expr *e) {
+  bg_model *m = b->m;
+  const ns_entry *n = e->kind == BG_EX_NAME ? bg_build_lookup(b, e->str) : NULL;
+  int ref = n && n->kind == NS_ELEM && bg_elem_is_source(m->elem_kind[n->id]) ? n->id
+            : n && n->kind == NS_INPUT ? -1 - n->id : -2000000000;
+  if (ref == -2000000000) {
+    bg_diag_error(b->dg, e->loc, "'%s' is not a source (Se, Sf, MSe, MSf) or an input: "
+                  "linearise inputs are sources and inputs", e->text ? e->text : "?");
+    return;
+  }
+  for (int k = 0; k < m->nlininput; k++)
+    if (m->lininput_ref[k] == ref) {
+      bg_diag_error(b->dg, e->loc, "input '%s' named twice", e->str);
+      return;
+    }
+  int k = bg_build_new(b, &m->nlininput); /* may move the array */
+  m->lininput_ref[k] = ref;
+}
+
+/* linearise [at = initial | steady, inputs = (U, ...), t = T, w_min, w_max, t_end] */
+static void st_linearise(bg_build *b, const bg_ast_stmt *s) {
+  bg_linspec *l = &b->m->linear;
+  check_options(b, s, "at, inputs, t, w_min, w_max, t_end", "linearise");
+  l->present = 1;
+  l->loc = s->loc;
+  const char *at = word_opt(b, s, "at", "initial, steady");
+  l->steady = at && strcmp(at, "steady") == 0;
+  l->t_given = find_opt(s, "t") != NULL;
+  l->t = num_opt(b, s, "t", 0);
+  l->w_min = num_opt(b, s, "w_min", 0);
+  l->w_max = num_opt(b, s, "w_max", 0);
+  l->t_end = num_opt(b, s, "t_end", 0);
+  static const char *const positive[] = {"w_min", "w_max", "t_end"};
+  const double vals[] = {l->w_min, l->w_max, l->t_end};
+  for (int i = 0; i < 3; i++)
+    if (find_opt(s, positive[i]) && !(vals[i] > 0))
+      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be positive, not %g",
+                    positive[i], vals[i]);
+  if (l->w_min > 0 && l->w_max > 0 && !(l->w_max > l->w_min))
+    bg_diag_error(b->dg, find_opt(s, "w_max")->value->loc, "w_max (%g) must be greater than "
+                  "w_min (%g)", l->w_max, l->w_min);
+  const bg_ast_option *in = find_opt(s, "inputs");
+  if (!in) return;
+  l->inputs_given = 1;
+  if (in->value->kind == BG_EX_TUPLE)
+    for (int i = 0; i < in->value->nargs; i++) lin_input(b, in->value->args[i]);
+  else lin_input(b, in->value);
+}
+
 void bg_build_statements(bg_build *b) {
-  const bg_ast_stmt *model = NULL, *caus = NULL, *sim = NULL, *layout = NULL;
+  const bg_ast_stmt *model = NULL, *caus = NULL, *sim = NULL, *layout = NULL, *lin = NULL;
   int bond = 0;
   for (int i = 0; i < b->ast->nstmts; i++) {
     const bg_ast_stmt *s = &b->ast->stmts[i];
@@ -396,6 +474,8 @@ void bg_build_statements(bg_build *b) {
     case BG_ST_SIMULATE: if (once(b, s, &sim, "simulate")) st_simulate(b, s); break;
     case BG_ST_LAYOUT: if (once(b, s, &layout, "layout")) st_layout(b, s); break;
     case BG_ST_PLOT: st_plot(b, s); break;
+    case BG_ST_OUTPUT: st_output(b, s); break;
+    case BG_ST_LINEARISE: if (once(b, s, &lin, "linearise")) st_linearise(b, s); break;
     case BG_ST_STATE: st_state(b, s); break;
     case BG_ST_BOND: st_bond(b, s, bond++); break;
     default: break;

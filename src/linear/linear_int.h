@@ -1,0 +1,21 @@
+/* Internals of the linear analysis shared by its files. Not a public interface. */
+#ifndef BG_LINEAR_INT_H
+#define BG_LINEAR_INT_H
+#include <complex.h>
+
+#include "linear/linear.h"
+
+/* linear_point.c: the operating point into y (n = bg_eqsys_n); notes go to
+ * `note`. 0, or -1 when there is no usable point (note says why). */
+int bg_lin_point(bg_eqsys *s, double t, int steady, double *y, bg_strbuf *note);
+/* linear_reduce.c: A, B, C, D from the descriptor form, or reduce_note. */
+void bg_lin_reduce(bg_linear *l, const int *is_diff);
+/* linear_tf.c: poles of the linearisation and the transfer functions. */
+void bg_lin_poles(bg_linear *l);
+void bg_lin_tfs(bg_linear *l);
+/* H(s) for pair (iy, iu) by a dense complex solve of the system in use
+ * (reduced when l->reduced, else descriptor). */
+double complex bg_lin_eval(const bg_linear *l, int iy, int iu, double complex s);
+/* Column-major n x n product C = A B (small dense helpers). */
+void bg_lin_matmul(int m, int k, int n, const double *A, const double *B, double *C);
+#endif
