@@ -43,6 +43,11 @@ static void stats(rp_ctx *c, const bg_simresult *r) {
   row(&t, "Nonlinear iterations", "%ld", r->nonlin_iters);
   if (r->ic_report && *r->ic_report) row(&t, "Initial values changed", "%s", r->ic_report);
   if (r->ic_retries) row(&t, "Initial guesses retried", "%d", r->ic_retries);
+  if (r->max_step > 0) row(&t, "Largest step allowed", "%g s", r->max_step);
+  if (r->rows_redone) row(&t, "Intervals integrated again", "%d (an output row violated the algebraic equations)", r->rows_redone);
+  bg_strbuf w = {0};
+  if (bg_simresult_row_warning(r, &w)) row(&t, "Warning", "%s", bg_sb_str(&w));
+  bg_sb_free(&w);
   rp_table_emit(&c->body, &t);
 }
 

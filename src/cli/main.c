@@ -131,6 +131,9 @@ static int simulate(run *r) {
   r->simulated = 1;
   if (r->sim.ic_report && !r->opts.quiet && !r->opts.verbose) /* -v printed it already */
     fprintf(stderr, "bgdraw: note: initial values made consistent: %s\n", r->sim.ic_report);
+  bg_strbuf w = {0};
+  if (bg_simresult_row_warning(&r->sim, &w)) fprintf(stderr, "bgdraw: warning: %s\n", bg_sb_str(&w));
+  bg_sb_free(&w);
   if (rc == 0) {
     if (r->opts.verbose && r->sim.solver_reason)
       fprintf(stderr, "bgdraw: solver %s: %s\n", r->sim.solver_used, r->sim.solver_reason);

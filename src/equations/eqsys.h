@@ -103,5 +103,13 @@ int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, d
 /* Times in (t0, t1) where an input is discontinuous (step, pulse and table
  * breakpoints of inputs and sources that depend on t only), sorted, unique;
  * returns the count (at most max written). */
+/* The shortest period of the periodic functions of time (sin, cos, tan) in
+ * the sources and inputs, from their angular rate at t0 and t1 (the larger);
+ * 0 when there is none. The simulation keeps its steps below a fraction of
+ * it (docs/simulation.md, "Steps against the inputs"). */
+double bg_eqsys_input_period(const bg_eqsys *s, double t0, double t1);
+/* 1 for rows that are algebraic equations (an algebraic unknown's residual,
+ * a dependent store's constraint): output rows must satisfy them. */
+int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i);
 int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times, int max);
 #endif

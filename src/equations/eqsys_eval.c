@@ -205,3 +205,36 @@ int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times,
   free(L.v);
   return cnt;
 }
+
+/* ------------------------------------------------------------ input periods */
+/* The angular rate |d arg/dt| of a periodic function of time at t, by a
+ * central difference; NaN when arg reads more than t and params. */
+static double rate_at(const bg_model *m, int arg, double t, double h) {
+  bg_xenv a = {t - h, NULL, NULL, NULL, NULL, NULL}, b = a;
+  b.t = t + h;
+  return fabs(bg_xeval(m, arg, &b) - bg_xeval(m, arg, &a)) / (2 * h);
+}
+
+static void period_walk(const bg_model *m, int root, double t0, double t1, double *best) {
+  const bg_xnode *n = &m->xnode[root];
+  if (n->op == BG_X_CALL && n->nargs == 1 &&
+      (n->ref == BG_FN_SIN || n->ref == BG_FN_COS || n->ref == BG_FN_TAN)) {
+    double h = 1e-6 * fmax(t1 - t0, 1e-300), half = (n->ref == BG_FN_TAN ? 1 : 2) * 3.14159265358979323846;
+    double w = fmax(rate_at(m, n->arg[0], t0, h), rate_at(m, n->arg[0], t1, h));
+    if (isfinite(w) && w > 0 && (*best == 0 || half / w < *best)) *best = half / w;
+  }
+  if (n->op == BG_X_INPUT) period_walk(m, m->input_expr[n->ref], t0, t1, best);
+  else if (n->op != BG_X_NUM)
+    for (int k = 0; k < n->nargs; k++) period_walk(m, n->arg[k], t0, t1, best);
+}
+
+double bg_eqsys_input_period(const bg_eqsys *s, double t0, double t1) {
+  const bg_model *m = s->m;
+  double best = 0;
+  for (int e = 0; e < m->nelem; e++)
+    if (bg_elem_is_source(m->elem_kind[e]) && m->elem_expr[e] >= 0) period_walk(m, m->elem_expr[e], t0, t1, &best);
+  for (int k = 0; k < m->ninput; k++) period_walk(m, m->input_expr[k], t0, t1, &best);
+  return best;
+}
+
+int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i) { return s->row_kind[i] != 0; }

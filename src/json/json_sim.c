@@ -50,6 +50,19 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
   bg_sb_printf(o, ",\n    \"initial_values\": {\"changed\": %s, \"guess_retries\": %d, \"report\": ",
                r->consistent_ic_changed ? "true" : "false", r->ic_retries);
   str_or_null(o, r->ic_report);
+  bg_sb_printf(o, "},\n    \"row_check\": {\"rows_redone\": %d, \"rows_violating\": %d, \"worst\": ",
+               r->rows_redone, r->rows_violating);
+  if (r->rows_violating) bg_sb_json_num(o, r->row_worst);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ", \"worst_t\": ");
+  if (r->rows_violating) bg_sb_json_num(o, r->row_worst_t);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ", \"worst_unknown\": ");
+  str_or_null(o, r->rows_violating ? r->row_worst_unknown : NULL);
+  bg_sb_puts(o, ", \"warning\": ");
+  bg_strbuf w = {0};
+  str_or_null(o, bg_simresult_row_warning(r, &w) ? bg_sb_str(&w) : NULL);
+  bg_sb_free(&w);
   bg_sb_puts(o, "}\n  }");
 }
 

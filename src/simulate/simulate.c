@@ -336,6 +336,23 @@ static int simulate_algebraic(const bg_model *m, bg_eqsys *s, bg_simresult *r) {
   return rc;
 }
 
+/* The model's max_step, and at most 1/SIM_STEPS_PER_PERIOD of the shortest
+ * period of a periodic input: the error test only sees the solution at the
+ * steps, and a model whose states barely move while a diode is off lets the
+ * step grow over a whole conduction interval (docs/simulation.md). */
+#define SIM_STEPS_PER_PERIOD 20
+static double step_limit(bg_eqsys *s, const bg_model *m, const bg_sim_opts *o) {
+  double h = m->sim.max_step, per = bg_eqsys_input_period(s, m->sim.t0, m->sim.t_end);
+  double lim = per / SIM_STEPS_PER_PERIOD;
+  if (per > 0 && (h <= 0 || lim < h)) {
+    h = lim;
+    if (o && o->verbose)
+      fprintf(stderr, "bgdraw: simulate: steps of at most %.6g s (1/%d of the shortest input "
+                      "period, %.6g s)\n", h, SIM_STEPS_PER_PERIOD, per);
+  }
+  return h;
+}
+
 int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                 bg_simresult *r) {
   memset(r, 0, sizeof *r);
@@ -365,7 +382,8 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
   p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : SIM_DEFAULT_RTOL;
   double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
-  p.max_step = m->sim.max_step;
+  p.max_step = step_limit(s, m, o);
+  r->max_step = p.max_step;
   p.max_steps = SIM_MAX_STEPS;
   p.verbose = o ? o->verbose : 0;
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
@@ -388,6 +406,9 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
                     "Jacobian evaluations, %ld error test failures, %ld nonlinear iterations\n",
             rc ? "failed" : "done", (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec),
             r->nrows, r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
+  if (p.verbose && r->rows_redone)
+    fprintf(stderr, "bgdraw: simulate: %d output interval%s integrated again with short steps: "
+                    "the row violated the algebraic equations\n", r->rows_redone, r->rows_redone == 1 ? "" : "s");
   free(atolv), free(times), free(bp), free(bn.ids);
   return rc;
 }
@@ -402,4 +423,14 @@ void bg_simresult_free(bg_simresult *r) {
   free(r->y0);
   free(r->yp0);
   memset(r, 0, sizeof *r);
+}
+
+int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out) {
+  if (r->rows_violating <= 0) return 0;
+  bg_sb_printf(out, "%d output row%s violate%s the algebraic equations beyond the tolerance even "
+                    "after integrating again with short steps (worst: the equation of %s at t = %.9g, "
+                    "%.3g times the tolerance); do not trust those rows: tighten rtol or set max_step",
+               r->rows_violating, r->rows_violating == 1 ? "" : "s", r->rows_violating == 1 ? "s" : "",
+               r->row_worst_unknown ? r->row_worst_unknown : "?", r->row_worst_t, r->row_worst);
+  return 1;
 }

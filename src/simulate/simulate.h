@@ -46,6 +46,12 @@ typedef struct bg_simresult {
                           from (after IDACalcIC for IDA); NULL when refused */
   const char *linear_solver; /* "dense" or "klu"; NULL when refused */
   double rtol, atol;   /* the tolerances used (atol before the per-store scaling) */
+  /* IDA: output rows whose algebraic residuals exceeded the tolerance after
+   * the interval was integrated again with short steps (docs/simulation.md);
+   * the worst of them in units of the tolerance, its time and unknown */
+  int rows_redone, rows_violating;
+  double row_worst, row_worst_t, max_step; /* max_step: the limit used, 0 none */
+  const char *row_worst_unknown; /* borrowed from the eqsys */
   int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
                           after the model's own failed (0: the model's worked) */
 } bg_simresult;
@@ -59,6 +65,9 @@ typedef struct bg_simresult {
 int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                 bg_simresult *r);
 void bg_simresult_free(bg_simresult *r);
+/* The warning for output rows that violate the algebraic equations beyond
+ * the tolerance (r->rows_violating): appends it to out and returns 1, else 0. */
+int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out);
 
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a
