@@ -178,10 +178,12 @@ def hydraulic_bridge():
     eq(c, "causality", caus(d), [("R1", "conductance", False), ("R2", "conductance", False),
                                  ("R3", "conductance", False), ("R4", "conductance", False),
                                  ("mp", "integral", False), ("Rb", "resistance", False)])
-    # exactly a type 1 conflict at n1 and one at n4; two algebraic state
-    # variables (Equations 4.51: the pressures p1 and p4 of the text's Figure 4.25)
-    eq(c, "conflicts", conflicts(d), [("n1", 1, 0, [1, 2, 10]), ("n4", 1, 0, [4, 5, 14])])
-    summary(c, d, ["mp.p"], [], ["R1.e", "R4.e"], "dae", 1, 1)
+    # Figure 4.25 (resistors assigned one at a time): a type 2 conflict of
+    # degree 1 at the 1-junction ja (bonds 2 and 3 both determine its flow;
+    # bond 2's flow, the chapter's Q5, is the input) and a type 1 conflict at
+    # n4; algebraic state variables R2.e and R4.e (the chapter's p4 and p2)
+    eq(c, "conflicts", conflicts(d), [("ja", 2, 1, [2, 3]), ("n4", 1, 0, [4, 5, 14])])
+    summary(c, d, ["mp.p"], [], ["R2.e", "R4.e"], "dae", 1, 1)
 
 
 def bridge_compliance():

@@ -183,34 +183,34 @@ static void resistors(bg_ceng *E) {
   }
 }
 
-/* Relaxed: every nonlinear R still open gets its law's causality, all at
- * once, then propagation resumes; junction rules broken here stay broken. */
+/* Relaxed (Joseph-Martens, Section 4.9): each nonlinear R still open gets
+ * its law's causality, one at a time in file order ("assigned in the order
+ * R1, R2, R3, R4"), each followed by propagation, which may complete a
+ * junction by elimination before the next resistor is assigned; the
+ * resistors not yet assigned stay blocked, so propagation never decides
+ * them. Junction rules broken here stay broken. (Assigning all of them in
+ * one step would leave every junction between two of them to whichever
+ * resistor's stroke propagated first: on the hydraulic bridge two type 1
+ * conflicts instead of Figure 4.25's type 1 and type 2.) */
 static void nonlinear_resistors(bg_ceng *E) {
   const bg_model *m = E->m;
   for (int e = 0; e < m->nelem; e++) /* decided earlier by a fixed stroke or a source */
     if (bg_ceng_r_nonlinear(m, e) && bg_ceng_port(E, e) >= 0 &&
         !bg_ceng_open(E, bg_ceng_port(E, e)))
       resistor_note(E, e);
-  bg_strbuf sb = {0};
-  int n = 0;
-  begin_step(E);
   for (int e = 0; e < m->nelem; e++) {
     int b = bg_ceng_port(E, e);
     if (b < 0 || !bg_ceng_r_nonlinear(m, e) || !bg_ceng_open(E, b)) continue;
     int caus = bg_ceng_r_natural(m, e);
+    bg_strbuf sb = {0};
+    begin_step(E);
+    int mark = E->nlog;
     bg_ceng_set(E, b, bg_ceng_oneport_stroke(E, e, caus), BG_REASON_RESISTOR);
-    bg_sb_printf(&sb, "%s%s (%s, bond %d)",
-                 n++ ? ", " : "relaxed: the nonlinear resistors get their laws' causality "
-                              "all at once: ",
+    bg_ceng_propagate(E);
+    bg_sb_printf(&sb, "relaxed: nonlinear %s gets its law's %s causality (bond %d)",
                  m->elem_name[e], bg_caus_name(caus), m->bond_num[b]);
+    finish_step(E, mark + 1, &sb);
   }
-  if (n == 0) {
-    bg_sb_free(&sb);
-    return;
-  }
-  int first_prop = E->nlog;
-  bg_ceng_propagate(E);
-  finish_step(E, first_prop, &sb);
 }
 
 /* Step 4: the first open internal bond (both ends junction-structure nodes)

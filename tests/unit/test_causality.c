@@ -181,9 +181,17 @@ static void test_hydraulic_bridge_relaxed(void) {
     INT_EQ(inverted(&r, rs[i]), 0);
   }
   STR_EQ(caus(&r, "mp"), "integral");
-  STR_EQ(conflicts(&r), "type 1 at n1 [1,2,10]; type 1 at n4 [4,5,14]");
+  /* Figure 4.25: one resistor at a time (R1, R2, R3, R4). R1 leaves n1 with
+   * one open bond, which propagation completes (bond 2 strong at n1, so
+   * strong at ja too); R2 then gives ja a second determining flow: type 2 of
+   * degree 1. R3 makes bond 5 weak at n4, R4 its last bond: no bond
+   * determines n4's effort, type 1. */
+  STR_EQ(conflicts(&r), "type 2/1 at ja [2,3]; type 1 at n4 [4,5,14]");
   INT_EQ(r.a.complete, 1);
-  OK(trace_has(&r, "all at once: R1 (conductance, bond 1), R2 (conductance, bond 3)"));
+  OK(trace_has(&r, "relaxed: nonlinear R1 gets its law's conductance causality (bond 1); "
+                   "propagated to bond 2"));
+  OK(trace_has(&r, "relaxed: nonlinear R3 gets its law's conductance causality (bond 6); "
+                   "propagated to bond 5"));
   run_free(&r);
 }
 

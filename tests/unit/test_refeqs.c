@@ -1,5 +1,5 @@
 /* The reference's equations, written here by hand from the chapter
- * (Equations 4.1, 4.26/4.27, 4.31, 4.33, 4.35, 4.44), against the engine's
+ * (Equations 4.1, 4.26/4.27, 4.31, 4.33, 4.35, 4.44, 4.49-4.51), against the engine's
  * residuals and right-hand sides at deterministic pseudo-random points.
  *
  * For linear examples the points are arbitrary (algebraic unknowns not
@@ -83,6 +83,43 @@ static void test_hydraulic_bridge(void) {
      * m v' = A [(pS - p4) - (pS - p1)] - b v */
     double vdot = -p.r[iv] / m;
     REL(m * vdot, A * ((pS - p4) - (pS - p1)) - b * v, A * pS + fabs(b * v), "4.1f");
+  }
+  efx_free(&f);
+}
+
+/* ------------------------------------------------------------ Eq. 4.51 */
+/* Relaxed causality (Figure 4.25). The chapter's numbering there is not
+ * Figure 4.2's: its R1 and R4 are the supply-side orifices, R2 and R3 the
+ * tank-side ones, p2 is the pressure of the chamber the piston compresses and
+ * p4 the pressure drop across R4. In the model: chapter R1 = R3 (jb), R2 = R4
+ * (n4), R3 = R1 (n1), R4 = R2 (ja); p2 = R4.e (n4's effort), p4 = R2.e, the
+ * other chamber's pressure pS - p4 = n1's effort; Q5 (the input chosen at
+ * the type 2 conflict) = f2. The engine's rows must be 4.51a, b exactly (same
+ * sign) at arbitrary points, and its state row 4.51c with the model's
+ * damper: m v' = A [(pS - p4) - p2] - b v. */
+static void test_hydraulic_bridge_relaxed(void) {
+  efx f;
+  OK(efx_load(&f, "hydraulic_bridge", NULL, BG_METHOD_RELAXED, NULL, 0) == 0);
+  if (!f.s) { efx_free(&f); return; }
+  const double pS = 1e7, Kv = 2e-8, ptk = 1e5, A = 5e-4, m = 10, b = 2e3, x0 = 0.2;
+  INT_EQ(bg_eqsys_n(f.s), 3);
+  int iv = U(&f, "mp.p"), ip4 = U(&f, "R2.e"), ip2 = U(&f, "R4.e");
+  unsigned st = 43;
+  for (int k = 0; k < 12; k++) {
+    pt p = {0};
+    p.t = R(&st, -0.01, 0.01);
+    double u = x0 * stepf(p.t);
+    p.y[iv] = m * R(&st, -2, 2), p.y[ip4] = R(&st, -2e7, 2e7), p.y[ip2] = R(&st, -2e7, 2e7);
+    OK(engine_eval(&f, &p) == 0);
+    double v = p.y[iv] / m, p2 = p.y[ip2], p4 = p.y[ip4];
+    /* g1..g4: the chapter's orifices (openings 1 + u on the model's R1, R3) */
+    double g1 = g_or(Kv, 1 + u, ptk, pS - p2), g2 = g_or(Kv, 1 - u, ptk, p2);
+    double g3 = g_or(Kv, 1 + u, ptk, pS - p4), g4 = g_or(Kv, 1 - u, ptk, p4);
+    REL(p.r[ip2], g1 + A * v - g2, fabs(g1) + fabs(g2), "4.51a (row of p2 = R4.e)");
+    REL(p.r[ip4], g4 - g3 - A * v, fabs(g3) + fabs(g4), "4.51b (row of p4 = R2.e)");
+    REL(-p.r[iv], A * ((pS - p4) - p2) - b * v, A * (pS + fabs(p4) + fabs(p2)), "4.51c");
+    REL(p.F[2], g3 + A * v, fabs(g3), "4.49: Q5 = g3(pS - p4) + A v");
+    REL(p.F[3], g4, 0, "4.50: Q4 = g4(p4)");
   }
   efx_free(&f);
 }
@@ -355,6 +392,7 @@ static void lagrange_rlc_case(const char *set, double val) {
 
 int main(void) {
   test_hydraulic_bridge();
+  test_hydraulic_bridge_relaxed();
   bond_loop_case(NULL, 0);
   bond_loop_case("C0", 3);
   bond_loop_case("n", 0.4);
