@@ -83,7 +83,8 @@ def zero_order(d):
 
 
 def loops(d):
-    return [(l["bonds"], l["gain"], l["class"], l["mesh"]) for l in d["causal_loops"]]
+    # the last item: a "mesh" key is present (never: docs/analysis.md, causal meshes)
+    return [(l["bonds"], l["gain"], l["class"], "mesh" in l) for l in d["causal_loops"]]
 
 
 def algebraic_tloops(d):
@@ -246,7 +247,7 @@ def bond_loop():
     eq(c, "chosen bonds", choices(d), [1])
     trace_has(c, d, "choice: internal bond 1")
     # exactly one causal loop {1,2,3,4}, gain n (2), class 4
-    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "n", 4, None)])
+    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "n", 4, False)])
     check_gains(c, "causal loops", d["causal_loops"], [2.0])
     # two open zero-order topological loops of opposite orientation, gain n each
     eq(c, "algebraic loops", algebraic_tloops(d), [
@@ -261,7 +262,7 @@ def bond_loop():
     c = "bond_loop n=1"
     d = analyse("bond_loop_n1", "bond_loop", ["--set", "n=1"])
     # gain +1, class 5, singular junction structure, predicted index above 1
-    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "n", 5, None)])
+    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "n", 5, False)])
     check_gains(c, "causal loops", d["causal_loops"], [1.0])
     eq(c, "rosenberg_andry", d["rosenberg_andry"], {"disjoint": True, "satisfied": False})
     eq(c, "index.predicted", d["index"]["predicted"], 2)
@@ -270,7 +271,7 @@ def bond_loop():
     c = "bond_loop reversed bond 2"
     d = analyse("bond_loop_rev", "bond_loop", edits=[("bond 2 jB -> jC", "bond 2 jC -> jB")])
     # the gain becomes -n
-    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "-n", 4, None)])
+    eq(c, "causal loops", loops(d), [([1, 2, 3, 4], "-n", 4, False)])
     check_gains(c, "causal loops", d["causal_loops"], [-2.0])
 
 
@@ -300,7 +301,7 @@ def class12_paths():
     # through {3,6,7,10}; the trace says which choice was made at which step
     eq(c, "causality", caus(d), [("C1", "integral", False), ("C2", "integral", False),
                                  ("R1", "conductance", False), ("R2", "conductance", False)])
-    eq(c, "causal loops", loops(d), [([3, 6, 7, 10], "n", 4, None)])
+    eq(c, "causal loops", loops(d), [([3, 6, 7, 10], "n", 4, False)])
     check_gains(c, "causal loops", d["causal_loops"], [2.0])
     eq(c, "chosen bonds", choices(d), [3])
     step = [b["step"] for b in d["bonds"] if b["id"] == 3][0]
@@ -315,7 +316,7 @@ def loop_class1():
     eq(c, "causality", caus(d), [("C1", "integral", False), ("C2", "derivative", False),
                                  ("L", "integral", False)])
     # exactly one causal loop {2,6,7,8}, gain n1, class 4
-    eq(c, "causal loops", loops(d), [([2, 6, 7, 8], "n1", 4, None)])
+    eq(c, "causal loops", loops(d), [([2, 6, 7, 8], "n1", 4, False)])
     check_gains(c, "causal loops", d["causal_loops"], [2.0])
     # class 1 paths {1,2,3,4,5} and {1,2,6,7,9,5}, both sharing bonds with the loop
     z = zero_order(d)
@@ -338,7 +339,7 @@ def delta():
                                  ("L2", "integral", False)])
     eq(c, "chosen bonds", choices(d), [2])
     # exactly one causal loop through the six internal bonds, gain +1, class 5
-    eq(c, "causal loops", loops(d), [([2, 3, 8, 9, 6, 5], "1", 5, None)])
+    eq(c, "causal loops", loops(d), [([2, 3, 8, 9, 6, 5], "1", 5, False)])
     eq(c, "loop bonds", sorted(d["causal_loops"][0]["bonds"]) if d["causal_loops"] else [],
        [2, 3, 5, 6, 8, 9])
     check_gains(c, "causal loops", d["causal_loops"], [1.0])

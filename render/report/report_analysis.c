@@ -117,15 +117,6 @@ static void paths_table(rp_ctx *c) {
   more_rows(c, n, a->npath, a->npath_omitted, "causal paths");
 }
 
-static const char *mesh_name(int mesh) {
-  switch (mesh) {
-  case BG_MESH_EVEN: return "even";
-  case BG_MESH_ODD: return "odd";
-  case BG_MESH_NEUTRAL: return "neutral";
-  default: return "\u2013";
-  }
-}
-
 static void cloops_table(rp_ctx *c) {
   const bg_analysis *a = c->a;
   rp_subsection(&c->body, "Causal loops", 60);
@@ -133,9 +124,9 @@ static void cloops_table(rp_ctx *c) {
     para(c, "No causal loops (closed causal paths).");
     return;
   }
-  static const char *head[] = {"#", "Bonds", "Gain", "Value", "Class", "Mesh"};
+  static const char *head[] = {"#", "Bonds", "Gain", "Value", "Class"};
   rp_table t;
-  rp_table_init(&t, 6, head, "rllrrl");
+  rp_table_init(&t, 5, head, "rllrr");
   int n = cap_rows(a->ncloop);
   for (int k = 0; k < n; k++) {
     rp_table_cell(&t, "%d", k + 1);
@@ -143,7 +134,6 @@ static void cloops_table(rp_ctx *c) {
     eq_cell(&t, a->cloop_gain[k]);
     num_cell(&t, a->cloop_gain_value[k]);
     rp_table_cell(&t, "%d", a->cloop_class[k]);
-    rp_table_cell(&t, "%s", mesh_name(a->cloop_mesh[k]));
   }
   rp_table_emit(&c->body, &t);
   more_rows(c, n, a->ncloop, a->ncloop_omitted, "causal loops");

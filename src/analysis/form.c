@@ -21,7 +21,6 @@ static int out_sig(const bg_model *m, const bg_analysis *a, int node, int b) {
 }
 
 static int is_source(int k) { return k <= BG_ELEM_MSF; }
-static int is_gy(int k) { return k == BG_ELEM_GY || k == BG_ELEM_MGY; }
 
 /* ------------------------------------------------------------ topological loops */
 typedef struct tl {
@@ -178,7 +177,7 @@ static int on_cycle(void *ctx, const int *node, int n) {
 
 static int nearly_one(double g) { return fabs(g - 1.0) <= 16 * DBL_EPSILON * fmax(1.0, fabs(g)); }
 
-static void cloop_fill(tlist *T, int l, const bg_gain *g1, const bg_gain *g2, int *nodes) {
+static void cloop_fill(tlist *T, int l, const bg_gain *g1, const bg_gain *g2) {
   bg_analysis *a = T->a;
   bg_gain tmp = *g1;
   a->cloop_gain[l] = g1->ok ? bg_gain_text(&tmp, &a->arena) : bg_arena_strdup(&a->arena, "?");
@@ -186,13 +185,8 @@ static void cloop_fill(tlist *T, int l, const bg_gain *g1, const bg_gain *g2, in
   /* class 5 when an open loop has gain +1 (the two are equal without
    * gyrators, Definition 4.16; either one at +1 makes the loop singular) */
   a->cloop_class[l] = (g1->ok && nearly_one(g1->value)) || (g2->ok && nearly_one(g2->value)) ? 5 : 4;
-  int ngy = 0;
-  for (int i = 0; i < a->cloop_n[l]; i++) ngy += is_gy(T->m->elem_kind[nodes[i]]);
-  a->cloop_mesh[l] = BG_MESH_NONE;
-  if (ngy % 2 == 1 && g1->ok && g2->ok) {
-    int p1 = g1->value > 0, p2 = g2->value > 0;
-    a->cloop_mesh[l] = p1 && p2 ? BG_MESH_EVEN : !p1 && !p2 ? BG_MESH_ODD : BG_MESH_NEUTRAL;
-  }
+  /* No causal mesh classification (Brown's even / odd / neutral): a closed
+   * causal path passes an even number of gyrators (docs/analysis.md). */
 }
 
 static void cloops_disjoint(const bg_model *m, bg_analysis *a) {
@@ -253,7 +247,7 @@ static void find_tloops(tlist *T) {
   for (int l = 0; l < a->ncloop; l++) {
     bg_gain g1, g2;
     tl_from_cloop(T, l, nodes, s, &g1, &g2);
-    cloop_fill(T, l, &g1, &g2, nodes);
+    cloop_fill(T, l, &g1, &g2);
     bg_gain_free(&g1);
     bg_gain_free(&g2);
   }

@@ -359,7 +359,6 @@ static void cloops_store(const bg_model *m, bg_analysis *a, const recs *r) {
   a->cloop_gain = bg_arena_alloc(ar, sizeof(char *) * (size_t)(n + 1));
   a->cloop_gain_value = bg_arena_alloc(ar, sizeof(double) * (size_t)(n + 1));
   a->cloop_class = bg_arena_alloc(ar, sizeof(int) * (size_t)(n + 1));
-  a->cloop_mesh = bg_arena_alloc(ar, sizeof(int) * (size_t)(n + 1));
 }
 
 void bg_cloops_find(const bg_model *m, bg_analysis *a, int max_loops) {

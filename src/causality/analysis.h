@@ -24,7 +24,6 @@ typedef enum {
 } bg_causality;
 
 typedef enum { BG_FORM_ODE, BG_FORM_DAE, BG_FORM_INCOMPLETE } bg_model_form;
-typedef enum { BG_MESH_NONE, BG_MESH_EVEN, BG_MESH_ODD, BG_MESH_NEUTRAL } bg_mesh;
 typedef enum { BG_TLOOP_FLAT, BG_TLOOP_OPEN } bg_tloop_kind;
 /* path_order of a path with a source end: it closes no loop (Remark 4.1);
  * the JSON writes null. */
@@ -88,7 +87,6 @@ typedef struct bg_analysis {
   char **cloop_gain;        /* symbolic */
   double *cloop_gain_value;
   int *cloop_class;         /* 4 or 5 */
-  int *cloop_mesh;          /* bg_mesh */
   int cloops_disjoint;      /* pairwise disjoint */
   int rosenberg_andry;      /* disjoint and no gain +1 */
 

@@ -139,15 +139,6 @@ static void put_paths(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   end_list(o, a->npath);
 }
 
-static const char *mesh_name(int mesh) {
-  switch (mesh) {
-  case BG_MESH_EVEN: return "even";
-  case BG_MESH_ODD: return "odd";
-  case BG_MESH_NEUTRAL: return "neutral";
-  default: return NULL;
-  }
-}
-
 static void put_cloops(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   key(o, "causal_loops");
   bg_sb_putc(o, '[');
@@ -161,9 +152,8 @@ static void put_cloops(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
     bg_sb_json_num(o, a->cloop_gain_value ? a->cloop_gain_value[i] : NAN);
     bg_sb_puts(o, ", \"class\": ");
     int_or_null(o, a->cloop_class ? a->cloop_class[i] : 0, !a->cloop_class);
-    bg_sb_puts(o, ", \"mesh\": ");
-    str_or_null(o, a->cloop_mesh ? mesh_name(a->cloop_mesh[i]) : NULL);
-    bg_sb_putc(o, '}');
+    bg_sb_putc(o, '}'); /* no "mesh": a causal loop never passes an odd number of
+                           gyrators (docs/analysis.md, "Causal meshes") */
   }
   end_list(o, a->ncloop);
 }

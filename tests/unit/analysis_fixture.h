@@ -99,9 +99,9 @@ __attribute__((unused)) static void fx_dump(const fx *f) {
            fx_bonds(m, a->path_bonds + a->path_adr[p], a->path_n[p]), m->elem_name[a->path_end0[p]],
            m->elem_name[a->path_end1[p]], a->path_kind[p], a->path_class[p], a->path_order[p]);
   for (int l = 0; l < a->ncloop; l++)
-    printf(" cloop %d: {%s} gain %s = %g class %d mesh %d\n", l + 1,
+    printf(" cloop %d: {%s} gain %s = %g class %d\n", l + 1,
            fx_bonds(m, a->cloop_bonds + a->cloop_adr[l], a->cloop_n[l]), a->cloop_gain[l],
-           a->cloop_gain_value[l], a->cloop_class[l], a->cloop_mesh[l]);
+           a->cloop_gain_value[l], a->cloop_class[l]);
   for (int t = 0; t < a->ntloop; t++)
     printf(" tloop %d: %s order %d [%s] gain %s = %g alg %d cause %s\n", t + 1,
            a->tloop_kind[t] ? "open" : "flat", a->tloop_order[t],

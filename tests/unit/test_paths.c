@@ -165,7 +165,6 @@ static void test_bond_loop(void) {
     STR_EQ(f.a.cloop_gain[0], "n");
     DBL_NEAR(f.a.cloop_gain_value[0], 2.0, 1e-12);
     INT_EQ(f.a.cloop_class[0], 4);
-    INT_EQ(f.a.cloop_mesh[0], BG_MESH_NONE);
   }
   OK(f.a.cloops_disjoint);
   OK(f.a.rosenberg_andry);
@@ -349,7 +348,7 @@ static void test_gyrator_mesh(void) {
   INT_EQ(f.a.index_predicted, 2);
   fx_free(&f);
   /* through two gyrators the loop closes: gain r2/r1 on both open loops,
-   * class 4, no mesh (an even number of gyrators) */
+   * class 4 (an even number of gyrators, so not a mesh) */
   TEXT(f, "model mesh2\nparam r1 = 2, r2 = 3\nSf F = 1\n0 jA\n1 jB\n0 jC\nC Cs = 1\n"
           "I Is = 1\nGY g1 = r1\nGY g2 = r2\nbond 1 jA -> jB\nbond 2 jB -> jC\n"
           "bond 3 jC -> g1\nbond 4 g1 -> g2\nbond 5 g2 -> jA\nbond 6 F -> jA\n"
@@ -360,7 +359,6 @@ static void test_gyrator_mesh(void) {
     STR_EQ(f.a.cloop_gain[0], "r2/r1");
     DBL_NEAR(f.a.cloop_gain_value[0], 1.5, 1e-12);
     INT_EQ(f.a.cloop_class[0], 4);
-    INT_EQ(f.a.cloop_mesh[0], BG_MESH_NONE);
   }
   int nopen = 0;
   for (int t = 0; t < f.a.ntloop; t++)
@@ -371,6 +369,64 @@ static void test_gyrator_mesh(void) {
   INT_EQ(nopen, 2);
   OK(f.a.rosenberg_andry);
   INT_EQ(f.a.index_predicted, 1);
+  fx_free(&f);
+}
+
+/* The other places a causal mesh (Remark 4.8) was looked for; none closes a
+ * causal path through an odd number of gyrators (docs/analysis.md, "Causal
+ * meshes"). */
+static void test_gyrator_rings(void) {
+  fx f;
+  /* a ring of three gyrators between three junctions: ca's effort
+   * propagates around the whole ring; at a both ring bonds are weak, so the
+   * bond loop is no causal path. ca-lb passes one gyrator (C-I, class 1),
+   * ca-cc two (C-C, class 1) */
+  TEXT(f, "model ring3\nSf F = 1\n0 a\n1 b\n0 c\nGY g1 = 2\nGY g2 = 3\nGY g3 = 5\n"
+          "C ca = 1\nI lb = 1\nC cc = 1\nbond 1 F -> a\nbond 2 a -> g1\nbond 3 g1 -> b\n"
+          "bond 4 b -> g2\nbond 5 g2 -> c\nbond 6 c -> g3\nbond 7 g3 -> a\nbond 8 a -> ca\n"
+          "bond 9 b -> lb\nbond 10 c -> cc\n", BG_METHOD_SCAP);
+  INT_EQ(f.a.ncloop, 0);
+  INT_EQ(f.a.nconflict, 0);
+  const char *ring3[] = {"1,8 F-ca S-* 0 -", "8,2,3,9 ca-lb C-I 1 0", "8,2,3,4,5,10 ca-cc C-C 1 0"};
+  check_paths(&f, ring3, 3);
+  STR_EQ(joined(f.a.dependent_stores, f.a.ndependent), "lb cc");
+  fx_free(&f);
+  /* one gyrator closing a loop of two junctions, resistors only: the bond
+   * loop is no causal path (at b both loop bonds are weak), but the
+   * order-0 subgraph has two open loops around it through rb's relation
+   * with gains -rb/r = -3/2 (e2 e4 f3 f6 e6) and +rb/r = +3/2 (f2 f6 e6 e3
+   * f4): equal magnitude, opposite signs, like Brown's neutral mesh, yet
+   * not closed causal paths; and the class 2 path ra-rb through the
+   * gyrator, flat loop gain -ra*rb/r^2 = -3/4 */
+  TEXT(f, "model ring1\nSe E = 1\n1 a\n0 b\nGY g = 2\nR ra = 1\nR rb = 3\n"
+          "bond 1 E -> a\nbond 2 a -> b\nbond 3 b -> g\nbond 4 g -> a\nbond 5 a -> ra\n"
+          "bond 6 b -> rb\n", BG_METHOD_SCAP);
+  INT_EQ(f.a.ncloop, 0);
+  INT_EQ(f.a.nconflict, 0);
+  const char *ring1[] = {"1,4,3,6 E-rb S-* 0 -", "5,4,3,6 ra-rb R-R 2 0"};
+  check_paths(&f, ring1, 2);
+  INT_EQ(f.a.ntloop, 3);
+  if (f.a.ntloop == 3) {
+    DBL_NEAR(f.a.tloop_gain_value[0], -0.75, 1e-12);
+    DBL_NEAR(f.a.tloop_gain_value[1], -1.5, 1e-12);
+    DBL_NEAR(f.a.tloop_gain_value[2], 1.5, 1e-12);
+    INT_EQ(f.a.tloop_kind[1], BG_TLOOP_OPEN);
+    INT_EQ(f.a.tloop_kind[2], BG_TLOOP_OPEN);
+  }
+  fx_free(&f);
+  /* a gyrator between two junctions of one bond loop (a chord a-g-c of the
+   * loop a-b-c-d): SCAP must choose at bond 2, and neither orientation is
+   * consistent: a type 1 conflict at b, no causal loop */
+  TEXT(f, "model chord\nSf F = 1\n0 a\n1 b\n0 c\n1 d\nGY g = 2\nR r1 = 1\nR r2 = 2\n"
+          "C cb = 1\nI ld = 1\nbond 1 F -> a\nbond 2 a -> b\nbond 3 b -> c\nbond 4 c -> d\n"
+          "bond 5 d -> a\nbond 6 a -> g\nbond 7 g -> c\nbond 8 b -> cb\nbond 9 d -> ld\n"
+          "bond 10 b -> r1\nbond 11 d -> r2\n", BG_METHOD_SCAP);
+  INT_EQ(f.a.ncloop, 0);
+  INT_EQ(f.a.nconflict, 1);
+  if (f.a.nconflict == 1) {
+    INT_EQ(f.a.conflict_type[0], 1);
+    STR_EQ(f.m->elem_name[f.a.conflict_node[0]], "b");
+  }
   fx_free(&f);
 }
 
@@ -400,6 +456,7 @@ int main(void) {
   test_two_inertias();
   test_gyrator_chain();
   test_gyrator_mesh();
+  test_gyrator_rings();
   test_empty_junction_structure();
   test_hand_rlc();
   test_rlc();
