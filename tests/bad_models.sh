@@ -2,7 +2,8 @@
 # Runs bgdraw on every malformed model in tests/bad/ (and a few generated
 # ones) and checks: exit status 1, each "# expect: LINE:COL: MESSAGE" line of
 # the file appears in stderr as "FILE:LINE:COL: error: MESSAGE...", a caret
-# line is shown, and no output file was written.
+# line is shown, and no output file was written; "# absent: TEXT" must not
+# appear (an error that is a consequence of another is suppressed).
 # Usage: bash tests/bad_models.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 BGDRAW=${1:?usage: bad_models.sh PATH_TO_BGDRAW}
@@ -23,7 +24,15 @@ check() {
   local n=0
   while IFS= read -r line; do
     line=${line%$'\r'}
-    case $line in "# expect: "*) ;; *) continue ;; esac
+    case $line in
+      "# absent: "*) # a consequence of an earlier error that must not be reported
+        if grep -qF -- "${line#"# absent: "}" "$err"; then
+          echo "FAIL $file: reports '${line#"# absent: "}'"; ok=0
+        fi
+        continue ;;
+      "# expect: "*) ;;
+      *) continue ;;
+    esac
     n=$((n + 1))
     local want=${line#"# expect: "}
     local pos=${want%%: *} msg=${want#*: }

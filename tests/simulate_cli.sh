@@ -51,7 +51,7 @@ check "parallel_conductance Lk.f = 1 - (1 - 2t/3)^1.5" $?
 # refused for a conflict that constrains states (delta with R1 forced to
 # conductance, Figure 4.17): the remedy is a store at the junction, not vandijk
 sed 's/^R   R1 = R10/R   R1 = R10 [causality = conductance]/' examples/delta.bg >"$tmp/delta_c.bg"
-"$BGDRAW" "$tmp/delta_c.bg" --simulate 2>"$tmp/err"; st=$?
+"$BGDRAW" "$tmp/delta_c.bg" --simulate -o "$tmp/delta_c.csv" 2>"$tmp/err"; st=$?
 check "delta R1 conductance refused, exit 3 (got $st)" $((st != 3))
 grep -q 'type 1 conflict at nC' "$tmp/err" && grep -q 'small store (C at a 0-junction' "$tmp/err" &&
   ! grep -q -- '--causality vandijk' "$tmp/err"

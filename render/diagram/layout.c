@@ -5,6 +5,7 @@
 
 #include <graphviz/cgraph.h>
 #include <graphviz/gvc.h>
+#include <graphviz/graphviz_version.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -223,3 +224,5 @@ void bg_layout_copy(const bg_layout *src, bg_layout *out) {
   out->splx = ns ? dup_array(src->splx, ns, sizeof *out->splx) : NULL;
   out->sply = ns ? dup_array(src->sply, ns, sizeof *out->sply) : NULL;
 }
+
+const char *bg_layout_graphviz_version(void) { return PACKAGE_VERSION; }

@@ -45,4 +45,6 @@ int *bg_layout_depths(const bg_layout_in *in, int *order);
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */
 int bg_layout_engine_ok(const char *name);
+/* The Graphviz version bgdraw was built with ("2.43.0"). */
+const char *bg_layout_graphviz_version(void);
 #endif

@@ -95,4 +95,6 @@ void bg_diagram_free(bg_diagram *d);
 /* One-shot: build and write one file. Same returns as bg_diagram_write. */
 int bg_render_file(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
                    const char *path, const char *format, bg_diags *dg);
+/* "Graphviz X, cairo Y, pango Z": the rendering libraries bgdraw was built with. */
+void bg_render_versions(bg_strbuf *out);
 #endif

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "report/report_int.h"
 #include "analysis/summary.h"
@@ -197,6 +198,19 @@ static void summary_table(const rp_ctx *c, rp_doc *d) {
 }
 
 /* ---------------------------------------------------------------- title */
+/* The model's path as the report shows it: relative to the current
+ * directory, else only its file name, so a report built in CI does not
+ * carry the build machine's folders (and reruns elsewhere are identical). */
+static const char *shown_path(const char *path, char *buf, size_t n) {
+  if (path[0] != '/') return path;
+  char cwd[4096];
+  size_t k = getcwd(cwd, sizeof cwd) ? strlen(cwd) : 0;
+  if (k > 1 && !strncmp(path, cwd, k) && path[k] == '/') return path + k + 1;
+  const char *base = strrchr(path, '/');
+  snprintf(buf, n, "%s", base + 1);
+  return buf;
+}
+
 static void title_block(const rp_ctx *c, rp_doc *d) {
   const bg_model *m = c->m;
   rp_text(d, "bgdraw analysis report", rp_left(), d->y, RP_SIZE_H2, 0, rp_grey);
@@ -211,7 +225,10 @@ static void title_block(const rp_ctx *c, rp_doc *d) {
   bg_sb_puts(&b, "Model <b>");
   rp_esc(&b, m->name);
   bg_sb_puts(&b, "</b>");
-  if (m->path) bg_sb_puts(&b, " from <tt>"), rp_esc(&b, m->path), bg_sb_puts(&b, "</tt>");
+  char buf[4096];
+  if (m->path)
+    bg_sb_puts(&b, " from <tt>"), rp_esc(&b, shown_path(m->path, buf, sizeof buf)),
+        bg_sb_puts(&b, "</tt>");
   d->y += 4;
   rp_para(d, bg_sb_str(&b), RP_SIZE_BODY + 1, 0, 0, rp_ink);
   bg_sb_free(&b);

@@ -44,4 +44,7 @@ typedef struct bg_surface_outline {
  * creation date as in bg_surface_pdf_write) to out. 0, or -1 when cairo failed. */
 int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surface_outline *ol,
                          int nol, const char *title, bg_strbuf *out);
+/* The cairo and pango versions bgdraw was built with ("1.16.0"). */
+const char *bg_surface_cairo_version(void);
+const char *bg_surface_pango_version(void);
 #endif

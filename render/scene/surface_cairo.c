@@ -128,3 +128,6 @@ void bg_surface_replay(cairo_t *cr, const bg_scene *s) {
   }
   g_object_unref(ctx);
 }
+
+const char *bg_surface_cairo_version(void) { return CAIRO_VERSION_STRING; }
+const char *bg_surface_pango_version(void) { return PANGO_VERSION_STRING; }

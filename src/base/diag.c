@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "base/arena.h"
+#include "base/strbuf.h"
 
 void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen) {
   memset(d, 0, sizeof *d);
@@ -85,16 +86,19 @@ static const char *find_line(const bg_diags *d, line_cursor *c, int line, size_t
   return p;
 }
 
-static void print_one(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE *out) {
-  static const char *const sevname[] = {"error", "warning", "note"};
-  if (g->loc.line > 0)
-    fprintf(out, "%s:%d:%d: %s: %s\n", d->file, g->loc.line, g->loc.col,
-            sevname[g->sev], g->msg);
-  else
-    fprintf(out, "%s: %s: %s\n", d->file, sevname[g->sev], g->msg);
-  size_t len = 0;
-  const char *line = find_line(d, c, g->loc.line, &len);
-  if (!line) return;
+static int use_color, use_json;
+
+void bg_diags_set_output(int color, int json) {
+  use_color = color;
+  use_json = json;
+}
+
+static const char *const sevname[] = {"error", "warning", "note"};
+/* gcc's colours: bold positions, red errors, magenta warnings, cyan notes, green carets */
+static const char *const sevcolor[] = {"\033[1;31m", "\033[1;35m", "\033[1;36m"};
+#define COLOR(c) (use_color ? (c) : "")
+
+static void print_caret_line(const bg_diag *g, const char *line, size_t len, FILE *out) {
   /* A very long line (generated input) is shown as a window around the
    * caret, marked with "..." on the cut sides, so the caret stays visible. */
   enum { WIDTH = 100 };
@@ -107,7 +111,42 @@ static void print_one(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE 
           from + shown < len ? "..." : "", from ? "   " : "");
   /* Keep tabs so the caret lines up under the same column. */
   for (size_t i = from; i < col && i < len; i++) fputc(line[i] == '\t' ? '\t' : ' ', out);
-  fputs("^\n", out);
+  fprintf(out, "%s^%s\n", COLOR("\033[1;32m"), COLOR("\033[0m"));
+}
+
+static void print_one(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE *out) {
+  const char *bold = COLOR("\033[1m"), *sev = COLOR(sevcolor[g->sev]), *off = COLOR("\033[0m");
+  if (g->loc.line > 0)
+    fprintf(out, "%s%s:%d:%d:%s %s%s:%s %s\n", bold, d->file, g->loc.line, g->loc.col, off, sev,
+            sevname[g->sev], off, g->msg);
+  else
+    fprintf(out, "%s%s:%s %s%s:%s %s\n", bold, d->file, off, sev, sevname[g->sev], off, g->msg);
+  size_t len = 0;
+  const char *line = find_line(d, c, g->loc.line, &len);
+  if (line) print_caret_line(g, line, len, out);
+}
+
+static void json_fields(bg_strbuf *b, const bg_diags *d, const bg_diag *g) {
+  bg_sb_puts(b, "{\"file\":");
+  bg_sb_json_str(b, d->file);
+  bg_sb_printf(b, ",\"line\":%d,\"column\":%d,\"severity\":\"%s\",\"message\":", g->loc.line,
+               g->loc.col, sevname[g->sev]);
+  bg_sb_json_str(b, g->msg);
+}
+
+/* One line: the diagnostic and the notes that follow it in d. */
+static void print_json(const bg_diags *d, const bg_diag *g, FILE *out) {
+  bg_strbuf b = {0};
+  json_fields(&b, d, g);
+  bg_sb_puts(&b, ",\"notes\":[");
+  for (const bg_diag *n = g + 1; n < d->items + d->n && n->sev == BG_SEV_NOTE; n++) {
+    if (n > g + 1) bg_sb_putc(&b, ',');
+    json_fields(&b, d, n);
+    bg_sb_putc(&b, '}');
+  }
+  bg_sb_puts(&b, "]}\n");
+  fputs(bg_sb_str(&b), out);
+  bg_sb_free(&b);
 }
 
 static int cmp_pos(const void *a, const void *b) {
@@ -126,12 +165,25 @@ void bg_diags_print(const bg_diags *d, FILE *out) {
   qsort(order, (size_t)k, sizeof *order, cmp_pos);
   line_cursor c = {NULL, 0};
   for (int i = 0; i < k; i++) {
+    if (use_json) {
+      print_json(d, order[i], out);
+      continue;
+    }
     print_one(d, &c, order[i], out);
     for (const bg_diag *g = order[i] + 1; g < d->items + d->n && g->sev == BG_SEV_NOTE; g++)
       print_one(d, &c, g, out);
   }
   free(order);
-  if (d->dropped)
+  if (d->dropped && use_json) {
+    bg_strbuf b = {0};
+    bg_sb_puts(&b, "{\"file\":");
+    bg_sb_json_str(&b, d->file);
+    bg_sb_printf(&b, ",\"line\":0,\"column\":0,\"severity\":\"note\",\"message\":\"%d more "
+                 "error%s not shown: stopped at %d errors\",\"notes\":[]}\n", d->dropped,
+                 d->dropped == 1 ? "" : "s", d->max_errors);
+    fputs(bg_sb_str(&b), out);
+    bg_sb_free(&b);
+  } else if (d->dropped)
     fprintf(out, "%s: note: %d more error%s not shown: stopped at %d errors "
                  "(--max-errors N changes the limit, 0 shows all)\n",
             d->file, d->dropped, d->dropped == 1 ? "" : "s", d->max_errors);

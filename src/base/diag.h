@@ -47,4 +47,10 @@ int bg_diags_full(const bg_diags *d);
  * "FILE:LINE:COL: error: MSG", then the source line and a caret under COL;
  * after the limit, a note that more errors were not shown. */
 void bg_diags_print(const bg_diags *d, FILE *out);
+
+/* How bg_diags_print writes, for the whole process (the CLI sets it once):
+ * color adds gcc's ANSI colours (the CLI: on a terminal, unless NO_COLOR);
+ * json writes one JSON object a line instead of text, each error or warning
+ * with its notes: {"file","line","column","severity","message","notes":[...]}. */
+void bg_diags_set_output(int color, int json);
 #endif

@@ -1,93 +1,139 @@
-/* Command-line parsing for bgdraw. Usage errors name the fix. */
+/* Command-line parsing for bgdraw with glibc's getopt_long, so the usual GNU
+ * habits work (--opt=value, --, attached short values, bundled flags,
+ * unambiguous prefixes of long options). Usage errors name the fix; the
+ * checks of how options combine are in cli_usage.c. */
+#define _GNU_SOURCE /* getopt_long */
+#include <getopt.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli_opts.h"
+#include "base/arena.h"
 #include "base/fileio.h"
 #include "base/strbuf.h"
+#include "cli/cli_opts.h"
+#include "cli/cli_usage.h"
 
-static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
-static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
-static const char *const lin_forms[] = {"text", "latex", "json", NULL};
-static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
-static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
-
-/* Options taking a value, and where it goes. */
-typedef struct {
-  const char *name;
-  size_t offset; /* of a const char * in bg_cli_opts */
-} valued_opt;
-
-#define OPT(n, field) {n, offsetof(bg_cli_opts, field)}
-static const valued_opt valued[] = {
-    OPT("--causality", causality), OPT("--show", show),     OPT("--highlight", highlight),
-    OPT("--style", style),         OPT("--layout", layout), OPT("--report", report),
-    OPT("--plot", plot),           OPT("--equations", equations), OPT("-T", force_format),
-    OPT("--max-list", max_list),   OPT("--max-errors", max_errors), OPT("--linear", linear),
+enum {
+  OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
+  OPT_EQUATIONS, OPT_LINEAR, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR
 };
-static const char *const flags[] = {"--simulate", "--check", "-q", "-v", "--help", "-h", "--version", "-o", "--set", NULL};
 
-static int in_list(const char *s, const char *const *list) {
-  for (int i = 0; list[i]; i++)
-    if (strcmp(s, list[i]) == 0) return 1;
-  return 0;
-}
+static const char short_opts[] = ":o:T:M:qvhV";
 
-static void join_list(const char *const *list, char *buf, size_t n) {
-  buf[0] = '\0';
-  for (int i = 0; list[i]; i++) {
-    if (i) strncat(buf, ", ", n - strlen(buf) - 1);
-    strncat(buf, list[i], n - strlen(buf) - 1);
-  }
-}
+static const struct option long_opts[] = {
+    {"output", required_argument, NULL, 'o'},
+    {"format", required_argument, NULL, 'T'},
+    {"depfile", required_argument, NULL, 'M'},
+    {"causality", required_argument, NULL, OPT_CAUSALITY},
+    {"show", required_argument, NULL, OPT_SHOW},
+    {"highlight", required_argument, NULL, OPT_HIGHLIGHT},
+    {"style", required_argument, NULL, OPT_STYLE},
+    {"layout", required_argument, NULL, OPT_LAYOUT},
+    {"report", required_argument, NULL, OPT_REPORT},
+    {"plot", required_argument, NULL, OPT_PLOT},
+    {"equations", required_argument, NULL, OPT_EQUATIONS},
+    {"linear", required_argument, NULL, OPT_LINEAR},
+    {"max-list", required_argument, NULL, OPT_MAX_LIST},
+    {"max-errors", required_argument, NULL, OPT_MAX_ERRORS},
+    {"set", required_argument, NULL, OPT_SET},
+    {"diagnostics-format", required_argument, NULL, OPT_DIAG_FORMAT},
+    {"color", required_argument, NULL, OPT_COLOR},
+    {"simulate", no_argument, NULL, OPT_SIMULATE},
+    {"check", no_argument, NULL, OPT_CHECK},
+    {"quiet", no_argument, NULL, 'q'},
+    {"verbose", no_argument, NULL, 'v'},
+    {"help", no_argument, NULL, 'h'},
+    {"version", no_argument, NULL, 'V'},
+    {NULL, 0, NULL, 0},
+};
 
-static int usage_error(const char *fmt, const char *a, const char *b) {
-  fputs("bgdraw: error: ", stderr);
-  fprintf(stderr, fmt, a, b);
-  fputs("\nTry 'bgdraw --help' for the options.\n", stderr);
-  return -1;
-}
+/* Where each valued long option goes (a const char * in bg_cli_opts). */
+static const struct {
+  int val;
+  size_t offset;
+} valued[] = {
+    {OPT_CAUSALITY, offsetof(bg_cli_opts, causality)},
+    {OPT_SHOW, offsetof(bg_cli_opts, show)},
+    {OPT_HIGHLIGHT, offsetof(bg_cli_opts, highlight)},
+    {OPT_STYLE, offsetof(bg_cli_opts, style)},
+    {OPT_LAYOUT, offsetof(bg_cli_opts, layout)},
+    {OPT_REPORT, offsetof(bg_cli_opts, report)},
+    {OPT_PLOT, offsetof(bg_cli_opts, plot)},
+    {OPT_EQUATIONS, offsetof(bg_cli_opts, equations)},
+    {OPT_LINEAR, offsetof(bg_cli_opts, linear)},
+    {OPT_MAX_LIST, offsetof(bg_cli_opts, max_list)},
+    {OPT_MAX_ERRORS, offsetof(bg_cli_opts, max_errors)},
+    {OPT_DIAG_FORMAT, offsetof(bg_cli_opts, diag_format)},
+    {OPT_COLOR, offsetof(bg_cli_opts, color)},
+    {'T', offsetof(bg_cli_opts, force_format)},
+    {'M', offsetof(bg_cli_opts, depfile)},
+};
 
+int bg_cli_is_stdout(const char *path) { return path && strcmp(path, BG_CLI_STDOUT) == 0; }
 
-static const char *closest_option(const char *arg) {
-  const char *best = NULL;
+/* The closest option name to what the user typed (without "=value"). */
+static const char *closest_option(const char *arg, char *buf, size_t n) {
+  static const char shorts[] = "oTMqvhV";
+  char typed[64];
+  snprintf(typed, sizeof typed, "%s", arg);
   int bestd = 4;
-  for (size_t i = 0; i < sizeof valued / sizeof *valued; i++) {
-    int d = bg_edit_distance(arg, valued[i].name);
-    if (d < bestd) bestd = d, best = valued[i].name;
+  buf[0] = '\0';
+  for (int i = 0; long_opts[i].name; i++) {
+    char cand[64];
+    snprintf(cand, sizeof cand, "--%s", long_opts[i].name);
+    int d = bg_edit_distance(typed, cand);
+    if (d < bestd) bestd = d, snprintf(buf, n, "%s", cand);
   }
-  for (int i = 0; flags[i]; i++) {
-    int d = bg_edit_distance(arg, flags[i]);
-    if (d < bestd) bestd = d, best = flags[i];
+  for (int i = 0; shorts[i] && strlen(typed) <= 3; i++) {
+    char cand[3] = {'-', shorts[i], 0};
+    int d = bg_edit_distance(typed, cand);
+    if (d < bestd) bestd = d, snprintf(buf, n, "%s", cand);
   }
-  return best;
+  return buf[0] ? buf : NULL;
 }
 
-static int check_choice(const char *opt, const char *val, const char *const *list) {
-  if (in_list(val, list)) return 0;
-  char buf[200];
-  join_list(list, buf, sizeof buf);
-  char msg[300];
-  snprintf(msg, sizeof msg, "%s takes one of: %s", opt, buf);
-  return usage_error("unknown value '%s' for %s", val, msg);
+static int unknown_option(char **argv, int optopt_char) {
+  char typed[64], hint[64];
+  if (optopt_char) snprintf(typed, sizeof typed, "-%c", optopt_char);
+  else snprintf(typed, sizeof typed, "%s", argv[optind - 1]);
+  typed[strcspn(typed, "=")] = '\0'; /* --stlye=print: the option is --stlye */
+  const char *h = closest_option(typed, hint, sizeof hint);
+  if (h) return bg_cli_usage_error("unknown option '%s' (did you mean '%s'?)", typed, h);
+  return bg_cli_usage_error("unknown option '%s'%s", typed, "");
+}
+
+static int missing_value(char **argv, int optopt_char) {
+  char typed[64];
+  const char *arg = argv[optind - 1];
+  if (!strncmp(arg, "--", 2)) { /* the full name, also when a prefix was typed */
+    snprintf(typed, sizeof typed, "%s", arg);
+    for (int i = 0; long_opts[i].name; i++)
+      if (long_opts[i].val == optopt_char) snprintf(typed, sizeof typed, "--%s", long_opts[i].name);
+  } else {
+    snprintf(typed, sizeof typed, "-%c", optopt_char);
+  }
+  return bg_cli_usage_error("%s needs a value%s", typed, "");
 }
 
 static int add_output(bg_cli_opts *o, const char *path) {
-  if (o->nout == BG_MAX_OUTPUTS) return usage_error("too many -o outputs%s%s", "", "");
+  if (o->nout == BG_MAX_OUTPUTS) return bg_cli_usage_error("too many -o outputs%s%s", "", "");
+  if (!path[0]) return bg_cli_usage_error("-o needs a file name (or - for stdout)%s%s", "", "");
   o->out[o->nout].path = path;
-  o->out[o->nout].format = bg_path_ext(path);
+  o->out[o->nout].format = bg_cli_is_stdout(path) ? "" : bg_path_ext(path);
   o->nout++;
   return 0;
 }
 
 static int add_set(bg_cli_opts *o, const char *arg) {
   const char *eq = strchr(arg, '=');
-  if (!eq || eq == arg) return usage_error("--set takes NAME=VALUE, not '%s'%s", arg, "");
+  if (!eq || eq == arg) return bg_cli_usage_error("--set takes NAME=VALUE, not '%s'%s", arg, "");
   char *end;
   double v = strtod(eq + 1, &end);
-  if (end == eq + 1 || *end) return usage_error("--set %s: '%s' is not a number", arg, eq + 1);
-  if (o->nsets == BG_MAX_SETS) return usage_error("too many --set options%s%s", "", "");
+  if (end == eq + 1 || *end)
+    return bg_cli_usage_error("--set %s: '%s' is not a number", arg, eq + 1);
+  if (o->nsets == BG_MAX_SETS) return bg_cli_usage_error("too many --set options%s%s", "", "");
   size_t n = (size_t)(eq - arg);
   char *name = malloc(n + 1); /* lives for the whole run */
   memcpy(name, arg, n);
@@ -96,102 +142,80 @@ static int add_set(bg_cli_opts *o, const char *arg) {
   return 0;
 }
 
-/* Handles one option that takes a value; returns 1 if arg was one. */
-static int take_valued(bg_cli_opts *o, const char *arg, const char *val, int *err) {
-  for (size_t i = 0; i < sizeof valued / sizeof *valued; i++) {
-    if (strcmp(arg, valued[i].name) != 0) continue;
-    if (!val) *err = usage_error("%s needs a value%s", arg, "");
-    else *(const char **)((char *)o + valued[i].offset) = val;
-    return 1;
-  }
-  return 0;
-}
-
-static int take_flag(bg_cli_opts *o, const char *arg) {
-  if (!strcmp(arg, "--simulate")) o->simulate = 1;
-  else if (!strcmp(arg, "--check")) o->check = 1;
-  else if (!strcmp(arg, "-q")) o->quiet = 1;
-  else if (!strcmp(arg, "-v")) o->verbose = 1;
-  else if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) o->help = 1;
-  else if (!strcmp(arg, "--version")) o->version = 1;
-  else return 0;
-  return 1;
-}
-
-static int validate(bg_cli_opts *o) {
-  if (o->causality && check_choice("--causality", o->causality, methods)) return -1;
-  if (o->equations && check_choice("--equations", o->equations, eq_forms)) return -1;
-  if (o->layout && check_choice("--layout", o->layout, layouts)) return -1;
-  if (o->force_format && check_choice("-T", o->force_format, formats)) return -1;
-  for (int i = 0; i < o->nout; i++) {
-    if (o->force_format) o->out[i].format = o->force_format;
-    if (!in_list(o->out[i].format, formats)) {
-      char buf[200];
-      join_list(formats, buf, sizeof buf);
-      return usage_error("cannot tell the format of '%s': use an extension (%s) or -T FMT",
-                         o->out[i].path, buf);
+/* Applies one option getopt_long returned; -1 on a usage error. */
+static int take(bg_cli_opts *o, int c, const char *arg) {
+  for (size_t i = 0; i < sizeof valued / sizeof *valued; i++)
+    if (valued[i].val == c) {
+      *(const char **)((char *)o + valued[i].offset) = arg;
+      return 0;
     }
+  switch (c) {
+  case 'o': return add_output(o, arg);
+  case OPT_SET: return add_set(o, arg);
+  case OPT_SIMULATE: o->simulate = 1; return 0;
+  case OPT_CHECK: o->check = 1; return 0;
+  case 'q': o->quiet = 1; return 0;
+  case 'v': o->verbose = 1; return 0;
+  case 'h': o->help = 1; return 0;
+  case 'V': o->version = 1; return 0;
+  default: BG_FATAL("getopt_long returned option %d with no handler", c);
   }
-  static const char *const plot_formats[] = {"svg", "pdf", "png", NULL};
-  if (o->plot && !in_list(bg_path_ext(o->plot), plot_formats))
-    return usage_error("--plot writes svg, pdf or png, not '%s'%s", o->plot, "");
-  if (o->linear && check_choice("--linear", o->linear, lin_forms)) return -1;
+}
 
-  if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
-    return usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report, "");
-  if (!o->model_path && !o->help && !o->version)
-    return usage_error("no model file given%s%s", "", "");
+static int take_operands(bg_cli_opts *o, int argc, char **argv) {
+  for (int i = optind; i < argc; i++) {
+    if (o->model_path)
+      return bg_cli_usage_error("more than one model file ('%s' and '%s')", o->model_path,
+                                argv[i]);
+    o->model_path = argv[i];
+  }
   return 0;
 }
 
 int bg_cli_parse(int argc, char **argv, bg_cli_opts *o) {
   memset(o, 0, sizeof *o);
-  for (int i = 1; i < argc; i++) {
-    const char *arg = argv[i], *next = i + 1 < argc ? argv[i + 1] : NULL;
-    int err = 0;
-    if (!strcmp(arg, "-o") || !strcmp(arg, "--set")) {
-      if (!next) return usage_error("%s needs a value%s", arg, "");
-      if ((arg[1] == 'o' ? add_output(o, next) : add_set(o, next)) != 0) return -1;
-      i++;
-    } else if (take_valued(o, arg, next, &err)) {
-      if (err) return -1;
-      i++;
-    } else if (take_flag(o, arg)) {
-    } else if (arg[0] == '-' && arg[1]) {
-      const char *hint = closest_option(arg);
-      if (hint) return usage_error("unknown option '%s' (did you mean '%s'?)", arg, hint);
-      return usage_error("unknown option '%s'%s", arg, "");
-    } else if (o->model_path) {
-      return usage_error("more than one model file ('%s' and '%s')", o->model_path, arg);
-    } else {
-      o->model_path = arg;
-    }
+  opterr = 0;  /* our own messages, with hints */
+  optind = 0;  /* glibc: full reinitialisation (tests parse several argv) */
+  int c, longindex;
+  while ((c = getopt_long(argc, argv, short_opts, long_opts, &longindex)) != -1) {
+    if (c == '?') return unknown_option(argv, optopt);
+    if (c == ':') return missing_value(argv, optopt);
+    if (take(o, c, optarg) != 0) return -1;
   }
-  return validate(o);
+  if (take_operands(o, argc, argv) != 0) return -1;
+  if (o->help || o->version) return 0;
+  return bg_cli_check_usage(o);
 }
 
 void bg_cli_print_help(FILE *out) {
   fputs(
-      "usage: bgdraw MODEL.bg [-o OUT]... [options]\n"
+      "usage: bgdraw [options] MODEL.bg [-o OUT]...\n"
+      "       bgdraw -T FMT [options] - < MODEL.bg > OUT\n"
       "\n"
       "Assigns causality to a bond graph model, analyses the causal pattern, and\n"
-      "draws it. With no -o the diagram goes to out/<model>.svg.\n"
+      "draws it. With no -o the diagram goes to out/<model>.svg; MODEL '-' reads\n"
+      "standard input.\n"
       "\n"
       "outputs (-o FILE, repeatable; the format follows the extension):\n"
       "  .svg .pdf .png   annotated diagram        .json  analysis\n"
       "  .dot             graph with positions     .tex   equations in LaTeX\n"
       "  .c               equations as C           .csv   simulation results\n"
-      "  -T FMT           force the format of every -o\n"
+      "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
+      "                      -o - (stdout); -T alone writes to stdout\n"
+      "  -M, --depfile FILE  make rule: the outputs depend on the model, style\n"
+      "                      and table files read\n"
       "\n"
       "options:\n"
       "  --causality METHOD  scap (default) | relaxed | vandijk | lagrange\n"
       "  --show LAYERS       strokes,numbers,paths,loops,conflicts,signals,labels,legend,\n"
-      "                      variables | all | none\n"
+      "                      variables | all | none; a list of overlays only (paths,\n"
+      "                      loops, legend, variables) or +LAYER adds to the default\n"
       "  --highlight ITEM    path:K | loop:K | conflict:K\n"
       "  --style NAME|FILE   default | print | slides, or a style file\n"
       "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned | rows\n"
       "  --report FILE.pdf   the full analysis report\n"
-      "  --simulate          run the model's simulate block (with --plot FILE, -o FILE.csv)\n"
+      "  --simulate          run the model's simulate block (with --plot FILE, -o FILE.csv\n"
+      "                      or -o FILE.json)\n"
       "  --plot FILE         simulation plot (svg, pdf, png)\n"
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"
@@ -199,8 +223,12 @@ void bg_cli_print_help(FILE *out) {
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"
-      "  -q, -v              quieter, more verbose (progress on stderr)\n"
-      "  --version, --help\n"
+      "  --diagnostics-format FMT  text (default) | json (one object a line)\n"
+      "  --color WHEN        auto (default: on a terminal, unless NO_COLOR) | always | never\n"
+      "  -q, --quiet         no warnings and notes\n"
+      "  -v, --verbose       progress on stderr\n"
+      "  -V, --version       version and the library versions built with\n"
+      "  -h, --help\n"
       "\n"
       "exit status: 0 ok, 1 model errors, 2 bad usage, 3 simulation failed,\n"
       "4 an output could not be written.\n",

@@ -7,13 +7,16 @@
 
 enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64 };
 
+/* The path of an output that goes to standard output ("-o -", or -T with no -o). */
+#define BG_CLI_STDOUT "-"
+
 typedef struct bg_cli_output {
-  const char *path;
+  const char *path;   /* BG_CLI_STDOUT for standard output */
   const char *format; /* svg pdf png json dot tex c csv m py */
 } bg_cli_output;
 
 typedef struct bg_cli_opts {
-  const char *model_path;
+  const char *model_path;   /* "-": standard input */
   bg_cli_output out[BG_MAX_OUTPUTS];
   int nout;
   const char *force_format; /* -T */
@@ -29,15 +32,21 @@ typedef struct bg_cli_opts {
   const char *max_errors;   /* --max-errors N: diagnostics' error limit (0: none) */
   const char *linear;       /* --linear FORM: text | latex | json (docs/linear.md) */
   const char *bode, *nyquist, *step; /* --bode/--nyquist/--step FILE (svg pdf png) */
+  const char *depfile;      /* -M/--depfile FILE: make rule of the files read */
+  const char *diag_format;  /* --diagnostics-format: "text" (default) or "json" */
+  const char *color;        /* --color: "auto" (default), "always", "never" */
   int simulate, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;
 } bg_cli_opts;
 
-/* Parses argv into o. On a usage error prints "bgdraw: error: ..." with a
- * hint to stderr and returns -1 (the caller exits 2). */
+/* Parses argv into o (GNU conventions: --opt=value, --, -Tsvg, -qv; options
+ * and the model in any order). On a usage error prints "bgdraw: error: ..."
+ * with a hint to stderr and returns -1 (the caller exits 2). */
 int bg_cli_parse(int argc, char **argv, bg_cli_opts *o);
 void bg_cli_print_help(FILE *out);
 /* Frees what parsing allocated (the --set names). */
 void bg_cli_free(bg_cli_opts *o);
+/* 1 when path names standard output. */
+int bg_cli_is_stdout(const char *path);
 #endif

@@ -17,50 +17,6 @@
 #include "scene/style.h"
 #include "base/strbuf.h"
 
-/* Diagram options from the command line; -1 on a usage error. */
-int cli_render_options(run *r) {
-  const bg_cli_opts *o = &r->opts;
-  bg_render_opts *ro = &r->ropts;
-  ro->show = BG_SHOW_DEFAULT;
-  if (o->show && bg_show_parse(o->show, &ro->show) != 0) {
-    fprintf(stderr, "bgdraw: error: unknown layer in --show '%s' (layers: strokes, numbers, "
-                    "paths, loops, conflicts, signals, labels, legend; or all, none)\n", o->show);
-    return -1;
-  }
-  if (o->highlight && bg_highlight_parse(o->highlight, &ro->highlight_kind,
-                                         &ro->highlight_index) != 0) {
-    fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
-            o->highlight);
-    return -1;
-  }
-  if (o->max_list) {
-    char *end;
-    long n = strtol(o->max_list, &end, 10);
-    if (end == o->max_list || *end || n < 1 || n > 100000000) {
-      fprintf(stderr, "bgdraw: error: --max-list takes a positive whole number, not '%s'\n",
-              o->max_list);
-      return -1;
-    }
-    r->max_list = (int)n;
-  }
-  r->max_errors = BG_DIAG_MAX_ERRORS;
-  if (o->max_errors) {
-    char *end;
-    long n = strtol(o->max_errors, &end, 10);
-    if (end == o->max_errors || *end || n < 0 || n > 1000000000) {
-      fprintf(stderr, "bgdraw: error: --max-errors takes a whole number (0: no limit), not '%s'\n",
-              o->max_errors);
-      return -1;
-    }
-    r->max_errors = (int)n;
-  }
-  ro->style = o->style;
-  ro->style_dir = getenv("BGDRAW_STYLE_DIR") ? NULL : BG_STYLE_DIR;
-  ro->layout = o->layout;
-  ro->verbose = o->verbose;
-  return 0;
-}
-
 /* No output may be a file the run reads (model, tables, style): compared by
  * device and inode, so another name or a symlink for an input is refused
  * too. A usage error, found before anything is written. */
@@ -69,11 +25,13 @@ int cli_check_outputs(run *r) {
   bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style,
                 sizeof style);
   bg_input_note(style);
-  const char *paths[BG_MAX_OUTPUTS + 2];
+  const char *paths[BG_MAX_OUTPUTS + 3];
   int n = 0;
-  for (int i = 0; i < r->opts.nout; i++) paths[n++] = r->opts.out[i].path;
+  for (int i = 0; i < r->opts.nout; i++)
+    if (!bg_cli_is_stdout(r->opts.out[i].path)) paths[n++] = r->opts.out[i].path;
   if (r->opts.plot) paths[n++] = r->opts.plot;
   if (r->opts.report) paths[n++] = r->opts.report;
+  if (r->opts.depfile && !bg_cli_is_stdout(r->opts.depfile)) paths[n++] = r->opts.depfile;
   for (int i = 0; i < n; i++) {
     if (!bg_path_is_input(paths[i])) continue;
     fprintf(stderr, "bgdraw: error: output '%s' is one of the run's input files (the model, a "
@@ -92,7 +50,8 @@ void cli_default_output(run *r, char *buf, size_t n) {
   r->opts.nout = 1;
 }
 
-static int write_text(const char *path, const bg_strbuf *sb) {
+int cli_write_text(const char *path, const bg_strbuf *sb) {
+  if (bg_cli_is_stdout(path)) return cli_write_stdout(sb); /* in place, never renamed */
   if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
   fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
   return EXIT_WRITE;
@@ -109,7 +68,7 @@ static int write_json(run *r, const char *path) {
   bg_json_write_analysis(r->model, &r->analysis, &sb);
   if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
   if (r->lin_done) bg_json_append_linear(&sb, &r->lin);
-  int rc = write_text(path, &sb);
+  int rc = cli_write_text(path, &sb);
   bg_sb_free(&sb);
   return rc;
 }
@@ -122,7 +81,17 @@ static int write_diagram(run *r, const bg_cli_output *out) {
       return EXIT_USAGE;
     }
   }
-  int rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
+  int rc;
+  if (bg_cli_is_stdout(out->path)) {
+    bg_strbuf sb = {0};
+    rc = bg_diagram_render(r->diagram, out->format, &sb, &r->dg);
+    if (rc == BG_RENDER_OK) rc = cli_write_text(out->path, &sb) == EXIT_OK ? BG_RENDER_OK
+                                                                      : BG_RENDER_EWRITE;
+    bg_sb_free(&sb);
+    if (rc == BG_RENDER_EWRITE) return EXIT_WRITE;
+  } else {
+    rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
+  }
   if (rc == BG_RENDER_OK) return EXIT_OK;
   bg_diags_print(&r->dg, stderr);
   return rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
@@ -136,7 +105,7 @@ int cli_write_equations(run *r, const char *path, const char *form) {
   }
   bg_strbuf sb = {0};
   bg_eqprint(r->eqsys, form, &sb);
-  int rc = path ? write_text(path, &sb) : cli_write_stdout(&sb);
+  int rc = cli_write_text(path ? path : BG_CLI_STDOUT, &sb);
   bg_sb_free(&sb);
   return rc;
 }
@@ -145,7 +114,7 @@ static int write_csv(run *r, const char *path) {
   if (!r->simulated || !r->sim.nrows) return EXIT_OK; /* refused: nothing to write */
   bg_strbuf sb = {0};
   bg_csv_write(&r->sim, &sb);
-  int rc = write_text(path, &sb);
+  int rc = cli_write_text(path, &sb);
   bg_sb_free(&sb);
   return rc;
 }
@@ -155,7 +124,8 @@ static int is_diagram_format(const char *f) {
 }
 
 static int write_one(run *r, const bg_cli_output *out) {
-  if (r->opts.verbose) fprintf(stderr, "bgdraw: writing %s\n", out->path);
+  if (r->opts.verbose)
+    fprintf(stderr, "bgdraw: writing %s\n", bg_cli_is_stdout(out->path) ? "stdout" : out->path);
   if (!strcmp(out->format, "json")) return write_json(r, out->path);
   if (is_diagram_format(out->format)) return write_diagram(r, out);
   if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");

@@ -62,6 +62,11 @@ void cli_default_output(run *r, char *buf, size_t n);
 int cli_write_outputs(run *r);
 /* --equations FORM to path, or to stdout when path is NULL. */
 int cli_write_equations(run *r, const char *path, const char *form);
+/* path's text: atomically to a file, or in place to stdout (BG_CLI_STDOUT);
+ * EXIT_WRITE after a message when that failed. */
+int cli_write_text(const char *path, const bg_strbuf *sb);
+/* -M/--depfile: the make rule of the files this run read (cli_depfile.c). */
+int cli_write_depfile(run *r);
 /* --plot FILE and --report FILE.pdf. */
 int cli_write_plot(run *r);
 int cli_write_report(run *r);

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "causality/causality.h"
 #include "cli/cli_run.h"
@@ -33,18 +34,21 @@ static void run_free(run *r) {
   bg_cli_free(&r->opts);
 }
 
-/* Reads, parses and compiles the model; diagnostics stay in r->dg. */
+/* Reads, parses and compiles the model; diagnostics stay in r->dg. The
+ * model from stdin is called <stdin> in messages (the model name "stdin"). */
 static int load_model(run *r) {
   const bg_cli_opts *o = &r->opts;
-  r->src = bg_read_file(o->model_path, &r->srclen);
-  bg_diags_init(&r->dg, o->model_path, r->src, r->srclen);
+  int from_stdin = bg_cli_is_stdout(o->model_path); /* "-" */
+  const char *name = from_stdin ? "<stdin>" : o->model_path;
+  r->src = from_stdin ? bg_read_stream(stdin, &r->srclen) : bg_read_file(o->model_path, &r->srclen);
+  bg_diags_init(&r->dg, name, r->src, r->srclen);
   r->dg.max_errors = r->max_errors;
   if (!r->src) {
     bg_srcloc none = {0, 0};
     bg_diag_error(&r->dg, none, "cannot read the model: %s", bg_file_strerror(errno));
     return -1;
   }
-  r->ast = bg_parse_string(o->model_path, r->src, r->srclen, &r->dg);
+  r->ast = bg_parse_string(name, r->src, r->srclen, &r->dg);
   if (!r->ast || r->dg.nerrors) return -1;
   r->model = bg_model_compile(r->ast, o->sets, o->nsets, &r->dg);
   bg_ast_free(r->ast);
@@ -71,7 +75,7 @@ static void analyse(run *r) {
 static void derive_equations(run *r) {
   if (r->opts.verbose) fprintf(stderr, "bgdraw: equations\n");
   bg_diags eqd;
-  bg_diags_init(&eqd, r->opts.model_path, r->src, r->srclen);
+  bg_diags_init(&eqd, r->dg.file, r->src, r->srclen);
   r->eqsys = bg_eqsys_build(r->model, &r->analysis, &eqd);
   if (!r->eqsys) {
     r->eqsys_problem = strdup(eqd.n ? eqd.items[0].msg : "the equations could not be formed");
@@ -164,6 +168,46 @@ static int print_check(run *r) {
   return rc;
 }
 
+static void print_version(void) {
+  bg_strbuf sb = {0};
+  bg_render_versions(&sb);
+  printf("bgdraw %s\nbuilt with SUNDIALS %s, %s\n", BG_VERSION, bg_simulate_sundials_version(),
+         bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+/* Diagnostics: colour on a terminal unless NO_COLOR is set (or --color
+ * says otherwise); JSON lines with --diagnostics-format=json. */
+static void diagnostics_output(const bg_cli_opts *o) {
+  const char *no_color = getenv("NO_COLOR");
+  int color = isatty(fileno(stderr)) && !(no_color && *no_color);
+  if (o->color && !strcmp(o->color, "always")) color = 1;
+  if (o->color && !strcmp(o->color, "never")) color = 0;
+  int json = o->diag_format && !strcmp(o->diag_format, "json");
+  bg_diags_set_output(color && !json, json);
+}
+
+/* Everything after the analysis: simulation, outputs, plot, report. */
+static int write_all(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  if (o->check) return print_check(r);
+  if (o->equations && o->nout == 0 && !o->plot && !o->report && !o->simulate)
+    return cli_write_equations(r, NULL, o->equations);
+  if (cli_linear_only(o)) return cli_write_linear(r);
+  int wantsim = wants_simulation(o);
+  int simrc = wantsim || (o->report && r->model->sim.present) ? simulate(r) : EXIT_OK;
+  int refused = simrc && !r->sim.nrows;
+  if (!wantsim && r->sim_status == 1) simrc = refused = 0; /* the report says why */
+  int rc = EXIT_OK;
+  if (o->equations) rc = cli_write_equations(r, NULL, o->equations);
+  if (!rc) rc = cli_write_outputs(r);
+  if (!rc && o->plot) rc = cli_write_plot(r);
+  if (!rc && o->report) rc = cli_write_report(r);
+  if (!rc) rc = cli_write_linear(r);
+  if (!rc) rc = refused ? EXIT_SIM : simrc;
+  return rc;
+}
+
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
@@ -173,10 +217,11 @@ int main(int argc, char **argv) {
   }
   if (r.opts.help || r.opts.version) {
     if (r.opts.help) bg_cli_print_help(stdout);
-    else printf("bgdraw %s\n", BG_VERSION);
+    else print_version();
     bg_cli_free(&r.opts);
     return EXIT_OK;
   }
+  diagnostics_output(&r.opts);
   if (cli_render_options(&r) != 0) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
@@ -199,20 +244,10 @@ int main(int argc, char **argv) {
   if (wants_equations(&r.opts)) derive_equations(&r);
   if (wants_index(&r.opts)) numeric_index(&r);
   if (cli_wants_linear(&r)) cli_linearise(&r);
-  if (r.opts.check) rc = print_check(&r);
-  else if (r.opts.equations && r.opts.nout == 0) rc = cli_write_equations(&r, NULL, r.opts.equations);
-  else if (cli_linear_only(&r.opts)) rc = cli_write_linear(&r);
-  else {
-    int wantsim = wants_simulation(&r.opts);
-    int simrc = wantsim || (r.opts.report && r.model->sim.present) ? simulate(&r) : EXIT_OK;
-    int refused = simrc && !r.sim.nrows;
-    if (!wantsim && r.sim_status == 1) simrc = refused = 0; /* the report says why */
-    if (r.opts.equations) rc = cli_write_equations(&r, NULL, r.opts.equations);
-    if (!rc) rc = cli_write_outputs(&r);
-    if (!rc && r.opts.plot) rc = cli_write_plot(&r);
-    if (!rc && r.opts.report) rc = cli_write_report(&r);
-    if (!rc) rc = cli_write_linear(&r);
-    if (!rc) rc = refused ? EXIT_SIM : simrc;
+  rc = write_all(&r);
+  if ((rc == EXIT_OK || rc == EXIT_SIM) && r.opts.depfile) {
+    int drc = cli_write_depfile(&r);
+    if (drc) rc = drc;
   }
   run_free(&r);
   return rc;

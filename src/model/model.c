@@ -79,24 +79,18 @@ const ns_entry *bg_build_lookup(const bg_build *b, const char *name) {
   return NULL;
 }
 
-/* e7, f12: reserved for bond variables */
-static int is_bond_var_name(const char *s) {
-  if ((s[0] != 'e' && s[0] != 'f') || !s[1]) return 0;
-  for (const char *c = s + 1; *c; c++)
-    if (!isdigit((unsigned char)*c)) return 0;
-  return 1;
-}
 
 /* Declares a name; reports duplicates and reserved names. 0 on success. */
 static int declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
   const ns_entry *old = bg_build_lookup(b, name);
   if (old) {
     bg_diag_error(b->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
+    bg_diag_note(b->dg, old->loc, "'%s' first defined here", name);
     return -1;
   }
-  if (is_bond_var_name(name) || strcmp(name, "t") == 0 || strcmp(name, "pi") == 0) {
+  if (strcmp(name, "t") == 0 || strcmp(name, "pi") == 0) { /* e<N>, f<N>: check_bond_names */
     bg_diag_error(b->dg, loc, "'%s' is reserved (%s) and cannot be declared", name,
-                  name[1] ? "a bond variable" : name[0] == 't' ? "time" : "the constant pi");
+                  name[0] == 't' ? "time" : "the constant pi");
     return -1;
   }
   if (b->nns == b->nscap) {
@@ -216,6 +210,8 @@ static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
     return -1;
   }
   const char *s = bg_build_suggest(b, name, NULL, 0);
+  const ns_entry *guess = s ? bg_build_lookup(b, s) : NULL;
+  if (guess && guess->kind == NS_ELEM) b->elem_guessed[guess->id] = 1; /* see check_bond_count */
   if (s) bg_diag_error(b->dg, loc, "undefined name '%s' (did you mean '%s'?)", name, s);
   else bg_diag_error(b->dg, loc, "undefined name '%s' (no element or junction has this name)", name);
   return -1;
@@ -260,6 +256,7 @@ static void check_unique_numbers(bg_build *b, const bg_ast_stmt **stmt) {
     while (first > 0 && nb[first - 1].num == nb[i].num) first--;
     bg_diag_error(b->dg, stmt[nb[i].bond]->number_loc, "bond %d already defined at line %d",
                   nb[i].num, m->bond_loc[nb[first].bond].line);
+    bg_diag_note(b->dg, m->bond_loc[nb[first].bond], "bond %d first defined here", nb[i].num);
   }
   free(nb);
 }
@@ -303,9 +300,33 @@ static void index_bonds(bg_build *b) {
   }
 }
 
+/* The bond numbered num, or -1. */
+static int bond_numbered(const bg_model *m, long num) {
+  for (int k = 0; k < m->nbond; k++)
+    if (m->bond_num[k] == num) return k;
+  return -1;
+}
+
+/* A declared name e<N> or f<N> would hide the effort or flow of bond N, so
+ * it is refused when bond N exists; otherwise it is an ordinary name (a
+ * frequency f0, a junction f1 in a model with no bond 1). */
+static void check_bond_names(bg_build *b) {
+  for (int i = 0; i < b->nns; i++) {
+    const char *name = b->ns[i].name;
+    if ((name[0] != 'e' && name[0] != 'f') || !name[1] || strlen(name) > 11) continue;
+    if (strspn(name + 1, "0123456789") != strlen(name + 1)) continue;
+    int k = bond_numbered(b->m, strtol(name + 1, NULL, 10));
+    if (k < 0) continue;
+    bg_diag_error(b->dg, b->ns[i].loc, "'%s' is the %s of bond %d and cannot be declared",
+                  name, name[0] == 'e' ? "effort" : "flow", b->m->bond_num[k]);
+    bg_diag_note(b->dg, b->m->bond_loc[k], "bond %d is defined here", b->m->bond_num[k]);
+  }
+}
+
 static void build_bonds(bg_build *b) {
   const bg_ast_stmt **stmt = NULL;
   int cap = 0;
+  b->elem_guessed = bg_xcalloc((size_t)b->m->nelem + 1, 1);
   for (int i = 0; i < b->ast->nstmts; i++) {
     const bg_ast_stmt *s = &b->ast->stmts[i];
     if (s->kind != BG_ST_BOND) continue;
@@ -320,6 +341,7 @@ static void build_bonds(bg_build *b) {
   number_bonds(b, stmt); /* bond options are read in model_stmt.c */
   free(stmt);
   index_bonds(b);
+  check_bond_names(b);
 }
 
 /* ---------------------------------------------------------------- params */
@@ -471,6 +493,7 @@ static void build_inputs_states(bg_build *b) {
 
 /* ---------------------------------------------------------------- driver */
 static const char *file_stem(bg_build *b, const char *path) {
+  if (!strcmp(path, "<stdin>")) return "stdin"; /* bgdraw - */
   const char *base = strrchr(path, '/');
   base = base ? base + 1 : path;
   const char *dot = strrchr(base, '.');
@@ -490,6 +513,7 @@ static void build_free(bg_build *b) {
   free(b->hash);
   free(b->elem_stmt);
   free(b->param_id);
+  free(b->elem_guessed);
 }
 
 bg_model *bg_model_compile(const bg_ast *ast, const bg_param_override *ov, int nov,

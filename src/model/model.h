@@ -148,6 +148,7 @@ typedef struct bg_xnode {
   /* lookup tables (from CSV files or inline), breakpoints sorted by x */      \
   X(int, table_adr, ntable)                                                    \
   X(int, table_n, ntable)                                                      \
+  X(const char *, table_path, ntable) /* CSV file read (as opened); NULL inline */ \
   X(double, table_x, ntabledata)                                               \
   X(double, table_y, ntabledata)                                               \
   /* all expression nodes */                                                   \

@@ -48,6 +48,8 @@ typedef struct bg_build {
   const char *modvar; /* first model variable met (for "modulated by ...") */
   bg_srcloc modvar_loc;
   const char *base_dir; /* the model file's directory, for table CSV files */
+  unsigned char *elem_guessed; /* per element: the "did you mean" of a misspelled bond end;
+                                 its bond count is then not reported (a consequence) */
 } bg_build;
 
 /* ---- model.c */

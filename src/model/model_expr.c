@@ -128,8 +128,8 @@ static int compile_name(bg_build *b, const bg_expr *e) {
   if (strcmp(e->str, "pi") == 0) return num_node(b, 3.14159265358979323846, e->loc);
   if (strcmp(e->str, "t") == 0)
     return check_allowed(b, ALLOW_TIME, e) ? node(b, BG_X_TIME, e->loc) : bad(b, e->loc);
-  if (is_bond_var(e->str)) return bond_var(b, e);
-  const ns_entry *n = bg_build_lookup(b, e->str);
+  const ns_entry *n = bg_build_lookup(b, e->str); /* a declared f0 is not a bond variable */
+  if (!n && is_bond_var(e->str)) return bond_var(b, e);
   if (!n) return undefined(b, e);
   switch (n->kind) {
   case NS_PARAM: return ref_node(b, BG_X_PARAM, b->param_id[n->id], e->loc);
@@ -325,7 +325,10 @@ static int file_table(bg_build *b, const bg_expr *file, bg_srcloc at) {
   int t = -1;
   if (csv_read(b, file->str, text, &d, at) == 0) {
     if (d.n == 0) bg_diag_error(b->dg, at, "table file '%s' has no data lines", file->str);
-    else t = new_table(b, d.x, d.y, d.n);
+    else {
+      t = new_table(b, d.x, d.y, d.n);
+      b->m->table_path[t] = bg_build_strdup(b, path); /* for make dependency files */
+    }
   }
   free(d.x);
   free(d.y);

@@ -116,6 +116,7 @@ static void check_bond_count(bg_build *b, int e) {
   const bg_model *m = b->m;
   int kind = m->elem_kind[e], n = m->elem_nbond[e];
   const char *name = m->elem_name[e], *kn = bg_elem_kind_name(kind);
+  if (b->elem_guessed[e]) return; /* the misspelled bond end is reported instead */
   if (n == 0) {
     bg_diag_error(b->dg, m->elem_loc[e], "'%s' has no bond (every element and junction needs "
                   "at least one)", name);

@@ -68,6 +68,8 @@ void bg_simresult_free(bg_simresult *r);
 /* The warning for output rows that violate the algebraic equations beyond
  * the tolerance (r->rows_violating): appends it to out and returns 1, else 0. */
 int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out);
+/* The SUNDIALS version bgdraw was built with ("6.4.1"); 6.4 and 7.x are supported. */
+const char *bg_simulate_sundials_version(void);
 
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a

@@ -13,6 +13,7 @@
 #include <cvode/cvode.h>
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
+#include <sundials/sundials_config.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunlinsol/sunlinsol_klu.h>
@@ -134,12 +135,41 @@ static int ida_jac(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vec
 }
 
 /* SUNDIALS would print to stderr; keep the text for our own message. */
-static void on_sunerr(int code, const char *module, const char *fn, char *msg, void *ud) {
-  simrun *R = ud;
-  (void)code;
+/* SUNDIALS 6.4 (Debian 12) reports solver errors through a handler set per
+ * solver (CVodeSetErrHandlerFn, IDASetErrHandlerFn); 7.x removed those and
+ * takes handlers on the context instead. Both keep the last message. */
+static void keep_sunmsg(simrun *R, const char *module, const char *fn, const char *msg) {
   snprintf(R->sunmsg, sizeof R->sunmsg, "%s/%s: %s", module, fn, msg);
   if (R->p->verbose > 1) fprintf(stderr, "bgdraw: %s\n", R->sunmsg);
 }
+
+#if SUNDIALS_VERSION_MAJOR >= 7
+static void on_sunerr(int line, const char *fn, const char *file, const char *msg,
+                      SUNErrCode code, void *ud, SUNContext ctx) {
+  (void)line, (void)code, (void)ctx;
+  keep_sunmsg(ud, file, fn, msg);
+}
+#define BG_SUN_COMM_NULL SUN_COMM_NULL
+#else
+static void on_sunerr(int code, const char *module, const char *fn, char *msg, void *ud) {
+  (void)code;
+  keep_sunmsg(ud, module, fn, msg);
+}
+#define BG_SUN_COMM_NULL NULL
+#endif
+
+/* Routes the solver's error messages to on_sunerr (not to stderr). */
+static int catch_sunerr(simrun *R) {
+#if SUNDIALS_VERSION_MAJOR >= 7
+  int f = SUNContext_ClearErrHandlers(R->ctx);
+  return f | SUNContext_PushErrHandler(R->ctx, on_sunerr, R);
+#else
+  if (R->p->kind == BG_SIM_IDA) return IDASetErrHandlerFn(R->mem, on_sunerr, R);
+  return CVodeSetErrHandlerFn(R->mem, on_sunerr, R);
+#endif
+}
+
+const char *bg_simulate_sundials_version(void) { return SUNDIALS_VERSION; }
 
 /* ------------------------------------------------------------------ set-up */
 static int make_pattern(simrun *R) {
@@ -181,7 +211,7 @@ static int setup_cvode(simrun *R) {
   const bg_simplan *p = R->p;
   R->mem = CVodeCreate(p->kind == BG_SIM_ADAMS ? CV_ADAMS : CV_BDF, R->ctx);
   if (!R->mem) return -1;
-  int f = CVodeSetErrHandlerFn(R->mem, on_sunerr, R);
+  int f = catch_sunerr(R);
   f |= CVodeInit(R->mem, cv_rhs, p->t0, R->y);
   f |= CVodeSVtolerances(R->mem, p->rtol, R->atol);
   f |= CVodeSetUserData(R->mem, R);
@@ -199,7 +229,7 @@ static int setup_ida(simrun *R) {
   R->id = N_VNew_Serial(R->n, R->ctx);
   double *id = N_VGetArrayPointer(R->id);
   for (int i = 0; i < R->n; i++) id[i] = R->ode || bg_eqsys_is_differential(R->s, i) ? 1.0 : 0.0;
-  int f = IDASetErrHandlerFn(R->mem, on_sunerr, R);
+  int f = catch_sunerr(R);
   f |= IDAInit(R->mem, ida_res, p->t0, R->y, R->yp);
   f |= IDASVtolerances(R->mem, p->rtol, R->atol);
   f |= IDASetUserData(R->mem, R);
@@ -227,7 +257,7 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
   R->p = p;
   R->n = bg_eqsys_n(s);
   R->ode = bg_eqsys_is_ode(s);
-  if (SUNContext_Create(NULL, &R->ctx)) return -1;
+  if (SUNContext_Create(BG_SUN_COMM_NULL, &R->ctx)) return -1;
   R->y = N_VNew_Serial(R->n, R->ctx);
   R->yp = N_VNew_Serial(R->n, R->ctx);
   R->atol = N_VNew_Serial(R->n, R->ctx);

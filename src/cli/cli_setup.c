@@ -1,0 +1,129 @@
+/* Diagram options from the command line: --show with overlays added to the
+ * default layers, --highlight, --max-list, and where the named styles are
+ * (beside the executable, never a path compiled in from the source tree). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "base/strbuf.h"
+#include "cli/cli_run.h"
+
+static const char *const layer_words[] = {"strokes", "numbers", "paths",  "loops",
+                                          "conflicts", "signals", "labels", "legend",
+                                          "variables", "all", "none", NULL};
+/* Naming one of these makes the list the whole set of layers; a list of
+ * overlays only (paths, loops, conflicts, signals, legend, variables) or
+ * +LAYER items add to the default layers. */
+static const char *const base_words[] = {"strokes", "numbers", "labels", "all", "none", NULL};
+
+static int word_in(const char *w, const char *const *list) {
+  for (int i = 0; list[i]; i++)
+    if (!strcmp(w, list[i])) return 1;
+  return 0;
+}
+
+static int unknown_layer(const char *w, const char *list) {
+  const char *best = NULL;
+  int bestd = 3;
+  for (int i = 0; layer_words[i]; i++) {
+    int d = bg_edit_distance(w, layer_words[i]);
+    if (d < bestd) bestd = d, best = layer_words[i];
+  }
+  fprintf(stderr, "bgdraw: error: unknown layer '%s' in --show '%s'", w, list);
+  if (best) fprintf(stderr, " (did you mean '%s'?)", best);
+  fputs("\n  layers: strokes, numbers, paths, loops, conflicts, signals, labels, legend, "
+        "variables; or all, none; +LAYER adds to the default\n", stderr);
+  return -1;
+}
+
+/* Parses --show into *bits; -1 after a message. */
+static int parse_show(const char *list, unsigned *bits) {
+  bg_strbuf plain = {0};
+  int replaces = 0;
+  char *copy = strdup(list), *save = NULL;
+  for (char *w = strtok_r(copy, ",", &save); w; w = strtok_r(NULL, ",", &save)) {
+    while (*w == ' ') w++;
+    for (size_t n = strlen(w); n && w[n - 1] == ' '; n--) w[n - 1] = '\0';
+    int plus = *w == '+';
+    if (plus) w++;
+    if (!word_in(w, layer_words)) {
+      int rc = unknown_layer(w, list);
+      free(copy), bg_sb_free(&plain);
+      return rc;
+    }
+    replaces |= !plus && word_in(w, base_words);
+    bg_sb_printf(&plain, "%s%s", plain.len ? "," : "", w);
+  }
+  free(copy);
+  unsigned b = 0;
+  bg_show_parse(bg_sb_str(&plain), &b); /* every word was checked above */
+  bg_sb_free(&plain);
+  if (!replaces) b = (b & ~(1u << 31)) | BG_SHOW_DEFAULT;
+  *bits = b;
+  return 0;
+}
+
+/* DIR/../share/bgdraw/styles of the running executable (installed), else
+ * DIR/share/bgdraw/styles (the build tree, where CMake copies them); NULL
+ * when neither exists (style.c then tries $BGDRAW_STYLE_DIR and ./styles). */
+static const char *installed_style_dir(void) {
+  static char dir[4200];
+  char exe[4096]; /* the executable's path, then its folder */
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n <= 0) return NULL;
+  exe[n] = '\0';
+  char *slash = strrchr(exe, '/');
+  if (!slash) return NULL;
+  *slash = '\0';
+  static const char *const rel[] = {"/../share/bgdraw/styles", "/share/bgdraw/styles"};
+  for (int i = 0; i < 2; i++) {
+    struct stat st;
+    snprintf(dir, sizeof dir, "%s%s", exe, rel[i]);
+    if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode)) return dir;
+  }
+  return NULL;
+}
+
+static int parse_max_list(run *r, const char *s) {
+  char *end;
+  long n = strtol(s, &end, 10);
+  if (end == s || *end || n < 1 || n > 100000000) {
+    fprintf(stderr, "bgdraw: error: --max-list takes a positive whole number, not '%s'\n", s);
+    return -1;
+  }
+  r->max_list = (int)n;
+  return 0;
+}
+
+int cli_render_options(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  bg_render_opts *ro = &r->ropts;
+  ro->show = BG_SHOW_DEFAULT;
+  if (o->show && parse_show(o->show, &ro->show) != 0) return -1;
+  if (o->highlight && bg_highlight_parse(o->highlight, &ro->highlight_kind,
+                                         &ro->highlight_index) != 0) {
+    fprintf(stderr, "bgdraw: error: --highlight takes path:K, loop:K or conflict:K, not '%s'\n",
+            o->highlight);
+    return -1;
+  }
+  if (o->max_list && parse_max_list(r, o->max_list) != 0) return -1;
+  r->max_errors = BG_DIAG_MAX_ERRORS;
+  if (o->max_errors) {
+    char *end;
+    long n = strtol(o->max_errors, &end, 10);
+    if (end == o->max_errors || *end || n < 0 || n > 1000000000) {
+      fprintf(stderr, "bgdraw: error: --max-errors takes a whole number (0: no limit), not '%s'\n",
+              o->max_errors);
+      return -1;
+    }
+    r->max_errors = (int)n;
+  }
+  ro->style = o->style;
+  const char *env = getenv("BGDRAW_STYLE_DIR");
+  ro->style_dir = env && *env ? NULL : installed_style_dir();
+  ro->layout = o->layout;
+  ro->verbose = o->verbose;
+  return 0;
+}

@@ -1,0 +1,145 @@
+/* Checks of option values and combinations. A run never silently ignores
+ * an option: -T that contradicts an -o extension, --simulate with nowhere to
+ * show the simulation and --check with outputs are refused with the fix. */
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "base/fileio.h"
+#include "cli/cli_usage.h"
+
+static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
+static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
+static const char *const lin_forms[] = {"text", "latex", "json", NULL};
+static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
+static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
+static const char *const diag_formats[] = {"text", "json", NULL};
+static const char *const colors[] = {"auto", "always", "never", NULL};
+
+int bg_cli_usage_error(const char *fmt, const char *a, const char *b) {
+  fputs("bgdraw: error: ", stderr);
+  fprintf(stderr, fmt, a, b);
+  fputs("\nTry 'bgdraw --help' for the options.\n", stderr);
+  return -1;
+}
+
+static int in_list(const char *s, const char *const *list) {
+  for (int i = 0; list[i]; i++)
+    if (strcmp(s, list[i]) == 0) return 1;
+  return 0;
+}
+
+static void join_list(const char *const *list, char *buf, size_t n) {
+  buf[0] = '\0';
+  for (int i = 0; list[i]; i++) {
+    if (i) strncat(buf, ", ", n - strlen(buf) - 1);
+    strncat(buf, list[i], n - strlen(buf) - 1);
+  }
+}
+
+static int check_choice(const char *opt, const char *val, const char *const *list) {
+  if (!val || in_list(val, list)) return 0;
+  char buf[200], msg[300];
+  join_list(list, buf, sizeof buf);
+  snprintf(msg, sizeof msg, "%s takes one of: %s", opt, buf);
+  return bg_cli_usage_error("unknown value '%s' for %s", val, msg);
+}
+
+static int check_choices(const bg_cli_opts *o) {
+  return check_choice("--causality", o->causality, methods) ||
+         check_choice("--equations", o->equations, eq_forms) ||
+         check_choice("--linear", o->linear, lin_forms) ||
+         check_choice("--layout", o->layout, layouts) ||
+         check_choice("-T", o->force_format, formats) ||
+         check_choice("--diagnostics-format", o->diag_format, diag_formats) ||
+         check_choice("--color", o->color, colors) ? -1 : 0;
+}
+
+/* -T gives the format of -o - and of files without a known extension; a
+ * known extension that says otherwise would be ignored, so it is an error. */
+static int resolve_format(const bg_cli_opts *o, bg_cli_output *out) {
+  const char *T = o->force_format;
+  char buf[200], msg[400];
+  if (bg_cli_is_stdout(out->path)) {
+    if (!T) return bg_cli_usage_error("-o - writes to stdout: name its format with -T "
+                                      "(e.g. -T svg)%s%s", "", "");
+    out->format = T;
+    return 0;
+  }
+  if (in_list(out->format, formats)) {
+    if (!T || !strcmp(T, out->format)) return 0;
+    snprintf(msg, sizeof msg, "-T %s with -o '%s'", T, out->path);
+    return bg_cli_usage_error("%s: the extension says %s; drop -T or rename the file",
+                              msg, out->format);
+  }
+  if (T) {
+    out->format = T;
+    return 0;
+  }
+  join_list(formats, buf, sizeof buf);
+  return bg_cli_usage_error("cannot tell the format of '%s': use an extension (%s) or -T FMT",
+                            out->path, buf);
+}
+
+static int count_stdout(const bg_cli_opts *o) {
+  int n = (o->equations ? 1 : 0) + (o->linear ? 1 : 0);
+  for (int i = 0; i < o->nout; i++) n += bg_cli_is_stdout(o->out[i].path);
+  return n;
+}
+
+static int has_format(const bg_cli_opts *o, const char *f) {
+  for (int i = 0; i < o->nout; i++)
+    if (!strcmp(o->out[i].format, f)) return 1;
+  return 0;
+}
+
+static int check_outputs(bg_cli_opts *o) {
+  if (o->force_format && o->nout == 0 && !o->check) {
+    o->out[0] = (bg_cli_output){BG_CLI_STDOUT, o->force_format}; /* as dot -Tsvg does */
+    o->nout = 1;
+  }
+  for (int i = 0; i < o->nout; i++)
+    if (resolve_format(o, &o->out[i]) != 0) return -1;
+  if (count_stdout(o) > 1)
+    return bg_cli_usage_error("only one output can go to stdout (-o -, -T without -o, "
+                              "--equations, --linear); write the others to files%s%s", "", "");
+  static const char *const plot_formats[] = {"svg", "pdf", "png", NULL};
+  if (o->plot && !in_list(bg_path_ext(o->plot), plot_formats))
+    return bg_cli_usage_error("--plot writes svg, pdf or png, not '%s'%s", o->plot, "");
+  if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
+    return bg_cli_usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report,
+                              "");
+  return 0;
+}
+
+/* Options that the rest of the request would ignore. */
+static int check_ignored(const bg_cli_opts *o) {
+  if (o->check && (o->nout || o->force_format || o->report || o->plot || o->equations ||
+                   o->simulate || o->depfile || o->linear))
+    return bg_cli_usage_error("--check writes nothing: drop it to write the outputs, or drop "
+                              "%s%s", o->nout || o->force_format ? "-o/-T"
+                              : o->report ? "--report" : o->plot ? "--plot"
+                              : o->equations ? "--equations"
+                              : o->simulate ? "--simulate"
+                              : o->linear ? "--linear" : "--depfile", "");
+  if (o->simulate && !o->plot && !o->report && !has_format(o, "csv") && !has_format(o, "json"))
+    return bg_cli_usage_error("--simulate alone shows no result: add --plot FILE, -o FILE.csv, "
+                              "-o FILE.json or --report FILE.pdf%s%s", "", "");
+  if (o->depfile) {
+    int files = o->report || o->plot;
+    for (int i = 0; i < o->nout; i++) files += !bg_cli_is_stdout(o->out[i].path);
+    if (!files && (o->nout || o->equations || o->linear))
+      return bg_cli_usage_error("--depfile names the files written as its targets, and this "
+                                "run writes only to stdout: add -o FILE%s%s", "", "");
+  }
+  return 0;
+}
+
+int bg_cli_check_usage(bg_cli_opts *o) {
+  if (check_choices(o) != 0) return -1;
+  if (check_outputs(o) != 0 || check_ignored(o) != 0) return -1;
+  /* as dot does: no model file and input from a pipe or file reads it */
+  if (!o->model_path && !isatty(fileno(stdin))) o->model_path = BG_CLI_STDOUT;
+  if (!o->model_path) return bg_cli_usage_error("no model file given (- reads stdin)%s%s", "", "");
+  return 0;
+}
