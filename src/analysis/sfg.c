@@ -261,6 +261,23 @@ static int var_node(const bg_model *m, int op, int ref) {
   }
 }
 
+/* Where a modulating reference enters the graph, and through how many
+ * integrators: a store's state in integral causality is the output of its
+ * integrator, not its effort or flow (C1's law reading C2.q does not read
+ * C2.e = F(C2.q, ...), which may read C1.q in turn: two such laws closed an
+ * "algebraic loop" the equations do not have). It enters from the
+ * integrator's input with order 1. Everything else as var_node. */
+static int var_source(const builder *B, const bg_xnode *x, int *order) {
+  const bg_model *m = B->m;
+  *order = 0;
+  if (x->op == BG_X_STORE && bg_paths_store_integral(m, B->a, x->ref)) {
+    int b = m->elem_bonds[m->elem_bondadr[x->ref]];
+    *order = 1;
+    return m->elem_kind[x->ref] == BG_ELEM_C ? F_(b) : E_(b);
+  }
+  return var_node(m, x->op, x->ref);
+}
+
 static int is_var(int op) {
   return op == BG_X_EFFORT || op == BG_X_FLOW || op == BG_X_STATE || op == BG_X_STORE;
 }
@@ -310,7 +327,10 @@ static void mod_label(builder *B, bg_sfg_edge *x, int root, int var, const char 
     x->den[0] = factor_text(B, r->arg[1]);
   } else {
     char nm[96], buf[224];
-    bg_sfg_node_name(m, var_node(m, m->xnode[var].op, m->xnode[var].ref), nm, sizeof nm);
+    const bg_xnode *v = &m->xnode[var];
+    if (v->op == BG_X_STORE)
+      snprintf(nm, sizeof nm, "%s.%c", m->elem_name[v->ref], m->elem_kind[v->ref] == BG_ELEM_C ? 'q' : 'p');
+    else bg_sfg_node_name(m, var_node(m, v->op, v->ref), nm, sizeof nm);
     snprintf(buf, sizeof buf, "d%s/d%s", who, nm);
     x->num[0] = bg_arena_strdup(&B->g->arena, buf);
   }
@@ -333,7 +353,7 @@ static void mod_edges(builder *B, int e) {
   for (int i = 0; i < nv; i++) {
     const bg_xnode *x = &m->xnode[vs[i]];
     if (own_var(m, e, x)) continue;
-    int u = var_node(m, x->op, x->ref);
+    int order, u = var_source(B, x, &order);
     double d = op_slope(m, root, &B->op, x->op, x->ref);
     for (int k = 0; k < m->elem_nbond[e]; k++) {
       int b = m->elem_bonds[m->elem_bondadr[e] + k];
@@ -342,6 +362,7 @@ static void mod_edges(builder *B, int e) {
       bg_sfg_edge *y = add_edge(B, u, out, BG_SFGE_MOD, e, d);
       mod_label(B, y, root, vs[i], m->elem_name[e]);
       y->linear = op_linear(m, root, &B->op, x->op, x->ref);
+      if (order) y->order = order, y->den[y->den[0] ? 1 : 0] = "s";
     }
   }
 }
@@ -355,10 +376,11 @@ static void state_edges(builder *B, int s) {
   for (int i = 0; i < nv; i++) {
     const bg_xnode *x = &m->xnode[vs[i]];
     double d = op_slope(m, root, &B->op, x->op, x->ref);
-    bg_sfg_edge *y = add_edge(B, var_node(m, x->op, x->ref), 2 * m->nbond + s, BG_SFGE_STATE, -1, d);
+    int order, u = var_source(B, x, &order);
+    bg_sfg_edge *y = add_edge(B, u, 2 * m->nbond + s, BG_SFGE_STATE, -1, d);
     mod_label(B, y, root, vs[i], m->state_name[s]);
     y->den[1] = "s";
-    y->order = 1;
+    y->order = 1 + order;
   }
 }
 

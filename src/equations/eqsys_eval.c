@@ -238,3 +238,28 @@ double bg_eqsys_input_period(const bg_eqsys *s, double t0, double t1) {
 }
 
 int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i) { return s->row_kind[i] != 0; }
+
+/* ------------------------------------------------------------ dependent stores' rates */
+/* A dependent store's state is fixed by its constraint (q = C e(t)); its
+ * rate q' is what the derivative-causality quantities read (C1.f = q'), but
+ * the residual does not contain it, so no initial-value solver can find it
+ * (IDACalcIC left it 0: the first row of `Se U = 1 + t` on a C read f = 0).
+ * It is the time derivative of the consistent solution: the constraints are
+ * solved at t - h and t + h with the independent states moved along their
+ * rates, and the central difference taken. */
+int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp, double h) {
+  int n = s->n, nd = 0;
+  for (int i = 0; i < s->nx; i++) nd += s->row_kind[i] == 1;
+  if (nd == 0 || !(h > 0) || n > 3000) return 0;
+  double *lo = bg_xmalloc((size_t)n * sizeof(double)), *hi = bg_xmalloc((size_t)n * sizeof(double));
+  for (int i = 0; i < n; i++) {
+    double move = i < s->nx && s->row_kind[i] == 0 ? h * yp[i] : 0;
+    lo[i] = y[i] - move, hi[i] = y[i] + move;
+  }
+  int rc = bg_eqsys_consistent(s, t - h, lo, 30) || bg_eqsys_consistent(s, t + h, hi, 30);
+  for (int i = 0; rc == 0 && i < s->nx; i++)
+    if (s->row_kind[i] == 1) yp[i] = (hi[i] - lo[i]) / (2 * h);
+  free(lo), free(hi);
+  s->has_err = 0;
+  return rc ? -1 : nd;
+}

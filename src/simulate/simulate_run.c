@@ -328,6 +328,13 @@ static int run_to(simrun *R, double tout) {
 static int run_calcic(simrun *R, double tnext) {
   int f = IDACalcIC(R->mem, IDA_YA_YDP_INIT, tnext);
   if (f >= 0) f = IDAGetConsistentIC(R->mem, R->y, R->yp);
+  /* IDACalcIC cannot see a dependent store's rate (its row holds no yp):
+   * from the constraints' time derivative, then IDA restarts from it */
+  double h = 1e-5 * (R->p->t_end - R->p->t0);
+  if (f >= 0 && bg_eqsys_dependent_rates(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), h) > 0) {
+    stats_now(R, R->st); /* IDAReInit resets the counters */
+    f = IDAReInit(R->mem, R->tcur, R->y, R->yp);
+  }
   return f;
 }
 

@@ -220,6 +220,35 @@ static void test_zero_eigenvalue(void) {
   efx_free(&f);
 }
 
+/* Issue 12, defect 7: two capacitors whose laws read each other's state.
+ * A law that reads a store's state reads the output of its integrator, not
+ * its effort, so no algebraic loop closes (it was "algebraic loop 3 from
+ * internal modulation of C2, gain 0.01", form dae, predicted index 1, while
+ * the equations are an ODE of numeric index 0). Also through a nonlinear
+ * law whose slope is 0 at the start (the loop read "gain 0"). */
+static void coupled_stores(const char *law1, const char *law2) {
+  char text[512];
+  snprintf(text, sizeof text,
+           "param k = 0.1\n1 j\nR R1 = 1\nC C1 : e = %s [q0 = 1]\nC C2 : e = %s\n"
+           "bond j -> R1\nbond j -> C1\nbond j -> C2\n", law1, law2);
+  efx f;
+  OK(efx_load(&f, NULL, text, -1, NULL, 0) == 0);
+  if (!f.s) return;
+  INT_EQ(f.a.form, BG_FORM_ODE);
+  INT_EQ(f.a.index_predicted, 0);
+  for (int t = 0; t < f.a.ntloop; t++) INT_EQ(f.a.tloop_algebraic[t], 0);
+  OK(bg_eqsys_is_ode(f.s));
+  bg_index_result r;
+  INT_EQ(bg_index_compute(f.s, f.m, &r), 0);
+  bg_index_free(&r);
+  efx_free(&f);
+}
+
+static void test_store_state_modulation(void) {
+  coupled_stores("q + k*C2.q", "q + k*C1.q");
+  coupled_stores("q + k*C2.q^2", "q + k*C1.q^2");
+}
+
 int main(void) {
   test_examples();
   test_other_examples();
@@ -227,5 +256,6 @@ int main(void) {
   test_rlc_eigen();
   test_conjugate_pairs();
   test_zero_eigenvalue();
+  test_store_state_modulation();
   return bg_t_done();
 }

@@ -148,9 +148,36 @@ static void test_row_warning(void) {
   bg_sb_free(&sb);
 }
 
+/* ------------------------------------------------------------------ first row */
+/* Issue 12, defect 2: a store fixed by a time-varying source has the rate
+ * of its constraint from the first row on (C1.f = C dU/dt), not 0: the
+ * residual holds no q', so IDACalcIC left it at its guess. */
+static void first_row(const char *text, double want_f, double want_q) {
+  fx f;
+  if (fx_text(&f, text, NULL)) { OK(0); return; }
+  INT_EQ(f.rc, 0);
+  int kq = col(&f.r, "C1.q"), kf = col(&f.r, "C1.f"), ku = col(&f.r, "U.f");
+  OK(kq >= 0 && kf >= 0 && ku >= 0 && f.r.nrows > 2);
+  if (kq >= 0 && kf >= 0 && ku >= 0 && f.r.nrows > 2) {
+    DBL_NEAR(val(&f.r, 0, kq), want_q, 1e-12);
+    DBL_NEAR(val(&f.r, 0, kf), want_f, 1e-9);
+    DBL_NEAR(val(&f.r, 0, ku), want_f, 1e-9);
+  }
+  fx_free(&f);
+}
+
+static void test_first_row(void) {
+  first_row("Se U = 1 + t\nC C1 = 1 [q0 = 1]\nbond U -> C1\nsimulate t_end = 1, dt = 0.1\n"
+            "plot C1.q, C1.f, U.f\n", 1, 1);
+  /* C1.f = 2 d(1 + t^2)/dt = 4 t0 at t0 = 0.5; q = 2 (1 + t0^2) */
+  first_row("Se U = 1 + t^2\nC C1 = 2 [q0 = 2.5]\nbond U -> C1\nsimulate t0 = 0.5, t_end = 1, dt = 0.1\n"
+            "plot C1.q, C1.f, U.f\n", 2, 2.5);
+}
+
 int main(void) {
   test_diode_sine();
   test_diode_bump();
   test_row_warning();
+  test_first_row();
   return bg_t_done();
 }
