@@ -103,11 +103,12 @@ int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, d
 /* Times in (t0, t1) where an input is discontinuous (step, pulse and table
  * breakpoints of inputs and sources that depend on t only), sorted, unique;
  * returns the count (at most max written). */
-/* Sets yp of the dependent stores to the time derivative of their
- * constraints' solution at (t, y), by central differences of width h (the
- * other entries of yp are the rates of the independent states). Dense
- * Newton: nothing happens above 3000 unknowns. Returns the number of stores
- * set (0: none), or -1 when an evaluation failed (yp unchanged then). */
+/* Sets yp of the dependent stores whose rate no residual reads to the time
+ * derivative of their constraints' solution at (t, y), by central
+ * differences of width h (the other entries of yp are the rates of the
+ * independent states). Dense: nothing happens above 1000 unknowns, nor when
+ * the constraints cannot be solved at t -+ h. Returns the number of stores
+ * set (0: none), or -1 when nothing could be set. */
 int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp, double h);
 /* The shortest period of the periodic functions of time (sin, cos, tan) in
  * the sources and inputs, from their angular rate at t0 and t1 (the larger);
