@@ -2,7 +2,9 @@
 # The linear analysis on the command line (docs/linear.md): --linear text,
 # latex and json with the hand-derived transfer functions of an RLC circuit,
 # the "linear" key of the analysis JSON, refusals (exit 3), examples without
-# a linearise statement keep their JSON.
+# a linearise statement keep their JSON; Bode, Nyquist and step plots (svg,
+# pdf, png, reruns identical, errors); the .m and .py exports (parsed; run
+# when octave or numpy are installed).
 # Usage: bash tests/linear_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 BG=${1:?usage: linear_cli.sh PATH_TO_BGDRAW}
@@ -46,6 +48,64 @@ check "refused: exit 3" '[ $rc -eq 3 ]'
 check "refused: message" 'grep -q "linear analysis refused: no steady state" "$TMP/err"'
 "$BG" "$TMP/mass.bg" -o "$TMP/m.json" 2>/dev/null; rc=$?
 check "JSON of a refused linearisation: exit 0" '[ $rc -eq 0 ] && grep -q "\"status\": \"refused\"" "$TMP/m.json"'
+# plots: Bode, Nyquist, step in every format, well-formed, byte-identical reruns
+"$BG" $M --bode "$TMP/b.svg" --nyquist "$TMP/n.svg" --step "$TMP/s.svg"; rc=$?
+check "plots exit 0" '[ $rc -eq 0 ]'
+for f in b n s; do
+  check "$f.svg well-formed" 'xmllint --noout "$TMP/$f.svg" 2>/dev/null'
+done
+"$BG" $M --bode "$TMP/b.pdf" --nyquist "$TMP/n.png" --step "$TMP/s.pdf" --style print
+"$BG" $M --bode "$TMP/b2.pdf" --nyquist "$TMP/n2.png" --step "$TMP/s2.pdf" --style print
+check "pdf signature" '[ "$(head -c 4 "$TMP/b.pdf")" = "%PDF" ]'
+check "png signature" '[ "$(head -c 4 "$TMP/n.png" | tail -c 3)" = "PNG" ]'
+check "plot reruns identical" 'cmp -s "$TMP/b.pdf" "$TMP/b2.pdf" && cmp -s "$TMP/n.png" "$TMP/n2.png" && cmp -s "$TMP/s.pdf" "$TMP/s2.pdf"'
+"$BG" $M --bode "$TMP/b.txt" 2>/dev/null; rc=$?
+check "bode bad extension: exit 2" '[ $rc -eq 2 ]'
+"$BG" $M --bode /nonexistent/dir/b.svg 2>/dev/null; rc=$?
+check "bode unwritable: exit 4" '[ $rc -eq 4 ]'
+"$BG" "$TMP/mass.bg" --bode "$TMP/never.svg" 2>/dev/null; rc=$?
+check "refused: no plot, exit 3" '[ $rc -eq 3 ] && [ ! -e "$TMP/never.svg" ]'
+
+# exports: Octave and Python state space with the hand-derived matrices
+"$BG" $M -o "$TMP/rlc.m" -o "$TMP/rlc.py"; rc=$?
+check "exports exit 0" '[ $rc -eq 0 ]'
+check "octave A" 'grep -qxF "A = [-4 -10;" "$TMP/rlc.m" && grep -qxF "     2 0];" "$TMP/rlc.m"'
+check "octave names" 'grep -qxF "state_names = {'"'"'L1.p'"'"', '"'"'C1.q'"'"'};" "$TMP/rlc.m"'
+python3 - "$TMP/rlc.py" <<'PY' || fail=$((fail + 1))
+import ast, sys
+tree = ast.parse(open(sys.argv[1]).read())
+vals = {}
+for node in tree.body:
+    if isinstance(node, ast.Assign) and isinstance(node.targets[0], ast.Name):
+        v = node.value
+        if isinstance(v, ast.Call):  # np.array(LIST, dtype=float)
+            v = v.args[0]
+        vals[node.targets[0].id] = ast.literal_eval(v)
+assert vals["A"] == [[-4, -10], [2, 0]], vals["A"]
+assert vals["B"] == [[1], [0]] and vals["C"] == [[0, 10], [2, 0]] and vals["D"] == [[0], [0]]
+assert vals["states"] == ["L1.p", "C1.q"] and vals["inputs"] == ["U"] and vals["outputs"] == ["vC", "i"]
+assert vals["x0"] == [0, 0.1] and vals["y0"] == [1, 0]
+PY
+if python3 -c "import numpy" 2>/dev/null; then
+  (cd "$TMP" && python3 -c "import rlc, numpy as np; assert np.allclose(np.linalg.eigvals(rlc.A), [-2+4j, -2-4j]) or np.allclose(np.linalg.eigvals(rlc.A), [-2-4j, -2+4j])") || { echo "FAIL python module"; fail=$((fail + 1)); }
+fi
+if command -v octave >/dev/null; then
+  octave -q --no-gui --eval "run('$TMP/rlc.m'); assert(max(abs(sort(eig(A)) - [-2-4i; -2+4i])) < 1e-12)" 2>"$TMP/octave.err" || { echo "FAIL octave"; fail=$((fail + 1)); }
+fi
+"$BG" "$TMP/mass.bg" -o "$TMP/never.m" 2>/dev/null; rc=$?
+check "refused export: exit 3, no file" '[ $rc -eq 3 ] && [ ! -e "$TMP/never.m" ]'
+
+# report: section 10 with the poles beside the chapter's estimates and the transfer functions
+"$BG" $M --report "$TMP/r.pdf"; rc=$?
+check "report exit 0" '[ $rc -eq 0 ]'
+pdftotext -layout "$TMP/r.pdf" "$TMP/r.txt"
+check "report section" 'grep -q "10  *Linear analysis" "$TMP/r.txt"'
+check "report pole beside estimate" 'grep -q "ω0 = 4.472 rad/s (path P3): the same to 0.5 %" "$TMP/r.txt"'
+check "report transfer function" 'grep -q "vC ← U" "$TMP/r.txt" && grep -q "Bode diagram" "$TMP/r.txt"'
+"$BG" examples/rlc.bg --report "$TMP/e.pdf"
+pdftotext "$TMP/e.pdf" "$TMP/e.txt"
+check "no linear section without linearise" '! grep -q "Linear analysis" "$TMP/e.txt"'
+
 "$BG" $M --linear yaml 2>/dev/null; rc=$?
 check "bad form: exit 2" '[ $rc -eq 2 ]'
 echo "linear_cli: $fail failures"

@@ -35,6 +35,7 @@ typedef struct panel {
 typedef struct plot {
   const bg_model *m;
   const bg_simresult *r;
+  const bg_plot_spec *spec; /* NULL: a simulation over time */
   const bg_style *st;
   bg_scene *s;
   panel *p;
@@ -146,7 +147,36 @@ static double map(double v, double lo, double hi, double a, double b) {
   return a + f * (b - a);
 }
 
-static double X(const plot *P, double t) { return map(t, P->t0, P->t1, P->left, P->right); }
+static int xlog(const plot *P) { return P->spec && P->spec->xlog; }
+
+static double X(const plot *P, double t) {
+  if (xlog(P)) return map(log10(t), log10(P->t0), log10(P->t1), P->left, P->right);
+  return map(t, P->t0, P->t1, P->left, P->right);
+}
+
+/* Value of x tick i: 1-2-5 steps, or decades on a log axis. */
+static double xtick(const plot *P, int i) {
+  return xlog(P) ? pow(10, P->x.k0 + i) : bg_plot_tick(&P->x, i);
+}
+
+/* Label of x tick i: the value, or 10 to the decade as markup. */
+static const char *xtick_label(const plot *P, int i, char *buf, size_t n) {
+  if (!xlog(P)) return bg_plot_tick_label(&P->x, i, 0, buf, n);
+  int k = (int)P->x.k0 + i;
+  if (k == 0 || k == 1) snprintf(buf, n, "%s", k ? "10" : "1");
+  else /* a superscript in points: pango's <sup> scales from the default font, not the label's */
+    snprintf(buf, n, "10<span size=\"%d\" rise=\"%d\">%s%d</span>", (int)(0.72 * P->fs_tick * 1024),
+             (int)(0.42 * P->fs_tick * 1024), k < 0 ? "\xe2\x88\x92" : "", k < 0 ? -k : k);
+  return buf;
+}
+
+/* Decade ticks between t0 and t1 (a log axis). */
+static void x_axis_log(plot *P) {
+  double a = log10(P->t0), b = log10(P->t1);
+  P->x = (bg_plot_axis){P->t0, P->t1, 1, ceil(a - 1e-9), 0, BG_PLOT_NO_PREFIX, 0};
+  P->x.n = (int)(floor(b + 1e-9) - P->x.k0) + 1;
+  if (P->x.n < 0) P->x.n = 0;
+}
 
 static double Y(const panel *q, double v) {
   return map(v, q->y.lo, q->y.hi, q->area_top + q->area_h, q->area_top);
@@ -158,14 +188,11 @@ static bg_rgba mix(bg_rgba a, bg_rgba b, double f) {
                    a.a + (b.a - a.a) * f};
 }
 
-static double curve_width(const plot *P) { return fmax(1.1, 1.4 * P->st->line_width); }
-
 /* Curve j: colour j mod the style's layer colours, dash pattern j mod 5, so
  * that neighbours differ in both and a grey print still tells them apart. */
-static void curve_style(const plot *P, int j, bg_scene_item *it) {
+void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it) {
   static const double dash[][2] = {{0, 0}, {6, 3}, {0, 2.6}, {12, 3.5}, {3, 2}};
-  const bg_style *st = P->st;
-  double w = curve_width(P);
+  double w = fmax(1.1, 1.4 * st->line_width);
   it->color = st->nlayer_color > 0 ? st->layer_color[j % st->nlayer_color] : st->fg;
   it->width = w;
   it->round = 1;
@@ -209,7 +236,7 @@ static int legend_pass(plot *P, int k, int draw) {
       for (int j = start; j < end; j++) {
         if (j < q->nshown) {
           bg_scene_item *it = bg_scene_begin(P->s, BG_ITEM_STROKE, "legend-sample %d", k + 1);
-          curve_style(P, j, it);
+          bg_plot_curve_style(P->st, j, it);
           bg_scene_move(P->s, x, y);
           bg_scene_line(P->s, x + SAMPLE_W, y);
           snprintf(role, sizeof role, "legend %d", k + 1);
@@ -241,6 +268,10 @@ static double ytick_width(plot *P, const panel *q) {
 
 /* Time ticks: as many as fit with their labels 12 pt apart. */
 static void x_axis(plot *P) {
+  if (xlog(P)) {
+    x_axis_log(P);
+    return;
+  }
   double w = P->right - P->left;
   int maxn = (int)(w / 45);
   if (maxn < 1) maxn = 1;
@@ -263,8 +294,8 @@ static void x_axis_fit(plot *P) {
   x_axis(P);
   if (P->x.n < 1) return;
   char buf[96];
-  double hw = text_width(P, P->fs_tick, bg_plot_tick_label(&P->x, P->x.n - 1, 0, buf, sizeof buf)) / 2;
-  double over = X(P, bg_plot_tick(&P->x, P->x.n - 1)) + hw - (P->W - 1);
+  double hw = text_width(P, P->fs_tick, xtick_label(P, P->x.n - 1, buf, sizeof buf)) / 2;
+  double over = X(P, xtick(P, P->x.n - 1)) + hw - (P->W - 1);
   if (over > 0) {
     P->right -= over;
     x_axis(P);
@@ -324,16 +355,31 @@ static void layout(plot *P) {
 }
 
 /* ---------------------------------------------------------------- drawing */
+/* A log axis: fainter lines at 2 .. 9 times each decade. */
+static void draw_minor_grid(plot *P, const panel *q, int k) {
+  bg_scene_item *it = bg_scene_begin(P->s, BG_ITEM_STROKE, "grid minor %d", k + 1);
+  it->color = mix(P->st->muted, P->st->background, 0.75);
+  it->width = 0.35;
+  for (double d = floor(log10(P->t0)); d <= log10(P->t1); d++)
+    for (int m = 2; m <= 9; m++) {
+      double v = m * pow(10, d);
+      if (v <= P->t0 || v >= P->t1) continue;
+      bg_scene_move(P->s, X(P, v), q->area_top);
+      bg_scene_line(P->s, X(P, v), q->area_top + q->area_h);
+    }
+}
+
 static void draw_grid(plot *P, const panel *q, int k) {
   bg_scene_item *it = bg_scene_begin(P->s, BG_ITEM_STROKE, "grid %d", k + 1);
   it->color = mix(P->st->muted, P->st->background, 0.45);
   it->width = 0.5;
   double bot = q->area_top + q->area_h;
   for (int i = 0; i < P->x.n; i++) {
-    double x = X(P, bg_plot_tick(&P->x, i));
+    double x = X(P, xtick(P, i));
     bg_scene_move(P->s, x, q->area_top);
     bg_scene_line(P->s, x, bot);
   }
+  if (xlog(P)) draw_minor_grid(P, q, k);
   for (int i = 0; i < q->y.n; i++) {
     double y = Y(q, bg_plot_tick(&q->y, i));
     bg_scene_move(P->s, P->left, y);
@@ -379,15 +425,15 @@ static void draw_xticks(plot *P, const panel *q, int k, int labels) {
   it->color = P->st->fg;
   it->width = 0.6;
   for (int i = 0; i < P->x.n; i++) {
-    double x = X(P, bg_plot_tick(&P->x, i));
+    double x = X(P, xtick(P, i));
     bg_scene_move(P->s, x, bot);
     bg_scene_line(P->s, x, bot + TICK_LEN);
   }
   if (!labels) return;
   char buf[96];
   for (int i = 0; i < P->x.n; i++)
-    text(P, bg_plot_tick_label(&P->x, i, 0, buf, sizeof buf), X(P, bg_plot_tick(&P->x, i)),
-         bot + TICK_LEN + 2, P->fs_tick, 0.5, 0, "tick x");
+    text(P, xtick_label(P, i, buf, sizeof buf), X(P, xtick(P, i)), bot + TICK_LEN + 2,
+         P->fs_tick, 0.5, 0, "tick x");
   /* the axis name: the first xlabel other than the default "t" */
   const char *name = "t";
   for (int j = 0; j < P->m->nplot && P->np == P->m->nplot; j++)
@@ -395,9 +441,12 @@ static void draw_xticks(plot *P, const panel *q, int k, int labels) {
       name = P->m->plot_xlabel[j];
       break;
     }
+  if (P->spec && P->spec->xname) name = P->spec->xname;
   bg_strbuf b = {0};
   bg_markup_escapen(&b, name, strlen(name));
-  bg_sb_printf(&b, " [%ss]", P->x.exp3 == BG_PLOT_NO_PREFIX ? "" : bg_plot_si_prefix(P->x.exp3));
+  if (!P->spec || !P->spec->xunit)
+    bg_sb_printf(&b, " [%ss]", P->x.exp3 == BG_PLOT_NO_PREFIX ? "" : bg_plot_si_prefix(P->x.exp3));
+  else bg_sb_printf(&b, " [%s]", P->spec->xunit);
   text(P, bg_sb_str(&b), (P->left + P->right) / 2, bot + TICK_LEN + 2 + P->h_tick + 3,
        P->fs_label, 0.5, 0, "xlabel");
   bg_sb_free(&b);
@@ -468,7 +517,7 @@ static void bucket_flush(const plot *P, const panel *q, int col, bucket *b, pen 
 
 static void draw_curve(plot *P, const panel *q, int k, int j) {
   bg_scene_item *it = bg_scene_begin(P->s, BG_ITEM_STROKE, "curve %d.%d", k + 1, j + 1);
-  curve_style(P, j, it);
+  bg_plot_curve_style(P->st, j, it);
   int col = q->col0 + j;
   pen p = {P->s, 0, 0, 0, 0};
   bucket b = {0};
@@ -571,8 +620,13 @@ static void draw_panel(plot *P, int k) {
 /* ---------------------------------------------------------------- API */
 void bg_plot_scene(const bg_model *m, const bg_simresult *r, const bg_style *st, double width,
                    double height, bg_scene *out) {
+  bg_plot_scene_spec(m, r, NULL, st, width, height, out);
+}
+
+void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_spec *spec,
+                        const bg_style *st, double width, double height, bg_scene *out) {
   plot P = {0};
-  P.m = m, P.r = r, P.st = st, P.s = out;
+  P.m = m, P.r = r, P.spec = spec, P.st = st, P.s = out;
   P.W = width > 100 ? width : 100;
   P.H = height;
   make_panels(&P);
@@ -593,6 +647,21 @@ static int render_format(const bg_scene *s, const char *fmt, double png_scale, b
   return bg_surface_png_write(s, png_scale, out);
 }
 
+int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, bg_diags *dg) {
+  const char *fmt = bg_path_ext(path);
+  bg_strbuf out = {0};
+  int rc = BG_RENDER_OK;
+  if (render_format(sc, fmt, png_scale, &out) != 0) {
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the %s plot", fmt);
+    rc = BG_RENDER_ERROR;
+  } else if (bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
+    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    rc = BG_RENDER_EWRITE;
+  }
+  bg_sb_free(&out);
+  return rc;
+}
+
 int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
                   const char *style_dir, const char *path, bg_diags *dg) {
   const char *fmt = bg_path_ext(path);
@@ -611,16 +680,7 @@ int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
   sc.title = bg_arena_strdup(&sc.arena, bg_sb_str(&t));
   bg_sb_free(&t);
   bg_plot_scene(m, r, &st, PLOT_WIDTH, 0, &sc);
-  bg_strbuf out = {0};
-  int rc = BG_RENDER_OK;
-  if (render_format(&sc, fmt, st.png_scale, &out) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the %s plot", fmt);
-    rc = BG_RENDER_ERROR;
-  } else if (bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
-    rc = BG_RENDER_EWRITE;
-  }
-  bg_sb_free(&out);
+  int rc = bg_plot_write_scene(&sc, path, st.png_scale, dg);
   bg_scene_free(&sc);
   return rc;
 }

@@ -17,6 +17,24 @@
 void bg_plot_scene(const bg_model *m, const bg_simresult *r, const bg_style *st, double width,
                    double height, bg_scene *out);
 
+/* The same look for data over another axis (the linear analysis'
+ * frequency and time responses, render/plot/plot_linear.c): r holds the
+ * rows (t = the abscissa), m the panels (plot_expradr, plot_nexpr, titles,
+ * ylabels; sim.present = 0). */
+typedef struct bg_plot_spec {
+  int xlog;          /* log10 abscissa with decade ticks and a minor grid */
+  const char *xname; /* the axis name ("ω"); NULL: the panels' xlabel or "t" */
+  const char *xunit; /* written as " [unit]"; NULL: seconds with the axis' SI prefix */
+} bg_plot_spec;
+void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_spec *spec,
+                        const bg_style *st, double width, double height, bg_scene *out);
+/* Curve j's colour and dash pattern (docs/plots.md, Line styles). */
+void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it);
+
+/* Replays a finished scene into path (svg, pdf or png by its extension)
+ * atomically: BG_RENDER_OK, BG_RENDER_ERROR or BG_RENDER_EWRITE. */
+int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, bg_diags *dg);
+
 /* --plot FILE: writes the plots to path (svg, pdf or png by its extension)
  * atomically. style and style_dir as in bg_render_opts. Returns
  * BG_RENDER_OK, BG_RENDER_ERROR or BG_RENDER_EWRITE (see render.h), with

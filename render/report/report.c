@@ -32,12 +32,15 @@ static void body(rp_ctx *c) {
   rp_sec_estimates(c);
   progress(c, "simulation");
   rp_sec_simulation(c);
+  if (c->in->lin) progress(c, "linear analysis");
+  rp_sec_linear(c);
 }
 
 static void free_ctx(rp_ctx *c) {
   for (int i = 0; i < c->ndiag; i++) bg_diagram_free(c->diag[i]);
   free(c->diag);
   if (c->plot) bg_scene_free(c->plot), free(c->plot);
+  for (int i = 0; i < c->nlin_plot; i++) bg_scene_free(c->lin_plot[i]), free(c->lin_plot[i]);
   rp_doc_free(&c->body);
 }
 

@@ -13,6 +13,7 @@
 #include "model/model.h"
 #include "diagram/render.h"
 #include "simulate/simulate.h"
+#include "linear/linear.h"
 
 /* What one run knows; everything borrowed; the nullable parts are missing
  * when that stage did not run or failed (the report then says why). */
@@ -26,6 +27,7 @@ typedef struct bg_report_input {
   const bg_simresult *sim;      /* nullable: no simulate block / not run */
   int sim_status;               /* bg_simulate's return: 0 ok, 1 refused, 2 failed */
   const bg_render_opts *ropts;  /* style, layout, verbose */
+  const bg_linear *lin;         /* nullable: no linear analysis (section 10 left out) */
 } bg_report_input;
 
 /* Writes the report to path atomically. Returns BG_RENDER_OK,

@@ -196,6 +196,8 @@ typedef struct rp_ctx {
   bg_diagram *full;  /* section 2's diagram, whose layout the highlights reuse (in diag) */
   int ndiag, capdiag;
   bg_scene *plot;     /* the simulation plots (owned), nullable */
+  bg_scene *lin_plot[2]; /* the linear analysis' Bode and step plots (owned) */
+  int nlin_plot;
   bg_diags *dg;
   int failed;        /* a diagram could not be built (errors in dg) */
 } rp_ctx;
@@ -213,6 +215,8 @@ void rp_sec_estimates(rp_ctx *c);
 void rp_sec_equations(rp_ctx *c);
 /* report_sim.c */
 void rp_sec_simulation(rp_ctx *c);
+/* report_linear.c: only when the run made a linear analysis */
+void rp_sec_linear(rp_ctx *c);
 /* report_summary.c: the title page with the summary and the contents of
  * body (page numbers counted after the front pages). */
 void rp_front(rp_ctx *c, rp_doc *front);

@@ -7,6 +7,7 @@
 #include "base/fileio.h"
 #include "cli/cli_run.h"
 #include "json/json_linear.h"
+#include "plot/plot_linear.h"
 
 static int has_format(const bg_cli_opts *o, const char *f) {
   for (int i = 0; i < o->nout; i++)
@@ -15,7 +16,7 @@ static int has_format(const bg_cli_opts *o, const char *f) {
 }
 
 int cli_linear_asked(const bg_cli_opts *o) {
-  return o->linear != NULL;
+  return o->linear || o->bode || o->nyquist || o->step || has_format(o, "m") || has_format(o, "py");
 }
 
 int cli_linear_only(const bg_cli_opts *o) {
@@ -44,9 +45,39 @@ static int refused(run *r) {
   return 1;
 }
 
+static int write_text(const char *path, const bg_strbuf *sb) {
+  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
+  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
+  return EXIT_WRITE;
+}
+
+int cli_write_linear_export(run *r, const char *path, const char *format) {
+  if (refused(r)) return EXIT_SIM;
+  if (!r->lin.reduced) {
+    fprintf(stderr, "bgdraw: error: no state space to export to '%s': %s\n", path,
+            r->lin.reduce_note ? r->lin.reduce_note : "not reduced");
+    return EXIT_SIM;
+  }
+  bg_strbuf sb = {0};
+  if (!strcmp(format, "m")) bg_linear_export_m(&r->lin, r->model, &sb);
+  else bg_linear_export_py(&r->lin, r->model, &sb);
+  int rc = write_text(path, &sb);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+static int write_plot(run *r, const char *path, int kind) {
+  bg_diags dg;
+  bg_diags_init(&dg, "bgdraw", NULL, 0);
+  int rc = bg_plot_linear_write(r->model, &r->lin, kind, r->ropts.style, r->ropts.style_dir, path, &dg);
+  if (rc) bg_diags_print(&dg, stderr);
+  bg_diags_free(&dg);
+  return rc == 0 ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_SIM;
+}
+
 int cli_write_linear(run *r) {
   const bg_cli_opts *o = &r->opts;
-  if (!o->linear) return EXIT_OK;
+  if (!o->linear && !o->bode && !o->nyquist && !o->step) return EXIT_OK;
   if (!r->lin_done) return EXIT_OK;
   if (o->linear) {
     bg_strbuf sb = {0};
@@ -56,5 +87,10 @@ int cli_write_linear(run *r) {
     bg_sb_free(&sb);
     if (rc) return rc;
   }
-  return refused(r) ? EXIT_SIM : EXIT_OK;
+  if (refused(r)) return EXIT_SIM;
+  int rc = EXIT_OK;
+  if (o->bode) rc = write_plot(r, o->bode, BG_PLOT_BODE);
+  if (!rc && o->nyquist) rc = write_plot(r, o->nyquist, BG_PLOT_NYQUIST);
+  if (!rc && o->step) rc = write_plot(r, o->step, BG_PLOT_STEP);
+  return rc;
 }

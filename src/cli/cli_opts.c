@@ -17,7 +17,7 @@
 
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
-  OPT_EQUATIONS, OPT_LINEAR, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR
+  OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR
 };
 
 static const char short_opts[] = ":o:T:M:qvhV";
@@ -35,6 +35,9 @@ static const struct option long_opts[] = {
     {"plot", required_argument, NULL, OPT_PLOT},
     {"equations", required_argument, NULL, OPT_EQUATIONS},
     {"linear", required_argument, NULL, OPT_LINEAR},
+    {"bode", required_argument, NULL, OPT_BODE},
+    {"nyquist", required_argument, NULL, OPT_NYQUIST},
+    {"step", required_argument, NULL, OPT_STEP},
     {"max-list", required_argument, NULL, OPT_MAX_LIST},
     {"max-errors", required_argument, NULL, OPT_MAX_ERRORS},
     {"set", required_argument, NULL, OPT_SET},
@@ -63,6 +66,9 @@ static const struct {
     {OPT_PLOT, offsetof(bg_cli_opts, plot)},
     {OPT_EQUATIONS, offsetof(bg_cli_opts, equations)},
     {OPT_LINEAR, offsetof(bg_cli_opts, linear)},
+    {OPT_BODE, offsetof(bg_cli_opts, bode)},
+    {OPT_NYQUIST, offsetof(bg_cli_opts, nyquist)},
+    {OPT_STEP, offsetof(bg_cli_opts, step)},
     {OPT_MAX_LIST, offsetof(bg_cli_opts, max_list)},
     {OPT_MAX_ERRORS, offsetof(bg_cli_opts, max_errors)},
     {OPT_DIAG_FORMAT, offsetof(bg_cli_opts, diag_format)},
@@ -200,6 +206,7 @@ void bg_cli_print_help(FILE *out) {
       "  .svg .pdf .png   annotated diagram        .json  analysis\n"
       "  .dot             graph with positions     .tex   equations in LaTeX\n"
       "  .c               equations as C           .csv   simulation results\n"
+      "  .m .py           linear state space (Octave/MATLAB; Python with numpy)\n"
       "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
       "                      -o - (stdout); -T alone writes to stdout\n"
       "  -M, --depfile FILE  make rule: the outputs depend on the model, style\n"
@@ -220,6 +227,8 @@ void bg_cli_print_help(FILE *out) {
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"
       "  --linear FORM       linear analysis: text | latex | json (docs/linear.md)\n"
+      "  --bode FILE, --nyquist FILE, --step FILE\n"
+      "                      frequency, step and impulse responses (svg, pdf, png)\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"

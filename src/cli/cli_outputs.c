@@ -131,6 +131,8 @@ static int write_one(run *r, const bg_cli_output *out) {
   if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
   if (!strcmp(out->format, "c")) return cli_write_equations(r, out->path, "c");
   if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
+  if (!strcmp(out->format, "m") || !strcmp(out->format, "py"))
+    return cli_write_linear_export(r, out->path, out->format);
   BG_FATAL("option parsing let through output format '%s'", out->format);
 }
 
@@ -164,7 +166,8 @@ int cli_write_report(run *r) {
              bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
   bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
                         r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
-                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts};
+                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts,
+                        r->lin_done ? &r->lin : NULL};
   bg_diags dg;
   bg_diags_init(&dg, "bgdraw", NULL, 0);
   int rc = bg_report_write(&in, r->opts.report, &dg);

@@ -79,4 +79,5 @@ int cli_linear_asked(const bg_cli_opts *o); /* --linear, --bode, ..., .m, .py */
 int cli_linear_only(const bg_cli_opts *o);  /* and nothing else: no default diagram */
 void cli_linearise(run *r);
 int cli_write_linear(run *r);
+int cli_write_linear_export(run *r, const char *path, const char *format);
 #endif

@@ -8,7 +8,7 @@
 #include "base/fileio.h"
 #include "cli/cli_usage.h"
 
-static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", NULL};
+static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
 static const char *const lin_forms[] = {"text", "latex", "json", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
@@ -109,6 +109,11 @@ static int check_outputs(bg_cli_opts *o) {
   if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
     return bg_cli_usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report,
                               "");
+  const char *const lin_plots[] = {o->bode, o->nyquist, o->step};
+  const char *const lin_names[] = {"--bode", "--nyquist", "--step"};
+  for (int i = 0; i < 3; i++)
+    if (lin_plots[i] && !in_list(bg_path_ext(lin_plots[i]), plot_formats))
+      return bg_cli_usage_error("%s writes svg, pdf or png, not '%s'", lin_names[i], lin_plots[i]);
   return 0;
 }
 

@@ -163,6 +163,33 @@ static double norm_bound(const bg_linear *l) {
   return best;
 }
 
+/* The smallest |lambda| of a reduced A by inverse iteration on its
+ * Hessenberg form (30 solves, O(n^2) at most each); 0 when A is singular. */
+static double smallest_mode(const bg_linear *l) {
+  hess h;
+  hess_build(l, &h);
+  int n = h.n;
+  double complex *M = bg_xmalloc((size_t)n * n * sizeof *M + 1), *x = bg_xcalloc((size_t)n + 1, sizeof *x);
+  int *ext = bg_xcalloc((size_t)n + 1, sizeof *ext);
+  h.nu = 1;
+  free(h.QB);
+  h.QB = bg_xcalloc((size_t)n + 1, sizeof *h.QB);
+  for (int i = 0; i < n; i++) h.QB[i] = 1 + 0.5 * sin(1.7 * i); /* a fixed start */
+  double est = 0;
+  for (int it = 0; it < 30; it++) {
+    double nv = 0, nx = 0;
+    for (int i = 0; i < n; i++) nv += h.QB[i] * h.QB[i];
+    hess_solve(&h, 0, M, ext, x); /* x = -H^-1 v */
+    for (int i = 0; i < n; i++) nx += creal(x[i]) * creal(x[i]);
+    if (!(nx > 0) || !isfinite(nx)) { est = 0; break; }
+    est = sqrt(nv / nx);
+    for (int i = 0; i < n; i++) h.QB[i] = creal(x[i]) / sqrt(nx);
+  }
+  free(M), free(x), free(ext);
+  hess_free(&h);
+  return est;
+}
+
 int bg_linear_freqs(const bg_linear *l, const bg_model *m, int nw, double *w) {
   double lo, hi;
   if (l->npole || l->ntf) {
@@ -171,7 +198,8 @@ int bg_linear_freqs(const bg_linear *l, const bg_model *m, int nw, double *w) {
   } else {
     hi = norm_bound(l);
     hi = hi > 0 ? pow(10, ceil(log10(hi)) + 1) : 10;
-    lo = hi * 1e-7;
+    double small = l->reduced && l->n > 0 ? smallest_mode(l) : 0;
+    lo = small > 0 ? pow(10, floor(log10(small)) - 1) : hi * 1e-7;
   }
   if (hi / lo > 1e12) lo = hi * 1e-12; /* at most 12 decades */
   if (m->linear.w_min > 0) lo = m->linear.w_min;

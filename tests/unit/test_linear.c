@@ -248,7 +248,29 @@ static void test_no_steady(void) {
   done();
 }
 
+/* RLC step and impulse responses against the closed forms:
+ * vC = 1 - e^-2t (cos 4t + sin(4t)/2), i = e^-2t sin(4t)/2, impulse of vC = 5 e^-2t sin 4t. */
+static void test_rlc_time(void) {
+  OK(lin(rlc, 0) == 0);
+  double t_end = bg_linear_t_end(&L, F.m); /* 5 time constants of the -2 pair: 2.5 -> 5 */
+  DBL_NEAR(t_end, 5, 0);
+  enum { NT = 201 };
+  double y[2 * NT], yi[2 * NT], worst = 0;
+  OK(bg_linear_step(&L, t_end, NT, 0, y) == 0);
+  OK(bg_linear_step(&L, t_end, NT, 1, yi) == 0);
+  for (int k = 0; k < NT; k++) {
+    double t = t_end * k / (NT - 1), e = exp(-2 * t);
+    worst = fmax(worst, fabs(y[k] - (1 - e * (cos(4 * t) + 0.5 * sin(4 * t)))));
+    worst = fmax(worst, fabs(y[NT + k] - 0.5 * e * sin(4 * t)));
+    worst = fmax(worst, fabs(yi[k] - 5 * e * sin(4 * t)));
+  }
+  OK(worst < 1e-12);
+  if (worst >= 1e-12) printf("  worst step/impulse difference %g\n", worst);
+  done();
+}
+
 int main(void) {
+  test_rlc_time();
   test_rlc();
   test_rlc_bode();
   test_two_mass();

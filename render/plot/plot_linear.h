@@ -1,0 +1,21 @@
+/* Plots of the linear analysis (docs/linear.md#plots): Bode, Nyquist, step
+ * and impulse responses, in the simulation plots' look (docs/plots.md). */
+#ifndef BG_PLOT_LINEAR_H
+#define BG_PLOT_LINEAR_H
+#include "base/diag.h"
+#include "linear/linear.h"
+#include "model/model.h"
+#include "scene/scene.h"
+#include "scene/style.h"
+
+enum { BG_PLOT_BODE, BG_PLOT_NYQUIST, BG_PLOT_STEP };
+
+/* Draws plot `kind` of every input/output pair into out, width points wide
+ * (height chosen). 0, or -1 when there is nothing to draw (not linearised,
+ * no pair, step responses of a descriptor-only system or above 400 states). */
+int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const bg_style *st,
+                         double width, bg_scene *out);
+/* Writes it to path (svg, pdf, png) atomically; BG_RENDER_OK / _ERROR / _EWRITE. */
+int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
+                         const char *style_dir, const char *path, bg_diags *dg);
+#endif
