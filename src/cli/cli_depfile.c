@@ -29,7 +29,8 @@ static void add_unique(const char **list, int *n, int cap, const char *path) {
 static int collect_inputs(const run *r, const char **in, int cap, char *style_buf, size_t n) {
   int k = 0;
   if (!bg_cli_is_stdout(r->opts.model_path)) add_unique(in, &k, cap, r->opts.model_path);
-  if (r->diagram || r->opts.plot || r->opts.report) {
+  if (r->diagram || r->opts.plot || r->opts.report || r->opts.bode || r->opts.nyquist ||
+      r->opts.step) {
     bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style_buf, n);
     if (access(style_buf, R_OK) == 0) add_unique(in, &k, cap, style_buf);
   }
@@ -50,8 +51,8 @@ int cli_write_depfile(run *r) {
     if (ntarget++) bg_sb_putc(&b, ' ');
     put_path(&b, r->opts.out[i].path);
   }
-  const char *more[] = {r->opts.plot, r->opts.report};
-  for (int i = 0; i < 2; i++)
+  const char *more[] = {r->opts.plot, r->opts.report, r->opts.bode, r->opts.nyquist, r->opts.step};
+  for (int i = 0; i < 5; i++)
     if (more[i]) {
       if (ntarget++) bg_sb_putc(&b, ' ');
       put_path(&b, more[i]);

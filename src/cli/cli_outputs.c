@@ -25,12 +25,15 @@ int cli_check_outputs(run *r) {
   bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style,
                 sizeof style);
   bg_input_note(style);
-  const char *paths[BG_MAX_OUTPUTS + 3];
+  const char *paths[BG_MAX_OUTPUTS + 6];
   int n = 0;
   for (int i = 0; i < r->opts.nout; i++)
     if (!bg_cli_is_stdout(r->opts.out[i].path)) paths[n++] = r->opts.out[i].path;
   if (r->opts.plot) paths[n++] = r->opts.plot;
   if (r->opts.report) paths[n++] = r->opts.report;
+  const char *lin_plots[] = {r->opts.bode, r->opts.nyquist, r->opts.step};
+  for (int i = 0; i < 3; i++)
+    if (lin_plots[i]) paths[n++] = lin_plots[i];
   if (r->opts.depfile && !bg_cli_is_stdout(r->opts.depfile)) paths[n++] = r->opts.depfile;
   for (int i = 0; i < n; i++) {
     if (!bg_path_is_input(paths[i])) continue;
