@@ -107,16 +107,41 @@ static int layout_edges(const bg_diagram *d, int **tail, int **head) {
   return n;
 }
 
+/* The roots dot ranks from: the first source (in model order) of each
+ * connected part, so a chain with sources at both ends (slider crank) runs
+ * from one to the other instead of folding back from both. A part without a
+ * source starts from its first node (layout.c). */
+static void first_sources(const bg_diagram *d, const int *tail, const int *head, int ne,
+                          unsigned char *root) {
+  const bg_model *m = d->m;
+  int *up = bg_xcalloc((size_t)d->nnode + 1, sizeof *up);
+  unsigned char *has = bg_xcalloc((size_t)d->nnode + 1, 1);
+  for (int v = 0; v < d->nnode; v++) up[v] = v;
+  for (int i = 0; i < ne; i++) {
+    int a = tail[i], b = head[i];
+    while (up[a] != a) a = up[a] = up[up[a]];
+    while (up[b] != b) b = up[b] = up[up[b]];
+    up[a] = b;
+  }
+  for (int e = 0; e < m->nelem; e++) {
+    int c = e;
+    while (up[c] != c) c = up[c];
+    if (bg_elem_is_source(m->elem_kind[e]) && !has[c]) has[c] = 1, root[e] = 1;
+  }
+  free(up), free(has);
+}
+
 static int run_layout(bg_diagram *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int *tail, *head, ne = layout_edges(d, &tail, &head);
   int *pinned = bg_xcalloc((size_t)d->nnode, sizeof *pinned);
   unsigned char *root = bg_xcalloc((size_t)d->nnode, 1);
   double *px = bg_xcalloc((size_t)d->nnode, sizeof *px), *py = bg_xcalloc((size_t)d->nnode, sizeof *py);
-  for (int e = 0; e < m->nelem; e++) {
-    if (m->elem_has_at && m->elem_has_at[e]) pinned[e] = 1, px[e] = m->elem_at_x[e], py[e] = m->elem_at_y[e];
-    root[e] = bg_elem_is_source(m->elem_kind[e]);
-  }
+  int any_pinned = 0;
+  for (int e = 0; e < m->nelem; e++)
+    if (m->elem_has_at && m->elem_has_at[e])
+      pinned[e] = any_pinned = 1, px[e] = m->elem_at_x[e], py[e] = m->elem_at_y[e];
+  first_sources(d, tail, head, ne, root);
   /* the junction structure (bonds between junctions and two-ports) straight,
    * the one-ports hanging off it */
   int *weight = bg_xcalloc((size_t)ne + 1, sizeof *weight);
@@ -135,6 +160,9 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
+  const char *rd = m->layout.rankdir;
+  if (!strcmp(in.engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")))
+    bg_grid_place(d);
   return 0;
 }
 
@@ -206,28 +234,41 @@ static void draw_stroke(bg_diagram *d, int b) {
   }
 }
 
-/* A point on bond b a fraction t of the way (the middle from the geometry,
- * elsewhere on the chord). */
-static bg_vec along_bond(const bg_diagram *d, int b, double t) {
-  const bg_bond_geom *g = &d->bg[b];
-  if (t == 0.5) return g->mid;
-  return bg_vadd(g->tail, bg_vscale(bg_vsub(g->head, g->tail), t));
+/* How far text beside bond b on side n (travelling along dir) keeps from
+ * the line: 3.5 pt, or beyond the path and loop lines drawn on that side. */
+static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
+  bg_vec left = bg_vleft(dir);
+  int fwd = dir.x * d->bg[b].hdir.x + dir.y * d->bg[b].hdir.y > 0; /* dir is tail → head */
+  int on_left = left.x * n.x + left.y * n.y > 0;
+  int used = d->side_use[2 * b + (fwd == on_left ? 0 : 1)];
+  if (!used) return 3.5;
+  double step = fmax(3, 2.5 * d->st.layer_width);
+  return d->st.layer_offset + step * (used - 1) + d->st.layer_width / 2 + 2.5;
 }
 
-/* Places text beside bond b on the side n, 3.5 pt clear of the line: at the
- * middle if that is free, else a little along the bond or further out. */
-static void text_beside(bg_diagram *d, const char *markup, int b, bg_vec n, double size,
+/* Places text beside bond b, on the barb side (side 1) or opposite (-1),
+ * 3.5 pt clear of the line: at the middle if that is free, else a little
+ * along the bond or further out. On a bent bond the places are along its
+ * longest leg, on that leg's side. */
+static void text_beside(bg_diagram *d, const char *markup, int b, int side, double size,
                         bg_rgba c, const char *role) {
   static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
   enum { NT = sizeof ts / sizeof ts[0] };
   double w, h;
   bg_text_measure(d->st.font, size, markup, &w, &h);
   h *= 0.8;
-  double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2;
   bg_vec cand[2 * NT];
-  for (int j = 0; j < 2; j++)
-    for (int k = 0; k < NT; k++)
-      cand[j * NT + k] = bg_vadd(along_bond(d, b, ts[k]), bg_vscale(n, 3.5 + extent + 4 * j));
+  bg_vec p0, p1;
+  bg_geom_longest_leg(d, b, &p0, &p1);
+  for (int k = 0; k < NT; k++) {
+    bg_vec dir, at = ts[k] == 0.5 ? d->bg[b].mid : bg_geom_along(d, b, ts[k], &dir);
+    if (ts[k] == 0.5) dir = d->bg[b].mdir;
+    if (d->bg[b].bendn) /* a bent bond: along its longest leg */
+      at = bg_vadd(p0, bg_vscale(bg_vsub(p1, p0), ts[k])), dir = bg_vunit(bg_vsub(p1, p0));
+    bg_vec n = bg_vscale(bg_barb_side_at(d, dir), side);
+    double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2, gap = layers_beside(d, b, dir, n);
+    for (int j = 0; j < 2; j++) cand[j * NT + k] = bg_vadd(at, bg_vscale(n, gap + extent + 4 * j));
+  }
   bg_vec p = cand[bg_place_best(d, cand, 2 * NT, w + 1, h)];
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind)
     bg_text_halo(d, markup, p, size);
@@ -243,25 +284,24 @@ static void draw_number(bg_diagram *d, int b) {
   const bg_model *m = d->m;
   double size = d->st.font_size * d->st.number_scale;
   bg_rgba ink = bg_diagram_ink(d, d->st.fg, d->hot_bond[b]);
-  bg_vec barb = bg_barb_side(d, b);
   char role[48];
   if (d->show & BG_SHOW_VARIABLES) {
     /* effort on the barb side, flow opposite (docs/drawing.md) */
     bg_strbuf t = {0};
     var_markup(&t, 'f', m->bond_num[b], size);
     snprintf(role, sizeof role, "variable bond=%d f", m->bond_num[b]);
-    text_beside(d, bg_sb_str(&t), b, bg_vscale(barb, -1), size, ink, role);
+    text_beside(d, bg_sb_str(&t), b, -1, size, ink, role);
     bg_sb_clear(&t);
     var_markup(&t, 'e', m->bond_num[b], size);
     snprintf(role, sizeof role, "variable bond=%d e", m->bond_num[b]);
-    text_beside(d, bg_sb_str(&t), b, barb, size, ink, role);
+    text_beside(d, bg_sb_str(&t), b, 1, size, ink, role);
     bg_sb_free(&t);
     return;
   }
   char num[32];
   snprintf(num, sizeof num, "%d", m->bond_num[b]);
   snprintf(role, sizeof role, "number bond=%d", m->bond_num[b]);
-  text_beside(d, num, b, bg_vscale(barb, -1), size, ink, role);
+  text_beside(d, num, b, -1, size, ink, role);
 }
 
 static void draw_bond_label(bg_diagram *d, int b) {
@@ -271,7 +311,7 @@ static void draw_bond_label(bg_diagram *d, int b) {
   bg_markup_escapen(&t, m->bond_label[b], strlen(m->bond_label[b]));
   char role[48];
   snprintf(role, sizeof role, "bondlabel bond=%d", m->bond_num[b]);
-  text_beside(d, bg_sb_str(&t), b, bg_barb_side(d, b), d->st.font_size * d->st.number_scale,
+  text_beside(d, bg_sb_str(&t), b, 1, d->st.font_size * d->st.number_scale,
               bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
   bg_sb_free(&t);
 }
@@ -453,8 +493,24 @@ static void keep_page(bg_diagram *d) {
 
 /* Drawing order: layer polylines at the bottom, then bonds, strokes,
  * signals, numbers, labels, conflicts, and the path tags and loop gains on
- * top. Text is placed clear of what was drawn before it (diagram_place.c);
- * numbers see the bonds and nodes, tags and gains also the polylines. */
+ * top. Text is placed clear of what was drawn before it (diagram_place.c):
+ * numbers, tags and gains see the bonds, nodes, signals and polylines. */
+/* Path tags and gains keep to the box of the nodes where they can (bands
+ * around it count as obstacles): a highlighted diagram redrawn from a full
+ * one then stays on its page, and a fresh build of it draws the same. */
+static void node_fence(bg_diagram *d) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, t = 120;
+  for (int i = 0; i < d->nnode; i++) {
+    x0 = fmin(x0, d->nx[i] - d->nw[i] / 2), x1 = fmax(x1, d->nx[i] + d->nw[i] / 2);
+    y0 = fmin(y0, d->ny[i] - d->nh[i] / 2), y1 = fmax(y1, d->ny[i] + d->nh[i] / 2);
+  }
+  if (x0 > x1) return;
+  bg_obstacle_rect(d, x0 - t, y0 - t, x1 + t, y0);
+  bg_obstacle_rect(d, x0 - t, y1, x1 + t, y1 + t);
+  bg_obstacle_rect(d, x0 - t, y0, x0, y1);
+  bg_obstacle_rect(d, x1, y0, x1 + t, y1);
+}
+
 static void draw_all(bg_diagram *d) {
   unsigned show = d->show;
   int hk = d->o.highlight_kind;
@@ -465,10 +521,11 @@ static void draw_all(bg_diagram *d) {
   draw_bonds(d);
   if (show & BG_SHOW_SIGNALS) bg_draw_signals(d);
   draw_lagrange(d);
-  draw_numbers(d);
   for (int i = 0; i < d->npoly; i++) bg_obstacle_item(d, d->poly[i]);
+  draw_numbers(d);
   draw_nodes(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
+  node_fence(d);
   bg_place_layer_labels(d);
   fit_page(d);
   if (show & BG_SHOW_LEGEND) {
@@ -538,6 +595,7 @@ static void copy_layout(bg_diagram *d, const bg_diagram *src) {
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
   d->bg = arena_dup(&d->arena, src->bg, nb * sizeof *d->bg);
+  d->jr = src->jr ? arena_dup(&d->arena, src->jr, nn * sizeof(double)) : NULL;
 }
 
 bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highlight_kind,

@@ -26,12 +26,88 @@ bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p) {
 
 static bg_vec node_centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
 
-static void straight_geom(const bg_diagram *d, int t, int h, bg_bond_geom *g) {
-  bg_vec ct = node_centre(d, t), ch = node_centre(d, h);
-  g->tail = bg_box_exit(ct, d->nw[t] / 2, d->nh[t] / 2, ch);
-  g->head = bg_box_exit(ch, d->nw[h] / 2, d->nh[h] / 2, ct);
-  g->tdir = g->hdir = g->mdir = bg_vunit(bg_vsub(ch, ct));
-  g->mid = bg_vscale(bg_vadd(g->tail, g->head), 0.5);
+/* The i-th point of bond b's route: its tail node's centre, the corners,
+ * its head node's centre (i = 0 .. bendn + 1). */
+static bg_vec route_pt(const bg_diagram *d, int b, int i) {
+  const bg_bond_geom *g = &d->bg[b];
+  if (i == 0) return node_centre(d, d->m->bond_tail[b]);
+  if (i > g->bendn) return node_centre(d, d->m->bond_head[b]);
+  return bg_v(d->lay.bendx[g->bendadr + i - 1], d->lay.bendy[g->bendadr + i - 1]);
+}
+
+bg_vec bg_node_end(const bg_diagram *d, int n, bg_vec dir) {
+  bg_vec c = node_centre(d, n);
+  if (d->jr && d->jr[n] > 0) return bg_vadd(c, bg_vscale(dir, d->jr[n]));
+  return bg_box_exit(c, d->nw[n] / 2, d->nh[n] / 2, bg_vadd(c, bg_vscale(dir, 1e4)));
+}
+
+static void route_geom(const bg_diagram *d, int b, bg_bond_geom *g) {
+  int t = d->m->bond_tail[b], h = d->m->bond_head[b], n = g->bendn;
+  g->tdir = bg_vunit(bg_vsub(route_pt(d, b, 1), route_pt(d, b, 0)));
+  g->hdir = bg_vunit(bg_vsub(route_pt(d, b, n + 1), route_pt(d, b, n)));
+  g->tail = bg_node_end(d, t, g->tdir);
+  g->head = bg_node_end(d, h, bg_vscale(g->hdir, -1));
+  if (bg_vlen(bg_vsub(node_centre(d, h), node_centre(d, t))) < 1e-9) g->head = g->tail;
+  g->mid = bg_geom_along(d, b, 0.5, &g->mdir);
+}
+
+bg_vec bg_geom_along(const bg_diagram *d, int b, double t, bg_vec *dir) {
+  const bg_bond_geom *g = &d->bg[b];
+  int n = g->bendn;
+  double len = 0, want;
+  for (int i = 0; i <= n; i++) {
+    bg_vec p = i == 0 ? g->tail : route_pt(d, b, i), q = i == n ? g->head : route_pt(d, b, i + 1);
+    len += bg_vlen(bg_vsub(q, p));
+  }
+  want = t * len;
+  for (int i = 0; i <= n; i++) {
+    bg_vec p = i == 0 ? g->tail : route_pt(d, b, i), q = i == n ? g->head : route_pt(d, b, i + 1);
+    double l = bg_vlen(bg_vsub(q, p));
+    if (want <= l || i == n) {
+      if (dir) *dir = l > 1e-9 ? bg_vunit(bg_vsub(q, p)) : g->hdir;
+      return bg_vadd(p, bg_vscale(bg_vsub(q, p), l > 1e-9 ? fmin(1, want / l) : 0));
+    }
+    want -= l;
+  }
+  return g->mid;
+}
+
+void bg_geom_longest_leg(const bg_diagram *d, int b, bg_vec *p, bg_vec *q) {
+  const bg_bond_geom *g = &d->bg[b];
+  double best = -1;
+  for (int i = 0; i <= g->bendn; i++) {
+    bg_vec a = i == 0 ? g->tail : route_pt(d, b, i), c = i == g->bendn ? g->head : route_pt(d, b, i + 1);
+    if (bg_vlen(bg_vsub(c, a)) > best) best = bg_vlen(bg_vsub(c, a)), *p = a, *q = c;
+  }
+}
+
+/* Direction in which edge (bond or Sf* bond) k leaves node n. */
+static bg_vec leave_dir(const bg_diagram *d, int b, int n) {
+  const bg_bond_geom *g = &d->bg[b];
+  return d->m->bond_tail[b] == n ? g->tdir : bg_vscale(g->hdir, -1);
+}
+
+/* Junction end circles: around the label, and far enough out that a causal
+ * stroke (4.5 line widths each side) clears the nearest neighbouring bond
+ * by half a line width: r sin(a) >= (4.5 cos(a) + 2) w for the smallest
+ * angle a between two bonds at the junction (capped: a tiny angle cannot
+ * be cured by distance). */
+static void junction_radii(bg_diagram *d) {
+  const bg_model *m = d->m;
+  d->jr = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(double));
+  double w = d->st.line_width;
+  for (int j = 0; j < m->nelem; j++) {
+    if (!bg_elem_is_junction(m->elem_kind[j])) continue;
+    double base = 0.5 * fmax(d->nw[j], d->nh[j]), amin = BG_PI / 2;
+    int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+    for (int i = 0; i < nb; i++)
+      for (int k = i + 1; k < nb; k++) {
+        bg_vec u = leave_dir(d, bs[i], j), v = leave_dir(d, bs[k], j);
+        amin = fmin(amin, acos(fmax(-1, fmin(1, u.x * v.x + u.y * v.y))));
+      }
+    amin = fmax(amin, BG_PI / 12);
+    d->jr[j] = fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), 3 * base);
+  }
 }
 
 static bg_vec spl_pt(const bg_diagram *d, int i) { return bg_v(d->splx[i], d->sply[i]); }
@@ -60,16 +136,26 @@ static void spline_geom(const bg_diagram *d, int adr, int n, bg_bond_geom *g) {
 
 void bg_geom_bonds(bg_diagram *d) {
   const bg_model *m = d->m;
-  for (int b = 0; b < m->nbond; b++) {
-    bg_bond_geom *g = &d->bg[b];
-    int n = d->lay.spln ? d->lay.spln[b] : 0;
-    if (n >= 4 && (n - 1) % 3 == 0) spline_geom(d, d->lay.spladr[b], n, g);
-    else straight_geom(d, m->bond_tail[b], m->bond_head[b], g);
+  d->jr = NULL;
+  for (int pass = 0; pass < 2; pass++) {
+    /* pass 0: directions (with box ends); pass 1: again with junction circles */
+    for (int b = 0; b < m->nbond; b++) {
+      bg_bond_geom *g = &d->bg[b];
+      int n = d->lay.spln ? d->lay.spln[b] : 0;
+      g->spln = 0;
+      g->bendn = d->lay.bendn ? d->lay.bendn[b] : 0;
+      g->bendadr = d->lay.bendadr ? d->lay.bendadr[b] : 0;
+      if (n >= 4 && (n - 1) % 3 == 0) spline_geom(d, d->lay.spladr[b], n, g);
+      else route_geom(d, b, g);
+    }
+    if (pass == 0) junction_radii(d);
   }
 }
 
-bg_vec bg_barb_side(const bg_diagram *d, int b) {
-  bg_vec dir = d->bg[b].hdir, left = bg_vleft(dir);
+bg_vec bg_barb_side(const bg_diagram *d, int b) { return bg_barb_side_at(d, d->bg[b].hdir); }
+
+bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir) {
+  bg_vec left = bg_vleft(dir);
   if (d->st.harpoon == BG_HARPOON_LEFT) return left;
   /* "down": below horizontal bonds, right of vertical ones (y grows downwards) */
   if (fabs(dir.x) >= fabs(dir.y)) return left.y > 0 ? left : bg_vscale(left, -1);
@@ -81,6 +167,10 @@ void bg_geom_bond_path(const bg_diagram *d, int b) {
   bg_scene *s = (bg_scene *)&d->scene;
   bg_scene_move(s, g->tail.x, g->tail.y);
   if (!g->spln) {
+    for (int i = 1; i <= g->bendn; i++) {
+      bg_vec p = route_pt(d, b, i);
+      bg_scene_line(s, p.x, p.y);
+    }
     bg_scene_line(s, g->head.x, g->head.y);
     return;
   }

@@ -22,6 +22,7 @@ typedef struct bg_bond_geom {
   bg_vec tdir, hdir;   /* unit travel direction (tail → head) at each end */
   bg_vec mid, mdir;    /* middle point and direction there */
   int spladr, spln;    /* Graphviz spline points (page coordinates) or spln 0: straight */
+  int bendadr, bendn;  /* else the corners of its route (lay.bendx/y), bendn 0: straight */
 } bg_bond_geom;
 
 struct bg_diagram {
@@ -40,6 +41,7 @@ struct bg_diagram {
   bg_layout lay;
   double *splx, *sply;       /* spline points moved onto the page */
   bg_bond_geom *bg;          /* per bond */
+  double *jr;                /* per node: radius of a junction's end circle, else 0 */
   unsigned char *hot_bond, *hot_elem; /* highlight: what stays in colour */
   int *side_use;             /* per bond side: layers already drawn there */
   struct bg_obstacles *obs;  /* what labels must avoid (diagram_place.c) */
@@ -67,8 +69,21 @@ double bg_vlen(bg_vec a);
 /* Where the ray from a box's centre towards p leaves the box (half sizes hw, hh). */
 bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p);
 void bg_geom_bonds(bg_diagram *d);
+/* Where a bond leaving node n's centre in direction dir stops: on a
+ * junction's end circle, else on the node's box. */
+bg_vec bg_node_end(const bg_diagram *d, int n, bg_vec dir);
+/* The point a fraction t of the way along bond b (its route's length), and
+ * the direction of travel there (dir nullable). */
+bg_vec bg_geom_along(const bg_diagram *d, int b, double t, bg_vec *dir);
+/* The ends of bond b's longest leg (the whole bond when it is straight). */
+void bg_geom_longest_leg(const bg_diagram *d, int b, bg_vec *p, bg_vec *q);
+/* The grid placement pass (diagram_grid.c): node centres and bond routes. */
+void bg_grid_place(bg_diagram *d);
 /* The side of the barb at the head of bond b: a unit normal. */
 bg_vec bg_barb_side(const bg_diagram *d, int b);
+/* The barb's side for travel in direction dir (a bent bond's numbers use
+ * the direction of the leg they are beside). */
+bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir);
 /* Draws the bond's centre line as the current item's path. */
 void bg_geom_bond_path(const bg_diagram *d, int b);
 /* Filled arrowhead with its tip at p, pointing along dir. */

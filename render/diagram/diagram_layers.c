@@ -10,11 +10,13 @@
 
 #include "diagram/diagram_int.h"
 
-/* Bond b traversed from node u to node v. */
+/* Bond b traversed from point u to point v: nodes, or (ids from nnode on)
+ * the corners of bent bonds; fwd: in the bond's tail → head direction. */
 typedef struct seg {
   int b, u, v;
   double off;
   bg_vec dir, n;
+  int fwd;
 } seg;
 
 /* How the polyline passes a node: entry point p0, exit p1 (kind 0: p1 = p0;
@@ -24,7 +26,31 @@ typedef struct joint {
   bg_vec p0, p1, c1, c2;
 } joint;
 
-static bg_vec centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
+static bg_vec centre(const bg_diagram *d, int n) {
+  if (n >= d->nnode) return bg_v(d->lay.bendx[n - d->nnode], d->lay.bendy[n - d->nnode]);
+  return bg_v(d->nx[n], d->ny[n]);
+}
+
+/* The segments split at the corners of bent bonds, each leg a segment of
+ * its own (the corners joined like junctions: mitred or rounded). */
+static seg *split_bends(const bg_diagram *d, seg *s, int *n) {
+  int total = 0;
+  for (int k = 0; k < *n; k++) total += 1 + d->bg[s[k].b].bendn;
+  seg *out = bg_xcalloc((size_t)total + 1, sizeof *out);
+  int m = 0;
+  for (int k = 0; k < *n; k++) {
+    const bg_bond_geom *g = &d->bg[s[k].b];
+    int nb = g->bendn, fwd = s[k].u == d->m->bond_tail[s[k].b], prev = s[k].u;
+    for (int i = 0; i < nb; i++) {
+      int c = d->nnode + g->bendadr + (fwd ? i : nb - 1 - i);
+      out[m] = s[k], out[m].fwd = fwd, out[m].u = prev, out[m].v = c, prev = c, m++;
+    }
+    out[m] = s[k], out[m].fwd = fwd, out[m].u = prev, m++;
+  }
+  free(s);
+  *n = m;
+  return out;
+}
 
 static int other_end(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
@@ -34,14 +60,18 @@ static void seg_geom(bg_diagram *d, seg *s) {
   const bg_model *m = d->m;
   s->dir = bg_vunit(bg_vsub(centre(d, s->v), centre(d, s->u)));
   s->n = bg_vleft(s->dir);
-  int side = s->u == m->bond_tail[s->b] ? 0 : 1;
+  int side = s->fwd ? 0 : 1;
+  (void)m;
   /* each further layer on this side 3 pt out (more for thick lines) */
   double step = fmax(3, 2.5 * d->st.layer_width);
   s->off = d->st.layer_offset + step * d->side_use[2 * s->b + side];
 }
 
+/* One more layer on each side of a bond this polyline ran along (once for
+ * the legs of a bent bond). */
 static void claim_sides(bg_diagram *d, const seg *s, int n) {
-  for (int i = 0; i < n; i++) d->side_use[2 * s[i].b + (s[i].u == d->m->bond_tail[s[i].b] ? 0 : 1)]++;
+  for (int i = 0; i < n; i++)
+    if (i == 0 || s[i].b != s[i - 1].b || s[i].fwd != s[i - 1].fwd) d->side_use[2 * s[i].b + (s[i].fwd ? 0 : 1)]++;
 }
 
 static double cross(bg_vec a, bg_vec b) { return a.x * b.y - a.y * b.x; }
@@ -267,8 +297,8 @@ static int path_segs(const bg_diagram *d, int p, seg *s) {
   int n = a->path_n[p], cur = a->path_end0[p];
   for (int k = 0; k < n; k++) {
     int b = a->path_bonds[a->path_adr[p] + k], nxt = other_end(d->m, b, cur);
-    s[k] = (seg){b, cur, nxt, 0, {0, 0}, {0, 0}};
-    s[2 * n - 1 - k] = (seg){b, nxt, cur, 0, {0, 0}, {0, 0}};
+    s[k] = (seg){b, cur, nxt, 0, {0, 0}, {0, 0}, 0};
+    s[2 * n - 1 - k] = (seg){b, nxt, cur, 0, {0, 0}, {0, 0}, 0};
     cur = nxt;
   }
   return 2 * n;
@@ -289,6 +319,7 @@ static void draw_path(bg_diagram *d, int p) {
   {
     seg *s = bg_xcalloc(2 * (size_t)a->path_n[p], sizeof *s);
     int n = path_segs(d, p, s);
+    s = split_bends(d, s, &n);
     for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
     int l = path_loop(d, p);
     draw_polyline(d, s, n, 'p', p, l);
@@ -325,7 +356,7 @@ static seg signal_seg(const bg_diagram *d, int sig) {
   int head_stroke = d->a->bond_stroke[b] != BG_STROKE_TAIL;
   int forward = flow ? !head_stroke : head_stroke;
   int u = forward ? m->bond_tail[b] : m->bond_head[b];
-  return (seg){b, u, other_end(m, b, u), 0, {0, 0}, {0, 0}};
+  return (seg){b, u, other_end(m, b, u), 0, {0, 0}, {0, 0}, 0};
 }
 
 static void draw_loop(bg_diagram *d, int l) {
@@ -336,10 +367,9 @@ static void draw_loop(bg_diagram *d, int l) {
   if (n < 1) return;
   {
     seg *s = bg_xcalloc((size_t)n, sizeof *s);
-    for (int k = 0; k < n; k++) {
-      s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
-      seg_geom(d, &s[k]);
-    }
+    for (int k = 0; k < n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
+    s = split_bends(d, s, &n);
+    for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
     bg_vec c = draw_polyline(d, s, n, 'l', l, -1);
     /* the gain: an open loop's at its centroid (inside a bond loop), a flat
      * loop's outside its polyline, like a path tag */

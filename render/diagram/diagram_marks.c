@@ -63,12 +63,16 @@ static void draw_conflict(bg_diagram *d, int k) {
   bg_text_measure(st->font, size, text, &w, &h);
   w += 1, h *= 0.8;
   double extent = fabs(dir.x) * w / 2 + fabs(dir.y) * h / 2;
-  bg_vec cand[8];
+  bg_vec cand[16];
   for (int i = 0; i < 4; i++) cand[i] = bg_vadd(p, bg_vscale(dir, 7 + extent + 5 * i));
   bg_vec side = bg_vleft(dir);
   for (int i = 0; i < 4; i++)
     cand[4 + i] = bg_vadd(cand[0], bg_vscale(side, (i % 2 ? -1 : 1) * (i / 2 + 1) * (h + 1)));
-  bg_vec q = cand[bg_place_best(d, cand, 8, w, h)];
+  /* crowded: further out, and beside the flash across its direction */
+  for (int i = 0; i < 4; i++) cand[8 + i] = bg_vadd(p, bg_vscale(dir, 27 + extent + 8 * i));
+  for (int i = 0; i < 4; i++)
+    cand[12 + i] = bg_vadd(p, bg_vscale(side, (i % 2 ? -1 : 1) * (6 + w / 2 + 8 * (i / 2))));
+  bg_vec q = cand[bg_place_best(d, cand, 16, w, h)];
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind) bg_text_halo(d, text, q, size);
   bg_scene_text(&d->scene, text, q.x, q.y, size, 0.5, 0.5, bg_diagram_ink(d, st->conflict, hot), role);
 }

@@ -114,16 +114,68 @@ static void signal_to_node(bg_diagram *d, sigrole role, bg_vec p0, int to, bg_ve
   signal_head(d, role, p1, dir, hot);
 }
 
+/* Whether the line between the centres of a and b passes another node's box. */
+static int node_between(const bg_diagram *d, int a, int b) {
+  bg_vec p = bg_v(d->nx[a], d->ny[a]), q = bg_v(d->nx[b], d->ny[b]), pq = bg_vsub(q, p);
+  double l2 = pq.x * pq.x + pq.y * pq.y;
+  for (int n = 0; n < d->nnode && l2 > 0; n++) {
+    if (n == a || n == b) continue;
+    bg_vec c = bg_v(d->nx[n], d->ny[n]);
+    double t = ((c.x - p.x) * pq.x + (c.y - p.y) * pq.y) / l2;
+    bg_vec f = bg_vadd(p, bg_vscale(pq, t));
+    if (t > 0 && t < 1 && fabs(f.x - c.x) < d->nw[n] / 2 + 2 && fabs(f.y - c.y) < d->nh[n] / 2 + 2) return 1;
+  }
+  return 0;
+}
+
+/* How many node boxes (ends excepted) the signal curve from a to b bowed by
+ * bow passes, sampled at nine points. */
+static int bow_hits(const bg_diagram *d, int a, int b, bg_vec bow) {
+  bg_vec p = bg_v(d->nx[a], d->ny[a]), q = bg_v(d->nx[b], d->ny[b]), ch = bg_vsub(q, p);
+  bg_vec c1 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.25)), bow), c2 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.75)), bow);
+  int hits = 0;
+  for (int k = 1; k < 10; k++) {
+    double t = k / 10.0, u = 1 - t;
+    bg_vec f = bg_vadd(bg_vadd(bg_vscale(p, u * u * u), bg_vscale(c1, 3 * u * u * t)),
+                       bg_vadd(bg_vscale(c2, 3 * u * t * t), bg_vscale(q, t * t * t)));
+    for (int n = 0; n < d->nnode; n++)
+      hits += n != a && n != b && fabs(f.x - d->nx[n]) < d->nw[n] / 2 + 3 &&
+              fabs(f.y - d->ny[n]) < d->nh[n] / 2 + 3;
+  }
+  return hits;
+}
+
+/* A signal along a grid line, where bonds run, bows off them: up or down
+ * (left or right), as far as it takes to clear the labels there. */
+static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
+  bg_vec chord = bg_v(d->nx[b] - d->nx[a], d->ny[b] - d->ny[a]);
+  bg_vec side = fabs(chord.x) >= fabs(chord.y) ? bg_v(0, -1) : bg_v(-1, 0), best = bg_v(0, 0);
+  int best_hits = -1;
+  for (int k = 0; k < 8 && best_hits != 0; k++) {
+    bg_vec bow = bg_vscale(side, (k % 2 ? -1 : 1) * (18 + 0.12 * len) * (1 + 0.6 * (k / 2)));
+    int h = bow_hits(d, a, b, bow);
+    if (best_hits < 0 || h < best_hits) best_hits = h, best = bow;
+  }
+  return best;
+}
+
 /* Between two nodes: straight, or bowed out to the barb side of a bond that
- * joins the same two nodes (the bond number is on the other side). */
+ * joins the same two nodes (the bond number is on the other side), or, along
+ * a row or column of the grid past other nodes, bowed up or left off the
+ * bonds there. */
 static void signal_between(bg_diagram *d, sigrole role, int from, int to, int hot) {
   bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
   bg_vec bow = bg_v(0, 0), aim = ct;
   int b = from < d->m->nelem && to < d->m->nelem ? bond_between(d->m, from, to) : -1;
+  bg_vec chord = bg_vsub(ct, cf);
+  double len = bg_vlen(chord);
   if (b >= 0) {
     bow = bg_vscale(bg_barb_side(d, b), 20);
-    aim = bg_vadd(bg_vscale(bg_vadd(cf, ct), 0.5), bow);
+  } else if (fmin(fabs(chord.x), fabs(chord.y)) < 0.18 * fmax(fabs(chord.x), fabs(chord.y)) &&
+             node_between(d, from, to)) {
+    bow = clear_bow(d, from, to, len);
   }
+  if (b >= 0 || bg_vlen(bow) > 0) aim = bg_vadd(bg_vscale(bg_vadd(cf, ct), 0.5), bow);
   signal_to_node(d, role, bg_node_exit(d, from, aim, 0), to, bow, hot);
 }
 

@@ -204,6 +204,10 @@ void bg_layout_free(bg_layout *l) {
   free(l->spln);
   free(l->splx);
   free(l->sply);
+  free(l->bendadr);
+  free(l->bendn);
+  free(l->bendx);
+  free(l->bendy);
   memset(l, 0, sizeof *l);
 }
 
@@ -223,6 +227,11 @@ void bg_layout_copy(const bg_layout *src, bg_layout *out) {
   out->spln = dup_array(src->spln, ne, sizeof *out->spln);
   out->splx = ns ? dup_array(src->splx, ns, sizeof *out->splx) : NULL;
   out->sply = ns ? dup_array(src->sply, ns, sizeof *out->sply) : NULL;
+  out->bendadr = dup_array(src->bendadr, ne, sizeof *out->bendadr);
+  out->bendn = dup_array(src->bendn, ne, sizeof *out->bendn);
+  size_t nk = (size_t)src->nbend + 1;
+  out->bendx = dup_array(src->bendx, nk, sizeof *out->bendx);
+  out->bendy = dup_array(src->bendy, nk, sizeof *out->bendy);
 }
 
 const char *bg_layout_graphviz_version(void) { return PACKAGE_VERSION; }

@@ -28,6 +28,11 @@ typedef struct bg_layout {
   int *spladr, *spln;    /* per edge: cubic Bezier points tail → head (3k+1), n 0 = none */
   double *splx, *sply;
   int nspl;
+  /* per bond (edges 0..nbond-1) the corners of an orthogonal route set by
+   * the grid pass (diagram_grid.c), bendn 0: straight; NULL when unused */
+  int *bendadr, *bendn;
+  double *bendx, *bendy;
+  int nbend;
   char engine[16];       /* the engine actually used */
 } bg_layout;
 

@@ -44,6 +44,9 @@ typedef struct bg_render_opts {
                             NULL: $BGDRAW_STYLE_DIR, else "styles" */
   const char *layout;    /* nullable: engine; NULL = the model's layout statement, else dot */
   int verbose;           /* progress and engine choices to stderr */
+  int layer_room;        /* the grid layout leaves room beside the bonds for path and loop
+                            lines: 0 when show has paths or loops, 1 always, -1 never
+                            (a redraw keeps its source's layout, room and all) */
 } bg_render_opts;
 
 /* Parses a --show list ("strokes,numbers", "all", "none"). Returns 0, or -1

@@ -526,6 +526,7 @@ static void check_redraw(const char *path) {
       BG_T_REPORT(bg_diagram_count(h, "legend-text") == 0, "%s: no legend", what);
       bg_render_opts ho = opts_all();
       ho.show = BG_SHOW_DEFAULT, ho.highlight_kind = kind, ho.highlight_index = k + 1;
+      ho.layer_room = 1; /* the full diagram's layout has room for its layers */
       bg_diagram *fresh = bg_diagram_build(L.m, a, &ho, &L.dg);
       BG_T_REPORT(fresh && same_up_to_offset(h, fresh), "%s: a fresh build's drawing", what);
       bg_diagram_free(fresh);

@@ -1,0 +1,544 @@
+/* The grid placement pass (docs/drawing.md, "Layout"): Graphviz's dot ranks
+ * and orders the nodes; this pass puts the junction structure on a grid and
+ * draws the bonds horizontal and vertical, the way textbooks draw bond graphs.
+ *
+ * Hubs (nodes with two or more bonds: junctions, two-ports) get a column from
+ * their dot rank and a row that continues their parent's (the hub before them
+ * nearest in dot's order), so a chain runs along one row and a branch opens a
+ * row below or above. Grid cells: hubs at even (gx, gy); their one-ports
+ * (leaves) go to a free side cell next to them (left, above, below, right, in
+ * the order that best keeps dot's directions), else a diagonal one. A bond
+ * between hubs is a straight run of free cells, else an elbow (one or two
+ * corners) through free cells, else a straight slanted line. Cells hold one
+ * thing each, so routed bonds neither cross nor overlap. Components are
+ * stacked; a component wider than its wrap width snakes into bands. Then
+ * the cells become points: each grid column as wide as its widest node plus a
+ * gap, each row likewise. Everything is linear in the graph size but the
+ * sorts. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+enum { SIDE_R = 1, SIDE_U = 2, SIDE_L = 4, SIDE_D = 8 };
+
+typedef struct grid {
+  bg_diagram *d;
+  int n, ne;          /* nodes; edges (bonds, then Sf* → junction) */
+  int *et, *eh;       /* edge ends */
+  int *adr, *adj;     /* node → incident edges (CSR) */
+  int *deg;
+  int *gx, *gy;       /* grid cell per node */
+  unsigned char *placed, *hub, *sides;
+  int *col, *row;     /* hubs: dot column, row */
+  /* cells: open addressing, key (gx, gy), value the owner (node n, or -2 - edge) */
+  long long *key;
+  int *val, cap, used;
+  /* routes: per edge the corners (grid cells), bent[e] = count, -1: slanted */
+  int *bent, (*corner)[4];
+} grid;
+
+static unsigned long long cell_key(int x, int y) {
+  return ((unsigned long long)(unsigned)x << 32) | (unsigned)y;
+}
+
+/* The slot of cell (x, y): its own, or the empty one where it would go. */
+static int cell_slot(const grid *g, unsigned long long k) {
+  unsigned mask = (unsigned)g->cap - 1, i = (unsigned)((k * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+  while (g->val[i] != -1 && (unsigned long long)g->key[i] != k) i = (i + 1) & mask;
+  return (int)i;
+}
+
+static int cell_free(const grid *g, int x, int y) { return g->val[cell_slot(g, cell_key(x, y))] == -1; }
+
+static void cell_grow(grid *g) {
+  long long *key = g->key;
+  int *val = g->val, cap = g->cap;
+  g->cap = cap ? 2 * cap : 1024;
+  g->key = bg_xcalloc((size_t)g->cap, sizeof(long long));
+  g->val = bg_xmalloc((size_t)g->cap * sizeof(int));
+  for (int i = 0; i < g->cap; i++) g->val[i] = -1;
+  for (int i = 0; i < cap; i++)
+    if (val[i] != -1) {
+      int j = cell_slot(g, (unsigned long long)key[i]);
+      g->key[j] = key[i], g->val[j] = val[i];
+    }
+  free(key), free(val);
+}
+
+static void cell_take(grid *g, int x, int y, int owner) {
+  if (2 * (g->used + 1) > g->cap) cell_grow(g);
+  unsigned long long k = cell_key(x, y);
+  int i = cell_slot(g, k);
+  g->used += g->val[i] == -1;
+  g->key[i] = (long long)k, g->val[i] = owner;
+}
+
+/* ---------------------------------------------------------------- graph */
+static void build_edges(grid *g) {
+  const bg_model *m = g->d->m;
+  const bg_analysis *a = g->d->a;
+  int nlag = a ? a->nlag : 0;
+  g->et = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
+  g->eh = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
+  for (int b = 0; b < m->nbond; b++) g->et[g->ne] = m->bond_tail[b], g->eh[g->ne++] = m->bond_head[b];
+  for (int i = 0; i < nlag; i++)
+    if (g->d->lag_node[i] >= 0) g->et[g->ne] = g->d->lag_node[i], g->eh[g->ne++] = a->lag_junction[i];
+  g->adr = bg_xcalloc((size_t)g->n + 2, sizeof(int));
+  g->adj = bg_xcalloc(2 * (size_t)g->ne + 1, sizeof(int));
+  g->deg = bg_xcalloc((size_t)g->n + 1, sizeof(int));
+  for (int e = 0; e < g->ne; e++) g->deg[g->et[e]]++, g->deg[g->eh[e]]++;
+  for (int v = 0; v < g->n; v++) g->adr[v + 1] = g->adr[v] + g->deg[v];
+  int *fill = bg_xcalloc((size_t)g->n + 1, sizeof(int));
+  for (int e = 0; e < g->ne; e++) {
+    g->adj[g->adr[g->et[e]] + fill[g->et[e]]++] = e;
+    g->adj[g->adr[g->eh[e]] + fill[g->eh[e]]++] = e;
+  }
+  free(fill);
+}
+
+static int other(const grid *g, int e, int v) { return g->et[e] == v ? g->eh[e] : g->et[e]; }
+
+/* Hubs: two or more edges; of two nodes joined only to each other, the first. */
+static void classify(grid *g) {
+  for (int v = 0; v < g->n; v++) {
+    if (g->deg[v] >= 2) g->hub[v] = 1;
+    else if (g->deg[v] == 1) {
+      int u = other(g, g->adj[g->adr[v]], v);
+      g->hub[v] = g->deg[u] == 1 && v < u;
+    }
+  }
+}
+
+/* ---------------------------------------------------------------- columns and rows */
+static const grid *sort_g;
+static int by_x(const void *a, const void *b) {
+  int i = *(const int *)a, j = *(const int *)b;
+  double dx = sort_g->d->nx[i] - sort_g->d->nx[j], dy = sort_g->d->ny[i] - sort_g->d->ny[j];
+  return dx < -0.5 ? -1 : dx > 0.5 ? 1 : dy < 0 ? -1 : dy > 0 ? 1 : i - j;
+}
+
+/* Hubs in dot's rank order (x), each rank top to bottom; col = rank index. */
+static int *order_hubs(grid *g, int *nh) {
+  int *h = bg_xcalloc((size_t)g->n + 1, sizeof(int)), k = 0;
+  for (int v = 0; v < g->n; v++)
+    if (g->hub[v]) h[k++] = v;
+  sort_g = g;
+  qsort(h, (size_t)k, sizeof(int), by_x);
+  for (int i = 0, c = -1; i < k; i++) {
+    if (i == 0 || g->d->nx[h[i]] - g->d->nx[h[i - 1]] > 0.5) c++;
+    g->col[h[i]] = c;
+  }
+  *nh = k;
+  return h;
+}
+
+/* The hub before v (smaller column) that v continues: the one of the
+ * nearest column, then nearest in dot's y. */
+static int parent_of(const grid *g, int v) {
+  int best = -1;
+  for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+    int u = other(g, g->adj[k], v);
+    if (!g->hub[u] || g->col[u] >= g->col[v]) continue;
+    if (best < 0 || g->col[u] > g->col[best] ||
+        (g->col[u] == g->col[best] &&
+         fabs(g->d->ny[u] - g->d->ny[v]) < fabs(g->d->ny[best] - g->d->ny[v])))
+      best = u;
+  }
+  return best;
+}
+
+/* Rows of one column's hubs h[0..n) (dot's order): strictly increasing and
+ * as near their wishes as possible (pool-adjacent-violators on wish - i). */
+static void fit_rows(grid *g, const int *h, const double *wish, int n) {
+  double *val = bg_xcalloc((size_t)n + 1, sizeof(double));
+  int *len = bg_xcalloc((size_t)n + 1, sizeof(int)), nb = 0;
+  for (int i = 0; i < n; i++) {
+    val[nb] = wish[i] - i, len[nb++] = 1;
+    while (nb > 1 && val[nb - 2] > val[nb - 1]) {
+      val[nb - 2] = (val[nb - 2] * len[nb - 2] + val[nb - 1] * len[nb - 1]) / (len[nb - 2] + len[nb - 1]);
+      len[nb - 2] += len[nb - 1], nb--;
+    }
+  }
+  for (int b = 0, i = 0; b < nb; b++)
+    for (int k = 0; k < len[b]; k++, i++) g->row[h[i]] = (int)floor(val[b] + 0.5) + i;
+  free(val), free(len);
+}
+
+/* Whether s comes before v among p's children in dot's order. */
+static int before(const grid *g, int s, int v) {
+  double ds = g->d->ny[s], dv = g->d->ny[v];
+  return ds < dv || (ds == dv && s < v);
+}
+
+/* A hub's wish: its parent's row for the child nearest the parent in dot's
+ * y, one more or less per sibling between them; 0 without a parent. */
+static double wish_of(const grid *g, int v, int p) {
+  if (p < 0) return 0;
+  int near = v, rank_v = 0, rank_near = 0;
+  for (int k = g->adr[p]; k < g->adr[p + 1]; k++) {
+    int s = other(g, g->adj[k], p);
+    if (s == v || !g->hub[s] || g->col[s] <= g->col[p] || parent_of(g, s) != p) continue;
+    rank_v += before(g, s, v);
+    double ds = fabs(g->d->ny[s] - g->d->ny[p]), dn = fabs(g->d->ny[near] - g->d->ny[p]);
+    if (ds < dn || (ds == dn && s < near)) near = s;
+  }
+  for (int k = g->adr[p]; near != v && k < g->adr[p + 1]; k++) {
+    int s = other(g, g->adj[k], p);
+    if (s != near && g->hub[s] && g->col[s] > g->col[p] && parent_of(g, s) == p)
+      rank_near += before(g, s, near);
+  }
+  return g->row[p] + (rank_v - rank_near);
+}
+
+static void assign_rows(grid *g, const int *h, int nh) {
+  double *wish = bg_xcalloc((size_t)nh + 1, sizeof(double));
+  for (int i = 0; i < nh;) {
+    int j = i;
+    while (j < nh && g->col[h[j]] == g->col[h[i]]) j++;
+    for (int k = i; k < j; k++) wish[k - i] = wish_of(g, h[k], parent_of(g, h[k]));
+    fit_rows(g, h + i, wish, j - i);
+    i = j;
+  }
+  free(wish);
+}
+
+/* ---------------------------------------------------------------- components, wrapping */
+static int find(int *up, int v) {
+  while (up[v] != v) v = up[v] = up[up[v]];
+  return v;
+}
+
+/* Each component's hubs snake into bands of at most `wrap` columns when it is
+ * wider than that (a long chain becomes rows), and the components are stacked
+ * top to bottom in the order of their first node. */
+static void stack_components(grid *g, const int *h, int nh) {
+  int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int v = 0; v < n; v++) up[v] = v;
+  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
+  int *lo = bg_xcalloc((size_t)n + 1, sizeof(int)), *hi = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *ncol = bg_xcalloc((size_t)n + 1, sizeof(int)), *base = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int v = 0; v < n; v++) lo[v] = 1 << 30, hi[v] = -(1 << 30);
+  for (int i = 0; i < nh; i++) {
+    int v = h[i], c = find(up, v);
+    lo[c] = g->row[v] < lo[c] ? g->row[v] : lo[c];
+    hi[c] = g->row[v] > hi[c] ? g->row[v] : hi[c];
+    ncol[c] = g->col[v] + 1 > ncol[c] ? g->col[v] + 1 : ncol[c];
+  }
+  int next = 0;
+  for (int v = 0; v < n; v++) {
+    int c = find(up, v);
+    if (lo[c] > hi[c] || base[c] < 0) continue;
+    int span = hi[c] - lo[c] + 1, wrap = (int)ceil(sqrt((double)ncol[c] * (2 * span + 2)));
+    if (wrap < 16) wrap = 16;
+    int bands = (ncol[c] + wrap - 1) / wrap;
+    base[c] = -1 - next; /* marks the component done; the row offset */
+    next += bands * (span + 1);
+    ncol[c] = wrap;
+  }
+  for (int i = 0; i < nh; i++) {
+    int v = h[i], c = find(up, v), wrap = ncol[c], band = g->col[v] / wrap, k = g->col[v] % wrap;
+    int span = hi[c] - lo[c] + 1;
+    g->gx[v] = 2 * (band % 2 ? wrap - 1 - k : k);
+    g->gy[v] = 2 * ((-1 - base[c]) + band * (span + 1) + g->row[v] - lo[c]);
+    g->placed[v] = 1;
+    cell_take(g, g->gx[v], g->gy[v], v);
+  }
+  free(up), free(lo), free(hi), free(ncol), free(base);
+}
+
+/* ---------------------------------------------------------------- routing bonds between hubs */
+static int sgn(int v) { return (v > 0) - (v < 0); }
+
+static int side_of(int dx, int dy) {
+  return dx > 0 ? SIDE_R : dx < 0 ? SIDE_L : dy < 0 ? SIDE_U : SIDE_D;
+}
+
+/* Walks the route through pts[0..n) (axis-parallel legs): with take == 0
+ * whether every cell but the two ends is free, else claims them for edge e. */
+static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
+  for (int k = 0; k + 1 < n; k++) {
+    int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
+    if (sx && sy) return 0;
+    while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
+      x += sx, y += sy;
+      if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
+      if (take) cell_take(g, x, y, -2 - e);
+      else if (!cell_free(g, x, y)) return 0;
+    }
+  }
+  return 1;
+}
+
+static int try_route(grid *g, int e, const int (*pts)[2], int n) {
+  int u = g->et[e], v = g->eh[e];
+  int su = side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
+  int sv = side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
+  if ((g->sides[u] & su) || (g->sides[v] & sv) || !walk(g, pts, n, 0, e)) return 0;
+  walk(g, pts, n, 1, e);
+  g->sides[u] |= (unsigned char)su, g->sides[v] |= (unsigned char)sv;
+  g->bent[e] = n - 2;
+  for (int k = 1; k + 1 < n; k++) g->corner[e][2 * (k - 1)] = pts[k][0], g->corner[e][2 * k - 1] = pts[k][1];
+  return 1;
+}
+
+/* Straight when allowed (pass 0); an elbow or two (pass 1): one corner
+ * either way, then two through a column or row between the ends or beside
+ * them. */
+static int route(grid *g, int e, int pass) {
+  int x0 = g->gx[g->et[e]], y0 = g->gy[g->et[e]], x1 = g->gx[g->eh[e]], y1 = g->gy[g->eh[e]];
+  if (pass == 0) {
+    int p[2][2] = {{x0, y0}, {x1, y1}};
+    return (x0 == x1 || y0 == y1) && try_route(g, e, (const int(*)[2])p, 2);
+  }
+  int l1[3][2] = {{x0, y0}, {x1, y0}, {x1, y1}}, l2[3][2] = {{x0, y0}, {x0, y1}, {x1, y1}};
+  if (x0 != x1 && y0 != y1 && (try_route(g, e, (const int(*)[2])l1, 3) || try_route(g, e, (const int(*)[2])l2, 3)))
+    return 1;
+  for (int k = 1; k <= 4; k++)
+    for (int s = -1; s <= 1; s += 2) {
+      int xm = x0 == x1 ? x0 + s * k : (x0 + x1) / 2 + s * (k - 1);
+      int ym = y0 == y1 ? y0 + s * k : (y0 + y1) / 2 + s * (k - 1);
+      int z1[4][2] = {{x0, y0}, {xm, y0}, {xm, y1}, {x1, y1}}, z2[4][2] = {{x0, y0}, {x0, ym}, {x1, ym}, {x1, y1}};
+      if ((y0 != y1 || x0 == x1) && xm != x0 && xm != x1 && try_route(g, e, (const int(*)[2])z1, 4)) return 1;
+      if ((x0 != x1 || y0 == y1) && ym != y0 && ym != y1 && try_route(g, e, (const int(*)[2])z2, 4)) return 1;
+    }
+  return 0;
+}
+
+static void route_hub_bonds(grid *g) {
+  for (int e = 0; e < g->ne; e++) g->bent[e] = -1;
+  for (int pass = 0; pass < 2; pass++)
+    for (int e = 0; e < g->ne; e++)
+      if (g->bent[e] < 0 && g->hub[g->et[e]] && g->hub[g->eh[e]] && g->et[e] != g->eh[e]) route(g, e, pass);
+}
+
+/* ---------------------------------------------------------------- one-ports */
+static const int side_dx[4] = {1, 0, -1, 0}, side_dy[4] = {0, -1, 0, 1}; /* R U L D */
+
+/* How far (radians) side k is from where dot put leaf w around hub v; a
+ * source prefers the left, where textbooks start the chain. */
+static double side_cost(const grid *g, int v, int w, int k) {
+  const bg_diagram *d = g->d;
+  double ang = atan2(d->ny[w] - d->ny[v], d->nx[w] - d->nx[v]);
+  double dif = fabs(remainder(ang - atan2(side_dy[k], side_dx[k]), 2 * BG_PI));
+  int source = w < d->m->nelem && bg_elem_is_source(d->m->elem_kind[w]);
+  return dif - (source && k == 2 ? 1.0 : 0);
+}
+
+static void put_leaf(grid *g, int v, int w, int x, int y, int side) {
+  g->gx[w] = x, g->gy[w] = y, g->placed[w] = 1;
+  cell_take(g, x, y, w);
+  g->sides[v] |= (unsigned char)side;
+}
+
+/* Best assignment of up to four leaves to hub v's free sides (every
+ * injective choice tried; a leaf may also stay without a side). */
+static void assign_sides(grid *g, int v, const int *leaf, int nl) {
+  int freeside[4], nf = 0, best[4] = {-1, -1, -1, -1}, cur[4];
+  for (int k = 0; k < 4; k++)
+    if (!(g->sides[v] & (1 << k)) && cell_free(g, g->gx[v] + side_dx[k], g->gy[v] + side_dy[k])) freeside[nf++] = k;
+  double best_cost = 1e300;
+  int total = 1;
+  for (int i = 0; i < nl; i++) total *= nf + 1;
+  for (int code = 0; code < total; code++) {
+    int c = code, used = 0, placed = 0, ok = 1;
+    double cost = 0;
+    for (int i = 0; i < nl; i++, c /= nf + 1) {
+      cur[i] = c % (nf + 1) - 1;
+      if (cur[i] < 0) continue;
+      if (used & (1 << cur[i])) ok = 0;
+      used |= 1 << cur[i], placed++;
+      cost += side_cost(g, v, leaf[i], freeside[cur[i]]);
+    }
+    cost += 10.0 * (nl - placed); /* a side for as many leaves as possible */
+    if (ok && cost < best_cost) best_cost = cost, memcpy(best, cur, sizeof cur);
+  }
+  for (int i = 0; i < nl; i++)
+    if (best[i] >= 0) {
+      int k = freeside[best[i]];
+      put_leaf(g, v, leaf[i], g->gx[v] + side_dx[k], g->gy[v] + side_dy[k], 1 << k);
+    }
+}
+
+/* A free cell near (x, y): rings of growing radius, the diagonal neighbours
+ * first. */
+static void near_cell(grid *g, int x, int y, int sides, int *ox, int *oy) {
+  for (int r = 1;; r++)
+    for (int k = 0; k < 8 * r; k++) {
+      int side = k / (2 * r), t = k % (2 * r) - r + 1;
+      int cx = side == 0 ? x + r : side == 1 ? x - t : side == 2 ? x - r : x + t;
+      int cy = side == 0 ? y - t : side == 1 ? y - r : side == 2 ? y + t : y + r;
+      if (r == 1 && k % 2 == 0 && !sides) continue; /* the four sides were offered already */
+      if (cell_free(g, cx, cy)) {
+        *ox = cx, *oy = cy;
+        return;
+      }
+    }
+}
+
+static void place_leaves(grid *g) {
+  int *leaf = bg_xcalloc((size_t)g->n + 1, sizeof(int));
+  for (int v = 0; v < g->n; v++) {
+    if (!g->hub[v] || !g->placed[v]) continue;
+    int nl = 0;
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+      int w = other(g, g->adj[k], v);
+      if (!g->hub[w] && !g->placed[w]) leaf[nl++] = w;
+    }
+    assign_sides(g, v, leaf, nl < 4 ? nl : 4);
+    for (int i = 0; i < nl; i++) {
+      if (g->placed[leaf[i]]) continue;
+      int x, y;
+      near_cell(g, g->gx[v], g->gy[v], 0, &x, &y);
+      put_leaf(g, v, leaf[i], x, y, 0);
+    }
+  }
+  free(leaf);
+}
+
+/* The node a float sits beside: for a user-state integrator the element
+ * its first signal modulates, else the placed node dot put nearest. */
+static int float_anchor(const grid *g, int v) {
+  const bg_diagram *d = g->d;
+  const bg_model *m = d->m;
+  for (int s = 0; s < m->nstate; s++)
+    if (d->state_node[s] == v)
+      for (int i = 0; i < m->nsignal; i++)
+        if (bg_signal_state(m, i) == s && g->placed[m->signal_to[i]]) return m->signal_to[i];
+  int best = -1;
+  double bd = 1e300;
+  for (int u = 0; u < g->n; u++) {
+    double dd = hypot(d->nx[u] - d->nx[v], d->ny[u] - d->ny[v]);
+    if (g->placed[u] && dd < bd) bd = dd, best = u;
+  }
+  return best;
+}
+
+/* Nodes with no place yet (user-state integrators, elements without bonds):
+ * above or below their anchor, else in a free cell next to it. */
+static void place_floats(grid *g) {
+  for (int v = 0; v < g->n; v++) {
+    if (g->placed[v]) continue;
+    int a = float_anchor(g, v), x = 0, y = 0;
+    if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] - 1)) x = g->gx[a], y = g->gy[a] - 1; /* above */
+    else if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] + 1)) x = g->gx[a], y = g->gy[a] + 1;
+    else if (a >= 0) near_cell(g, g->gx[a], g->gy[a], 1, &x, &y);
+    else while (!cell_free(g, x, y)) x += 2;
+    g->gx[v] = x, g->gy[v] = y, g->placed[v] = 1;
+    cell_take(g, x, y, v);
+  }
+}
+
+/* ---------------------------------------------------------------- cells to points */
+/* Centre of every grid line (column or row) k in [lo, hi]: each as wide as
+ * its widest node, `gap` between neighbours. */
+static double *line_centres(const grid *g, const int *cell, const double *size, int lo, int hi,
+                            double gap) {
+  int n = hi - lo + 1;
+  double *w = bg_xcalloc((size_t)n + 1, sizeof(double)), *c = bg_xcalloc((size_t)n + 1, sizeof(double));
+  for (int v = 0; v < g->n; v++)
+    if (size[v] > w[cell[v] - lo]) w[cell[v] - lo] = size[v];
+  c[0] = w[0] / 2;
+  for (int k = 1; k < n; k++) c[k] = c[k - 1] + w[k - 1] / 2 + gap + w[k] / 2;
+  free(w);
+  return c;
+}
+
+static void range(const grid *g, const int *cell, int *lo, int *hi) {
+  *lo = 1 << 30, *hi = -(1 << 30);
+  for (int v = 0; v < g->n; v++) *lo = cell[v] < *lo ? cell[v] : *lo, *hi = cell[v] > *hi ? cell[v] : *hi;
+  for (int e = 0; e < g->ne; e++)
+    for (int k = 0; k < g->bent[e]; k++) {
+      int c = cell == g->gx ? g->corner[e][2 * k] : g->corner[e][2 * k + 1];
+      *lo = c < *lo ? c : *lo, *hi = c > *hi ? c : *hi;
+    }
+}
+
+/* Room for the path and loop lines a bond carries on one side when those
+ * layers are shown (at most six counted), so numbers fit beyond them. */
+static double layer_band(const grid *g) {
+  const bg_diagram *d = g->d;
+  const bg_analysis *a = d->a;
+  unsigned show = d->show;
+  if (d->o.layer_room > 0) show |= BG_SHOW_PATHS | BG_SHOW_LOOPS;
+  if (!a || d->o.layer_room < 0 || !(show & (BG_SHOW_PATHS | BG_SHOW_LOOPS))) return 0;
+  int *use = bg_xcalloc((size_t)d->m->nbond + 1, sizeof(int)), most = 0;
+  for (int p = 0; (show & BG_SHOW_PATHS) && p < a->npath; p++)
+    for (int k = 0; k < a->path_n[p]; k++) use[a->path_bonds[a->path_adr[p] + k]]++;
+  for (int l = 0; (show & BG_SHOW_LOOPS) && l < a->ntloop; l++)
+    for (int k = 0; k < a->tloop_n[l]; k++) use[a->tloop_signals[a->tloop_adr[l] + k] / 2]++;
+  for (int b = 0; b < d->m->nbond; b++) most = use[b] > most ? use[b] : most;
+  free(use);
+  if (most > 6) most = 6;
+  return most ? d->st.layer_offset + fmax(3, 2.5 * d->st.layer_width) * (most - 1) : 0;
+}
+
+/* Node centres and bond corners in points; the layout's box. */
+static void to_points(grid *g) {
+  bg_diagram *d = g->d;
+  int x0, x1, y0, y1;
+  range(g, g->gx, &x0, &x1);
+  range(g, g->gy, &y0, &y1);
+  double band = layer_band(g);
+  double *cx = line_centres(g, g->gx, d->nw, x0, x1, d->st.rank_sep / 2 + band);
+  double *cy = line_centres(g, g->gy, d->nh, y0, y1, d->st.node_sep * 0.75 + band);
+  for (int v = 0; v < g->n; v++) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
+  bg_layout *l = &d->lay;
+  l->width = l->height = 0;
+  for (int v = 0; v < g->n; v++) {
+    l->width = fmax(l->width, d->nx[v] + d->nw[v] / 2);
+    l->height = fmax(l->height, d->ny[v] + d->nh[v] / 2);
+  }
+  int nb = d->m->nbond, total = 0;
+  for (int b = 0; b < nb; b++) total += g->bent[b] > 0 ? g->bent[b] : 0;
+  l->bendadr = bg_xcalloc((size_t)l->nedge + 1, sizeof(int));
+  l->bendn = bg_xcalloc((size_t)l->nedge + 1, sizeof(int));
+  l->bendx = bg_xcalloc((size_t)total + 1, sizeof(double));
+  l->bendy = bg_xcalloc((size_t)total + 1, sizeof(double));
+  for (int b = 0; b < nb; b++) {
+    l->bendadr[b] = l->nbend;
+    for (int k = 0; k < g->bent[b]; k++, l->nbend++) {
+      l->bendx[l->nbend] = cx[g->corner[b][2 * k] - x0];
+      l->bendy[l->nbend] = cy[g->corner[b][2 * k + 1] - y0];
+    }
+    l->bendn[b] = g->bent[b] > 0 ? g->bent[b] : 0;
+  }
+  free(cx), free(cy);
+}
+
+/* ---------------------------------------------------------------- the pass */
+static void grid_alloc(grid *g, bg_diagram *d) {
+  memset(g, 0, sizeof *g);
+  g->d = d, g->n = d->nnode;
+  build_edges(g);
+  size_t n = (size_t)g->n + 1;
+  g->gx = bg_xcalloc(n, sizeof(int)), g->gy = bg_xcalloc(n, sizeof(int));
+  g->col = bg_xcalloc(n, sizeof(int)), g->row = bg_xcalloc(n, sizeof(int));
+  g->placed = bg_xcalloc(n, 1), g->hub = bg_xcalloc(n, 1), g->sides = bg_xcalloc(n, 1);
+  g->bent = bg_xcalloc((size_t)g->ne + 1, sizeof(int));
+  g->corner = bg_xcalloc((size_t)g->ne + 1, sizeof *g->corner);
+  cell_grow(g);
+}
+
+static void grid_free(grid *g) {
+  free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg);
+  free(g->gx), free(g->gy), free(g->col), free(g->row);
+  free(g->placed), free(g->hub), free(g->sides), free(g->bent), free(g->corner);
+  free(g->key), free(g->val);
+}
+
+void bg_grid_place(bg_diagram *d) {
+  grid g;
+  grid_alloc(&g, d);
+  classify(&g);
+  int nh, *h = order_hubs(&g, &nh);
+  assign_rows(&g, h, nh);
+  stack_components(&g, h, nh);
+  route_hub_bonds(&g);
+  place_leaves(&g);
+  place_floats(&g);
+  to_points(&g);
+  free(h);
+  grid_free(&g);
+}
