@@ -3,7 +3,8 @@
 only headers of its own stage and of the stages below it.
 
 The stage order is read from CMakeLists.txt (BG_ENGINE_STAGES, then
-BG_RENDER_STAGES, then cli on top), so the build and this check cannot disagree.
+BG_RENDER_STAGES, then cli and api on top: api is libbgdraw's public face,
+beside cli, and uses nothing of it), so the build and this check cannot disagree.
 Every folder of src/ and render/ must be a stage, and every project include is
 written "stage/name.h" (a bare "name.h" only for a header of the same folder).
 
@@ -24,14 +25,14 @@ def stage_order(root):
         if not m:
             sys.exit("include_rule: CMakeLists.txt has no set(%s ...)" % var)
         order += m.group(1).split()
-    return order + ["cli"]
+    return order + ["cli", "api"]
 
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "."
     order = stage_order(root)
     rank = {s: i for i, s in enumerate(order)}
-    home = {s: ("render" if s in order[order.index("scene"):-1] else "src") for s in order}
+    home = {s: ("render" if s in order[order.index("scene"):-2] else "src") for s in order}
     problems = []
     checked = 0
     for top in ("src", "render"):
@@ -59,7 +60,7 @@ def main():
                     if len(parts) != 2 or parts[0] not in rank:
                         problems.append('%s: "%s" names no stage' % (rel, inc))
                         continue
-                    if rank[parts[0]] > rank[entry]:
+                    if rank[parts[0]] > rank[entry] or (entry == "api" and parts[0] == "cli"):
                         problems.append('%s: stage %s includes "%s" of the higher stage %s'
                                         % (rel, entry, inc, parts[0]))
                     elif not os.path.exists(os.path.join(root, home[parts[0]], inc)):

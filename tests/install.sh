@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# cmake --install into a temporary prefix (docs/install.md): the installed
+# bgdraw runs with the source and build trees out of sight (a private mount
+# namespace puts empty folders over them) and the prefix moved elsewhere, finds
+# --style print beside itself, and a ten-line C program links against the
+# installed libbgdraw with pkg-config and gets the right numbers. Also: the man
+# page describes every option of --help, bash completion completes them.
+# Usage: bash tests/install.sh PATH_TO_BGDRAW   (from the project root)
+set -u
+BGDRAW=$(cd "$(dirname "${1:?usage: install.sh PATH_TO_BGDRAW}")" && pwd)/$(basename "$1")
+BUILD=$(dirname "$BGDRAW")
+ROOT=$PWD
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+check() { # check NAME STATUS
+  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
+}
+
+cmake --install "$BUILD" --prefix "$tmp/p" >"$tmp/install.log" 2>&1; st=$?
+check "cmake --install (got $st)" $st
+for f in bin/bgdraw share/bgdraw/styles/print.style share/man/man1/bgdraw.1 \
+         share/bash-completion/completions/bgdraw include/bgdraw.h; do
+  [ -f "$tmp/p/$f" ]; check "installed $f" $?
+done
+pc=$(find "$tmp/p" -name bgdraw.pc | head -1)
+lib=$(find "$tmp/p" -name 'libbgdraw.so' | head -1)
+[ -n "$pc" ] && [ -n "$lib" ]; check "installed libbgdraw.so and bgdraw.pc" $?
+objcopy --strip-debug "$tmp/p/bin/bgdraw" "$tmp/exe.nodebug" && objcopy --strip-debug "$lib" "$tmp/lib.nodebug"
+! grep -qF "$ROOT" "$tmp/exe.nodebug" "$tmp/lib.nodebug"
+check "no path of the source tree in the installed code (debug info aside)" $?
+
+# move the prefix: everything is found relative to the executable / library
+mv "$tmp/p" "$tmp/q"
+pc=${pc/$tmp\/p/$tmp/q}; lib=${lib/$tmp\/p/$tmp/q}
+cp examples/rlc.bg "$tmp/rlc.bg"
+"$BGDRAW" "$tmp/rlc.bg" --style print -o "$tmp/want.svg"
+"$BGDRAW" "$tmp/rlc.bg" -o "$tmp/default.svg"
+
+# the C program: parse, analyse, render through the public header
+cat >"$tmp/prog.c" <<'EOF'
+#include <bgdraw.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+int main(int argc, char **argv) {
+  char *err = NULL, *svg = NULL; size_t n = 0;
+  bg_api_model *m = bg_api_load_file(argv[1], &err);
+  if (!m) { fputs(err, stderr); return 1; }
+  int ok = bg_api_render(m, "svg", "print", NULL, &svg, &n, &err) == 0;
+  printf("%s %d %d %d %d\n", bg_api_name(m), bg_api_count(m, "bonds"), bg_api_count(m, "states"), ok, ok && strstr(svg, "<svg") != NULL);
+  fwrite(svg, 1, n, fopen(argv[2], "wb"));
+  free(svg); bg_api_free(m); return argc < 3;
+}
+EOF
+PKG_CONFIG_PATH=$(dirname "$pc") cc -std=c11 -Wall -Wextra -o "$tmp/prog" "$tmp/prog.c" \
+  $(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs bgdraw) 2>"$tmp/cc.err"
+check "the C program compiles and links with pkg-config bgdraw" $?
+
+# run everything with the source and build trees hidden
+hide="mount -t tmpfs none '$ROOT'"
+case $BUILD in "$ROOT"/*) ;; *) hide="$hide && mount -t tmpfs none '$BUILD'" ;; esac
+cat >"$tmp/run.sh" <<EOF
+set -e
+cd '$tmp'
+[ ! -e '$ROOT/CMakeLists.txt' ]
+unset BGDRAW_STYLE_DIR
+'$tmp/q/bin/bgdraw' rlc.bg --style print -o got.svg
+LD_LIBRARY_PATH='$(dirname "$lib")' ./prog rlc.bg lib.svg > prog.out
+EOF
+if unshare -m true 2>/dev/null; then
+  unshare -m sh -c "$hide && sh '$tmp/run.sh'" 2>"$tmp/err"; st=$?
+else # no mount namespaces here: the trees stay, the installed files must not use them
+  echo "install.sh: no mount namespace: running with the source tree in place" >&2
+  sh "$tmp/run.sh" 2>"$tmp/err"; st=$?
+fi
+check "installed bgdraw and the program run without the source tree (got $st)" $st
+[ $st -eq 0 ] || cat "$tmp/err"
+cmp -s "$tmp/want.svg" "$tmp/got.svg"; check "installed bgdraw --style print = the build's --style print" $?
+! cmp -s "$tmp/default.svg" "$tmp/got.svg"; check "--style print differs from the default style" $?
+[ "$(cat "$tmp/prog.out" 2>/dev/null)" = "rlc 4 2 1 1" ]
+check "the C program: name rlc, 4 bonds, 2 states, an SVG (got '$(cat "$tmp/prog.out" 2>/dev/null)')" $?
+cmp -s "$tmp/want.svg" "$tmp/lib.svg"; check "libbgdraw's print-style SVG = bgdraw's" $?
+
+# the man page describes every long option of --help
+sed 's/\\-/-/g' docs/bgdraw.1 >"$tmp/man.txt"
+missing=""
+for o in $("$BGDRAW" --help | grep -o -- '--[a-z][a-z-]*' | sort -u); do
+  grep -qF -- "$o" "$tmp/man.txt" || missing="$missing $o"
+done
+[ -z "$missing" ]; check "man page describes every option of --help (missing:$missing)" $?
+
+# bash completion: option values and option names as --help has them
+out=$(bash -c '. contrib/bash-completion/bgdraw
+  COMP_WORDS=(bgdraw m.bg --causality ""); COMP_CWORD=3; _bgdraw; echo "${COMPREPLY[*]}"
+  COMP_WORDS=(bgdraw --dep); COMP_CWORD=1; _bgdraw; echo "${COMPREPLY[*]}"')
+[ "$out" = $'scap relaxed vandijk lagrange\n--depfile' ]; check "bash completion (got '$out')" $?
+missing=""
+for o in $("$BGDRAW" --help | grep -o -- '--[a-z][a-z-]*' | sort -u); do
+  grep -qw -- "$o" contrib/bash-completion/bgdraw || missing="$missing $o"
+done
+[ -z "$missing" ]; check "bash completion knows every option of --help (missing:$missing)" $?
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
