@@ -265,9 +265,14 @@ static void index_lines(rp_ctx *c) {
   rp_para(&c->body, bg_sb_str(&b), RP_SIZE_BODY, 0, 12, rp_ink);
   rp_gap(&c->body, 2);
   bg_sb_free(&b);
-  if (in->index && in->index->index >= 0 && a->index_predicted >= 0 &&
-      (in->index->index >= 2) != (a->index_predicted >= 2))
-    para(c, "The predicted and the numeric index disagree; both are reported as found.");
+  if (a->index_disagreement) {
+    bg_strbuf w = {0};
+    bg_sb_puts(&w, "<b>Warning:</b> ");
+    rp_esc(&w, a->index_disagreement);
+    bg_sb_puts(&w, ".");
+    para(c, bg_sb_str(&w));
+    bg_sb_free(&w);
+  }
 }
 
 static void history_table(rp_ctx *c) {

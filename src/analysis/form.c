@@ -436,6 +436,12 @@ static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
                  a->ncloop, a->ncloop > 1 ? "s" : "");
   }
   if (a->ndependent && !c1) { sb_sep(sb); bg_sb_puts(sb, "dependent stores"); }
+  if (a->nlag) {
+    sb_sep(sb);
+    bg_sb_printf(sb, "Lagrange causality: %d generalised velocit%s (artificial flow sources) as "
+                     "algebraic unknowns, their balances the Lagrange equations (Section 4.10)",
+                 a->nlag, a->nlag > 1 ? "ies" : "y");
+  }
   if (a->nconflict) { sb_sep(sb); bg_sb_puts(sb, "causal conflicts give algebraic constraints"); }
   int inv = 0, ninv = ninverted_laws(m, a, &inv);
   if (ninv) {
@@ -667,7 +673,9 @@ static int singular_modulation_loop(const bg_analysis *a) {
 static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
   bg_strbuf sb = {0};
   int p = 0, l = 0, cb = -1, c = a->complete ? conflict_unsolvable(m, a, g, &cb) : -1;
-  int inv = 0, dae = a->ndependent || nblocks || a->nconflict || a->ncloop ||
+  /* Lagrange causality: each artificial flow source's velocity is an
+   * algebraic unknown whose balance is a Lagrange equation (Section 4.10) */
+  int inv = 0, dae = a->ndependent || nblocks || a->nconflict || a->ncloop || a->nlag ||
                      any_zero_order_path(m, a) || ninverted_laws(m, a, &inv);
   a->form = !a->complete ? BG_FORM_INCOMPLETE : dae ? BG_FORM_DAE : BG_FORM_ODE;
   if (!a->complete) {

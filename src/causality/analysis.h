@@ -113,6 +113,8 @@ typedef struct bg_analysis {
   int form_parameter_dependent; /* Equation 4.45 case */
   /* Filled by the equations stage (JSON index.numeric, index.numeric_status,
    * reduced_form); the JSON writes null while they are unset. */
+  const char *index_disagreement; /* set with the numeric index when it and the
+                                     prediction disagree: why, in words (index.c) */
   int index_numeric_set;     /* Algorithm 4.1 ran to a verdict (not set when it failed) */
   int index_numeric;         /* its index; < 0 with _set: singular pencil (JSON numeric
                                 null, numeric_status "singular") */

@@ -101,6 +101,12 @@ static void numeric_index(run *r) {
   r->index_done = 1;
   r->analysis.index_numeric_set = r->index.index != BG_INDEX_FAILED;
   r->analysis.index_numeric = r->index.index;
+  char *why = bg_index_disagreement(&r->analysis, &r->index);
+  if (why) {
+    r->analysis.index_disagreement = bg_arena_strdup(&r->analysis.arena, why);
+    if (!r->opts.quiet) fprintf(stderr, "bgdraw: warning: %s\n", why);
+    free(why);
+  }
 }
 
 static int wants_format(const bg_cli_opts *o, const char *format) {
@@ -242,7 +248,8 @@ int main(int argc, char **argv) {
   }
   analyse(&r);
   if (wants_equations(&r.opts)) derive_equations(&r);
-  if (wants_index(&r.opts)) numeric_index(&r);
+  /* a simulation needs it too: a numeric index above 1 refuses the run */
+  if (wants_index(&r.opts) || wants_simulation(&r.opts)) numeric_index(&r);
   if (cli_wants_linear(&r)) cli_linearise(&r);
   rc = write_all(&r);
   if ((rc == EXIT_OK || rc == EXIT_SIM) && r.opts.depfile) {

@@ -344,3 +344,33 @@ void bg_index_report(const bg_index_result *r, bg_strbuf *out) {
     bg_sb_printf(out, kind == BG_EIG_DECAYING ? "\n" : " (%s)\n", bg_index_eig_word(kind));
   }
 }
+
+/* The numeric index is computed from the equations themselves (Algorithm
+ * 4.1 at the initial point); the prediction reads the causal pattern, which
+ * cannot see every constraint: under Lagrange causality the balances at the
+ * artificial sources are not causal paths, so a constraint among the states
+ * that forms through them (loop_class1: both balances determine L.p' alone)
+ * shows only in the equations. So the numeric index is the one to use. */
+char *bg_index_disagreement(const bg_analysis *a, const bg_index_result *r) {
+  int p = a->index_predicted, k = r->index;
+  if (p < 0 || k == BG_INDEX_FAILED || k == p || (p >= 2 && k >= 2)) return NULL;
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "the index predicted from the causal pattern is %s, the numeric index of the "
+                    "equations ", p >= 2 ? "above 1" : p == 1 ? "1" : "0");
+  if (k == BG_INDEX_SINGULAR) bg_sb_puts(&sb, "is undefined (a singular pencil)");
+  else bg_sb_printf(&sb, "is %d", k);
+  bg_sb_puts(&sb, "; the numeric index is computed from the equations themselves and is the one "
+                  "to use");
+  if (k > p && a->method == BG_METHOD_LAGRANGE)
+    bg_sb_puts(&sb, " (under Lagrange causality the balances at the artificial flow sources are "
+                    "not causal paths, so a constraint among the states that forms through them "
+                    "is not in the causal pattern)");
+  else if (k > p)
+    bg_sb_puts(&sb, " (the equations hold a constraint the causal paths and loops do not show)");
+  else
+    bg_sb_puts(&sb, " (the structure the prediction reads cancels in the equations at these values)");
+  if (k >= 2 || k == BG_INDEX_SINGULAR) bg_sb_puts(&sb, "; a simulation is refused");
+  char *msg = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+  return msg;
+}

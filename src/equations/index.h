@@ -7,6 +7,7 @@
 #define BG_INDEX_H
 #include "equations/eqsys.h"
 #include "model/model.h"
+#include "causality/analysis.h"
 #include "base/strbuf.h"
 
 #define BG_INDEX_SINGULAR (-1)  /* singular pencil: no (unique) solution */
@@ -36,6 +37,10 @@ void bg_index_free(bg_index_result *r);
 typedef enum { BG_EIG_DECAYING, BG_EIG_ZERO, BG_EIG_UNDAMPED, BG_EIG_UNSTABLE } bg_eig_kind;
 bg_eig_kind bg_index_eig_kind(const bg_index_result *r, int k);
 const char *bg_index_eig_word(bg_eig_kind kind); /* "zero (a conserved quantity)", ... */
+/* When the index predicted from the causal pattern (a->index_predicted) and
+ * the numeric index r disagree: a malloc'd warning saying which one to use
+ * and why (issue 12, defect 8); NULL when they agree or one is unknown. */
+char *bg_index_disagreement(const bg_analysis *a, const bg_index_result *r);
 /* The rank history and the eigenvalues as report text. */
 void bg_index_report(const bg_index_result *r, bg_strbuf *out);
 #endif

@@ -239,8 +239,10 @@ static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   int_or_null(o, a->index_numeric, !computed);
   bg_sb_puts(o, ", \"reason\": ");
   str_or_null(o, a->index_reason);
-  bg_sb_printf(o, ", \"numeric_status\": \"%s\"},\n",
+  bg_sb_printf(o, ", \"numeric_status\": \"%s\", \"disagreement\": ",
                computed ? "computed" : a->index_numeric_set ? "singular" : "not computed");
+  str_or_null(o, a->index_disagreement);
+  bg_sb_puts(o, "},\n");
 }
 
 static void put_estimates(bg_strbuf *o, const bg_analysis *a) {

@@ -72,6 +72,28 @@ static void say_index2(const bg_model *m, const bg_analysis *a, bg_strbuf *sb) {
   else bg_sb_puts(sb, REMEDIES);
 }
 
+/* The prediction said 1 or less but the equations, linearised at the start,
+ * have index 2 or more (or none): the numeric index is the one to trust
+ * (bg_index_disagreement), and IDA would integrate them unreliably. */
+static int numeric_above_1(const bg_analysis *a) {
+  return a->index_numeric_set && a->index_predicted < 2 && (a->index_numeric >= 2 || a->index_numeric < 0);
+}
+
+static void say_numeric(const bg_analysis *a, bg_strbuf *sb) {
+  if (a->index_numeric >= 0)
+    bg_sb_printf(sb, "the equations have numeric index %d (Algorithm 4.1 at the initial point), ",
+                 a->index_numeric);
+  else bg_sb_puts(sb, "the linearised equations are singular (no index), ");
+  bg_sb_printf(sb, "although the causal pattern predicts %d; the numeric index, computed from the "
+                   "equations themselves, is the one to trust%s. IDA cannot integrate index-2 "
+                   "equations reliably. ", a->index_predicted,
+               a->method == BG_METHOD_LAGRANGE ? " (under Lagrange causality the balances at the "
+                                                 "artificial flow sources are not causal paths)" : "");
+  bg_sb_puts(sb, "Remedies: another causality method (--causality scap or vandijk), or a small "
+                 "store (C or I) or a resistor where the states are constrained, so the constraint "
+                 "gets an integration (Section 4.3).");
+}
+
 static int singular_tloop(const bg_analysis *a) {
   for (int t = 0; t < a->ntloop; t++)
     if (a->tloop_algebraic[t] && unity(a->tloop_gain_value[t])) return t;
@@ -103,6 +125,8 @@ char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
     say_tloop(a, t, &sb);
   else if (a->index_predicted >= 2)
     say_index2(m, a, &sb);
+  else if (numeric_above_1(a))
+    say_numeric(a, &sb);
   if (!sb.len) return NULL;
   char *msg = strdup(bg_sb_str(&sb));
   bg_sb_free(&sb);
