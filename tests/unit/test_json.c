@@ -85,7 +85,7 @@ static void test_values(void) {
   OK(has(j, "{\"step\": 1, \"text\": \"Se U fixes bond 1 (stroke at j)\"}"));
   OK(has(j, "\"conflicts\": [],\n"));
   OK(has(j, "\"index\": {\"predicted\": null, \"numeric\": null, \"reason\": null, "
-            "\"numeric_status\": \"not computed\"}"));
+            "\"numeric_status\": \"not computed\", \"disagreement\": null}"));
   OK(has(j, "\"omitted\": {\"causal_paths\": 0, \"causal_loops\": 0, \"topological_loops\": 0, "
                 "\"topological_loops_complete\": true},\n"
             "  \"reduced_form\": null\n}\n"));
@@ -167,7 +167,7 @@ static void test_generic_lists(void) {
   OK(has(j, "\"dependent_stores\": []"));
   OK(has(j, "\"form\": \"ode\""));
   OK(has(j, "\"index\": {\"predicted\": 0, \"numeric\": 0, \"reason\": \"no zero-order path\", "
-            "\"numeric_status\": \"computed\"}"));
+            "\"numeric_status\": \"computed\", \"disagreement\": null}"));
   OK(has(j, "\"reduced_form\": \"ode\"\n}\n"));
   bg_sb_free(&sb);
   /* a singular pencil has no index: null, and the status says why */
@@ -176,7 +176,7 @@ static void test_generic_lists(void) {
   sb = (bg_strbuf){0};
   bg_json_write_analysis(m, &a, &sb);
   j = bg_sb_str(&sb);
-  OK(has(j, "\"numeric\": null, \"reason\": \"no zero-order path\", \"numeric_status\": \"singular\"}"));
+  OK(has(j, "\"numeric\": null, \"reason\": \"no zero-order path\", \"numeric_status\": \"singular\", \"disagreement\": null}"));
   OK(has(j, "\"omitted\": {\"causal_paths\": 7, \"causal_loops\": 2, \"topological_loops\": 3, "
                 "\"topological_loops_complete\": false}"));
   OK(has(j, "{\"kind\": \"time_constant\", \"path\": 1, \"value\": 0.0001}"));
