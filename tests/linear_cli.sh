@@ -67,7 +67,7 @@ check "bode unwritable: exit 4" '[ $rc -eq 4 ]'
 check "refused: no plot, exit 3" '[ $rc -eq 3 ] && [ ! -e "$TMP/never.svg" ]'
 
 # exports: Octave and Python state space with the hand-derived matrices
-"$BG" $M -o "$TMP/rlc.m" -o "$TMP/rlc.py"; rc=$?
+"$BG" $M --linear octave >"$TMP/rlc.m" && "$BG" $M --linear python >"$TMP/rlc.py"; rc=$?
 check "exports exit 0" '[ $rc -eq 0 ]'
 check "octave A" 'grep -qxF "A = [-4 -10;" "$TMP/rlc.m" && grep -qxF "     2 0];" "$TMP/rlc.m"'
 check "octave names" 'grep -qxF "state_names = {'"'"'L1.p'"'"', '"'"'C1.q'"'"'};" "$TMP/rlc.m"'
@@ -92,8 +92,8 @@ fi
 if command -v octave >/dev/null; then
   octave -q --no-gui --eval "run('$TMP/rlc.m'); assert(max(abs(sort(eig(A)) - [-2-4i; -2+4i])) < 1e-12)" 2>"$TMP/octave.err" || { echo "FAIL octave"; fail=$((fail + 1)); }
 fi
-"$BG" "$TMP/mass.bg" -o "$TMP/never.m" 2>/dev/null; rc=$?
-check "refused export: exit 3, no file" '[ $rc -eq 3 ] && [ ! -e "$TMP/never.m" ]'
+"$BG" "$TMP/mass.bg" --linear octave >"$TMP/never.m" 2>/dev/null; rc=$?
+check "refused export: exit 3, nothing written" '[ $rc -eq 3 ] && [ ! -s "$TMP/never.m" ]'
 
 # report: section 10 with the poles beside the chapter's estimates and the transfer functions
 "$BG" $M --report "$TMP/r.pdf"; rc=$?

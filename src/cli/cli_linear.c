@@ -1,5 +1,7 @@
 /* The linear analysis on the command line (docs/linear.md, docs/cli.md):
- * when it runs, --linear FORM on stdout, the plots, the .m and .py exports. */
+ * when it runs, --linear FORM on stdout (text, latex, json, and the state
+ * space as an Octave script or a Python module), the plots. (-o FILE.m and
+ * FILE.py are the model exports of docs/export.md.) */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,7 +18,7 @@ static int has_format(const bg_cli_opts *o, const char *f) {
 }
 
 int cli_linear_asked(const bg_cli_opts *o) {
-  return o->linear || o->bode || o->nyquist || o->step || has_format(o, "m") || has_format(o, "py");
+  return o->linear || o->bode || o->nyquist || o->step;
 }
 
 int cli_linear_only(const bg_cli_opts *o) {
@@ -45,23 +47,18 @@ static int refused(run *r) {
   return 1;
 }
 
-static int write_text(const char *path, const bg_strbuf *sb) {
-  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, strerror(errno));
-  return EXIT_WRITE;
-}
-
-int cli_write_linear_export(run *r, const char *path, const char *format) {
+/* --linear octave|python: the state space as an Octave script or a Python module. */
+static int write_state_space(run *r, const char *form) {
   if (refused(r)) return EXIT_SIM;
   if (!r->lin.reduced) {
-    fprintf(stderr, "bgdraw: error: no state space to export to '%s': %s\n", path,
+    fprintf(stderr, "bgdraw: error: no state space to export: %s\n",
             r->lin.reduce_note ? r->lin.reduce_note : "not reduced");
     return EXIT_SIM;
   }
   bg_strbuf sb = {0};
-  if (!strcmp(format, "m")) bg_linear_export_m(&r->lin, r->model, &sb);
+  if (!strcmp(form, "octave")) bg_linear_export_m(&r->lin, r->model, &sb);
   else bg_linear_export_py(&r->lin, r->model, &sb);
-  int rc = write_text(path, &sb);
+  int rc = cli_write_stdout(&sb);
   bg_sb_free(&sb);
   return rc;
 }
@@ -79,7 +76,10 @@ int cli_write_linear(run *r) {
   const bg_cli_opts *o = &r->opts;
   if (!o->linear && !o->bode && !o->nyquist && !o->step) return EXIT_OK;
   if (!r->lin_done) return EXIT_OK;
-  if (o->linear) {
+  if (o->linear && (!strcmp(o->linear, "octave") || !strcmp(o->linear, "python"))) {
+    int rc = write_state_space(r, o->linear);
+    if (rc) return rc;
+  } else if (o->linear) {
     bg_strbuf sb = {0};
     if (!strcmp(o->linear, "json")) bg_json_write_linear(&r->lin, &sb), bg_sb_putc(&sb, '\n');
     else bg_linear_print(&r->lin, r->model, o->linear, &sb);

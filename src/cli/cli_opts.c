@@ -17,7 +17,8 @@
 
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
-  OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR
+  OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
+  OPT_PREFIX
 };
 
 static const char short_opts[] = ":o:T:M:qvhV";
@@ -43,6 +44,7 @@ static const struct option long_opts[] = {
     {"set", required_argument, NULL, OPT_SET},
     {"diagnostics-format", required_argument, NULL, OPT_DIAG_FORMAT},
     {"color", required_argument, NULL, OPT_COLOR},
+    {"prefix", required_argument, NULL, OPT_PREFIX},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"check", no_argument, NULL, OPT_CHECK},
     {"quiet", no_argument, NULL, 'q'},
@@ -73,6 +75,7 @@ static const struct {
     {OPT_MAX_ERRORS, offsetof(bg_cli_opts, max_errors)},
     {OPT_DIAG_FORMAT, offsetof(bg_cli_opts, diag_format)},
     {OPT_COLOR, offsetof(bg_cli_opts, color)},
+    {OPT_PREFIX, offsetof(bg_cli_opts, prefix)},
     {'T', offsetof(bg_cli_opts, force_format)},
     {'M', offsetof(bg_cli_opts, depfile)},
 };
@@ -226,12 +229,13 @@ void bg_cli_print_help(FILE *out) {
       "  --plot FILE         simulation plot (svg, pdf, png)\n"
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"
-      "  --linear FORM       linear analysis: text | latex | json (docs/linear.md)\n"
+      "  --linear FORM       linear analysis: text | latex | json | octave | python (docs/linear.md)\n"
       "  --bode FILE, --nyquist FILE, --step FILE\n"
       "                      frequency, step and impulse responses (svg, pdf, png)\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"
+      "  --prefix NAME       symbol prefix of exported C (-o NAME.c; default: the model name)\n"
       "  --diagnostics-format FMT  text (default) | json (one object a line)\n"
       "  --color WHEN        auto (default: on a terminal, unless NO_COLOR) | always | never\n"
       "  -q, --quiet         no warnings and notes\n"

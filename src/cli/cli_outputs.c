@@ -106,6 +106,7 @@ int cli_write_equations(run *r, const char *path, const char *form) {
             r->eqsys_problem ? r->eqsys_problem : "unknown reason");
     return EXIT_MODEL;
   }
+  if (!strcmp(form, "c")) return cli_write_export(r, path, "c");
   bg_strbuf sb = {0};
   bg_eqprint(r->eqsys, form, &sb);
   int rc = cli_write_text(path ? path : BG_CLI_STDOUT, &sb);
@@ -132,10 +133,9 @@ static int write_one(run *r, const bg_cli_output *out) {
   if (!strcmp(out->format, "json")) return write_json(r, out->path);
   if (is_diagram_format(out->format)) return write_diagram(r, out);
   if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
-  if (!strcmp(out->format, "c")) return cli_write_equations(r, out->path, "c");
+  if (!strcmp(out->format, "c") || !strcmp(out->format, "py") || !strcmp(out->format, "m"))
+    return cli_write_export(r, out->path, out->format);
   if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
-  if (!strcmp(out->format, "m") || !strcmp(out->format, "py"))
-    return cli_write_linear_export(r, out->path, out->format);
   BG_FATAL("option parsing let through output format '%s'", out->format);
 }
 

@@ -67,6 +67,9 @@ int cli_write_equations(run *r, const char *path, const char *form);
 int cli_write_text(const char *path, const bg_strbuf *sb);
 /* -M/--depfile: the make rule of the files this run read (cli_depfile.c). */
 int cli_write_depfile(run *r);
+/* Exports (cli_export.c): -o NAME.c (and NAME.h), .py, .m, or
+ * format "c" to stdout when path is NULL (--equations c). */
+int cli_write_export(run *r, const char *path, const char *format);
 /* --plot FILE and --report FILE.pdf. */
 int cli_write_plot(run *r);
 int cli_write_report(run *r);
@@ -79,5 +82,4 @@ int cli_linear_asked(const bg_cli_opts *o); /* --linear, --bode, ..., .m, .py */
 int cli_linear_only(const bg_cli_opts *o);  /* and nothing else: no default diagram */
 void cli_linearise(run *r);
 int cli_write_linear(run *r);
-int cli_write_linear_export(run *r, const char *path, const char *format);
 #endif

@@ -10,7 +10,7 @@
 
 static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
-static const char *const lin_forms[] = {"text", "latex", "json", NULL};
+static const char *const lin_forms[] = {"text", "latex", "json", "octave", "python", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
 static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
 static const char *const diag_formats[] = {"text", "json", NULL};

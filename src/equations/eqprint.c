@@ -1,7 +1,7 @@
 /* Printers of the equation system: text, LaTeX and JSON from the equation
  * trees through the symbolic layer (sym.h: simplified, bond-numbered
- * variables), with the reduced form (eqsym.h) after them; C from the
- * evaluation tape. */
+ * variables), with the reduced form (eqsym.h) after them. (C, like the
+ * other exports, is written by src/export.) */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -226,14 +226,10 @@ void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
   bg_sym_free(P.S);
 }
 
-/* ------------------------------------------------------------ C */
-void bg_eqprint_c(const bg_eqsys *s, bg_strbuf *out) { bg_eqprint_c_tape(s, out); }
-
 int bg_eqprint(const bg_eqsys *s, const char *format, bg_strbuf *out) {
   if (!strcmp(format, "text")) bg_eqprint_text(s, out);
   else if (!strcmp(format, "latex")) bg_eqprint_latex(s, out);
   else if (!strcmp(format, "json")) bg_eqprint_json(s, out);
-  else if (!strcmp(format, "c")) bg_eqprint_c(s, out);
   else return -1;
   return 0;
 }

@@ -337,7 +337,7 @@ static int user_state_rows(bg_eqsys *s) {
 }
 
 static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
-                       bg_diags *dg) {
+                       bg_diags *dg, int live) {
   bg_srcloc none = {0, 0};
   if (!a->complete) {
     bg_diag_error(dg, none, "the causality is incomplete: no equations can be derived");
@@ -366,6 +366,7 @@ static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *input
     s->lin_hslot = bg_arena_alloc(&s->arena, (size_t)(m->noutput + 1) * sizeof(int));
     memcpy(s->lin_ref, inputs, (size_t)nu * sizeof(int));
   }
+  s->live_params = live;
   bg_eqs_compile(s);
   bg_eqs_pattern(s);
   s->work = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
@@ -373,13 +374,17 @@ static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *input
 }
 
 bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg) {
-  return build(m, a, NULL, 0, dg);
+  return build(m, a, NULL, 0, dg, 0);
 }
 
 bg_eqsys *bg_eqsys_build_io(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
                             bg_diags *dg) {
   static const int none = 0;
-  return build(m, a, inputs ? inputs : &none, inputs ? nu : 0, dg);
+  return build(m, a, inputs ? inputs : &none, inputs ? nu : 0, dg, 0);
+}
+
+bg_eqsys *bg_eqsys_build_export(const bg_model *m, const bg_analysis *a, bg_diags *dg) {
+  return build(m, a, NULL, 0, dg, 1);
 }
 
 void bg_eqsys_free(bg_eqsys *s) {

@@ -27,6 +27,12 @@ typedef struct bg_eqsys bg_eqsys;
  * bond's flow: "Cp.f", "f3") and its head's relation becomes that unknown's
  * residual (the two efforts of the bond agree). */
 bg_eqsys *bg_eqsys_build(const bg_model *m, const bg_analysis *a, bg_diags *dg);
+/* The same system for the model exporters (src/export): the model's params
+ * stay variables of the evaluation tape (slots set from a parameter record)
+ * instead of folded constants, and the initial values of the unknowns are
+ * compiled too, so exported code can change params at run time. Evaluates
+ * exactly like the system of bg_eqsys_build. */
+bg_eqsys *bg_eqsys_build_export(const bg_model *m, const bg_analysis *a, bg_diags *dg);
 void bg_eqsys_free(bg_eqsys *s);
 
 int bg_eqsys_n(const bg_eqsys *s);          /* nx + nz */

@@ -90,6 +90,13 @@ struct bg_eqsys {
   unsigned char *is_const;
   int nslot, capslot;
   int slot_y, slot_yp; /* slot of y[0], yp[0]; slot 0 is t */
+  /* export builds (bg_eqsys_build_export): param k is read from slot
+   * param_slot[k]: slot_p + k for a param given by a number (set from the
+   * exported parameter record), computed code for one defined by other
+   * params; code [nout_code, ncode) computes the initial values, init_slot[i]
+   * per unknown (-1: none, the unknown starts at 0 or its consistent value) */
+  int live_params, slot_p, nout_code;
+  int *param_slot, *init_slot;
   int *sig_slot;
   int *row_slot;
   int *input_slot;
@@ -119,8 +126,9 @@ int bg_eqs_node(bg_eqsys *s, int kind, int a, int b, double c);
 const char *bg_eqs_signame(const bg_eqsys *s, int sig, bg_arena *ar);
 /* Makes signal sig the next algebraic unknown, with its residual row. */
 void bg_eqsys_add_z(bg_eqsys *s, int sig);
-/* eqprint_c.c: the C printer. */
-void bg_eqprint_c_tape(const bg_eqsys *s, bg_strbuf *out);
+/* eqsys_tape.c: 1 for a param defined by other params (not --set): export
+ * builds compute it instead of reading it from the parameter record. */
+int bg_eqsys_param_is_derived(const bg_eqsys *s, int k);
 /* eqsys_order.c: dependency lists, tearing and the computational order. */
 void bg_eqs_deps(bg_eqsys *s);
 void bg_eqs_sort(bg_eqsys *s);

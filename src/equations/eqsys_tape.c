@@ -95,7 +95,9 @@ static int cx(bg_eqsys *s, int root, int eq) {
   switch (n->op) {
   case BG_X_NUM: return new_slot(s, 1, n->num);
   case BG_X_TIME: return 0;
-  case BG_X_PARAM: return new_slot(s, 1, m->param_value[n->ref]);
+  case BG_X_PARAM:
+    if (s->live_params) return s->param_slot[n->ref];
+    return new_slot(s, 1, m->param_value[n->ref]);
   case BG_X_INPUT:
     if (s->input_slot[n->ref] < 0)
       s->input_slot[n->ref] = lin_offset(s, -1 - n->ref, cx(s, m->input_expr[n->ref], eq), eq);
@@ -157,11 +159,48 @@ static void compile_outputs(bg_eqsys *s) {
   for (int k = 0; k < s->lin_nh; k++) s->lin_hslot[k] = cx(s, m->output_expr[k], -2000000 - k);
 }
 
+/* 1 when the expression reads a param. */
+static int reads_param(const bg_model *m, int root) {
+  const bg_xnode *n = &m->xnode[root];
+  if (n->op == BG_X_PARAM) return 1;
+  for (int k = 0; k < n->nargs && n->op != BG_X_NUM; k++)
+    if (reads_param(m, n->arg[k])) return 1;
+  return 0;
+}
+
+/* Export builds: a slot per param, then the code of the params defined by
+ * others (in definition order, so each reads only earlier ones). */
+static void live_param_slots(bg_eqsys *s) {
+  const bg_model *m = s->m;
+  s->param_slot = bg_arena_alloc(&s->arena, (size_t)(m->nparam + 1) * sizeof(int));
+  for (int k = 0; k < m->nparam; k++) s->param_slot[k] = new_slot(s, 0, m->param_value[k]);
+  for (int k = 0; k < m->nparam; k++)
+    if (bg_eqsys_param_is_derived(s, k)) s->param_slot[k] = cx(s, m->param_expr[k], -5000000 - k);
+}
+
+int bg_eqsys_param_is_derived(const bg_eqsys *s, int k) {
+  const bg_model *m = s->m;
+  return !m->param_overridden[k] && m->param_expr[k] >= 0 && reads_param(m, m->param_expr[k]);
+}
+
+/* Initial values as code (export builds): the expressions of q0, p0 and
+ * state initial values, so exported code recomputes them from its params. */
+static void compile_initial(bg_eqsys *s) {
+  const bg_model *m = s->m;
+  s->init_slot = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(int));
+  for (int i = 0; i < s->n; i++) {
+    int root = s->u_elem[i] >= 0 ? m->elem_init[s->u_elem[i]] : s->u_state[i] >= 0 ? m->state_init[s->u_state[i]] : -1;
+    s->init_slot[i] = root >= 0 ? cx(s, root, -4000000 - i) : -1;
+  }
+}
+
 void bg_eqs_compile(bg_eqsys *s) {
   int n = s->n;
   new_slot(s, 0, 0); /* t */
   s->slot_y = 1, s->slot_yp = 1 + n;
   for (int i = 0; i < 2 * n; i++) new_slot(s, 0, 0);
+  s->slot_p = s->nslot;
+  if (s->live_params) live_param_slots(s);
   s->sig_slot = bg_arena_alloc(&s->arena, (size_t)(s->nsig + 1) * sizeof(int));
   s->row_slot = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
   s->input_slot = bg_arena_alloc(&s->arena, (size_t)(s->m->ninput + 1) * sizeof(int));
@@ -175,6 +214,8 @@ void bg_eqs_compile(bg_eqsys *s) {
   for (int i = 0; i < n; i++) s->row_slot[i] = ce(s, s->row_root[i], -1 - i);
   s->nmain = s->ncode;
   compile_outputs(s);
+  s->nout_code = s->ncode;
+  if (s->live_params) compile_initial(s);
   s->dv = bg_xcalloc((size_t)s->nslot + 1, sizeof(double));
 }
 
@@ -266,6 +307,10 @@ static void describe(bg_eqsys *s, const tinstr *I, double t) {
     snprintf(where, sizeof where, "the %s of %s", s->sig_what[I->eq], m->elem_name[e]);
   } else if (I->eq > -1000000) {
     snprintf(where, sizeof where, "the equation of %s", s->uname[-1 - I->eq]);
+  } else if (I->eq <= -5000000) {
+    snprintf(where, sizeof where, "the definition of param %s", m->param_name[-5000000 - I->eq]);
+  } else if (I->eq <= -4000000) {
+    snprintf(where, sizeof where, "the initial value of %s", s->uname[-4000000 - I->eq]);
   } else if (I->eq <= -2000000) {
     snprintf(where, sizeof where, "output %s", m->output_name[-2000000 - I->eq]);
   } else {
@@ -294,7 +339,7 @@ static int diagnose(bg_eqsys *s, int c0, int c1, double t) {
 
 int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs) {
   double *v = s->v;
-  int n = s->n, c1 = outputs ? s->ncode : s->nmain;
+  int n = s->n, c1 = outputs ? s->nout_code : s->nmain;
   v[0] = t;
   memcpy(v + s->slot_y, y, (size_t)n * sizeof *v);
   if (yp) memcpy(v + s->slot_yp, yp, (size_t)n * sizeof *v);

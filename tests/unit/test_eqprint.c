@@ -1,8 +1,5 @@
-/* Printers: text and LaTeX of rlc and bond_loop, JSON shape, the generated
- * C of every example compiles with -std=c11 -Wall -Werror, and rlc's is
- * built into a shared object, loaded and checked against bg_eqsys. */
-#include <dlfcn.h>
-#include <unistd.h>
+/* Printers: text and LaTeX of rlc and bond_loop, JSON shape. (The C export
+ * is tested in test_export_c.c.) */
 #include <stdio.h>
 #include "harness.h"
 #include "eqs_fixture.h"
@@ -70,74 +67,8 @@ static void test_modulus_names(void) {
   efx_free(&f);
 }
 
-static int compile_c(const char *name, const char *flags, const char *outfile) {
-  efx f;
-  if (efx_load(&f, name, NULL, -1, NULL, 0)) return -1;
-  bg_strbuf sb = {0};
-  bg_eqprint_c(f.s, &sb);
-  char path[256], cmd[1024];
-  snprintf(path, sizeof path, "/tmp/bg_eqprint_%d_%s.c", (int)getpid(), name);
-  FILE *fp = fopen(path, "w");
-  if (!fp) return -1;
-  fputs(bg_sb_str(&sb), fp);
-  fclose(fp);
-  bg_sb_free(&sb);
-  efx_free(&f);
-  snprintf(cmd, sizeof cmd, "cc -std=c11 -Wall -Werror %s %s -o %s", flags, path, outfile);
-  int rc = system(cmd);
-  remove(path);
-  return rc;
-}
-
-static void test_c_compiles(void) {
-  const char *ex[] = {"rlc", "bond_loop", "bridge_compliance", "class12_paths", "delta",
-                      "hydraulic_bridge", "internal_mod_r", "internal_mod_tf", "loop_class1",
-                      "mod_no_loop", "modulated_source", "parallel_conductance",
-                      "series_conductances", "series_motor", "series_motor_L", "slider_crank"};
-  char obj[256];
-  for (size_t i = 0; i < sizeof ex / sizeof *ex; i++) {
-    snprintf(obj, sizeof obj, "/tmp/bg_eqprint_%d.o", (int)getpid());
-    int rc = compile_c(ex[i], "-c", obj);
-    BG_T_REPORT(rc == 0, "generated C of %s compiles", ex[i]);
-    remove(obj);
-  }
-}
-
-static void test_c_rlc_dlopen(void) {
-  char so[256];
-  snprintf(so, sizeof so, "/tmp/bg_eqprint_%d_rlc.so", (int)getpid());
-  OK(compile_c("rlc", "-O1 -shared -fPIC", so) == 0);
-  void *h = dlopen(so, RTLD_NOW);
-  OK(h != NULL);
-  if (!h) return;
-  int (*rhs)(double, const double *, double *);
-  void (*jac)(double, const double *, const double *, double, double *);
-  *(void **)&rhs = dlsym(h, "bg_model_rhs");
-  *(void **)&jac = dlsym(h, "bg_model_jacobian");
-  OK(rhs && jac);
-  efx f;
-  OK(efx_load(&f, "rlc", NULL, -1, NULL, 0) == 0);
-  unsigned st = 17;
-  for (int k = 0; rhs && jac && f.s && k < 5; k++) {
-    double t = efx_rand(&st, -1e-3, 1e-3), y[2] = {efx_rand(&st, -1e-3, 1e-3), efx_rand(&st, -1e-6, 1e-6)};
-    double a[2], b[2], Ja[4], Jb[4];
-    OK(rhs(t, y, a) == 0);
-    OK(bg_eqsys_rhs(f.s, t, y, b) == 0);
-    DBL_NEAR(a[0], b[0], 0);
-    DBL_NEAR(a[1], b[1], 0);
-    jac(t, y, y, 0, Ja);
-    OK(bg_eqsys_jac_dense(f.s, t, y, y, 0, Jb) == 0);
-    for (int q = 0; q < 4; q++) DBL_NEAR(Ja[q], Jb[q], 0);
-  }
-  efx_free(&f);
-  dlclose(h);
-  remove(so);
-}
-
 int main(void) {
   test_text();
   test_modulus_names();
-  test_c_compiles();
-  test_c_rlc_dlopen();
   return bg_t_done();
 }

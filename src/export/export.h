@@ -1,0 +1,30 @@
+/* Model exports (docs/export.md): the equation system of an export build
+ * (bg_eqsys_build_export: params stay variables) written as code other tools
+ * run. Every exporter appends text to strbufs and touches no file. */
+#ifndef BG_EXPORT_H
+#define BG_EXPORT_H
+#include <stddef.h>
+
+#include "base/strbuf.h"
+#include "equations/eqsys.h"
+
+/* The default symbol prefix: the model name made a C identifier ("rlc",
+ * "my_model"); buf of size n. */
+void bg_export_default_prefix(const bg_model *m, char *buf, size_t n);
+/* 1 when prefix is a usable C identifier (letters, digits, '_'; not a digit
+ * first; at most 64 characters). */
+int bg_export_prefix_ok(const char *prefix);
+
+/* Reusable C: header text into h, source into c. The source includes
+ * "<header_name>"; with header_name NULL the two are meant to be one
+ * translation unit (the header is printed first, no #include). */
+void bg_export_c(const bg_eqsys *s, const char *prefix, const char *header_name, bg_strbuf *h,
+                 bg_strbuf *c);
+/* A Python module: numpy right-hand side or residual, parameters as a dict,
+ * simulate() with SciPy (solve_ivp for ODEs). */
+void bg_export_python(const bg_eqsys *s, bg_strbuf *out);
+/* An Octave/MATLAB function file named fname (the file's base name, e.g.
+ * "rlc_model"): a function returning a struct with parameters, initial
+ * values, and handles for ode15s (mass matrix) and ode15i. */
+void bg_export_octave(const bg_eqsys *s, const char *fname, bg_strbuf *out);
+#endif

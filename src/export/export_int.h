@@ -1,0 +1,49 @@
+/* Shared by the exporters: the evaluation tape of an export build written in
+ * a target language from per-language templates, and identifiers. */
+#ifndef BG_EXPORT_INT_H
+#define BG_EXPORT_INT_H
+#include "base/strbuf.h"
+#include "equations/eqsys_int.h"
+#include "export/export.h"
+#include "model/expr.h"
+
+/* How a language writes the tape's operations. Templates use %0 %1 %2 for
+ * the argument values and %t for a table number (0-based). */
+typedef struct bg_xlang {
+  int base;                   /* index of the first array element: 0 or 1 */
+  const char *open, *close;   /* array subscript brackets */
+  const char *stmt_end;       /* ";" or "" */
+  const char *indent;
+  const char *fn[BG_FN_COUNT];
+  const char *neg, *not_, *and_, *or_, *pow_;
+  const char *cmp;            /* comparison: %0 OP %1 as a number 0/1; %o is OP */
+  const char *table;
+  const char *eq, *ne;        /* spelling of == and != */
+} bg_xlang;
+
+extern const bg_xlang bg_xlang_c, bg_xlang_python, bg_xlang_octave;
+
+/* arr[k] in the language ("v[3]", "v(4)"). */
+void bg_xl_slot(const bg_xlang *L, bg_strbuf *o, const char *arr, int k);
+/* A number literal that reads back exactly (inf and nan spelled per language). */
+void bg_xl_num(const bg_xlang *L, bg_strbuf *o, double c);
+/* "arr[out] = value;" for tape instruction I. */
+void bg_xl_value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
+                      bg_strbuf *o);
+/* Statements that set every constant slot and every param slot (from the
+ * parameter record: pfmt is a printf format with %s for the field name,
+ * e.g. "p->%s", "p['%s']", "p.%s"). */
+void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, const char *pfmt,
+                     bg_strbuf *o);
+/* Statements for code [c0, c1). */
+void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o);
+
+/* Param k as an identifier of the exported record (its name with every
+ * character outside [A-Za-z0-9_] made '_'; names are unique in a model, so
+ * are these unless two differ only there: then "_<k>" is added). */
+const char *bg_export_param_ident(const bg_eqsys *s, int k, char *buf, size_t n);
+/* Any name as an identifier, same rule. */
+void bg_export_ident(const char *name, char *buf, size_t n);
+/* Number of independent params (those the parameter record holds). */
+int bg_export_nparams(const bg_eqsys *s);
+#endif

@@ -1,0 +1,182 @@
+/* The evaluation tape of an export build in C, Python or Octave syntax: one
+ * assignment per instruction over a value array, from per-language
+ * templates, so every exporter computes exactly what bgdraw computes. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "export/export_int.h"
+
+#define FN_COMMON(P)                                                                       \
+  [BG_FN_SQRT] = P "sqrt(%0)", [BG_FN_EXP] = P "exp(%0)", [BG_FN_LOG] = P "log(%0)",       \
+  [BG_FN_LOG10] = P "log10(%0)", [BG_FN_SIN] = P "sin(%0)", [BG_FN_COS] = P "cos(%0)",     \
+  [BG_FN_TAN] = P "tan(%0)", [BG_FN_ASIN] = P "asin(%0)", [BG_FN_ACOS] = P "acos(%0)",     \
+  [BG_FN_ATAN] = P "atan(%0)", [BG_FN_ATAN2] = P "atan2(%0, %1)", [BG_FN_SINH] = P "sinh(%0)", \
+  [BG_FN_COSH] = P "cosh(%0)", [BG_FN_TANH] = P "tanh(%0)", [BG_FN_FLOOR] = P "floor(%0)", \
+  [BG_FN_CEIL] = P "ceil(%0)"
+
+const bg_xlang bg_xlang_c = {
+    0, "[", "]", ";", "  ",
+    {FN_COMMON(""), [BG_FN_ABS] = "fabs(%0)", [BG_FN_SIGN] = "(%0 > 0 ? 1.0 : %0 < 0 ? -1.0 : 0.0)",
+     [BG_FN_MIN] = "fmin(%0, %1)", [BG_FN_MAX] = "fmax(%0, %1)", [BG_FN_POW] = "pow(%0, %1)",
+     [BG_FN_IF] = "(%0 != 0 ? %1 : %2)", [BG_FN_STEP] = "(%0 < 0 ? 0.0 : 1.0)",
+     [BG_FN_RAMP] = "(%0 < 0 ? 0.0 : %0)", [BG_FN_PULSE] = "(%0 >= 0 && %0 < %1 ? 1.0 : 0.0)",
+     [BG_FN_SAT] = "(%0 < %1 ? %1 : %0 > %2 ? %2 : %0)"},
+    "-%0", "(double)(%0 == 0)", "(double)(%0 != 0 && %1 != 0)", "(double)(%0 != 0 || %1 != 0)",
+    "pow(%0, %1)", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!="};
+
+const bg_xlang bg_xlang_python = {
+    0, "[", "]", "", "    ",
+    {FN_COMMON("math."), [BG_FN_ABS] = "math.fabs(%0)",
+     [BG_FN_SIGN] = "(1.0 if %0 > 0 else -1.0 if %0 < 0 else 0.0)", [BG_FN_MIN] = "_fmin(%0, %1)",
+     [BG_FN_MAX] = "_fmax(%0, %1)", [BG_FN_POW] = "_pow(%0, %1)", [BG_FN_IF] = "(%1 if %0 != 0 else %2)",
+     [BG_FN_STEP] = "(0.0 if %0 < 0 else 1.0)", [BG_FN_RAMP] = "(0.0 if %0 < 0 else %0)",
+     [BG_FN_PULSE] = "(1.0 if %0 >= 0 and %0 < %1 else 0.0)",
+     [BG_FN_SAT] = "(%1 if %0 < %1 else %2 if %0 > %2 else %0)"},
+    "-%0", "float(%0 == 0)", "float(%0 != 0 and %1 != 0)", "float(%0 != 0 or %1 != 0)",
+    "_pow(%0, %1)", "float(%0 %o %1)", "_tab(%t, %0)", "==", "!="};
+
+const bg_xlang bg_xlang_octave = {
+    1, "(", ")", ";", "  ",
+    {FN_COMMON(""), [BG_FN_ABS] = "abs(%0)", [BG_FN_SIGN] = "sign(%0)", [BG_FN_MIN] = "bg_fmin(%0, %1)",
+     [BG_FN_MAX] = "bg_fmax(%0, %1)", [BG_FN_POW] = "%0 ^ %1", [BG_FN_IF] = "bg_if(%0 ~= 0, %1, %2)",
+     [BG_FN_STEP] = "double(%0 >= 0)", [BG_FN_RAMP] = "bg_if(%0 < 0, 0, %0)",
+     [BG_FN_PULSE] = "double(%0 >= 0 && %0 < %1)", [BG_FN_SAT] = "bg_if(%0 < %1, %1, bg_if(%0 > %2, %2, %0))"},
+    "-%0", "double(%0 == 0)", "double(%0 ~= 0 && %1 ~= 0)", "double(%0 ~= 0 || %1 ~= 0)",
+    "%0 ^ %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~="};
+
+void bg_xl_slot(const bg_xlang *L, bg_strbuf *o, const char *arr, int k) {
+  bg_sb_printf(o, "%s%s%d%s", arr, L->open, k + L->base, L->close);
+}
+
+void bg_xl_num(const bg_xlang *L, bg_strbuf *o, double c) {
+  if (isnan(c)) bg_sb_puts(o, L == &bg_xlang_c ? "NAN" : L == &bg_xlang_python ? "math.nan" : "NaN");
+  else if (isinf(c))
+    bg_sb_puts(o, L == &bg_xlang_c ? (c > 0 ? "HUGE_VAL" : "(-HUGE_VAL)")
+                  : L == &bg_xlang_python ? (c > 0 ? "math.inf" : "(-math.inf)") : (c > 0 ? "Inf" : "(-Inf)"));
+  else if (c < 0) bg_sb_putc(o, '('), bg_sb_num(o, c), bg_sb_putc(o, ')');
+  else bg_sb_num(o, c);
+}
+
+/* Expands a template with argument slots a[] (and table t). */
+static void expand(const bg_xlang *L, bg_strbuf *o, const char *tpl, const int *a, int t,
+                   const char *op, const char *arr) {
+  for (const char *p = tpl; *p; p++) {
+    if (*p != '%') { bg_sb_putc(o, *p); continue; }
+    p++;
+    if (*p >= '0' && *p <= '2') bg_xl_slot(L, o, arr, a[*p - '0']);
+    else if (*p == 't') bg_sb_printf(o, "%d", t + L->base);
+    else if (*p == 'o') bg_sb_puts(o, op);
+    else bg_sb_putc(o, *p);
+  }
+}
+
+static const char *cmp_op(const bg_xlang *L, int op) {
+  switch (op) {
+  case BG_X_LT: return "<"; case BG_X_LE: return "<="; case BG_X_GT: return ">";
+  case BG_X_GE: return ">="; case BG_X_EQ: return L->eq; default: return L->ne;
+  }
+}
+
+static void lin_value(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
+                      bg_strbuf *o) {
+  for (int k = 0; k < I->a[0]; k++) {
+    if (k) bg_sb_puts(o, " + ");
+    bg_xl_num(L, o, s->tl_coef[I->ref + k]);
+    bg_sb_puts(o, " * ");
+    bg_xl_slot(L, o, arr, s->tl_slot[I->ref + k]);
+  }
+  if (!I->a[0]) bg_sb_puts(o, "0");
+}
+
+void bg_xl_value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
+                      bg_strbuf *o) {
+  static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1",
+                                [BG_X_MUL] = "%0 * %1", [BG_X_DIV] = "%0 / %1"};
+  bg_sb_puts(o, L->indent);
+  bg_xl_slot(L, o, arr, I->out);
+  bg_sb_puts(o, " = ");
+  const char *tpl;
+  switch (I->op) {
+  case T_LIN: lin_value(L, s, I, arr, o); bg_sb_printf(o, "%s\n", L->stmt_end); return;
+  case BG_X_CALL: tpl = L->fn[I->ref]; break;
+  case BG_X_TABLE: tpl = L->table; break;
+  case BG_X_NEG: tpl = L->neg; break;
+  case BG_X_NOT: tpl = L->not_; break;
+  case BG_X_POW: tpl = L->pow_; break;
+  case BG_X_AND: tpl = L->and_; break;
+  case BG_X_OR: tpl = L->or_; break;
+  case BG_X_ADD: case BG_X_SUB: case BG_X_MUL: case BG_X_DIV: tpl = arith[I->op]; break;
+  default: tpl = L->cmp; break;
+  }
+  expand(L, o, tpl, I->a, I->ref, cmp_op(L, I->op), arr);
+  bg_sb_printf(o, "%s\n", L->stmt_end);
+}
+
+void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, const char *pfmt,
+                     bg_strbuf *o) {
+  char id[300], ref[400];
+  for (int k = 0; k < s->nslot; k++)
+    if (s->is_const[k]) {
+      bg_sb_puts(o, L->indent), bg_xl_slot(L, o, arr, k), bg_sb_puts(o, " = ");
+      bg_xl_num(L, o, s->v[k]);
+      bg_sb_printf(o, "%s\n", L->stmt_end);
+    }
+  for (int k = 0; k < s->m->nparam; k++) {
+    if (bg_eqsys_param_is_derived(s, k)) continue;
+    snprintf(ref, sizeof ref, pfmt, bg_export_param_ident(s, k, id, sizeof id));
+    bg_sb_puts(o, L->indent), bg_xl_slot(L, o, arr, s->slot_p + k);
+    bg_sb_printf(o, " = %s%s\n", ref, L->stmt_end);
+  }
+}
+
+void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o) {
+  for (int k = c0; k < c1; k++) bg_xl_value_stmt(L, s, &s->code[k], arr, o);
+}
+
+void bg_export_ident(const char *name, char *buf, size_t n) {
+  size_t i = 0;
+  if (n == 0) return;
+  if (!((name[0] >= 'A' && name[0] <= 'Z') || (name[0] >= 'a' && name[0] <= 'z') || name[0] == '_'))
+    if (i + 1 < n) buf[i++] = '_';
+  for (const char *p = name; *p && i + 1 < n; p++) {
+    char c = *p;
+    int ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    buf[i++] = ok ? c : '_';
+  }
+  buf[i] = 0;
+}
+
+const char *bg_export_param_ident(const bg_eqsys *s, int k, char *buf, size_t n) {
+  const bg_model *m = s->m;
+  bg_export_ident(m->param_name[k], buf, n);
+  char other[300];
+  for (int j = 0; j < m->nparam; j++) {
+    if (j == k) continue;
+    bg_export_ident(m->param_name[j], other, sizeof other);
+    if (strcmp(other, buf) == 0) {
+      size_t len = strlen(buf);
+      snprintf(buf + len, n - len, "_%d", k);
+      break;
+    }
+  }
+  return buf;
+}
+
+int bg_export_nparams(const bg_eqsys *s) {
+  int n = 0;
+  for (int k = 0; k < s->m->nparam; k++) n += !bg_eqsys_param_is_derived(s, k);
+  return n;
+}
+
+void bg_export_default_prefix(const bg_model *m, char *buf, size_t n) {
+  bg_export_ident(m->name && *m->name ? m->name : "model", buf, n);
+}
+
+int bg_export_prefix_ok(const char *p) {
+  if (!p || !*p || strlen(p) > 64 || (*p >= '0' && *p <= '9')) return 0;
+  for (; *p; p++)
+    if (!((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_'))
+      return 0;
+  return 1;
+}

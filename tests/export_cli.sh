@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Model exports (docs/export.md) from the command line, each run by the tool
+# it is for and compared with bgdraw's own simulation:
+# - -o NAME.c writes NAME.c and NAME.h; two exported models (an ODE and a DAE,
+#   prefixes ode and dae) link into one program that integrates them with
+#   CVODE and IDA and matches bgdraw's CSVs to 1e-6 of each column's range,
+#   also with a param changed in the record (against --set);
+# - --equations c is one translation unit that compiles;
+# - the Python module's simulate() (SciPy) and the Octave function file
+#   (ode15s with the mass matrix) match bgdraw's CSVs to 1e-6;
+# - a --prefix that is not a C identifier is a usage error (exit 2).
+# Usage: bash tests/export_cli.sh PATH_TO_BGDRAW   (from the project root)
+set -u
+BGDRAW=${1:?usage: export_cli.sh PATH_TO_BGDRAW}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+check() { # check NAME STATUS
+  if [ "$2" -ne 0 ]; then echo "FAIL $1"; fail=$((fail + 1)); else echo "ok   $1"; fi
+}
+cmp_csv() { python3 tests/export/compare_csv.py "$@"; }
+# tight tolerances on both sides, so the comparison sees the equations, not the solvers
+sed 's/^simulate .*/&, rtol = 1e-10/' examples/rlc.bg >"$tmp/rlc.bg"
+sed 's/^simulate .*/&, rtol = 1e-10/' examples/hydraulic_bridge.bg >"$tmp/hb.bg"
+"$BGDRAW" "$tmp/rlc.bg" -q --simulate -o "$tmp/rlc.csv"; check "rlc simulates" $?
+"$BGDRAW" "$tmp/rlc.bg" -q --simulate --set R0=25 -o "$tmp/rlc_r25.csv"; check "rlc --set R0=25 simulates" $?
+"$BGDRAW" "$tmp/hb.bg" -q --simulate -o "$tmp/hb.csv"; check "hydraulic_bridge simulates" $?
+
+# C: two models in one program
+"$BGDRAW" "$tmp/rlc.bg" -q --prefix ode -o "$tmp/ode.c"; check "-o ode.c exit 0" $?
+"$BGDRAW" "$tmp/hb.bg" -q --prefix dae -o "$tmp/dae.c"; check "-o dae.c exit 0" $?
+[ -s "$tmp/ode.h" ] && [ -s "$tmp/dae.h" ]; check "headers written beside the sources" $?
+grep -q 'typedef struct ode_params' "$tmp/ode.h"; check "parameter record named by the prefix" $?
+cc -std=c11 -Wall -Wextra -Werror -I"$tmp" tests/export/driver.c "$tmp/ode.c" "$tmp/dae.c" -o "$tmp/driver" \
+  -lsundials_ida -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm
+check "two exported models link into one program" $?
+"$tmp/driver" "$tmp/rlc.csv" "$tmp/hb.csv" "$tmp/d_ode.csv" "$tmp/d_dae.csv"; check "driver runs CVODE and IDA" $?
+cmp_csv "$tmp/rlc.csv" "$tmp/d_ode.csv" 1e-6 "C + CVODE vs bgdraw (rlc)"; check "C export of rlc matches" $?
+cmp_csv "$tmp/hb.csv" "$tmp/d_dae.csv" 1e-6 "C + IDA vs bgdraw (hydraulic_bridge)"; check "C export of hydraulic_bridge matches" $?
+"$tmp/driver" "$tmp/rlc_r25.csv" "$tmp/hb.csv" "$tmp/d_r25.csv" "$tmp/d_dae2.csv" R0=25; check "driver with R0=25" $?
+cmp_csv "$tmp/rlc_r25.csv" "$tmp/d_r25.csv" 1e-6 "C with R0 = 25 vs --set R0=25"; check "a param changed at run time" $?
+! cmp -s "$tmp/d_ode.csv" "$tmp/d_r25.csv"; check "the changed param changes the response" $?
+
+# --equations c: one translation unit
+"$BGDRAW" examples/slider_crank.bg -q --equations c >"$tmp/one.c"; check "--equations c exit 0" $?
+cc -std=c11 -Wall -Wextra -Werror -c "$tmp/one.c" -o "$tmp/one.o"; check "--equations c compiles alone" $?
+
+# a bad prefix
+"$BGDRAW" examples/rlc.bg -q --prefix 9lives -o "$tmp/bad.c" 2>"$tmp/err"; st=$?
+[ "$st" = 2 ] && grep -q "not a C identifier" "$tmp/err" && [ ! -e "$tmp/bad.c" ]; check "--prefix 9lives: exit 2, nothing written" $?
+
+# Python with SciPy (Debian's python3-scipy, installed by tools/deps.sh)
+PY=/usr/bin/python3
+"$BGDRAW" "$tmp/rlc.bg" -q -o "$tmp/rlc_model.py"; check "-o rlc_model.py exit 0" $?
+"$BGDRAW" "$tmp/hb.bg" -q -o "$tmp/hb_model.py"; check "-o hb_model.py exit 0" $?
+cat >"$tmp/run_py.py" <<'PY'
+import importlib, sys
+sys.path.insert(0, sys.argv[1])
+mod = importlib.import_module(sys.argv[2])
+p = dict(mod.PARAMS)
+for kv in sys.argv[5:]:
+    k, v = kv.split("=")
+    p[k] = float(v)
+times = [float(l.split(",")[0]) for l in open(sys.argv[4]).readlines()[1:] if not l.startswith("#")]
+t, y, out = mod.simulate(p=p, t_eval=times, rtol=1e-11, atol=1e-14)
+with open(sys.argv[3], "w") as f:
+    f.write(",".join(["t"] + mod.OUTPUTS) + "\n")
+    for k in range(len(t)):
+        f.write(",".join(repr(float(x)) for x in [t[k]] + list(out[:, k])) + "\n")
+PY
+$PY "$tmp/run_py.py" "$tmp" rlc_model "$tmp/py_rlc.csv" "$tmp/rlc.csv"; check "Python module simulates rlc" $?
+cmp_csv "$tmp/rlc.csv" "$tmp/py_rlc.csv" 1e-6 "Python vs bgdraw (rlc)"; check "Python export of rlc matches" $?
+$PY "$tmp/run_py.py" "$tmp" rlc_model "$tmp/py_r25.csv" "$tmp/rlc_r25.csv" R0=25; check "Python with R0=25" $?
+cmp_csv "$tmp/rlc_r25.csv" "$tmp/py_r25.csv" 1e-6 "Python R0 = 25 vs --set"; check "Python params dict" $?
+$PY "$tmp/run_py.py" "$tmp" hb_model "$tmp/py_hb.csv" "$tmp/hb.csv"; check "Python module simulates hydraulic_bridge (DAE)" $?
+cmp_csv "$tmp/hb.csv" "$tmp/py_hb.csv" 1e-6 "Python vs bgdraw (hydraulic_bridge)"; check "Python export of the DAE matches" $?
+
+# Octave (Debian's octave, installed by tools/deps.sh)
+"$BGDRAW" "$tmp/rlc.bg" -q -o "$tmp/rlc_fn.m"; check "-o rlc_fn.m exit 0" $?
+"$BGDRAW" "$tmp/hb.bg" -q -o "$tmp/hb_fn.m"; check "-o hb_fn.m exit 0" $?
+oct_run() { # oct_run FN OUT.csv BGDRAW.csv: at the times of bgdraw's CSV
+  (cd "$tmp" && octave-cli --no-gui --norc --quiet --eval "
+    m = $1(); d = dlmread('$3', ',', 1, 0); y0 = m.initial(m.params, m.t0);
+    opt = odeset('Mass', m.mass, 'RelTol', 1e-10, 'AbsTol', 1e-14, 'InitialSlope', m.slope(m.params, m.t0, y0));
+    [t, y] = ode15s(@(t, y) m.f(t, y, m.params), d(:, 1)', y0, opt);
+    f = fopen('$2', 'w'); fprintf(f, '%s', 't'); fprintf(f, ',%s', m.outputs{:}); fprintf(f, '\n');
+    for k = 1:numel(t)
+      o = m.output(t(k), y(k, :)', m.params);
+      fprintf(f, '%.17g', t(k)); fprintf(f, ',%.17g', o); fprintf(f, '\n');
+    end
+    fclose(f);" >/dev/null 2>"$tmp/oct.err")
+  [ -s "$tmp/$2" ]
+}
+oct_run rlc_fn oct_rlc.csv rlc.csv; check "Octave ode15s runs the rlc export" $?
+cmp_csv "$tmp/rlc.csv" "$tmp/oct_rlc.csv" 1e-6 "Octave vs bgdraw (rlc)"; check "Octave export of rlc matches" $?
+oct_run hb_fn oct_hb.csv hb.csv; check "Octave ode15s runs the hydraulic_bridge export (mass matrix)" $?
+cmp_csv "$tmp/hb.csv" "$tmp/oct_hb.csv" 1e-6 "Octave vs bgdraw (hydraulic_bridge)"; check "Octave export of the DAE matches" $?
+
+echo "export_cli: $fail failures"
+[ "$fail" -eq 0 ]
