@@ -42,6 +42,7 @@ struct bg_eqred {
   int lagrange;
   unsigned char *inv;                  /* per row of s: replaced by its time derivative */
   double *y, *yp;
+  int *full;                           /* per signal: its expression (bg_eqred_build_keep) */
 };
 
 typedef struct red {
@@ -59,6 +60,7 @@ typedef struct red {
   int nmark;
   double *y0;      /* the initial point */
   double t0;
+  const unsigned char *keep; /* per signal: left as its leaf (linear analysis inputs), nullable */
 } red;
 
 static void note(bg_eqred *r, const char *msg) { snprintf(r->note, sizeof r->note, "%s", msg); }
@@ -70,6 +72,7 @@ static void substitute_all(red *R) {
   for (int v = 0; v < s->nsig; v++) R->full[v] = s->sig_torn[v] ? bg_sym_leaf(R->S, SYM_Y, s->sig_z[v]) : -1;
   for (int k = 0; k < s->norder; k++) {
     int v = s->order[k];
+    if (R->keep && R->keep[v]) continue; /* stays a leaf: an input's value */
     R->full[v] = bg_eqsym_tree(R->S, s, s->sig_root[v], R->full);
   }
   R->row = bg_xmalloc((size_t)(s->n + 1) * sizeof(int));
@@ -467,7 +470,7 @@ static void reduce(red *R) {
             "balances without accelerations differentiated once)");
 }
 
-bg_eqred *bg_eqred_build(const bg_eqsys *s) {
+static bg_eqred *build(const bg_eqsys *s, const unsigned char *keep) {
   bg_eqred *r = bg_xcalloc(1, sizeof *r);
   r->s = s;
   r->S = bg_sym_new(s->m);
@@ -482,11 +485,42 @@ bg_eqred *bg_eqred_build(const bg_eqsys *s) {
   R.r = r, R.s = s, R.S = r->S;
   R.y0 = bg_xcalloc((size_t)s->n + 1, sizeof *R.y0);
   R.t0 = s->m->sim.present ? s->m->sim.t0 : 0;
+  R.keep = keep;
   bg_eqsys_initial(s, R.y0);
   reduce(&R);
+  if (keep) r->full = R.full, R.full = NULL;
   free(R.full), free(R.row), free(R.w_leaf), free(R.w_u), free(R.w_isyp), free(R.eq);
   free(R.diffed), free(R.sol), free(R.mark), free(R.y0), free(R.lagv);
   return r;
+}
+
+bg_eqred *bg_eqred_build(const bg_eqsys *s) { return build(s, NULL); }
+
+bg_eqred *bg_eqred_build_keep(const bg_eqsys *s, const unsigned char *keep) {
+  return build(s, keep);
+}
+
+int bg_eqred_state_rhs(const bg_eqred *r, int k) { return r->ode ? r->st_rhs[k] : -1; }
+
+/* A leaf of an expression of bond variables and unknowns, in the reduced
+ * variables: signals by their expressions, eliminated unknowns by their
+ * solutions, states' derivatives by their right-hand sides. */
+static int reduced_cb(void *ctx, int kind, int ref) {
+  const bg_eqred *r = ctx;
+  if (kind == SYM_SIG) return r->full[ref]; /* -1 (kept): the leaf itself */
+  if (kind != SYM_Y && kind != SYM_YP) return -1;
+  for (int k = 0; k < r->nw; k++)
+    if (r->w_u[k] == ref && r->w_isyp[k] == (kind == SYM_YP)) return r->w_sol[k];
+  for (int k = 0; kind == SYM_YP && k < r->nst; k++)
+    if (r->st_u[k] == ref) return r->st_rhs[k];
+  return -1;
+}
+
+int bg_eqred_reduce_expr(bg_eqred *r, int xroot) {
+  if (!r->ode || !r->full) return -1;
+  int e = bg_sym_from_x(r->S, xroot, r->s->state_y, r->s->store_y);
+  for (int pass = 0; pass < 3; pass++) e = bg_sym_subst(r->S, e, reduced_cb, r); /* signals, then W */
+  return e;
 }
 
 void bg_eqred_free(bg_eqred *r) {
@@ -495,6 +529,7 @@ void bg_eqred_free(bg_eqred *r) {
   free(r->st_u), free(r->st_rhs), free(r->st_print), free(r->sol_u), free(r->sol_expr);
   free(r->def_u), free(r->def_expr), free(r->y), free(r->yp), free(r->inv);
   free(r->w_u), free(r->w_isyp), free(r->w_sol), free(r->mass_lhs), free(r->mass_rhs);
+  free(r->full);
   free(r);
 }
 

@@ -66,6 +66,15 @@ int bg_eqsym_rows(bg_sym *S, const bg_eqsys *s, int *rows);
 void bg_eqred_print(bg_eqred *r, int latex, bg_strbuf *out);
 /* As JSON members: "reduced_form": "ode", "reduced": [{"lhs":, "rhs":}]. */
 void bg_eqred_json(bg_eqred *r, bg_strbuf *out);
+/* For the linear analysis: the reduced form with the signals marked in keep
+ * (per signal; the sources' own variables) left as leaves, so the input
+ * matrix is the derivative with respect to them. */
+bg_eqred *bg_eqred_build_keep(const bg_eqsys *s, const unsigned char *keep);
+/* x' of reduced state k as an expression (bg_eqred_sym), -1 when not an ODE. */
+int bg_eqred_state_rhs(const bg_eqred *r, int k);
+/* Model expression xroot (an output) in the reduced states, t, params and
+ * the kept leaves; -1 when not an ODE or not built with keep. */
+int bg_eqred_reduce_expr(bg_eqred *r, int xroot);
 /* The symbols of the reduced form (its aliases and their derivatives). */
 bg_sym *bg_eqred_sym(bg_eqred *r);
 #endif

@@ -129,6 +129,57 @@ static void tfs(bg_strbuf *o, const bg_linear *l) {
   bg_sb_puts(o, l->ntf ? "\n    ],\n" : "],\n");
 }
 
+/* Printed symbolic entries (text) as a list of rows of strings. */
+static void str_matrix(bg_strbuf *o, const char *key, char *const *M, int rows, int cols) {
+  bg_sb_printf(o, "      \"%s\": [", key);
+  for (int i = 0; i < rows; i++) {
+    bg_sb_puts(o, i ? ", [" : "[");
+    for (int j = 0; j < cols; j++) {
+      if (j) bg_sb_puts(o, ", ");
+      bg_sb_json_str(o, M[(size_t)j * rows + i]);
+    }
+    bg_sb_putc(o, ']');
+  }
+  bg_sb_puts(o, "],\n");
+}
+
+static void str_list(bg_strbuf *o, char *const *v, int n) {
+  bg_sb_putc(o, '[');
+  for (int i = 0; i < n; i++) {
+    if (i) bg_sb_puts(o, ", ");
+    bg_sb_json_str(o, v[i]);
+  }
+  bg_sb_putc(o, ']');
+}
+
+static void symbolic(bg_strbuf *o, const bg_linear *l) {
+  const bg_lin_symbolic *y = &l->sym;
+  bg_sb_puts(o, "    \"symbolic_note\": ");
+  str_or_null(o, y->ok ? NULL : y->note);
+  bg_sb_puts(o, ",\n    \"symbolic\": ");
+  if (!y->ok) {
+    bg_sb_puts(o, "null,\n");
+    return;
+  }
+  int n = y->n;
+  bg_sb_puts(o, "{\n");
+  str_matrix(o, "A", y->A[0], n, n), str_matrix(o, "B", y->B[0], n, l->nu);
+  str_matrix(o, "C", y->C[0], l->ny, n), str_matrix(o, "D", y->D[0], l->ny, l->nu);
+  bg_sb_puts(o, "      \"den\": ");
+  str_list(o, y->den[0], n + 1);
+  bg_sb_puts(o, ",\n      \"transfer_functions\": [");
+  for (int p = 0; p < l->ny * l->nu; p++) {
+    bg_sb_puts(o, p ? ",\n        {\"input\": " : "\n        {\"input\": ");
+    bg_sb_json_str(o, l->uname[p % l->nu]);
+    bg_sb_puts(o, ", \"output\": ");
+    bg_sb_json_str(o, l->yname[p / l->nu]);
+    bg_sb_puts(o, ", \"num\": ");
+    str_list(o, y->num[0] + (size_t)p * (n + 1), n + 1);
+    bg_sb_putc(o, '}');
+  }
+  bg_sb_puts(o, "]\n    },\n");
+}
+
 void bg_json_write_linear(const bg_linear *l, bg_strbuf *o) {
   bg_sb_printf(o, "{\n    \"status\": \"%s\",\n    \"message\": ", l->ok ? "ok" : "refused");
   str_or_null(o, l->message);
@@ -147,6 +198,7 @@ void bg_json_write_linear(const bg_linear *l, bg_strbuf *o) {
     roots(o, l->pole_re, l->pole_im, l->npole);
     bg_sb_puts(o, ",\n");
     tfs(o, l);
+    symbolic(o, l);
     bg_sb_puts(o, "    \"tf_note\": ");
     str_or_null(o, l->tf_note);
     bg_sb_putc(o, '\n');

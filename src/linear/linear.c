@@ -68,13 +68,14 @@ static int descriptor(bg_linear *l, bg_eqsys *s, const bg_model *m) {
   return rc;
 }
 
-static void finish(bg_linear *l, bg_eqsys *s) {
+static void finish(bg_linear *l, const bg_model *m, bg_eqsys *s) {
   int *is_diff = bg_xcalloc((size_t)l->N + 1, sizeof *is_diff);
   for (int i = 0; i < l->N; i++) is_diff[i] = bg_eqsys_is_differential(s, i);
   bg_lin_reduce(l, is_diff);
   free(is_diff);
   bg_lin_poles(l);
   bg_lin_tfs(l);
+  bg_lin_sym_derive(l, m, s);
 }
 
 int bg_linear_compute(const bg_model *m, const bg_analysis *a, int steady, bg_linear *l) {
@@ -100,7 +101,7 @@ int bg_linear_compute(const bg_model *m, const bg_analysis *a, int steady, bg_li
     l->y0 = bg_xcalloc((size_t)l->N + 1, sizeof *l->y0);
     bg_strbuf note = {0};
     if (bg_lin_point(s, l->t, l->steady, l->y0, &note) == 0) {
-      if (descriptor(l, s, m) == 0) l->ok = 1, finish(l, s);
+      if (descriptor(l, s, m) == 0) l->ok = 1, finish(l, m, s);
       else bg_sb_printf(&note, "%scannot linearise: %s", note.len ? "; " : "", bg_eqsys_error(s));
     }
     set_message(l, bg_sb_str(&note));

@@ -26,6 +26,16 @@ typedef struct bg_lin_tf {
   int ncancel;            /* poles cancelled by zeros */
 } bg_lin_tf;
 
+/* The symbolic form of a linear time-invariant model with at most 4 states
+ * (linear_sym.c): printed entries, [0] text and [1] LaTeX, column-major as
+ * the numeric matrices; den: n + 1 coefficients (s^n first, monic); num:
+ * per pair (output-major) n + 1 coefficients. Full order. */
+typedef struct bg_lin_symbolic {
+  int ok, n;
+  const char *note; /* why there is none (static text), nullable */
+  char **A[2], **B[2], **C[2], **D[2], **den[2], **num[2];
+} bg_lin_symbolic;
+
 typedef struct bg_linear {
   int ok;                 /* 0: not linearised; message says why */
   char *message;          /* one line: the refusal, or notes about the point */
@@ -56,6 +66,7 @@ typedef struct bg_linear {
   int ntf;
   bg_lin_tf *tf;
   char *tf_note;          /* why there are none (nullable) */
+  bg_lin_symbolic sym;    /* the symbolic form (linear models) */
   bg_arena arena;         /* owns the names */
 } bg_linear;
 

@@ -13,6 +13,8 @@ void bg_lin_reduce(bg_linear *l, const int *is_diff);
 /* linear_tf.c: poles of the linearisation and the transfer functions. */
 void bg_lin_poles(bg_linear *l);
 void bg_lin_tfs(bg_linear *l);
+/* linear_sym.c: l->sym for a linear model (s: the equations, still alive). */
+void bg_lin_sym_derive(bg_linear *l, const bg_model *m, bg_eqsys *s);
 /* H(s) for pair (iy, iu) by a dense complex solve of the system in use
  * (reduced when l->reduced, else descriptor). */
 double complex bg_lin_eval(const bg_linear *l, int iy, int iu, double complex s);

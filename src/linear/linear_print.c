@@ -88,6 +88,58 @@ static void tf_text(bg_strbuf *o, const bg_linear *l, const bg_lin_tf *t) {
   bg_sb_putc(o, '\n');
 }
 
+/* A symbolic polynomial in s from printed coefficients (highest power first). */
+static void sym_poly(bg_strbuf *o, char *const *c, int nc, int latex) {
+  int first = 1;
+  for (int k = 0; k < nc; k++) {
+    int p = nc - 1 - k;
+    if (!strcmp(c[k], "0")) continue;
+    int plain = strspn(c[k], "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._{}\\") == strlen(c[k]);
+    const char *v = c[k];
+    if (!first && p == 0 && v[0] == '-') bg_sb_puts(o, " - "), v++; /* "... - Ra/(La*J0)" */
+    else bg_sb_puts(o, first ? "" : " + ");
+    first = 0;
+    if (p == 0 || strcmp(v, "1")) {
+      bg_sb_printf(o, plain || p == 0 ? "%s" : latex ? "\\left(%s\\right)" : "(%s)", v);
+      if (p > 0) bg_sb_puts(o, latex ? " " : "*");
+    }
+    if (p == 1) bg_sb_puts(o, "s");
+    else if (p > 1) bg_sb_printf(o, latex ? "s^{%d}" : "s^%d", p);
+  }
+  if (first) bg_sb_puts(o, "0");
+}
+
+static void sym_matrix(bg_strbuf *o, const char *name, char *const *M, int r, int c, int latex) {
+  bg_sb_printf(o, latex ? "%s &= \\begin{bmatrix}" : "%s = [", name);
+  for (int i = 0; i < r; i++) {
+    if (i) bg_sb_puts(o, latex ? " \\\\" : "; ");
+    for (int j = 0; j < c; j++) bg_sb_printf(o, "%s%s", j ? (latex ? " & " : ", ") : " ", M[(size_t)j * r + i]);
+  }
+  bg_sb_puts(o, latex ? " \\end{bmatrix}" : " ]\n");
+}
+
+/* The symbolic matrices and transfer functions (a linear model). */
+static void print_symbolic(const bg_linear *l, bg_strbuf *o, int latex) {
+  const bg_lin_symbolic *y = &l->sym;
+  int n = y->n;
+  if (!latex) bg_sb_puts(o, "symbolic (in the params):\n");
+  const char *names[] = {"A", "B", "C", "D"};
+  char **const *mats[] = {y->A, y->B, y->C, y->D};
+  const int rows[] = {n, n, l->ny, l->ny}, cols[] = {n, l->nu, n, l->nu};
+  for (int k = 0; k < 4; k++) {
+    sym_matrix(o, names[k], mats[k][latex], rows[k], cols[k], latex);
+    if (latex) bg_sb_puts(o, " \\\\\n");
+  }
+  for (int p = 0; p < l->ny * l->nu; p++) {
+    const char *yn = l->yname[p / l->nu], *un = l->uname[p % l->nu];
+    bg_sb_printf(o, latex ? "\\frac{%s}{%s} &= \\frac{" : "%s/%s = (", yn, un);
+    sym_poly(o, y->num[latex] + (size_t)p * (n + 1), n + 1, latex);
+    bg_sb_puts(o, latex ? "}{" : ") / (");
+    sym_poly(o, y->den[latex], n + 1, latex);
+    bg_sb_puts(o, latex ? (p + 1 < l->ny * l->nu ? "} \\\\\n" : "}\n") : ")\n");
+  }
+}
+
 static void header(bg_strbuf *o, const bg_linear *l, const bg_model *m, const char *c) {
   bg_sb_printf(o, "%s linear analysis of %s at the %s, t = %g\n", c, m->name,
                l->steady ? "steady state" : "initial point", l->t);
@@ -122,6 +174,8 @@ static void print_text(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
   pole_lines(o, l);
   for (int k = 0; k < l->ntf; k++) tf_text(o, l, &l->tf[k]);
   if (l->tf_note) bg_sb_printf(o, "# %s\n", l->tf_note);
+  if (l->sym.ok) print_symbolic(l, o, 0);
+  else if (l->sym.note) bg_sb_printf(o, "# symbolic form: %s\n", l->sym.note);
 }
 
 static void print_latex(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
@@ -142,6 +196,10 @@ static void print_latex(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
     poly(o, t->den, t->nden, 1);
     bg_sb_puts(o, k + 1 < l->ntf ? "} \\\\\n" : "}\n");
   }
+  bg_sb_puts(o, "\\end{align*}\n");
+  if (!l->sym.ok) return;
+  bg_sb_puts(o, "% symbolic (in the params)\n\\begin{align*}\n");
+  print_symbolic(l, o, 1);
   bg_sb_puts(o, "\\end{align*}\n");
 }
 

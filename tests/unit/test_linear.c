@@ -269,7 +269,50 @@ static void test_rlc_time(void) {
   done();
 }
 
+/* The symbolic form (linear models): entries and transfer functions in the
+ * params, as derived by hand. */
+static void sym_is(char **M, int k, const char *want) { STR_EQ(M[k], want); }
+
+static void test_symbolic(void) {
+  OK(lin(rlc, 0) == 0);
+  OK(L.sym.ok);
+  sym_is(L.sym.A[0], 0, "-R0/L0"), sym_is(L.sym.A[0], 2, "-1/C0"), sym_is(L.sym.A[0], 1, "1/L0");
+  sym_is(L.sym.C[0], 2, "1/C0"), sym_is(L.sym.C[0], 1, "1/L0");
+  sym_is(L.sym.den[0], 1, "R0/L0"), sym_is(L.sym.den[0], 2, "1/(L0*C0)");
+  sym_is(L.sym.num[0], 2, "1/(L0*C0)"); /* vC/U */
+  sym_is(L.sym.num[0], 4, "1/L0");      /* i/U: (1/L0) s */
+  OK(strstr(L.sym.A[1][0], "\\frac{\\mathrm{R0}}{\\mathrm{L0}}") != NULL); /* LaTeX */
+  done();
+  /* Equation 4.27: Cs.q' = (n F - Is.p/I0)/(n - 1), Is.p' = Cs.q/(C0 (n - 1)) */
+  OK(efx_load(&F, "bond_loop", NULL, -1, NULL, 0) == 0);
+  OK(bg_linear_compute(F.m, &F.a, 0, &L) == 0);
+  OK(L.sym.ok);
+  sym_is(L.sym.A[0], 2, "-1/(I0*(n - 1))"), sym_is(L.sym.A[0], 1, "1/(C0*(n - 1))");
+  sym_is(L.sym.B[0], 0, "n/(n - 1)");
+  sym_is(L.sym.den[0], 2, "1/(C0*I0*(n - 1)^2)");
+  done();
+  /* DC motor: w/V = (k/(La J0)) s / (s^3 + ... ): the denominator of the hand-derived
+   * (La s + Ra)(J0 s + bm) + k^2 over La J0, times s for the angle */
+  OK(lin(dc_motor, 0) == 0);
+  OK(L.sym.ok);
+  sym_is(L.sym.den[0], 1, "(Ra*J0 + La*bm)/(La*J0)"), sym_is(L.sym.den[0], 2, "(Ra*bm + k^2)/(La*J0)");
+  sym_is(L.sym.den[0], 3, "0");
+  sym_is(L.sym.num[0], 2, "k/(La*J0)");
+  done();
+  /* two masses: K1 K2/(m1 m2) at s^0 */
+  OK(lin(two_mass, 0) == 0);
+  OK(L.sym.ok);
+  sym_is(L.sym.den[0], 4, "K1*K2/(m1*m2)"), sym_is(L.sym.den[0], 2, "(m1*K1 + m1*K2 + m2*K1)/(m1*m2)");
+  sym_is(L.sym.num[0], 4, "K1/(m1*m2)");
+  done();
+  /* nonlinear: numeric only, and the reason */
+  OK(lin(tank, 1) == 0);
+  OK(!L.sym.ok && L.sym.note && strstr(L.sym.note, "numeric only"));
+  done();
+}
+
 int main(void) {
+  test_symbolic();
   test_rlc_time();
   test_rlc();
   test_rlc_bode();
