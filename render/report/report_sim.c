@@ -47,6 +47,8 @@ static void stats(rp_ctx *c, const bg_simresult *r) {
   if (r->rows_redone) row(&t, "Intervals integrated again", "%d (an output row violated the algebraic equations)", r->rows_redone);
   bg_strbuf w = {0};
   if (bg_simresult_row_warning(r, &w)) row(&t, "Warning", "%s", bg_sb_str(&w));
+  bg_sb_clear(&w);
+  if (bg_sim_verify_text(r, &w)) row(&t, "Verification", "%s", bg_sb_str(&w));
   bg_sb_free(&w);
   rp_table_emit(&c->body, &t);
 }

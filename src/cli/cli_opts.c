@@ -17,7 +17,7 @@
 
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
-  OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
+  OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
   OPT_PREFIX
 };
 
@@ -46,6 +46,7 @@ static const struct option long_opts[] = {
     {"color", required_argument, NULL, OPT_COLOR},
     {"prefix", required_argument, NULL, OPT_PREFIX},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
+    {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
     {"quiet", no_argument, NULL, 'q'},
     {"verbose", no_argument, NULL, 'v'},
@@ -162,6 +163,7 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
   case 'o': return add_output(o, arg);
   case OPT_SET: return add_set(o, arg);
   case OPT_SIMULATE: o->simulate = 1; return 0;
+  case OPT_VERIFY: o->verify = 1; o->simulate = 1; return 0;
   case OPT_CHECK: o->check = 1; return 0;
   case 'q': o->quiet = 1; return 0;
   case 'v': o->verbose = 1; return 0;
@@ -226,6 +228,8 @@ void bg_cli_print_help(FILE *out) {
       "  --report FILE.pdf   the full analysis report\n"
       "  --simulate          run the model's simulate block (with --plot FILE, -o FILE.csv\n"
       "                      or -o FILE.json)\n"
+      "  --verify            simulate again at tolerances 100 times tighter and report\n"
+      "                      the largest deviation of each output (digits to trust)\n"
       "  --plot FILE         simulation plot (svg, pdf, png)\n"
       "  --set NAME=VALUE    override a param (repeatable)\n"
       "  --equations FORM    print equations: text | latex | c | json\n"

@@ -36,7 +36,7 @@ typedef struct bg_cli_opts {
   const char *diag_format;  /* --diagnostics-format: "text" (default) or "json" */
   const char *color;        /* --color: "auto" (default), "always", "never" */
   const char *prefix;       /* --prefix NAME: symbol prefix of exported C */
-  int simulate, check, quiet, verbose, help, version;
+  int simulate, verify, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;
 } bg_cli_opts;

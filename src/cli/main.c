@@ -144,6 +144,11 @@ static int simulate(run *r) {
     fprintf(stderr, "bgdraw: note: initial values made consistent: %s\n", r->sim.ic_report);
   bg_strbuf w = {0};
   if (bg_simresult_row_warning(&r->sim, &w)) fprintf(stderr, "bgdraw: warning: %s\n", bg_sb_str(&w));
+  bg_sb_clear(&w);
+  if (rc == 0 && r->opts.verify) {
+    bg_sim_verify(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+    if (bg_sim_verify_text(&r->sim, &w) && !r->opts.quiet) fprintf(stderr, "bgdraw: %s\n", bg_sb_str(&w));
+  }
   bg_sb_free(&w);
   if (rc == 0) {
     if (r->opts.verbose && r->sim.solver_reason)

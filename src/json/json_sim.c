@@ -15,6 +15,33 @@ static const char *status_name(int status) {
   return status == 0 ? "ok" : status == 1 ? "refused" : "failed";
 }
 
+/* --verify: null unless asked; the deviation of each output (docs/json.md). */
+static void put_verify(bg_strbuf *o, const bg_simresult *r) {
+  bg_sb_puts(o, ",\n    \"verify\": ");
+  if (!r->verified) { bg_sb_puts(o, "null"); return; }
+  bg_sb_puts(o, "{\"rtol\": ");
+  bg_sb_json_num(o, r->verify_rtol);
+  bg_sb_puts(o, ", \"atol\": ");
+  bg_sb_json_num(o, r->verify_atol);
+  bg_sb_puts(o, ", \"outputs\": [");
+  for (int k = 0; r->verified > 0 && k < r->nout; k++) {
+    bg_sb_printf(o, "%s{\"name\": ", k ? ", " : "");
+    bg_sb_json_str(o, r->names[k]);
+    bg_sb_puts(o, ", \"deviation\": ");
+    bg_sb_json_num(o, r->verify_dev[k]);
+    bg_sb_puts(o, "}");
+  }
+  bg_sb_puts(o, "], \"worst\": ");
+  if (r->verified > 0) bg_sb_json_num(o, r->verify_worst);
+  else bg_sb_puts(o, "null");
+  bg_sb_printf(o, ", \"too_loose\": %s, \"text\": ", r->verified > 0 && r->verify_worst > BG_VERIFY_LOOSE ? "true" : "false");
+  bg_strbuf t = {0};
+  bg_sim_verify_text(r, &t);
+  bg_sb_json_str(o, bg_sb_str(&t));
+  bg_sb_free(&t);
+  bg_sb_puts(o, "}");
+}
+
 void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
   bg_sb_puts(o, "  \"simulation\": {\n    \"status\": ");
   bg_sb_json_str(o, status_name(status));
@@ -63,7 +90,9 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
   bg_strbuf w = {0};
   str_or_null(o, bg_simresult_row_warning(r, &w) ? bg_sb_str(&w) : NULL);
   bg_sb_free(&w);
-  bg_sb_puts(o, "}\n  }");
+  bg_sb_puts(o, "}");
+  put_verify(o, r);
+  bg_sb_puts(o, "\n  }");
 }
 
 int bg_json_reopen(bg_strbuf *doc) {

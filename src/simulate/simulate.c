@@ -422,6 +422,8 @@ void bg_simresult_free(bg_simresult *r) {
   free(r->ic_report);
   free(r->y0);
   free(r->yp0);
+  free(r->verify_dev);
+  free(r->verify_message);
   memset(r, 0, sizeof *r);
 }
 
@@ -432,5 +434,62 @@ int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out) {
                     "%.3g times the tolerance); do not trust those rows: tighten rtol or set max_step",
                r->rows_violating, r->rows_violating == 1 ? "" : "s", r->rows_violating == 1 ? "s" : "",
                r->row_worst_unknown ? r->row_worst_unknown : "?", r->row_worst_t, r->row_worst);
+  return 1;
+}
+
+/* ------------------------------------------------------------------ --verify */
+static double column_range(const bg_simresult *t, int k) {
+  double lo = INFINITY, hi = -INFINITY, big = 0;
+  for (int i = 0; i < t->nrows; i++) {
+    double v = t->values[(size_t)i * t->nout + k];
+    lo = fmin(lo, v), hi = fmax(hi, v), big = fmax(big, fabs(v));
+  }
+  return hi > lo ? hi - lo : big > 0 ? big : 1.0;
+}
+
+void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                   bg_simresult *r) {
+  bg_sim_opts tight = o ? *o : (bg_sim_opts){0};
+  tight.rtol = r->rtol / BG_VERIFY_FACTOR, tight.atol = r->atol / BG_VERIFY_FACTOR;
+  tight.verbose = 0;
+  r->verify_rtol = tight.rtol, r->verify_atol = tight.atol, r->verify_worst_col = -1;
+  bg_simresult t;
+  int rc = bg_simulate(m, a, s, &tight, &t);
+  if (rc != 0 || t.nrows != r->nrows || t.nout != r->nout) {
+    r->verified = -1;
+    bg_strbuf sb = {0};
+    bg_sb_printf(&sb, "the run at rtol %g, atol %g %s", tight.rtol, tight.atol,
+                 rc ? (t.message ? t.message : "failed") : "gave other output rows");
+    r->verify_message = xstrdup_sb(&sb);
+  } else {
+    r->verified = 1;
+    r->verify_dev = bg_xmalloc((size_t)(r->nout > 0 ? r->nout : 1) * sizeof(double));
+    for (int k = 0; k < r->nout; k++) {
+      double d = 0, range = column_range(&t, k);
+      for (int i = 0; i < r->nrows; i++)
+        d = fmax(d, fabs(r->values[(size_t)i * r->nout + k] - t.values[(size_t)i * t.nout + k]));
+      r->verify_dev[k] = d / range;
+      if (r->verify_worst_col < 0 || r->verify_dev[k] > r->verify_worst)
+        r->verify_worst = r->verify_dev[k], r->verify_worst_col = k;
+    }
+  }
+  bg_simresult_free(&t);
+}
+
+int bg_sim_verify_text(const bg_simresult *r, bg_strbuf *out) {
+  if (!r->verified) return 0;
+  if (r->verified < 0) {
+    bg_sb_printf(out, "verification not possible: %s", r->verify_message ? r->verify_message : "");
+    return 1;
+  }
+  bg_sb_printf(out, "verification at rtol %g, atol %g: largest deviation %.2g of the range", r->verify_rtol,
+               r->verify_atol, r->verify_worst);
+  if (r->verify_worst_col >= 0) bg_sb_printf(out, " (%s)", r->names[r->verify_worst_col]);
+  double w = r->verify_worst;
+  int digits = w > 0 ? (int)floor(-log10(w)) : 15;
+  bg_sb_printf(out, ": about %d significant digit%s to trust", digits < 0 ? 0 : digits, digits == 1 ? "" : "s");
+  if (w > BG_VERIFY_LOOSE)
+    bg_sb_printf(out, "; warning: the tolerances (rtol %g, atol %g) are too loose for this model: "
+                      "set a smaller rtol", r->rtol, r->atol);
   return 1;
 }

@@ -52,6 +52,13 @@ typedef struct bg_simresult {
   int rows_redone, rows_violating;
   double row_worst, row_worst_t, max_step; /* max_step: the limit used, 0 none */
   const char *row_worst_unknown; /* borrowed from the eqsys */
+  /* --verify (bg_sim_verify): the run again at tolerances 100 times tighter;
+   * per output the largest deviation relative to its range (nout values) */
+  int verified;             /* 1 compared, -1 the tighter run failed or was refused */
+  double verify_rtol, verify_atol, verify_worst;
+  int verify_worst_col;     /* output of the worst deviation, -1 none */
+  double *verify_dev;       /* nout; NULL unless verified == 1 */
+  char *verify_message;     /* why the comparison could not be made; nullable */
   int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
                           after the model's own failed (0: the model's worked) */
 } bg_simresult;
@@ -65,6 +72,17 @@ typedef struct bg_simresult {
 int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                 bg_simresult *r);
 void bg_simresult_free(bg_simresult *r);
+/* --verify: reruns r's simulation at rtol and atol 100 times tighter and keeps,
+ * per output, max |value - tighter value| over the rows divided by the
+ * tighter run's range of that output (max - min; max |value| when constant,
+ * 1 when all zero). r must be a complete run (status 0). */
+#define BG_VERIFY_FACTOR 100.0
+#define BG_VERIFY_LOOSE 1e-3 /* a worse deviation flags the tolerances as too loose */
+void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                   bg_simresult *r);
+/* The --verify summary (and, when the deviation exceeds BG_VERIFY_LOOSE, a
+ * warning) in words; 0 when nothing was verified. */
+int bg_sim_verify_text(const bg_simresult *r, bg_strbuf *out);
 /* The warning for output rows that violate the algebraic equations beyond
  * the tolerance (r->rows_violating): appends it to out and returns 1, else 0. */
 int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out);
