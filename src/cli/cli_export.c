@@ -68,6 +68,7 @@ static int export_text(run *r, bg_eqsys *s, const char *path, const char *format
     bg_sb_putn(sb, c.s ? c.s : "", c.len);
     bg_sb_free(&c);
   } else if (!strcmp(format, "py")) bg_export_python(s, sb);
+  else if (!strcmp(format, "mo")) bg_export_modelica(s, sb);
   else if (!strcmp(format, "m")) {
     if (path) base_name(path, name, sizeof name);
     else snprintf(name, sizeof name, "%s", prefix); /* on stdout: the function is named by the prefix */

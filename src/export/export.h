@@ -27,4 +27,7 @@ void bg_export_python(const bg_eqsys *s, bg_strbuf *out);
  * "rlc_model"): a function returning a struct with parameters, initial
  * values, and handles for ode15s (mass matrix) and ode15i. */
 void bg_export_octave(const bg_eqsys *s, const char *fname, bg_strbuf *out);
+/* A Modelica model: parameters, the states with start values, every bond
+ * variable, and the bond graph's equations unsorted, with der(...). */
+void bg_export_modelica(const bg_eqsys *s, bg_strbuf *out);
 #endif
