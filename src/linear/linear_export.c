@@ -1,21 +1,14 @@
 /* The state space for a control engineer's next tool: an Octave/MATLAB
  * script (matrices, names, operating point; `ss` when the control package
  * is there) and a Python module (numpy arrays with names; `ss()` builds a
- * python-control system). Numbers round-trip (shortest %.17g form). */
+ * python-control system). Numbers round-trip (bg_sb_num, the shortest form). */
 #include <stdio.h>
 #include <string.h>
 
 #include "linear/linear.h"
 
 static void num(bg_strbuf *o, double v) {
-  char buf[40];
-  if (v == 0) v = 0; /* no "-0" */
-  for (int prec = 15; prec <= 17; prec++) {
-    snprintf(buf, sizeof buf, "%.*g", prec, v);
-    double back;
-    if (sscanf(buf, "%lf", &back) == 1 && back == v) break;
-  }
-  bg_sb_puts(o, buf);
+  bg_sb_num(o, v == 0 ? 0.0 : v); /* no "-0" */
 }
 
 static void header(const bg_linear *l, const bg_model *m, const char *c, bg_strbuf *o) {
