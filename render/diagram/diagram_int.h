@@ -142,4 +142,6 @@ bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 
 /* DOT output (diagram_dot.c) */
 void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out);
+/* diagram_tips.c: the SVG <title> of an item from its role (ctx: the diagram). */
+void bg_diagram_tip(void *ctx, const char *role, bg_strbuf *out);
 #endif

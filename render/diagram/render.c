@@ -54,7 +54,8 @@ int bg_highlight_parse(const char *item, int *kind, int *index) {
 
 int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diags *dg) {
   int rc = 0;
-  if (!strcmp(format, "svg")) rc = bg_surface_svg_write(&d->scene, out);
+  if (!strcmp(format, "svg")) rc = bg_surface_svg_write_tips(&d->scene, bg_diagram_tip, d, out);
+  else if (!strcmp(format, "svg-cairo")) rc = bg_surface_svg_cairo_write(&d->scene, out);
   else if (!strcmp(format, "pdf")) rc = bg_surface_pdf_write(&d->scene, out);
   else if (!strcmp(format, "png")) rc = bg_surface_png_write(&d->scene, d->st.png_scale, out);
   else if (!strcmp(format, "dot")) bg_diagram_write_dot(d, out);

@@ -8,7 +8,19 @@
 
 /* Each appends the whole file to out and returns 0, or -1 when cairo failed
  * (nothing useful in out). */
+/* SVG is written from the scene by surface_svg.c: <text> in the scene's font
+ * with a fallback list (searchable, selectable), a CSS class per role ("bond
+ * b3", "stroke b3", "path p2", "loop l1", "flash conflict c1"), a viewBox and
+ * no fixed size. tip, when not NULL, gives the <title> tooltip of an item from
+ * its role (appending to buf; nothing appended: no tooltip). */
+typedef void (*bg_svg_tip_fn)(void *ctx, const char *role, bg_strbuf *buf);
 int bg_surface_svg_write(const bg_scene *s, bg_strbuf *out);
+int bg_surface_svg_write_tips(const bg_scene *s, bg_svg_tip_fn tip, void *ctx, bg_strbuf *out);
+/* cairo's SVG of the same scene (text as glyph outlines): the reference the
+ * tests compare the SVG writer's rasterisation with. */
+int bg_surface_svg_cairo_write(const bg_scene *s, bg_strbuf *out);
+/* The baseline of markup below the top of its box (pango), points. */
+double bg_text_baseline(const char *font, double size, const char *markup);
 int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out);
 /* scale: pixels per point (2 gives 144 dpi). */
 int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out);

@@ -59,6 +59,20 @@ void bg_text_measure(const char *font, double size, const char *markup, double *
   g_object_unref(lay);
 }
 
+/* The baseline of markup's first line below the top of its logical box, in
+ * points (the SVG writer places <text> by its baseline). */
+double bg_text_baseline(const char *font, double size, const char *markup) {
+  static PangoContext *ctx;
+  if (!ctx) {
+    ctx = pango_font_map_create_context(pango_cairo_font_map_get_default());
+    setup_context(ctx);
+  }
+  PangoLayout *lay = make_layout(ctx, font, size, markup);
+  double b = (double)pango_layout_get_baseline(lay) / PANGO_SCALE;
+  g_object_unref(lay);
+  return b;
+}
+
 static void set_color(cairo_t *cr, bg_rgba c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a); }
 
 static void replay_path(cairo_t *cr, const bg_scene *s, const bg_scene_item *it) {

@@ -1,10 +1,11 @@
-/* SVG output through cairo's SVG surface (version 1.1, points). */
+/* cairo's SVG of a scene (version 1.1, points; text as glyph outlines): kept
+ * as the reference for the SVG writer (svg_writer.c). */
 #include <cairo-svg.h>
 
 #include "scene/surface.h"
 #include "scene/surface_cairo.h"
 
-int bg_surface_svg_write(const bg_scene *s, bg_strbuf *out) {
+int bg_surface_svg_cairo_write(const bg_scene *s, bg_strbuf *out) {
   cairo_surface_t *sf =
       cairo_svg_surface_create_for_stream(bg_surface_sink, out, s->width, s->height);
   cairo_svg_surface_restrict_to_version(sf, CAIRO_SVG_VERSION_1_1);

@@ -1,0 +1,223 @@
+/* SVG for the web, written from the scene: paths as <path>, text as <text>
+ * (so it can be searched, selected and restyled), the font with a fallback
+ * list, a CSS class per role, <title> tooltips, a viewBox and no fixed size.
+ * Positions come from pango's measurements (the same as the cairo surfaces),
+ * so a rasterisation looks like the PNG and PDF. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/surface.h"
+
+/* A number with at most 2 decimals and no trailing zeros: small, stable. */
+static void num(bg_strbuf *b, double v) {
+  char buf[64];
+  snprintf(buf, sizeof buf, "%.2f", fabs(v) < 0.005 ? 0.0 : v);
+  char *e = buf + strlen(buf) - 1;
+  while (*e == '0') *e-- = '\0';
+  if (*e == '.') *e = '\0';
+  bg_sb_puts(b, buf);
+}
+
+static void color_attr(bg_strbuf *b, const char *name, bg_rgba c) {
+  bg_sb_printf(b, " %s=\"#%02x%02x%02x\"", name, (int)(c.r * 255 + 0.5), (int)(c.g * 255 + 0.5),
+               (int)(c.b * 255 + 0.5));
+  if (c.a < 1) bg_sb_printf(b, " %s-opacity=\"%.3g\"", name, c.a);
+}
+
+static void path_data(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it) {
+  static const char code[] = "MLCZ";
+  bg_sb_puts(b, " d=\"");
+  for (int i = 0; i < it->nop; i++) {
+    const bg_scene_op *o = &s->op[it->opadr + i];
+    int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
+    bg_sb_putc(b, code[o->code]);
+    for (int k = 0; k < npt; k++) {
+      if (k) bg_sb_putc(b, ' ');
+      num(b, o->x[k]), bg_sb_putc(b, ','), num(b, o->y[k]);
+    }
+  }
+  bg_sb_putc(b, '"');
+}
+
+/* CSS classes from a role: the first word, then each number as the first
+ * letter of its word and the number ("path 2 loop=1" -> "path p2 l1"), and
+ * each key of key=value ("flash conflict=1" -> "flash conflict c1"). */
+static void class_attr(bg_strbuf *b, const char *role) {
+  char word[64] = "";
+  bg_sb_puts(b, " class=\"");
+  int first = 1;
+  for (const char *p = role; *p;) {
+    while (*p == ' ') p++;
+    size_t n = strcspn(p, " ");
+    if (!n) break;
+    char tok[128];
+    snprintf(tok, sizeof tok, "%.*s", (int)(n < 127 ? n : 127), p);
+    p += n;
+    char *eq = strchr(tok, '=');
+    if (first) {
+      snprintf(word, sizeof word, "%s", tok);
+      bg_sb_puts(b, tok);
+      first = 0;
+    } else if (eq && eq[1] >= '0' && eq[1] <= '9' && strspn(eq + 1, "0123456789") == strlen(eq + 1)) {
+      *eq = '\0';
+      if (strcmp(tok, "bond")) bg_sb_printf(b, " %s", tok);
+      bg_sb_printf(b, " %c%s", tok[0], eq + 1);
+    } else if (tok[0] >= '0' && tok[0] <= '9' && strspn(tok, "0123456789") == strlen(tok)) {
+      bg_sb_printf(b, " %c%s", word[0], tok);
+    }
+  }
+  bg_sb_putc(b, '"');
+}
+
+static void xml_text(bg_strbuf *b, const char *s) {
+  for (; *s; s++) {
+    if (*s == '&') bg_sb_puts(b, "&amp;");
+    else if (*s == '<') bg_sb_puts(b, "&lt;");
+    else if (*s == '>') bg_sb_puts(b, "&gt;");
+    else if (*s == '"') bg_sb_puts(b, "&quot;");
+    else bg_sb_putc(b, *s);
+  }
+}
+
+static void title(bg_strbuf *b, bg_svg_tip_fn tip, void *ctx, const char *role) {
+  if (!tip) return;
+  bg_strbuf t = {0};
+  tip(ctx, role, &t);
+  if (t.len) bg_sb_puts(b, "<title>"), xml_text(b, bg_sb_str(&t)), bg_sb_puts(b, "</title>");
+  bg_sb_free(&t);
+}
+
+static void shape(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it, bg_svg_tip_fn tip,
+                  void *ctx) {
+  bg_sb_puts(b, "<path");
+  class_attr(b, it->role);
+  path_data(b, s, it);
+  int outline = it->kind == BG_ITEM_STROKE || it->width > 0;
+  if (it->kind == BG_ITEM_FILL) color_attr(b, "fill", it->fill);
+  else bg_sb_puts(b, " fill=\"none\"");
+  if (outline) {
+    color_attr(b, "stroke", it->color);
+    bg_sb_puts(b, " stroke-width=\""), num(b, it->width), bg_sb_putc(b, '"');
+    if (it->round) bg_sb_puts(b, " stroke-linecap=\"round\" stroke-linejoin=\"round\"");
+    if (it->dash[0] > 0) {
+      bg_sb_puts(b, " stroke-dasharray=\""), num(b, it->dash[0]), bg_sb_putc(b, ' ');
+      num(b, it->dash[1]), bg_sb_putc(b, '"');
+    }
+  }
+  bg_strbuf t = {0};
+  title(&t, tip, ctx, it->role);
+  if (t.len) bg_sb_printf(b, ">%s</path>\n", bg_sb_str(&t));
+  else bg_sb_puts(b, "/>\n");
+  bg_sb_free(&t);
+}
+
+/* ---------------------------------------------------------------- text */
+/* Pango markup as bgdraw writes it: spans with size="P%" and rise="Rpt",
+ * <b>, <i>, <sub>, <sup>, entities. Each run becomes a <tspan>. */
+typedef struct run_style {
+  double scale, rise; /* font size factor; baseline shift up, points */
+  int bold, italic;
+} run_style;
+
+static double attr_num(const char *tag, const char *name, double dflt) {
+  char key[32];
+  snprintf(key, sizeof key, " %s=\"", name);
+  const char *p = strstr(tag, key);
+  return p ? strtod(p + strlen(key), NULL) : dflt;
+}
+
+static run_style open_tag(const char *tag, run_style cur, double size) {
+  if (!strncmp(tag, "<span", 5)) {
+    double pct = attr_num(tag, "size", -1);
+    if (pct > 0 && strchr(tag, '%')) cur.scale *= pct / 100;
+    cur.rise += attr_num(tag, "rise", 0);
+    if (strstr(tag, "weight=\"bold\"")) cur.bold = 1;
+    if (strstr(tag, "style=\"italic\"")) cur.italic = 1;
+  } else if (!strcmp(tag, "<b>")) cur.bold = 1;
+  else if (!strcmp(tag, "<i>")) cur.italic = 1;
+  else if (!strcmp(tag, "<sub>")) cur.scale *= 0.7, cur.rise -= 0.3 * size;
+  else if (!strcmp(tag, "<sup>")) cur.scale *= 0.7, cur.rise += 0.4 * size;
+  return cur;
+}
+
+static void put_run(bg_strbuf *b, const char *txt, size_t n, run_style st, double size,
+                    double *shift) {
+  if (!n) return;
+  bg_sb_puts(b, "<tspan");
+  double dy = -st.rise - *shift; /* SVG's y grows downwards; dy is relative */
+  if (fabs(dy) > 1e-9) bg_sb_puts(b, " dy=\""), num(b, dy), bg_sb_putc(b, '"');
+  *shift = -st.rise;
+  if (st.scale != 1) bg_sb_puts(b, " font-size=\""), num(b, size * st.scale), bg_sb_putc(b, '"');
+  if (st.bold) bg_sb_puts(b, " font-weight=\"bold\"");
+  if (st.italic) bg_sb_puts(b, " font-style=\"italic\"");
+  bg_sb_putc(b, '>');
+  bg_sb_putn(b, txt, n); /* markup text is already escaped for XML */
+  bg_sb_puts(b, "</tspan>");
+}
+
+static void text_runs(bg_strbuf *b, const char *m, double size) {
+  run_style stack[8] = {{1, 0, 0, 0}};
+  int depth = 0;
+  double shift = 0;
+  while (*m) {
+    size_t n = strcspn(m, "<");
+    put_run(b, m, n, stack[depth], size, &shift);
+    m += n;
+    if (!*m) break;
+    size_t t = strcspn(m, ">");
+    char tag[256];
+    snprintf(tag, sizeof tag, "%.*s", (int)(t + 1 < 255 ? t + 1 : 255), m);
+    m += m[t] ? t + 1 : t;
+    if (tag[1] == '/') depth = depth > 0 ? depth - 1 : 0;
+    else if (depth < 7) stack[depth + 1] = open_tag(tag, stack[depth], size), depth++;
+  }
+}
+
+static void text(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it, bg_svg_tip_fn tip,
+                 void *ctx) {
+  double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;
+  double base = bg_text_baseline(s->font, it->size, it->text);
+  bg_sb_puts(b, "<text");
+  class_attr(b, it->role);
+  bg_sb_puts(b, " x=\""), num(b, x), bg_sb_puts(b, "\" y=\""), num(b, y + base);
+  bg_sb_puts(b, "\" font-size=\""), num(b, it->size), bg_sb_putc(b, '"');
+  color_attr(b, "fill", it->color);
+  bg_sb_putc(b, '>');
+  title(b, tip, ctx, it->role);
+  text_runs(b, it->text, it->size);
+  bg_sb_puts(b, "</text>\n");
+}
+
+/* The scene's font, then fonts with the same metrics class, then generic. */
+static void font_family(bg_strbuf *b, const char *font) {
+  bg_sb_puts(b, " font-family=\"'");
+  xml_text(b, font);
+  bg_sb_puts(b, "', 'DejaVu Sans', Verdana, 'Bitstream Vera Sans', Arial, sans-serif\"");
+}
+
+int bg_surface_svg_write_tips(const bg_scene *s, bg_svg_tip_fn tip, void *ctx, bg_strbuf *out) {
+  bg_sb_puts(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                  "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 ");
+  num(out, s->width), bg_sb_putc(out, ' '), num(out, s->height);
+  bg_sb_puts(out, "\" class=\"bgdraw\"");
+  font_family(out, s->font);
+  bg_sb_puts(out, " stroke-miterlimit=\"10\" xml:space=\"preserve\">\n");
+  if (s->title) bg_sb_puts(out, "<title>"), xml_text(out, s->title), bg_sb_puts(out, "</title>\n");
+  bg_sb_puts(out, "<rect class=\"background\" width=\""), num(out, s->width);
+  bg_sb_puts(out, "\" height=\""), num(out, s->height), bg_sb_putc(out, '"');
+  color_attr(out, "fill", s->background);
+  bg_sb_puts(out, "/>\n");
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    if (it->kind == BG_ITEM_TEXT) text(out, s, it, tip, ctx);
+    else shape(out, s, it, tip, ctx);
+  }
+  bg_sb_puts(out, "</svg>\n");
+  return 0;
+}
+
+int bg_surface_svg_write(const bg_scene *s, bg_strbuf *out) {
+  return bg_surface_svg_write_tips(s, NULL, NULL, out);
+}
