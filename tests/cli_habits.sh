@@ -182,5 +182,18 @@ check "param f0, e9 and junction f5 accepted with 3 bonds (got $st)" $st
 awk -F, 'NR == 4 { d = $2 - 1.5 * (1 - exp(-1)); exit !(d < 1e-4 && d > -1e-4) }' "$tmp/f0.csv"
 check "param f0 = 1.5 drives the RC: C1.e(1) = 1.5 (1 - e^-1)" $?
 
+# ---- the TF, GY and one-port sign conventions of docs/format.md
+printf 'Se U = 10\nTF T = 2\nR R1 = 4\nbond 1 U -> T\nbond 2 T -> R1\n' >"$tmp/tf.bg"
+"$BGDRAW" "$tmp/tf.bg" --equations text >"$tmp/tf.txt"
+grep -qx 'e2 = 2\*e1' "$tmp/tf.txt" && grep -qx 'f1 = 2\*f2' "$tmp/tf.txt" && grep -qx 'f2 = 0.25\*e2' "$tmp/tf.txt"
+check "TF: e2 = n e1, f1 = n f2 (format.md worked example)" $?
+printf 'Se U = 10\nGY G = 2\nR R1 = 4\nbond 1 U -> G\nbond 2 G -> R1\n' >"$tmp/gy.bg"
+"$BGDRAW" "$tmp/gy.bg" --equations text >"$tmp/gy.txt"
+grep -qx 'f2 = 0.5\*e1' "$tmp/gy.txt" && grep -qx 'f1 = 0.5\*e2' "$tmp/gy.txt" && grep -qx 'e2 = 4\*f2' "$tmp/gy.txt"
+check "GY: e1 = r f2, e2 = r f1 (format.md worked example)" $?
+printf 'Se U = 1\n1 j\nR R1 = 2\nC C1 = 1\nbond U -> j\nbond R1 -> j\nbond j -> C1\n' >"$tmp/out.bg"
+"$BGDRAW" "$tmp/out.bg" --equations text | grep -qx 'f2 = -0.5\*e2'
+check "a value-form R whose bond points out of it: e = -R f" $?
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
