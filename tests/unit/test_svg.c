@@ -69,13 +69,24 @@ static void text_contents(const char *svg, bg_strbuf *out) {
   }
 }
 
+/* The example's diagram with these layers (NULL after a failed check). */
+static bg_diagram *diagram(const char *example, unsigned show, loaded *L, bg_diags *dg) {
+  bg_diags_init(dg, "t", NULL, 0);
+  if (load(example, L) != 0) {
+    BG_T_REPORT(0, "%s loads", example);
+    return NULL;
+  }
+  bg_render_opts o = {.show = show, .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(L->m, &L->a, &o, dg);
+  BG_T_REPORT(d != NULL, "%s: diagram built", example);
+  return d;
+}
+
 static void structure(const char *example, unsigned show) {
   loaded L;
-  if (load(example, &L) != 0) { OK(!"example loads"); return; }
-  bg_render_opts o = {.show = show, .style_dir = BG_SOURCE_DIR "/styles"};
   bg_diags dg;
-  bg_diags_init(&dg, "t", NULL, 0);
-  bg_diagram *d = bg_diagram_build(L.m, &L.a, &o, &dg);
+  bg_diagram *d = diagram(example, show, &L, &dg);
+  if (!d) return;
   bg_strbuf svg = {0}, texts = {0};
   INT_EQ(bg_diagram_render(d, "svg", &svg, &dg), BG_RENDER_OK);
   const char *s = bg_sb_str(&svg);
@@ -145,11 +156,9 @@ static double png_difference(const char *a, const char *b) {
 
 static void looks_the_same(const char *example, unsigned show) {
   loaded L;
-  if (load(example, &L) != 0) { OK(!"example loads"); return; }
-  bg_render_opts o = {.show = show, .style_dir = BG_SOURCE_DIR "/styles"};
   bg_diags dg;
-  bg_diags_init(&dg, "t", NULL, 0);
-  bg_diagram *d = bg_diagram_build(L.m, &L.a, &o, &dg);
+  bg_diagram *d = diagram(example, show, &L, &dg);
+  if (!d) return;
   double w, h;
   bg_diagram_size(d, &w, &h);
   const char *fmt[2] = {"svg", "svg-cairo"};
