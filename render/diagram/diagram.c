@@ -13,7 +13,7 @@
 
 /* A name with its trailing digits (or the part after the last '_') set as a
  * subscript: a pango span, since <sub> mis-scales on scaled surfaces. */
-static void put_name(bg_strbuf *b, const char *name, double font_size) {
+void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
   size_t n = strlen(name), k = n;
   while (k > 0 && isdigit((unsigned char)name[k - 1])) k--;
   const char *us = strrchr(name, '_');
@@ -36,7 +36,7 @@ static char *elem_markup(bg_diagram *d, int e) {
   if (!bg_elem_is_junction(m->elem_kind[e]) && (d->show & BG_SHOW_LABELS)) {
     bg_sb_puts(&b, " : ");
     if (m->elem_label && m->elem_label[e]) bg_markup_escapen(&b, m->elem_label[e], strlen(m->elem_label[e]));
-    else put_name(&b, m->elem_name[e], d->st.font_size);
+    else bg_name_markup(&b, m->elem_name[e], d->st.font_size);
   }
   char *s = bg_arena_strdup(&d->arena, bg_sb_str(&b));
   bg_sb_free(&b);
@@ -47,7 +47,7 @@ static char *elem_markup(bg_diagram *d, int e) {
 static char *state_markup(bg_diagram *d, int s) {
   bg_strbuf b = {0};
   bg_sb_puts(&b, "\u222b : ");
-  put_name(&b, d->m->state_name[s], d->st.font_size);
+  bg_name_markup(&b, d->m->state_name[s], d->st.font_size);
   char *r = bg_arena_strdup(&d->arena, bg_sb_str(&b));
   bg_sb_free(&b);
   return r;
@@ -347,27 +347,30 @@ static void draw_nodes(bg_diagram *d) {
   }
 }
 
-/* A dashed artificial flow source Sf* at c, its dashed bond to p (half arrow
- * at p), the stroke at the source (a flow source takes the effort). */
+/* A dashed artificial flow source Sf* at c and its dashed bond from p: the
+ * half arrow points toward the source (the chapter, Section 4.10.2: the
+ * generalised force is the effort into it), the stroke at the source (a
+ * flow source takes the effort). A highlight mutes all of it. */
 static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, double hh, bg_vec p) {
   const bg_style *st = &d->st;
+  bg_rgba ink = bg_diagram_ink(d, st->fg, 0);
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange %d", i + 1);
-  it->width = 0.6, it->dash[0] = 2, it->dash[1] = 1.5, it->color = st->fg;
+  it->width = 0.6, it->dash[0] = 2, it->dash[1] = 1.5, it->color = ink;
   bg_scene_move(&d->scene, c.x - hw, c.y - hh);
   bg_scene_line(&d->scene, c.x + hw, c.y - hh);
   bg_scene_line(&d->scene, c.x + hw, c.y + hh);
   bg_scene_line(&d->scene, c.x - hw, c.y + hh);
   bg_scene_close(&d->scene);
-  bg_scene_text(&d->scene, "Sf*", c.x, c.y, st->font_size, 0.5, 0.5, st->fg, "lagrange-label");
-  bg_vec t = bg_box_exit(c, hw, hh, p), dir = bg_vunit(bg_vsub(p, t));
+  bg_scene_text(&d->scene, "Sf*", c.x, c.y, st->font_size, 0.5, 0.5, ink, "lagrange-label");
+  bg_vec t = bg_box_exit(c, hw, hh, p), dir = bg_vunit(bg_vsub(t, p));
   it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-bond %d", i + 1);
-  it->width = st->line_width, it->dash[0] = 4, it->dash[1] = 2, it->round = 1, it->color = st->fg;
-  bg_vec barb = bg_vadd(p, bg_vscale(bg_vsub(bg_vleft(dir), dir), 7 * st->line_width * BG_SQRT1_2));
-  bg_scene_move(&d->scene, t.x, t.y);
-  bg_scene_line(&d->scene, p.x, p.y);
+  it->width = st->line_width, it->dash[0] = 4, it->dash[1] = 2, it->round = 1, it->color = ink;
+  bg_vec barb = bg_vadd(t, bg_vscale(bg_vsub(bg_barb_side_at(d, dir), dir), 7 * st->line_width * BG_SQRT1_2));
+  bg_scene_move(&d->scene, p.x, p.y);
+  bg_scene_line(&d->scene, t.x, t.y);
   bg_scene_line(&d->scene, barb.x, barb.y);
   it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-stroke %d", i + 1);
-  it->width = 1.5 * st->line_width, it->color = st->fg;
+  it->width = 1.5 * st->line_width, it->color = ink;
   stroke_bar(d, t, bg_vleft(dir), 4.5 * st->line_width);
 }
 
@@ -377,8 +380,8 @@ static void draw_lagrange(bg_diagram *d) {
     int n = d->lag_node[i];
     if (n >= 0) {
       int j = a->lag_junction[i];
-      bg_vec cn = bg_v(d->nx[n], d->ny[n]);
-      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, bg_node_exit(d, j, cn, 0));
+      bg_vec cn = bg_v(d->nx[n], d->ny[n]), cj = bg_v(d->nx[j], d->ny[j]);
+      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, bg_node_end(d, j, bg_vunit(bg_vsub(cn, cj))));
     } else if (a->lag_bond[i] >= 0) {
       /* the inserted 1-junction sits on the split bond: attach beside it */
       int b = a->lag_bond[i];
@@ -500,15 +503,18 @@ static void keep_page(bg_diagram *d) {
  * one then stays on its page, and a fresh build of it draws the same. */
 static void node_fence(bg_diagram *d) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, t = 120;
-  for (int i = 0; i < d->nnode; i++) {
-    x0 = fmin(x0, d->nx[i] - d->nw[i] / 2), x1 = fmax(x1, d->nx[i] + d->nw[i] / 2);
+  for (int i = 0; i < d->nnode; i++) { /* the labels' text, not their padded boxes */
+    double hw = d->nw[i] / 2 - d->st.node_pad;
+    x0 = fmin(x0, d->nx[i] - hw), x1 = fmax(x1, d->nx[i] + hw);
     y0 = fmin(y0, d->ny[i] - d->nh[i] / 2), y1 = fmax(y1, d->ny[i] + d->nh[i] / 2);
   }
   if (x0 > x1) return;
-  bg_obstacle_rect(d, x0 - t, y0 - t, x1 + t, y0);
-  bg_obstacle_rect(d, x0 - t, y1, x1 + t, y1 + t);
-  bg_obstacle_rect(d, x0 - t, y0, x0, y1);
-  bg_obstacle_rect(d, x1, y0, x1 + t, y1);
+  for (int twice = 0; twice < 2; twice++) { /* outside costs as much as two labels covered */
+    bg_obstacle_rect(d, x0 - t, y0 - t, x1 + t, y0);
+    bg_obstacle_rect(d, x0 - t, y1, x1 + t, y1 + t);
+    bg_obstacle_rect(d, x0 - t, y0, x0, y1);
+    bg_obstacle_rect(d, x1, y0, x1 + t, y1);
+  }
 }
 
 static void draw_all(bg_diagram *d) {

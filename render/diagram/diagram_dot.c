@@ -1,7 +1,9 @@
 /* The annotated graph in Graphviz DOT with the computed positions (points,
  * y up, as Graphviz writes them): `neato -n2 -Tsvg x.dot` redraws it. Written
  * by hand from the layout so the text is deterministic. */
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "diagram/diagram_int.h"
@@ -82,21 +84,48 @@ static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
   bg_sb_puts(out, "];\n");
 }
 
-static void write_pos(const bg_diagram *d, int b, bg_strbuf *out) {
+/* Graphviz arrow lengths (arrowsize 1): lvee 10 pt, tee 5 pt, teelvee both. */
+enum { ARROW_LVEE = 10, ARROW_TEE = 5 };
+
+static void put_pt(const bg_diagram *d, bg_strbuf *out, bg_vec p, int first) {
+  bg_sb_printf(out, "%s%.2f,%.2f", first ? "" : " ", p.x, yup(d, p.y));
+}
+
+/* The bond as Graphviz writes an edge: "e,x,y" the head's arrow tip, "s,x,y"
+ * the tail's (with a stroke there), then cubic Bezier points from where the
+ * tail arrow ends to where the head arrow starts (a straight or bent bond:
+ * straight pieces, one per leg), so `neato -n2` draws the half arrow and the
+ * strokes where bgdraw does. */
+static void write_pos(const bg_diagram *d, int b, int stroke, bg_strbuf *out) {
   const bg_bond_geom *g = &d->bg[b];
+  double elen = ARROW_LVEE + (stroke == BG_STROKE_HEAD ? ARROW_TEE : 0);
+  double slen = stroke == BG_STROKE_TAIL ? ARROW_TEE : 0;
+  int n = g->spln ? 0 : g->bendn + 2;
+  bg_vec *p = bg_xcalloc((size_t)(g->spln ? g->spln : n) + 1, sizeof *p);
+  if (g->spln)
+    for (int i = 0; i < g->spln; i++) p[i] = bg_v(d->splx[g->spladr + i], d->sply[g->spladr + i]);
+  else
+    for (int i = 0; i < n; i++)
+      p[i] = i == 0 ? g->tail : i == n - 1 ? g->head
+                             : bg_v(d->lay.bendx[g->bendadr + i - 1], d->lay.bendy[g->bendadr + i - 1]);
+  int last = g->spln ? g->spln - 1 : n - 1;
+  /* short legs keep a third of their length */
+  double lh = bg_vlen(bg_vsub(p[last], p[last - 1])), lt = bg_vlen(bg_vsub(p[1], p[0]));
+  elen = fmin(elen, 2 * lh / 3), slen = fmin(slen, 2 * lt / 3);
   bg_sb_puts(out, ", pos=\"");
+  bg_sb_printf(out, "e,%.2f,%.2f ", p[last].x, yup(d, p[last].y));
+  if (slen > 0) bg_sb_printf(out, "s,%.2f,%.2f ", p[0].x, yup(d, p[0].y));
+  p[last] = bg_vsub(p[last], bg_vscale(g->hdir, elen));
+  p[0] = bg_vadd(p[0], bg_vscale(g->tdir, slen));
   if (g->spln) {
-    for (int i = 0; i < g->spln; i++)
-      bg_sb_printf(out, "%s%.2f,%.2f", i ? " " : "", d->splx[g->spladr + i],
-                   yup(d, d->sply[g->spladr + i]));
+    for (int i = 0; i <= last; i++) put_pt(d, out, p[i], i == 0);
   } else {
-    for (int i = 0; i < 4; i++) {
-      double t = i / 3.0;
-      bg_sb_printf(out, "%s%.2f,%.2f", i ? " " : "", g->tail.x + t * (g->head.x - g->tail.x),
-                   yup(d, g->tail.y + t * (g->head.y - g->tail.y)));
-    }
+    put_pt(d, out, p[0], 1);
+    for (int i = 0; i + 1 < n; i++)
+      for (int k = 1; k <= 3; k++) put_pt(d, out, bg_vadd(p[i], bg_vscale(bg_vsub(p[i + 1], p[i]), k / 3.0)), 0);
   }
   bg_sb_putc(out, '"');
+  free(p);
 }
 
 static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
@@ -112,7 +141,7 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
   bg_sb_printf(out, ", bg_stroke=%s",
                stroke == BG_STROKE_HEAD ? "head" : stroke == BG_STROKE_TAIL ? "tail" : "none");
   if (d->a && d->a->bond_conflict && d->a->bond_conflict[b]) bg_sb_puts(out, ", color=red, bg_conflict=1");
-  write_pos(d, b, out);
+  write_pos(d, b, stroke, out);
   bg_sb_puts(out, "];\n");
 }
 
@@ -158,7 +187,7 @@ static void write_layers(const bg_diagram *d, bg_strbuf *out) {
     int n = kind ? a->ntloop : a->npath;
     for (int i = 0; i < n; i++) {
       bg_strbuf t = {0};
-      bg_layer_describe(d, kind ? 'l' : 'p', i, &t);
+      bg_layer_describe(d, kind ? 'l' : 'p', i, 0, &t);
       bg_sb_printf(out, "  bg_%s%d=", kind ? "loop" : "path", i + 1);
       dot_str(out, bg_sb_str(&t));
       bg_sb_puts(out, ";\n");

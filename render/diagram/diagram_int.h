@@ -58,6 +58,14 @@ struct bg_diagram {
   bg_arena arena;
 };
 
+/* A name as markup (diagram.c): its trailing digits (or what follows the
+ * last '_') a subscript, as in element labels. */
+void bg_name_markup(bg_strbuf *b, const char *name, double font_size);
+/* A loop gain as markup (diagram_layers.c), typeset like the labels:
+ * names with subscripts, powers raised, products by juxtaposition (a thin
+ * space), minus signs, primes. */
+void bg_gain_markup(const char *gain, double size, bg_strbuf *out);
+
 /* geometry (diagram_geom.c) */
 bg_vec bg_v(double x, double y);
 bg_vec bg_vadd(bg_vec a, bg_vec b);
@@ -137,7 +145,8 @@ void bg_draw_conflicts(bg_diagram *d);
 bg_vec bg_free_direction(const bg_diagram *d, int n);
 void bg_draw_legend(bg_diagram *d);
 /* Text for a path's or loop's legend line. */
-void bg_layer_describe(const bg_diagram *d, int kind, int i, bg_strbuf *out);
+/* markup: the gain typeset (legend), else plain text (DOT). */
+void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 
 /* DOT output (diagram_dot.c) */

@@ -114,6 +114,18 @@ static void sample_stroke(legend *L, bg_rgba c, int doubled) {
   }
 }
 
+/* The cross the print style sets beside a conflicting stroke (diagram.c). */
+static void sample_cross(legend *L) {
+  const bg_style *st = &L->d->st;
+  bg_scene_item *it = bg_scene_begin(&L->d->scene, BG_ITEM_STROKE, "legend-sample");
+  it->color = st->conflict, it->width = 1.5 * st->line_width;
+  double x = L->x + L->sample - 5 * st->line_width, h = 0.7 * 4.5 * st->line_width * BG_SQRT1_2;
+  bg_scene_move(&L->d->scene, x - h, L->y - h);
+  bg_scene_line(&L->d->scene, x + h, L->y + h);
+  bg_scene_move(&L->d->scene, x - h, L->y + h);
+  bg_scene_line(&L->d->scene, x + h, L->y - h);
+}
+
 static int any_derivative(const bg_diagram *d) {
   for (int e = 0; d->a && e < d->m->nelem; e++)
     if (d->a->elem_caus[e] == BG_CAUS_DERIVATIVE) return 1;
@@ -138,10 +150,13 @@ static void legend_conventions(legend *L) {
   }
   if (d->a && d->a->nconflict && ((d->show & BG_SHOW_CONFLICTS) || d->o.highlight_kind == 'c')) {
     sample_stroke(L, st->conflict, 0);
+    if (st->conflict_cross) sample_cross(L);
     it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "legend-sample");
     it->fill = st->conflict, it->color = st->flash_outline, it->width = 0.5;
     flash_path(&d->scene, bg_v(L->x + L->sample / 2 - 2, L->y - 1), 11);
-    legend_text(L, "causal conflict: stroke in red, flash with type (and degree k)");
+    /* as drawn: the print style's conflicts are black strokes with a cross */
+    legend_text(L, st->conflict_cross ? "causal conflict: stroke with a cross, flash with type (and degree k)"
+                                      : "causal conflict: stroke in red, flash with type (and degree k)");
   }
   if (d->a && d->a->nlag) {
     it = sample_line(L, "legend-sample", st->fg, st->line_width);
@@ -149,7 +164,7 @@ static void legend_conventions(legend *L) {
     legend_text(L, "Sf*: artificial flow source (Lagrange causality)");
   }
   if (bg_diagram_count(d, "signal") && (d->show & BG_SHOW_SIGNALS)) {
-    it = sample_line(L, "legend-sample", st->signal, 0.7);
+    it = sample_line(L, "legend-sample", st->signal, st->signal_width);
     if (st->signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
     it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "legend-sample");
     it->fill = it->color = st->signal, it->width = 0;
@@ -194,12 +209,10 @@ static void legend_layers(legend *L, int kind, int count) {
     if ((!shown || i >= LEGEND_MAX_LAYERS) && i != hot) continue;
     sample_layer(L, kind, i);
     bg_strbuf t = {0};
-    bg_layer_describe(d, kind, i, &t);
+    bg_layer_describe(d, kind, i, 1, &t);
     if (kind == 'l' && d->loop_path[i] >= 0) bg_sb_printf(&t, ", drawn with P%d", d->loop_path[i] + 1);
-    bg_strbuf m = {0};
-    bg_markup_escape(&m, bg_sb_str(&t));
-    legend_text(L, bg_sb_str(&m));
-    bg_sb_free(&t), bg_sb_free(&m);
+    legend_text(L, bg_sb_str(&t));
+    bg_sb_free(&t);
   }
   if (shown && count > LEGEND_MAX_LAYERS) {
     double x = L->x;
@@ -252,7 +265,26 @@ static void describe_bonds(const bg_diagram *d, const int *bonds, int n, bg_strb
   for (int k = 0; k < n; k++) bg_sb_printf(out, "%s%d", k ? "-" : "", d->m->bond_num[bonds[k]]);
 }
 
-void bg_layer_describe(const bg_diagram *d, int kind, int i, bg_strbuf *out) {
+static void describe_text(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out,
+                          bg_strbuf *dst);
+
+/* Appends t to out (escaped for markup) and empties t. */
+static void flush_text(bg_strbuf *t, int markup, bg_strbuf *out) {
+  if (markup) bg_markup_escape(out, bg_sb_str(t));
+  else bg_sb_puts(out, bg_sb_str(t));
+  bg_sb_clear(t);
+}
+
+void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *dst) {
+  bg_strbuf t = {0}, *out = &t;
+  describe_text(d, kind, i, markup, out, dst);
+  flush_text(out, markup, dst);
+  bg_sb_free(&t);
+}
+
+/* The description into out; a typeset gain goes to dst directly. */
+static void describe_text(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out,
+                          bg_strbuf *dst) {
   const bg_analysis *a = d->a;
   const bg_model *m = d->m;
   if (kind == 'p') {
@@ -268,7 +300,12 @@ void bg_layer_describe(const bg_diagram *d, int kind, int i, bg_strbuf *out) {
   }
   bg_sb_printf(out, "L%d %s topological loop, order %d", i + 1,
                a->tloop_kind[i] == BG_TLOOP_FLAT ? "flat" : "open", a->tloop_order[i]);
-  if (a->tloop_gain && a->tloop_gain[i]) bg_sb_printf(out, ", G = %s", a->tloop_gain[i]);
+  if (a->tloop_gain && a->tloop_gain[i] && markup) {
+    bg_sb_puts(out, ", G = ");
+    flush_text(out, markup, dst);
+    bg_gain_markup(a->tloop_gain[i], d->st.font_size * d->st.number_scale, dst);
+  } else if (a->tloop_gain && a->tloop_gain[i])
+    bg_sb_printf(out, ", G = %s", a->tloop_gain[i]);
   if (a->tloop_algebraic && a->tloop_algebraic[i]) bg_sb_puts(out, ", algebraic");
   if (a->tloop_cause && a->tloop_cause[i]) bg_sb_printf(out, " (%s)", a->tloop_cause[i]);
 }

@@ -79,7 +79,7 @@ typedef struct sigrole {
 
 static bg_scene_item *signal_item(bg_diagram *d, sigrole role, int hot) {
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "%s %s", role.kind, role.name);
-  it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0.7;
+  it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = d->st.signal_width;
   if (d->st.signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
   return it;
 }

@@ -34,6 +34,7 @@ static const style_key keys[] = {
     KEY("muted_color", K_COLOR, muted),
     KEY("flash_outline", K_COLOR, flash_outline),
     KEY("signal_dashed", K_BOOL, signal_dashed),
+    KEY("signal_width", K_NUM, signal_width),
     KEY("derivative_double", K_BOOL, derivative_double),
     KEY("conflict_cross", K_BOOL, conflict_cross),
     KEY("layer_colors", K_COLORS, layer_color),
@@ -65,7 +66,7 @@ void bg_style_default(bg_style *st) {
   st->flash_outline = rgb(0x401010);
   st->nlayer_color = (int)(sizeof layers / sizeof layers[0]);
   for (int i = 0; i < st->nlayer_color; i++) st->layer_color[i] = rgb(layers[i]);
-  st->layer_width = 1.2, st->layer_offset = 7;
+  st->layer_width = 1.2, st->layer_offset = 7, st->signal_width = 0.7;
   st->node_pad = 3, st->node_sep = 28, st->rank_sep = 56, st->margin = 12;
   st->png_scale = 2;
 }

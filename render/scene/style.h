@@ -18,6 +18,7 @@ typedef struct bg_style {
   int harpoon;         /* BG_HARPOON_* */
   bg_rgba fg, background, derivative, conflict, signal, muted, flash_outline;
   int signal_dashed;       /* modulating signals dashed */
+  double signal_width;     /* modulating signal lines, points */
   int derivative_double;   /* derivative strokes drawn as a double bar (print) */
   int conflict_cross;      /* conflicting strokes get a cross mark (print) */
   bg_rgba layer_color[BG_STYLE_MAX_COLORS]; /* paths and loops, cycled */
