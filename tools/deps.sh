@@ -6,7 +6,8 @@ PKGS=(gcc make cmake pkg-config
       libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev
       fonts-dejavu-core poppler-utils libxml2-utils python3
       python3-numpy python3-scipy octave  # these three run the Python and Octave exports in tests
-      librsvg2-bin pandoc python3-sphinx)  # SVG rasterisation check; contrib/ integrations
+      librsvg2-bin pandoc python3-sphinx  # SVG rasterisation check; contrib/ integrations
+      valgrind)  # tests/valgrind_outputs.sh
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -384,7 +384,7 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
   p.max_step = step_limit(s, m, o);
   r->max_step = p.max_step;
-  p.max_steps = SIM_MAX_STEPS;
+  p.max_steps = o && o->max_steps > 0 ? o->max_steps : SIM_MAX_STEPS;
   p.verbose = o ? o->verbose : 0;
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
   r->linear_solver = p.sparse ? "klu" : "dense";

@@ -20,6 +20,8 @@ typedef struct bg_sim_opts {
   /* -v progress: at most one line per this many seconds of wall time
    * (0: 1 s); a run shorter than that prints only its summary. */
   double progress_every;
+  /* Steps per output interval at most (0: 100 000); the fuzzer's short runs. */
+  long max_steps;
   /* Why the equations could not be formed when bg_simulate gets s == NULL
    * (the eqsys diagnostic), for the refusal message; nullable. */
   const char *eqs_problem;

@@ -1,0 +1,33 @@
+/* Fuzz target: layout and drawing (Graphviz, cairo, pango): the diagram as
+ * SVG and DOT with every layer, and redrawn with the first path highlighted
+ * (fuzz_common.h). */
+#include "diagram/render.h"
+#include "fuzz_common.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  if (size > FUZZ_MAX_LEN) return 0;
+  fuzz_run f;
+  if (fuzz_load(&f, data, size) == 0) {
+    bg_render_opts o = {0};
+    o.show = size % 2 ? BG_SHOW_ALL : BG_SHOW_DEFAULT | BG_SHOW_VARIABLES;
+    o.style_dir = BG_SOURCE_DIR "/styles";
+    bg_diags dg;
+    bg_diags_init(&dg, "fuzz", NULL, 0);
+    bg_diagram *d = bg_diagram_build(f.model, &f.analysis, &o, &dg);
+    if (d) {
+      bg_strbuf out = {0};
+      bg_diagram_render(d, "svg", &out, &dg);
+      bg_sb_clear(&out);
+      bg_diagram_render(d, "dot", &out, &dg);
+      bg_sb_free(&out);
+      if (f.analysis.npath > 0) {
+        bg_diagram *h = bg_diagram_redraw(d, BG_SHOW_ALL, 'p', 1, &dg);
+        if (h) bg_diagram_free(h);
+      }
+      bg_diagram_free(d);
+    }
+    bg_diags_free(&dg);
+  }
+  fuzz_free(&f);
+  return 0;
+}
