@@ -529,6 +529,7 @@ static void grid_free(grid *g) {
 }
 
 void bg_grid_place(bg_diagram *d) {
+  if (d->nnode == 0) return; /* an empty model: nothing to place, and no line range */
   grid g;
   grid_alloc(&g, d);
   classify(&g);
