@@ -41,14 +41,16 @@ static void base_name(const char *path, char *buf, size_t n) {
 }
 
 static int write_c(run *r, bg_eqsys *s, const char *path) {
-  char prefix[80], hpath[4096], hname[300];
+  char prefix[80], hpath[4096];
   prefix_of(r, prefix, sizeof prefix);
   size_t len = strlen(path);
-  if (len + 1 > sizeof hpath) return EXIT_USAGE;
+  if (len + 1 > sizeof hpath) {
+    fprintf(stderr, "bgdraw: error: output path too long: '%s'\n", path);
+    return EXIT_USAGE;
+  }
   memcpy(hpath, path, len + 1);
   hpath[len - 1] = 'h'; /* NAME.c -> NAME.h */
-  const char *slash = strrchr(hpath, '/');
-  snprintf(hname, sizeof hname, "%s", slash ? slash + 1 : hpath);
+  const char *slash = strrchr(hpath, '/'), *hname = slash ? slash + 1 : hpath;
   bg_strbuf h = {0}, c = {0};
   bg_export_c(s, prefix, hname, &h, &c);
   int rc = cli_write_text(hpath, &h);
