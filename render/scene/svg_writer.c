@@ -45,7 +45,7 @@ static void path_data(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it) 
  * letter of its word and the number ("path 2 loop=1" -> "path p2 l1"), and
  * each key of key=value ("flash conflict=1" -> "flash conflict c1"). */
 static void class_attr(bg_strbuf *b, const char *role) {
-  char word[64] = "";
+  char word[128] = "";
   bg_sb_puts(b, " class=\"");
   int first = 1;
   for (const char *p = role; *p;) {
