@@ -91,6 +91,22 @@ static void grow(double b[4], double x, double y, double pad) {
   if (y + pad > b[3]) b[3] = y + pad;
 }
 
+/* Miter joins reach past the points by up to miter limit (10) x width / 2. */
+void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) {
+  b[0] = b[1] = 1e300, b[2] = b[3] = -1e300;
+  if (it->kind == BG_ITEM_TEXT) {
+    double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th, ink = it->size;
+    b[0] = x - ink, b[1] = y - ink, b[2] = x + it->tw + ink, b[3] = y + it->th + ink;
+    return;
+  }
+  double pad = (it->round ? 0.5 : 5) * it->width;
+  for (int i = 0; i < it->nop; i++) {
+    const bg_scene_op *o = &s->op[it->opadr + i];
+    int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
+    for (int k = 0; k < npt; k++) grow(b, o->x[k], o->y[k], pad);
+  }
+}
+
 static void grow_item(const bg_scene *s, const bg_scene_item *it, double b[4]) {
   if (it->kind == BG_ITEM_TEXT) {
     double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;

@@ -72,6 +72,10 @@ bg_scene_item *bg_scene_text(bg_scene *s, const char *markup, double x, double y
 /* Bounding box of everything drawn (line widths and text boxes included);
  * returns 0 when the scene is empty. */
 int bg_scene_bbox(const bg_scene *s, double *x0, double *y0, double *x1, double *y1);
+/* A box that surely holds everything item it draws (text: its measured box
+ * plus its font size for ink beyond it; lines: their points plus what caps
+ * and miter joins can add): x0, y0, x1, y1. Empty paths give x0 > x1. */
+void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]);
 /* Moves everything so the bounding box starts at (margin, margin) and sets
  * the page size to the box plus margins. */
 void bg_scene_fit(bg_scene *s, double margin);

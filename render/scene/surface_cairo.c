@@ -127,7 +127,7 @@ static void replay_text(cairo_t *cr, PangoContext *ctx, const bg_scene *s,
   g_object_unref(lay);
 }
 
-void bg_surface_replay(cairo_t *cr, const bg_scene *s) {
+static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
   cairo_font_options_t *fo = neutral_font_options();
   cairo_set_font_options(cr, fo);
   cairo_font_options_destroy(fo);
@@ -137,6 +137,11 @@ void bg_surface_replay(cairo_t *cr, const bg_scene *s) {
   cairo_paint(cr);
   for (int i = 0; i < s->nitem; i++) {
     const bg_scene_item *it = &s->item[i];
+    if (clip) {
+      double b[4];
+      bg_scene_item_box(s, it, b);
+      if (b[2] < clip[0] || b[0] > clip[2] || b[3] < clip[1] || b[1] > clip[3]) continue;
+    }
     if (it->kind == BG_ITEM_TEXT) replay_text(cr, ctx, s, it);
     else replay_shape(cr, s, it);
   }
@@ -145,3 +150,9 @@ void bg_surface_replay(cairo_t *cr, const bg_scene *s) {
 
 const char *bg_surface_cairo_version(void) { return CAIRO_VERSION_STRING; }
 const char *bg_surface_pango_version(void) { return PANGO_VERSION_STRING; }
+
+void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL); }
+
+void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]) {
+  replay_items(cr, s, clip);
+}

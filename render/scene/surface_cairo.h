@@ -9,6 +9,10 @@
 /* Draws every item of s on cr (background first). Sets font options that
  * make text metrics identical on every surface. */
 void bg_surface_replay(cairo_t *cr, const bg_scene *s);
+/* The same, but only the items whose box (bg_scene_item_box) meets the
+ * rectangle clip (x0, y0, x1, y1, in s's points): what a clipped placement
+ * shows, at the cost of what it shows rather than of the whole scene. */
+void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]);
 /* A cairo_write_func_t appending to the bg_strbuf passed as closure. */
 cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigned int len);
 #endif

@@ -47,7 +47,9 @@ static void draw_place(cairo_t *cr, const bg_surface_place *p) {
   cairo_translate(cr, p->x, p->y);
   cairo_scale(cr, p->scale, p->scale);
   cairo_translate(cr, -p->sx, -p->sy);
-  bg_surface_replay(cr, p->scene);
+  /* a tile of a large diagram draws only what reaches into it */
+  const double clip[4] = {p->sx, p->sy, p->sx + p->sw, p->sy + p->sh};
+  bg_surface_replay_clipped(cr, p->scene, clip);
   cairo_restore(cr);
 }
 

@@ -548,6 +548,7 @@ bg_model *bg_model_compile(const bg_ast *ast, const bg_param_override *ov, int n
     return NULL;
   }
   move_to_arena(m);
+  bg_model_hash_names(m);
   return m;
 }
 

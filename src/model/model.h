@@ -194,6 +194,10 @@ typedef struct bg_model {
 #define BG_X_DECLARE(type, name, count) type *name;
   BG_MODEL_ARRAYS(BG_X_DECLARE)
 #undef BG_X_DECLARE
+  /* element names hashed (open addressing, elem_hashcap a power of two, -1
+   * empty) so bg_model_find_elem is O(1); NULL in hand-built models, which
+   * are then searched linearly */
+  int *elem_hash, elem_hashcap;
   bg_arena arena; /* owns every array and string above */
 } bg_model;
 
@@ -230,6 +234,8 @@ int bg_elem_out_bond(const bg_model *m, int elem);
 int bg_bond_other(const bg_model *m, int b, int e);
 /* Element id by name, or -1. */
 int bg_model_find_elem(const bg_model *m, const char *name);
+/* Builds m->elem_hash (bg_model_compile does; hand-built models may). */
+void bg_model_hash_names(bg_model *m);
 /* Bond id by user number, or -1. */
 int bg_model_find_bond(const bg_model *m, int number);
 const char *bg_method_name(int method);

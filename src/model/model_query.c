@@ -49,9 +49,34 @@ int bg_bond_other(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
 }
 
+static unsigned name_hash(const char *s) { /* FNV-1a */
+  unsigned h = 2166136261u;
+  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
+  return h;
+}
+
+void bg_model_hash_names(bg_model *m) {
+  int cap = 16;
+  while (cap < 2 * m->nelem + 2) cap *= 2;
+  m->elem_hash = bg_arena_alloc(&m->arena, (size_t)cap * sizeof *m->elem_hash);
+  m->elem_hashcap = cap;
+  for (int i = 0; i < cap; i++) m->elem_hash[i] = -1;
+  for (int e = 0; e < m->nelem; e++) {
+    unsigned h = name_hash(m->elem_name[e]) & (unsigned)(cap - 1);
+    while (m->elem_hash[h] >= 0) h = (h + 1) & (unsigned)(cap - 1);
+    m->elem_hash[h] = e;
+  }
+}
+
 int bg_model_find_elem(const bg_model *m, const char *name) {
-  for (int e = 0; e < m->nelem; e++)
-    if (strcmp(m->elem_name[e], name) == 0) return e;
+  if (!m->elem_hash) {
+    for (int e = 0; e < m->nelem; e++)
+      if (strcmp(m->elem_name[e], name) == 0) return e;
+    return -1;
+  }
+  unsigned mask = (unsigned)(m->elem_hashcap - 1);
+  for (unsigned h = name_hash(name) & mask; m->elem_hash[h] >= 0; h = (h + 1) & mask)
+    if (strcmp(m->elem_name[m->elem_hash[h]], name) == 0) return m->elem_hash[h];
   return -1;
 }
 
