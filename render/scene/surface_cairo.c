@@ -46,6 +46,43 @@ static void layout_size(PangoLayout *lay, double *w, double *h) {
   *h = (double)logical.height / PANGO_SCALE;
 }
 
+/* Measurements remembered for the process: a diagram measures every label,
+ * and each redraw (the report's highlights) and each report table measures
+ * the same strings again; pango's layout is the cost. Keyed by font, size
+ * and markup; open addressing, grown at half full. */
+typedef struct measured {
+  char *font, *markup; /* g_strdup'd; markup NULL: empty slot */
+  double size, w, h;
+} measured;
+static measured *memo;
+static size_t memo_cap, memo_n;
+
+static size_t key_hash(const char *font, double size, const char *markup) { /* FNV-1a */
+  size_t h = 1469598103934665603u;
+  for (const char *s = font; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211u;
+  h = (h ^ (size_t)(size * 64)) * 1099511628211u;
+  for (const char *s = markup; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211u;
+  return h;
+}
+
+static measured *memo_slot(measured *tab, size_t cap, const char *font, double size,
+                           const char *markup) {
+  size_t i = key_hash(font, size, markup) & (cap - 1);
+  while (tab[i].markup &&
+         (tab[i].size != size || strcmp(tab[i].markup, markup) || strcmp(tab[i].font, font)))
+    i = (i + 1) & (cap - 1);
+  return &tab[i];
+}
+
+static void memo_grow(void) {
+  size_t cap = memo_cap ? 2 * memo_cap : 1024;
+  measured *tab = g_new0(measured, cap);
+  for (size_t i = 0; i < memo_cap; i++)
+    if (memo[i].markup) *memo_slot(tab, cap, memo[i].font, memo[i].size, memo[i].markup) = memo[i];
+  g_free(memo);
+  memo = tab, memo_cap = cap;
+}
+
 /* One measuring context for the process; surfaces get their own contexts
  * with the same settings. */
 void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h) {
@@ -54,9 +91,15 @@ void bg_text_measure(const char *font, double size, const char *markup, double *
     ctx = pango_font_map_create_context(pango_cairo_font_map_get_default());
     setup_context(ctx);
   }
-  PangoLayout *lay = make_layout(ctx, font, size, markup);
-  layout_size(lay, w, h);
-  g_object_unref(lay);
+  if (2 * (memo_n + 1) > memo_cap) memo_grow();
+  measured *m = memo_slot(memo, memo_cap, font, size, markup);
+  if (!m->markup) {
+    PangoLayout *lay = make_layout(ctx, font, size, markup);
+    layout_size(lay, &m->w, &m->h);
+    g_object_unref(lay);
+    m->font = g_strdup(font), m->markup = g_strdup(markup), m->size = size, memo_n++;
+  }
+  *w = m->w, *h = m->h;
 }
 
 /* The baseline of markup's first line below the top of its logical box, in

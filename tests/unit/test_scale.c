@@ -1,0 +1,134 @@
+/* The lookups that keep large models linear give the same answers as the
+ * scans they replace: element names through the compile-time hash (and
+ * linearly in a hand-built model), remembered text measurements, the label
+ * obstacle grid once it has grown, and a placed scene that skips the items
+ * outside its clip rectangle writes exactly the PDF it wrote with those
+ * items absent. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+#include "harness.h"
+#include "lang/parse.h"
+#include "scene/surface.h"
+
+static void test_find_elem(void) {
+  bg_strbuf sb = {0};
+  bg_sb_puts(&sb, "model names\nSe U = 1\n1 j\n");
+  for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "R r%d = 1\n", i);
+  for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "bond j -> r%d\n", i);
+  bg_sb_puts(&sb, "bond U -> j\n");
+  const char *src = bg_sb_str(&sb);
+  bg_diags dg;
+  bg_diags_init(&dg, "names.bg", src, strlen(src));
+  bg_ast *ast = bg_parse_string("names.bg", src, strlen(src), &dg);
+  bg_model *m = ast ? bg_model_compile(ast, NULL, 0, &dg) : NULL;
+  bg_ast_free(ast);
+  OK(m && m->elem_hash);
+  if (m) {
+    int all = 1;
+    for (int e = 0; e < m->nelem; e++) all &= bg_model_find_elem(m, m->elem_name[e]) == e;
+    OK(all);
+    INT_EQ(bg_model_find_elem(m, "r300"), -1);
+    INT_EQ(bg_model_find_elem(m, ""), -1);
+    int *hash = m->elem_hash; /* a model without the table is searched linearly */
+    m->elem_hash = NULL;
+    INT_EQ(bg_model_find_elem(m, "r299"), bg_model_find_elem(m, "U") + 301);
+    m->elem_hash = hash;
+    INT_EQ(bg_model_find_elem(m, "r299"), bg_model_find_elem(m, "U") + 301);
+    bg_model_free(m);
+  }
+  bg_diags_free(&dg);
+  bg_sb_free(&sb);
+}
+
+static void test_measure_memo(void) {
+  double w1, h1, w2, h2, w3, h3, w4, h4;
+  bg_text_measure("DejaVu Sans", 11, "R : R<sub>1</sub>", &w1, &h1);
+  bg_text_measure("DejaVu Sans", 22, "R : R<sub>1</sub>", &w2, &h2);
+  bg_text_measure("DejaVu Sans", 11, "R : R<sub>12</sub>", &w3, &h3);
+  for (int i = 0; i < 3000; i++) { /* grow the table past several doublings */
+    char s[32];
+    snprintf(s, sizeof s, "%d", i);
+    bg_text_measure("DejaVu Sans", 8, s, &w4, &h4);
+  }
+  bg_text_measure("DejaVu Sans", 11, "R : R<sub>1</sub>", &w4, &h4);
+  OK(w1 > 0 && h1 > 0);
+  OK(w4 == w1 && h4 == h1);
+  OK(w2 > 1.9 * w1 && w2 < 2.1 * w1);
+  OK(w3 > w1);
+}
+
+/* Obstacles spread over many cells: scores after the grid has grown many
+ * times equal a direct count over every obstacle. */
+static void test_obstacle_grid(void) {
+  bg_diagram d;
+  memset(&d, 0, sizeof d);
+  enum { NB = 20000 };
+  static double box[NB][4];
+  unsigned st = 12345;
+  for (int i = 0; i < NB; i++) {
+    st = st * 1103515245u + 12345u;
+    double x = (st >> 8) % 20000, y = (st >> 3) % 3000;
+    box[i][0] = x, box[i][1] = y, box[i][2] = x + 5 + i % 40, box[i][3] = y + 4 + i % 7;
+    bg_obstacle_rect(&d, box[i][0], box[i][1], box[i][2], box[i][3]);
+  }
+  int same = 1;
+  for (int q = 0; q < 200; q++) {
+    double x = 100 * q, y = 15 * q, w = 60, h = 20;
+    int direct = 0;
+    for (int i = 0; i < NB; i++)
+      direct += x - w / 2 < box[i][2] && box[i][0] < x + w / 2 && y - h / 2 < box[i][3] &&
+                box[i][1] < y + h / 2;
+    same &= bg_place_score(&d, bg_v(x, y), w, h) == 10 * direct;
+  }
+  OK(same);
+  bg_obstacles_free(d.obs);
+}
+
+static void page_pdf(const bg_scene *s, double clip_x, bg_strbuf *out) {
+  bg_scene page;
+  bg_scene_init(&page, "DejaVu Sans");
+  page.width = 300, page.height = 300;
+  bg_surface_place pl = {s, clip_x, 0, 100, 100, 10, 10, 1};
+  bg_surface_page pg = {&page, &pl, 1};
+  OK(bg_surface_pdf_pages(&pg, 1, NULL, 0, NULL, out) == 0);
+  bg_scene_free(&page);
+}
+
+static void line_item(bg_scene *s, double x0, double x1, const char *role) {
+  bg_scene_item *it = bg_scene_begin(s, BG_ITEM_STROKE, "%s", role);
+  it->width = 1, it->color = (bg_rgba){0, 0, 0, 1};
+  bg_scene_move(s, x0, 50);
+  bg_scene_line(s, x1, 50);
+}
+
+static void test_clipped_place(void) {
+  bg_scene a, b;
+  bg_scene_init(&a, "DejaVu Sans"), bg_scene_init(&b, "DejaVu Sans");
+  a.width = b.width = 1000, a.height = b.height = 100;
+  line_item(&a, 10, 90, "inside"), line_item(&b, 10, 90, "inside");
+  line_item(&a, 500, 600, "far outside"); /* only in a */
+  bg_scene_text(&a, "far", 800, 50, 11, 0, 0, (bg_rgba){0, 0, 0, 1}, "far text");
+  bg_strbuf pa = {0}, pb = {0};
+  page_pdf(&a, 0, &pa);
+  page_pdf(&b, 0, &pb);
+  OK(pa.len == pb.len && !memcmp(pa.s, pb.s, pa.len));
+  bg_sb_clear(&pa), bg_sb_clear(&pb);
+  page_pdf(&a, 480, &pa); /* a's second line is inside this clip, b has none there */
+  page_pdf(&b, 480, &pb);
+  OK(pa.len != pb.len || memcmp(pa.s, pb.s, pa.len));
+  bg_sb_free(&pa), bg_sb_free(&pb);
+  double box[4];
+  bg_scene_item_box(&a, &a.item[0], box);
+  OK(box[0] <= 10 - 0.5 && box[2] >= 90 + 0.5 && box[1] <= 49.5 && box[3] >= 50.5);
+  bg_scene_free(&a), bg_scene_free(&b);
+}
+
+int main(void) {
+  test_find_elem();
+  test_measure_memo();
+  test_obstacle_grid();
+  test_clipped_place();
+  return bg_t_done();
+}
