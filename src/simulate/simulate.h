@@ -90,6 +90,9 @@ int bg_sim_verify_text(const bg_simresult *r, bg_strbuf *out);
 int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out);
 /* The SUNDIALS version bgdraw was built with ("6.4.1"); 6.4 and 7.x are supported. */
 const char *bg_simulate_sundials_version(void);
+/* The relative tolerance used when neither the options nor the model give
+ * one, for n unknowns: 1e-7 up to 100, 1e-7 sqrt(100 / n) above. */
+double bg_sim_default_rtol(int n);
 
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a
