@@ -38,7 +38,7 @@ PY
 }
 "$BGDRAW" examples/rlc.bg --verify -o "$tmp/rlc.json" -o "$tmp/rlc.csv" 2>"$tmp/rlc.err"; check "rlc: exit status" $?
 judge "$tmp/rlc.json" "$tmp/rlc.csv" 0; check "rlc: deviation near the true error, not flagged" $?
-grep -q "bgdraw: verification at rtol 1e-08, atol 1e-11: largest deviation" "$tmp/rlc.err"; check "rlc: stderr summary" $?
+grep -q "bgdraw: verification at rtol 1e-09, atol 1e-11: largest deviation" "$tmp/rlc.err"; check "rlc: stderr summary" $?
 ! grep -q "too loose" "$tmp/rlc.err"; check "rlc: no warning" $?
 sed 's/^simulate t_end = 2e-3, dt = 1e-6/simulate t_end = 2e-3, dt = 1e-6, rtol = 1e-2/' examples/rlc.bg >"$tmp/loose.bg"
 grep -q "rtol = 1e-2" "$tmp/loose.bg"; check "loose: model edited" $?

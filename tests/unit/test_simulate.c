@@ -158,7 +158,7 @@ static int crank_lagrange(const crank *c, const double *t, int n, double *phi) {
 /* The DAE (dependent inertia m, IDA) against the Lagrange equation: phi
  * within 1e-4 relative at every output time (absolute 1e-6 while |phi| is
  * below 0.01 rad, where a relative error means nothing), with tight
- * tolerances and with the defaults (rtol 1e-6). */
+ * tolerances and with the defaults (rtol bg_sim_default_rtol). */
 static void slider_crank_run(const bg_sim_opts *o) {
   fx f;
   const crank c = {0.05, 2, 0.05, 0.2, 5, 1, 0};
