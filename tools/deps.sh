@@ -3,7 +3,7 @@
 # Runs as root (or with sudo available). Idempotent and quick when nothing is missing.
 set -euo pipefail
 PKGS=(gcc make cmake pkg-config
-      libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev
+      libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev zlib1g-dev
       fonts-dejavu-core poppler-utils libxml2-utils python3
       python3-numpy python3-scipy octave  # these three run the Python and Octave exports in tests
       librsvg2-bin pandoc python3-sphinx  # SVG rasterisation check; contrib/ integrations

@@ -1,4 +1,4 @@
-/* Export outputs (-o NAME.c with NAME.h beside it, .py, .m; and
+/* Export outputs (-o NAME.c with NAME.h beside it, .py, .m, .fmu (cli_fmu.c); and
  * --equations c): the equation system is built again in export form
  * (params stay variables, bg_eqsys_build_export) and handed to src/export. */
 #include <errno.h>
@@ -88,8 +88,11 @@ int cli_write_export(run *r, const char *path, const char *format) {
   bg_eqsys *s = export_system(r, path ? path : "stdout");
   if (!s) return EXIT_MODEL;
   int rc;
+  char prefix[80];
+  prefix_of(r, prefix, sizeof prefix);
   if (path && bg_cli_is_stdout(path)) path = NULL; /* -o - : as --equations c */
-  if (!strcmp(format, "c") && path) rc = write_c(r, s, path);
+  if (!strcmp(format, "fmu")) rc = cli_write_fmu(s, prefix, path ? path : BG_CLI_STDOUT);
+  else if (!strcmp(format, "c") && path) rc = write_c(r, s, path);
   else {
     bg_strbuf sb = {0};
     rc = export_text(r, s, path, format, &sb);

@@ -134,7 +134,7 @@ static int write_one(run *r, const bg_cli_output *out) {
   if (is_diagram_format(out->format)) return write_diagram(r, out);
   if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
   if (!strcmp(out->format, "c") || !strcmp(out->format, "py") || !strcmp(out->format, "m") ||
-      !strcmp(out->format, "mo"))
+      !strcmp(out->format, "mo") || !strcmp(out->format, "fmu"))
     return cli_write_export(r, out->path, out->format);
   if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
   BG_FATAL("option parsing let through output format '%s'", out->format);

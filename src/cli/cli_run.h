@@ -70,6 +70,10 @@ int cli_write_depfile(run *r);
 /* Exports (cli_export.c): -o NAME.c (and NAME.h), .py, .m, or
  * format "c" to stdout when path is NULL (--equations c). */
 int cli_write_export(run *r, const char *path, const char *format);
+/* -o NAME.fmu (cli_fmu.c): the FMI 2.0 Model Exchange archive of the export
+ * build s, model identifier prefix; EXIT_MODEL for a DAE, EXIT_WRITE when the
+ * compiler is missing or fails. */
+int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path);
 /* --plot FILE and --report FILE.pdf. */
 int cli_write_plot(run *r);
 int cli_write_report(run *r);

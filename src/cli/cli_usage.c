@@ -8,7 +8,7 @@
 #include "base/fileio.h"
 #include "cli/cli_usage.h"
 
-static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", "mo", NULL};
+static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", "mo", "fmu", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
 static const char *const lin_forms[] = {"text", "latex", "json", "octave", "python", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};

@@ -124,7 +124,8 @@ static int wants_index(const bg_cli_opts *o) {
 static int wants_equations(const bg_cli_opts *o) {
   return wants_index(o) || o->equations || o->simulate || o->plot || wants_format(o, "tex") ||
          wants_format(o, "c") || wants_format(o, "csv") || wants_format(o, "py") ||
-         wants_format(o, "m") || wants_format(o, "mo");
+         wants_format(o, "m") || wants_format(o, "mo") ||
+         wants_format(o, "fmu");
 }
 
 static int wants_simulation(const bg_cli_opts *o) {

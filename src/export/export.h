@@ -30,4 +30,23 @@ void bg_export_octave(const bg_eqsys *s, const char *fname, bg_strbuf *out);
 /* A Modelica model: parameters, the states with start values, every bond
  * variable, and the bond graph's equations unsorted, with der(...). */
 void bg_export_modelica(const bg_eqsys *s, bg_strbuf *out);
+
+/* FMI 2.0 Model Exchange (ODE models only; the caller refuses a DAE).
+ * The GUID: a hash of text (the C export), "{8-4-4-4-12}" into buf of n >= 40. */
+void bg_export_fmu_guid(const char *text, size_t len, char *buf, size_t n);
+/* modelDescription.xml; the model identifier is the C prefix. */
+void bg_export_fmu_description(const bg_eqsys *s, const char *prefix, const char *guid,
+                               bg_strbuf *xml);
+/* The fmi2 functions over the C export whose header is header_name. */
+void bg_export_fmu_glue(const bg_eqsys *s, const char *prefix, const char *header_name,
+                        const char *guid, bg_strbuf *c);
+
+/* One member of a zip archive: its path in the archive and its bytes. */
+typedef struct bg_zip_entry {
+  const char *name;
+  const char *data;
+  size_t len;
+} bg_zip_entry;
+/* The archive of n entries, stored (not compressed), appended to out. */
+void bg_export_zip(const bg_zip_entry *e, int n, bg_strbuf *out);
 #endif
