@@ -211,7 +211,7 @@ void bg_cli_print_help(FILE *out) {
       "  .svg .pdf .png   annotated diagram        .json  analysis\n"
       "  .dot             graph with positions     .tex   equations in LaTeX\n"
       "  .c               equations as C           .csv   simulation results\n"
-      "  .m .py           the model for Octave/MATLAB, Python (docs/export.md)\n"
+      "  .m .py .mo       the model for Octave/MATLAB, Python, Modelica (export.md)\n"
       "  .fmu             FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)\n"
       "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
       "                      -o - (stdout); -T alone writes to stdout\n"
