@@ -30,6 +30,12 @@ check() {
           echo "FAIL $file: reports '${line#"# absent: "}'"; ok=0
         fi
         continue ;;
+      "# expect-at: "*) # a diagnostic in another file, or a note: given whole
+        n=$((n + 1))
+        if ! grep -qF -- "${line#"# expect-at: "}" "$err"; then
+          echo "FAIL $file: missing '${line#"# expect-at: "}'"; ok=0
+        fi
+        continue ;;
       "# expect: "*) ;;
       *) continue ;;
     esac

@@ -27,7 +27,7 @@ FUNCS = {
     "pulse": lambda x, w: 1.0 if 0 <= x < w else 0.0,
     "sat": lambda x, lo, hi: min(max(x, lo), hi),
 }
-TOKEN = re.compile(r"\(d[A-Za-z_][\w.]*/d[A-Za-z_][\w.]*\)|#\d+|[A-Za-z_][\w]*(?:\.[A-Za-z_]\w*)?'?"
+TOKEN = re.compile(r"\(d[A-Za-z_][\w.]*/d[A-Za-z_][\w.]*\)|#\d+|[A-Za-z_][\w]*(?:\.[A-Za-z_]\w*)*'?"
                    r"|\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|&&|\|\||[<>=!]=|\S")
 
 

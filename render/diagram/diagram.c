@@ -152,11 +152,23 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
   }
   bg_layout_in in = {d->nnode, d->nw, d->nh, pinned, px, py, ne, tail, head,
                      choose_engine(d), m->layout.rankdir, d->st.node_sep, d->st.rank_sep,
-                     d->st.splines, root, weight};
+                     d->st.splines, root, weight, 0, NULL, NULL, NULL};
+  /* submodel instances: one frame (cluster) each, around its elements */
+  int *cluster = NULL;
+  double *label_h = NULL;
+  if (m->ninst > 0) {
+    cluster = bg_xcalloc((size_t)d->nnode + 1, sizeof *cluster);
+    label_h = bg_xcalloc((size_t)m->ninst + 1, sizeof *label_h);
+    for (int i = 0; i < d->nnode; i++) cluster[i] = i < m->nelem ? m->elem_inst[i] : -1;
+    for (int k = 0; k < m->ninst; k++) label_h[k] = bg_frame_label_height(d);
+    in.ncluster = m->ninst, in.cluster = cluster, in.cluster_parent = m->inst_parent;
+    in.cluster_label_h = label_h;
+  }
   char err[256];
   int rc = bg_layout_run(&in, &d->lay, err, sizeof err);
-  if (rc) bg_diag_error(dg, (bg_srcloc){0, 0}, "%s", err);
+  if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
+  free(cluster), free(label_h);
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
@@ -413,7 +425,7 @@ static int check_highlight(const bg_diagram *d, bg_diags *dg) {
   const char *what = names[kind == 'p' ? 0 : kind == 'l' ? 1 : 2];
   int n = count_of(d->a, kind);
   if (k < 0 || k >= n) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "--highlight: no %s %d (the model has %d)", what, k + 1, n);
+    bg_diag_error(dg, (bg_srcloc){0}, "--highlight: no %s %d (the model has %d)", what, k + 1, n);
     return -1;
   }
   return 0;
@@ -520,6 +532,7 @@ static void node_fence(bg_diagram *d) {
 static void draw_all(bg_diagram *d) {
   unsigned show = d->show;
   int hk = d->o.highlight_kind;
+  bg_draw_frames(d);
   bg_obstacle_nodes(d);
   bg_layers_prepare(d);
   if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);

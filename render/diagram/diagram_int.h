@@ -144,6 +144,9 @@ void bg_draw_conflicts(bg_diagram *d);
 /* The direction (of 8) around node n farthest in angle from its bonds. */
 bg_vec bg_free_direction(const bg_diagram *d, int n);
 void bg_draw_legend(bg_diagram *d);
+/* instance frames (diagram_frames.c): one labelled box per submodel instance */
+double bg_frame_label_height(const bg_diagram *d);
+void bg_draw_frames(bg_diagram *d);
 /* Text for a path's or loop's legend line. */
 /* markup: the gain typeset (legend), else plain text (DOT). */
 void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);

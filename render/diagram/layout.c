@@ -156,6 +156,27 @@ static void read_edges(Agraph_t *g, Agedge_t **edges, const bg_layout_in *in,
   }
 }
 
+/* Clusters (dot): a subgraph "cluster_K" per cluster, nested as given, its
+ * label sized to the room the caller draws its own label in. */
+static Agraph_t **add_clusters(Agraph_t *g, const bg_layout_in *in, Agnode_t **nodes) {
+  Agraph_t **sub = bg_xcalloc((size_t)in->ncluster + 1, sizeof *sub);
+  for (int k = 0; k < in->ncluster; k++) {
+    char name[32];
+    snprintf(name, sizeof name, "cluster_%d", k);
+    int p = in->cluster_parent[k];
+    sub[k] = agsubg(p >= 0 && p < k ? sub[p] : g, name, 1);
+    /* a blank label as tall as ours: dot keeps room for it at the top */
+    agsafeset(sub[k], "label", " ", "");
+    set_num(sub[k], "fontsize", in->cluster_label_h[k]);
+    agsafeset(sub[k], "labeljust", "l", "");
+    agsafeset(sub[k], "margin", "10", "");
+  }
+  for (int i = 0; i < in->nnode; i++)
+    if (in->cluster[i] >= 0 && in->cluster[i] < in->ncluster)
+      agsubnode(sub[in->cluster[i]], nodes[i], 1);
+  return sub;
+}
+
 int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn) {
   memset(out, 0, sizeof *out);
   const char *engine = in->engine ? in->engine : "dot";
@@ -180,6 +201,8 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   Agraph_t *g = agopen("bg", Agdirected, NULL);
   graph_attrs(g, in, is_dot);
   Agnode_t **nodes = add_nodes(g, in);
+  int clusters = is_dot && in->ncluster > 0 && in->cluster;
+  Agraph_t **sub = clusters ? add_clusters(g, in, nodes) : NULL;
   unsigned char *rev = bg_xcalloc((size_t)in->nedge + 1, 1);
   Agedge_t **edges = add_edges(g, in, nodes, is_dot, rev);
   int rc = gvLayout(gvc, g, gv_engine);
@@ -193,6 +216,7 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   free(nodes);
   free(edges);
   free(rev);
+  free(sub);
   agclose(g);
   return rc == 0 ? 0 : -1;
 }

@@ -19,6 +19,12 @@ typedef struct bg_layout_in {
                                 from the root nodes (sources), not by edge direction */
   const int *weight;         /* nullable; dot: per edge, how much straighter and shorter
                                 it should be than the others (1 = normal) */
+  /* dot only: frames (Graphviz clusters) around groups of nodes, e.g. the
+   * instances of submodels; parents before children */
+  int ncluster;
+  const int *cluster;        /* nullable; per node: its innermost cluster, -1 none */
+  const int *cluster_parent; /* per cluster: the enclosing one, -1 none */
+  const double *cluster_label_h; /* per cluster: height kept for its label, points */
 } bg_layout_in;
 
 typedef struct bg_layout {

@@ -60,11 +60,11 @@ int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diag
   else if (!strcmp(format, "png")) rc = bg_surface_png_write(&d->scene, d->st.png_scale, out);
   else if (!strcmp(format, "dot")) bg_diagram_write_dot(d, out);
   else {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "unknown diagram format '%s' (svg, pdf, png, dot)", format);
+    bg_diag_error(dg, (bg_srcloc){0}, "unknown diagram format '%s' (svg, pdf, png, dot)", format);
     return BG_RENDER_ERROR;
   }
   if (rc) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the %s diagram", format);
+    bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the %s diagram", format);
     return BG_RENDER_ERROR;
   }
   return BG_RENDER_OK;
@@ -75,7 +75,7 @@ int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_dia
   bg_strbuf out = {0};
   int rc = bg_diagram_render(d, format, &out, dg);
   if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
   if (rc == BG_RENDER_OK && d->o.verbose)

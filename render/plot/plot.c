@@ -652,10 +652,10 @@ int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, 
   bg_strbuf out = {0};
   int rc = BG_RENDER_OK;
   if (render_format(sc, fmt, png_scale, &out) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the %s plot", fmt);
+    bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the %s plot", fmt);
     rc = BG_RENDER_ERROR;
   } else if (bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
   bg_sb_free(&out);
@@ -666,7 +666,7 @@ int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
                   const char *style_dir, const char *path, bg_diags *dg) {
   const char *fmt = bg_path_ext(path);
   if (strcmp(fmt, "svg") && strcmp(fmt, "pdf") && strcmp(fmt, "png")) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "unknown plot format '%s' for '%s' (svg, pdf, png)",
+    bg_diag_error(dg, (bg_srcloc){0}, "unknown plot format '%s' for '%s' (svg, pdf, png)",
                   fmt, path);
     return BG_RENDER_ERROR;
   }

@@ -24,6 +24,7 @@ static void body(rp_ctx *c) {
   rp_sec_highlights(c);
   if (c->failed) return;
   progress(c, "trace, tables, index");
+  rp_sec_components(c);
   rp_sec_trace(c);
   rp_sec_tables(c);
   rp_sec_index(c);
@@ -81,10 +82,10 @@ int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
   bg_strbuf pdf = {0};
   int rc = BG_RENDER_OK;
   if (assemble(&c, &pdf) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cairo could not draw the report");
+    bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the report");
     rc = BG_RENDER_ERROR;
   } else if (bg_write_file_atomic(path, pdf.s ? pdf.s : "", pdf.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   } else if (o && o->verbose) {
     fprintf(stderr, "bgdraw: wrote %s (%zu bytes)\n", path, pdf.len);

@@ -150,7 +150,7 @@ static const style_key *find_key(const char *name) {
 }
 
 static int parse_line(bg_style *st, char *line, const char *origin, int lineno, bg_diags *dg) {
-  bg_srcloc none = {0, 0};
+  bg_srcloc none = {0};
   /* '#' opens a comment at the start of a line or as a word of its own
    * ("x = 1  # note"); "#ff0000" is a colour */
   for (char *h = strchr(line, '#'); h; h = strchr(h + 1, '#')) {
@@ -221,7 +221,7 @@ int bg_style_load(bg_style *st, const char *name, const char *style_dir, bg_diag
   char *text = bg_read_file(path, NULL);
   if (!text) {
     if (!strcmp(name, "default")) return 0;
-    bg_srcloc none = {0, 0};
+    bg_srcloc none = {0};
     bg_diag_error(dg, none, "unknown style '%s' (cannot read '%s': %s)", name, path,
                   bg_file_strerror(errno));
     return -1;

@@ -22,7 +22,97 @@ void bg_diags_free(bg_diags *d) {
   free(d->items);
   d->items = NULL;
   d->n = d->cap = 0;
+  for (int i = 1; i < d->nsources; i++) {
+    free((char *)d->sources[i].path);
+    if (d->sources[i].owns_src) free((char *)d->sources[i].src);
+    free(d->sources[i].context_msg);
+  }
+  free(d->sources);
+  d->sources = NULL;
+  d->nsources = d->srccap = 0;
 }
+
+/* ---------------------------------------------------------------- sources */
+static char *dup_str(const char *s, size_t n) {
+  char *c = bg_xmalloc(n + 1);
+  if (n) memcpy(c, s, n);
+  c[n] = '\0';
+  return c;
+}
+
+static bg_diag_source *new_source(bg_diags *d, int *index) {
+  if (d->nsources == 0) d->nsources = 1; /* index 0: the model file, kept in d->file */
+  if (d->nsources >= d->srccap) {
+    d->srccap = d->srccap ? 2 * d->srccap : 16;
+    d->sources = bg_xrealloc(d->sources, (size_t)d->srccap * sizeof *d->sources);
+  }
+  *index = d->nsources++;
+  bg_diag_source *s = &d->sources[*index];
+  memset(s, 0, sizeof *s);
+  return s;
+}
+
+int bg_diags_add_source(bg_diags *d, const char *path, const char *src, size_t srclen) {
+  int k;
+  bg_diag_source *s = new_source(d, &k);
+  s->path = dup_str(path, strlen(path));
+  if (src) {
+    s->src = dup_str(src, srclen);
+    s->srclen = srclen;
+    s->owns_src = 1;
+  }
+  return k;
+}
+
+/* The path and text of source i (0 or unknown: the model file). */
+static bg_diag_source source_of(const bg_diags *d, int i) {
+  if (i > 0 && i < d->nsources) return d->sources[i];
+  bg_diag_source s = {d->file, d->src, d->srclen, 0, {0, 0, 0}, NULL};
+  return s;
+}
+
+int bg_diags_add_context(bg_diags *d, int of, bg_srcloc context, const char *msg) {
+  bg_diag_source base = source_of(d, of);
+  int k;
+  bg_diag_source *s = new_source(d, &k);
+  s->path = dup_str(base.path, strlen(base.path));
+  s->src = base.src;
+  s->srclen = base.srclen;
+  s->context = context;
+  s->context_msg = msg ? dup_str(msg, strlen(msg)) : NULL;
+  return k;
+}
+
+const char *bg_diags_path(const bg_diags *d, bg_srcloc loc) { return source_of(d, loc.file).path; }
+
+/* The same message at the same place of the same file: one mistake in a
+ * submodel used by several instances is reported once (with the first chain). */
+static int repeated(const bg_diags *d, bg_severity sev, bg_srcloc loc, const char *msg) {
+  if (loc.file == 0) return 0; /* only sources of used files and instances repeat */
+  const char *path = bg_diags_path(d, loc);
+  for (int i = 0; i < d->n; i++) {
+    const bg_diag *g = &d->items[i];
+    if (g->sev == sev && g->loc.line == loc.line && g->loc.col == loc.col &&
+        strcmp(g->msg, msg) == 0 && strcmp(bg_diags_path(d, g->loc), path) == 0)
+      return 1;
+  }
+  return 0;
+}
+
+/* The chain of instances source `file` is used from: calls fn with each
+ * context as a note, innermost first. Bounded by the number of sources. */
+static void each_context(const bg_diags *d, int file, void (*fn)(const bg_diag *, void *),
+                         void *ctx) {
+  for (int hops = 0; file > 0 && file < d->nsources && hops < d->nsources; hops++) {
+    const bg_diag_source *s = &d->sources[file];
+    if (s->context.line <= 0 || !s->context_msg) break;
+    bg_diag note = {BG_SEV_NOTE, s->context, s->context_msg};
+    fn(&note, ctx);
+    file = s->context.file;
+  }
+}
+
+/* ---------------------------------------------------------------- adding */
 
 static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va_list ap) {
   /* beyond the limit an error is only counted, and so are its notes */
@@ -39,6 +129,10 @@ static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va
   char *msg = bg_xmalloc((size_t)(n > 0 ? n : 0) + 1);
   vsnprintf(msg, (size_t)(n > 0 ? n : 0) + 1, fmt, ap2);
   va_end(ap2);
+  if (sev != BG_SEV_NOTE && (d->dropping = repeated(d, sev, loc, msg)) != 0) {
+    free(msg);
+    return;
+  }
   if (d->n == d->cap) {
     d->cap = d->cap ? d->cap * 2 : 16;
     d->items = bg_xrealloc(d->items, (size_t)d->cap * sizeof *d->items);
@@ -65,13 +159,16 @@ DEFINE_ADDER(bg_diag_note, BG_SEV_NOTE)
 typedef struct line_cursor {
   const char *p; /* start of line `line` */
   int line;
+  const char *src; /* the text it moves in (sources change: used files, instances) */
 } line_cursor;
 
-/* The text of source line `line` (1-based) without its line end. */
-static const char *find_line(const bg_diags *d, line_cursor *c, int line, size_t *len) {
-  if (!d->src || line < 1) return NULL;
-  const char *end = d->src + d->srclen;
-  if (!c->p || line < c->line) c->p = d->src, c->line = 1;
+/* The text of source line loc.line (1-based) without its line end. */
+static const char *find_line(const bg_diags *d, line_cursor *c, bg_srcloc loc, size_t *len) {
+  bg_diag_source s = source_of(d, loc.file);
+  int line = loc.line;
+  if (!s.src || line < 1) return NULL;
+  const char *end = s.src + s.srclen;
+  if (!c->p || line < c->line || c->src != s.src) c->p = s.src, c->line = 1, c->src = s.src;
   while (c->line < line) {
     const char *nl = memchr(c->p, '\n', (size_t)(end - c->p));
     if (!nl) return NULL;
@@ -116,34 +213,56 @@ static void print_caret_line(const bg_diag *g, const char *line, size_t len, FIL
 
 static void print_one(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE *out) {
   const char *bold = COLOR("\033[1m"), *sev = COLOR(sevcolor[g->sev]), *off = COLOR("\033[0m");
+  const char *path = bg_diags_path(d, g->loc);
   if (g->loc.line > 0)
-    fprintf(out, "%s%s:%d:%d:%s %s%s:%s %s\n", bold, d->file, g->loc.line, g->loc.col, off, sev,
+    fprintf(out, "%s%s:%d:%d:%s %s%s:%s %s\n", bold, path, g->loc.line, g->loc.col, off, sev,
             sevname[g->sev], off, g->msg);
   else
-    fprintf(out, "%s%s:%s %s%s:%s %s\n", bold, d->file, off, sev, sevname[g->sev], off, g->msg);
+    fprintf(out, "%s%s:%s %s%s:%s %s\n", bold, path, off, sev, sevname[g->sev], off, g->msg);
   size_t len = 0;
-  const char *line = find_line(d, c, g->loc.line, &len);
+  const char *line = find_line(d, c, g->loc, &len);
   if (line) print_caret_line(g, line, len, out);
+}
+
+typedef struct print_ctx { const bg_diags *d; line_cursor *c; FILE *out; } print_ctx;
+
+static void print_note(const bg_diag *g, void *ctx) {
+  print_ctx *p = ctx;
+  print_one(p->d, p->c, g, p->out);
+}
+
+/* A diagnostic, then the chain of instances its source is used from. */
+static void print_with_chain(const bg_diags *d, line_cursor *c, const bg_diag *g, FILE *out) {
+  print_one(d, c, g, out);
+  print_ctx p = {d, c, out};
+  each_context(d, g->loc.file, print_note, &p);
 }
 
 static void json_fields(bg_strbuf *b, const bg_diags *d, const bg_diag *g) {
   bg_sb_puts(b, "{\"file\":");
-  bg_sb_json_str(b, d->file);
+  bg_sb_json_str(b, bg_diags_path(d, g->loc));
   bg_sb_printf(b, ",\"line\":%d,\"column\":%d,\"severity\":\"%s\",\"message\":", g->loc.line,
                g->loc.col, sevname[g->sev]);
   bg_sb_json_str(b, g->msg);
 }
 
 /* One line: the diagnostic and the notes that follow it in d. */
+typedef struct json_ctx { bg_strbuf *b; const bg_diags *d; int n; } json_ctx;
+
+static void json_note(const bg_diag *g, void *ctx) {
+  json_ctx *j = ctx;
+  if (j->n++) bg_sb_putc(j->b, ',');
+  json_fields(j->b, j->d, g);
+  bg_sb_putc(j->b, '}');
+}
+
 static void print_json(const bg_diags *d, const bg_diag *g, FILE *out) {
   bg_strbuf b = {0};
   json_fields(&b, d, g);
   bg_sb_puts(&b, ",\"notes\":[");
-  for (const bg_diag *n = g + 1; n < d->items + d->n && n->sev == BG_SEV_NOTE; n++) {
-    if (n > g + 1) bg_sb_putc(&b, ',');
-    json_fields(&b, d, n);
-    bg_sb_putc(&b, '}');
-  }
+  json_ctx j = {&b, d, 0};
+  for (const bg_diag *n = g + 1; n < d->items + d->n && n->sev == BG_SEV_NOTE; n++) json_note(n, &j);
+  each_context(d, g->loc.file, json_note, &j); /* the instance chain */
   bg_sb_puts(&b, "]}\n");
   fputs(bg_sb_str(&b), out);
   bg_sb_free(&b);
@@ -151,6 +270,7 @@ static void print_json(const bg_diags *d, const bg_diag *g, FILE *out) {
 
 static int cmp_pos(const void *a, const void *b) {
   const bg_diag *x = *(bg_diag *const *)a, *y = *(bg_diag *const *)b;
+  if (x->loc.file != y->loc.file) return x->loc.file < y->loc.file ? -1 : 1;
   if (x->loc.line != y->loc.line) return x->loc.line < y->loc.line ? -1 : 1;
   if (x->loc.col != y->loc.col) return x->loc.col < y->loc.col ? -1 : 1;
   return x < y ? -1 : (x > y);
@@ -163,13 +283,13 @@ void bg_diags_print(const bg_diags *d, FILE *out) {
   for (int i = 0; i < d->n; i++)
     if (d->items[i].sev != BG_SEV_NOTE || i == 0) order[k++] = &d->items[i];
   qsort(order, (size_t)k, sizeof *order, cmp_pos);
-  line_cursor c = {NULL, 0};
+  line_cursor c = {NULL, 0, NULL};
   for (int i = 0; i < k; i++) {
     if (use_json) {
       print_json(d, order[i], out);
       continue;
     }
-    print_one(d, &c, order[i], out);
+    print_with_chain(d, &c, order[i], out);
     for (const bg_diag *g = order[i] + 1; g < d->items + d->n && g->sev == BG_SEV_NOTE; g++)
       print_one(d, &c, g, out);
   }

@@ -4,9 +4,12 @@
 #define BG_DIAG_H
 #include <stdio.h>
 
-/* A position in the model file; line and col count from 1 (col in bytes). */
+/* A position in a source; line and col count from 1 (col in bytes). `file`
+ * indexes the sources of the bg_diags (0: the model file given on the command
+ * line), so every position written {line, col} is in the model file. */
 typedef struct bg_srcloc {
   int line, col;
+  int file;
 } bg_srcloc;
 
 typedef enum { BG_SEV_ERROR, BG_SEV_WARNING, BG_SEV_NOTE } bg_severity;
@@ -17,17 +20,32 @@ typedef struct bg_diag {
   char *msg;     /* owned */
 } bg_diag;
 
+/* One source a position can point into. A file used by a submodel instance
+ * gets one source per instance (sharing the text) whose `context` says where
+ * the instance is: diagnostics print that chain as notes, innermost first. */
+typedef struct bg_diag_source {
+  const char *path; /* owned copy */
+  const char *src;  /* the text, for echoing lines; nullable */
+  size_t srclen;
+  int owns_src;     /* src is an owned copy */
+  bg_srcloc context; /* where this source is used from; context.line 0: nowhere */
+  char *context_msg; /* owned, e.g. "in instance M1 of DCMotor"; nullable */
+} bg_diag_source;
+
 typedef struct bg_diags {
   const char *file; /* as given on the command line; borrowed */
   const char *src;  /* the whole source text, for echoing lines; borrowed, nullable */
   size_t srclen;
+  bg_diag_source *sources; /* index 0 is the model file (file, src above) and unused here; owned */
+  int nsources, srccap;
   bg_diag *items; /* owned */
   int n, cap;
   int nerrors, nwarnings;
   int max_errors;  /* errors kept and printed at most (0: no limit); bg_diags_init sets
                       BG_DIAG_MAX_ERRORS */
   int dropped;     /* errors beyond max_errors: counted, not kept */
-  int dropping;    /* the last error was dropped, and so are its notes */
+  int dropping;    /* the last error was dropped (beyond the limit, or a repeat of an
+                      earlier one), and so are its notes */
 } bg_diags;
 
 /* The default error limit (--max-errors changes it; docs/cli.md). */
@@ -35,6 +53,13 @@ enum { BG_DIAG_MAX_ERRORS = 100 };
 
 void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen);
 void bg_diags_free(bg_diags *d);
+/* Adds a source (path and text are copied) and returns its index. */
+int bg_diags_add_source(bg_diags *d, const char *path, const char *src, size_t srclen);
+/* Adds a source sharing the text of source `of`, used from `context` (which
+ * points into another source) with the note text `msg`; returns its index. */
+int bg_diags_add_context(bg_diags *d, int of, bg_srcloc context, const char *msg);
+/* The path of the source a position points into. */
+const char *bg_diags_path(const bg_diags *d, bg_srcloc loc);
 void bg_diag_error(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void bg_diag_warning(bg_diags *d, bg_srcloc loc, const char *fmt, ...)

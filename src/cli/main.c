@@ -44,7 +44,7 @@ static int load_model(run *r) {
   bg_diags_init(&r->dg, name, r->src, r->srclen);
   r->dg.max_errors = r->max_errors;
   if (!r->src) {
-    bg_srcloc none = {0, 0};
+    bg_srcloc none = {0};
     bg_diag_error(&r->dg, none, "cannot read the model: %s", bg_file_strerror(errno));
     return -1;
   }

@@ -338,7 +338,7 @@ static int user_state_rows(bg_eqsys *s) {
 
 static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *inputs, int nu,
                        bg_diags *dg, int live) {
-  bg_srcloc none = {0, 0};
+  bg_srcloc none = {0};
   if (!a->complete) {
     bg_diag_error(dg, none, "the causality is incomplete: no equations can be derived");
     return NULL;

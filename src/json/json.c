@@ -43,6 +43,42 @@ static void string_list(bg_strbuf *o, char *const *s, int n) {
 static void item(bg_strbuf *o, int i) { bg_sb_puts(o, i ? ",\n    " : "\n    "); }
 static void end_list(bg_strbuf *o, int n) { bg_sb_puts(o, n ? "\n  ],\n" : "],\n"); }
 
+/* ---------------------------------------------------------------- components */
+static void inst_name_or_null(bg_strbuf *o, const bg_model *m, int inst) {
+  str_or_null(o, inst >= 0 ? m->inst_name[inst] : NULL);
+}
+
+/* The bonds as written that a flat bond joins through ports, outermost first. */
+static void put_bond_origin(bg_strbuf *o, const bg_model *m, int b) {
+  bg_sb_puts(o, ", \"origin\": [");
+  for (int k = 0; k < m->bond_nseg[b]; k++) {
+    int sg = m->bond_segadr[b] + k;
+    bg_sb_puts(o, k ? ", {\"instance\": " : "{\"instance\": ");
+    inst_name_or_null(o, m, m->seg_inst[sg]);
+    bg_sb_printf(o, ", \"bond\": %d}", m->seg_num[sg]);
+  }
+  bg_sb_putc(o, ']');
+}
+
+/* Submodel instances (only for a model that has them). */
+static void put_instances(bg_strbuf *o, const bg_model *m) {
+  if (!m->ninst) return;
+  key(o, "instances");
+  bg_sb_putc(o, '[');
+  for (int i = 0; i < m->ninst; i++) {
+    item(o, i);
+    bg_sb_puts(o, "{\"name\": ");
+    bg_sb_json_str(o, m->inst_name[i]);
+    bg_sb_puts(o, ", \"submodel\": ");
+    bg_sb_json_str(o, m->inst_def[i]);
+    bg_sb_puts(o, ", \"parent\": ");
+    inst_name_or_null(o, m, m->inst_parent[i]);
+    bg_sb_printf(o, ", \"bond_offset\": %d, \"bond_span\": %d}", m->inst_bondoff[i],
+                 m->inst_bondspan[i]);
+  }
+  end_list(o, m->ninst);
+}
+
 /* ---------------------------------------------------------------- sections */
 static void put_bonds(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   key(o, "bonds");
@@ -60,6 +96,7 @@ static void put_bonds(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
     str_or_null(o, bg_reason_name(a->bond_reason[b]));
     bg_sb_printf(o, ", \"step\": %d, \"conflict\": ", a->bond_step[b]);
     bool_val(o, a->bond_conflict[b]);
+    if (m->ninst) put_bond_origin(o, m, b);
     bg_sb_putc(o, '}');
   }
   end_list(o, m->nbond);
@@ -81,6 +118,10 @@ static void put_elements(bg_strbuf *o, const bg_model *m, const bg_analysis *a) 
     bg_sb_json_str(o, c == BG_CAUS_TRANSFER ? "none" : bg_caus_name(c));
     bg_sb_puts(o, ", \"inverted\": ");
     bool_val(o, a->elem_inverted[e]);
+    if (m->ninst) {
+      bg_sb_puts(o, ", \"instance\": ");
+      inst_name_or_null(o, m, m->elem_inst[e]);
+    }
     bg_sb_putc(o, '}');
   }
   end_list(o, m->nelem);
@@ -313,6 +354,7 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   key(o, "form_parameter_dependent");
   bool_val(o, a->form_parameter_dependent);
   bg_sb_puts(o, ",\n");
+  put_instances(o, m);
   /* what the listing caps left out (lower bounds when a search budget ran out) */
   key(o, "omitted");
   bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d, "

@@ -53,10 +53,25 @@ typedef struct bg_ast_option {
   bg_expr *value;
 } bg_ast_option;
 
+/* A named item of a list: a submodel's parameter (with its default), an
+ * instance's argument, a port. */
+typedef struct bg_ast_item {
+  const char *name;
+  bg_srcloc loc;      /* of the name */
+  bg_expr *value;     /* parameter default, argument; NULL for a port */
+  const char *text;   /* description; nullable */
+} bg_ast_item;
+
 typedef enum {
   BG_ST_MODEL, BG_ST_PARAM, BG_ST_INPUT, BG_ST_STATE, BG_ST_ELEMENT,
   BG_ST_BOND, BG_ST_CAUSALITY, BG_ST_SIMULATE, BG_ST_PLOT, BG_ST_LAYOUT,
-  BG_ST_OUTPUT, BG_ST_LINEARISE /* linear analysis: docs/linear.md */
+  BG_ST_OUTPUT, BG_ST_LINEARISE, /* linear analysis: docs/linear.md */
+  /* language version 2: components (flattened away before the model compiler) */
+  BG_ST_SUBMODEL, /* name, text = title, items = parameters; the body follows up to END */
+  BG_ST_PORT,     /* items = the ports */
+  BG_ST_END,      /* ends the SUBMODEL before it */
+  BG_ST_USE,      /* text = the path as written */
+  BG_ST_INSTANCE  /* kindword = the submodel, name = the instance, items = arguments */
 } bg_stkind;
 
 typedef enum { BG_ARROW_PLAIN, BG_ARROW_STROKE_HEAD /* ->| */, BG_ARROW_STROKE_TAIL /* |-> */ } bg_arrow;
@@ -85,6 +100,8 @@ typedef struct bg_ast_stmt {
   int nexprs;
   bg_ast_option *opts;
   int nopts;
+  bg_ast_item *items; /* SUBMODEL, PORT, INSTANCE */
+  int nitems;
 } bg_ast_stmt;
 
 typedef struct bg_ast {
@@ -92,5 +109,7 @@ typedef struct bg_ast {
   bg_ast_stmt *stmts; /* in file order */
   int nstmts;
   const char *path;   /* the model file's path as given */
+  int file;           /* its diagnostics source index (0: the model file) */
+  int has_components; /* a SUBMODEL, USE or INSTANCE statement: needs flattening */
 } bg_ast;
 #endif

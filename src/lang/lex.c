@@ -15,6 +15,7 @@ typedef struct lexer {
   bg_tokens *out;
   int cap;
   int line_has_tokens; /* a token since the last EOL */
+  int file;            /* the diagnostics source index of positions */
 } lexer;
 
 static int peek(const lexer *lx, size_t k) {
@@ -22,7 +23,7 @@ static int peek(const lexer *lx, size_t k) {
 }
 
 static bg_srcloc loc_at(const lexer *lx, size_t pos) {
-  bg_srcloc l = {lx->line, (int)(pos - lx->line_start) + 1};
+  bg_srcloc l = {lx->line, (int)(pos - lx->line_start) + 1, lx->file};
   return l;
 }
 
@@ -175,7 +176,12 @@ static void lex_eol(lexer *lx) {
 }
 
 void bg_lex_all(const char *src, size_t len, bg_arena *a, bg_diags *dg, bg_tokens *out) {
-  lexer lx = {src, len, 0, 1, 0, a, dg, out, 0, 0};
+  bg_lex_source(src, len, 0, a, dg, out);
+}
+
+void bg_lex_source(const char *src, size_t len, int file, bg_arena *a, bg_diags *dg,
+                   bg_tokens *out) {
+  lexer lx = {src, len, 0, 1, 0, a, dg, out, 0, 0, file};
   out->tok = NULL;
   out->n = 0;
   if (len >= 3 && memcmp(src, "\xEF\xBB\xBF", 3) == 0) lx.pos = lx.line_start = 3; /* BOM */

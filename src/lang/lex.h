@@ -38,6 +38,9 @@ typedef struct bg_tokens {
 
 /* Tokenizes src (len bytes). Strings live in arena a; errors go to dg. */
 void bg_lex_all(const char *src, size_t len, bg_arena *a, bg_diags *dg, bg_tokens *out);
+/* The same for source `file` of dg (a used file): positions carry that index. */
+void bg_lex_source(const char *src, size_t len, int file, bg_arena *a, bg_diags *dg,
+                   bg_tokens *out);
 void bg_lex_free(bg_tokens *t);
 /* Human name of a token kind for "expected ... near ..." messages. */
 const char *bg_lex_kind_name(bg_tkind k);

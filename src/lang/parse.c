@@ -26,6 +26,7 @@ typedef struct parser {
   int depth;
   bg_ast_stmt *stmts; /* malloc'd while parsing, copied into the arena at the end */
   int nstmts, cap;
+  int open_def;       /* index of the SUBMODEL statement whose body is being read, or -1 */
 } parser;
 
 static const char *const keywords[] = {"model", "param", "input", "state", "bond",
@@ -216,7 +217,22 @@ static void expect_close(parser *p, bg_tkind close, const char *pair, const bg_t
   next(p);
 }
 
-/* name_expr := NAME ['.' NAME | '(' [args] ')'] */
+const char *bg_ast_join(bg_arena *a, const char *prefix, const char *name) {
+  if (!prefix || !*prefix) return bg_arena_strdup(a, name);
+  size_t np = strlen(prefix), nn = strlen(name);
+  char *s = bg_arena_alloc(a, np + nn + 2);
+  memcpy(s, prefix, np);
+  s[np] = '.';
+  memcpy(s + np + 1, name, nn + 1);
+  return s;
+}
+
+static const char *join_dotted(parser *p, const char *a, const char *b) {
+  return bg_ast_join(&p->ast->arena, a, b);
+}
+
+/* name_expr := NAME {'.' NAME} | NAME '(' [args] ')'
+ * A dotted path's last part is the field, the rest (M1.La) its node. */
 static bg_expr *parse_name(parser *p) {
   const bg_token *t = next(p);
   bg_expr *e = new_expr(p, BG_EX_NAME, t);
@@ -226,6 +242,12 @@ static bg_expr *parse_name(parser *p) {
     e->kind = BG_EX_FIELD;
     e->field = f->text;
     e->field_loc = f->loc;
+    while (accept(p, BG_TK_DOT)) {
+      f = expect_name(p, "a name after '.'");
+      e->str = join_dotted(p, e->str, e->field);
+      e->field = f->text;
+      e->field_loc = f->loc;
+    }
   } else if (accept(p, BG_TK_LPAREN)) {
     const bg_token *open = &p->toks.tok[p->pos - 1];
     e->kind = BG_EX_CALL;
@@ -466,7 +488,16 @@ static bg_arrow arrow_of(bg_tkind k) {
          : k == BG_TK_ARROW_TAIL ? BG_ARROW_STROKE_TAIL : BG_ARROW_PLAIN;
 }
 
-/* bond_stmt := 'bond' [NUMBER] NAME ('->' | '->|' | '|->') NAME [options] */
+/* bond_end := NAME {'.' NAME}   (M1.a: port a of instance M1) */
+static const bg_token *parse_bond_end(parser *p, const char *what, const char **name) {
+  const bg_token *t = expect_name(p, what);
+  *name = t->text;
+  while (accept(p, BG_TK_DOT))
+    *name = join_dotted(p, *name, expect_name(p, "a port name after '.'")->text);
+  return t;
+}
+
+/* bond_stmt := 'bond' [NUMBER] bond_end ('->' | '->|' | '|->') bond_end [options] */
 static void parse_bond(parser *p, const bg_token *kw) {
   int number = 0;
   bg_srcloc numloc = kw->loc;
@@ -479,21 +510,22 @@ static void parse_bond(parser *p, const bg_token *kw) {
     number = (int)n->num;
     numloc = n->loc;
   }
-  const bg_token *a = expect_name(p, "the bond's first node");
+  const char *from, *to;
+  const bg_token *a = parse_bond_end(p, "the bond's first node", &from);
   const bg_token *ar = cur(p);
   if (ar->kind != BG_TK_ARROW && ar->kind != BG_TK_ARROW_HEAD && ar->kind != BG_TK_ARROW_TAIL) {
     char found[128];
     describe(ar, found, sizeof found);
-    fail_at(p, ar, "expected '->', '->|' or '|->' after '%s', found %s", a->text, found);
+    fail_at(p, ar, "expected '->', '->|' or '|->' after '%s', found %s", from, found);
   }
   next(p);
-  const bg_token *b = expect_name(p, "the bond's second node after the arrow");
+  const bg_token *b = parse_bond_end(p, "the bond's second node after the arrow", &to);
   bg_ast_stmt *s = new_stmt(p, BG_ST_BOND, kw);
   s->number = number;
   s->number_loc = numloc;
-  s->from = a->text;
+  s->from = from;
   s->from_loc = a->loc;
-  s->to = b->text;
+  s->to = to;
   s->to_loc = b->loc;
   s->arrow = arrow_of(ar->kind);
   parse_options(s, p, 0);
@@ -520,17 +552,24 @@ static void parse_plot(parser *p, const bg_token *kw) {
   parse_options(s, p, 0);
 }
 
+/* "KIND NAME" of an element or an instance: a statement named n, of kind word `kind`. */
+static int named_stmt(parser *p, bg_stkind k, const bg_token *kind, const bg_token *n,
+                      const char *what) {
+  if (in_list(n->text, keywords, COUNT(keywords)))
+    fail_at(p, n, "'%s' is a keyword and cannot name %s", n->text, what);
+  bg_ast_stmt *s = new_stmt(p, k, kind);
+  s->kindword = kind->text;
+  s->name = n->text;
+  s->name_loc = n->loc;
+  return p->nstmts - 1;
+}
+
 /* element_stmt := KIND NAME ['=' expr | ':' NAME '=' expr] [options] */
 static void parse_element(parser *p, const bg_token *kind) {
   const bg_token *n = expect_name(p, "an element name after the kind");
   /* kind words may name elements (lagrange_rlc has "R R = R0"); keywords may not */
-  if (in_list(n->text, keywords, COUNT(keywords)))
-    fail_at(p, n, "'%s' is a keyword and cannot name an element", n->text);
-  bg_ast_stmt *s = new_stmt(p, BG_ST_ELEMENT, kind);
-  int si = p->nstmts - 1;
-  s->kindword = kind->text;
-  s->name = n->text;
-  s->name_loc = n->loc;
+  int si = named_stmt(p, BG_ST_ELEMENT, kind, n, "an element");
+  bg_ast_stmt *s = &p->stmts[si];
   if (accept(p, BG_TK_ASSIGN)) {
     bg_expr *e = parse_expr(p);
     p->stmts[si].expr = e;
@@ -548,6 +587,122 @@ static void parse_element(parser *p, const bg_token *kind) {
   parse_options(&p->stmts[si], p, 0);
 }
 
+/* ---------------------------------------------------------------- components */
+/* item := NAME ['=' expr] [STRING]; `value`: 0 no value, 1 optional, 2 required */
+static void parse_item(parser *p, bg_ast_item *it, int value, const char *what) {
+  const bg_token *n = expect_name(p, what);
+  memset(it, 0, sizeof *it);
+  it->name = n->text;
+  it->loc = n->loc;
+  if (value == 2) expect(p, BG_TK_ASSIGN, "after the parameter name (write NAME = EXPR)");
+  if (value && (value == 2 || accept(p, BG_TK_ASSIGN))) it->value = parse_expr(p);
+  if (value != 2 && at(p, BG_TK_STRING)) it->text = next(p)->text;
+}
+
+/* items := item {',' item}, up to `close` (EOL when 0); stored in s. */
+static void parse_items(parser *p, bg_ast_stmt *s, bg_tkind close, int value, const char *what) {
+  bg_ast_item buf[256];
+  int n = 0;
+  if (close == BG_TK_EOL || !at(p, close)) do {
+      if (n == COUNT(buf)) fail_at(p, cur(p), "too many names in one list (at most %d)", COUNT(buf));
+      parse_item(p, &buf[n++], value, what);
+    } while (accept(p, BG_TK_COMMA));
+  s->items = bg_arena_alloc(&p->ast->arena, (size_t)(n ? n : 1) * sizeof *s->items);
+  memcpy(s->items, buf, (size_t)n * sizeof *s->items);
+  s->nitems = n;
+}
+
+/* A parenthesised list "(...)" after `open` was seen; items go to stmt si. */
+static void parse_paren_items(parser *p, int si, int value, const char *what) {
+  const bg_token *open = next(p);
+  bg_ast_stmt tmp = {0};
+  parse_items(p, &tmp, BG_TK_RPAREN, value, what);
+  expect_close(p, BG_TK_RPAREN, ")(", open);
+  p->stmts[si].items = tmp.items;
+  p->stmts[si].nitems = tmp.nitems;
+}
+
+/* submodel_stmt := 'submodel' NAME ['(' [item {',' item}] ')'] [STRING] */
+static void parse_submodel(parser *p, const bg_token *kw) {
+  if (p->open_def >= 0)
+    fail_at(p, kw, "a submodel cannot be defined inside another (submodel '%s' at line %d has "
+            "no 'end' yet)", p->stmts[p->open_def].name, p->stmts[p->open_def].loc.line);
+  const bg_token *n = expect_name(p, "the submodel's name after 'submodel'");
+  if (in_list(n->text, keywords, COUNT(keywords)) || in_list(n->text, kinds, COUNT(kinds)))
+    fail_at(p, n, "'%s' is a keyword or element kind and cannot name a submodel", n->text);
+  bg_ast_stmt *s = new_stmt(p, BG_ST_SUBMODEL, kw);
+  int si = p->nstmts - 1;
+  s->name = n->text;
+  s->name_loc = n->loc;
+  if (at(p, BG_TK_LPAREN)) parse_paren_items(p, si, 1, "a parameter name");
+  if (at(p, BG_TK_STRING)) p->stmts[si].text = next(p)->text;
+  p->open_def = si;
+  p->ast->has_components = 1;
+}
+
+/* end_stmt := 'end' [NAME]   (the name, when given, is the submodel's) */
+static void parse_end(parser *p, const bg_token *kw) {
+  const bg_ast_stmt *def = &p->stmts[p->open_def];
+  const char *name = def->name;
+  int line = def->loc.line;
+  new_stmt(p, BG_ST_END, kw);
+  p->open_def = -1; /* closed even when the name is wrong: no cascade of errors */
+  if (at(p, BG_TK_NAME) && strcmp(cur(p)->text, name) != 0)
+    fail_at(p, cur(p), "'end %s' closes submodel '%s' (line %d)", cur(p)->text, name, line);
+  accept(p, BG_TK_NAME);
+}
+
+/* use_stmt := 'use' STRING */
+static void parse_use(parser *p, const bg_token *kw) {
+  if (p->open_def >= 0) fail_at(p, kw, "'use' belongs at the top of a file, not inside a submodel");
+  const bg_token *f = expect(p, BG_TK_STRING, "(the file to use, in quotes) after 'use'");
+  bg_ast_stmt *s = new_stmt(p, BG_ST_USE, kw);
+  s->text = f->text;
+  s->name_loc = f->loc;
+  p->ast->has_components = 1;
+}
+
+/* instance_stmt := NAME NAME ['(' [NAME '=' expr {',' NAME '=' expr}] ')'] [options] */
+static void parse_instance(parser *p, const bg_token *def) {
+  int si = named_stmt(p, BG_ST_INSTANCE, def, next(p), "an instance");
+  if (at(p, BG_TK_LPAREN)) parse_paren_items(p, si, 2, "a parameter name");
+  parse_options(&p->stmts[si], p, 0);
+  p->ast->has_components = 1;
+}
+
+/* Statements of the model itself may not stand inside a submodel. */
+static void check_in_def(parser *p, const bg_token *t) {
+  static const char *const model_only[] = {"model", "causality", "simulate", "plot", "layout",
+                                           "linearise"};
+  if (p->open_def >= 0 && in_list(t->text, model_only, COUNT(model_only)))
+    fail_at(p, t, "'%s' is not allowed inside a submodel (it belongs to the model)", t->text);
+}
+
+/* After "WORD NAME": an instance has arguments, options or nothing; "Cap C1 = 1"
+ * stays a misspelled element kind. */
+static int instance_follows(const parser *p) {
+  bg_tkind k = p->toks.tok[p->pos + 1].kind;
+  return k == BG_TK_EOL || k == BG_TK_EOF || k == BG_TK_LPAREN || k == BG_TK_LBRACK;
+}
+
+/* The contextual words of version 2; 1 when the statement was one of them.
+ * They are not reserved, so no version 1 file changes meaning. */
+static int parse_component_stmt(parser *p, const bg_token *t) {
+  const char *w = t->text;
+  bg_tkind k = cur(p)->kind;
+  if (strcmp(w, "submodel") == 0 && k == BG_TK_NAME) parse_submodel(p, t);
+  else if (strcmp(w, "use") == 0 && k == BG_TK_STRING) parse_use(p, t);
+  else if (p->open_def >= 0 && strcmp(w, "end") == 0 && (k == BG_TK_EOL || k == BG_TK_EOF || k == BG_TK_NAME))
+    parse_end(p, t);
+  else if (p->open_def >= 0 && strcmp(w, "port") == 0 && k == BG_TK_NAME) {
+    parse_items(p, new_stmt(p, BG_ST_PORT, t), BG_TK_EOL, 0, "a port name");
+  } else if (k == BG_TK_NAME && !in_list(w, keywords, COUNT(keywords)) &&
+             !in_list(w, kinds, COUNT(kinds)) && instance_follows(p))
+    parse_instance(p, t);
+  else return 0;
+  return 1;
+}
+
 static void parse_statement(parser *p) {
   const bg_token *t = next(p);
   if (t->kind == BG_TK_NUMBER && (strcmp(t->text, "0") == 0 || strcmp(t->text, "1") == 0)) {
@@ -560,6 +715,8 @@ static void parse_statement(parser *p) {
     fail_at(p, t, "expected a statement (a keyword or an element kind), found %s", found);
   }
   const char *w = t->text;
+  check_in_def(p, t);
+  if (parse_component_stmt(p, t)) return;
   if (strcmp(w, "model") == 0) parse_model(p, t);
   else if (strcmp(w, "param") == 0)
     parse_definitions(p, t, BG_ST_PARAM, "a param name", "after the param name");
@@ -587,6 +744,13 @@ static void parse_line(parser *p) {
   int nstmts = p->nstmts;
   p->depth = 0;
   if (setjmp(p->on_error)) {
+    if (p->open_def >= nstmts) { /* a bad submodel header: keep the body's block open */
+      p->stmts[nstmts] = p->stmts[p->open_def];
+      p->open_def = nstmts++;
+    }
+    if (p->nstmts > nstmts && p->stmts[p->nstmts - 1].kind == BG_ST_END &&
+        p->open_def < 0) /* a bad 'end' line still closes */
+      p->stmts[nstmts++] = p->stmts[p->nstmts - 1];
     p->nstmts = nstmts;
     while (!at(p, BG_TK_EOL) && !at(p, BG_TK_EOF)) p->pos++;
     accept(p, BG_TK_EOL);
@@ -604,11 +768,11 @@ static void parse_line(parser *p) {
 /* A model is UTF-8 text without NUL bytes: anything else (a binary file, a
  * Latin-1 file) is refused at its first bad byte, instead of a flood of
  * errors, and no invalid text ever reaches pango and cairo. */
-static int is_text(const char *src, size_t len, bg_diags *dg) {
+static int is_text(const char *src, size_t len, int file, bg_diags *dg) {
   const char *why;
   size_t bad = bg_text_bad_byte(src, len, &why);
   if (bad == len) return 1;
-  bg_srcloc at = {1, 1};
+  bg_srcloc at = {1, 1, file};
   for (size_t i = 0; i < bad; i++) {
     if (src[i] == '\n') at.line++, at.col = 1;
     else at.col++;
@@ -619,15 +783,26 @@ static int is_text(const char *src, size_t len, bg_diags *dg) {
 }
 
 bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags *dg) {
+  return bg_parse_source(path, src, len, 0, dg);
+}
+
+bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file, bg_diags *dg) {
   bg_ast *ast = bg_xcalloc(1, sizeof *ast);
   ast->path = bg_arena_strdup(&ast->arena, path ? path : "");
+  ast->file = file;
   parser *p = bg_xcalloc(1, sizeof *p); /* jmp_buf is large; keep it off the stack */
   p->src = src;
   p->ast = ast;
   p->dg = dg;
-  if (!is_text(src, len, dg)) len = 0; /* parse nothing: one error, at the byte */
-  bg_lex_all(src, len, &ast->arena, dg, &p->toks);
+  if (!is_text(src, len, file, dg)) len = 0; /* parse nothing: one error, at the byte */
+  p->open_def = -1;
+  bg_lex_source(src, len, file, &ast->arena, dg, &p->toks);
   while (!at(p, BG_TK_EOF) && !bg_diags_full(dg)) parse_line(p);
+  if (p->open_def >= 0) {
+    const bg_ast_stmt *d = &p->stmts[p->open_def];
+    bg_diag_error(dg, d->loc, "submodel '%s' has no 'end' (its body runs to the end of the file)",
+                  d->name);
+  }
   ast->stmts = bg_arena_alloc(&ast->arena, (size_t)(p->nstmts ? p->nstmts : 1) * sizeof *ast->stmts);
   if (p->nstmts) memcpy(ast->stmts, p->stmts, (size_t)p->nstmts * sizeof *ast->stmts);
   ast->nstmts = p->nstmts;

@@ -11,6 +11,10 @@
  * bg_ast_free) even when there were errors; NULL only if dg has errors and
  * nothing could be parsed. */
 bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags *dg);
+/* The same for source `file` of dg (a used file; 0 is the model file). */
+bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file, bg_diags *dg);
 void bg_ast_free(bg_ast *ast);
+/* "prefix.name" in arena a (just name when prefix is empty): qualified names. */
+const char *bg_ast_join(bg_arena *a, const char *prefix, const char *name);
 
 #endif

@@ -167,7 +167,7 @@ static void declare_element(bg_build *b, const bg_ast_stmt *s) {
   m->elem_kind[e] = kind;
   m->elem_name[e] = bg_build_strdup(b, s->name);
   m->elem_loc[e] = s->name_loc;
-  m->elem_expr[e] = m->elem_init[e] = -1;
+  m->elem_expr[e] = m->elem_init[e] = m->elem_inst[e] = -1;
   if (m->nelem > b->elem_stmt_cap) {
     b->elem_stmt_cap = b->elem_stmt_cap ? 2 * b->elem_stmt_cap : 64;
     b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)b->elem_stmt_cap * sizeof *b->elem_stmt);
@@ -410,7 +410,7 @@ static int order_params(param_graph *g, int *order) {
 
 static void apply_overrides(bg_build *b, const bg_param_override *ov, int nov) {
   bg_model *m = b->m;
-  bg_srcloc none = {0, 0};
+  bg_srcloc none = {0};
   for (int i = 0; i < nov; i++) {
     const ns_entry *n = bg_build_lookup(b, ov[i].name);
     if (n && n->kind == NS_PARAM) {
@@ -516,8 +516,8 @@ static void build_free(bg_build *b) {
   free(b->elem_guessed);
 }
 
-bg_model *bg_model_compile(const bg_ast *ast, const bg_param_override *ov, int nov,
-                           bg_diags *dg) {
+bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, int nov,
+                                bg_diags *dg) {
   bg_model *m = bg_xcalloc(1, sizeof *m);
   bg_build b;
   memset(&b, 0, sizeof b);

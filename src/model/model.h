@@ -152,7 +152,22 @@ typedef struct bg_xnode {
   X(double, table_x, ntabledata)                                               \
   X(double, table_y, ntabledata)                                               \
   /* all expression nodes */                                                   \
-  X(bg_xnode, xnode, nxnode)
+  X(bg_xnode, xnode, nxnode)                                                   \
+  /* submodel instances (language version 2), a parent before its children;  \
+     flat names are qualified by inst_name ("M1.Ra" belongs to "M1") */        \
+  X(int, elem_inst, nelem)          /* instance the element belongs to; -1 */  \
+  X(const char *, inst_name, ninst) /* qualified: "M1", "M1.S" */              \
+  X(const char *, inst_def, ninst)  /* the submodel's name */                  \
+  X(int, inst_parent, ninst)        /* instance id, -1 = the model */          \
+  X(bg_srcloc, inst_loc, ninst)     /* of the instance's name where it is used */ \
+  X(int, inst_bondoff, ninst)       /* flat bond number = this + number inside */ \
+  X(int, inst_bondspan, ninst)      /* numbers bondoff+1 .. bondoff+span are its */ \
+  /* the bonds as written that each flat bond joins through ports (none for a \
+     version 1 model): the outermost first, then from tail to head */          \
+  X(int, bond_segadr, nbond)                                                   \
+  X(int, bond_nseg, nbond)                                                     \
+  X(int, seg_inst, nseg)            /* instance id, -1 = the model */          \
+  X(int, seg_num, nseg)             /* the bond's number in that scope */
 
 typedef struct bg_simspec {
   int present;
@@ -190,7 +205,7 @@ typedef struct bg_model {
   bg_linspec linear;
   int noutput, nlininput;
   int nelem, nbondref, nbond, nparam, ninput, nstate, nsignal, nplot, nplotexpr;
-  int ntable, ntabledata, nxnode;
+  int ntable, ntabledata, nxnode, ninst, nseg;
 #define BG_X_DECLARE(type, name, count) type *name;
   BG_MODEL_ARRAYS(BG_X_DECLARE)
 #undef BG_X_DECLARE

@@ -63,6 +63,10 @@ const char *bg_build_strdup(bg_build *b, const char *s);
 /* "a C", "an R", "an MTF": the kind with its article, for messages. */
 const char *bg_elem_kind_article(int kind);
 
+/* The version 1 compiler (model.c): bg_model_compile without flattening. */
+bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, int nov,
+                                bg_diags *dg);
+
 /* ---- model_expr.c */
 /* Compiles e into xnodes under the current context; returns the root (a
  * NaN placeholder after an error, already reported). */

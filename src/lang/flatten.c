@@ -1,0 +1,378 @@
+/* The flattener, part 1: the driver, name tables, used files and submodel
+ * definitions (their names, bond numbers and bond spans). Instances and
+ * expressions are in flatten_expand.c, ports and flat bonds in flatten_bonds.c. */
+#undef _POSIX_C_SOURCE
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/fileio.h"
+#include "base/strbuf.h"
+#include "lang/flatten_int.h"
+#include "lang/parse.h"
+
+enum { MAX_USE_DEPTH = 64 };
+
+void *bg_fl_push(void *arr, int *n, size_t size) {
+  int k = (*n)++;
+  if ((k & (k - 1)) == 0) /* 0, 1, 2, 4, ...: grow to the next power of two */
+    arr = bg_xrealloc(arr, (size_t)(k ? 2 * k : 1) * size);
+  memset((char *)arr + (size_t)k * size, 0, size);
+  return arr;
+}
+
+const char *bg_fl_strdup(fl_flattener *f, const char *s) {
+  return s ? bg_arena_strdup(&f->out->arena, s) : NULL;
+}
+
+const char *bg_fl_join(fl_flattener *f, const char *prefix, const char *name) {
+  return bg_ast_join(&f->out->arena, prefix, name);
+}
+
+/* ---------------------------------------------------------------- name tables */
+static unsigned hash_str(const char *s) {
+  unsigned h = 2166136261u;
+  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
+  return h;
+}
+
+static void scope_rehash(fl_scope *s) {
+  free(s->hash);
+  s->hashcap = 16;
+  while (s->hashcap < 2 * s->n + 2) s->hashcap *= 2;
+  s->hash = bg_xmalloc((size_t)s->hashcap * sizeof *s->hash);
+  for (int i = 0; i < s->hashcap; i++) s->hash[i] = -1;
+  for (int i = 0; i < s->n; i++) {
+    unsigned h = hash_str(s->e[i].name) & (unsigned)(s->hashcap - 1);
+    while (s->hash[h] >= 0) h = (h + 1) & (unsigned)(s->hashcap - 1);
+    s->hash[h] = i;
+  }
+}
+
+const sc_entry *bg_fl_lookup(const fl_scope *s, const char *name) {
+  if (!s->hash) return NULL;
+  unsigned h = hash_str(name) & (unsigned)(s->hashcap - 1);
+  for (; s->hash[h] >= 0; h = (h + 1) & (unsigned)(s->hashcap - 1))
+    if (strcmp(s->e[s->hash[h]].name, name) == 0) return &s->e[s->hash[h]];
+  return NULL;
+}
+
+const sc_entry *bg_fl_declare(fl_scope *s, const char *name, int kind, int index, bg_srcloc loc) {
+  const sc_entry *old = bg_fl_lookup(s, name);
+  if (old) return old;
+  *FL_PUSH(s->e, s->n) = (sc_entry){name, kind, index, loc};
+  if (2 * s->n + 2 > s->hashcap) scope_rehash(s);
+  else {
+    unsigned h = hash_str(name) & (unsigned)(s->hashcap - 1);
+    while (s->hash[h] >= 0) h = (h + 1) & (unsigned)(s->hashcap - 1);
+    s->hash[h] = s->n - 1;
+  }
+  return NULL;
+}
+
+void bg_fl_scope_free(fl_scope *s) {
+  free(s->e);
+  free(s->hash);
+  memset(s, 0, sizeof *s);
+}
+
+const char *bg_fl_suggest(const fl_scope *s, const char *name, unsigned mask) {
+  const char *best = NULL;
+  int bestd = strlen(name) < 3 ? 2 : 3;
+  for (int i = 0; i < s->n; i++) {
+    if (!(mask & (1u << s->e[i].kind))) continue;
+    int d = bg_edit_distance(name, s->e[i].name);
+    if (d > 0 && d < bestd) { bestd = d; best = s->e[i].name; }
+  }
+  return best;
+}
+
+/* ---------------------------------------------------------------- definitions */
+static int def_is_model(const fl_def *d) { return d->head == NULL; }
+
+/* Declares one name of a def. In the model's own scope only clashes with
+ * instances are reported here; the model compiler reports the others with
+ * its version 1 messages. */
+static void def_declare(fl_flattener *f, fl_def *d, const char *name, int kind, int index,
+                        bg_srcloc loc) {
+  const sc_entry *old = bg_fl_declare(&d->names, name, kind, index, loc);
+  if (!old) return;
+  if (def_is_model(d) && kind != SC_INST && old->kind != SC_INST) return;
+  bg_diag_error(f->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
+}
+
+static void def_declare_stmt(fl_flattener *f, fl_def *d, const bg_ast_stmt *s, int k) {
+  switch (s->kind) {
+  case BG_ST_ELEMENT: def_declare(f, d, s->name, SC_ELEM, k, s->name_loc); break;
+  case BG_ST_PARAM: def_declare(f, d, s->name, SC_PARAM, k, s->name_loc); break;
+  case BG_ST_INPUT: def_declare(f, d, s->name, SC_INPUT, k, s->name_loc); break;
+  case BG_ST_STATE: def_declare(f, d, s->name, SC_STATE, k, s->name_loc); break;
+  case BG_ST_INSTANCE: def_declare(f, d, s->name, SC_INST, k, s->name_loc); break;
+  case BG_ST_PORT:
+    for (int i = 0; i < s->nitems; i++) {
+      def_declare(f, d, s->items[i].name, SC_PORT, d->nports, s->items[i].loc);
+      *FL_PUSH(d->port_stmt, d->nports) = s;
+      d->port_item = bg_xrealloc(d->port_item, (size_t)d->nports * sizeof *d->port_item);
+      d->port_item[d->nports - 1] = i;
+    }
+    break;
+  default: break;
+  }
+}
+
+typedef struct numbered { int num, order; } numbered;
+
+static int cmp_numbered(const void *a, const void *b) {
+  const numbered *x = a, *y = b;
+  if (x->num != y->num) return x->num < y->num ? -1 : 1;
+  return x->order - y->order;
+}
+
+/* Bond numbers in the scope as in version 1: explicit numbers unique, the
+ * others the smallest free numbers in file order. */
+static void number_def_bonds(fl_flattener *f, fl_def *d) {
+  const bg_ast_stmt **bonds = NULL;
+  int n = 0, nexp = 0;
+  for (int i = 0; i < d->nstmt; i++)
+    if (d->stmt[i]->kind == BG_ST_BOND) *FL_PUSH(bonds, n) = d->stmt[i];
+  numbered *exp = bg_xmalloc((size_t)(n ? n : 1) * sizeof *exp);
+  for (int k = 0; k < n; k++)
+    if (bonds[k]->number) exp[nexp++] = (numbered){bonds[k]->number, k};
+  qsort(exp, (size_t)nexp, sizeof *exp, cmp_numbered);
+  for (int i = 1; i < nexp; i++)
+    if (exp[i].num == exp[i - 1].num)
+      bg_diag_error(f->dg, bonds[exp[i].order]->number_loc, "bond %d already defined at line %d",
+                    exp[i].num, bonds[exp[i - 1].order]->loc.line);
+  d->bondnum = bg_xmalloc((size_t)(n ? n : 1) * sizeof *d->bondnum);
+  int next = 1, e = 0;
+  d->maxnum = nexp ? exp[nexp - 1].num : 0;
+  for (int k = 0; k < n; k++) {
+    if (bonds[k]->number) { d->bondnum[k] = bonds[k]->number; continue; }
+    for (;;) { /* skip explicit numbers */
+      while (e < nexp && exp[e].num < next) e++;
+      if (e < nexp && exp[e].num == next) next++;
+      else break;
+    }
+    d->bondnum[k] = next++;
+    if (d->bondnum[k] > d->maxnum) d->maxnum = d->bondnum[k];
+  }
+  d->nbonds = n;
+  free(exp);
+  free(bonds);
+}
+
+void bg_fl_def_names(fl_flattener *f, int di) {
+  fl_def *d = &f->defs[di];
+  if (d->names_built) return;
+  d->names_built = 1;
+  if (d->head)
+    for (int i = 0; i < d->head->nitems; i++)
+      def_declare(f, d, d->head->items[i].name, SC_ARG, i, d->head->items[i].loc);
+  for (int i = 0; i < d->nstmt; i++) def_declare_stmt(f, d, d->stmt[i], i);
+  number_def_bonds(f, d);
+}
+
+/* ---------------------------------------------------------------- files */
+static const char *dir_part(fl_flattener *f, const char *path) {
+  const char *slash = strrchr(path, '/');
+  if (!slash) return ".";
+  return bg_arena_strndup(&f->out->arena, path, (size_t)(slash - path + (slash == path)));
+}
+
+/* "dir/name" unless name is absolute or dir is "." */
+static const char *path_in(fl_flattener *f, const char *dir, const char *name) {
+  if (name[0] == '/' || strcmp(dir, ".") == 0) return bg_fl_strdup(f, name);
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "%s%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/", name);
+  const char *s = bg_fl_strdup(f, bg_sb_str(&sb));
+  bg_sb_free(&sb);
+  return s;
+}
+
+static const char *canonical(fl_flattener *f, const char *path) {
+  char *r = realpath(path, NULL);
+  const char *k = bg_fl_strdup(f, r ? r : path);
+  free(r);
+  return k;
+}
+
+static void load_file(fl_flattener *f, int fi, int depth);
+
+static void report_use_cycle(fl_flattener *f, int from, int to, bg_srcloc loc) {
+  bg_strbuf sb = {0};
+  int start = to;
+  for (int i = start; i <= from; i++)
+    if (f->files[i].loading) bg_sb_printf(&sb, "%s -> ", f->files[i].path);
+  bg_sb_puts(&sb, f->files[to].path);
+  bg_diag_error(f->dg, loc, "cyclic use: %s", bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
+/* A `use` statement of file fi: reads, parses and loads the file once. */
+static void use_file(fl_flattener *f, int fi, const bg_ast_stmt *s, int depth) {
+  const char *path = path_in(f, dir_part(f, f->files[fi].path), s->text);
+  const char *key = canonical(f, path);
+  for (int i = 0; i < f->nfiles; i++) {
+    if (strcmp(f->files[i].key, key) != 0) continue;
+    if (f->files[i].loading) report_use_cycle(f, fi, i, s->name_loc);
+    return; /* loaded already: its submodels are known */
+  }
+  if (depth >= MAX_USE_DEPTH) {
+    bg_diag_error(f->dg, s->name_loc, "'use' nested too deeply (more than %d files)", MAX_USE_DEPTH);
+    return;
+  }
+  size_t len = 0;
+  char *src = bg_read_file(path, &len);
+  if (!src) {
+    bg_diag_error(f->dg, s->name_loc, "cannot read used file '%s' (%s): %s", s->text, path,
+                  bg_file_strerror(errno));
+    return;
+  }
+  int srcidx = bg_diags_add_source(f->dg, path, src, len);
+  bg_ast *ast = bg_parse_source(path, src, len, srcidx, f->dg);
+  free(src);
+  fl_file *nf = FL_PUSH(f->files, f->nfiles);
+  nf->path = path;
+  nf->key = key;
+  const char *sub = dir_part(f, s->text);
+  nf->dir_rel = strcmp(sub, ".") == 0 ? f->files[fi].dir_rel : path_in(f, f->files[fi].dir_rel, sub);
+  nf->ast = ast;
+  load_file(f, f->nfiles - 1, depth + 1);
+}
+
+static void add_def(fl_flattener *f, int fi, const bg_ast_stmt *head, const bg_ast_stmt **body,
+                    int n) {
+  const sc_entry *old = bg_fl_declare(&f->defnames, head->name, 0, f->ndefs, head->name_loc);
+  if (old) {
+    bg_diag_error(f->dg, head->name_loc, "submodel '%s' already defined at %s:%d", head->name,
+                  bg_diags_path(f->dg, old->loc), old->loc.line);
+    free(body);
+    return;
+  }
+  fl_def *d = FL_PUSH(f->defs, f->ndefs);
+  d->name = head->name;
+  d->head = head;
+  d->stmt = body;
+  d->nstmt = n;
+  d->file = fi;
+}
+
+/* Collects the file's definitions (and, for the model file, its own
+ * statements into defs[0]); loads the files it uses. */
+static void load_file(fl_flattener *f, int fi, int depth) {
+  const bg_ast *ast = fi == 0 ? f->files[0].ast : f->files[fi].ast;
+  f->files[fi].loading = 1;
+  const bg_ast_stmt *head = NULL, **body = NULL;
+  int nbody = 0;
+  for (int i = 0; i < ast->nstmts; i++) {
+    const bg_ast_stmt *s = &ast->stmts[i];
+    if (s->kind == BG_ST_SUBMODEL) { head = s; body = NULL; nbody = 0; }
+    else if (s->kind == BG_ST_END) {
+      if (head) add_def(f, fi, head, body, nbody);
+      head = NULL;
+    } else if (head) *FL_PUSH(body, nbody) = s;
+    else if (s->kind == BG_ST_USE) use_file(f, fi, s, depth);
+    else if (fi == 0) *FL_PUSH(f->defs[0].stmt, f->defs[0].nstmt) = s;
+    else
+      bg_diag_error(f->dg, s->loc, "a used file holds only submodels and 'use' lines; this "
+                    "statement belongs in a model file");
+  }
+  if (head) free(body); /* no END: reported by the parser */
+  f->files[fi].loading = 0;
+}
+
+/* ---------------------------------------------------------------- driver */
+static bg_flat *make_result(fl_flattener *f) {
+  bg_flat *r = bg_xcalloc(1, sizeof *r);
+  r->ast = f->out;
+  f->out = NULL;
+  r->ast->stmts = bg_arena_alloc(&r->ast->arena, (size_t)(f->nstmts ? f->nstmts : 1) *
+                                                      sizeof *r->ast->stmts);
+  r->inst = bg_xmalloc((size_t)(f->ninst ? f->ninst : 1) * sizeof *r->inst);
+  for (int i = 0; i < f->ninst; i++) r->inst[i] = f->inst[i].pub;
+  r->ninst = f->ninst;
+  r->elem_inst = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->elem_inst);
+  r->bond_segadr = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_segadr);
+  r->bond_nseg = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_nseg);
+  r->seg = bg_xmalloc((size_t)(f->nsegs + 1) * sizeof *r->seg);
+  for (int i = 0; i < f->nstmts; i++) {
+    const bg_ast_stmt *s = &f->stmts[i];
+    if ((int)s->kind < 0) continue; /* a bond segment joined into another statement */
+    r->ast->stmts[r->ast->nstmts++] = *s;
+    if (s->kind == BG_ST_ELEMENT) r->elem_inst[r->nelem++] = f->stmt_inst[i];
+    if (s->kind != BG_ST_BOND) continue;
+    int c = f->slot_chain[i];
+    r->bond_segadr[r->nbond] = r->nseg;
+    for (int k = 0; k < f->chain_n[c]; k++) { /* outermost first, then tail to head */
+      const fl_seg *g = &f->segs[f->chain_segs[f->chain_adr[c] + k]];
+      r->seg[r->nseg++] = (bg_flat_segment){g->inst, g->num};
+    }
+    r->bond_nseg[r->nbond++] = f->chain_n[c];
+  }
+  return r;
+}
+
+static void flattener_free(fl_flattener *f) {
+  for (int i = 0; i < f->ndefs; i++) {
+    bg_fl_scope_free(&f->defs[i].names);
+    free(f->defs[i].stmt);
+    free(f->defs[i].port_stmt);
+    free(f->defs[i].port_item);
+    free(f->defs[i].bondnum);
+  }
+  for (int i = 1; i < f->nfiles; i++) bg_ast_free(f->files[i].ast);
+  free(f->files);
+  free(f->defs);
+  bg_fl_scope_free(&f->defnames);
+  free(f->inst);
+  free(f->ports);
+  free(f->segs);
+  free(f->fields);
+  free(f->bondvars);
+  free(f->stmts);
+  free(f->stmt_inst);
+  free(f->slot_chain);
+  free(f->chain_adr);
+  free(f->chain_n);
+  free(f->chain_segs);
+  if (f->out) bg_ast_free(f->out);
+}
+
+bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
+  fl_flattener f;
+  memset(&f, 0, sizeof f);
+  f.dg = dg;
+  int errors0 = dg->nerrors;
+  f.out = bg_xcalloc(1, sizeof *f.out);
+  f.out->path = bg_arena_strdup(&f.out->arena, ast->path ? ast->path : "");
+  f.out->file = ast->file;
+  fl_file *root = FL_PUSH(f.files, f.nfiles);
+  root->path = f.out->path;
+  root->key = canonical(&f, root->path);
+  root->dir_rel = ".";
+  root->ast = (bg_ast *)ast; /* borrowed: never freed here */
+  fl_def *model = FL_PUSH(f.defs, f.ndefs);
+  model->name = "the model";
+  load_file(&f, 0, 0);
+  for (int i = 0; i < f.ndefs; i++) bg_fl_def_names(&f, i);
+  for (int i = 1; i < f.ndefs && dg->nerrors == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
+  if (dg->nerrors == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});
+  if (dg->nerrors == errors0) bg_fl_expand_model(&f, 0);
+  if (dg->nerrors == errors0) bg_fl_chain_bonds(&f);
+  bg_flat *r = dg->nerrors == errors0 ? make_result(&f) : NULL;
+  flattener_free(&f);
+  return r;
+}
+
+void bg_flat_free(bg_flat *r) {
+  if (!r) return;
+  bg_ast_free(r->ast);
+  free(r->inst);
+  free(r->elem_inst);
+  free(r->bond_segadr);
+  free(r->bond_nseg);
+  free(r->seg);
+  free(r);
+}
