@@ -243,7 +243,7 @@ int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const 
   sc.title = bg_arena_strdup(&sc.arena, title);
   int rc = BG_RENDER_ERROR;
   if (bg_plot_linear_scene(m, l, kind, &st, WIDTH, &sc) != 0)
-    bg_diag_error(dg, (bg_srcloc){0, 0}, "no %s for '%s': %s", what[kind], path,
+    bg_diag_error(dg, (bg_srcloc){0}, "no %s for '%s': %s", what[kind], path,
                   !l->reduced && kind == BG_PLOT_STEP ? "no state space (descriptor form only)"
                   : l->nu * l->ny == 0 ? "no inputs or no outputs" : "the responses could not be computed");
   else rc = bg_plot_write_scene(&sc, path, st.png_scale, dg);
