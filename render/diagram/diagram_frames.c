@@ -5,6 +5,8 @@
  * together. Bonds through a port cross the frame; causal paths and loops are
  * drawn over it. A version 1 model has no frames. */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "diagram/diagram_int.h"
 

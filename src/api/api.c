@@ -147,7 +147,7 @@ int bg_api_render(bg_api_model *m, const char *format, const char *style, const 
   bg_diags_init(&dg, "bgdraw", NULL, 0);
   *data = NULL;
   if (show && bg_show_parse(show, &o.show) != 0)
-    bg_diag_error(&dg, (bg_srcloc){0, 0}, "unknown layer in show list '%s'", show);
+    bg_diag_error(&dg, (bg_srcloc){0}, "unknown layer in show list '%s'", show);
   bg_diagram *d = dg.nerrors ? NULL : bg_diagram_build(m->model, &m->analysis, &o, &dg);
   bg_strbuf sb = {0};
   int rc = d ? bg_diagram_render(d, format, &sb, &dg) : -1;
