@@ -210,7 +210,7 @@ void bg_fl_chain_bonds(fl_flattener *f) {
   if (f->dg->nerrors > errors0) return;
   /* the statements are copied when chains fill their slots: keep the originals */
   bg_ast_stmt *orig = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *orig);
-  memcpy(orig, f->stmts, (size_t)f->nstmts * sizeof *orig);
+  if (f->nstmts) memcpy(orig, f->stmts, (size_t)f->nstmts * sizeof *orig); /* stmts is NULL when empty */
   for (int g = 0; g < f->nsegs; g++) f->segs[g].stmt = &orig[f->segs[g].slot];
   f->slot_chain = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *f->slot_chain);
   for (int i = 0; i < f->nstmts; i++) f->slot_chain[i] = -1;
