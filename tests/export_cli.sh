@@ -14,15 +14,7 @@
 # Usage: bash tests/export_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 BGDRAW=${1:?usage: export_cli.sh PATH_TO_BGDRAW}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-check() { # check NAME STATUS
-  if [ "$2" -ne 0 ]; then echo "FAIL $1"; fail=$((fail + 1)); else echo "ok   $1"; fi
-}
-cmp_csv() { python3 tests/export/compare_csv.py "$@"; }
-# tight tolerances on both sides, so the comparison sees the equations, not the solvers
-sed 's/^simulate .*/&, rtol = 1e-10/' examples/rlc.bg >"$tmp/rlc.bg"
+. tests/export/harness.sh
 sed 's/^simulate .*/&, rtol = 1e-10/' examples/hydraulic_bridge.bg >"$tmp/hb.bg"
 "$BGDRAW" "$tmp/rlc.bg" -q --simulate -o "$tmp/rlc.csv"; check "rlc simulates" $?
 "$BGDRAW" "$tmp/rlc.bg" -q --simulate --set R0=25 -o "$tmp/rlc_r25.csv"; check "rlc --set R0=25 simulates" $?

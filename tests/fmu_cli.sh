@@ -17,14 +17,7 @@
 # Usage: bash tests/fmu_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 BGDRAW=${1:?usage: fmu_cli.sh PATH_TO_BGDRAW}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-check() { # check NAME STATUS
-  if [ "$2" -ne 0 ]; then echo "FAIL $1"; fail=$((fail + 1)); else echo "ok   $1"; fi
-}
-cmp_csv() { python3 tests/export/compare_csv.py "$@"; }
-sed 's/^simulate .*/&, rtol = 1e-10/' examples/rlc.bg >"$tmp/rlc.bg"
+. tests/export/harness.sh
 "$BGDRAW" "$tmp/rlc.bg" -q --simulate -o "$tmp/rlc.csv"; check "rlc simulates" $?
 "$BGDRAW" "$tmp/rlc.bg" -q --simulate --set R0=25 -o "$tmp/rlc_r25.csv"; check "rlc --set R0=25 simulates" $?
 
