@@ -194,6 +194,16 @@ check "GY: e1 = r f2, e2 = r f1 (format.md worked example)" $?
 printf 'Se U = 1\n1 j\nR R1 = 2\nC C1 = 1\nbond U -> j\nbond R1 -> j\nbond j -> C1\n' >"$tmp/out.bg"
 "$BGDRAW" "$tmp/out.bg" --equations text | grep -qx 'f2 = -0.5\*e2'
 check "a value-form R whose bond points out of it: e = -R f" $?
+# A law is written for the element's own variables (power into it): with the bond
+# pointing out, `e = 2*f` and `f = e/2` are the same resistor as `R R1 = 2`.
+for law in '= 2' ': e = 2*f' ': f = e/2'; do
+  printf 'Se U = 1\n1 j\nR R1 %s\nC C1 = 1\nbond U -> j\nbond R1 -> j\nbond j -> C1\nsimulate t_end = 1, dt = 1\n' \
+    "$law" >"$tmp/outlaw.bg"
+  "$BGDRAW" "$tmp/outlaw.bg" -q -o "$tmp/outlaw.csv" -o "$tmp/outlaw.json"
+  awk -F, 'NR == 3 { d = $2 - (1 - exp(-0.5)); exit !(d < 1e-5 && d > -1e-5) }' "$tmp/outlaw.csv" &&
+    grep -q '"kind": "time_constant", "path": [0-9]*, "value": 2}' "$tmp/outlaw.json"
+  check "outward R1 $law: C1.e(1) = 1 - e^-0.5 and the path estimate RC = 2" $?
+done
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -218,6 +218,9 @@ static void r_edges(builder *B, int e, int b) {
   /* slope of the law in its own argument; inverted when causality is the other one */
   int lawe = form == BG_FORM_LAW_E, op = lawe ? BG_X_FLOW : BG_X_EFFORT;
   double d = op_slope(m, root, &B->op, op, b);
+  /* an e-law reads the element's own flow, the bond's negated when the bond
+   * points out: its slope in the bond's flow is then -F', and the edge is F' */
+  if (lawe && m->bond_head[b] != e) d = -d;
   add_factor_edge(B, src, dst, BG_SFGE_R, e, d, slope_name(B, e), lawe == cond);
   B->g->edge[B->g->nedge - 1].linear = op_linear(m, root, &B->op, op, b);
 }

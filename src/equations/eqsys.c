@@ -203,8 +203,9 @@ static void eq_source(derive *d, int e, int b) {
     set_eq(d, other, EQF_IMPLICIT, n_lin2(s, 1, n_sig(s, own), -1, value), e, "value");
 }
 
-/* R: value form e = s R f / f = s e / R; laws as written on the bond's
- * variables, inverted ones as implicit residuals. */
+/* R: value form e = s R f / f = s e / R. A law is written for the element's
+ * own variables, e and s f (its compiled f already reads s f): e = F(s f)
+ * explicit, s f = G(e) gives f = s G(e); inverted laws are implicit residuals. */
 static void eq_resistor(derive *d, int e, int b) {
   bg_eqsys *s = d->s;
   const bg_model *m = s->m;
@@ -216,8 +217,11 @@ static void eq_resistor(derive *d, int e, int b) {
     return;
   }
   int law_e = form == BG_FORM_LAW_E, own = res ? eb : fb;
-  if (law_e == res) set_eq(d, own, EQF_EXPLICIT, n_x(s, x), e, "law");
-  else set_eq(d, own, EQF_IMPLICIT, n_lin2(s, 1, n_x(s, x), -1, n_sig(s, law_e ? eb : fb)), e, "law");
+  int lhs_sign = law_e ? 1 : sg; /* the law's left side is e, or the own flow s f */
+  if (law_e == res) set_eq(d, own, EQF_EXPLICIT, n_signed(s, lhs_sign, n_x(s, x)), e, "law");
+  else
+    set_eq(d, own, EQF_IMPLICIT, n_lin2(s, 1, n_x(s, x), -lhs_sign, n_sig(s, law_e ? eb : fb)), e,
+           "law");
 }
 
 /* C (q, e = q/C or the law) and I (p, f = p/I or the law). Integral: the

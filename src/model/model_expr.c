@@ -85,7 +85,14 @@ static int own_var(bg_build *b, char v, const bg_expr *e) {
   if (v == 'q' || v == 'p') return ref_node(b, BG_X_STORE, el, e->loc);
   int bond = bg_elem_port_bond(m, el);
   if (bond < 0) return bad(b, e->loc); /* its bond count is reported elsewhere */
-  return ref_node(b, v == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
+  int k = ref_node(b, v == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
+  if (v == 'e' || m->bond_head[bond] == el) return k;
+  /* The bond points out of the R: the element's own flow (power into it
+   * positive) is the bond's flow negated, as in the value form e = -R f. */
+  int neg = node(b, BG_X_NEG, e->loc);
+  m->xnode[neg].nargs = 1;
+  m->xnode[neg].arg[0] = k;
+  return neg;
 }
 
 /* ---------------------------------------------------------------- names */
