@@ -6,15 +6,8 @@
 # model path in the report, and e<N>/f<N> names free unless bond N exists.
 # Usage: bash tests/cli_habits.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=$(cd "$(dirname "${1:?usage: cli_habits.sh PATH_TO_BGDRAW}")" && pwd)/$(basename "$1")
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 ROOT=$PWD
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { # check NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 M=examples/rlc.bg
 
 # ---- pipes: bgdraw -T svg < m.bg > m.svg is the file bgdraw m.bg -o m.svg writes
@@ -205,5 +198,4 @@ for law in '= 2' ': e = 2*f' ': f = e/2'; do
   check "outward R1 $law: C1.e(1) = 1 - e^-0.5 and the path estimate RC = 2" $?
 done
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

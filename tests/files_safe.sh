@@ -14,16 +14,7 @@
 #   refused with a reason (status 1), without reading it.
 # Usage: bash tests/files_safe.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: files_safe.sh PATH_TO_BGDRAW}
-case $BGDRAW in /*) ;; *) BGDRAW=$PWD/$BGDRAW ;; esac
-root=$PWD
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { # NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 cd "$tmp"
 cp "$root/examples/rlc.bg" m.bg
 sum0=$(cksum < m.bg)

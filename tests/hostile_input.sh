@@ -11,15 +11,7 @@
 #   (status 3, the row count, the dt that fits, no CSV), in well under a second.
 # Usage: bash tests/hostile_input.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: hostile_input.sh PATH_TO_BGDRAW}
-case $BGDRAW in /*) ;; *) BGDRAW=$PWD/$BGDRAW ;; esac
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { # NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 cd "$tmp"
 asan=0
 grep -qa __asan_init "$BGDRAW" && asan=1 # gcc links libasan.so, clang links it in

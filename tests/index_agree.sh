@@ -10,13 +10,8 @@
 # equations say (the prediction said "explicit ODE, index 0").
 # Usage: bash tests/index_agree.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: index_agree.sh PATH_TO_BGDRAW}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 command -v python3 >/dev/null || { echo "python3 not found"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-check() { if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi; }
 index_of() { # JSON FIELD
   python3 -c "import json,sys; i=json.load(open(sys.argv[1]))['index']; v=i[sys.argv[2]]; print('null' if v is None else v)" "$1" "$2"
 }

@@ -7,16 +7,9 @@
 # page describes every option of --help, bash completion completes them.
 # Usage: bash tests/install.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=$(cd "$(dirname "${1:?usage: install.sh PATH_TO_BGDRAW}")" && pwd)/$(basename "$1")
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 BUILD=$(dirname "$BGDRAW")
 ROOT=$PWD
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { # check NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 
 cmake --install "$BUILD" --prefix "$tmp/p" >"$tmp/install.log" 2>&1; st=$?
 check "cmake --install (got $st)" $st
@@ -102,5 +95,4 @@ for o in $("$BGDRAW" --help | grep -o -- '--[a-z][a-z-]*' | sort -u); do
 done
 [ -z "$missing" ]; check "bash completion knows every option of --help (missing:$missing)" $?
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

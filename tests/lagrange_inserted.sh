@@ -8,15 +8,8 @@
 # 2e-5, bridge_compliance's piston velocity the largest).
 # Usage: bash tests/lagrange_inserted.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: lagrange_inserted.sh PATH_TO_BGDRAW}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 
-check() { # check NAME CONDITION-STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 
 # model and the bonds that get an inserted 1-junction
 for spec in "bridge_compliance 1,4" "internal_mod_r 4" "internal_mod_tf 3" \
@@ -53,5 +46,4 @@ PY
   check "$x: Lagrange and SCAP simulations agree to 1e-4" $?
 done
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -7,16 +7,9 @@
 # and `--plot` alone writing no diagram.
 # Usage: bash tests/plot_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: plot_cli.sh PATH_TO_BGDRAW}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 case "$BGDRAW" in /*) ;; *) BGDRAW="$PWD/$BGDRAW" ;; esac
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 
-check() { # check NAME CONDITION-STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 sig() { head -c "$2" "$1" 2>/dev/null | od -An -c | tr -d ' \n'; }
 
 # every example with a simulate block: refused ones (exit 3, nothing written)
@@ -108,5 +101,4 @@ grep -q 'svg, pdf or png' "$tmp/err"; check "unknown plot extension: message" $?
 check "unwritable plot exits 4 (got $st)" $((st != 4))
 grep -q 'cannot write' "$tmp/err"; check "unwritable plot: message" $?
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -9,17 +9,8 @@
 # exits 0 for a refused simulation; a large model's diagram is tiled.
 # Usage: bash tests/report_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: report_cli.sh PATH_TO_BGDRAW}
-case $BGDRAW in /*) ;; *) BGDRAW=$PWD/$BGDRAW ;; esac
-root=$PWD
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 
-check() { # NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 for tool in pdftotext pdfinfo python3; do
   command -v $tool >/dev/null || { echo "SKIP: $tool not installed"; exit 0; }
 done

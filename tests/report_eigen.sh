@@ -5,12 +5,7 @@
 # eigenvalue (1e-17 of the largest) reads "zero (a conserved quantity)",
 # never "unstable". Usage: bash tests/report_eigen.sh PATH_TO_BGDRAW
 set -u
-BGDRAW=${1:?usage: report_eigen.sh PATH_TO_BGDRAW}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi; }
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 command -v pdftotext >/dev/null || { echo "SKIP: pdftotext not installed"; exit 0; }
 # the rows of the table: from its header to the next blank line
 rows() { pdftotext -layout "$1" - | sed -n '/Eigenvalue λ/,/^$/p' | grep -E '^ *[0-9]+ '; }

@@ -6,15 +6,8 @@
 # with a final "# partial:" line, a refused model writes nothing and says why.
 # Usage: bash tests/simulate_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: simulate_cli.sh PATH_TO_BGDRAW}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 
-check() { # check NAME CONDITION-STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
 
 # rlc: t_end = 2e-3, dt = 1e-6 -> 2001 rows, plot C1.e, L1.f
 "$BGDRAW" examples/rlc.bg --simulate -o "$tmp/rlc.csv" 2>"$tmp/err"; st=$?
@@ -150,5 +143,4 @@ check "class12_paths: consistent initial value reported" $?
 "$BGDRAW" examples/class12_paths.bg -o "$tmp/c12.csv" -q 2>"$tmp/err"
 [ ! -s "$tmp/err" ]; check "-q: no note" $?
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

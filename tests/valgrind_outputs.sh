@@ -9,16 +9,7 @@
 # detection on, the libraries' caches suppressed (tests/lsan.supp).
 # Usage: bash tests/valgrind_outputs.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: valgrind_outputs.sh PATH_TO_BGDRAW}
-case $BGDRAW in /*) ;; *) BGDRAW=$PWD/$BGDRAW ;; esac
-root=$PWD
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-check() { # NAME STATUS
-  if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi
-}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 m=$root/examples/rlc.bg
 runs=("$m --simulate -o x.svg -o x.pdf -o x.png -o x.dot -o x.json -o x.tex -o x.c -o x.csv --plot p.svg --report r.pdf"
       "$m --check" "$m --equations text")

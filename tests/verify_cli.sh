@@ -8,13 +8,8 @@
 # range. The report has the verification row.
 # Usage: bash tests/verify_cli.sh PATH_TO_BGDRAW   (from the project root)
 set -u
-BGDRAW=${1:?usage: verify_cli.sh PATH_TO_BGDRAW}
+. "$(dirname "$0")/lib/preamble.sh" "$@"
 command -v python3 >/dev/null || { echo "python3 not found"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-check() { if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL $1"; fi; }
 # JSON CSV WANT_LOOSE: the reported deviation of C1.e against the true error
 judge() {
   python3 - "$@" <<'PY'
