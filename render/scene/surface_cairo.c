@@ -12,6 +12,15 @@ cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigne
   return CAIRO_STATUS_SUCCESS;
 }
 
+int bg_surface_close(cairo_t *cr, cairo_surface_t *sf) {
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(sf);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
+  cairo_surface_destroy(sf);
+  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+}
+
 /* Font options free of the surface's defaults (hinting differs per backend). */
 static cairo_font_options_t *neutral_font_options(void) {
   cairo_font_options_t *fo = cairo_font_options_create();

@@ -15,4 +15,7 @@ void bg_surface_replay(cairo_t *cr, const bg_scene *s);
 void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]);
 /* A cairo_write_func_t appending to the bg_strbuf passed as closure. */
 cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigned int len);
+/* Ends a drawing: destroys cr, finishes and destroys sf; 0 if neither the
+ * drawing nor the surface reported an error, else -1. */
+int bg_surface_close(cairo_t *cr, cairo_surface_t *sf);
 #endif

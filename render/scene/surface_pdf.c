@@ -21,22 +21,22 @@ static void creation_date(char *buf, size_t n) {
   strftime(buf, n, "%Y-%m-%dT%H:%M:%SZ", &tm);
 }
 
-int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
-  cairo_surface_t *sf =
-      cairo_pdf_surface_create_for_stream(bg_surface_sink, out, s->width, s->height);
+/* A PDF surface writing to out, with the reproducible dates and the title. */
+static cairo_surface_t *pdf_open(bg_strbuf *out, double w, double h, const char *title) {
+  cairo_surface_t *sf = cairo_pdf_surface_create_for_stream(bg_surface_sink, out, w, h);
   char date[64];
   creation_date(date, sizeof date);
   cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_CREATE_DATE, date);
   cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_MOD_DATE, date);
-  if (s->title) cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_TITLE, s->title);
+  if (title) cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_TITLE, title);
+  return sf;
+}
+
+int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
+  cairo_surface_t *sf = pdf_open(out, s->width, s->height, s->title);
   cairo_t *cr = cairo_create(sf);
   bg_surface_replay(cr, s);
-  cairo_status_t st = cairo_status(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(sf);
-  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
-  cairo_surface_destroy(sf);
-  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+  return bg_surface_close(cr, sf);
 }
 
 /* ---------------------------------------------------------------- multi-page */
@@ -74,13 +74,7 @@ int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surfa
                          int nol, const char *title, bg_strbuf *out) {
   if (npage < 1) return -1;
   const bg_scene *first = pages[0].scene;
-  cairo_surface_t *sf =
-      cairo_pdf_surface_create_for_stream(bg_surface_sink, out, first->width, first->height);
-  char date[64];
-  creation_date(date, sizeof date);
-  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_CREATE_DATE, date);
-  cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_MOD_DATE, date);
-  if (title) cairo_pdf_surface_set_metadata(sf, CAIRO_PDF_METADATA_TITLE, title);
+  cairo_surface_t *sf = pdf_open(out, first->width, first->height, title);
   cairo_t *cr = cairo_create(sf);
   for (int i = 0; i < npage && cairo_status(cr) == CAIRO_STATUS_SUCCESS; i++) {
     cairo_pdf_surface_set_size(sf, pages[i].scene->width, pages[i].scene->height);
@@ -89,10 +83,5 @@ int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surfa
     cairo_show_page(cr);
   }
   add_outlines(sf, ol, nol);
-  cairo_status_t st = cairo_status(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(sf);
-  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
-  cairo_surface_destroy(sf);
-  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+  return bg_surface_close(cr, sf);
 }

@@ -12,10 +12,5 @@ int bg_surface_svg_cairo_write(const bg_scene *s, bg_strbuf *out) {
   cairo_svg_surface_set_document_unit(sf, CAIRO_SVG_UNIT_PT);
   cairo_t *cr = cairo_create(sf);
   bg_surface_replay(cr, s);
-  cairo_status_t st = cairo_status(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(sf);
-  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
-  cairo_surface_destroy(sf);
-  return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+  return bg_surface_close(cr, sf);
 }
