@@ -510,17 +510,15 @@ static void keep_page(bg_diagram *d) {
  * signals, numbers, labels, conflicts, and the path tags and loop gains on
  * top. Text is placed clear of what was drawn before it (diagram_place.c):
  * numbers, tags and gains see the bonds, nodes, signals and polylines. */
-/* Path tags and gains keep to the box of the nodes where they can (bands
- * around it count as obstacles): a highlighted diagram redrawn from a full
- * one then stays on its page, and a fresh build of it draws the same. */
-static void node_fence(bg_diagram *d) {
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, t = 120;
-  for (int i = 0; i < d->nnode; i++) { /* the labels' text, not their padded boxes */
-    double hw = d->nw[i] / 2 - d->st.node_pad;
-    x0 = fmin(x0, d->nx[i] - hw), x1 = fmax(x1, d->nx[i] + hw);
-    y0 = fmin(y0, d->ny[i] - d->nh[i] / 2), y1 = fmax(y1, d->ny[i] + d->nh[i] / 2);
-  }
-  if (x0 > x1) return;
+/* Path tags and gains keep to the box of what is drawn before them (nodes,
+ * bonds, numbers, signals, the path and loop lines), grown by the margin;
+ * bands around it count as obstacles: a highlighted diagram redrawn from a
+ * full one then stays on its page (its drawing is inside the full one's,
+ * whose page is that much larger), and a fresh build of it draws the same. */
+static void drawing_fence(bg_diagram *d) {
+  double x0, y0, x1, y1, t = 120, g = d->st.margin;
+  if (!bg_scene_bbox(&d->scene, &x0, &y0, &x1, &y1)) return;
+  x0 -= g, y0 -= g, x1 += g, y1 += g;
   for (int twice = 0; twice < 2; twice++) { /* outside costs as much as two labels covered */
     bg_obstacle_rect(d, x0 - t, y0 - t, x1 + t, y0);
     bg_obstacle_rect(d, x0 - t, y1, x1 + t, y1 + t);
@@ -540,11 +538,11 @@ static void draw_all(bg_diagram *d) {
   draw_bonds(d);
   if (show & BG_SHOW_SIGNALS) bg_draw_signals(d);
   draw_lagrange(d);
-  for (int i = 0; i < d->npoly; i++) bg_obstacle_item(d, d->poly[i]);
+  for (int i = 0; i < d->npoly; i++) bg_obstacle_owned(d, d->poly[i], i + 1);
   draw_numbers(d);
   draw_nodes(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
-  node_fence(d);
+  drawing_fence(d);
   bg_place_layer_labels(d);
   fit_page(d);
   if (show & BG_SHOW_LEGEND) {

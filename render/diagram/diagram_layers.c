@@ -185,9 +185,16 @@ static int layer_hot(const bg_diagram *d, int kind, int i) {
   return !d->o.highlight_kind || (d->o.highlight_kind == kind && d->o.highlight_index == i + 1);
 }
 
+/* A straight run of a drawn polyline (segment k between its joints), with
+ * the normal n on the outside (the left of travel, away from the bond). */
+typedef struct run {
+  bg_vec a, b, n;
+} run;
+
 /* Draws a closed layer polyline through the segments, with an arrow at the
- * middle of each; returns the centroid of its corners. */
-static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged) {
+ * middle of each; returns the centroid of its corners and writes each
+ * segment's straight run to runs (n of them). */
+static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged, run *runs) {
   const char *name = kind == 'p' ? "path" : "loop";
   joint *j = bg_xcalloc((size_t)n, sizeof *j);
   for (int k = 0; k < n; k++) j[k] = join(d, &s[k], &s[(k + 1) % n]);
@@ -208,6 +215,7 @@ static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int m
   bg_scene_close(&d->scene);
   for (int k = 0; k < n; k++) {
     bg_vec a = j[(k + n - 1) % n].p1, b = j[k].p0;
+    runs[k] = (run){a, b, s[k].n};
     if (bg_vlen(bg_vsub(b, a)) < 14) continue; /* no room for an arrow */
     bg_vec mid = bg_vadd(bg_vscale(bg_vadd(a, b), 0.5), bg_vscale(s[k].dir, 2.5));
     it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-arrow %d", name, i + 1);
@@ -219,16 +227,21 @@ static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int m
 }
 
 /* ---------------------------------------------------------------- labels */
-/* A path tag or loop gain, placed after every line is drawn. */
+/* A path tag or loop gain, placed after every line is drawn: beside one of
+ * the straight runs of its own polyline (in order of preference), else at
+ * one of a few extra candidates (an open loop's centroid). */
 struct bg_layer_label {
   const char *markup;
   bg_rgba color;
   char role[40];
+  int owner;     /* its polyline: index in d->poly + 1 */
+  run *runs;
+  int nrun;
   bg_vec *cand;
   int ncand;
 };
 
-static bg_layer_label *new_label(bg_diagram *d, const char *markup, bg_rgba c, int ncand) {
+static bg_layer_label *new_label(bg_diagram *d, const char *markup, bg_rgba c, int nrun, int ncand) {
   if (d->nlabels == d->caplabels) {
     d->caplabels = d->caplabels ? 2 * d->caplabels : 16;
     d->labels = bg_xrealloc(d->labels, (size_t)d->caplabels * sizeof *d->labels);
@@ -236,36 +249,29 @@ static bg_layer_label *new_label(bg_diagram *d, const char *markup, bg_rgba c, i
   bg_layer_label *L = &d->labels[d->nlabels++];
   L->markup = bg_arena_strdup(&d->arena, markup);
   L->color = c;
+  L->owner = d->npoly + 1; /* its polyline is drawn next */
+  L->runs = bg_arena_alloc(&d->arena, sizeof(run) * (size_t)(nrun + 1));
   L->cand = bg_arena_alloc(&d->arena, sizeof(bg_vec) * (size_t)(ncand + 1));
-  L->ncand = 0;
+  L->nrun = L->ncand = 0;
   return L;
 }
 
 static double label_size(const bg_diagram *d) { return d->st.font_size * d->st.number_scale; }
 
-/* Candidates beside segment s, outside its line: at the middle and a third
- * of the way from either end, at two distances. */
-static void cand_beside(const bg_diagram *d, bg_layer_label *L, const seg *s, double w, double h) {
-  static const double ts[] = {0.5, 0.3, 0.7};
-  double extent = fabs(s->n.x) * w / 2 + fabs(s->n.y) * h / 2;
-  for (int j = 0; j < 2; j++)
-    for (int k = 0; k < 3; k++) {
-      bg_vec base = bg_vadd(centre(d, s->u), bg_vscale(bg_vsub(centre(d, s->v), centre(d, s->u)), ts[k]));
-      L->cand[L->ncand++] = bg_vadd(base, bg_vscale(s->n, s->off + 2.5 + extent + j * (h + 2)));
-    }
-}
+/* How far a w × h box reaches from its centre in direction n (a unit axis
+ * or diagonal). */
+static double reach(bg_vec n, double w, double h) { return fabs(n.x) * w / 2 + fabs(n.y) * h / 2; }
 
-/* Candidates beside the segments in `order` (6 each), those where the label
- * can come closest to its line first: above or below a horizontal bond
- * before beside a slanted one. */
-static void cand_segments(const bg_diagram *d, bg_layer_label *L, const seg *s, int *order,
-                          int n, double w, double h) {
+/* The runs in `order` copied to the label, those where it can come closest
+ * to its line first: beside a horizontal run before a slanted one, before a
+ * vertical one. */
+static void label_runs(bg_layer_label *L, const run *r, const int *order, int n, double w, double h) {
   for (int pass = 0; pass < 3; pass++)
     for (int k = 0; k < n; k++) {
-      const seg *t = &s[order[k]];
-      double extent = fabs(t->n.x) * w / 2 + fabs(t->n.y) * h / 2;
+      const run *t = &r[order[k]];
+      double extent = reach(t->n, w, h);
       int band = extent <= h ? 0 : extent <= 0.5 * (w / 2 + h) ? 1 : 2;
-      if (band == pass) cand_beside(d, L, t, w, h);
+      if (band == pass) L->runs[L->nrun++] = *t;
     }
 }
 
@@ -284,12 +290,64 @@ static void measure_label(const bg_diagram *d, const char *markup, double *w, do
   *w += 2, *h = 0.8 * *h + 1;
 }
 
+enum { TAG_GAP = 2 }; /* between a tag's box and its line */
+
+/* What a label at p costs: the obstacles it touches (bg_place_score, 4
+ * each), 2 when another polyline comes nearer to it than its own line (the
+ * box grown by the gap) and 1 when one comes within 6 pt more, so a tag
+ * does not nestle between other layers when there is open room: a tag a
+ * little astray is better than one over a line. 0 is a perfect place. */
+static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h) {
+  int c = 4 * bg_place_score(d, p, w, h);
+  double g = 2 * (TAG_GAP + 1), far = g + 12;
+  if (bg_place_others(d, p, w + far, h + far, L->owner) > 0)
+    c += 1 + (bg_place_others(d, p, w + g, h + g, L->owner) > 0);
+  return c;
+}
+
+/* Tries the places beside run r at distance `out` beyond the gap, on its
+ * outside (side 1) or inside (-1), from its middle outwards; keeps the
+ * cheapest in *best. Returns 1 when a perfect place was found. */
+static int try_run(bg_diagram *d, const bg_layer_label *L, const run *r, int side, double out, double w,
+                   double h, bg_vec *best, int *best_cost) {
+  bg_vec ab = bg_vsub(r->b, r->a), dir = bg_vunit(ab), n = bg_vscale(r->n, side);
+  double len = bg_vlen(ab), room = len / 2; /* the box may reach past a short run's ends */
+  double dist = TAG_GAP + out + reach(n, w, h), step = fmax(3, len / 12);
+  bg_vec mid = bg_vadd(bg_vadd(r->a, bg_vscale(ab, 0.5)), bg_vscale(n, dist));
+  for (int k = 0; k == 0 || k * step <= room; k++)
+    for (int sgn = -1; sgn <= (k ? 1 : -1); sgn += 2) {
+      bg_vec p = bg_vadd(mid, bg_vscale(dir, sgn * k * step));
+      int c = label_cost(d, L, p, w, h);
+      if (*best_cost < 0 || c < *best_cost) *best = p, *best_cost = c;
+      if (c == 0) return 1;
+    }
+  return 0;
+}
+
+/* The label's place: beside its own runs (outside at the gap, then inside,
+ * then 4 pt further out), else its extra candidates; the cheapest, the
+ * first of equals. */
+static bg_vec label_place(bg_diagram *d, const bg_layer_label *L, double w, double h) {
+  static const struct { int side; double out; } pass[] = {{1, 0}, {-1, 0}, {1, 4}, {-1, 4}, {1, 8}, {-1, 8}};
+  bg_vec best = L->ncand ? L->cand[0] : bg_v(0, 0);
+  int best_cost = -1;
+  for (size_t p = 0; p < sizeof pass / sizeof pass[0]; p++)
+    for (int k = 0; k < L->nrun; k++)
+      if (try_run(d, L, &L->runs[k], pass[p].side, pass[p].out, w, h, &best, &best_cost)) return best;
+  for (int k = 0; k < L->ncand; k++) {
+    int c = label_cost(d, L, L->cand[k], w, h);
+    if (best_cost < 0 || c < best_cost) best = L->cand[k], best_cost = c;
+  }
+  return best;
+}
+
 void bg_place_layer_labels(bg_diagram *d) {
   for (int i = 0; i < d->nlabels; i++) {
     bg_layer_label *L = &d->labels[i];
     double w, h;
     measure_label(d, L->markup, &w, &h);
-    bg_vec p = L->cand[bg_place_best(d, L->cand, L->ncand, w, h)];
+    bg_vec p = label_place(d, L, w, h);
+    bg_obstacle_rect(d, p.x - w / 2, p.y - h / 2, p.x + w / 2, p.y + h / 2);
     bg_text_halo(d, L->markup, p, label_size(d));
     bg_scene_text(&d->scene, L->markup, p.x, p.y, label_size(d), 0.5, 0.5, L->color, L->role);
   }
@@ -387,7 +445,9 @@ static void draw_path(bg_diagram *d, int p) {
     s = split_bends(d, s, &n);
     for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
     int l = path_loop(d, p);
-    draw_polyline(d, s, n, 'p', p, l);
+    run *runs = bg_xcalloc((size_t)n, sizeof *runs);
+    bg_layer_label *L = new_label(d, "", bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), n, 0);
+    draw_polyline(d, s, n, 'p', p, l, runs);
     /* the tag (with the gain of the flat loop drawn along) outside the
      * polyline, beside a bond from the middle of the path outwards */
     bg_strbuf t = {0};
@@ -398,10 +458,10 @@ static void draw_path(bg_diagram *d, int p) {
     int *order = bg_xcalloc((size_t)n, sizeof *order);
     middle_first(order, n / 2);
     for (int k = 0; k < n / 2; k++) order[n / 2 + k] = n - 1 - order[k]; /* the way back */
-    bg_layer_label *L = new_label(d, bg_sb_str(&t), bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), 6 * n);
+    L->markup = bg_arena_strdup(&d->arena, bg_sb_str(&t));
     snprintf(L->role, sizeof L->role, l >= 0 ? "path-tag %d gain" : "path-tag %d", p + 1);
-    cand_segments(d, L, s, order, n, w, h);
-    free(order);
+    label_runs(L, runs, order, n, w, h);
+    free(order), free(runs);
     bg_sb_free(&t);
     claim_sides(d, s, n);
     free(s);
@@ -435,21 +495,23 @@ static void draw_loop(bg_diagram *d, int l) {
     for (int k = 0; k < n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
     s = split_bends(d, s, &n);
     for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
-    bg_vec c = draw_polyline(d, s, n, 'l', l, -1);
+    run *runs = bg_xcalloc((size_t)n, sizeof *runs);
+    bg_layer_label *L = new_label(d, "", bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), n, 5);
+    bg_vec c = draw_polyline(d, s, n, 'l', l, -1, runs);
     /* the gain: an open loop's at its centroid (inside a bond loop), a flat
      * loop's outside its polyline, like a path tag */
     bg_strbuf t = {0};
     gain_text(d, l, &t);
     double w, h;
     measure_label(d, bg_sb_str(&t), &w, &h);
-    bg_layer_label *L = new_label(d, bg_sb_str(&t), bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), 6 * n + 5);
+    L->markup = bg_arena_strdup(&d->arena, bg_sb_str(&t));
     snprintf(L->role, sizeof L->role, "gain loop=%d", l + 1);
     if (a->tloop_kind[l] == BG_TLOOP_OPEN)
       for (int k = 0; k < 5; k++) L->cand[L->ncand++] = bg_v(c.x, c.y + ((k + 1) / 2) * (k % 2 ? -1 : 1) * (h + 1));
     int *order = bg_xcalloc((size_t)n, sizeof *order);
     middle_first(order, n);
-    cand_segments(d, L, s, order, n, w, h);
-    free(order);
+    label_runs(L, runs, order, n, w, h);
+    free(order), free(runs);
     bg_sb_free(&t);
     claim_sides(d, s, n);
     free(s);

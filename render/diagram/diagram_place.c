@@ -16,6 +16,7 @@ struct bg_obstacles {
   int n, cap;
   double *box;          /* x0 y0 x1 y1; a segment keeps its end points */
   unsigned char *seg;   /* 1: the segment (x0,y0)-(x1,y1), 0: a rectangle */
+  int *owner;           /* per obstacle: the path/loop polyline it belongs to (1, 2, ...), or 0 */
   unsigned *stamp;      /* per obstacle: last query that looked at it */
   unsigned query;
   int *head;            /* per hash bucket: first entry, -1 */
@@ -56,7 +57,7 @@ static bg_obstacles *obstacles(bg_diagram *d) {
 
 void bg_obstacles_free(bg_obstacles *o) {
   if (!o) return;
-  free(o->box), free(o->seg), free(o->stamp), free(o->head);
+  free(o->box), free(o->seg), free(o->owner), free(o->stamp), free(o->head);
   free(o->enext), free(o->eob), free(o->ecx), free(o->ecy);
   free(o);
 }
@@ -76,18 +77,19 @@ static void add_entry(bg_obstacles *o, int ob, int cx, int cy) {
   o->head[h] = e;
 }
 
-static void add_obstacle(bg_diagram *d, int seg, double x0, double y0, double x1, double y1) {
+static void add_obstacle(bg_diagram *d, int seg, int owner, double x0, double y0, double x1, double y1) {
   bg_obstacles *o = obstacles(d);
   if (o->n == o->cap) {
     o->cap = o->cap ? 2 * o->cap : 256;
     o->box = bg_xrealloc(o->box, (size_t)o->cap * 4 * sizeof(double));
     o->seg = bg_xrealloc(o->seg, (size_t)o->cap);
+    o->owner = bg_xrealloc(o->owner, (size_t)o->cap * sizeof(int));
     o->stamp = bg_xrealloc(o->stamp, (size_t)o->cap * sizeof(unsigned));
   }
   int k = o->n++;
   double *b = o->box + 4 * k;
   b[0] = x0, b[1] = y0, b[2] = x1, b[3] = y1;
-  o->seg[k] = (unsigned char)seg, o->stamp[k] = 0;
+  o->seg[k] = (unsigned char)seg, o->owner[k] = owner, o->stamp[k] = 0;
   int cx0 = cell_of(fmin(x0, x1)), cx1 = cell_of(fmax(x0, x1));
   int cy0 = cell_of(fmin(y0, y1)), cy1 = cell_of(fmax(y0, y1));
   for (int cy = cy0; cy <= cy1; cy++)
@@ -95,11 +97,13 @@ static void add_obstacle(bg_diagram *d, int seg, double x0, double y0, double x1
 }
 
 void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1) {
-  add_obstacle(d, 0, x0, y0, x1, y1);
+  add_obstacle(d, 0, 0, x0, y0, x1, y1);
 }
 
+void bg_obstacle_item(bg_diagram *d, int i) { bg_obstacle_owned(d, i, 0); }
+
 /* The lines of scene item i (curves flattened) become obstacles. */
-void bg_obstacle_item(bg_diagram *d, int i) {
+void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
   const bg_scene *s = &d->scene;
   const bg_scene_item *it = &s->item[i];
   double px = 0, py = 0, sx = 0, sy = 0;
@@ -109,14 +113,14 @@ void bg_obstacle_item(bg_diagram *d, int i) {
       px = sx = op->x[0], py = sy = op->y[0];
     } else if (op->code == BG_OP_LINE || op->code == BG_OP_CLOSE) {
       double x = op->code == BG_OP_LINE ? op->x[0] : sx, y = op->code == BG_OP_LINE ? op->y[0] : sy;
-      add_obstacle(d, 1, px, py, x, y);
+      add_obstacle(d, 1, owner, px, py, x, y);
       px = x, py = y;
     } else {
       for (int j = 1; j <= 4; j++) {
         double t = j / 4.0, u = 1 - t;
         double x = u * u * u * px + 3 * u * u * t * op->x[0] + 3 * u * t * t * op->x[1] + t * t * t * op->x[2];
         double y = u * u * u * py + 3 * u * u * t * op->y[0] + 3 * u * t * t * op->y[1] + t * t * t * op->y[2];
-        add_obstacle(d, 1, px, py, x, y);
+        add_obstacle(d, 1, owner, px, py, x, y);
         px = x, py = y;
       }
     }
@@ -140,7 +144,9 @@ static int seg_hits_box(const double *s, double x0, double y0, double x1, double
   return 1;
 }
 
-int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) {
+/* What a w × h box centred at p touches: the score of bg_place_score, or
+ * (owner > 0) how many segments of polylines other than owner's. */
+static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
   bg_obstacles *o = obstacles(d);
   double x0 = p.x - w / 2, y0 = p.y - h / 2, x1 = p.x + w / 2, y1 = p.y + h / 2;
   int score = 0;
@@ -151,12 +157,19 @@ int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) {
         int k = o->eob[e];
         if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
+        if (owner && (!o->owner[k] || o->owner[k] == owner)) continue;
         const double *b = o->box + 4 * k;
         if (o->seg[k] ? seg_hits_box(b, x0, y0, x1, y1)
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
           score += o->seg[k] ? 1 : 10; /* covering text is worse than crossing lines */
       }
   return score;
+}
+
+int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, 0); }
+
+int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
+  return query(d, p, w, h, owner);
 }
 
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) {

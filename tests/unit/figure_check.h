@@ -28,6 +28,9 @@ typedef struct fc_stats {
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_OTHER };     /* line kinds */
 enum { FC_NODE, FC_NUMBER, FC_TAG, FC_TEXT, FC_IGNORED };         /* text kinds */
 
+/* Set (BG_FIGURES_VERBOSE=2) to print every fault found, with where it is. */
+static int fc_explain;
+
 typedef struct fc_seg {
   double x0, y0, x1, y1;
 } fc_seg;
@@ -249,9 +252,19 @@ static int fc_crosses(const fc_line *a, const fc_line *b) {
 static int fc_label_over(const fc_scene *f, int i) {
   fc_box b = fc_shrink(&f->box[i], 0.5);
   for (int j = 0; j < f->nline; j++)
-    if (f->line[j].kind != FC_STROKE && fc_line_box(&f->line[j], &b) == 0) return 1;
+    if (f->line[j].kind != FC_STROKE && fc_line_box(&f->line[j], &b) == 0) {
+      if (fc_explain)
+        printf("  label over: kind %d id %d loop %d at (%.0f,%.0f) over line kind %d id %d loop %d\n", b.kind,
+               b.id, b.loop, b.x0, b.y0, f->line[j].kind, f->line[j].id, f->line[j].loop);
+      return 1;
+    }
   for (int j = 0; j < f->nbox; j++)
-    if (j != i && fc_boxes_meet(&b, &f->box[j])) return 1;
+    if (j != i && fc_boxes_meet(&b, &f->box[j])) {
+      if (fc_explain)
+        printf("  label over: kind %d id %d loop %d at (%.0f,%.0f) over box kind %d id %d\n", b.kind, b.id,
+               b.loop, b.x0, b.y0, f->box[j].kind, f->box[j].id);
+      return 1;
+    }
   return 0;
 }
 
@@ -282,6 +295,9 @@ static int fc_tag_far(const fc_scene *f, const fc_box *t) {
     if (fc_own_overlay(l, t)) own = fmin(own, d);
     else other = fmin(other, d);
   }
+  if (fc_explain && (other < own || own > 12))
+    printf("  tag far: %s %d at (%.0f,%.0f): own %.1f, other %.1f\n", t->loop ? "loop" : "path",
+           t->loop ? t->loop : t->id, t->x0, t->y0, own, other);
   return other < own || own > 12;
 }
 
@@ -294,7 +310,12 @@ static int fc_through(const fc_scene *f, int kind) {
     for (int i = 0; i < f->nbox; i++) {
       if (f->box[i].kind != FC_NODE) continue;
       fc_box b = fc_shrink(&f->box[i], 1);
-      if (b.x0 < b.x1 && b.y0 < b.y1 && fc_line_box(&f->line[j], &b) == 0) n++;
+      if (b.x0 < b.x1 && b.y0 < b.y1 && fc_line_box(&f->line[j], &b) == 0) {
+        n++;
+        if (fc_explain)
+          printf("  through: line kind %d id %d loop %d through the label at (%.0f,%.0f)\n", f->line[j].kind,
+                 f->line[j].id, f->line[j].loop, b.x0, b.y0);
+      }
     }
   }
   return n;
