@@ -26,7 +26,7 @@ typedef struct bg_lin_tf {
   int ncancel;            /* poles cancelled by zeros */
 } bg_lin_tf;
 
-/* The symbolic form of a linear time-invariant model with at most 4 states
+/* The symbolic form of a linear time-invariant model with at most 8 states
  * (linear_sym.c): printed entries, [0] text and [1] LaTeX, column-major as
  * the numeric matrices; den: n + 1 coefficients (s^n first, monic); num:
  * per pair (output-major) n + 1 coefficients. Full order. */

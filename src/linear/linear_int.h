@@ -4,6 +4,7 @@
 #include <complex.h>
 
 #include "linear/linear.h"
+#include "sym/sym.h"
 
 /* linear_point.c: the operating point into y (n = bg_eqsys_n); notes go to
  * `note`. 0, or -1 when there is no usable point (note says why). */
@@ -15,6 +16,12 @@ void bg_lin_poles(bg_linear *l);
 void bg_lin_tfs(bg_linear *l);
 /* linear_sym.c: l->sym for a linear model (s: the equations, still alive). */
 void bg_lin_sym_derive(bg_linear *l, const bg_model *m, bg_eqsys *s);
+/* linear_symtf.c: den (n + 1 ids, s^n first, monic) = det(sI - A) and num
+ * (per pair, output-major, n + 1 ids) = det [sI - A, -b; c, d] for symbolic
+ * A, B, C, D (column-major ids) by Laplace expansion over column sets,
+ * expanded into monomials; -1 when a coefficient exceeds max_terms terms. */
+int bg_lin_sym_tfs(bg_sym *S, int n, int nu, int ny, const int *A, const int *B, const int *C,
+                   const int *D, int max_terms, int *den, int *num);
 /* H(s) for pair (iy, iu) by a dense complex solve of the system in use
  * (reduced when l->reduced, else descriptor). */
 double complex bg_lin_eval(const bg_linear *l, int iy, int iu, double complex s);

@@ -4,10 +4,12 @@
  * B = d x'/d u by symbolic differentiation, C and D from the outputs in the
  * reduced states; accepted only when no entry reads a state, an input or t
  * (a linear time-invariant model) and every entry evaluates to the numeric
- * matrices. Transfer functions by Faddeev-LeVerrier: det(sI - A) =
- * s^n + c1 s^(n-1) + ... + cn and adj(sI - A) = sum M_k s^(n-k), so the
- * numerator of pair (i, j) has the coefficients C M_k B + D c_k. Up to 4
- * states; full order (no cancellations, unlike the numeric ones). */
+ * matrices. Transfer functions by division-free determinant expansion
+ * (linear_symtf.c), each coefficient then over one denominator; checked
+ * against the numeric matrices at one complex point. Up to 8 states and a
+ * size cap on the printed coefficients; full order (no cancellations,
+ * unlike the numeric ones). */
+#include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +18,11 @@
 #include "equations/eqsym.h"
 #include "linear/linear_int.h"
 
-enum { SYM_MAX_STATES = 4, SYM_MAX_SIZE = 400 };
+/* Why these caps: the expansion costs (n + 1) 2^(n + 1) entry products per
+ * input, and a coefficient's terms grow with the permutations a dense
+ * matrix has (8! terms at n = 8): beyond them the formulas are not worth
+ * reading, and the numeric transfer functions say the same. */
+enum { SYM_MAX_STATES = 8, SYM_MAX_TERMS = 400, SYM_MAX_CHARS = 4000 };
 
 typedef struct symctx {
   bg_linear *l;
@@ -92,72 +98,95 @@ static int entries_ok(symctx *X, const int *E, const double *num, int count) {
 
 static int simplify(bg_sym *S, int e) { return bg_sym_together(S, bg_sym_collect(S, e), 0); }
 
-/* M (n x n) = A P + c I, all symbolic. */
-static void fl_step(symctx *X, const int *P, int c, int *M) {
-  int n = X->n;
-  for (int j = 0; j < n; j++)
-    for (int i = 0; i < n; i++) {
-      int e = i == j ? c : bg_sym_num(X->S, 0);
-      for (int q = 0; q < n; q++)
-        e = bg_sym_add(X->S, e, bg_sym_mul(X->S, X->A[(size_t)q * n + i], P[(size_t)j * n + q]));
-      M[(size_t)j * n + i] = simplify(X->S, e);
-    }
-}
-
-static int trace_AM(symctx *X, const int *M) {
-  int n = X->n, e = bg_sym_num(X->S, 0);
-  for (int i = 0; i < n; i++)
-    for (int q = 0; q < n; q++)
-      e = bg_sym_add(X->S, e, bg_sym_mul(X->S, X->A[(size_t)q * n + i], M[(size_t)i * n + q]));
-  return e;
-}
-
-/* c[0..n] (c0 = 1) and num[(iy * nu + iu) * (n + 1) + k]. */
-static void faddeev(symctx *X, int *c, int *num) {
-  int n = X->n, nu = X->nu, ny = X->ny;
-  int *P = bg_xcalloc((size_t)n * n + 1, sizeof *P), *M = bg_xcalloc((size_t)n * n + 1, sizeof *M);
-  for (int q = 0; q < n * n; q++) P[q] = bg_sym_num(X->S, 0);
-  c[0] = bg_sym_num(X->S, 1);
-  for (int p = 0; p < ny * nu; p++) num[p * (n + 1)] = X->D[(size_t)(p % nu) * ny + p / nu];
-  for (int k = 1; k <= n; k++) {
-    fl_step(X, P, c[k - 1], M);
-    c[k] = simplify(X->S, bg_sym_scale(X->S, -1.0 / k, trace_AM(X, M)));
-    for (int p = 0; p < ny * nu; p++) {
-      int iy = p / nu, iu = p % nu, e = bg_sym_mul(X->S, X->D[(size_t)iu * ny + iy], c[k]);
-      for (int i = 0; i < n; i++)
-        for (int q = 0; q < n; q++)
-          e = bg_sym_add(X->S, e, bg_sym_mul(X->S, X->C[(size_t)i * ny + iy],
-                                               bg_sym_mul(X->S, M[(size_t)q * n + i], X->B[(size_t)iu * n + q])));
-      num[p * (n + 1) + k] = simplify(X->S, e);
-    }
-    memcpy(P, M, (size_t)n * n * sizeof *P);
-  }
-  free(P), free(M);
-}
-
+/* Printed entry; NULL when it is longer than SYM_MAX_CHARS. */
 static char *print(symctx *X, int e, int latex) {
   bg_strbuf b = {0};
   bg_sym_print(X->S, e, latex, bg_eqsym_name, (void *)X->s, &b);
-  char *r = bg_arena_strdup(&X->l->arena, bg_sb_str(&b));
+  char *r = b.len > SYM_MAX_CHARS ? NULL : bg_arena_strdup(&X->l->arena, bg_sb_str(&b));
   bg_sb_free(&b);
   return r;
 }
 
-static char **print_all(symctx *X, const int *E, int count, int latex) {
+static char **print_all(symctx *X, const int *E, int count, int latex, int *too_long) {
   char **out = bg_arena_alloc(&X->l->arena, (size_t)(count + 1) * sizeof *out);
-  for (int k = 0; k < count; k++) out[k] = print(X, E[k], latex);
+  for (int k = 0; k < count; k++)
+    if (!(out[k] = print(X, E[k], latex))) *too_long = 1, out[k] = "";
   return out;
 }
 
-static void store(symctx *X, const int *c, const int *num) {
+/* 0, or -1 when a printed entry or coefficient is too long. */
+static int store(symctx *X, const int *c, const int *num) {
   bg_lin_symbolic *y = &X->l->sym;
-  int n = X->n, np = X->ny * X->nu;
+  int n = X->n, np = X->ny * X->nu, too_long = 0;
   for (int latex = 0; latex < 2; latex++) {
-    y->A[latex] = print_all(X, X->A, n * n, latex), y->B[latex] = print_all(X, X->B, n * X->nu, latex);
-    y->C[latex] = print_all(X, X->C, X->ny * n, latex), y->D[latex] = print_all(X, X->D, X->ny * X->nu, latex);
-    y->den[latex] = print_all(X, c, n + 1, latex), y->num[latex] = print_all(X, num, np * (n + 1), latex);
+    y->A[latex] = print_all(X, X->A, n * n, latex, &too_long);
+    y->B[latex] = print_all(X, X->B, n * X->nu, latex, &too_long);
+    y->C[latex] = print_all(X, X->C, X->ny * n, latex, &too_long);
+    y->D[latex] = print_all(X, X->D, X->ny * X->nu, latex, &too_long);
+    y->den[latex] = print_all(X, c, n + 1, latex, &too_long);
+    y->num[latex] = print_all(X, num, np * (n + 1), latex, &too_long);
+  }
+  if (too_long) {
+    memset(y->A, 0, sizeof y->A), memset(y->B, 0, sizeof y->B), memset(y->C, 0, sizeof y->C);
+    memset(y->D, 0, sizeof y->D), memset(y->den, 0, sizeof y->den), memset(y->num, 0, sizeof y->num);
+    return -1;
   }
   y->ok = 1, y->n = n;
+  return 0;
+}
+
+/* sum_k c[k] s^(deg - k) with the coefficients evaluated at the params;
+ * *scale gets sum |c_k| |s|^(deg - k), the size of its rounding. */
+static double complex poly_at(symctx *X, const int *c, int deg, double complex s, double *scale) {
+  bg_symenv env = {X->l->t, X->l->y0, NULL, NULL, NULL};
+  double complex v = 0;
+  *scale = 0;
+  for (int k = 0; k <= deg; k++) {
+    double ck = bg_sym_eval(X->S, c[k], &env);
+    v = v * s + ck;
+    *scale = *scale * cabs(s) + fabs(ck);
+  }
+  return v;
+}
+
+/* The symbolic polynomials against the numeric state space at one complex
+ * point s0 off the axes: den(s0) = det(s0 I - A) and num(s0) = den(s0) H(s0)
+ * (a wrong formula is worse than none). */
+static int tfs_match(symctx *X, const int *c, const int *num) {
+  bg_linear *l = X->l;
+  int n = X->n;
+  double rho = 1, sc;
+  for (int i = 0; i < l->npole; i++) rho = fmax(rho, hypot(l->pole_re[i], l->pole_im[i]));
+  double complex s0 = rho * (0.7548776662 + 1.1892071150 * I), d = poly_at(X, c, n, s0, &sc);
+  double complex det = 1; /* det(s0 I - A) = prod of the eigenvalue differences */
+  for (int i = 0; i < l->npole; i++) det *= s0 - (l->pole_re[i] + I * l->pole_im[i]);
+  if (l->npole != n || !(cabs(d - det) <= 1e-8 * sc)) return 0;
+  for (int p = 0; p < X->ny * X->nu; p++) {
+    double complex h = bg_lin_eval(l, p / X->nu, p % X->nu, s0), v = poly_at(X, num + (size_t)p * (n + 1), n, s0, &sc);
+    if (!(cabs(v - d * h) <= 1e-8 * (sc + cabs(d * h)))) return 0;
+  }
+  return 1;
+}
+
+static const char *transfer(symctx *X) {
+  int n = X->n, np = X->ny * X->nu, *c = bg_xcalloc((size_t)n + 2, sizeof *c);
+  int *num = bg_xcalloc((size_t)np * (n + 1) + 1, sizeof *num);
+  const char *why = NULL;
+  if (bg_lin_sym_tfs(X->S, n, X->nu, X->ny, X->A, X->B, X->C, X->D, SYM_MAX_TERMS, c, num))
+    why = "the symbolic transfer functions are too large (a coefficient of more than 400 "
+          "terms): numeric only";
+  else {
+    for (int k = 0; k <= n; k++) c[k] = simplify(X->S, c[k]);
+    for (int k = 0; k < np * (n + 1); k++) num[k] = simplify(X->S, num[k]);
+    if (!tfs_match(X, c, num))
+      why = "the symbolic transfer functions do not match the numeric ones at a test point: "
+            "numeric only";
+    else if (store(X, c, num))
+      why = "the symbolic form is too long to print (an entry or coefficient of more than "
+            "4000 characters): numeric only";
+  }
+  free(c), free(num);
+  return why;
 }
 
 static const char *derive(symctx *X) {
@@ -186,11 +215,7 @@ static const char *derive(symctx *X) {
     const int counts[] = {X->n * X->n, X->n * X->nu, X->ny * X->n, X->ny * X->nu};
     for (int q = 0; q < 4; q++)
       for (int k = 0; k < counts[q]; k++) mats[q][k] = simplify(X->S, mats[q][k]);
-    int np = X->ny * X->nu, *c = bg_xcalloc((size_t)X->n + 2, sizeof *c);
-    int *num = bg_xcalloc((size_t)np * (X->n + 1) + 1, sizeof *num);
-    faddeev(X, c, num);
-    store(X, c, num);
-    free(c), free(num);
+    why = transfer(X);
   }
   bg_eqred_free(r);
   return why;
@@ -199,7 +224,7 @@ static const char *derive(symctx *X) {
 void bg_lin_sym_derive(bg_linear *l, const bg_model *m, bg_eqsys *s) {
   const char *why = NULL;
   if (!l->reduced) why = "no state space";
-  else if (l->n > SYM_MAX_STATES) why = "more than 4 states: numeric only";
+  else if (l->n > SYM_MAX_STATES) why = "more than 8 states: numeric only";
   if (why) {
     l->sym.note = why;
     return;

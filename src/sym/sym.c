@@ -88,15 +88,24 @@ static int intern(bg_sym *S, int kind, int ref, double c, int n, const int *args
     S->capnode = S->capnode ? 2 * S->capnode : 1024;
     S->node = bg_xrealloc(S->node, (size_t)S->capnode * sizeof *S->node);
   }
+  /* args and w may point into S->arg and S->w (an existing node's operands,
+   * as monomial() passes them): grow into new arrays and free the old ones
+   * only after the operands are copied */
+  int *old_arg = NULL;
+  double *old_w = NULL;
   if (S->narg + n > S->caparg) {
     while (S->narg + n > S->caparg) S->caparg = S->caparg ? 2 * S->caparg : 4096;
-    S->arg = bg_xrealloc(S->arg, (size_t)S->caparg * sizeof *S->arg);
-    S->w = bg_xrealloc(S->w, (size_t)S->caparg * sizeof *S->w);
+    old_arg = S->arg, old_w = S->w;
+    S->arg = bg_xmalloc((size_t)S->caparg * sizeof *S->arg);
+    S->w = bg_xmalloc((size_t)S->caparg * sizeof *S->w);
+    if (S->narg) memcpy(S->arg, old_arg, (size_t)S->narg * sizeof *S->arg);
+    if (S->narg) memcpy(S->w, old_w, (size_t)S->narg * sizeof *S->w);
   }
   int id = S->nnode++;
   S->node[id] = (bg_symnode){kind, ref, n, S->narg, c, h};
   for (int k = 0; k < n; k++) S->arg[S->narg + k] = args[k], S->w[S->narg + k] = w ? w[k] : 1;
   S->narg += n;
+  free(old_arg), free(old_w);
   S->tab[p] = id;
   if (2 * S->nnode > S->captab) rehash(S);
   return id;

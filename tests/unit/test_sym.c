@@ -316,7 +316,39 @@ static void test_printed(void) {
   bg_sb_free(&sb);
 }
 
+/* The node store grows while a sum re-interns the monomial of a scaled
+ * product from the product's own operands (a use-after-free before: the
+ * operands pointed into the array being reallocated). One-operand nodes
+ * (x_k^2) fill the operand array up to 4 below its capacity, so that the
+ * product's 3 operands fit and its monomial's 3 do not; the term must keep
+ * its factors. Twice, across two growths. */
+static void test_growth(void) {
+  efx f;
+  OK(efx_load(&f, NULL, src_small, -1, NULL, 0) == 0);
+  if (!f.m) { efx_free(&f); return; }
+  bg_sym *S = bg_sym_new(f.m);
+  int ok = 1, k = 0;
+  for (int round = 0; round < 2; round++) {
+    while (S->narg == 0 || S->narg != S->caparg - 4) bg_sym_powc(S, bg_sym_leaf(S, SYM_Y, 1000 + k++), 2);
+    int b[3] = {bg_sym_leaf(S, SYM_Y, 1), bg_sym_leaf(S, SYM_Y, 2), bg_sym_leaf(S, SYM_Y, 3 + round)};
+    int cap = S->caparg, p = bg_sym_prod(S, 3, 3, b, NULL), s = bg_sym_add(S, p, bg_sym_leaf(S, SYM_T, 0));
+    OK(S->caparg > cap);
+    const bg_symnode *nd = &S->node[s];
+    ok = nd->kind == SYM_ADD && nd->n == 2;
+    for (int q = 0; q < 2 && ok; q++) {
+      const bg_symnode *t = &S->node[S->arg[nd->adr + q]];
+      if (t->kind != SYM_MUL) continue;
+      ok = S->w[nd->adr + q] == 3 && t->n == 3 && t->c == 1;
+      for (int i = 0; i < 3 && ok; i++) ok = S->node[S->arg[t->adr + i]].ref == (i < 2 ? i + 1 : 3 + round);
+    }
+    OK(ok);
+  }
+  bg_sym_free(S);
+  efx_free(&f);
+}
+
 int main(void) {
+  test_growth();
   test_canonical();
   test_diff_functions();
   test_sym_jacobians();
