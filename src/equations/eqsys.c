@@ -373,6 +373,7 @@ static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *input
   s->live_params = live;
   bg_eqs_compile(s);
   bg_eqs_pattern(s);
+  bg_eqs_events_find(s);
   s->work = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   return s;
 }

@@ -125,4 +125,33 @@ double bg_eqsys_input_period(const bg_eqsys *s, double t0, double t1);
  * a dependent store's constraint): output rows must satisfy them. */
 int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i);
 int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times, int max);
+
+/* State events (docs/simulation.md, "State events"): every comparison, abs,
+ * sign, step, ramp, pulse, min, max, sat, floor, ceil and table of the
+ * equations whose switching condition reads an unknown has a mode (the
+ * branch it takes) and one root function per switching point (sat and
+ * pulse: two; floor, ceil, table: the two ends of the current piece).
+ * bg_eqsys_nroots is 0 for a model without them, which then evaluates as
+ * before. With the modes frozen, every evaluation (residual, right-hand
+ * side, Jacobians, outputs) takes the branch the mode holds, continued
+ * past its switching point, except that an evaluation that is not finite
+ * that way is done as compiled. */
+int bg_eqsys_nroots(const bg_eqsys *s);
+int bg_eqsys_nmodes(const bg_eqsys *s);
+/* Where root i sits and what it is: "law of D: e2 > 0", "law of V: sat(...)
+ * (upper limit)"; valid while s lives. */
+const char *bg_eqsys_root_text(const bg_eqsys *s, int i);
+void bg_eqsys_modes_freeze(bg_eqsys *s, int on);
+/* The root functions at (t, y, yp) (yp nullable) under the current modes:
+ * g has bg_eqsys_nroots entries. 0, or -1 when one is not finite. */
+int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, double *g);
+/* Sets every mode from the values at (t, y, yp); dir (nullable, one per
+ * root: +1 rising, -1 falling, 0) decides a root function that is exactly
+ * zero at a root just found; one still undecided is decided by the point
+ * y + delta y' (y' = yp, or the right-hand side when yp is NULL). Returns
+ * how many modes changed. */
+int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
+                          double delta);
+void bg_eqsys_modes_get(const bg_eqsys *s, double *modes); /* bg_eqsys_nmodes values */
+void bg_eqsys_modes_set(bg_eqsys *s, const double *modes);
 #endif

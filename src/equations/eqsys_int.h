@@ -38,6 +38,7 @@ typedef struct tinstr {
   int out;
   int a[3];    /* argument slots; T_LIN: a[0] = number of terms */
   int eq;      /* which equation (signal, or -1 - row) for error messages */
+  int xn;      /* the model expression node it computes (event descriptions), -1 */
 } tinstr;
 
 struct bg_eqsys {
@@ -116,6 +117,18 @@ struct bg_eqsys {
   int ncolor, *color;
   int *color_adr, *color_cols;
 
+  /* state events (eqsys_events.c): the main-tape instructions whose
+   * switching condition reads an unknown, their modes and root functions */
+  int nev, *ev_code, *ev_root0, *code_ev; /* code_ev: per main instruction, -1 */
+  double *ev_mode, *ev_prev; /* ev_prev: the modes before an update */
+  unsigned char *ev_zero;     /* per event: a switching function exactly zero */
+  int nroot, *root_ev;
+  const char **root_text;
+  unsigned char *slot_dep; /* per slot: reads y or yp */
+  double *ev_y, *ev_yp;    /* n-sized scratch of the look-ahead */
+  int ev_frozen;           /* evaluate with the modes frozen (set by the simulation) */
+  int vals_frozen;         /* the current values were computed with frozen modes */
+
   double *work;     /* n-sized scratch */
   char err[256];
   int has_err;
@@ -148,4 +161,12 @@ int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int ou
  * as the ODE right-hand side). Values must be current (bg_eqs_eval). */
 void bg_eqs_jac(bg_eqsys *s, double cj, int resid, double *J, int sparse, int only_y,
                 int only_yp);
+/* eqsys_events.c: finds the event instructions (after compilation); their
+ * frozen value and derivative; the value of instruction k as compiled. */
+void bg_eqs_events_find(bg_eqsys *s);
+double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v);
+double bg_eqs_ev_der(const bg_eqsys *s, int e, const double *v, const double *dv);
+double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v);
+/* eqsys_tape.c: values of the main tape at (t, y, yp) without any check. */
+void bg_eqs_eval_raw(bg_eqsys *s, double t, const double *y, const double *yp);
 #endif

@@ -61,9 +61,11 @@ static double ins_val(const bg_eqsys *s, const tinstr *I, const double *v) {
   }
 }
 
+double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v) { return ins_val(s, &s->code[k], v); }
+
 /* Emits out = op(args), folding it when every argument is a constant. */
 static int emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
-  tinstr I = {(unsigned char)op, (unsigned char)na, ref, -1, {0, 0, 0}, eq};
+  tinstr I = {(unsigned char)op, (unsigned char)na, ref, -1, {0, 0, 0}, eq, -1};
   int cst = 1;
   for (int k = 0; k < na && op != T_LIN; k++) I.a[k] = args[k], cst &= s->is_const[args[k]];
   if (op == T_LIN) {
@@ -110,7 +112,9 @@ static int cx(bg_eqsys *s, int root, int eq) {
     return slot;
   default:
     for (int k = 0; k < n->nargs; k++) args[k] = cx(s, n->arg[k], eq);
-    return emit(s, n->op, n->ref, n->nargs, args, eq);
+    slot = emit(s, n->op, n->ref, n->nargs, args, eq);
+    if (s->ncode && s->code[s->ncode - 1].out == slot) s->code[s->ncode - 1].xn = root;
+    return slot;
   }
 }
 
@@ -337,20 +341,55 @@ static int diagnose(bg_eqsys *s, int c0, int c1, double t) {
   return -1;
 }
 
-int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs) {
+/* The code [0, c1): with the modes of the state events frozen between
+ * events (docs/simulation.md, "State events"), or as compiled. A model
+ * without events never takes the first loop. */
+static void run_code(bg_eqsys *s, int c1, int frozen) {
   double *v = s->v;
-  int n = s->n, c1 = outputs ? s->nout_code : s->nmain;
+  s->vals_frozen = frozen;
+  if (frozen) {
+    for (int k = 0; k < c1; k++) {
+      int e = k < s->nmain ? s->code_ev[k] : -1;
+      v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_val(s, &s->code[k], v);
+    }
+    return;
+  }
+  for (int k = 0; k < c1; k++) v[s->code[k].out] = ins_val(s, &s->code[k], v);
+}
+
+static void load_point(bg_eqsys *s, double t, const double *y, const double *yp) {
+  double *v = s->v;
+  int n = s->n;
   v[0] = t;
   memcpy(v + s->slot_y, y, (size_t)n * sizeof *v);
   if (yp) memcpy(v + s->slot_yp, yp, (size_t)n * sizeof *v);
   else memset(v + s->slot_yp, 0, (size_t)n * sizeof *v);
-  for (int k = 0; k < c1; k++) v[s->code[k].out] = ins_val(s, &s->code[k], v);
-  s->has_err = 0;
+}
+
+void bg_eqs_eval_raw(bg_eqsys *s, double t, const double *y, const double *yp) {
+  load_point(s, t, y, yp);
+  run_code(s, s->nmain, s->ev_frozen && s->nev);
+}
+
+static int eval_bad(const bg_eqsys *s, int outputs) {
+  const double *v = s->v;
   int bad = 0;
-  for (int i = 0; i < n; i++) bad |= !isfinite(v[s->row_slot[i]]);
+  for (int i = 0; i < s->n; i++) bad |= !isfinite(v[s->row_slot[i]]);
   for (int k = 0; outputs && k < s->nout; k++) bad |= !isfinite(v[s->out_slot[k]]);
   for (int k = 0; outputs && k < s->lin_nh; k++) bad |= !isfinite(v[s->lin_hslot[k]]);
-  return bad ? diagnose(s, 0, c1, t) : 0;
+  return bad;
+}
+
+int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs) {
+  int c1 = outputs ? s->nout_code : s->nmain;
+  load_point(s, t, y, yp);
+  run_code(s, c1, s->ev_frozen && s->nev);
+  s->has_err = 0;
+  /* A frozen branch continued past its switching point can leave a law's
+   * domain (sqrt(abs(e)) with abs held at +e while e < 0): the values as
+   * compiled then, which are what the model means anyway. */
+  if (s->vals_frozen && eval_bad(s, outputs)) run_code(s, c1, 0);
+  return eval_bad(s, outputs) ? diagnose(s, 0, c1, t) : 0;
 }
 
 /* ------------------------------------------------------------ Jacobians */
@@ -359,6 +398,13 @@ static void seed(bg_eqsys *s, int c, double sy, double syp) {
   for (int k = s->color_adr[c]; k < s->color_adr[c + 1]; k++) {
     int j = s->color_cols[k];
     s->dv[s->slot_y + j] = sy, s->dv[s->slot_yp + j] = syp;
+  }
+  if (s->vals_frozen) {
+    for (int k = 0; k < s->nmain; k++) {
+      int e = s->code_ev[k];
+      s->dv[s->code[k].out] = e >= 0 ? bg_eqs_ev_der(s, e, s->v, s->dv) : ins_der(s, &s->code[k], s->v, s->dv);
+    }
+    return;
   }
   for (int k = 0; k < s->nmain; k++) s->dv[s->code[k].out] = ins_der(s, &s->code[k], s->v, s->dv);
 }

@@ -346,6 +346,15 @@ static int simulate_algebraic(const bg_model *m, bg_eqsys *s, bg_simresult *r) {
   return rc;
 }
 
+/* The switching conditions of the state events (names borrowed). */
+static void conditions_keep(bg_eqsys *s, int searched, bg_simresult *r) {
+  r->nconditions = bg_eqsys_nroots(s);
+  r->events_searched = searched && r->nconditions > 0;
+  if (!r->nconditions) return;
+  r->condition_text = bg_xmalloc((size_t)r->nconditions * sizeof(char *));
+  for (int i = 0; i < r->nconditions; i++) r->condition_text[i] = bg_eqsys_root_text(s, i);
+}
+
 /* The model's max_step, and at most 1/SIM_STEPS_PER_PERIOD of the shortest
  * period of a periodic input: the error test only sees the solution at the
  * steps, and a model whose states barely move while a diode is off lets the
@@ -396,6 +405,8 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   r->max_step = p.max_step;
   p.max_steps = o && o->max_steps > 0 ? o->max_steps : SIM_MAX_STEPS;
   p.verbose = o ? o->verbose : 0;
+  p.events = !(o && o->no_events);
+  conditions_keep(s, p.events, r);
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
   r->linear_solver = p.sparse ? "klu" : "dense";
   r->rtol = p.rtol, r->atol = atol;
@@ -416,6 +427,10 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
                     "Jacobian evaluations, %ld error test failures, %ld nonlinear iterations\n",
             rc ? "failed" : "done", (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec),
             r->nrows, r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
+  if (p.verbose && r->nconditions)
+    fprintf(stderr, "bgdraw: simulate: %d state event%s at %d switching condition%s%s\n", r->nevents,
+            r->nevents == 1 ? "" : "s", r->nconditions, r->nconditions == 1 ? "" : "s",
+            r->events_searched ? "" : " (not searched)");
   if (p.verbose && r->rows_redone)
     fprintf(stderr, "bgdraw: simulate: %d output interval%s integrated again with short steps: "
                     "the row violated the algebraic equations\n", r->rows_redone, r->rows_redone == 1 ? "" : "s");
@@ -434,6 +449,7 @@ void bg_simresult_free(bg_simresult *r) {
   free(r->yp0);
   free(r->verify_dev);
   free(r->verify_message);
+  free(r->condition_text), free(r->event_t), free(r->event_cond), free(r->event_dir);
   memset(r, 0, sizeof *r);
 }
 

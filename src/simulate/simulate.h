@@ -25,6 +25,9 @@ typedef struct bg_sim_opts {
   /* Why the equations could not be formed when bg_simulate gets s == NULL
    * (the eqsys diagnostic), for the refusal message; nullable. */
   const char *eqs_problem;
+  /* 1: integrate straight over the switching conditions, as before state
+   * events existed (tests show what root finding changes) */
+  int no_events;
 } bg_sim_opts;
 
 typedef struct bg_simresult {
@@ -63,6 +66,16 @@ typedef struct bg_simresult {
   char *verify_message;     /* why the comparison could not be made; nullable */
   int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
                           after the model's own failed (0: the model's worked) */
+  /* State events (docs/simulation.md): the switching conditions of the
+   * equations (condition_text borrowed from the eqsys: "law of D: e2 > 0"),
+   * whether they were searched, and each event found in time order: its
+   * time, condition and the direction its switching function crossed 0 */
+  int nconditions, events_searched;
+  const char **condition_text;
+  int nevents;
+  double *event_t;
+  int *event_cond;
+  signed char *event_dir; /* +1 rising, -1 falling */
 } bg_simresult;
 
 /* Runs the model's simulation. s may be NULL when the equations could not

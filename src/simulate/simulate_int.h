@@ -18,6 +18,7 @@ typedef struct bg_simplan {
   int nbp;
   const double *bp;    /* sorted breakpoints strictly inside (t0, t_end) */
   int verbose;
+  int events;          /* find state events (root functions; docs/simulation.md) */
   double progress_every; /* -v: seconds of wall time between progress lines */
 } bg_simplan;
 

@@ -48,6 +48,12 @@ typedef struct simrun {
    * since the last clock reading, latest time shown */
   double wall0, wall_last, t_shown;
   unsigned ncall;
+  /* state events: root functions, which fired, the stop time to set again
+   * after a restart, the modes at the last row (to redo an interval from),
+   * events since the last row, events printed with -v, the log's capacity */
+  int nroot, *rootsfound, nev_last, nev_interval, nev_shown, evcap;
+  double tstop, *modes_last, *modes_before, *modes_ev;
+  bg_simresult *r;
 } simrun;
 
 static void progress(simrun *R, double t);
@@ -132,6 +138,17 @@ static int ida_jac(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vec
                    SUNMatrix J, void *ud, N_Vector t1, N_Vector t2, N_Vector t3) {
   (void)r, (void)t1, (void)t2, (void)t3;
   return fill_jac(ud, t, y, yp, cj, J);
+}
+
+/* Root functions of the state events (docs/simulation.md, "State events"). */
+static int cv_g(sunrealtype t, N_Vector y, sunrealtype *g, void *ud) {
+  simrun *R = ud;
+  return bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), NULL, g) ? -1 : 0;
+}
+
+static int ida_g(sunrealtype t, N_Vector y, N_Vector yp, sunrealtype *g, void *ud) {
+  simrun *R = ud;
+  return bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), g) ? -1 : 0;
 }
 
 /* SUNDIALS would print to stderr; keep the text for our own message. */
@@ -219,6 +236,7 @@ static int setup_cvode(simrun *R) {
   if (p->max_step > 0) f |= CVodeSetMaxStep(R->mem, p->max_step);
   f |= CVodeSetLinearSolver(R->mem, R->LS, R->A);
   f |= CVodeSetJacFn(R->mem, cv_jac);
+  if (R->nroot) f |= CVodeRootInit(R->mem, R->nroot, cv_g);
   return f ? -1 : 0;
 }
 
@@ -238,6 +256,7 @@ static int setup_ida(simrun *R) {
   if (p->max_step > 0) f |= IDASetMaxStep(R->mem, p->max_step);
   f |= IDASetLinearSolver(R->mem, R->LS, R->A);
   f |= IDASetJacFn(R->mem, ida_jac);
+  if (R->nroot) f |= IDARootInit(R->mem, R->nroot, ida_g);
   return f ? -1 : 0;
 }
 
@@ -268,6 +287,13 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
   R->wall0 = R->wall_last = wall();
   if (make_linsol(R)) return -1;
   if (p->kind == BG_SIM_IDA) alg_open(R);
+  R->nroot = p->events ? bg_eqsys_nroots(s) : 0;
+  if (R->nroot) {
+    R->rootsfound = bg_xcalloc((size_t)R->nroot, sizeof(int));
+    R->modes_last = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
+    R->modes_before = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
+    R->modes_ev = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
+  }
   return p->kind == BG_SIM_IDA ? setup_ida(R) : setup_cvode(R);
 }
 
@@ -285,6 +311,8 @@ static void run_close(simrun *R) {
   free(R->rowind);
   free(R->diagpos);
   free(R->alg), free(R->res), free(R->ylast), free(R->yplast), free(R->coef);
+  free(R->rootsfound), free(R->modes_last), free(R->modes_before), free(R->modes_ev);
+  bg_eqsys_modes_freeze(R->s, 0); /* later users of the eqsys evaluate it as compiled */
   if (R->ctx) SUNContext_Free(&R->ctx);
 }
 
@@ -308,6 +336,7 @@ static void stats_now(simrun *R, long st[5]) {
 }
 
 static int run_stop_at(simrun *R, double tstop) {
+  R->tstop = tstop;
   return R->p->kind == BG_SIM_IDA ? IDASetStopTime(R->mem, tstop) : CVodeSetStopTime(R->mem, tstop);
 }
 
@@ -338,13 +367,112 @@ static int run_calcic(simrun *R, double tnext) {
   return f;
 }
 
+/* ------------------------------------------------------------------ state events
+ * docs/simulation.md, "State events": the solver stops at each root of a
+ * switching function, the modes are set from the values there, and it
+ * starts again (CVodeReInit; IDA: IDAReInit and consistent values again,
+ * until the modes agree with them). */
+#define SIM_EVENTS_PER_INTERVAL 1000 /* more in one output interval: chattering */
+#define SIM_EVENTS_SHOWN 100         /* -v prints the first ones */
+#define SIM_MODE_SETTLE 8            /* IDA: consistent values and modes, rounds at most */
+#define SIM_CHATTER (-1000)          /* run_to's flag: too many events */
+#define SIM_UNSETTLED (-1001)        /* the modes and consistent values disagree */
+
+/* The look-ahead of a switching function exactly zero at a restart. */
+static double ev_delta(const simrun *R) { return 1e-9 * (R->p->t_end - R->p->t0); }
+
+static int modes_now(simrun *R, const int *dir) {
+  if (!R->nroot) return 0;
+  int ida = R->p->kind == BG_SIM_IDA;
+  return bg_eqsys_modes_update(R->s, R->tcur, N_VGetArrayPointer(R->y), ida ? N_VGetArrayPointer(R->yp) : NULL,
+                               dir, ev_delta(R));
+}
+
+/* IDA: consistent values under the current modes, then the modes from
+ * those values, until nothing changes. */
+static int settle(simrun *R, double tnext) {
+  int f = run_calcic(R, tnext);
+  for (int k = 0; f >= 0 && R->nroot && k < SIM_MODE_SETTLE; k++) {
+    if (!modes_now(R, NULL)) return f;
+    stats_now(R, R->st);
+    f = IDAReInit(R->mem, R->tcur, R->y, R->yp);
+    if (f >= 0) f = run_calcic(R, tnext);
+  }
+  return f < 0 || !R->nroot ? f : SIM_UNSETTLED;
+}
+
+static void log_event(simrun *R, int i, int dir) {
+  bg_simresult *r = R->r;
+  if (r->nevents == R->evcap) {
+    R->evcap = R->evcap ? 2 * R->evcap : 64;
+    r->event_t = bg_xrealloc(r->event_t, (size_t)R->evcap * sizeof(double));
+    r->event_cond = bg_xrealloc(r->event_cond, (size_t)R->evcap * sizeof(int));
+    r->event_dir = bg_xrealloc(r->event_dir, (size_t)R->evcap);
+  }
+  r->event_t[r->nevents] = R->tcur, r->event_cond[r->nevents] = i;
+  r->event_dir[r->nevents++] = (signed char)(dir > 0 ? 1 : -1);
+}
+
+/* -v: the events logged since the last call (a redone interval logs its
+ * events again: they are not shown twice). */
+static void show_events(simrun *R) {
+  const bg_simresult *r = R->r;
+  for (; R->p->verbose && R->nev_shown < r->nevents; R->nev_shown++) {
+    int k = R->nev_shown;
+    if (k < SIM_EVENTS_SHOWN)
+      fprintf(stderr, "bgdraw: simulate: state event at t = %.10g: %s (%s)\n", r->event_t[k],
+              bg_eqsys_root_text(R->s, r->event_cond[k]), r->event_dir[k] > 0 ? "rising" : "falling");
+    else if (k == SIM_EVENTS_SHOWN)
+      fprintf(stderr, "bgdraw: simulate: more state events (not shown; the JSON lists them all)\n");
+  }
+}
+
+/* At a root: log what fired, set the modes, restart there. */
+static int on_event(simrun *R, double tnext) {
+  int ida = R->p->kind == BG_SIM_IDA, f;
+  f = ida ? IDAGetRootInfo(R->mem, R->rootsfound) : CVodeGetRootInfo(R->mem, R->rootsfound);
+  if (f < 0) return f;
+  int nlogged = R->r->nevents;
+  bg_eqsys_modes_get(R->s, R->modes_before);
+  for (int i = 0; i < R->nroot; i++)
+    if (R->rootsfound[i]) log_event(R, i, R->rootsfound[i]);
+  if (++R->nev_interval > SIM_EVENTS_PER_INTERVAL) return SIM_CHATTER;
+  stats_now(R, R->st); /* ReInit resets the counters */
+  modes_now(R, R->rootsfound);
+  if (!ida) f = CVodeReInit(R->mem, R->tcur, R->y);
+  else if ((f = IDAReInit(R->mem, R->tcur, R->y, R->yp)) >= 0) f = settle(R, tnext);
+  if (ida) bg_eqsys_modes_get(R->s, R->modes_ev);
+  /* IDA finds the root on interpolated algebraic values; when the
+   * consistent ones at that time say no condition has switched yet (every
+   * mode as before), it was not an event: it is found again a moment later. */
+  if (f >= 0 && ida && !memcmp(R->modes_ev, R->modes_before, (size_t)bg_eqsys_nmodes(R->s) * sizeof(double)))
+    R->r->nevents = nlogged;
+  show_events(R);
+  return f < 0 ? f : run_stop_at(R, R->tstop);
+}
+
+_Static_assert(CV_ROOT_RETURN == IDA_ROOT_RETURN, "one flag for both solvers' roots");
+
+/* Advances to tout through the state events on the way. */
+static int run_to_events(simrun *R, double tout) {
+  int f;
+  while ((f = run_to(R, tout)) == CV_ROOT_RETURN) { /* == IDA_ROOT_RETURN */
+    double span = R->p->t_end - R->p->t0;
+    f = on_event(R, tout > R->tcur + 1e-9 * span ? tout : R->tcur + 1e-6 * span);
+    if (f < 0) return f;
+    if (R->tcur >= tout) return 0;
+  }
+  return f;
+}
+
 /* Restart after a breakpoint: the inputs jump, the states do not. */
 static int run_restart(simrun *R, double tb, double tnext) {
   stats_now(R, R->st);
   R->tcur = tb;
+  modes_now(R, NULL);
   if (R->p->kind != BG_SIM_IDA) return CVodeReInit(R->mem, tb, R->y);
   int f = IDAReInit(R->mem, tb, R->y, R->yp);
-  return f < 0 ? f : run_calcic(R, tnext);
+  return f < 0 ? f : settle(R, tnext);
 }
 
 /* ------------------------------------------------------------------ results */
@@ -364,7 +492,27 @@ static int record(simrun *R, bg_simresult *r, double t) {
   return 0;
 }
 
+static void fail_events(simrun *R, bg_simresult *r, int flag) {
+  bg_strbuf sb = {0};
+  const char *what = r->nevents ? bg_eqsys_root_text(R->s, r->event_cond[r->nevents - 1]) : "?";
+  if (flag == SIM_CHATTER)
+    bg_sb_printf(&sb, "simulation failed at t = %.9g: more than %d state events in one output interval, "
+                      "the last at %s: the condition switches back and forth (chattering, a sliding "
+                      "mode such as friction at rest) and the equations have no mode that holds there",
+                 R->tcur, SIM_EVENTS_PER_INTERVAL, what);
+  else
+    bg_sb_printf(&sb, "simulation failed at t = %.9g: after a state event (%s) no consistent values agree "
+                      "with the modes of the conditions after %d rounds of IDACalcIC", R->tcur, what,
+                 SIM_MODE_SETTLE);
+  r->partial = 1;
+  if (R->tcur > r->t_reached) r->t_reached = R->tcur;
+  free(r->message);
+  r->message = strdup(bg_sb_str(&sb));
+  bg_sb_free(&sb);
+}
+
 static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
+  if (flag == SIM_CHATTER || flag == SIM_UNSETTLED) { fail_events(R, r, flag); return; }
   bg_strbuf sb = {0};
   int ida = R->p->kind == BG_SIM_IDA;
   char *fname = ida ? IDAGetReturnFlagName(flag) : CVodeGetReturnFlagName(flag);
@@ -454,7 +602,9 @@ static void row_coefficients(simrun *R) {
 }
 
 static void keep_last(simrun *R) {
+  R->nev_interval = 0;
   if (!R->nalg) return;
+  if (R->nroot) bg_eqsys_modes_get(R->s, R->modes_last), R->nev_last = R->r->nevents;
   memcpy(R->ylast, N_VGetArrayPointer(R->y), (size_t)R->n * sizeof(double));
   memcpy(R->yplast, N_VGetArrayPointer(R->yp), (size_t)R->n * sizeof(double));
   R->tlast = R->tcur;
@@ -466,13 +616,14 @@ static int redo_interval(simrun *R, double tout, double tstop) {
   memcpy(N_VGetArrayPointer(R->y), R->ylast, (size_t)R->n * sizeof(double));
   memcpy(N_VGetArrayPointer(R->yp), R->yplast, (size_t)R->n * sizeof(double));
   R->tcur = R->tlast;
+  if (R->nroot) bg_eqsys_modes_set(R->s, R->modes_last), R->r->nevents = R->nev_last;
   /* the kept yp is interpolated: consistent derivatives again (IDACalcIC) */
   int f = IDAReInit(R->mem, R->tlast, R->y, R->yp);
   if (f >= 0) f = run_calcic(R, tout);
   double h = (tout - R->tlast) / SIM_REDO_STEPS;
   if (f >= 0) f = IDASetMaxStep(R->mem, R->p->max_step > 0 && R->p->max_step < h ? R->p->max_step : h);
   if (f >= 0) f = run_stop_at(R, tstop);
-  if (f >= 0) f = run_to(R, tout);
+  if (f >= 0) f = run_to_events(R, tout);
   int g = IDASetMaxStep(R->mem, R->p->max_step > 0 ? R->p->max_step : 0.0);
   return f < 0 ? f : g;
 }
@@ -509,7 +660,7 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) 
   while (f >= 0 && *k < p->nrows && (last || p->times[*k] < tstop)) {
     double tout = last && *k == p->nrows - 1 ? p->t_end : p->times[*k];
     if (tout > R->tcur + 1e-14 * span) {
-      f = run_to(R, tout);
+      f = run_to_events(R, tout);
       if (f >= 0) f = check_row(R, r, tout, tstop);
       if (f < 0) { fail(R, r, f, ""); return -1; }
     }
@@ -519,7 +670,7 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) 
     if (p->verbose) progress(R, R->tcur);
   }
   if (last) return 0;
-  if (R->tcur < tstop && (f = run_to(R, tstop)) < 0) { fail(R, r, f, ""); return -1; }
+  if (R->tcur < tstop && (f = run_to_events(R, tstop)) < 0) { fail(R, r, f, ""); return -1; }
   double tnext = *k < p->nrows && p->times[*k] > tb ? p->times[*k] : tb + 1e-3 * span;
   f = run_restart(R, tb, tnext);
   if (f < 0) { fail(R, r, f, " (restarting after an input discontinuity)"); return -1; }
@@ -554,11 +705,17 @@ static int run_calcic_guess(simrun *R, const double *y0, double tnext, int k) {
   stats_now(R, R->st);
   R->nfunc_err = 0;
   R->sunmsg[0] = 0;
+  R->tcur = R->p->t0;
+  modes_now(R, NULL);
   int f = IDAReInit(R->mem, R->p->t0, R->y, R->yp);
-  return f < 0 ? f : run_calcic(R, tnext);
+  return f < 0 ? f : settle(R, tnext);
 }
 
 static int run_start(simrun *R, bg_simresult *r) {
+  if (R->nroot) { /* the modes of the state events from the initial point, then held */
+    modes_now(R, NULL);
+    bg_eqsys_modes_freeze(R->s, 1);
+  }
   if (R->p->kind != BG_SIM_IDA) { keep_start(R, r); return 0; }
   int n = R->n, nz = 0;
   double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
@@ -566,7 +723,7 @@ static int run_start(simrun *R, bg_simresult *r) {
   for (int i = 0; i < n && !R->ode; i++) nz += !bg_eqsys_is_differential(R->s, i);
   double tnext = R->p->nrows > 1 ? R->p->times[1] : R->p->t_end;
   if (R->p->nbp && R->p->bp[0] < tnext) tnext = R->p->bp[0];
-  int f = run_calcic(R, tnext), f0 = f, k;
+  int f = settle(R, tnext), f0 = f, k;
   /* The model's guess failed: other guesses; the message is the first failure's. */
   char msg0[sizeof R->sunmsg], err0[sizeof R->err];
   int nerr0 = R->nfunc_err;
@@ -595,7 +752,9 @@ int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r) {
   simrun R;
   int rc = 0, k = 0;
   r->t_reached = p->t0;
-  if (run_open(&R, s, p)) {
+  int bad_open = run_open(&R, s, p);
+  R.r = r;
+  if (bad_open) {
     r->partial = 1;
     r->message = strdup("simulation failed at the start: the solver could not be set up "
                         "(the Jacobian pattern lacks a diagonal entry, or out of memory)");

@@ -1,0 +1,307 @@
+/* State events (docs/simulation.md, "State events"): the instructions of the
+ * main tape whose switching condition reads an unknown (a comparison, abs,
+ * sign, step, ramp, pulse, min, max, sat, floor, ceil, a table segment),
+ * one root function per switching condition, and a mode per instruction:
+ * between events the solver evaluates the branch the mode holds (continued
+ * smoothly past its switching point), so Newton and the error test never
+ * see the kink; at a root the simulation stops, sets the modes from the
+ * values there and restarts. Conditions of t alone are input breakpoints
+ * (bg_eqsys_breakpoints), not events. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "equations/eqsys_int.h"
+#include "model/expr.h"
+
+/* ------------------------------------------------------------ which ops */
+/* Number of root functions of instruction I (0: not piecewise), and in
+ * *cond the bitmask of its arguments whose dependence makes it an event. */
+static int roots_of(const bg_eqsys *s, const tinstr *I, int *cond) {
+  *cond = 1;
+  switch (I->op) {
+  case BG_X_LT: case BG_X_LE: case BG_X_GT: case BG_X_GE: *cond = 3; return 1;
+  case BG_X_TABLE: return s->m->table_n[I->ref] > 1 ? 2 : 0;
+  case BG_X_CALL: break;
+  default: return 0; /* == and != hold at an instant only; logic follows its comparisons */
+  }
+  switch (I->ref) {
+  case BG_FN_ABS: case BG_FN_SIGN: case BG_FN_STEP: case BG_FN_RAMP: return 1;
+  case BG_FN_FLOOR: case BG_FN_CEIL: return 2;
+  case BG_FN_MIN: case BG_FN_MAX: *cond = 3; return 1;
+  case BG_FN_PULSE: *cond = 3; return 2;
+  case BG_FN_SAT: *cond = 7; return 2;
+  default: return 0; /* if() switches where its condition (a comparison) does */
+  }
+}
+
+/* Which slots read y or yp (a slot of t alone is an input's business). */
+static void mark_deps(bg_eqsys *s) {
+  s->slot_dep = bg_arena_alloc(&s->arena, (size_t)s->nslot + 1);
+  memset(s->slot_dep, 0, (size_t)s->nslot + 1);
+  memset(s->slot_dep + s->slot_y, 1, (size_t)(2 * s->n));
+  for (int k = 0; k < s->nmain; k++) {
+    const tinstr *I = &s->code[k];
+    unsigned char d = 0;
+    if (I->op == T_LIN)
+      for (int q = 0; q < I->a[0]; q++) d |= s->slot_dep[s->tl_slot[I->ref + q]];
+    else
+      for (int q = 0; q < I->na; q++) d |= s->slot_dep[I->a[q]];
+    s->slot_dep[I->out] = d;
+  }
+}
+
+static const char *sub_text(const tinstr *I, int sub) {
+  if (I->op == BG_X_TABLE) return sub ? " (segment's upper end)" : " (segment's lower end)";
+  if (I->ref == BG_FN_SAT) return sub ? " (upper limit)" : " (lower limit)";
+  if (I->ref == BG_FN_PULSE) return sub ? " (end)" : " (start)";
+  if (I->ref == BG_FN_FLOOR || I->ref == BG_FN_CEIL) return sub ? " (next integer up)" : " (next integer down)";
+  return "";
+}
+
+/* "law of D: e2 > 0": where the condition sits and what it is. */
+static const char *describe(bg_eqsys *s, const tinstr *I, int sub) {
+  const bg_model *m = s->m;
+  bg_strbuf sb = {0};
+  if (I->eq >= 0) bg_sb_printf(&sb, "%s of %s: ", s->sig_what[I->eq], m->elem_name[s->sig_elem[I->eq]]);
+  else if (I->eq > -1000000) bg_sb_printf(&sb, "equation of %s: ", s->uname[-1 - I->eq]);
+  if (I->xn >= 0) bg_xprint(m, I->xn, &sb);
+  else bg_sb_puts(&sb, "?");
+  bg_sb_puts(&sb, sub_text(I, sub));
+  char *t = bg_arena_alloc(&s->arena, sb.len + 1);
+  memcpy(t, bg_sb_str(&sb), sb.len + 1);
+  bg_sb_free(&sb);
+  return t;
+}
+
+void bg_eqs_events_find(bg_eqsys *s) {
+  mark_deps(s);
+  int nev = 0, nroot = 0, cond;
+  for (int k = 0; k < s->nmain; k++) {
+    const tinstr *I = &s->code[k];
+    int nr = roots_of(s, I, &cond), dep = 0;
+    for (int q = 0; q < I->na && q < 3; q++) dep |= (cond >> q & 1) && s->slot_dep[I->a[q]];
+    if (nr && dep) nev++, nroot += nr;
+  }
+  s->nev = nev, s->nroot = nroot;
+  if (!nev) return;
+  s->code_ev = bg_arena_alloc(&s->arena, (size_t)s->nmain * sizeof(int));
+  s->ev_code = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(int));
+  s->ev_root0 = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(int));
+  s->ev_mode = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(double));
+  s->root_ev = bg_arena_alloc(&s->arena, (size_t)nroot * sizeof(int));
+  s->root_text = bg_arena_alloc(&s->arena, (size_t)nroot * sizeof(char *));
+  s->ev_prev = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(double));
+  s->ev_zero = bg_arena_alloc(&s->arena, (size_t)nev);
+  s->ev_y = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
+  s->ev_yp = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
+  nev = nroot = 0;
+  for (int k = 0; k < s->nmain; k++) {
+    const tinstr *I = &s->code[k];
+    int nr = roots_of(s, I, &cond), dep = 0;
+    for (int q = 0; q < I->na && q < 3; q++) dep |= (cond >> q & 1) && s->slot_dep[I->a[q]];
+    s->code_ev[k] = -1;
+    if (!nr || !dep) continue;
+    s->code_ev[k] = nev, s->ev_code[nev] = k, s->ev_root0[nev] = nroot, s->ev_mode[nev] = 0;
+    for (int j = 0; j < nr; j++) s->root_ev[nroot + j] = nev, s->root_text[nroot + j] = describe(s, I, j);
+    nev++, nroot += nr;
+  }
+}
+
+/* ------------------------------------------------------------ tables */
+/* Segment k of x: -1 left of the first point, n - 1 from the last one on,
+ * else tx[k] <= x < tx[k+1]; a point exactly on a breakpoint that is
+ * left going down (dir < 0) belongs to the segment below. */
+static int table_segment_of(const double *tx, int n, double x, int dir) {
+  int k;
+  if (x < tx[0]) k = -1;
+  else if (x >= tx[n - 1]) k = n - 1;
+  else {
+    int lo = 0, hi = n - 1; /* tx[lo] <= x < tx[hi] */
+    while (hi - lo > 1) {
+      int mid = (lo + hi) / 2;
+      if (tx[mid] <= x) lo = mid;
+      else hi = mid;
+    }
+    k = lo;
+  }
+  if (dir < 0 && k >= 0 && x == tx[k]) k--;
+  return k;
+}
+
+/* Value (der = 0) or slope (der = 1) of segment k, continued linearly. */
+static double table_segment_val(const bg_model *m, int table, int k, double x, int der) {
+  const double *tx = m->table_x + m->table_adr[table], *ty = m->table_y + m->table_adr[table];
+  int n = m->table_n[table];
+  if (k < 0 || k >= n - 1) return der ? 0 : ty[k < 0 ? 0 : n - 1];
+  double slope = (ty[k + 1] - ty[k]) / (tx[k + 1] - tx[k]);
+  return der ? slope : ty[k] + slope * (x - tx[k]);
+}
+
+/* ------------------------------------------------------------ modes */
+static double eff(double g, int dir) { return g != 0 ? g : (double)dir; }
+
+/* The root functions of event e at the values v (continuous in the
+ * unknowns whatever the mode; their signs decide the mode). */
+static void ev_roots(const bg_eqsys *s, int e, const double *v, double *g) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double x = v[I->a[0]], y = I->na > 1 ? v[I->a[1]] : 0, mode = s->ev_mode[e];
+  if (I->op != BG_X_CALL && I->op != BG_X_TABLE) { g[0] = x - y; return; }
+  if (I->op == BG_X_TABLE) {
+    const bg_model *m = s->m;
+    const double *tx = m->table_x + m->table_adr[I->ref];
+    int n = m->table_n[I->ref], k = (int)mode;
+    g[0] = k >= 0 ? x - tx[k] : 1.0;
+    g[1] = k + 1 <= n - 1 ? x - tx[k + 1] : -1.0;
+    return;
+  }
+  switch (I->ref) {
+  case BG_FN_MIN: case BG_FN_MAX: g[0] = x - y; return;
+  case BG_FN_PULSE: g[0] = x, g[1] = x - y; return;
+  case BG_FN_SAT: g[0] = x - y, g[1] = x - v[I->a[2]]; return;
+  case BG_FN_FLOOR: g[0] = x - mode, g[1] = x - (mode + 1); return;
+  case BG_FN_CEIL: g[0] = x - (mode - 1), g[1] = x - mode; return;
+  default: g[0] = x; return;
+  }
+}
+
+/* The mode of event e from the actual values v; dir (nullable, indexed
+ * like its roots) is the direction of a root just found, which decides a
+ * switching function that is exactly zero. */
+static double ev_mode_of(const bg_eqsys *s, int e, const double *v, const int *dir) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double g[2] = {0, 0}, x = v[I->a[0]];
+  int d0 = dir ? dir[0] : 0, d1 = dir && roots_of(s, I, &(int){0}) > 1 ? dir[1] : 0;
+  ev_roots(s, e, v, g);
+  double g0 = eff(g[0], d0), g1 = eff(g[1], d1);
+  switch (I->op) {
+  case BG_X_LT: return g0 < 0;
+  case BG_X_LE: return g0 <= 0;
+  case BG_X_GT: return g0 > 0;
+  case BG_X_GE: return g0 >= 0;
+  case BG_X_TABLE: {
+    const bg_model *m = s->m;
+    return table_segment_of(m->table_x + m->table_adr[I->ref], m->table_n[I->ref], x, d0 ? d0 : d1);
+  }
+  default: break;
+  }
+  switch (I->ref) {
+  case BG_FN_SIGN: return g0 > 0 ? 1 : g0 < 0 ? -1 : 0;
+  case BG_FN_MIN: return g0 <= 0;
+  case BG_FN_MAX: case BG_FN_ABS: case BG_FN_STEP: case BG_FN_RAMP: return g0 >= 0;
+  case BG_FN_PULSE: return g0 >= 0 && g1 < 0;
+  case BG_FN_SAT: return g0 < 0 ? 0 : g1 > 0 ? 2 : 1;
+  case BG_FN_FLOOR: return floor(x) - (x == floor(x) && (d0 < 0 || d1 < 0));
+  case BG_FN_CEIL: return ceil(x) + (x == ceil(x) && (d0 > 0 || d1 > 0));
+  default: return 0;
+  }
+}
+
+double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double mode = s->ev_mode[e], x = v[I->a[0]];
+  if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, x, 0);
+  if (I->op != BG_X_CALL) return mode;
+  switch (I->ref) {
+  case BG_FN_ABS: return mode ? x : -x;
+  case BG_FN_RAMP: return mode ? x : 0;
+  case BG_FN_MIN: case BG_FN_MAX: return mode ? x : v[I->a[1]];
+  case BG_FN_SAT: return mode == 0 ? v[I->a[1]] : mode == 2 ? v[I->a[2]] : x;
+  default: return mode; /* sign, step, pulse, floor, ceil */
+  }
+}
+
+double bg_eqs_ev_der(const bg_eqsys *s, int e, const double *v, const double *dv) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double mode = s->ev_mode[e], d = dv[I->a[0]];
+  if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, v[I->a[0]], 1) * d;
+  if (I->op != BG_X_CALL) return 0;
+  switch (I->ref) {
+  case BG_FN_ABS: return mode ? d : -d;
+  case BG_FN_RAMP: return mode ? d : 0;
+  case BG_FN_MIN: case BG_FN_MAX: return mode ? d : dv[I->a[1]];
+  case BG_FN_SAT: return mode == 0 ? dv[I->a[1]] : mode == 2 ? dv[I->a[2]] : d;
+  default: return 0;
+  }
+}
+
+/* ------------------------------------------------------------ public */
+int bg_eqsys_nroots(const bg_eqsys *s) { return s->nroot; }
+int bg_eqsys_nmodes(const bg_eqsys *s) { return s->nev; }
+const char *bg_eqsys_root_text(const bg_eqsys *s, int i) { return s->root_text[i]; }
+void bg_eqsys_modes_get(const bg_eqsys *s, double *modes) {
+  if (s->nev) memcpy(modes, s->ev_mode, (size_t)s->nev * sizeof(double));
+}
+void bg_eqsys_modes_set(bg_eqsys *s, const double *modes) {
+  if (s->nev) memcpy(s->ev_mode, modes, (size_t)s->nev * sizeof(double));
+}
+void bg_eqsys_modes_freeze(bg_eqsys *s, int on) { s->ev_frozen = on && s->nev; }
+
+static int roots_finite(bg_eqsys *s, double *g) {
+  for (int e = 0; e < s->nev; e++) ev_roots(s, e, s->v, g + s->ev_root0[e]);
+  for (int i = 0; i < s->nroot; i++)
+    if (!isfinite(g[i])) return 0;
+  return 1;
+}
+
+int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, double *g) {
+  bg_eqs_eval_raw(s, t, y, yp);
+  if (roots_finite(s, g)) return 0;
+  int was = s->ev_frozen; /* as bg_eqs_eval: the values as compiled then */
+  s->ev_frozen = 0;
+  bg_eqs_eval_raw(s, t, y, yp);
+  s->ev_frozen = was;
+  return roots_finite(s, g) ? 0 : -1;
+}
+
+/* One pass over the main tape that sets the modes of the events (all, or
+ * those with only[e]) from the values as they are computed. */
+static void modes_pass(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
+                       const unsigned char *only) {
+  double *v = s->v;
+  v[0] = t;
+  memcpy(v + s->slot_y, y, (size_t)s->n * sizeof *v);
+  if (yp) memcpy(v + s->slot_yp, yp, (size_t)s->n * sizeof *v);
+  else memset(v + s->slot_yp, 0, (size_t)s->n * sizeof *v);
+  for (int k = 0; k < s->nmain; k++) {
+    int e = s->code_ev[k];
+    if (e >= 0 && (!only || only[e])) s->ev_mode[e] = ev_mode_of(s, e, v, dir ? dir + s->ev_root0[e] : NULL);
+    v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : bg_eqs_ins_value(s, k, v);
+  }
+}
+
+/* 1 when a root function of event e is exactly zero at the current values
+ * and no root direction decides it. */
+static int undecided(const bg_eqsys *s, int e, const int *dir) {
+  double g[2] = {1, 1};
+  int cond, nr = roots_of(s, &s->code[s->ev_code[e]], &cond);
+  ev_roots(s, e, s->v, g);
+  for (int j = 0; j < nr; j++)
+    if (g[j] == 0 && !(dir && dir[s->ev_root0[e] + j])) return 1;
+  return 0;
+}
+
+int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
+                          double delta) {
+  if (!s->nev) return 0;
+  unsigned char *zero = s->ev_zero;
+  int changed = 0, nzero = 0, was = s->ev_frozen;
+  memcpy(s->ev_prev, s->ev_mode, (size_t)s->nev * sizeof(double));
+  modes_pass(s, t, y, yp, dir, NULL);
+  /* A switching function exactly zero here leaves to one side or the other
+   * without a sign change the root finder could see: decide it by where the
+   * solution is a moment later, y + delta y' (y' under the modes just set). */
+  for (int e = 0; e < s->nev; e++) nzero += zero[e] = (unsigned char)undecided(s, e, dir);
+  if (nzero && delta > 0) {
+    s->ev_frozen = 1;
+    const double *ydot = yp;
+    if (!yp && bg_eqsys_rhs(s, t, y, s->ev_yp) == 0) ydot = s->ev_yp;
+    if (ydot) {
+      for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * ydot[i];
+      modes_pass(s, t + delta, s->ev_y, yp, NULL, zero);
+    }
+  }
+  s->ev_frozen = was;
+  for (int e = 0; e < s->nev; e++) changed += s->ev_prev[e] != s->ev_mode[e];
+  return changed;
+}
