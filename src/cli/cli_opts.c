@@ -18,7 +18,7 @@
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
-  OPT_PREFIX
+  OPT_PREFIX, OPT_TRANSFORM
 };
 
 static const char short_opts[] = ":o:T:M:qvhV";
@@ -45,6 +45,7 @@ static const struct option long_opts[] = {
     {"diagnostics-format", required_argument, NULL, OPT_DIAG_FORMAT},
     {"color", required_argument, NULL, OPT_COLOR},
     {"prefix", required_argument, NULL, OPT_PREFIX},
+    {"transform", required_argument, NULL, OPT_TRANSFORM},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
@@ -77,6 +78,7 @@ static const struct {
     {OPT_DIAG_FORMAT, offsetof(bg_cli_opts, diag_format)},
     {OPT_COLOR, offsetof(bg_cli_opts, color)},
     {OPT_PREFIX, offsetof(bg_cli_opts, prefix)},
+    {OPT_TRANSFORM, offsetof(bg_cli_opts, transform)},
     {'T', offsetof(bg_cli_opts, force_format)},
     {'M', offsetof(bg_cli_opts, depfile)},
 };
@@ -213,6 +215,7 @@ void bg_cli_print_help(FILE *out) {
       "  .c               equations as C           .csv   simulation results\n"
       "  .m .py .mo       the model for Octave/MATLAB, Python, Modelica (export.md)\n"
       "  .fmu             FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)\n"
+      "  .bg              the model rewritten by --transform\n"
       "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
       "                      -o - (stdout); -T alone writes to stdout\n"
       "  -M, --depfile FILE  make rule: the outputs depend on the model, style\n"
@@ -237,6 +240,8 @@ void bg_cli_print_help(FILE *out) {
       "  --linear FORM       linear analysis: text | latex | json | octave | python (docs/linear.md)\n"
       "  --bode FILE, --nyquist FILE, --step FILE\n"
       "                      frequency, step and impulse responses (svg, pdf, png)\n"
+      "  --transform NAME    rewrite the model (-o NEW.bg, -T bg; docs/transform.md):\n"
+      "                      merge-stores\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"

@@ -12,7 +12,7 @@ enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64 };
 
 typedef struct bg_cli_output {
   const char *path;   /* BG_CLI_STDOUT for standard output */
-  const char *format; /* svg pdf png json dot tex c csv m py */
+  const char *format; /* svg pdf png json dot tex c csv m py bg */
 } bg_cli_output;
 
 typedef struct bg_cli_opts {
@@ -36,6 +36,7 @@ typedef struct bg_cli_opts {
   const char *diag_format;  /* --diagnostics-format: "text" (default) or "json" */
   const char *color;        /* --color: "auto" (default), "always", "never" */
   const char *prefix;       /* --prefix NAME: symbol prefix of exported C */
+  const char *transform;    /* --transform NAME: the model rewritten (docs/transform.md) */
   int simulate, verify, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;

@@ -137,6 +137,13 @@ static int write_one(run *r, const bg_cli_output *out) {
       !strcmp(out->format, "mo") || !strcmp(out->format, "fmu"))
     return cli_write_export(r, out->path, out->format);
   if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
+  if (!strcmp(out->format, "bg")) {
+    bg_strbuf sb = {0};
+    bg_sb_puts(&sb, r->tx.text);
+    int rc = cli_write_text(out->path, &sb);
+    bg_sb_free(&sb);
+    return rc;
+  }
   BG_FATAL("option parsing let through output format '%s'", out->format);
 }
 

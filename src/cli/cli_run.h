@@ -16,6 +16,7 @@
 #include "diagram/render.h"
 #include "simulate/simulate.h"
 #include "linear/linear.h"
+#include "transform/transform.h"
 
 enum { EXIT_OK = 0, EXIT_MODEL = 1, EXIT_USAGE = 2, EXIT_SIM = 3, EXIT_WRITE = 4 };
 
@@ -47,6 +48,8 @@ typedef struct run {
   bg_diagram *diagram; /* laid out once, on the first diagram output */
   bg_linear lin;       /* the linear analysis (cli_linear.c) */
   int lin_done;
+  bg_transform_result tx; /* --transform: the new model (main.c) */
+  int tx_done;
 } run;
 
 /* Diagram options from the command line (and --max-list); -1 after a

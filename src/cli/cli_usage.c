@@ -7,8 +7,9 @@
 
 #include "base/fileio.h"
 #include "cli/cli_usage.h"
+#include "transform/transform.h"
 
-static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", "mo", "fmu", NULL};
+static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", "mo", "fmu", "bg", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
 static const char *const lin_forms[] = {"text", "latex", "json", "octave", "python", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
@@ -45,6 +46,12 @@ static int check_choice(const char *opt, const char *val, const char *const *lis
   return bg_cli_usage_error("unknown value '%s' for %s", val, msg);
 }
 
+static int check_transform(const char *name) {
+  if (!name || bg_transform_known(name)) return 0;
+  return bg_cli_usage_error("unknown transformation '%s': --transform takes one of: %s", name,
+                            bg_transform_names());
+}
+
 static int check_choices(const bg_cli_opts *o) {
   return check_choice("--causality", o->causality, methods) ||
          check_choice("--equations", o->equations, eq_forms) ||
@@ -52,7 +59,7 @@ static int check_choices(const bg_cli_opts *o) {
          check_choice("--layout", o->layout, layouts) ||
          check_choice("-T", o->force_format, formats) ||
          check_choice("--diagnostics-format", o->diag_format, diag_formats) ||
-         check_choice("--color", o->color, colors) ? -1 : 0;
+         check_choice("--color", o->color, colors) || check_transform(o->transform) ? -1 : 0;
 }
 
 /* -T gives the format of -o - and of files without a known extension; a
@@ -66,7 +73,9 @@ static int resolve_format(const bg_cli_opts *o, bg_cli_output *out) {
     out->format = T;
     return 0;
   }
-  if (in_list(out->format, formats)) {
+  /* .bg is a format only for --transform: before it, -T svg -o m.bg wrote svg */
+  int bg_without_transform = !strcmp(out->format, "bg") && !o->transform && T;
+  if (in_list(out->format, formats) && !bg_without_transform) {
     if (!T || !strcmp(T, out->format)) return 0;
     snprintf(msg, sizeof msg, "-T %s with -o '%s'", T, out->path);
     return bg_cli_usage_error("%s: the extension says %s; drop -T or rename the file",
@@ -120,13 +129,20 @@ static int check_outputs(bg_cli_opts *o) {
 /* Options that the rest of the request would ignore. */
 static int check_ignored(const bg_cli_opts *o) {
   if (o->check && (o->nout || o->force_format || o->report || o->plot || o->equations ||
-                   o->simulate || o->depfile || o->linear))
+                   o->simulate || o->depfile || o->linear || o->transform))
     return bg_cli_usage_error("--check writes nothing: drop it to write the outputs, or drop "
                               "%s%s", o->nout || o->force_format ? "-o/-T"
                               : o->report ? "--report" : o->plot ? "--plot"
                               : o->equations ? "--equations"
                               : o->simulate ? "--simulate"
-                              : o->linear ? "--linear" : "--depfile", "");
+                              : o->linear ? "--linear"
+                              : o->transform ? "--transform" : "--depfile", "");
+  if (has_format(o, "bg") && !o->transform)
+    return bg_cli_usage_error("a .bg output is the model rewritten by --transform: add "
+                              "--transform NAME (%s)%s", bg_transform_names(), "");
+  if (o->transform && !has_format(o, "bg") && !o->check)
+    return bg_cli_usage_error("--transform %s writes a new model: add -o NEW.bg (or -T bg for "
+                              "stdout)%s", o->transform, "");
   if (o->simulate && !o->plot && !o->report && !has_format(o, "csv") && !has_format(o, "json"))
     return bg_cli_usage_error("--simulate alone shows no result: add --plot FILE, -o FILE.csv, "
                               "-o FILE.json or --report FILE.pdf%s%s", "", "");

@@ -20,6 +20,7 @@
 #endif
 
 static void run_free(run *r) {
+  if (r->tx_done) bg_transform_result_free(&r->tx);
   if (r->lin_done) bg_linear_free(&r->lin);
   if (r->simulated) bg_simresult_free(&r->sim);
   if (r->index_done) bg_index_free(&r->index);
@@ -51,8 +52,10 @@ static int load_model(run *r) {
   r->ast = bg_parse_string(name, r->src, r->srclen, &r->dg);
   if (!r->ast || r->dg.nerrors) return -1;
   r->model = bg_model_compile(r->ast, o->sets, o->nsets, &r->dg);
-  bg_ast_free(r->ast);
-  r->ast = NULL;
+  if (!o->transform) { /* the transformations edit the syntax */
+    bg_ast_free(r->ast);
+    r->ast = NULL;
+  }
   return r->model && !r->dg.nerrors ? 0 : -1;
 }
 
@@ -200,6 +203,25 @@ static void diagnostics_output(const bg_cli_opts *o) {
   bg_diags_set_output(color && !json, json);
 }
 
+/* --transform NAME: the new model, checked; EXIT_SIM with the reason when
+ * the transformation does not apply (nothing is written then). */
+static int transform(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  bg_transform_input in = {o->transform, r->src, r->srclen, r->dg.file, r->ast, r->model,
+                           &r->analysis, o->sets, o->nsets};
+  char *why = NULL;
+  if (o->verbose) fprintf(stderr, "bgdraw: transformation %s\n", o->transform);
+  if (bg_transform_apply(&in, &r->tx, &why) != 0) {
+    fprintf(stderr, "bgdraw: error: --transform %s does not apply to %s: %s\n", o->transform,
+            r->model->name, why);
+    free(why);
+    return EXIT_SIM;
+  }
+  r->tx_done = 1;
+  if (o->verbose) fprintf(stderr, "bgdraw: %s\n", r->tx.summary);
+  return EXIT_OK;
+}
+
 /* Everything after the analysis: simulation, outputs, plot, report. */
 static int write_all(run *r) {
   const bg_cli_opts *o = &r->opts;
@@ -254,6 +276,10 @@ int main(int argc, char **argv) {
     return rc;
   }
   analyse(&r);
+  if (r.opts.transform && (rc = transform(&r)) != 0) {
+    run_free(&r);
+    return rc;
+  }
   if (wants_equations(&r.opts)) derive_equations(&r);
   /* a simulation needs it too: a numeric index above 1 refuses the run */
   if (wants_index(&r.opts) || wants_simulation(&r.opts)) numeric_index(&r);

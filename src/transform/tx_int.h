@@ -1,0 +1,81 @@
+/* Internals of the transformations: the text editor over the model's
+ * source lines, the statement printer, and what the transformations share. */
+#ifndef BG_TX_INT_H
+#define BG_TX_INT_H
+#include "base/strbuf.h"
+#include "transform/transform.h"
+
+/* The model's text as physical lines (1-based) with edits on whole
+ * statements; assembled by tx_doc_text. */
+typedef struct tx_doc {
+  const char *src;
+  int nline;
+  const char **line; /* line[i]: start of physical line i (1..nline) */
+  int *len;          /* its length without the line end */
+  unsigned char *cr; /* it ends in CR LF (kept as written) */
+  char **repl;       /* replacement text of the statement starting at line i */
+  unsigned char *drop; /* line i is left out */
+  bg_strbuf *after;  /* text inserted after physical line i (0: at the top) */
+  bg_strbuf head;    /* the comment that starts the file */
+} tx_doc;
+
+void tx_doc_init(tx_doc *d, const char *src, size_t len);
+void tx_doc_free(tx_doc *d);
+/* The last physical line of the statement that starts at line (continuations). */
+int tx_stmt_end(const tx_doc *d, int line);
+void tx_delete_stmt(tx_doc *d, int line);
+/* text (one line, no newline) replaces the statement; the trailing comment
+ * of its last line is kept. */
+void tx_replace_stmt(tx_doc *d, int line, const char *text);
+/* A line after the statement that starts at line (0: before the first). */
+void tx_insert_after(tx_doc *d, int line, const char *text);
+/* The whole new text (malloc): head, then the edited lines. */
+char *tx_doc_text(const tx_doc *d);
+
+/* Statement printer: an element as written, with its value or law replaced
+ * by value (NULL: as written) and option key set to optval (NULL key: none
+ * changed; a key it does not have is added). */
+void tx_print_element(bg_strbuf *b, const bg_ast_stmt *s, const char *value, const char *key,
+                      const char *optval);
+/* A bond statement: number (0: none written), ends, arrow, the options of
+ * like (nullable) copied. */
+void tx_print_bond(bg_strbuf *b, int number, const char *from, bg_arrow arrow, const char *to,
+                   const bg_ast_stmt *like);
+void tx_print_expr(bg_strbuf *b, const bg_expr *e);
+
+/* One transformation at work. */
+typedef struct tx_ctx {
+  const bg_transform_input *in;
+  const bg_model *m;
+  const bg_analysis *a;
+  tx_doc doc;
+  bg_strbuf why;     /* the header comment's text, sentence by sentence */
+  bg_strbuf problem; /* why the transformation does not apply */
+  int next_bond;     /* the next free bond number */
+  int bonds_numbered; /* every unnumbered bond statement got its number */
+  int method;        /* the causality method the new model asks for (-1: as is) */
+  char made[64][64]; /* names given to new elements */
+  int nmade;
+} tx_ctx;
+
+/* The top-level ELEMENT statement of element e, the BOND statement of bond b. */
+const bg_ast_stmt *tx_elem_stmt(const tx_ctx *c, int e);
+const bg_ast_stmt *tx_bond_stmt(const tx_ctx *c, int b);
+/* 1 when expression root x of the model uses only numbers, params, pi and
+ * functions of them (a constant for the whole run). */
+int tx_expr_constant(const bg_model *m, int x);
+/* A name not used by the model or by earlier calls: base, base_2, ...
+ * (written into buf of n bytes). */
+const char *tx_fresh_name(tx_ctx *c, const char *base, char *buf, size_t n);
+/* Writes every unnumbered bond's number, so that removing a bond renumbers nothing. */
+void tx_number_bonds(tx_ctx *c);
+/* The line of elem e's statement; of bond b's. */
+int tx_elem_line(const tx_ctx *c, int e);
+int tx_bond_line(const tx_ctx *c, int b);
+/* Removes the statement of bond b (numbering the others first). */
+void tx_remove_bond(tx_ctx *c, int b);
+
+int tx_merge_stores(tx_ctx *c);
+int tx_parasitic(tx_ctx *c);
+int tx_relax_junction(tx_ctx *c);
+#endif
