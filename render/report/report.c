@@ -35,6 +35,8 @@ static void body(rp_ctx *c) {
   rp_sec_simulation(c);
   if (c->in->lin) progress(c, "linear analysis");
   rp_sec_linear(c);
+  if (c->in->tx) progress(c, "transformation");
+  rp_sec_transform(c);
 }
 
 static void free_ctx(rp_ctx *c) {

@@ -14,6 +14,7 @@
 #include "diagram/render.h"
 #include "simulate/simulate.h"
 #include "linear/linear.h"
+#include "transform/transform.h"
 
 /* What one run knows; everything borrowed; the nullable parts are missing
  * when that stage did not run or failed (the report then says why). */
@@ -28,6 +29,8 @@ typedef struct bg_report_input {
   int sim_status;               /* bg_simulate's return: 0 ok, 1 refused, 2 failed */
   const bg_render_opts *ropts;  /* style, layout, verbose */
   const bg_linear *lin;         /* nullable: no linear analysis (section 10 left out) */
+  const char *tx_name;          /* nullable: --transform NAME (section 11 left out) */
+  const bg_transform_result *tx; /* the transformed model, with tx_name */
 } bg_report_input;
 
 /* Writes the report to path atomically. Returns BG_RENDER_OK,

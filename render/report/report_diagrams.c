@@ -20,7 +20,7 @@
 
 /* ---------------------------------------------------------------- building */
 /* Keeps d until the PDF is written; NULL marks the report failed. */
-static bg_diagram *keep(rp_ctx *c, bg_diagram *d) {
+bg_diagram *rp_keep(rp_ctx *c, bg_diagram *d) {
   if (!d) {
     c->failed = 1;
     return NULL;
@@ -40,14 +40,14 @@ static bg_diagram *build_full(rp_ctx *c) {
   bg_render_opts o = {0};
   if (c->in->ropts) o = *c->in->ropts;
   o.show = BG_SHOW_ALL, o.highlight_kind = 0, o.highlight_index = 0;
-  return c->full = keep(c, bg_diagram_build(c->m, c->a, &o, c->dg));
+  return c->full = rp_keep(c, bg_diagram_build(c->m, c->a, &o, c->dg));
 }
 
 /* A highlighted diagram: the full diagram's layout drawn again, so nodes are
  * where they are in section 2. */
 static bg_diagram *build_highlight(rp_ctx *c, int kind, int index) {
-  if (!c->full) return keep(c, NULL);
-  return keep(c, bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg));
+  if (!c->full) return rp_keep(c, NULL);
+  return rp_keep(c, bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg));
 }
 
 static double min_text(const bg_scene *s) {

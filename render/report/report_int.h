@@ -202,6 +202,8 @@ typedef struct rp_ctx {
   int failed;        /* a diagram could not be built (errors in dg) */
 } rp_ctx;
 
+/* Keeps diagram d until the PDF is written (NULL: marks the report failed). */
+bg_diagram *rp_keep(rp_ctx *c, bg_diagram *d);
 /* The diagram with every layer (report_diagrams.c). */
 void rp_sec_diagram(rp_ctx *c);
 /* Highlighted diagrams of paths, loops and conflicts worth showing. */
@@ -219,6 +221,8 @@ void rp_sec_equations(rp_ctx *c);
 void rp_sec_simulation(rp_ctx *c);
 /* report_linear.c: only when the run made a linear analysis */
 void rp_sec_linear(rp_ctx *c);
+/* report_transform.c: only with --transform: what changed, before and after */
+void rp_sec_transform(rp_ctx *c);
 /* report_summary.c: the title page with the summary and the contents of
  * body (page numbers counted after the front pages). */
 void rp_front(rp_ctx *c, rp_doc *front);

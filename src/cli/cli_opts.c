@@ -241,7 +241,7 @@ void bg_cli_print_help(FILE *out) {
       "  --bode FILE, --nyquist FILE, --step FILE\n"
       "                      frequency, step and impulse responses (svg, pdf, png)\n"
       "  --transform NAME    rewrite the model (-o NEW.bg, -T bg; docs/transform.md):\n"
-      "                      merge-stores\n"
+      "                      merge-stores | parasitic | relax-junction\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"

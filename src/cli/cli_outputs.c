@@ -178,7 +178,8 @@ int cli_write_report(run *r) {
   bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
                         r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
                         r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts,
-                        r->lin_done ? &r->lin : NULL};
+                        r->lin_done ? &r->lin : NULL, r->tx_done ? r->opts.transform : NULL,
+                        r->tx_done ? &r->tx : NULL};
   bg_diags dg;
   bg_diags_init(&dg, "bgdraw", NULL, 0);
   int rc = bg_report_write(&in, r->opts.report, &dg);

@@ -140,9 +140,9 @@ static int check_ignored(const bg_cli_opts *o) {
   if (has_format(o, "bg") && !o->transform)
     return bg_cli_usage_error("a .bg output is the model rewritten by --transform: add "
                               "--transform NAME (%s)%s", bg_transform_names(), "");
-  if (o->transform && !has_format(o, "bg") && !o->check)
+  if (o->transform && !has_format(o, "bg") && !o->report)
     return bg_cli_usage_error("--transform %s writes a new model: add -o NEW.bg (or -T bg for "
-                              "stdout)%s", o->transform, "");
+                              "stdout, or --report FILE.pdf to see it)%s", o->transform, "");
   if (o->simulate && !o->plot && !o->report && !has_format(o, "csv") && !has_format(o, "json"))
     return bg_cli_usage_error("--simulate alone shows no result: add --plot FILE, -o FILE.csv, "
                               "-o FILE.json or --report FILE.pdf%s%s", "", "");

@@ -14,6 +14,8 @@ static const struct {
   int (*run)(tx_ctx *);
 } transforms[] = {
     {"merge-stores", tx_merge_stores},
+    {"parasitic", tx_parasitic},
+    {"relax-junction", tx_relax_junction},
 };
 enum { NTRANSFORM = sizeof transforms / sizeof *transforms };
 
@@ -23,7 +25,7 @@ int bg_transform_known(const char *name) {
   return 0;
 }
 
-const char *bg_transform_names(void) { return "merge-stores"; }
+const char *bg_transform_names(void) { return "merge-stores, parasitic, relax-junction"; }
 
 const bg_ast_stmt *tx_elem_stmt(const tx_ctx *c, int e) {
   const bg_ast *ast = c->in->ast;
@@ -117,28 +119,51 @@ static void write_header(tx_ctx *c) {
   }
 }
 
-/* Parses, compiles and analyses the new text; the first diagnostic on failure. */
-static int check_result(tx_ctx *c, bg_transform_result *out, char **why) {
+int tx_compile(const tx_ctx *c, const char *text, bg_model **m, bg_analysis *a, char **why) {
   bg_diags dg;
-  size_t len = strlen(out->text);
-  bg_diags_init(&dg, c->in->path, out->text, len);
-  bg_ast *ast = bg_parse_string(c->in->path, out->text, len, &dg);
-  if (ast && !dg.nerrors) out->model = bg_model_compile(ast, c->in->sets, c->in->nsets, &dg);
+  size_t len = strlen(text);
+  bg_diags_init(&dg, c->in->path, text, len);
+  bg_ast *ast = bg_parse_string(c->in->path, text, len, &dg);
+  *m = NULL;
+  if (ast && !dg.nerrors) *m = bg_model_compile(ast, c->in->sets, c->in->nsets, &dg);
   if (ast) bg_ast_free(ast);
-  if (!out->model || dg.nerrors) {
+  if (!*m || dg.nerrors) {
     bg_strbuf b = {0};
     bg_sb_printf(&b, "internal error: the transformed model does not compile (line %d: %s)",
                  dg.n ? dg.items[0].loc.line : 0, dg.n ? dg.items[0].msg : "?");
     *why = strdup(bg_sb_str(&b));
     bg_sb_free(&b);
     bg_diags_free(&dg);
+    if (*m) bg_model_free(*m);
+    *m = NULL;
     return -1;
   }
-  bg_analysis_init(&out->analysis, out->model);
-  out->analysed = 1;
-  bg_causality_assign(out->model, out->model->method, &out->analysis, &dg);
-  bg_analysis_run(out->model, &out->analysis, NULL);
+  bg_analysis_init(a, *m);
+  bg_causality_assign(*m, (*m)->method, a, &dg);
+  bg_analysis_run(*m, a, NULL);
   bg_diags_free(&dg);
+  return 0;
+}
+
+int tx_param_line(const tx_ctx *c) {
+  int line = 0;
+  const bg_ast *ast = c->in->ast;
+  for (int i = 0; i < ast->nstmts; i++)
+    if (ast->stmts[i].kind == BG_ST_PARAM || (ast->stmts[i].kind == BG_ST_MODEL && !line))
+      line = ast->stmts[i].loc.line;
+  return line;
+}
+
+int tx_last_bond_line(const tx_ctx *c) { return tx_bond_line(c, c->m->nbond - 1); }
+
+double tx_estimate_scale(const bg_analysis *a, int k) {
+  return a->estimate_kind[k] == 0 ? a->estimate_value[k] : 1 / a->estimate_value[k];
+}
+
+/* The new text compiled and analysed into out. */
+static int check_result(tx_ctx *c, bg_transform_result *out, char **why) {
+  if (tx_compile(c, out->text, &out->model, &out->analysis, why) != 0) return -1;
+  out->analysed = 1;
   return 0;
 }
 

@@ -42,6 +42,9 @@ void tx_print_element(bg_strbuf *b, const bg_ast_stmt *s, const char *value, con
 void tx_print_bond(bg_strbuf *b, int number, const char *from, bg_arrow arrow, const char *to,
                    const bg_ast_stmt *like);
 void tx_print_expr(bg_strbuf *b, const bg_expr *e);
+/* "  [k = v, ...]" of statement s, option key's value replaced by optval
+ * (added when s has no such option); nothing when there are none. */
+void tx_print_options(bg_strbuf *b, const bg_ast_stmt *s, const char *key, const char *optval);
 
 /* One transformation at work. */
 typedef struct tx_ctx {
@@ -75,7 +78,24 @@ int tx_bond_line(const tx_ctx *c, int b);
 /* Removes the statement of bond b (numbering the others first). */
 void tx_remove_bond(tx_ctx *c, int b);
 
+/* Parses, compiles (with the run's --set) and analyses text: 0 with *m and
+ * *a set (free both), -1 with *why (malloc) the first diagnostic. */
+int tx_compile(const tx_ctx *c, const char *text, bg_model **m, bg_analysis *a, char **why);
+/* The line after which new params go: the last param statement, else the
+ * model statement, else 0 (the top). */
+int tx_param_line(const tx_ctx *c);
+/* The line of the last bond statement. */
+int tx_last_bond_line(const tx_ctx *c);
+/* The time scale of estimate k of a: its time constant, 1/omega for a frequency. */
+double tx_estimate_scale(const bg_analysis *a, int k);
+
 int tx_merge_stores(tx_ctx *c);
+/* The virtual inertia and its companion gyristor (tx_virtual.c): store drop
+ * merged into keep through the MTF mtf (inverse: k = 1/T); -1 with
+ * c->problem when it cannot be done. */
+int tx_virtual_inertia(tx_ctx *c, int p, int keep, int drop, int mtf, int inverse);
+/* 1 when expression x reads only numbers, params and at least one user state. */
+int tx_modulus_of_coordinates(const bg_model *m, int x);
 int tx_parasitic(tx_ctx *c);
 int tx_relax_junction(tx_ctx *c);
 #endif

@@ -38,7 +38,7 @@ static int path_node(const bg_model *m, const bg_analysis *a, int p, int i) {
 /* The factor of the dependent store's parameter ("*(n)^2/(m)^2") along
  * path p walked from the independent store; 0 with c->problem when the
  * path is not one of junctions sharing the variable and constant TFs. */
-static int path_factor(tx_ctx *c, int p, int from_end0, bg_strbuf *f) {
+static int path_factor(tx_ctx *c, int p, int from_end0, bg_strbuf *f, int *mtf, int *inverse) {
   const bg_model *m = c->m;
   const bg_analysis *a = c->a;
   int n = a->path_n[p], is_i = m->elem_kind[a->path_end0[p]] == BG_ELEM_I;
@@ -54,18 +54,28 @@ static int path_factor(tx_ctx *c, int p, int from_end0, bg_strbuf *f) {
                    bg_elem_kind_name(kind), m->elem_name[x], is_i ? "flow" : "effort");
       return 0;
     }
+    int a_side1 = bA == bg_elem_in_bond(m, x);
+    if (kind == BG_ELEM_MTF && is_i && *mtf < 0 && tx_modulus_of_coordinates(m, m->elem_expr[x])) {
+      *mtf = x; /* the virtual inertia of Figure 4.30 */
+      *inverse = a_side1;
+      continue;
+    }
     if (kind != BG_ELEM_TF || !tx_expr_constant(m, m->elem_expr[x])) {
       bg_sb_printf(&c->problem, "causal path %d passes %s %s, which is not a transformer with a "
                    "constant modulus%s", p + 1, bg_elem_kind_name(kind), m->elem_name[x],
-                   kind == BG_ELEM_MTF ? " (a modulus depending on a generalised coordinate "
-                   "makes a virtual inertia with a companion gyristor, Figure 4.30: not done)" : "");
+                   kind == BG_ELEM_MTF ? " or a modulated one depending on generalised "
+                   "coordinates (user states) only, the only one on a path between inertias" : "");
       return 0;
     }
     /* e2 = n e1, f1 = n f2: an I beyond side 2 moves with f/n, a C beyond side 2 with n e */
-    int a_side1 = bA == bg_elem_in_bond(m, x);
     bg_sb_puts(f, a_side1 == is_i ? "/" : "*");
     put_factor(f, expr_text(c, x));
     bg_sb_puts(f, "^2");
+  }
+  if (*mtf >= 0 && f->len) {
+    bg_sb_printf(&c->problem, "causal path %d passes the modulated transformer %s and constant "
+                 "ones: a virtual inertia through both is not done", p + 1, m->elem_name[*mtf]);
+    return 0;
   }
   return 1;
 }
@@ -83,7 +93,8 @@ static int reference_to(const bg_model *m, int d) {
 }
 
 /* Path p can be merged: checks in the chapter's terms, reasons in c->problem. */
-static int mergeable(tx_ctx *c, int p, int *keep, int *drop, bg_strbuf *f) {
+static int mergeable(tx_ctx *c, int p, int *keep, int *drop, bg_strbuf *f, int *mtf,
+                     int *inverse) {
   const bg_model *m = c->m;
   const bg_analysis *a = c->a;
   int e0 = a->path_end0[p], e1 = a->path_end1[p];
@@ -110,7 +121,7 @@ static int mergeable(tx_ctx *c, int p, int *keep, int *drop, bg_strbuf *f) {
                  "variable is not a multiple of one store's", m->elem_name[*drop], nclass1);
     return 0;
   }
-  if (!path_factor(c, p, end0_indep, f)) return 0;
+  if (!path_factor(c, p, end0_indep, f, mtf, inverse)) return 0;
   int j = bg_bond_other(m, bg_elem_port_bond(m, *drop), *drop);
   if (m->elem_nbond[j] < 3) {
     bg_sb_printf(&c->problem, "removing %s would leave %s with one bond", m->elem_name[*drop],
@@ -180,10 +191,14 @@ int tx_merge_stores(tx_ctx *c) {
     size_t mark = c->problem.len;
     if (mark) bg_sb_puts(&c->problem, "; ");
     bg_strbuf f = {0};
-    int keep, drop;
-    if (mergeable(c, p, &keep, &drop, &f)) {
-      c->problem.len = mark;
-      if (c->problem.s) c->problem.s[mark] = '\0';
+    int keep, drop, mtf = -1, inverse = 0;
+    int ok = mergeable(c, p, &keep, &drop, &f, &mtf, &inverse);
+    if (ok && mtf >= 0 && value[keep].len) {
+      bg_sb_printf(&c->problem, "%s takes a constant merge already", c->m->elem_name[keep]);
+      ok = 0;
+    } else if (ok && mtf >= 0) {
+      ok = tx_virtual_inertia(c, p, keep, drop, mtf, inverse) == 0;
+    } else if (ok) {
       if (!value[keep].len) put_factor(&value[keep], expr_text(c, keep));
       bg_sb_puts(&value[keep], " + ");
       put_factor(&value[keep], expr_text(c, drop));
@@ -191,6 +206,10 @@ int tx_merge_stores(tx_ctx *c) {
       say_merge(c, p, keep, drop, bg_sb_str(&value[keep]));
       tx_delete_stmt(&c->doc, tx_elem_line(c, drop));
       tx_remove_bond(c, bg_elem_port_bond(m, drop));
+    }
+    if (ok) {
+      c->problem.len = mark; /* no reason to give for this path */
+      if (c->problem.s) c->problem.s[mark] = '\0';
       nmerged++;
     }
     bg_sb_free(&f);

@@ -52,7 +52,7 @@ void tx_print_expr(bg_strbuf *b, const bg_expr *e) {
   BG_FATAL("expression of kind %d without its text", (int)e->kind);
 }
 
-static void print_options(bg_strbuf *b, const bg_ast_stmt *s, const char *key, const char *optval) {
+void tx_print_options(bg_strbuf *b, const bg_ast_stmt *s, const char *key, const char *optval) {
   int n = 0, replaced = 0;
   for (int i = 0; i < s->nopts; i++) {
     bg_sb_puts(b, n++ ? ", " : "  [");
@@ -80,7 +80,7 @@ void tx_print_element(bg_strbuf *b, const bg_ast_stmt *s, const char *value, con
     if (value) bg_sb_puts(b, value);
     else tx_print_expr(b, s->expr);
   }
-  print_options(b, s, key, optval);
+  tx_print_options(b, s, key, optval);
 }
 
 void tx_print_bond(bg_strbuf *b, int number, const char *from, bg_arrow arrow, const char *to,
@@ -89,5 +89,5 @@ void tx_print_bond(bg_strbuf *b, int number, const char *from, bg_arrow arrow, c
   if (number) bg_sb_printf(b, "%d ", number);
   const char *arrows[] = {"->", "->|", "|->"};
   bg_sb_printf(b, "%s %s %s", from, arrows[arrow], to);
-  if (like) print_options(b, like, NULL, NULL);
+  if (like) tx_print_options(b, like, NULL, NULL);
 }

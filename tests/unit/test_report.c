@@ -209,7 +209,7 @@ static void test_report(const char *name) {
   bg_index_compute(f.s, f.m, &ir);
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
-  bg_report_input in = {f.m, &f.a, f.s, NULL, &ir, NULL, NULL, 0, &o, NULL};
+  bg_report_input in = {f.m, &f.a, f.s, NULL, &ir, NULL, NULL, 0, &o, NULL, NULL, NULL};
   char path[512];
   snprintf(path, sizeof path, "%s/test_report_%s.pdf", BG_BINARY_DIR, name);
   bg_diags dg;
@@ -257,7 +257,7 @@ static void test_highlights_share_layout(const char *name, const char *text, int
   }
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
-  bg_report_input in = {f.m, &f.a, f.s, NULL, NULL, NULL, NULL, 0, &o, NULL};
+  bg_report_input in = {f.m, &f.a, f.s, NULL, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL};
   bg_diags dg;
   bg_diags_init(&dg, "test", NULL, 0);
   rp_ctx c;
