@@ -160,8 +160,31 @@ col = [float(r[1]) for r in a[1:]]
 d = max(abs(float(x[1]) - float(y[1])) for x, y in zip(a[1:], b[1:])) / (max(col) - min(col))
 assert d < 1e-5, "parasitic on parallel_conductance: deviation %g" % d
 PY
+# an index-2 original: delta's causal loop of gain +1 (Figure 4.16), against the
+# hand-derived solution: iL1 + iL2 = I0 and (L1 + L2) iL1' = R3 (I0 - iR2 - iL1)
+# with iR2 = ((R1 + R3) I0 - R3 iL1)/(R1 + R2 + R3): iL1 = (1 - exp(-t/3))/2
+"$BG" examples/delta.bg --transform parasitic -o "$TMP/dp.bg" 2>"$TMP/err"; rc=$?
+check "parasitic on a causal loop: exit 0, C at nB" '[ $rc -eq 0 ] && grep -qxF "bond 13 nB -> Cp_nB" "$TMP/dp.bg" && grep -q "^# .*causal loop 1" "$TMP/dp.bg"'
+"$BG" "$TMP/dp.bg" --check >"$TMP/check" 2>&1
+check "parasitic on a causal loop: no causal loop left, index 1" 'grep -qxF "causal loops: 0" "$TMP/check" && grep -qF "numeric index: 1" "$TMP/check"'
+"$BG" "$TMP/dp.bg" --simulate -o "$TMP/dp1.csv" 2>/dev/null
+"$BG" "$TMP/dp.bg" --set Cp_nB_0=1e-6 --simulate -o "$TMP/dp2.csv" 2>/dev/null
+python3 - "$TMP/dp1.csv" "$TMP/dp2.csv" <<'PY' || fail=$((fail + 1))
+import csv, math, sys
+def dev(path):
+    rows = list(csv.reader(open(path)))
+    assert rows[0] == ["t", "L1.f", "L2.f"] and len(rows) == 502, rows[0]
+    worst = 0
+    for r in rows[1:]:
+        i1 = (1 - math.exp(-float(r[0]) / 3)) / 2
+        worst = max(worst, abs(float(r[1]) - i1), abs(float(r[2]) - (1 - i1)))
+    return worst
+d1, d2 = dev(sys.argv[1]), dev(sys.argv[2])
+assert d1 < 5e-3, "delta with a parasitic C against the hand solution: %g" % d1
+assert d2 < d1 / 5, "delta: C 100 times smaller, %g vs %g" % (d2, d1)
+PY
 "$BG" examples/rlc.bg --transform parasitic -o "$TMP/x.bg" 2>"$TMP/err"; rc=$?
-check "parasitic on rlc refused" '[ $rc -eq 3 ] && grep -qF "it has no algebraic loop between resistors (class 2 causal path) and no type 1 conflict" "$TMP/err"'
+check "parasitic on rlc refused" '[ $rc -eq 3 ] && grep -qF "it has no algebraic loop between resistors (class 2 causal path), no causal loop and no type 1 conflict" "$TMP/err"'
 "$BG" examples/series_conductances.bg --transform parasitic -o "$TMP/x.bg" 2>"$TMP/err"; rc=$?
 check "parasitic on a type 2 conflict refused with the reason" '[ $rc -eq 3 ] && grep -qF "conflict 1 at j is of type 2" "$TMP/err"'
 

@@ -207,10 +207,15 @@ int tx_merge_stores(tx_ctx *c) {
       tx_delete_stmt(&c->doc, tx_elem_line(c, drop));
       tx_remove_bond(c, bg_elem_port_bond(m, drop));
     }
-    if (ok) {
-      c->problem.len = mark; /* no reason to give for this path */
+    /* no reason to give for this path, or the same one as for an earlier path */
+    const char *why = c->problem.s ? c->problem.s + mark + (mark ? 2 : 0) : NULL;
+    char *seen = why && mark ? strndup(c->problem.s, mark) : NULL;
+    int repeated = !ok && seen && strstr(seen, why);
+    free(seen);
+    if (ok || repeated) {
+      c->problem.len = mark;
       if (c->problem.s) c->problem.s[mark] = '\0';
-      nmerged++;
+      nmerged += ok;
     }
     bg_sb_free(&f);
   }

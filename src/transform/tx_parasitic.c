@@ -48,15 +48,14 @@ static void add_target(tx_ctx *c, plan *p, int j, const char *cause) {
   snprintf(t->cause, sizeof t->cause, "%s", cause);
 }
 
-/* The junction of class 2 path p where the store goes: its first
- * 0-junction from end 0 (a compliance, as in Figure 4.5), else its first
- * 1-junction; -1 when it passes none. */
-static int path_junction(const tx_ctx *c, int p) {
-  const bg_model *m = c->m;
-  const bg_analysis *a = c->a;
+/* The junction where the store goes on the chain of n bonds at bonds
+ * (closed: a causal loop, whose last and first bonds meet too): its first
+ * 0-junction (a compliance, as in Figure 4.5), else its first 1-junction;
+ * -1 when it passes none. */
+static int chain_junction(const bg_model *m, const int *bonds, int n, int closed) {
   for (int want = BG_ELEM_J0; want <= BG_ELEM_J1; want++)
-    for (int i = 0; i + 1 < a->path_n[p]; i++) {
-      int b1 = a->path_bonds[a->path_adr[p] + i], b2 = a->path_bonds[a->path_adr[p] + i + 1];
+    for (int i = 0; i + 1 < n + closed; i++) {
+      int b1 = bonds[i], b2 = bonds[(i + 1) % n];
       int x = m->bond_tail[b1] == m->bond_tail[b2] || m->bond_tail[b1] == m->bond_head[b2]
                   ? m->bond_tail[b1] : m->bond_head[b1];
       if (m->elem_kind[x] == want) return x;
@@ -70,11 +69,19 @@ static void collect(tx_ctx *c, plan *p) {
   char cause[160];
   for (int k = 0; k < a->npath; k++) {
     if (a->path_class[k] != 2) continue;
-    int j = path_junction(c, k);
+    int j = chain_junction(m, a->path_bonds + a->path_adr[k], a->path_n[k], 0);
     if (j < 0) continue;
     snprintf(cause, sizeof cause, "on class 2 causal path %d (an algebraic loop between the "
              "resistors %s and %s)", k + 1, m->elem_name[a->path_end0[k]],
              m->elem_name[a->path_end1[k]]);
+    add_target(c, p, j, cause);
+  }
+  for (int k = 0; k < a->ncloop; k++) {
+    int j = chain_junction(m, a->cloop_bonds + a->cloop_adr[k], a->cloop_n[k], 1);
+    if (j < 0) continue;
+    snprintf(cause, sizeof cause, "on causal loop %d (an algebraic loop of the junction "
+             "structure, gain %s%s)", k + 1, a->cloop_gain[k],
+             a->cloop_class[k] == 5 ? " = +1: index above 1" : "");
     add_target(c, p, j, cause);
   }
   for (int k = 0; k < a->nconflict; k++) {
@@ -118,7 +125,7 @@ static void emit(const tx_ctx *c, const plan *p, tx_doc *d) {
   bg_sb_free(&s);
 }
 
-/* The simulate statement asks for a stiff solver unless it names one: the
+/* The simulate statement of a new ODE asks for a stiff solver unless it names one: the
  * solver's automatic choice looks at the Jacobian at t0, where a store on a
  * resistor whose law is flat there (a cubic conductance at e = 0) shows no
  * fast decay yet. 1 when it was rewritten. */
@@ -165,8 +172,11 @@ static double fastest_scale(const tx_ctx *c, bg_strbuf *what) {
 /* The junctions' variables at t0 in the original model (consistent initial
  * values), so each new store starts where its junction was and adds no
  * start-up transient: q0 = C e0 at a 0-junction, p0 = I f0 at a 1-junction.
- * Left at 0 when the original's equations cannot be formed. */
+ * Left at 0 when the original's equations cannot be formed or its index is
+ * above 1 (consistent values would need the hidden constraints). */
 static void initial_values(const tx_ctx *c, plan *p) {
+  /* above index 1 the algebraic rows do not fix the junctions' variables: no start */
+  if (c->a->index_predicted < 0 || c->a->index_predicted > 1) return;
   bg_diags dg;
   bg_diags_init(&dg, c->in->path, NULL, 0);
   bg_eqsys *s = bg_eqsys_build(c->m, c->a, &dg);
@@ -231,7 +241,7 @@ static int size_stores(tx_ctx *c, plan *p, const bg_model *tm, const bg_analysis
 }
 
 static int problems(const bg_analysis *a) {
-  int n = a->nconflict;
+  int n = a->nconflict + a->ncloop;
   for (int k = 0; k < a->npath; k++) n += a->path_class[k] == 2;
   return n;
 }
@@ -260,7 +270,8 @@ int tx_parasitic(tx_ctx *c) {
   if (!p.n) {
     if (!c->problem.len)
       bg_sb_puts(&c->problem, "it has no algebraic loop between resistors (class 2 causal "
-                              "path) and no type 1 conflict for a store to break");
+                              "path), no causal loop and no type 1 conflict for a store to "
+                              "break");
     return -1;
   }
   bg_strbuf what = {0}, said = {0};
@@ -289,11 +300,19 @@ int tx_parasitic(tx_ctx *c) {
   free(text);
   double want = scale / BG_TX_PARASITIC_FACTOR;
   rc = size_stores(c, &p, tm, &ta, want, &said);
-  int fixed = problems(&ta) < problems(c->a);
+  /* better: a lower predicted index, or fewer algebraic loops and conflicts */
+  int ia = c->a->index_predicted, ib = ta.index_predicted;
+  int new_ode = ta.form == BG_FORM_ODE;
+  int fixed = (ib >= 0 && ia >= 0 && ib < ia) || (ib <= ia && problems(&ta) < problems(c->a));
+  char after[160];
+  snprintf(after, sizeof after, " The new model is %s with predicted index %s.",
+           ta.form == BG_FORM_ODE ? "an explicit ODE" : ta.form == BG_FORM_DAE ? "a DAE"
+           : "causally incomplete", ib < 0 ? "unknown" : ib >= 2 ? "above 1" : ib ? "1" : "0");
   bg_analysis_free(&ta);
   bg_model_free(tm);
   if (rc == 0 && !fixed) {
-    bg_sb_puts(&c->problem, "the stores would not remove a class 2 causal path or a conflict");
+    bg_sb_puts(&c->problem, "the stores would not remove a class 2 causal path, a causal loop "
+                            "or a conflict");
     rc = -1;
   }
   if (rc == 0) {
@@ -303,7 +322,9 @@ int tx_parasitic(tx_ctx *c) {
                  "than the fastest estimate of the original model, %s: %s. The new model has "
                  "fast dynamics and wants a stiff solver%s.", BG_TX_PARASITIC_FACTOR,
                  bg_sb_str(&what), bg_sb_str(&said),
-                 ask_stiff_solver(c) ? ": the simulate statement asks for cvode_bdf" : "");
+                 new_ode && ask_stiff_solver(c) ? ": the simulate statement asks for cvode_bdf"
+                 : "");
+    bg_sb_puts(&c->why, after);
   }
 out:
   bg_sb_free(&what);
