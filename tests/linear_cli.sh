@@ -106,6 +106,28 @@ check "report transfer function" 'grep -q "vC ← U" "$TMP/r.txt" && grep -q "Bo
 pdftotext "$TMP/e.pdf" "$TMP/e.txt"
 check "no linear section without linearise" '! grep -q "Linear analysis" "$TMP/e.txt"'
 
+# dependent stores: eliminated (text, JSON), the merged inertia J1 + n^2 J2 = 14
+G=tests/data/linear_gear.bg
+"$BG" $G --linear text >"$TMP/g.txt"; rc=$?
+check "gear exit 0" '[ $rc -eq 0 ]'
+check "gear states" 'grep -qxF "states: I1.p (dependent stores eliminated: I2.p)" "$TMP/g.txt"'
+check "gear symbolic A" 'grep -qxF "A = [ -b1/(J1 + J2*n^2) ]" "$TMP/g.txt"'
+"$BG" $G --linear json >"$TMP/g.json"
+python3 - "$TMP/g.json" <<'PY' || fail=$((fail + 1))
+import json, sys
+ss = json.load(open(sys.argv[1]))["state_space"]
+assert ss["states"] == ["I1.p"] and ss["eliminated"] == ["I2.p"], ss
+assert abs(ss["A"][0][0] + 1 / 28) < 1e-15, ss["A"]
+PY
+sed -e 's/^output .*/output w = I1.f, tq = T.e/' -e 's/^Se T = 1/Sf T = 1/' $G >"$TMP/gf.bg"
+"$BG" "$TMP/gf.bg" --linear text >"$TMP/gf.txt"; rc=$?
+check "flow-driven gear: improper torque named" 'grep -qF "not reduced: output tq needs the derivative of input T (an improper transfer function)" "$TMP/gf.txt"'
+"$BG" "$TMP/gf.bg" --step "$TMP/gf.svg" 2>"$TMP/gf.err"; rc=$?
+check "flow-driven gear: no step plot (exit 3)" '[ $rc -eq 3 ] && grep -q "descriptor form only" "$TMP/gf.err"'
+sed -e 's/^output .*/output w = I1.f/' "$TMP/gf.bg" >"$TMP/gf2.bg"
+"$BG" "$TMP/gf2.bg" --linear text >"$TMP/gf2.txt" 2>&1
+check "flow-driven gear without the torque: no states left, w = T" 'grep -qxF "states: none" "$TMP/gf2.txt" && grep -qxF "w/T = (1) / (1)" "$TMP/gf2.txt" && ! grep -q "incorrect" "$TMP/gf2.txt"'
+
 "$BG" $M --linear yaml 2>/dev/null; rc=$?
 check "bad form: exit 2" '[ $rc -eq 2 ]'
 echo "linear_cli: $fail failures"

@@ -31,6 +31,9 @@ static void point_para(rp_ctx *c, const bg_linear *l) {
   for (int k = 0; k < l->ny; k++) bg_sb_puts(&b, k ? ", " : ""), rp_esc(&b, l->yname[k]);
   bg_sb_puts(&b, l->outputs_are_states ? " (the states: the model has no output statement). " : ". ");
   if (l->reduced) bg_sb_printf(&b, "State space of order %d (x\u2032 = Ax + Bu, y = Cx + Du).", l->n);
+  for (int i = 0; l->reduced && i < l->nelim; i++) /* dependent stores, fixed by constraints */
+    bg_sb_puts(&b, i ? ", " : " Dependent stores eliminated: "), rp_esc(&b, l->uname_all[l->elim[i]]);
+  if (l->nelim) bg_sb_puts(&b, ".");
   else bg_sb_puts(&b, "Descriptor form only: "), rp_esc(&b, l->reduce_note ? l->reduce_note : "");
   if (l->message) bg_sb_puts(&b, " Note: "), rp_esc(&b, l->message), bg_sb_puts(&b, ".");
   para(c, bg_sb_str(&b));

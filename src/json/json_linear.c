@@ -99,6 +99,11 @@ static void matrices(bg_strbuf *o, const bg_linear *l) {
     if (i) bg_sb_puts(o, ", ");
     bg_sb_json_str(o, l->uname_all[l->state[i]]);
   }
+  bg_sb_puts(o, "],\n      \"eliminated\": [");
+  for (int i = 0; i < l->nelim; i++) {
+    if (i) bg_sb_puts(o, ", ");
+    bg_sb_json_str(o, l->uname_all[l->elim[i]]);
+  }
   bg_sb_puts(o, "],\n");
   matrix(o, "A", l->A, n, n, 0), matrix(o, "B", l->B, n, nu, 0);
   matrix(o, "C", l->C, ny, n, 0), matrix(o, "D", l->D, ny, nu, 1);

@@ -69,10 +69,16 @@ static int descriptor(bg_linear *l, bg_eqsys *s, const bg_model *m) {
 }
 
 static void finish(bg_linear *l, const bg_model *m, bg_eqsys *s) {
-  int *is_diff = bg_xcalloc((size_t)l->N + 1, sizeof *is_diff);
-  for (int i = 0; i < l->N; i++) is_diff[i] = bg_eqsys_is_differential(s, i);
-  bg_lin_reduce(l, is_diff);
-  free(is_diff);
+  /* elimination preference: algebraic unknowns, dependent stores (a
+   * differential unknown with a constraint row), the others from the last */
+  int *order = bg_xcalloc((size_t)l->N + 1, sizeof *order), k = 0;
+  for (int i = 0; i < l->N; i++) if (!bg_eqsys_is_differential(s, i)) order[k++] = i;
+  for (int i = 0; i < l->N; i++)
+    if (bg_eqsys_is_differential(s, i) && bg_eqsys_is_algebraic_row(s, i)) order[k++] = i;
+  for (int i = l->N - 1; i >= 0; i--)
+    if (bg_eqsys_is_differential(s, i) && !bg_eqsys_is_algebraic_row(s, i)) order[k++] = i;
+  bg_lin_reduce(l, order);
+  free(order);
   bg_lin_poles(l);
   bg_lin_tfs(l);
   bg_lin_sym_derive(l, m, s);
@@ -117,7 +123,7 @@ void bg_linear_free(bg_linear *l) {
   free(l->message), free(l->uname_all), free(l->y0), free(l->h0);
   free(l->uname), free(l->yname);
   free(l->E), free(l->Ad), free(l->Bd), free(l->Cd), free(l->Cpd), free(l->Dd);
-  free(l->reduce_note), free(l->state), free(l->A), free(l->B), free(l->C), free(l->D);
+  free(l->reduce_note), free(l->elim), free(l->state), free(l->A), free(l->B), free(l->C), free(l->D);
   free(l->pole_re), free(l->pole_im), free(l->tf_note);
   for (int k = 0; k < l->ntf; k++) {
     bg_lin_tf *t = &l->tf[k];

@@ -58,6 +58,7 @@ typedef struct bg_linear {
   char *reduce_note;      /* why not (nullable) */
   int n;                  /* states */
   int *state;             /* index of each state among the N unknowns */
+  int nelim, *elim;       /* dependent stores eliminated (unknowns fixed by constraints) */
   double *A, *B, *C, *D;
   /* poles of the linearisation (eigenvalues of A, or finite generalised ones) */
   int npole;

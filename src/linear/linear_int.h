@@ -9,8 +9,13 @@
 /* linear_point.c: the operating point into y (n = bg_eqsys_n); notes go to
  * `note`. 0, or -1 when there is no usable point (note says why). */
 int bg_lin_point(bg_eqsys *s, double t, int steady, double *y, bg_strbuf *note);
-/* linear_reduce.c: A, B, C, D from the descriptor form, or reduce_note. */
-void bg_lin_reduce(bg_linear *l, const int *is_diff);
+/* linear_reduce.c: A, B, C, D from the descriptor form, or reduce_note;
+ * order: the unknowns in the order they are preferably eliminated. */
+void bg_lin_reduce(bg_linear *l, const int *order);
+/* C = Cx + Cp A, D = Dd + Cp B (outputs reading x'), into l->C, l->D. */
+void bg_lin_outputs_through(bg_linear *l, const double *Cx, const double *Cp, const double *Dd);
+/* linear_dep.c: dependent stores eliminated; 0, or -1 with reduce_note. */
+int bg_lin_reduce_dependent(bg_linear *l, const int *order);
 /* linear_tf.c: poles of the linearisation and the transfer functions. */
 void bg_lin_poles(bg_linear *l);
 void bg_lin_tfs(bg_linear *l);

@@ -155,9 +155,11 @@ static void print_text(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
   for (int k = 0; k < l->ny; k++) bg_sb_printf(o, "%s%s", k ? ", " : "", l->yname[k]);
   bg_sb_puts(o, l->outputs_are_states ? " (the states: no output statement)\n" : "\n");
   if (l->reduced && l->n <= 40) {
-    bg_sb_puts(o, "states: ");
+    bg_sb_puts(o, l->n ? "states: " : "states: none");
     for (int i = 0; i < l->n; i++) bg_sb_printf(o, "%s%s", i ? ", " : "", l->uname_all[l->state[i]]);
-    bg_sb_putc(o, '\n');
+    for (int i = 0; i < l->nelim; i++)
+      bg_sb_printf(o, "%s%s", i ? ", " : " (dependent stores eliminated: ", l->uname_all[l->elim[i]]);
+    bg_sb_puts(o, l->nelim ? ")\n" : "\n");
     text_matrix(o, "A", l->A, l->n, l->n), text_matrix(o, "B", l->B, l->n, l->nu);
     text_matrix(o, "C", l->C, l->ny, l->n), text_matrix(o, "D", l->D, l->ny, l->nu);
   } else if (l->reduced) {

@@ -4,8 +4,9 @@
  * is row-compressed by a QR factorisation of those columns, and the
  * remaining rows, 0 = A2 x + A2z z + B2 u, are solved for the algebraic
  * unknowns z. Dependent stores (E rank deficient on the differential
- * unknowns) stay in descriptor form: their states are tied to others, and a
- * source may drive a derivative (an improper transfer function). */
+ * unknowns) and outputs reading an algebraic unknown's rate go to
+ * linear_dep.c, which eliminates the states the constraints fix, or keeps
+ * the descriptor form when that needs an input's derivative. */
 #include <float.h>
 #include <lapacke.h>
 #include <math.h>
@@ -34,11 +35,6 @@ static double *pick(const double *M, int ld, int r0, int nr, const int *cols, in
   return S;
 }
 
-static void set_note(bg_linear *l, const char *msg) {
-  free(l->reduce_note);
-  l->reduce_note = strdup(msg);
-}
-
 static int is_identity(const double *E, int N) {
   for (int j = 0; j < N; j++)
     for (int i = 0; i < N; i++)
@@ -47,7 +43,7 @@ static int is_identity(const double *E, int N) {
 }
 
 /* C = Cx + Cp A, D = Dd + Cp B for outputs reading x' (rows ny). */
-static void outputs_through(bg_linear *l, const double *Cx, const double *Cp, const double *Dd) {
+void bg_lin_outputs_through(bg_linear *l, const double *Cx, const double *Cp, const double *Dd) {
   int n = l->n, ny = l->ny, nu = l->nu;
   l->C = bg_xcalloc((size_t)ny * n + 1, sizeof *l->C);
   l->D = bg_xcalloc((size_t)ny * nu + 1, sizeof *l->D);
@@ -66,7 +62,7 @@ static void reduce_ode(bg_linear *l) {
   l->B = bg_xcalloc((size_t)N * l->nu + 1, sizeof *l->B);
   memcpy(l->A, l->Ad, (size_t)N * N * sizeof *l->A);
   memcpy(l->B, l->Bd, (size_t)N * l->nu * sizeof *l->B);
-  outputs_through(l, l->Cd, l->Cpd, l->Dd);
+  bg_lin_outputs_through(l, l->Cd, l->Cpd, l->Dd);
   l->reduced = 1;
 }
 
@@ -146,7 +142,7 @@ static void assemble(bg_linear *l, const double *QA, const double *QB, const dou
   bg_lin_matmul(ny, nz, d + nu, Cz, K, CK);
   for (size_t k = 0; k < (size_t)ny * d; k++) Cx[k] -= CK[k];
   for (size_t k = 0; k < (size_t)ny * nu; k++) Dd[k] = l->Dd[k] - CK[(size_t)ny * d + k];
-  outputs_through(l, Cx, Cp, Dd);
+  bg_lin_outputs_through(l, Cx, Cp, Dd);
   l->reduced = 1;
   free(A1z), free(T), free(Cz), free(Cx), free(Cp), free(CK), free(Dd);
 }
@@ -158,9 +154,8 @@ static int reads_dz(const bg_linear *l, const int *zs, int nz) {
   return 0;
 }
 
-void bg_lin_reduce(bg_linear *l, const int *is_diff) {
+void bg_lin_reduce(bg_linear *l, const int *order) {
   int N = l->N, nz = 0;
-  (void)is_diff;
   if (is_identity(l->E, N)) {
     reduce_ode(l);
     return;
@@ -169,15 +164,11 @@ void bg_lin_reduce(bg_linear *l, const int *is_diff) {
   int d = split_columns(l, xs, zs, &nz);
   double *QA = bg_xcalloc((size_t)N * N + 1, sizeof *QA), *QB = bg_xcalloc((size_t)N * l->nu + 1, sizeof *QB);
   double *R = bg_xcalloc((size_t)d * d + 1, sizeof *R), *K = bg_xcalloc((size_t)nz * (d + l->nu) + 1, sizeof *K);
-  if (!compress(l, xs, d, QA, QB, R))
-    set_note(l, "not reduced: the derivatives are not independent (dependent stores); the "
-                "descriptor form is used");
-  else if (!solve_algebraic(l, QA, QB, xs, d, zs, nz, K))
-    set_note(l, "not reduced: the algebraic equations cannot be solved for the algebraic "
-                "unknowns (index above 1); the descriptor form is used");
-  else if (reads_dz(l, zs, nz))
-    set_note(l, "not reduced: an output reads the derivative of an algebraic unknown; the "
-                "descriptor form is used");
-  else assemble(l, QA, QB, R, xs, d, zs, nz, K);
+  /* the semi-explicit form when it applies (exact junction coefficients);
+   * else dependent stores, or an output reading an algebraic rate:
+   * linear_dep.c eliminates what the constraints fix, or says why not */
+  if (compress(l, xs, d, QA, QB, R) && solve_algebraic(l, QA, QB, xs, d, zs, nz, K) && !reads_dz(l, zs, nz))
+    assemble(l, QA, QB, R, xs, d, zs, nz, K);
+  else bg_lin_reduce_dependent(l, order);
   free(xs), free(zs), free(QA), free(QB), free(R), free(K);
 }

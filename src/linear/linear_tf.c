@@ -56,7 +56,7 @@ static int sys_size(const bg_linear *l) { return l->reduced ? l->n : l->N; }
 
 void bg_lin_poles(bg_linear *l) {
   int n = sys_size(l);
-  if (n > 500) return; /* dense eigenvalues; docs/linear.md */
+  if (n > 500 || n == 0) return; /* dense eigenvalues; docs/linear.md (none without states) */
   cplx *ev = bg_xcalloc((size_t)n + 1, sizeof *ev);
   int k;
   if (l->reduced) k = std_eig(l->A, n, ev);
