@@ -7,33 +7,9 @@
 #include <stdio.h>
 
 #include "harness.h"
-#include "eqs_fixture.h"
-#include "linear/linear.h"
-
-static bg_linear L;
-static efx F;
-
-/* Loads inline model text and linearises it (steady < 0: the model's choice). */
-static int lin(const char *text, int steady) {
-  if (efx_load(&F, NULL, text, -1, NULL, 0)) return -1;
-  return bg_linear_compute(F.m, &F.a, steady, &L);
-}
-
-static void done(void) {
-  bg_linear_free(&L);
-  efx_free(&F);
-}
+#include "linear_fixture.h"
 
 static double at(const double *M, int ld, int i, int j) { return M[(size_t)j * ld + i]; }
-
-/* Coefficients of tf (iy, iu) against the expected ones (highest first). */
-static void tf_is(int iy, int iu, const double *num, int nnum, const double *den, int nden, double tol) {
-  const bg_lin_tf *t = &L.tf[iy * L.nu + iu];
-  INT_EQ(t->nnum, nnum);
-  INT_EQ(t->nden, nden);
-  for (int k = 0; k < nnum && k < t->nnum; k++) DBL_NEAR(t->num[k], num[k], tol * (1 + fabs(num[k])));
-  for (int k = 0; k < nden && k < t->nden; k++) DBL_NEAR(t->den[k], den[k], tol * (1 + fabs(den[k])));
-}
 
 static const char *rlc =
     "param V = 1, R0 = 2, L0 = 0.5, C0 = 0.1\n"

@@ -10,29 +10,8 @@
 #include <stdio.h>
 
 #include "harness.h"
-#include "eqs_fixture.h"
+#include "linear_fixture.h"
 #include "linear/linear_int.h"
-
-static bg_linear L;
-static efx F;
-
-static int lin(const char *text) {
-  if (efx_load(&F, NULL, text, -1, NULL, 0)) return -1;
-  return bg_linear_compute(F.m, &F.a, 0, &L);
-}
-
-static void done(void) {
-  bg_linear_free(&L);
-  efx_free(&F);
-}
-
-static void tf_is(int iy, int iu, const double *num, int nnum, const double *den, int nden) {
-  const bg_lin_tf *t = &L.tf[iy * L.nu + iu];
-  INT_EQ(t->nnum, nnum);
-  INT_EQ(t->nden, nden);
-  for (int k = 0; k < nnum && k < t->nnum; k++) DBL_NEAR(t->num[k], num[k], 1e-12 * (1 + fabs(num[k])));
-  for (int k = 0; k < nden && k < t->nden; k++) DBL_NEAR(t->den[k], den[k], 1e-12 * (1 + fabs(den[k])));
-}
 
 /* H(s) of every pair from the reduced form against the descriptor form. */
 static void forms_agree(void) {
@@ -63,7 +42,7 @@ static const char *gear =
     "output w = I1.f, w2f = I2.f, e2 = I2.e\n";
 
 static void test_gear(void) {
-  OK(lin(gear) == 0);
+  OK(lin(gear, 0) == 0);
   INT_EQ(L.N, 2);
   INT_EQ(L.reduced, 1);
   OK(L.reduce_note == NULL);
@@ -79,9 +58,9 @@ static void test_gear(void) {
   DBL_NEAR(L.D[2], 3.0 / 7, 1e-15);
   INT_EQ(L.npole, 1);
   DBL_NEAR(L.pole_re[0], -1.0 / 28, 1e-15);
-  tf_is(0, 0, (double[]){1.0 / 14}, 1, (double[]){1, 1.0 / 28}, 2);
-  tf_is(1, 0, (double[]){2.0 / 14}, 1, (double[]){1, 1.0 / 28}, 2);
-  tf_is(2, 0, (double[]){3.0 / 7, 0}, 2, (double[]){1, 1.0 / 28}, 2);
+  tf_is(0, 0, (double[]){1.0 / 14}, 1, (double[]){1, 1.0 / 28}, 2, 1e-12);
+  tf_is(1, 0, (double[]){2.0 / 14}, 1, (double[]){1, 1.0 / 28}, 2, 1e-12);
+  tf_is(2, 0, (double[]){3.0 / 7, 0}, 2, (double[]){1, 1.0 / 28}, 2, 1e-12);
   DBL_NEAR(L.tf[0].dc_gain, 2, 1e-12); /* 1/b1 */
   forms_agree();
   OK(L.sym.ok); /* the symbolic form of the merged inertia */
@@ -101,18 +80,18 @@ static const char *secap =
 static void test_improper(void) {
   char src[1024];
   snprintf(src, sizeof src, "%soutput i = L1.f, is = U.f, vC = C1.e\n", secap);
-  OK(lin(src) == 0);
+  OK(lin(src, 0) == 0);
   INT_EQ(L.reduced, 0);
   OK(L.reduce_note && strstr(L.reduce_note, "output is needs the derivative of input U (an improper"));
-  tf_is(0, 0, (double[]){4}, 1, (double[]){1, 8}, 2);
-  tf_is(1, 0, (double[]){0.5, 4, 4}, 3, (double[]){1, 8}, 2);
+  tf_is(0, 0, (double[]){4}, 1, (double[]){1, 8}, 2, 1e-12);
+  tf_is(1, 0, (double[]){0.5, 4, 4}, 3, (double[]){1, 8}, 2, 1e-12);
   done();
   snprintf(src, sizeof src, "%soutput i = L1.f, vC = C1.e\n", secap);
-  OK(lin(src) == 0);
+  OK(lin(src, 0) == 0);
   INT_EQ(L.reduced, 1);
   INT_EQ(L.n, 1);
   STR_EQ(L.uname_all[L.state[0]], "L1.p");
-  tf_is(0, 0, (double[]){4}, 1, (double[]){1, 8}, 2);
+  tf_is(0, 0, (double[]){4}, 1, (double[]){1, 8}, 2, 1e-12);
   DBL_NEAR(L.D[1], 1, 1e-15); /* vC = U */
   done();
 }

@@ -9,21 +9,7 @@
 #include <stdio.h>
 
 #include "harness.h"
-#include "eqs_fixture.h"
-#include "linear/linear.h"
-
-static bg_linear L;
-static efx F;
-
-static int lin(const char *text) {
-  if (efx_load(&F, NULL, text, -1, NULL, 0)) return -1;
-  return bg_linear_compute(F.m, &F.a, 0, &L);
-}
-
-static void done(void) {
-  bg_linear_free(&L);
-  efx_free(&F);
-}
+#include "linear_fixture.h"
 
 /* F on m1; springs K1 (m1-m2), K2 (m2-m3), K3 (m3-ground); damper b on m2. */
 #define CHAIN_PARAMS "m1 = 1, m2 = 2, m3 = 0.5, K1 = 4, K2 = 3, K3 = 2, b = 0.7"
@@ -129,7 +115,7 @@ static void chain_at(const char *ptext, const double *p) {
 }
 
 static void test_chain(void) {
-  OK(lin(chain) == 0);
+  OK(lin(chain, 0) == 0);
   INT_EQ(L.n, 6);
   OK(L.sym.ok);
   if (!L.sym.ok) {
@@ -166,7 +152,7 @@ static void test_size_cap(void) {
              "bond hub -> b%d\nbond b%d -> Rb%d\nbond b%d -> Cb%d\n",
              i, 1 + 0.1 * i, i, 0.5 + 0.2 * i, i, i, i, i, i, i, i, i, i, i);
   strcat(src, "output v1 = Cb1.e\n");
-  OK(lin(src) == 0);
+  OK(lin(src, 0) == 0);
   INT_EQ(L.n, 8);
   OK(!L.sym.ok);
   OK(L.sym.note && strstr(L.sym.note, "too") && strstr(L.sym.note, "numeric only"));
@@ -174,7 +160,7 @@ static void test_size_cap(void) {
   done();
   /* nine states: above the state limit */
   strcat(src, "C Cx = 1\nR Rx = 2\n1 hx\nbond hub -> hx\nbond hx -> Cx\nbond hx -> Rx\n");
-  OK(lin(src) == 0);
+  OK(lin(src, 0) == 0);
   INT_EQ(L.n, 9);
   OK(!L.sym.ok && L.sym.note && !strcmp(L.sym.note, "more than 8 states: numeric only"));
   done();
