@@ -44,6 +44,9 @@ static void stats(rp_ctx *c, const bg_simresult *r) {
   if (r->ic_report && *r->ic_report) row(&t, "Initial values changed", "%s", r->ic_report);
   if (r->ic_retries) row(&t, "Initial guesses retried", "%d", r->ic_retries);
   if (r->max_step > 0) row(&t, "Largest step allowed", "%g s", r->max_step);
+  if (r->nconditions)
+    row(&t, "State events", "%d at %d switching condition%s%s", r->nevents, r->nconditions,
+        r->nconditions == 1 ? "" : "s", r->events_searched ? "" : " (not searched)");
   if (r->rows_redone) row(&t, "Intervals integrated again", "%d (an output row violated the algebraic equations)", r->rows_redone);
   bg_strbuf w = {0};
   if (bg_simresult_row_warning(r, &w)) row(&t, "Warning", "%s", bg_sb_str(&w));
@@ -51,6 +54,27 @@ static void stats(rp_ctx *c, const bg_simresult *r) {
   if (bg_sim_verify_text(r, &w)) row(&t, "Verification", "%s", bg_sb_str(&w));
   bg_sb_free(&w);
   rp_table_emit(&c->body, &t);
+}
+
+/* The first state events: time, condition, direction (the JSON has all). */
+#define RP_EVENTS_SHOWN 12
+static void events(rp_ctx *c, const bg_simresult *r) {
+  if (r->nevents <= 0) return;
+  static const char *head[] = {"t [s]", "Condition", "Switching function"};
+  rp_table t;
+  rp_table_init(&t, 3, head, "rll");
+  for (int k = 0; k < r->nevents && k < RP_EVENTS_SHOWN; k++) {
+    rp_table_cell(&t, "%.10g", r->event_t[k]);
+    rp_table_text(&t, r->condition_text[r->event_cond[k]]);
+    rp_table_text(&t, r->event_dir[k] > 0 ? "rising" : "falling");
+  }
+  rp_subsection(&c->body, "State events", 60);
+  rp_table_emit(&c->body, &t);
+  if (r->nevents > RP_EVENTS_SHOWN) {
+    char buf[120];
+    snprintf(buf, sizeof buf, "and %d more (the JSON lists them all).", r->nevents - RP_EVENTS_SHOWN);
+    para(c, buf);
+  }
 }
 
 /* The plots' scene (kept in c until the PDF is written) and its scale on a
@@ -121,4 +145,5 @@ void rp_sec_simulation(rp_ctx *c) {
   bg_sb_free(&b);
   plots(c, r, ps, sc);
   stats(c, r);
+  events(c, r);
 }

@@ -42,6 +42,25 @@ static void put_verify(bg_strbuf *o, const bg_simresult *r) {
   bg_sb_puts(o, "}");
 }
 
+/* State events: only for a model with switching conditions (docs/json.md),
+ * so the documents of models without them are as they were. */
+static void put_events(bg_strbuf *o, const bg_simresult *r) {
+  if (r->nconditions <= 0) return;
+  bg_sb_printf(o, ",\n    \"events\": {\"searched\": %s, \"conditions\": [", r->events_searched ? "true" : "false");
+  for (int i = 0; i < r->nconditions; i++) {
+    if (i) bg_sb_puts(o, ", ");
+    bg_sb_json_str(o, r->condition_text[i]);
+  }
+  bg_sb_printf(o, "], \"count\": %d, \"list\": [", r->nevents);
+  for (int k = 0; k < r->nevents; k++) {
+    bg_sb_puts(o, k ? ",\n      {\"t\": " : "\n      {\"t\": ");
+    bg_sb_json_num(o, r->event_t[k]);
+    bg_sb_printf(o, ", \"condition\": %d, \"direction\": \"%s\"}", r->event_cond[k],
+                 r->event_dir[k] > 0 ? "rising" : "falling");
+  }
+  bg_sb_puts(o, r->nevents ? "\n    ]}" : "]}");
+}
+
 void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
   bg_sb_puts(o, "  \"simulation\": {\n    \"status\": ");
   bg_sb_json_str(o, status_name(status));
@@ -92,6 +111,7 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
   bg_sb_free(&w);
   bg_sb_puts(o, "}");
   put_verify(o, r);
+  put_events(o, r);
   bg_sb_puts(o, "\n  }");
 }
 
