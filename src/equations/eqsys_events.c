@@ -93,6 +93,8 @@ void bg_eqs_events_find(bg_eqsys *s) {
   s->root_text = bg_arena_alloc(&s->arena, (size_t)nroot * sizeof(char *));
   s->ev_prev = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(double));
   s->ev_zero = bg_arena_alloc(&s->arena, (size_t)nev);
+  s->ev_free = bg_arena_alloc(&s->arena, (size_t)nev);
+  memset(s->ev_free, 0, (size_t)nev);
   s->ev_y = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   s->ev_yp = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   nev = nroot = 0;
@@ -198,6 +200,7 @@ static double ev_mode_of(const bg_eqsys *s, int e, const double *v, const int *d
 }
 
 double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v) {
+  if (s->ev_free[e]) return bg_eqs_ins_value(s, s->ev_code[e], v);
   const tinstr *I = &s->code[s->ev_code[e]];
   double mode = s->ev_mode[e], x = v[I->a[0]];
   if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, x, 0);
@@ -287,6 +290,7 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
   unsigned char *zero = s->ev_zero;
   int changed = 0, nzero = 0, was = s->ev_frozen;
   memcpy(s->ev_prev, s->ev_mode, (size_t)s->nev * sizeof(double));
+  memset(s->ev_free, 0, (size_t)s->nev);
   modes_pass(s, t, y, yp, dir, NULL);
   /* A switching function exactly zero here leaves to one side or the other
    * without a sign change the root finder could see: decide it by where the
@@ -299,8 +303,15 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
     if (ydot) {
       for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * ydot[i];
       modes_pass(s, t + delta, s->ev_y, yp, NULL, zero);
+      for (int e = 0; e < s->nev; e++) zero[e] = zero[e] && undecided(s, e, NULL);
     }
   }
+  /* Still zero a moment later (hydraulic_lift's throttle: its pressure drop
+   * starts at 0 and leaves it with its second derivative): no side can be
+   * held, and the root finder will not report its leaving 0 (SUNDIALS
+   * deactivates a root function that is 0 at the start and then takes its
+   * sign silently). Evaluated as compiled until its next root. */
+  for (int e = 0; e < s->nev; e++) s->ev_free[e] = zero[e] && nzero;
   s->ev_frozen = was;
   for (int e = 0; e < s->nev; e++) changed += s->ev_prev[e] != s->ev_mode[e];
   return changed;

@@ -122,6 +122,7 @@ struct bg_eqsys {
   int nev, *ev_code, *ev_root0, *code_ev; /* code_ev: per main instruction, -1 */
   double *ev_mode, *ev_prev; /* ev_prev: the modes before an update */
   unsigned char *ev_zero;     /* per event: a switching function exactly zero */
+  unsigned char *ev_free;     /* per event: undecided at the last update, evaluated as compiled */
   int nroot, *root_ev;
   const char **root_text;
   unsigned char *slot_dep; /* per slot: reads y or yp */
@@ -164,7 +165,7 @@ void bg_eqs_jac(bg_eqsys *s, double cj, int resid, double *J, int sparse, int on
 /* eqsys_events.c: finds the event instructions (after compilation); their
  * frozen value and derivative; the value of instruction k as compiled. */
 void bg_eqs_events_find(bg_eqsys *s);
-double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v);
+double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v); /* frozen, or as compiled when free */
 double bg_eqs_ev_der(const bg_eqsys *s, int e, const double *v, const double *dv);
 double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v);
 /* eqsys_tape.c: values of the main tape at (t, y, yp) without any check. */

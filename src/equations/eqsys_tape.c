@@ -402,7 +402,8 @@ static void seed(bg_eqsys *s, int c, double sy, double syp) {
   if (s->vals_frozen) {
     for (int k = 0; k < s->nmain; k++) {
       int e = s->code_ev[k];
-      s->dv[s->code[k].out] = e >= 0 ? bg_eqs_ev_der(s, e, s->v, s->dv) : ins_der(s, &s->code[k], s->v, s->dv);
+      s->dv[s->code[k].out] = e >= 0 && !s->ev_free[e] ? bg_eqs_ev_der(s, e, s->v, s->dv)
+                                                       : ins_der(s, &s->code[k], s->v, s->dv);
     }
     return;
   }

@@ -479,7 +479,31 @@ static void test_valve(void) {
   valve_check("ida");
 }
 
+/* ------------------------------------------------------------------ undecided at the start */
+/* X.q = t^2/2 starts at 0 and leaves it with its second derivative (the
+ * look-ahead along y' sees 0 too), so sign(X.q) cannot be held at a side
+ * at t0: it is evaluated as compiled until its next root. Y, charged by
+ * sign(X.q), then follows t (held at sign(0) = 0 it stayed 0, and the
+ * root finder never said: hydraulic_lift's throttle, whose pressure drop
+ * starts like this, passed no flow). */
+static void test_undecided_start(void) {
+  fx f;
+  if (run_text(&f, "Sf S = t\n0 a\nC X = 1\nbond S -> a\nbond a -> X\nMSf P = sign(X.q)\n0 b\n"
+                   "C Y = 1\nbond P -> b\nbond b -> Y\nsimulate t_end = 1, dt = 0.1, rtol = 1e-10, atol = 1e-12\n"
+                   "plot X.q, Y.q\n", NULL, 0)) { fx_free(&f); return; }
+  int kx = col(&f.r, "X.q"), ky = col(&f.r, "Y.q");
+  OK(kx >= 0 && ky >= 0 && f.r.nrows == 11);
+  INT_EQ(f.r.nconditions, 1);
+  INT_EQ(f.r.nevents, 0);
+  for (int i = 0; kx >= 0 && ky >= 0 && i < f.r.nrows; i++) {
+    DBL_NEAR(val(&f.r, i, kx), 0.5 * f.r.t[i] * f.r.t[i], 1e-9);
+    DBL_NEAR(val(&f.r, i, ky), f.r.t[i], 1e-6); /* the first steps straddle the jump of sign at 0+ */
+  }
+  fx_free(&f);
+}
+
 int main(void) {
+  test_undecided_start();
   test_ball();
   test_ball_without_events();
   test_rectifier();
