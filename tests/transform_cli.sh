@@ -184,9 +184,24 @@ assert d1 < 5e-3, "delta with a parasitic C against the hand solution: %g" % d1
 assert d2 < d1 / 5, "delta: C 100 times smaller, %g vs %g" % (d2, d1)
 PY
 "$BG" examples/rlc.bg --transform parasitic -o "$TMP/x.bg" 2>"$TMP/err"; rc=$?
-check "parasitic on rlc refused" '[ $rc -eq 3 ] && grep -qF "it has no algebraic loop between resistors (class 2 causal path), no causal loop and no type 1 conflict" "$TMP/err"'
-"$BG" examples/series_conductances.bg --transform parasitic -o "$TMP/x.bg" 2>"$TMP/err"; rc=$?
-check "parasitic on a type 2 conflict refused with the reason" '[ $rc -eq 3 ] && grep -qF "conflict 1 at j is of type 2" "$TMP/err"'
+check "parasitic on rlc refused" '[ $rc -eq 3 ] && grep -qF "it has no algebraic loop between resistors (class 2 causal path), no causal loop and no conflict" "$TMP/err"'
+# a type 2 conflict of degree 2 (Figure 4.28): a 0-junction with a C in two of
+# the three bonds that want to set j's flow
+SCD=examples/series_conductances.bg
+"$BG" $SCD --transform parasitic -o "$TMP/sd.bg" 2>"$TMP/err"; rc=$?
+check "parasitic on a type 2 conflict: new junctions in bonds 3 and 4" '[ $rc -eq 0 ] && grep -qxF "bond 3 j -> jp_Rb" "$TMP/sd.bg" && grep -qxF "bond 9 jp_Rb -> Rb" "$TMP/sd.bg" && grep -qxF "bond 10 jp_Rc -> Rc" "$TMP/sd.bg" && grep -qxF "bond 7 jp_Rb -> Cp_Rb" "$TMP/sd.bg" && grep -qxF "0   jp_Rc" "$TMP/sd.bg"'
+"$BG" "$TMP/sd.bg" --check >"$TMP/check" 2>&1
+check "parasitic on a type 2 conflict: no conflict, an ODE" 'grep -qxF "conflicts: 0" "$TMP/check" && grep -qF "form: ode" "$TMP/check"'
+"$BG" $SCD --simulate -o "$TMP/sd0.csv" 2>/dev/null
+"$BG" "$TMP/sd.bg" --simulate -o "$TMP/sd1.csv" 2>/dev/null
+python3 - "$TMP/sd0.csv" "$TMP/sd1.csv" <<'PY' || fail=$((fail + 1))
+import csv, sys
+a, b = (list(csv.reader(open(p))) for p in sys.argv[1:])
+assert a[0] == b[0] == ["t", "Cl.e"] and len(a) == len(b) == 502, (a[0], len(b))
+col = [float(r[1]) for r in a[1:]]
+d = max(abs(float(x[1]) - float(y[1])) for x, y in zip(a[1:], b[1:])) / (max(col) - min(col))
+assert d < 1e-5, "parasitic on series_conductances: deviation %g" % d
+PY
 
 # --- relax-junction: Figure 4.26, a flow source forcing a conductance ----------
 FR=$D/forced.bg

@@ -92,6 +92,19 @@ void tx_number_bonds(tx_ctx *c) {
   }
 }
 
+void tx_split_bond(const tx_ctx *c, tx_doc *d, int b, const char *j, int number) {
+  const bg_ast_stmt *s = tx_bond_stmt(c, b);
+  bg_strbuf t = {0};
+  tx_print_bond(&t, c->m->bond_num[b], s->from,
+                s->arrow == BG_ARROW_STROKE_TAIL ? BG_ARROW_STROKE_TAIL : BG_ARROW_PLAIN, j, s);
+  tx_replace_stmt(d, s->loc.line, bg_sb_str(&t));
+  bg_sb_clear(&t);
+  tx_print_bond(&t, number, j, s->arrow == BG_ARROW_STROKE_HEAD ? BG_ARROW_STROKE_HEAD
+                : BG_ARROW_PLAIN, s->to, NULL);
+  tx_insert_after(d, s->loc.line, bg_sb_str(&t));
+  bg_sb_free(&t);
+}
+
 void tx_remove_bond(tx_ctx *c, int b) {
   tx_number_bonds(c); /* unnumbered bonds after it would take other numbers */
   tx_delete_stmt(&c->doc, tx_bond_line(c, b));

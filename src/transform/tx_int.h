@@ -75,6 +75,10 @@ void tx_number_bonds(tx_ctx *c);
 /* The line of elem e's statement; of bond b's. */
 int tx_elem_line(const tx_ctx *c, int e);
 int tx_bond_line(const tx_ctx *c, int b);
+/* Bond b split in d at a new junction j: the tail's segment keeps the
+ * number, the options and a stroke fixed at the tail; the head's segment
+ * gets number and a stroke fixed at the head. */
+void tx_split_bond(const tx_ctx *c, tx_doc *d, int b, const char *j, int number);
 /* Removes the statement of bond b (numbering the others first). */
 void tx_remove_bond(tx_ctx *c, int b);
 

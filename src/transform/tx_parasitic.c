@@ -1,8 +1,9 @@
 /* parasitic (chapter Figure 4.5, Sections 4.3 and 4.9): a small C at a
  * 0-junction (I at a 1-junction) takes the junction's common variable as a
  * state, which breaks an algebraic loop between resistors through it
- * (class 2 causal path) or gives a junction in a type 1 conflict the
- * variable no bond gave. The parameter is chosen from the model's time
+ * (class 2 causal path) or a causal loop, or gives a junction in a type 1
+ * conflict the variable no bond gave; in a type 2 conflict each extra bond
+ * gets a junction of the other type with the store. The parameter is chosen from the model's time
  * scales: the new store's own estimates (causal paths from it to the
  * resistors and stores around it) are BG_TX_PARASITIC_FACTOR times faster
  * than the fastest estimate of the original model. */
@@ -18,6 +19,8 @@ enum { MAX_TARGET = 32 };
 
 typedef struct target {
   int junction;     /* element id in the original model */
+  int bond;         /* a type 2 conflict's bond split by a new junction; -1: none */
+  char split[64];   /* the new junction on it */
   int kind;         /* BG_ELEM_C or BG_ELEM_I */
   char elem[64];    /* the new store */
   char param[64];   /* its parameter */
@@ -32,16 +35,26 @@ typedef struct plan {
   int n;
 } plan;
 
-static void add_target(tx_ctx *c, plan *p, int j, const char *cause) {
-  for (int i = 0; i < p->n; i++)
-    if (p->t[i].junction == j) return; /* one store serves every problem at j */
+/* A store at junction j, or (bond >= 0) at a new junction of the other
+ * type splitting bond b of junction j. */
+static void add_target(tx_ctx *c, plan *p, int j, int bond, const char *cause) {
+  for (int i = 0; i < p->n && bond < 0; i++)
+    if (p->t[i].junction == j && p->t[i].bond < 0) return; /* one store serves j */
   if (p->n == MAX_TARGET) return;
   target *t = &p->t[p->n++];
   memset(t, 0, sizeof *t);
   t->junction = j;
-  t->kind = c->m->elem_kind[j] == BG_ELEM_J0 ? BG_ELEM_C : BG_ELEM_I;
+  t->bond = bond;
+  int zero = c->m->elem_kind[j] == BG_ELEM_J0;
+  t->kind = (bond < 0) == zero ? BG_ELEM_C : BG_ELEM_I;
   char base[64];
-  snprintf(base, sizeof base, "%sp_%s", t->kind == BG_ELEM_C ? "C" : "I", c->m->elem_name[j]);
+  const char *at = c->m->elem_name[j];
+  if (bond >= 0) { /* named after the element at the bond's other end */
+    at = c->m->elem_name[bg_bond_other(c->m, bond, j)];
+    snprintf(base, sizeof base, "jp_%s", at);
+    tx_fresh_name(c, base, t->split, sizeof t->split);
+  }
+  snprintf(base, sizeof base, "%sp_%s", t->kind == BG_ELEM_C ? "C" : "I", at);
   tx_fresh_name(c, base, t->elem, sizeof t->elem);
   snprintf(base, sizeof base, "%s_0", t->elem);
   tx_fresh_name(c, base, t->param, sizeof t->param);
@@ -74,7 +87,7 @@ static void collect(tx_ctx *c, plan *p) {
     snprintf(cause, sizeof cause, "on class 2 causal path %d (an algebraic loop between the "
              "resistors %s and %s)", k + 1, m->elem_name[a->path_end0[k]],
              m->elem_name[a->path_end1[k]]);
-    add_target(c, p, j, cause);
+    add_target(c, p, j, -1, cause);
   }
   for (int k = 0; k < a->ncloop; k++) {
     int j = chain_junction(m, a->cloop_bonds + a->cloop_adr[k], a->cloop_n[k], 1);
@@ -82,20 +95,28 @@ static void collect(tx_ctx *c, plan *p) {
     snprintf(cause, sizeof cause, "on causal loop %d (an algebraic loop of the junction "
              "structure, gain %s%s)", k + 1, a->cloop_gain[k],
              a->cloop_class[k] == 5 ? " = +1: index above 1" : "");
-    add_target(c, p, j, cause);
+    add_target(c, p, j, -1, cause);
   }
   for (int k = 0; k < a->nconflict; k++) {
+    int j = a->conflict_node[k];
     if (a->conflict_type[k] != 1) {
-      if (c->problem.len) bg_sb_puts(&c->problem, "; ");
-      bg_sb_printf(&c->problem, "conflict %d at %s is of type 2 (too many bonds determine its "
-                   "common variable): a store there would add one more", k + 1,
-                   m->elem_name[a->conflict_node[k]]);
+      /* type 2 of degree d: d + 1 bonds want to set the common variable; the
+       * first stays, each other one gets a junction of the other type with a
+       * store, which takes that bond's variable as a state (Figure 4.25's
+       * remedy at the end of Section 4.9) */
+      for (int i = 1; i < a->conflict_n[k]; i++) {
+        int b = a->conflict_bonds[a->conflict_adr[k] + i];
+        snprintf(cause, sizeof cause, "for the type 2 conflict %d at %s (bond %d is one of the "
+                 "%d that want to set its %s)", k + 1, m->elem_name[j], m->bond_num[b],
+                 a->conflict_n[k], m->elem_kind[j] == BG_ELEM_J0 ? "effort" : "flow");
+        add_target(c, p, j, b, cause);
+      }
       continue;
     }
     snprintf(cause, sizeof cause, "for the type 1 conflict %d at %s (no bond determines its %s)",
              k + 1, m->elem_name[a->conflict_node[k]],
              m->elem_kind[a->conflict_node[k]] == BG_ELEM_J0 ? "effort" : "flow");
-    add_target(c, p, a->conflict_node[k], cause);
+    add_target(c, p, a->conflict_node[k], -1, cause);
   }
 }
 
@@ -105,7 +126,13 @@ static void emit(const tx_ctx *c, const plan *p, tx_doc *d) {
   bg_strbuf s = {0};
   for (int i = 0; i < p->n; i++) {
     const target *t = &p->t[i];
-    const char *jn = c->m->elem_name[t->junction];
+    const char *jn = t->bond >= 0 ? t->split : c->m->elem_name[t->junction];
+    if (t->bond >= 0) { /* the new junction, in the bond it splits */
+      bg_sb_clear(&s);
+      bg_sb_printf(&s, "%-3s %s", t->kind == BG_ELEM_C ? "0" : "1", t->split);
+      tx_insert_after(d, tx_elem_line(c, t->junction), bg_sb_str(&s));
+      tx_split_bond(c, d, t->bond, t->split, c->next_bond + p->n + i);
+    }
     bg_sb_clear(&s);
     bg_sb_printf(&s, "param %s = %.3g \"parasitic %s at %s (bgdraw --transform parasitic)\"",
                  t->param, t->value, t->kind == BG_ELEM_C ? "capacitance" : "inertance", jn);
@@ -189,7 +216,8 @@ static void initial_values(const tx_ctx *c, plan *p) {
   bg_eqsys_initial(s, y);
   if (bg_eqsys_consistent(s, t0, y, 50) == 0 && bg_eqsys_signals(s, t0, y, NULL, e, f) == 0)
     for (int i = 0; i < p->n; i++) {
-      int b = c->m->elem_bonds[c->m->elem_bondadr[p->t[i].junction]];
+      int b = p->t[i].bond >= 0 ? p->t[i].bond
+                                : c->m->elem_bonds[c->m->elem_bondadr[p->t[i].junction]];
       p->t[i].start = p->t[i].kind == BG_ELEM_C ? e[b] : f[b];
       p->t[i].start_known = isfinite(p->t[i].start);
     }
@@ -219,8 +247,9 @@ static int size_stores(tx_ctx *c, plan *p, const bg_model *tm, const bg_analysis
       int q = ta->estimate_path[k], e0 = ta->path_end0[q], e1 = ta->path_end1[q];
       if (e0 != e && e1 != e) continue;
       int other = e0 == e ? e1 : e0;
-      if (strncmp(tm->elem_name[other], "Cp_", 3) == 0 || strncmp(tm->elem_name[other], "Ip_", 3) == 0)
-        continue; /* two new stores: neither sizes the other */
+      int new_store = 0;
+      for (int q2 = 0; q2 < p->n; q2++) new_store |= !strcmp(tm->elem_name[other], p->t[q2].elem);
+      if (new_store) continue; /* two new stores: neither sizes the other */
       double s = tx_estimate_scale(ta, k);
       if (!(isfinite(s) && s > 0)) continue;
       double v = ta->estimate_kind[k] == 0 ? want / s : (want / s) * (want / s);
@@ -251,10 +280,16 @@ static void say_targets(tx_ctx *c, const plan *p) {
     const target *t = &p->t[i];
     int is_c = t->kind == BG_ELEM_C;
     if (c->why.len) bg_sb_putc(&c->why, ' ');
-    bg_sb_printf(&c->why, "A small %s store %s at the %d-junction %s, %s, takes the "
-                 "junction's %s as a state (chapter Figure 4.5: a parasitic %s that was "
-                 "neglected)", is_c ? "C" : "I", t->elem, is_c ? 0 : 1,
-                 c->m->elem_name[t->junction], t->cause, is_c ? "effort" : "flow",
+    char where[160];
+    if (t->bond >= 0)
+      snprintf(where, sizeof where, "a new %d-junction %s splitting bond %d", is_c ? 0 : 1,
+               t->split, c->m->bond_num[t->bond]);
+    else
+      snprintf(where, sizeof where, "the %d-junction %s", is_c ? 0 : 1,
+               c->m->elem_name[t->junction]);
+    bg_sb_printf(&c->why, "A small %s store %s at %s, %s, takes the junction's %s as a state "
+                 "(chapter Figure 4.5: a parasitic %s that was neglected)", is_c ? "C" : "I",
+                 t->elem, where, t->cause, is_c ? "effort" : "flow",
                  is_c ? "compliance" : "inertia");
     if (t->start_known && t->start != 0)
       bg_sb_printf(&c->why, "; it starts at the junction's initial %s, %.6g", is_c ? "effort"
@@ -270,7 +305,7 @@ int tx_parasitic(tx_ctx *c) {
   if (!p.n) {
     if (!c->problem.len)
       bg_sb_puts(&c->problem, "it has no algebraic loop between resistors (class 2 causal "
-                              "path), no causal loop and no type 1 conflict for a store to "
+                              "path), no causal loop and no conflict for a store to "
                               "break");
     return -1;
   }

@@ -22,22 +22,6 @@ static int forcing_source(const bg_model *m, int r) {
   return -1;
 }
 
-/* Bond b split at a new junction j: the tail's segment keeps the number,
- * the options and a stroke fixed at the tail; the head's segment is new. */
-static void split_bond(tx_ctx *c, int b, const char *j) {
-  const bg_ast_stmt *s = tx_bond_stmt(c, b);
-  bg_strbuf t = {0};
-  tx_print_bond(&t, c->m->bond_num[b], s->from,
-                s->arrow == BG_ARROW_STROKE_TAIL ? BG_ARROW_STROKE_TAIL : BG_ARROW_PLAIN, j, s);
-  tx_replace_stmt(&c->doc, s->loc.line, bg_sb_str(&t));
-  bg_sb_clear(&t);
-  tx_print_bond(&t, c->next_bond++, j,
-                s->arrow == BG_ARROW_STROKE_HEAD ? BG_ARROW_STROKE_HEAD : BG_ARROW_PLAIN, s->to,
-                NULL);
-  tx_insert_after(&c->doc, s->loc.line, bg_sb_str(&t));
-  bg_sb_free(&t);
-}
-
 /* causality relaxed: the statement rewritten, else one after `model`. */
 static void ask_relaxed(tx_ctx *c) {
   const bg_ast *ast = c->in->ast;
@@ -83,7 +67,7 @@ int tx_relax_junction(tx_ctx *c) {
     bg_sb_printf(&t, "%-3s %s", law_f ? "0" : "1", j);
     tx_insert_after(&c->doc, tx_elem_line(c, r), bg_sb_str(&t));
     bg_sb_free(&t);
-    split_bond(c, bg_elem_port_bond(m, r), j);
+    tx_split_bond(c, &c->doc, bg_elem_port_bond(m, r), j, c->next_bond++);
     say_relax(c, r, src, j, law_f);
     n++;
   }
