@@ -4,7 +4,8 @@
 # checker), the report lists instances and bond origins, CSV headers carry
 # qualified names, --set reaches an instance's
 # parameter, a version 1 file's JSON has none of the new keys, and the
-# examples written with lib/ simulate like their flat versions.
+# examples written with lib/ simulate like their flat versions; detectors
+# (De, Df) give CSV columns equal to the variables they read.
 # Usage: bash tests/components.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 BGDRAW=${1:?usage: components.sh PATH_TO_BGDRAW}
@@ -70,6 +71,48 @@ EOF
 "$BGDRAW" "$TMP/sim.bg" --simulate -o "$TMP/a.csv" --set M1.R=4 || { echo "FAIL: sim.bg"; fail=1; }
 head -1 "$TMP/a.csv" | grep -qx 't,M1.La.f,M2.La.f,M1.R' || { echo "FAIL: CSV header $(head -1 "$TMP/a.csv")"; fail=1; }
 awk -F, 'NR == 3 { if ($4 != 4 || !($2 < $3)) { print "FAIL: --set M1.R row " $0; exit 1 } }' "$TMP/a.csv" || fail=1
+
+# Detectors: CSV columns named by the detector equal the variables they read,
+# and the JSON lists them.
+cat >"$TMP/det.bg" <<'EOF'
+Se U = step(t)
+1 j
+R R1 = 2
+I L1 = 0.5
+0 n
+C C1 = 0.1
+R R2 = 4
+bond U -> j
+bond j -> R1
+bond j -> L1
+bond j -> n
+bond n -> C1
+bond n -> R2
+De vC = n
+Df i = j
+simulate t_end = 1, dt = 0.1
+plot vC, C1.e, i, L1.f
+EOF
+"$BGDRAW" "$TMP/det.bg" --simulate -o "$TMP/det.csv" -o "$TMP/det.json" || { echo "FAIL: det.bg"; fail=1; }
+head -1 "$TMP/det.csv" | grep -qx 't,vC,C1.e,i,L1.f' || { echo "FAIL: detector CSV header"; fail=1; }
+awk -F, 'NR > 1 && ($2 != $3 || $4 != $5) { print "FAIL: detector column differs: " $0; bad = 1 } END { exit bad }' "$TMP/det.csv" || fail=1
+grep -q '"detectors"' "$TMP/det.json" || { echo "FAIL: JSON has no detectors"; fail=1; }
+python3 tests/json_schema.py "$TMP/det.json" || fail=1
+grep -A2 '"detectors": \[' "$TMP/det.json" | tr -d ' \n' | grep -qF '"detectors":[{"name":"vC","kind":"De","node":"n"},{"name":"i","kind":"Df","node":"j"}' || { echo "FAIL: JSON detectors"; fail=1; }
+# Without a plot statement the CSV has the states, then the detectors (vC = C1.q / 0.1).
+grep -v '^plot' "$TMP/det.bg" >"$TMP/det2.bg"
+"$BGDRAW" "$TMP/det2.bg" --simulate -o "$TMP/det2.csv" || { echo "FAIL: det2.bg"; fail=1; }
+head -1 "$TMP/det2.csv" | grep -qx 't,L1.p,C1.q,vC,i' || { echo "FAIL: detector CSV header without plot: $(head -1 "$TMP/det2.csv")"; fail=1; }
+awk -F, 'NR > 1 { d = $4 - 10 * $3; if (d > 1e-12 || d < -1e-12 || $5 != 2 * $2) { print "FAIL: detector value: " $0; bad = 1 } } END { exit bad }' "$TMP/det2.csv" || fail=1
+# Equations: the detectors' section names the bond variables; the JSON is self-contained.
+"$BGDRAW" "$TMP/det2.bg" --equations text >"$TMP/det2.txt" || fail=1
+grep -A2 '^# detectors' "$TMP/det2.txt" | tr '\n' ';' | grep -qx '# detectors (outputs: the bond variables they read);vC = e4;i = f1;' || { echo "FAIL: detector equations"; fail=1; }
+"$BGDRAW" "$TMP/det2.bg" --equations json >"$TMP/det2.eq.json" && python3 tests/equations_json.py "$TMP/det2.eq.json" >/dev/null || { echo "FAIL: detector equations JSON"; fail=1; }
+# Linear analysis: the detectors are the outputs; DC gains R2/(R1+R2) and 1/(R1+R2).
+"$BGDRAW" "$TMP/det2.bg" --linear text >"$TMP/det2.lin" || fail=1
+grep -qx 'outputs: vC, i' "$TMP/det2.lin" || { echo "FAIL: linear outputs"; fail=1; }
+grep -A1 '^vC/U = (20) / (s^2 + 6.5\*s + 30)$' "$TMP/det2.lin" | grep -q 'DC gain: 0.666667' || { echo "FAIL: vC/U"; fail=1; }
+grep -A1 '^i/U = (2\*s + 5) / (s^2 + 6.5\*s + 30)$' "$TMP/det2.lin" | grep -q 'DC gain: 0.166667' || { echo "FAIL: i/U"; fail=1; }
 
 # A version 1 model's JSON has no component keys.
 "$BGDRAW" examples/rlc.bg -o "$TMP/v1.json" || fail=1

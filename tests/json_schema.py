@@ -337,6 +337,16 @@ def check(name, text):
         if om["topological_loops_complete"] and (om["causal_paths"] or om["causal_loops"]
                                                  or om["topological_loops"]):
             c.bad("omitted", "topological loops said complete although items were left out")
+    if "detectors" in d:  # De, Df (docs/format.md): each reads a node of the model
+        names = set(elem_kind)
+        for i, e in enumerate(c.list_of("detectors", d["detectors"], dict)):
+            w = "detectors[%d]" % i
+            if not c.keys(w, e, ["name", "kind", "node"]):
+                continue
+            c.typ(w + ".name", e["name"], str)
+            c.vocab(w + ".kind", e["kind"], {"De", "Df"})
+            if e["node"] not in names:
+                c.bad(w + ".node", "no element %r" % e["node"])
     return c.problems
 
 

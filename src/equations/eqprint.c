@@ -72,6 +72,22 @@ static void print_rows(prn *P, int alg, bg_strbuf *out) {
   }
 }
 
+/* Detectors (De, Df): outputs, not equations; each names the bond variable
+ * it reads (docs/equations.md), so the equations above stay as they are. */
+static void print_detectors(const bg_eqsys *s, int st, bg_strbuf *out) {
+  const bg_model *m = s->m;
+  if (!m->ndet) return;
+  if (st == ST_TEXT) bg_sb_puts(out, "# detectors (outputs: the bond variables they read)\n");
+  for (int k = 0; k < m->ndet; k++) {
+    const bg_xnode *x = &m->xnode[m->det_expr[k]];
+    if (st == ST_LATEX) bg_eqsym_latex_name(m->det_name[k], out);
+    else bg_sb_puts(out, m->det_name[k]);
+    bg_sb_puts(out, st == ST_LATEX ? " &= " : " = ");
+    pr_sig(s, 2 * x->ref + (x->op == BG_X_FLOW), st, out);
+    bg_sb_puts(out, st == ST_LATEX ? " \\\\\n" : "\n");
+  }
+}
+
 static void unknown_list(const bg_eqsys *s, int i0, int i1, bg_strbuf *out) {
   for (int i = i0; i < i1; i++) bg_sb_printf(out, "%s%s", i > i0 ? ", " : "", s->uname[i]);
 }
@@ -91,6 +107,7 @@ void bg_eqprint_text(const bg_eqsys *s, bg_strbuf *out) {
   if (s->nz) bg_sb_puts(out, "# algebraic residuals\n"), print_rows(&P, 1, out);
   bg_sb_puts(out, "# state equations\n");
   print_rows(&P, 0, out);
+  print_detectors(s, ST_TEXT, out);
   bg_sym_free(P.S);
   bg_eqred *r = bg_eqred_build(s);
   bg_eqred_print(r, 0, out);
@@ -103,6 +120,7 @@ void bg_eqprint_latex(const bg_eqsys *s, bg_strbuf *out) {
   print_eqs(&P, out);
   print_rows(&P, 1, out);
   print_rows(&P, 0, out);
+  print_detectors(s, ST_LATEX, out);
   bg_sb_puts(out, "\\end{align*}\n");
   bg_sym_free(P.S);
   bg_eqred *r = bg_eqred_build(s);
@@ -184,6 +202,22 @@ static void json_unknowns(const bg_eqsys *s, bg_strbuf *out) {
   free(y0);
 }
 
+/* "detectors": [{name, kind, signal}] (only for a model that has them). */
+static void json_detectors(const bg_eqsys *s, bg_strbuf *out) {
+  const bg_model *m = s->m;
+  if (!m->ndet) return;
+  bg_sb_puts(out, "\"detectors\": [");
+  for (int k = 0; k < m->ndet; k++) {
+    const bg_xnode *x = &m->xnode[m->det_expr[k]];
+    bg_sb_printf(out, "%s{\"name\": ", k ? ", " : "");
+    bg_sb_json_str(out, m->det_name[k]);
+    bg_sb_printf(out, ", \"kind\": \"%s\", \"signal\": \"", m->det_var[k] == 'e' ? "De" : "Df");
+    pr_sig(s, 2 * x->ref + (x->op == BG_X_FLOW), ST_TEXT, out);
+    bg_sb_puts(out, "\"}");
+  }
+  bg_sb_puts(out, "], ");
+}
+
 /* Self-contained: every name an equation uses is defined in the document
  * (docs/json.md, "The equations document"). */
 void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
@@ -213,6 +247,7 @@ void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
     bg_sb_puts(out, "}");
   }
   bg_sb_puts(out, "], ");
+  json_detectors(s, out);
   bg_eqred *r = bg_eqred_build(s);
   bg_eqred_json(r, out);
   bg_strbuf seen = {0};

@@ -150,15 +150,27 @@ static int ce(bg_eqsys *s, int nd, int eq) {
   }
 }
 
+/* The run's outputs (CSV columns): the plot expressions, else the states
+ * followed by the detectors (docs/simulation.md, "CSV"). */
 static void compile_outputs(bg_eqsys *s) {
   const bg_model *m = s->m;
   int np = m->nplotexpr;
-  s->nout = np ? np : s->nx;
+  s->nout = np ? np : s->nx + m->ndet;
   s->out_name = bg_arena_alloc(&s->arena, (size_t)(s->nout + 1) * sizeof(char *));
   s->out_slot = bg_arena_alloc(&s->arena, (size_t)(s->nout + 1) * sizeof(int));
   for (int k = 0; k < s->nout; k++) {
-    s->out_name[k] = np ? m->plotexpr_text[k] : s->uname[k];
-    s->out_slot[k] = np ? cx(s, m->plotexpr_root[k], -1000000 - k) : s->slot_y + k;
+    if (np) {
+      s->out_name[k] = m->plotexpr_text[k];
+      s->out_slot[k] = cx(s, m->plotexpr_root[k], -1000000 - k);
+    } else if (k < s->nx) {
+      s->out_name[k] = s->uname[k];
+      s->out_slot[k] = s->slot_y + k;
+    } else {
+      int d = k - s->nx, o = 0; /* errors are named by the detector's output */
+      while (o < m->noutput && m->output_det[o] != d) o++;
+      s->out_name[k] = m->det_name[d];
+      s->out_slot[k] = cx(s, m->det_expr[d], -2000000 - o);
+    }
   }
   for (int k = 0; k < s->lin_nh; k++) s->lin_hslot[k] = cx(s, m->output_expr[k], -2000000 - k);
 }

@@ -79,6 +79,22 @@ static void put_instances(bg_strbuf *o, const bg_model *m) {
   end_list(o, m->ninst);
 }
 
+/* Effort and flow detectors (only for a model that has them). */
+static void put_detectors(bg_strbuf *o, const bg_model *m) {
+  if (!m->ndet) return;
+  key(o, "detectors");
+  bg_sb_putc(o, '[');
+  for (int i = 0; i < m->ndet; i++) {
+    item(o, i);
+    bg_sb_puts(o, "{\"name\": ");
+    bg_sb_json_str(o, m->det_name[i]);
+    bg_sb_printf(o, ", \"kind\": \"%s\", \"node\": ", m->det_var[i] == 'e' ? "De" : "Df");
+    bg_sb_json_str(o, m->elem_name[m->det_node[i]]);
+    bg_sb_puts(o, "}");
+  }
+  end_list(o, m->ndet);
+}
+
 /* ---------------------------------------------------------------- sections */
 static void put_bonds(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   key(o, "bonds");
@@ -355,6 +371,7 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   bool_val(o, a->form_parameter_dependent);
   bg_sb_puts(o, ",\n");
   put_instances(o, m);
+  put_detectors(o, m);
   /* what the listing caps left out (lower bounds when a search budget ran out) */
   key(o, "omitted");
   bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d, "

@@ -301,7 +301,8 @@ static bg_flat *make_result(fl_flattener *f) {
     const bg_ast_stmt *s = &f->stmts[i];
     if ((int)s->kind < 0) continue; /* a bond segment joined into another statement */
     r->ast->stmts[r->ast->nstmts++] = *s;
-    if (s->kind == BG_ST_ELEMENT) r->elem_inst[r->nelem++] = f->stmt_inst[i];
+    if (s->kind == BG_ST_ELEMENT && !bg_ast_is_detector(s)) /* a detector is no element */
+      r->elem_inst[r->nelem++] = f->stmt_inst[i];
     if (s->kind != BG_ST_BOND) continue;
     int c = f->slot_chain[i];
     r->bond_segadr[r->nbond] = r->nseg;

@@ -9,11 +9,12 @@
 
 #include "base/strbuf.h"
 #include "lang/flatten_int.h"
+#include "lang/parse.h"
 
 enum { MAX_NUMBER = BG_BOND_NUMBER_MAX, MAX_DEF_DEPTH = 100 };
 
 static const char *const element_kinds[] = {"Se", "Sf", "MSe", "MSf", "C", "I", "R",
-                                            "TF", "MTF", "GY", "MGY"};
+                                            "TF", "MTF", "GY", "MGY", "De", "Df"};
 
 /* ---------------------------------------------------------------- spans */
 static void unknown_submodel(fl_flattener *f, const bg_ast_stmt *s) {
@@ -185,13 +186,14 @@ static void renumber_bond_vars(fl_flattener *f) {
   }
 }
 
-/* M1.K names the param K of instance M1 (not a field K of a node M1). */
+/* M1.K names the param K of instance M1 (not a field K of a node M1); M1.v
+ * likewise its detector v (a name, not a field of an element). */
 static void resolve_qualified_fields(fl_flattener *f) {
   fl_scope names = {0};
   for (int i = 0; i < f->nstmts; i++) {
     const bg_ast_stmt *s = &f->stmts[i];
     if (s->kind == BG_ST_PARAM || s->kind == BG_ST_INPUT || s->kind == BG_ST_STATE ||
-        s->kind == BG_ST_OUTPUT)
+        s->kind == BG_ST_OUTPUT || bg_ast_is_detector(s))
       bg_fl_declare(&names, s->name, 0, i, s->name_loc);
   }
   for (int i = 0; i < f->nfields; i++) {

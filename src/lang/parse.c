@@ -33,7 +33,7 @@ static const char *const keywords[] = {"model", "param", "input", "state", "bond
                                        "simulate", "plot", "layout", "causality",
                                        "output", "linearise"};
 static const char *const kinds[] = {"Se", "Sf", "MSe", "MSf", "C", "I", "R",
-                                    "TF", "MTF", "GY", "MGY", "0", "1"};
+                                    "TF", "MTF", "GY", "MGY", "0", "1", "De", "Df"};
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
 /* ---------------------------------------------------------------- helpers */
@@ -816,4 +816,9 @@ void bg_ast_free(bg_ast *ast) {
   if (!ast) return;
   bg_arena_free(&ast->arena);
   free(ast);
+}
+
+int bg_ast_is_detector(const bg_ast_stmt *s) {
+  return s->kind == BG_ST_ELEMENT && s->kindword &&
+         (!strcmp(s->kindword, "De") || !strcmp(s->kindword, "Df"));
 }

@@ -16,5 +16,8 @@ bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file,
 void bg_ast_free(bg_ast *ast);
 /* "prefix.name" in arena a (just name when prefix is empty): qualified names. */
 const char *bg_ast_join(bg_arena *a, const char *prefix, const char *name);
+/* An effort or flow detector (`De v = n`, `Df i = j`): an element statement
+ * that declares a name, not an element (docs/format.md, "Detectors"). */
+int bg_ast_is_detector(const bg_ast_stmt *s);
 
 #endif

@@ -107,6 +107,10 @@ static int declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, i
   return 0;
 }
 
+int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
+  return declare(b, name, loc, kind, id);
+}
+
 static int common_prefix(const char *a, const char *b) {
   int n = 0;
   while (a[n] && a[n] == b[n]) n++;
@@ -180,7 +184,8 @@ static void declare_all(bg_build *b, int *nparam_decl) {
   bg_model *m = b->m;
   for (int i = 0; i < b->ast->nstmts; i++) {
     const bg_ast_stmt *s = &b->ast->stmts[i];
-    if (s->kind == BG_ST_ELEMENT) declare_element(b, s);
+    if (s->kind == BG_ST_ELEMENT && bg_build_is_detector(s)) bg_build_declare_detector(b, s);
+    else if (s->kind == BG_ST_ELEMENT) declare_element(b, s);
     else if (s->kind == BG_ST_PARAM) {
       if (declare(b, s->name, s->name_loc, NS_PARAM, *nparam_decl) == 0) (*nparam_decl)++;
     } else if (s->kind == BG_ST_INPUT) {
@@ -201,9 +206,14 @@ static void declare_all(bg_build *b, int *nparam_decl) {
 /* ---------------------------------------------------------------- bonds */
 /* The element id of a bond end, or -1 (reported). */
 static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
-  static const char *const what[] = {"an element", "a param", "an input", "a state"};
+  static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
   const ns_entry *n = bg_build_lookup(b, name);
   if (n && n->kind == NS_ELEM) return n->id;
+  if (n && n->kind == NS_DETECTOR) {
+    bg_diag_error(b->dg, loc, "'%s' is a detector (line %d); a detector has no bond: it reads "
+                  "the node named in its statement", name, n->loc.line);
+    return -1;
+  }
   if (n) {
     bg_diag_error(b->dg, loc, "'%s' is %s (line %d); a bond joins elements and junctions",
                   name, what[n->kind], n->loc.line);
@@ -536,6 +546,7 @@ bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, 
   rehash(&b);
   declare_all(&b, &ndecl);
   build_bonds(&b);
+  bg_build_detectors(&b);
   build_params(&b, ndecl, ov, nov);
   build_inputs_states(&b);
   bg_build_elements(&b);

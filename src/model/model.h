@@ -135,12 +135,12 @@ typedef struct bg_xnode {
   X(const char *, plot_xlabel, nplot)                                          \
   X(int, plotexpr_root, nplotexpr)                                             \
   X(const char *, plotexpr_text, nplotexpr) /* as written, for CSV headers */  \
-  /* outputs of the linear analysis (docs/linear.md): `output` statements in  \
-     file order; a detector element adds one too (output_elem >= 0) */        \
+  /* outputs of the linear analysis (docs/linear.md): `output` statements and \
+     detectors in file order (a detector's output_det >= 0) */               \
   X(const char *, output_name, noutput)                                        \
   X(int, output_expr, noutput)      /* root xnode */                           \
   X(const char *, output_desc, noutput) /* nullable */                         \
-  X(int, output_elem, noutput)      /* detector element, or -1 */              \
+  X(int, output_det, noutput)       /* detector id, or -1 */                   \
   X(bg_srcloc, output_loc, noutput)                                            \
   /* inputs named by `linearise inputs = (...)`: a source element id, or       \
      -1 - id of an `input` */                                                  \
@@ -167,7 +167,14 @@ typedef struct bg_xnode {
   X(int, bond_segadr, nbond)                                                   \
   X(int, bond_nseg, nbond)                                                     \
   X(int, seg_inst, nseg)            /* instance id, -1 = the model */          \
-  X(int, seg_num, nseg)             /* the bond's number in that scope */
+  X(int, seg_num, nseg)             /* the bond's number in that scope */         \
+  /* effort and flow detectors (De, Df): no bond, no power; a name for the \
+     effort or flow of a node, usable in expressions, and an output */        \
+  X(const char *, det_name, ndet)                                              \
+  X(int, det_var, ndet)             /* 'e' (De) or 'f' (Df) */                 \
+  X(int, det_node, ndet)            /* element id of the node it reads */      \
+  X(int, det_expr, ndet)            /* root xnode of its value (-1 after an error) */ \
+  X(bg_srcloc, det_loc, ndet)
 
 typedef struct bg_simspec {
   int present;
@@ -205,7 +212,7 @@ typedef struct bg_model {
   bg_linspec linear;
   int noutput, nlininput;
   int nelem, nbondref, nbond, nparam, ninput, nstate, nsignal, nplot, nplotexpr;
-  int ntable, ntabledata, nxnode, ninst, nseg;
+  int ntable, ntabledata, nxnode, ninst, nseg, ndet;
 #define BG_X_DECLARE(type, name, count) type *name;
   BG_MODEL_ARRAYS(BG_X_DECLARE)
 #undef BG_X_DECLARE

@@ -7,7 +7,7 @@
 #include "model/model.h"
 
 /* What a name in the shared namespace is. */
-typedef enum { NS_ELEM, NS_PARAM, NS_INPUT, NS_STATE } ns_kind;
+typedef enum { NS_ELEM, NS_PARAM, NS_INPUT, NS_STATE, NS_DETECTOR } ns_kind;
 
 typedef struct ns_entry {
   const char *name;
@@ -66,6 +66,17 @@ const char *bg_elem_kind_article(int kind);
 /* The version 1 compiler (model.c): bg_model_compile without flattening. */
 bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, int nov,
                                 bg_diags *dg);
+
+/* Declares a name in the shared namespace (model.c); 0 on success. */
+int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id);
+
+/* ---- model_detect.c: effort and flow detectors (De, Df) */
+int bg_build_is_detector(const bg_ast_stmt *s);
+void bg_build_declare_detector(bg_build *b, const bg_ast_stmt *s);
+/* Resolves every detector's node (after the bonds, before any expression). */
+void bg_build_detectors(bg_build *b);
+/* The detector's output of the linear analysis, in statement order. */
+void bg_build_detector_output(bg_build *b, const bg_ast_stmt *s);
 
 /* ---- model_expr.c */
 /* Compiles e into xnodes under the current context; returns the root (a

@@ -126,7 +126,9 @@ static int undefined(bg_build *b, const bg_expr *e) {
   return bad(b, e->loc);
 }
 
-/* name: t | pi | e7 | f7 | own law variable | param | input | state */
+static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc);
+
+/* name: t | pi | e7 | f7 | own law variable | param | input | state | detector */
 static int compile_name(bg_build *b, const bg_expr *e) {
   if (b->law_elem >= 0 && !e->str[1]) {
     int k = own_var(b, e->str[0], e);
@@ -152,6 +154,13 @@ static int compile_name(bg_build *b, const bg_expr *e) {
     if (!check_allowed(b, ALLOW_MODEL, e)) return bad(b, e->loc);
     use_model_var(b, -1, e);
     return ref_node(b, BG_X_STATE, n->id, e->loc);
+  case NS_DETECTOR: { /* its node's effort or flow (docs/format.md, "Detectors") */
+    int el = b->m->det_node[n->id];
+    if (el < 0) return bad(b, e->loc); /* reported with the detector */
+    if (!check_allowed(b, ALLOW_MODEL, e)) return bad(b, e->loc);
+    use_model_var(b, el, e);
+    return field_node(b, el, b->m->det_var[n->id] == 'e' ? "e" : "f", e->loc);
+  }
   default:
     bg_diag_error(b->dg, e->loc, "'%s' is %s, not a value; use one of its variables "
                   "(e.g. %s.%s)", e->str, bg_elem_kind_article(b->m->elem_kind[n->id]), e->str,
@@ -195,7 +204,7 @@ static int compile_field(bg_build *b, const bg_expr *e) {
   const ns_entry *n = bg_build_lookup(b, e->str);
   if (!n) return undefined(b, e);
   if (n->kind != NS_ELEM) {
-    static const char *const what[] = {"an element", "a param", "an input", "a state"};
+    static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
     bg_diag_error(b->dg, e->loc, "'%s' is %s and has no fields", e->str, what[n->kind]);
     return bad(b, e->loc);
   }

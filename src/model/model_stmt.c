@@ -390,7 +390,7 @@ static void st_model(bg_build *b, const bg_ast_stmt *s) {
 static void st_output(bg_build *b, const bg_ast_stmt *s) {
   bg_model *m = b->m;
   const ns_entry *n = bg_build_lookup(b, s->name);
-  static const char *const what[] = {"an element", "a param", "an input", "a state"};
+  static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
   if (n) {
     bg_diag_error(b->dg, s->name_loc, "'%s' is already %s (line %d); an output needs a name of "
                   "its own", s->name, what[n->kind], n->loc.line);
@@ -410,7 +410,7 @@ static void st_output(bg_build *b, const bg_ast_stmt *s) {
   m->output_name[k] = bg_build_strdup(b, s->name);
   m->output_expr[k] = root;
   m->output_desc[k] = bg_build_strdup(b, s->text);
-  m->output_elem[k] = -1;
+  m->output_det[k] = -1;
   m->output_loc[k] = s->name_loc;
 }
 
@@ -476,6 +476,7 @@ void bg_build_statements(bg_build *b) {
     case BG_ST_LAYOUT: if (once(b, s, &layout, "layout")) st_layout(b, s); break;
     case BG_ST_PLOT: st_plot(b, s); break;
     case BG_ST_OUTPUT: st_output(b, s); break;
+    case BG_ST_ELEMENT: if (bg_build_is_detector(s)) bg_build_detector_output(b, s); break;
     case BG_ST_LINEARISE: if (once(b, s, &lin, "linearise")) st_linearise(b, s); break;
     case BG_ST_STATE: st_state(b, s); break;
     case BG_ST_BOND: st_bond(b, s, bond++); break;

@@ -287,7 +287,36 @@ static void test_symbolic(void) {
   done();
 }
 
+/* Detectors are outputs (docs/linear.md): with the output statement, in file
+ * order; the RLC's vC/U and i/U as from `output vC = C1.e, i = L1.f`. */
+static void test_detectors(void) {
+  const char *m = "param V = 1, R0 = 2, L0 = 0.5, C0 = 0.1\n"
+                  "Se U = V\n1 j\nR R1 = R0\nI L1 = L0\nC C1 = C0\n"
+                  "bond U -> j\nbond j -> R1\nbond j -> L1\nbond j -> C1\n"
+                  "De vC = C1\noutput vR = R1.e\nDf i = j\n";
+  OK(lin(m, 0) == 0);
+  INT_EQ(L.ny, 3);
+  INT_EQ(L.outputs_are_states, 0);
+  STR_EQ(L.yname[0], "vC");
+  STR_EQ(L.yname[1], "vR");
+  STR_EQ(L.yname[2], "i");
+  INT_EQ(L.n, 2); /* the detectors add no state */
+  tf_is(0, 0, (double[]){20}, 1, (double[]){1, 4, 20}, 3, 1e-12);
+  tf_is(1, 0, (double[]){4, 0}, 2, (double[]){1, 4, 20}, 3, 1e-12); /* R0 * i */
+  tf_is(2, 0, (double[]){2, 0}, 2, (double[]){1, 4, 20}, 3, 1e-12);
+  DBL_NEAR(L.tf[0].dc_gain, 1, 1e-12);
+  done();
+  /* detectors alone: they are the outputs, not the states */
+  OK(lin("Se U = 1\n1 j\nR R1 = 2\nI L1 = 0.5\nC C1 = 0.1\nbond U -> j\nbond j -> R1\n"
+         "bond j -> L1\nbond j -> C1\nDe vC = C1\n", 0) == 0);
+  INT_EQ(L.ny, 1);
+  STR_EQ(L.yname[0], "vC");
+  tf_is(0, 0, (double[]){20}, 1, (double[]){1, 4, 20}, 3, 1e-12);
+  done();
+}
+
 int main(void) {
+  test_detectors();
   test_symbolic();
   test_rlc_time();
   test_rlc();
