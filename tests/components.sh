@@ -114,6 +114,18 @@ grep -qx 'outputs: vC, i' "$TMP/det2.lin" || { echo "FAIL: linear outputs"; fail
 grep -A1 '^vC/U = (20) / (s^2 + 6.5\*s + 30)$' "$TMP/det2.lin" | grep -q 'DC gain: 0.666667' || { echo "FAIL: vC/U"; fail=1; }
 grep -A1 '^i/U = (2\*s + 5) / (s^2 + 6.5\*s + 30)$' "$TMP/det2.lin" | grep -q 'DC gain: 0.166667' || { echo "FAIL: i/U"; fail=1; }
 
+# --collapse: an unknown instance is an error with a suggestion and writes nothing;
+# `all` draws one box per instance (DOT nodes with bg_collapsed=1) and the model's own bonds.
+rm -f "$TMP/c.svg"
+"$BGDRAW" examples/components/motor_drive_lib.bg --collapse S3 -o "$TMP/c.svg" 2>"$TMP/c.err"
+rc=$?
+[ "$rc" -eq 2 ] && [ ! -e "$TMP/c.svg" ] && grep -qF -- "--collapse S3: no instance 'S3' (did you mean 'S1'?)" "$TMP/c.err" \
+  || { echo "FAIL: --collapse S3 (exit $rc): $(cat "$TMP/c.err")"; fail=1; }
+"$BGDRAW" examples/components/motor_drive_lib.bg --collapse all -T dot -o "$TMP/c.dot" || fail=1
+[ "$(grep -c 'bg_collapsed=1' "$TMP/c.dot")" -eq 4 ] && [ "$(grep -c 'bg_bond=' "$TMP/c.dot")" -eq 7 ] \
+  || { echo "FAIL: --collapse all DOT"; fail=1; }
+"$BGDRAW" examples/components/motor_drive_lib.bg --collapse M --collapse G -o "$TMP/c.png" || fail=1
+
 # A version 1 model's JSON has no component keys.
 "$BGDRAW" examples/rlc.bg -o "$TMP/v1.json" || fail=1
 if grep -q '"origin"\|"instances"\|"instance"' "$TMP/v1.json"; then echo "FAIL: v1 JSON has component keys"; fail=1; fi

@@ -58,6 +58,7 @@ static void measure_nodes(bg_diagram *d) {
   for (int i = 0; i < d->nnode; i++) d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] >= 0) d->nlabel[d->state_node[s]] = state_markup(d, s);
+  bg_parts_labels(d);
   for (int i = 0; i < d->nnode; i++) {
     double w, h;
     bg_text_measure(d->st.font, d->st.font_size, d->nlabel[i], &w, &h);
@@ -66,6 +67,10 @@ static void measure_nodes(bg_diagram *d) {
     d->nw[i] = w + 2 * d->st.node_pad;
     d->nh[i] = 0.8 * h + 2 * d->st.node_pad;
   }
+  /* a collapsed instance's box: room around its label for the bonds and
+   * their strokes on every side */
+  for (int k = 0; k < m->ninst; k++)
+    if (d->inst_box[k] >= 0) d->nw[d->inst_box[k]] += 16, d->nh[d->inst_box[k]] += 12;
 }
 
 /* ---------------------------------------------------------------- layout */
@@ -88,10 +93,14 @@ static const char *choose_engine(const bg_diagram *d) {
  * the count; *tail and *head are allocated. */
 static int layout_edges(const bg_diagram *d, int **tail, int **head) {
   const bg_model *m = d->m;
-  int cap = m->nbond + d->nnode + m->nsignal + 1, n = 0;
+  int cap = m->nbond + d->nnode + m->nsignal + m->ndet + 1, n = 0;
   for (int s = 0; s < m->nstate; s++) cap += d->state_node[s] >= 0 ? 64 : 0;
   int *t = bg_xcalloc((size_t)cap, sizeof *t), *h = bg_xcalloc((size_t)cap, sizeof *h);
+  /* bonds first (edge b is bond b; a bond inside a collapsed box joins the
+   * box to itself and is left out by run_layout) */
   for (int b = 0; b < m->nbond; b++) t[n] = m->bond_tail[b], h[n++] = m->bond_head[b];
+  for (int k = 0; k < m->ndet; k++)
+    if (d->det_draw[k] >= 0) t[n] = bg_detector_anchor(d, k), h[n++] = d->det_draw[k];
   for (int i = 0; d->a && i < d->a->nlag; i++)
     if (d->lag_node[i] >= 0) t[n] = d->lag_node[i], h[n++] = d->a->lag_junction[i];
   for (int s = 0; s < m->nstate; s++) {
@@ -103,6 +112,7 @@ static int layout_edges(const bg_diagram *d, int **tail, int **head) {
     int s = bg_signal_state(m, i);
     if (s >= 0 && d->state_node[s] >= 0) t[n] = d->state_node[s], h[n++] = m->signal_to[i];
   }
+  for (int i = 0; i < n; i++) t[i] = d->node_of[t[i]], h[i] = d->node_of[h[i]];
   *tail = t, *head = h;
   return n;
 }
@@ -160,12 +170,17 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
     cluster = bg_xcalloc((size_t)d->nnode + 1, sizeof *cluster);
     label_h = bg_xcalloc((size_t)m->ninst + 1, sizeof *label_h);
     for (int i = 0; i < d->nnode; i++) cluster[i] = i < m->nelem ? m->elem_inst[i] : -1;
+    for (int k = 0; k < m->ninst; k++) /* a box sits in its parent's frame */
+      if (d->inst_box[k] >= 0) cluster[d->inst_box[k]] = m->inst_parent[k];
+    for (int k = 0; k < m->ndet; k++) /* a detector in the frame of the node it reads */
+      if (d->det_draw[k] >= 0)
+        cluster[d->det_draw[k]] = bg_detector_anchor(d, k) < m->nelem ? m->elem_inst[m->det_node[k]] : -1;
     for (int k = 0; k < m->ninst; k++) label_h[k] = bg_frame_label_height(d);
     in.ncluster = m->ninst, in.cluster = cluster, in.cluster_parent = m->inst_parent;
     in.cluster_label_h = label_h;
   }
   char err[256];
-  int rc = bg_layout_run(&in, &d->lay, err, sizeof err);
+  int rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h);
@@ -175,6 +190,7 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
   const char *rd = m->layout.rankdir;
   if (!strcmp(in.engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")))
     bg_grid_place(d);
+  bg_parts_spread(d);
   return 0;
 }
 
@@ -331,17 +347,19 @@ static void draw_bond_label(bg_diagram *d, int b) {
 static void draw_bonds(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int b = 0; b < m->nbond; b++) {
+    if (d->bond_hidden[b]) continue; /* inside a collapsed box */
     draw_bond(d, b);
     bg_obstacle_item(d, d->scene.nitem - 1);
   }
   if (d->a && (d->show & BG_SHOW_STROKES))
     for (int b = 0; b < m->nbond; b++)
-      if (d->a->bond_stroke[b] != BG_STROKE_NONE) draw_stroke(d, b);
+      if (d->a->bond_stroke[b] != BG_STROKE_NONE && !d->bond_hidden[b]) draw_stroke(d, b);
 }
 
 static void draw_numbers(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int b = 0; b < m->nbond; b++) {
+    if (d->bond_hidden[b]) continue;
     if (d->show & (BG_SHOW_NUMBERS | BG_SHOW_VARIABLES)) draw_number(d, b);
     if (d->show & BG_SHOW_LABELS) draw_bond_label(d, b);
   }
@@ -351,6 +369,7 @@ static void draw_numbers(bg_diagram *d) {
 static void draw_nodes(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int e = 0; e < m->nelem; e++) {
+    if (!bg_node_shown(d, e)) continue; /* inside a collapsed box */
     bg_rgba c = parse_hex(m->elem_color ? m->elem_color[e] : NULL, d->st.fg);
     char role[160];
     snprintf(role, sizeof role, "node %s", m->elem_name[e]);
@@ -411,6 +430,7 @@ static void draw_lagrange(bg_diagram *d) {
 static void hot_bond(bg_diagram *d, int b) {
   d->hot_bond[b] = 1;
   d->hot_elem[d->m->bond_tail[b]] = d->hot_elem[d->m->bond_head[b]] = 1;
+  d->hot_elem[d->node_of[d->m->bond_tail[b]]] = d->hot_elem[d->node_of[d->m->bond_head[b]]] = 1;
 }
 
 static int count_of(const bg_analysis *a, int kind) {
@@ -452,7 +472,7 @@ static void mark_hot(bg_diagram *d) {
 }
 
 /* ---------------------------------------------------------------- build */
-static void alloc_nodes(bg_diagram *d) {
+static int alloc_nodes(bg_diagram *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int nlag = d->a ? d->a->nlag : 0;
   d->lag_node = bg_arena_alloc(&d->arena, sizeof(int) * (size_t)(nlag + 1));
@@ -465,11 +485,13 @@ static void alloc_nodes(bg_diagram *d) {
     int s = bg_signal_state(m, i);
     if (s >= 0 && d->state_node[s] < 0) d->state_node[s] = d->nnode++;
   }
+  if (bg_parts_nodes(d, dg) != 0) return -1;
   size_t n = (size_t)d->nnode + 1;
   d->nw = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nh = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nlabel = bg_arena_alloc(&d->arena, n * sizeof(char *));
   d->bg = bg_arena_alloc(&d->arena, ((size_t)m->nbond + 1) * sizeof *d->bg);
+  return 0;
 }
 
 /* Moves everything drawn by v. */
@@ -541,6 +563,7 @@ static void draw_all(bg_diagram *d) {
   for (int i = 0; i < d->npoly; i++) bg_obstacle_owned(d, d->poly[i], i + 1);
   draw_numbers(d);
   draw_nodes(d);
+  bg_draw_parts(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
   drawing_fence(d);
   bg_place_layer_labels(d);
@@ -554,7 +577,7 @@ static void draw_all(bg_diagram *d) {
 
 /* The layout stage: nodes measured and laid out, where the bonds run. */
 static int lay_out(bg_diagram *d, bg_diags *dg) {
-  alloc_nodes(d);
+  if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);
   if (run_layout(d, dg) != 0) return -1;
   bg_geom_bonds(d);
@@ -604,6 +627,12 @@ static void copy_layout(bg_diagram *d, const bg_diagram *src) {
   d->nnode = src->nnode;
   d->lag_node = arena_dup(&d->arena, src->lag_node, sizeof(int) * (size_t)(nlag + 1));
   d->state_node = arena_dup(&d->arena, src->state_node, sizeof(int) * ((size_t)m->nstate + 1));
+  d->det_draw = arena_dup(&d->arena, src->det_draw, sizeof(int) * ((size_t)m->ndet + 1));
+  d->inst_box = arena_dup(&d->arena, src->inst_box, sizeof(int) * ((size_t)m->ninst + 1));
+  d->node_of = arena_dup(&d->arena, src->node_of, sizeof(int) * nn);
+  d->box_inst = arena_dup(&d->arena, src->box_inst, sizeof(int) * nn);
+  d->bond_hidden = arena_dup(&d->arena, src->bond_hidden, nb);
+  d->ncollapsed = src->ncollapsed;
   d->nw = arena_dup(&d->arena, src->nw, nn * sizeof(double));
   d->nh = arena_dup(&d->arena, src->nh, nn * sizeof(double));
   d->nlabel = bg_arena_alloc(&d->arena, nn * sizeof(char *));
@@ -623,6 +652,7 @@ bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highligh
   d->show = ((show ? show : BG_SHOW_DEFAULT) & ~fixed) | (src->show & fixed);
   /* the names given to bg_diagram_build are not needed any more (and may be gone) */
   d->o.style = d->o.style_dir = d->o.layout = NULL;
+  d->o.collapse = NULL, d->o.ncollapse = 0;
   d->o.show = d->show;
   d->o.highlight_kind = highlight_kind, d->o.highlight_index = highlight_index;
   d->keep_page = 1;

@@ -26,9 +26,27 @@ static int node_state(const bg_diagram *d, int n) {
   return -1;
 }
 
+/* The instance whose box node n is, else -1 (and *det: the detector node n draws, or -1). */
+static int node_part(const bg_diagram *d, int n, int *det) {
+  *det = -1;
+  if (d->box_inst[n] >= 0) return d->box_inst[n];
+  for (int k = 0; k < d->m->ndet; k++)
+    if (d->det_draw[k] == n) *det = k;
+  return -1;
+}
+
 static void node_id(const bg_diagram *d, int n, bg_strbuf *out) {
   if (n < d->m->nelem) {
     dot_str(out, d->m->elem_name[n]);
+    return;
+  }
+  int det, box = node_part(d, n, &det);
+  if (box >= 0 || det >= 0) { /* a collapsed instance by its name, a detector "De:vC" */
+    bg_strbuf id = {0};
+    if (box >= 0) bg_sb_puts(&id, d->m->inst_name[box]);
+    else bg_sb_printf(&id, "%s:%s", d->m->det_var[det] == 'e' ? "De" : "Df", d->m->det_name[det]);
+    dot_str(out, bg_sb_str(&id));
+    bg_sb_free(&id);
     return;
   }
   int s = node_state(d, n);
@@ -59,12 +77,20 @@ static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
   bg_sb_puts(out, "  ");
   node_id(d, n, out);
   bg_sb_puts(out, " [label=");
+  int det = -1, box = n >= m->nelem ? node_part(d, n, &det) : -1;
   if (n < m->nelem && bg_elem_is_junction(m->elem_kind[n])) dot_str(out, bg_elem_display_kind(m, n));
   else if (n < m->nelem) {
     bg_strbuf l = {0};
     bg_sb_printf(&l, "%s : %s", bg_elem_display_kind(m, n), m->elem_name[n]);
     dot_str(out, bg_sb_str(&l));
     bg_sb_free(&l);
+  } else if (box >= 0 || det >= 0) {
+    bg_strbuf l = {0};
+    if (box >= 0) bg_sb_printf(&l, "%s : %s", m->inst_name[box], m->inst_def[box]);
+    else bg_sb_printf(&l, "%s : %s", m->det_var[det] == 'e' ? "De" : "Df", m->det_name[det]);
+    dot_str(out, bg_sb_str(&l));
+    bg_sb_free(&l);
+    if (box >= 0) bg_sb_puts(out, ", shape=box, bg_collapsed=1");
   } else if (node_state(d, n) >= 0) {
     bg_strbuf l = {0};
     bg_sb_printf(&l, "\u222b : %s", m->state_name[node_state(d, n)]);
@@ -132,9 +158,9 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
   const bg_model *m = d->m;
   int stroke = d->a ? d->a->bond_stroke[b] : BG_STROKE_NONE;
   bg_sb_puts(out, "  ");
-  node_id(d, m->bond_tail[b], out);
+  node_id(d, d->node_of[m->bond_tail[b]], out);
   bg_sb_puts(out, " -> ");
-  node_id(d, m->bond_head[b], out);
+  node_id(d, d->node_of[m->bond_head[b]], out);
   bg_sb_printf(out, " [label=\"%d\", bg_bond=%d, arrowhead=%s", m->bond_num[b], m->bond_num[b],
                stroke == BG_STROKE_HEAD ? "teelvee" : "lvee");
   if (stroke == BG_STROKE_TAIL) bg_sb_puts(out, ", dir=both, arrowtail=tee");
@@ -158,14 +184,24 @@ static void write_extras(const bg_diagram *d, bg_strbuf *out) {
       bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_state_input=1];\n");
     }
   }
+  for (int k = 0; k < m->ndet; k++) {
+    if (d->det_draw[k] < 0) continue;
+    bg_sb_puts(out, "  ");
+    node_id(d, bg_detector_anchor(d, k), out);
+    bg_sb_puts(out, " -> ");
+    node_id(d, d->det_draw[k], out);
+    bg_sb_puts(out, " [arrowhead=normal, bg_detector=1];\n"); /* an activated bond */
+  }
   for (int i = 0; i < m->nsignal; i++) {
-    int from = m->signal_from[i], s = bg_signal_state(m, i);
+    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->node_of[m->signal_to[i]];
     if (from < 0 && s >= 0) from = d->state_node[s];
     if (from < 0) continue; /* a bond variable: no node to start from */
+    from = d->node_of[from];
+    if (from == to && to != m->signal_to[i]) continue; /* inside a collapsed instance */
     bg_sb_puts(out, "  ");
     node_id(d, from, out);
     bg_sb_puts(out, " -> ");
-    node_id(d, m->signal_to[i], out);
+    node_id(d, to, out);
     bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_signal=");
     dot_str(out, m->signal_var[i] ? m->signal_var[i] : "");
     bg_sb_puts(out, "];\n");
@@ -207,8 +243,10 @@ void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out) {
                d->st.font, d->st.font_size);
   bg_sb_printf(out, "  edge [fontsize=%.1f];\n", d->st.font_size * d->st.number_scale);
   write_layers(d, out);
-  for (int n = 0; n < d->nnode; n++) write_node(d, n, out);
-  for (int b = 0; b < m->nbond; b++) write_bond(d, b, out);
+  for (int n = 0; n < d->nnode; n++)
+    if (bg_node_shown(d, n)) write_node(d, n, out);
+  for (int b = 0; b < m->nbond; b++)
+    if (!d->bond_hidden[b]) write_bond(d, b, out);
   write_extras(d, out);
   bg_sb_puts(out, "}\n");
 }

@@ -17,18 +17,25 @@ double bg_frame_label_height(const bg_diagram *d) { return 1.3 * 0.85 * d->st.fo
 
 typedef struct box { double x0, y0, x1, y1; } box;
 
+static void grow(box *b, int k, const bg_diagram *d, int n) {
+  if (k < 0) return;
+  b[k].x0 = fmin(b[k].x0, d->nx[n] - d->nw[n] / 2), b[k].x1 = fmax(b[k].x1, d->nx[n] + d->nw[n] / 2);
+  b[k].y0 = fmin(b[k].y0, d->ny[n] - d->nh[n] / 2), b[k].y1 = fmax(b[k].y1, d->ny[n] + d->nh[n] / 2);
+}
+
 /* Boxes of every instance: its nodes, then (children after parents in the
  * model, so walking backwards) its instances' boxes, padded. */
 static box *instance_boxes(const bg_diagram *d) {
   const bg_model *m = d->m;
   box *b = bg_xmalloc((size_t)(m->ninst + 1) * sizeof *b);
   for (int k = 0; k < m->ninst; k++) b[k] = (box){INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (int e = 0; e < m->nelem; e++) {
-    int k = m->elem_inst[e];
-    if (k < 0) continue;
-    b[k].x0 = fmin(b[k].x0, d->nx[e] - d->nw[e] / 2), b[k].x1 = fmax(b[k].x1, d->nx[e] + d->nw[e] / 2);
-    b[k].y0 = fmin(b[k].y0, d->ny[e] - d->nh[e] / 2), b[k].y1 = fmax(b[k].y1, d->ny[e] + d->nh[e] / 2);
-  }
+  /* an element, a collapsed child's box, a detector: in its instance's frame */
+  for (int e = 0; e < m->nelem; e++)
+    if (bg_node_shown(d, e)) grow(&b[0], m->elem_inst[e], d, e);
+  for (int i = 0; i < m->ninst; i++)
+    if (d->inst_box[i] >= 0) grow(&b[0], m->inst_parent[i], d, d->inst_box[i]);
+  for (int i = 0; i < m->ndet; i++)
+    if (d->det_draw[i] >= 0) grow(&b[0], m->elem_inst[m->det_node[i]], d, d->det_draw[i]);
   double lh = bg_frame_label_height(d);
   for (int k = m->ninst - 1; k >= 0; k--) {
     if (!(b[k].x0 <= b[k].x1)) continue; /* no element at all */
@@ -48,7 +55,7 @@ void bg_draw_frames(bg_diagram *d) {
   box *b = instance_boxes(d);
   double size = 0.85 * d->st.font_size;
   for (int k = 0; k < m->ninst; k++) {
-    if (!(b[k].x0 <= b[k].x1)) continue;
+    if (!(b[k].x0 <= b[k].x1)) continue; /* empty, or collapsed (drawn as a box) */
     bg_strbuf t = {0};
     bg_markup_escape(&t, m->inst_name[k]);
     bg_sb_puts(&t, " : ");

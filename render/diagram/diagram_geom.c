@@ -30,8 +30,8 @@ static bg_vec node_centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d-
  * its head node's centre (i = 0 .. bendn + 1). */
 static bg_vec route_pt(const bg_diagram *d, int b, int i) {
   const bg_bond_geom *g = &d->bg[b];
-  if (i == 0) return node_centre(d, d->m->bond_tail[b]);
-  if (i > g->bendn) return node_centre(d, d->m->bond_head[b]);
+  if (i == 0) return node_centre(d, d->node_of[d->m->bond_tail[b]]);
+  if (i > g->bendn) return node_centre(d, d->node_of[d->m->bond_head[b]]);
   return bg_v(d->lay.bendx[g->bendadr + i - 1], d->lay.bendy[g->bendadr + i - 1]);
 }
 
@@ -42,7 +42,8 @@ bg_vec bg_node_end(const bg_diagram *d, int n, bg_vec dir) {
 }
 
 static void route_geom(const bg_diagram *d, int b, bg_bond_geom *g) {
-  int t = d->m->bond_tail[b], h = d->m->bond_head[b], n = g->bendn;
+  /* a bond through a port of a collapsed instance ends on its box */
+  int t = d->node_of[d->m->bond_tail[b]], h = d->node_of[d->m->bond_head[b]], n = g->bendn;
   g->tdir = bg_vunit(bg_vsub(route_pt(d, b, 1), route_pt(d, b, 0)));
   g->hdir = bg_vunit(bg_vsub(route_pt(d, b, n + 1), route_pt(d, b, n)));
   g->tail = bg_node_end(d, t, g->tdir);
@@ -97,7 +98,7 @@ static void junction_radii(bg_diagram *d) {
   d->jr = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(double));
   double w = d->st.line_width;
   for (int j = 0; j < m->nelem; j++) {
-    if (!bg_elem_is_junction(m->elem_kind[j])) continue;
+    if (!bg_elem_is_junction(m->elem_kind[j]) || !bg_node_shown(d, j)) continue;
     double base = 0.5 * fmax(d->nw[j], d->nh[j]), amin = BG_PI / 2;
     int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
     for (int i = 0; i < nb; i++)

@@ -82,16 +82,19 @@ static void build_edges(grid *g) {
   int nlag = a ? a->nlag : 0;
   g->et = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
   g->eh = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
-  for (int b = 0; b < m->nbond; b++) g->et[g->ne] = m->bond_tail[b], g->eh[g->ne++] = m->bond_head[b];
+  const int *of = g->d->node_of; /* a collapsed instance's elements: its box */
+  for (int b = 0; b < m->nbond; b++) g->et[g->ne] = of[m->bond_tail[b]], g->eh[g->ne++] = of[m->bond_head[b]];
   for (int i = 0; i < nlag; i++)
     if (g->d->lag_node[i] >= 0) g->et[g->ne] = g->d->lag_node[i], g->eh[g->ne++] = a->lag_junction[i];
   g->adr = bg_xcalloc((size_t)g->n + 2, sizeof(int));
   g->adj = bg_xcalloc(2 * (size_t)g->ne + 1, sizeof(int));
   g->deg = bg_xcalloc((size_t)g->n + 1, sizeof(int));
-  for (int e = 0; e < g->ne; e++) g->deg[g->et[e]]++, g->deg[g->eh[e]]++;
+  for (int e = 0; e < g->ne; e++)
+    if (g->et[e] != g->eh[e]) g->deg[g->et[e]]++, g->deg[g->eh[e]]++; /* not inside a box */
   for (int v = 0; v < g->n; v++) g->adr[v + 1] = g->adr[v] + g->deg[v];
   int *fill = bg_xcalloc((size_t)g->n + 1, sizeof(int));
   for (int e = 0; e < g->ne; e++) {
+    if (g->et[e] == g->eh[e]) continue;
     g->adj[g->adr[g->et[e]] + fill[g->et[e]]++] = e;
     g->adj[g->adr[g->eh[e]] + fill[g->eh[e]]++] = e;
   }
@@ -402,6 +405,8 @@ static void place_leaves(grid *g) {
 static int float_anchor(const grid *g, int v) {
   const bg_diagram *d = g->d;
   const bg_model *m = d->m;
+  for (int k = 0; k < m->ndet; k++) /* a detector beside the node it reads */
+    if (d->det_draw[k] == v && g->placed[bg_detector_anchor(d, k)]) return bg_detector_anchor(d, k);
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] == v)
       for (int i = 0; i < m->nsignal; i++)
@@ -438,7 +443,7 @@ static double *line_centres(const grid *g, const int *cell, const double *size, 
   int n = hi - lo + 1;
   double *w = bg_xcalloc((size_t)n + 1, sizeof(double)), *c = bg_xcalloc((size_t)n + 1, sizeof(double));
   for (int v = 0; v < g->n; v++)
-    if (size[v] > w[cell[v] - lo]) w[cell[v] - lo] = size[v];
+    if (bg_node_shown(g->d, v) && size[v] > w[cell[v] - lo]) w[cell[v] - lo] = size[v];
   c[0] = w[0] / 2;
   for (int k = 1; k < n; k++) c[k] = c[k - 1] + w[k - 1] / 2 + gap + w[k] / 2;
   free(w);
@@ -447,7 +452,8 @@ static double *line_centres(const grid *g, const int *cell, const double *size, 
 
 static void range(const grid *g, const int *cell, int *lo, int *hi) {
   *lo = 1 << 30, *hi = -(1 << 30);
-  for (int v = 0; v < g->n; v++) *lo = cell[v] < *lo ? cell[v] : *lo, *hi = cell[v] > *hi ? cell[v] : *hi;
+  for (int v = 0; v < g->n; v++)
+    if (bg_node_shown(g->d, v)) *lo = cell[v] < *lo ? cell[v] : *lo, *hi = cell[v] > *hi ? cell[v] : *hi;
   for (int e = 0; e < g->ne; e++)
     for (int k = 0; k < g->bent[e]; k++) {
       int c = cell == g->gx ? g->corner[e][2 * k] : g->corner[e][2 * k + 1];
@@ -483,10 +489,12 @@ static void to_points(grid *g) {
   double band = layer_band(g);
   double *cx = line_centres(g, g->gx, d->nw, x0, x1, d->st.rank_sep / 2 + band);
   double *cy = line_centres(g, g->gy, d->nh, y0, y1, d->st.node_sep * 0.75 + band);
-  for (int v = 0; v < g->n; v++) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
+  for (int v = 0; v < g->n; v++)
+    if (bg_node_shown(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
   bg_layout *l = &d->lay;
   l->width = l->height = 0;
   for (int v = 0; v < g->n; v++) {
+    if (!bg_node_shown(d, v)) continue; /* placed with its box afterwards */
     l->width = fmax(l->width, d->nx[v] + d->nw[v] / 2);
     l->height = fmax(l->height, d->ny[v] + d->nh[v] / 2);
   }
@@ -533,6 +541,7 @@ void bg_grid_place(bg_diagram *d) {
   grid g;
   grid_alloc(&g, d);
   classify(&g);
+  for (int v = 0; v < g.n; v++) g.placed[v] = !bg_node_shown(d, v); /* inside a box */
   int nh, *h = order_hubs(&g, &nh);
   assign_rows(&g, h, nh);
   stack_components(&g, h, nh);

@@ -38,6 +38,14 @@ struct bg_diagram {
   int *lag_node;             /* per Lagrange source: its node, or -1 (a split bond) */
   int *state_node;           /* per user state: its integrator node (drawn when a signal
                                 comes from the state and signals are shown), or -1 */
+  int *det_draw;             /* per detector: its node (De : vC), or -1 (inside a box) */
+  int *inst_box;             /* per instance: its word-bond-graph box node when it is drawn
+                                collapsed (--collapse; the outermost collapsed one), or -1 */
+  int *node_of;              /* per node: the node it is drawn as (a collapsed instance's
+                                elements: its box), itself otherwise */
+  unsigned char *bond_hidden; /* per bond: inside a collapsed box (not drawn) */
+  int *box_inst;             /* per node: the instance whose box it is, or -1 */
+  int ncollapsed;            /* boxes drawn */
   bg_layout lay;
   double *splx, *sply;       /* spline points moved onto the page */
   bg_bond_geom *bg;          /* per bond */
@@ -148,6 +156,23 @@ void bg_draw_conflicts(bg_diagram *d);
 /* The direction (of 8) around node n farthest in angle from its bonds. */
 bg_vec bg_free_direction(const bg_diagram *d, int n);
 void bg_draw_legend(bg_diagram *d);
+/* detectors and collapsed instances (diagram_parts.c) */
+/* Validates --collapse (unknown names: an error with a suggestion) and
+ * appends the detector and box nodes from d->nnode on. */
+int bg_parts_nodes(bg_diagram *d, bg_diags *dg);
+/* Labels of detector and box nodes (markup, in the arena). */
+void bg_parts_labels(bg_diagram *d);
+/* Whether node n is drawn (not an element hidden in a collapsed box). */
+int bg_node_shown(const bg_diagram *d, int n);
+/* After the layout: hidden nodes take their box's centre and size. */
+void bg_parts_spread(bg_diagram *d);
+/* The node a detector's node is anchored to in the layout (its det_node as drawn). */
+int bg_detector_anchor(const bg_diagram *d, int k);
+/* bg_layout_run with each collapsed instance laid out as its box alone. */
+int bg_parts_layout(const bg_diagram *d, const bg_layout_in *in, bg_layout *out, char *err,
+                    size_t errn);
+/* Boxes and detectors with their activated bonds. */
+void bg_draw_parts(bg_diagram *d);
 /* instance frames (diagram_frames.c): one labelled box per submodel instance */
 double bg_frame_label_height(const bg_diagram *d);
 void bg_draw_frames(bg_diagram *d);

@@ -25,6 +25,8 @@ typedef struct seg {
 typedef struct joint {
   int kind;
   bg_vec p0, p1, c1, c2;
+  int ncorner;      /* kind 3: around a collapsed instance's box, through these corners */
+  bg_vec corner[6];
 } joint;
 
 static bg_vec centre(const bg_diagram *d, int n) {
@@ -41,7 +43,7 @@ static seg *split_bends(const bg_diagram *d, seg *s, int *n) {
   int m = 0;
   for (int k = 0; k < *n; k++) {
     const bg_bond_geom *g = &d->bg[s[k].b];
-    int nb = g->bendn, fwd = s[k].u == d->m->bond_tail[s[k].b], prev = s[k].u;
+    int nb = g->bendn, fwd = s[k].u == d->node_of[d->m->bond_tail[s[k].b]], prev = s[k].u;
     for (int i = 0; i < nb; i++) {
       int c = d->nnode + g->bendadr + (fwd ? i : nb - 1 - i);
       out[m] = s[k], out[m].fwd = fwd, out[m].u = prev, out[m].v = c, prev = c, m++;
@@ -51,6 +53,18 @@ static seg *split_bends(const bg_diagram *d, seg *s, int *n) {
   free(s);
   *n = m;
   return out;
+}
+
+/* The segments as drawn: ends at the nodes they are drawn as (a collapsed
+ * instance's box), the bonds inside a box left out, so a path or loop that
+ * enters a collapsed instance ends at its box (docs/drawing.md). */
+static int visible_segs(const bg_diagram *d, seg *s, int n) {
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    if (d->bond_hidden[s[k].b]) continue;
+    s[m] = s[k], s[m].u = d->node_of[s[k].u], s[m].v = d->node_of[s[k].v], m++;
+  }
+  return m;
 }
 
 static int other_end(const bg_model *m, int b, int e) {
@@ -83,7 +97,7 @@ static joint turn(const bg_diagram *d, const seg *s) {
   bg_vec e = bg_box_exit(centre(d, v), d->nw[v] / 2, d->nh[v] / 2, centre(d, s->u));
   bg_vec t = bg_vsub(e, bg_vscale(s->dir, s->off + 1));
   bg_vec k = bg_vscale(s->dir, 4.0 / 3 * s->off);
-  joint j = {2, bg_vadd(t, bg_vscale(s->n, s->off)), bg_vsub(t, bg_vscale(s->n, s->off)), {0, 0}, {0, 0}};
+  joint j = {2, bg_vadd(t, bg_vscale(s->n, s->off)), bg_vsub(t, bg_vscale(s->n, s->off)), {0, 0}, {0, 0}, 0, {{0, 0}}};
   j.c1 = bg_vadd(j.p0, k), j.c2 = bg_vadd(j.p1, k);
   return j;
 }
@@ -101,12 +115,53 @@ static bg_vec beside_node(const bg_diagram *d, const seg *s, int v, int other) {
  * line beside the modulating signal, or, back along the same bond (an
  * element modulated by its own output), a curve bulging further out. */
 static joint jump(const bg_diagram *d, const seg *s, const seg *t) {
-  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}};
+  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}};
   if (s->b != t->b) return j;
   double k = 0.3 * bg_vlen(bg_vsub(j.p1, j.p0)) + 12, bulge = 14 + s->off;
   j.kind = 2;
   j.c1 = bg_vadd(j.p0, bg_vadd(bg_vscale(s->dir, k), bg_vscale(s->n, bulge)));
   j.c2 = bg_vsub(bg_vadd(j.p1, bg_vscale(t->n, bulge)), bg_vscale(t->dir, k));
+  return j;
+}
+
+/* Where p lies along the perimeter of the rectangle r = (x0, y0, x1, y1),
+ * measured clockwise (on the page) from its top left corner; *on gets the
+ * nearest point of the perimeter. */
+static double perimeter_at(const double r[4], bg_vec p, bg_vec *on) {
+  double w = r[2] - r[0], h = r[3] - r[1];
+  double x = fmin(fmax(p.x, r[0]), r[2]), y = fmin(fmax(p.y, r[1]), r[3]);
+  double dt = fabs(p.y - r[1]), dr = fabs(p.x - r[2]), db = fabs(p.y - r[3]), dl = fabs(p.x - r[0]);
+  double m = fmin(fmin(dt, dr), fmin(db, dl));
+  if (m == dt) return *on = bg_v(x, r[1]), x - r[0];
+  if (m == dr) return *on = bg_v(r[2], y), w + y - r[1];
+  if (m == db) return *on = bg_v(x, r[3]), w + h + r[2] - x;
+  return *on = bg_v(r[0], y), 2 * w + h + r[3] - y;
+}
+
+/* A path through a collapsed instance (in at one port, out at another)
+ * goes round its box clockwise, so it keeps to its left like everywhere
+ * else and never crosses the box. */
+static joint around_box(const bg_diagram *d, const seg *s, const seg *t, joint j) {
+  int v = s->v;
+  double g = 2 + fmax(s->off, t->off);
+  double r[4] = {d->nx[v] - d->nw[v] / 2 - g, d->ny[v] - d->nh[v] / 2 - g,
+                 d->nx[v] + d->nw[v] / 2 + g, d->ny[v] + d->nh[v] / 2 + g};
+  double w = r[2] - r[0], h = r[3] - r[1], per = 2 * (w + h);
+  const double at[4] = {0, w, w + h, 2 * w + h};
+  const bg_vec c[4] = {{r[0], r[1]}, {r[2], r[1]}, {r[2], r[3]}, {r[0], r[3]}};
+  bg_vec e0, e1;
+  double t0 = perimeter_at(r, j.p0, &e0), t1 = perimeter_at(r, j.p1, &e1);
+  double len = fmod(t1 - t0 + per, per);
+  j.kind = 3, j.ncorner = 0;
+  j.corner[j.ncorner++] = e0;
+  int first = 0; /* the first corner after t0 clockwise, then the others in turn */
+  for (int k = 1; k < 4; k++)
+    if (fmod(at[k] - t0 + per, per) < fmod(at[first] - t0 + per, per)) first = k;
+  for (int k = 0; k < 4; k++) {
+    double dk = fmod(at[(first + k) % 4] - t0 + per, per);
+    if (dk > 1e-9 && dk < len) j.corner[j.ncorner++] = c[(first + k) % 4];
+  }
+  j.corner[j.ncorner++] = e1;
   return j;
 }
 
@@ -117,11 +172,11 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   if (t->u != s->v) return jump(d, s, t);
   if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s);
   bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
-  joint j = {1, a, b, {0, 0}, {0, 0}};
+  joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}};
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
     /* keep off the label: leave and re-enter at the box */
     j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
-    return j;
+    return d->box_inst && d->box_inst[v] >= 0 ? around_box(d, s, t, j) : j;
   }
   double den = cross(s->dir, t->dir);
   if (fabs(den) < 0.05) return j;
@@ -143,7 +198,8 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
 
 static void emit_joint(bg_scene *sc, const joint *j) {
   bg_scene_line(sc, j->p0.x, j->p0.y);
-  if (j->kind == 1) bg_scene_line(sc, j->p1.x, j->p1.y);
+  for (int k = 0; j->kind == 3 && k < j->ncorner; k++) bg_scene_line(sc, j->corner[k].x, j->corner[k].y);
+  if (j->kind == 1 || j->kind == 3) bg_scene_line(sc, j->p1.x, j->p1.y);
   if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
 }
 
@@ -441,7 +497,11 @@ static void draw_path(bg_diagram *d, int p) {
   if (a->path_n[p] < 1) return;
   {
     seg *s = bg_xcalloc(2 * (size_t)a->path_n[p], sizeof *s);
-    int n = path_segs(d, p, s);
+    int n = visible_segs(d, s, path_segs(d, p, s));
+    if (n == 0) { /* wholly inside a collapsed instance */
+      free(s);
+      return;
+    }
     s = split_bends(d, s, &n);
     for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
     int l = path_loop(d, p);
@@ -493,6 +553,11 @@ static void draw_loop(bg_diagram *d, int l) {
   {
     seg *s = bg_xcalloc((size_t)n, sizeof *s);
     for (int k = 0; k < n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
+    n = visible_segs(d, s, n);
+    if (n == 0) {
+      free(s);
+      return;
+    }
     s = split_bends(d, s, &n);
     for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
     run *runs = bg_xcalloc((size_t)n, sizeof *runs);

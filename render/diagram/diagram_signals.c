@@ -225,6 +225,12 @@ static void draw_signal(bg_diagram *d, int i) {
   const char *fname = from >= 0 ? m->elem_name[from] : m->signal_var[i];
   snprintf(name, sizeof name, "%s->%s", fname, m->elem_name[to]);
   sigrole role = {"signal", name};
+  /* a collapsed instance: its signals start or end at its box; the ones
+   * inside it are not drawn */
+  int to_box = d->node_of[to], from_box = from >= 0 ? d->node_of[from] : -1;
+  if (to_box != to && (from_box == to_box || from < 0)) return;
+  if (from >= 0 && from_box != from && from_box != to_box) from = from_box;
+  to = to_box;
   if (from == to) signal_self(d, role, to, hot);
   else if (from >= 0) signal_between(d, role, from, to, hot);
   else if (s >= 0 && d->state_node[s] >= 0) signal_between(d, role, d->state_node[s], to, hot);
@@ -244,7 +250,7 @@ static void draw_state(bg_diagram *d, int s) {
   for (int k = 0; k < nin; k++) {
     char name[160];
     snprintf(name, sizeof name, "%s->%s", m->elem_name[in[k]], m->state_name[s]);
-    signal_between(d, (sigrole){"state-input", name}, in[k], n, !bg_diagram_muted(d));
+    signal_between(d, (sigrole){"state-input", name}, d->node_of[in[k]], n, !bg_diagram_muted(d));
   }
 }
 

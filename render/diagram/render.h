@@ -47,6 +47,9 @@ typedef struct bg_render_opts {
   int layer_room;        /* the grid layout leaves room beside the bonds for path and loop
                             lines: 0 when show has paths or loops, 1 always, -1 never
                             (a redraw keeps its source's layout, room and all) */
+  const char *const *collapse; /* nullable: instances drawn as one word-bond-graph box
+                                  (qualified names, or "all"); --collapse */
+  int ncollapse;
 } bg_render_opts;
 
 /* Parses a --show list ("strokes,numbers", "all", "none"). Returns 0, or -1

@@ -18,7 +18,7 @@
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
-  OPT_PREFIX, OPT_TRANSFORM
+  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE
 };
 
 static const char short_opts[] = ":o:T:M:qvhV";
@@ -46,6 +46,7 @@ static const struct option long_opts[] = {
     {"color", required_argument, NULL, OPT_COLOR},
     {"prefix", required_argument, NULL, OPT_PREFIX},
     {"transform", required_argument, NULL, OPT_TRANSFORM},
+    {"collapse", required_argument, NULL, OPT_COLLAPSE},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
@@ -164,6 +165,10 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
   switch (c) {
   case 'o': return add_output(o, arg);
   case OPT_SET: return add_set(o, arg);
+  case OPT_COLLAPSE:
+    if (o->ncollapse == BG_MAX_COLLAPSE) return bg_cli_usage_error("too many --collapse options%s%s", "", "");
+    o->collapse[o->ncollapse++] = arg;
+    return 0;
   case OPT_SIMULATE: o->simulate = 1; return 0;
   case OPT_VERIFY: o->verify = 1; o->simulate = 1; return 0;
   case OPT_CHECK: o->check = 1; return 0;
@@ -227,6 +232,7 @@ void bg_cli_print_help(FILE *out) {
       "                      variables | all | none; a list of overlays only (paths,\n"
       "                      loops, legend, variables) or +LAYER adds to the default\n"
       "  --highlight ITEM    path:K | loop:K | conflict:K\n"
+      "  --collapse NAME     draw submodel instance NAME as one box (repeatable; all)\n"
       "  --style NAME|FILE   default | print | slides, or a style file\n"
       "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned | rows\n"
       "  --report FILE.pdf   the full analysis report\n"

@@ -5,7 +5,7 @@
 
 #include "model/model.h"
 
-enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64 };
+enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64, BG_MAX_COLLAPSE = 256 };
 
 /* The path of an output that goes to standard output ("-o -", or -T with no -o). */
 #define BG_CLI_STDOUT "-"
@@ -40,6 +40,8 @@ typedef struct bg_cli_opts {
   int simulate, verify, check, quiet, verbose, help, version;
   bg_param_override sets[BG_MAX_SETS];
   int nsets;
+  const char *collapse[BG_MAX_COLLAPSE]; /* --collapse NAME (repeatable) or all */
+  int ncollapse;
 } bg_cli_opts;
 
 /* Parses argv into o (GNU conventions: --opt=value, --, -Tsvg, -qv; options

@@ -109,6 +109,7 @@ int cli_render_options(run *r) {
     return -1;
   }
   if (o->max_list && parse_max_list(r, o->max_list) != 0) return -1;
+  ro->collapse = o->collapse, ro->ncollapse = o->ncollapse; /* names checked by the diagram */
   r->max_errors = BG_DIAG_MAX_ERRORS;
   if (o->max_errors) {
     char *end;

@@ -85,7 +85,9 @@ static int fc_line_kind(const char *r, int *id, int *loop) {
 
 static int fc_text_kind(const char *r, int *id, int *loop) {
   *id = *loop = 0;
-  if (fc_starts(r, "node") || fc_starts(r, "state-node") || fc_starts(r, "lagrange-label")) return FC_NODE;
+  if (fc_starts(r, "node") || fc_starts(r, "state-node") || fc_starts(r, "lagrange-label") ||
+      fc_starts(r, "box-label") || fc_starts(r, "detector"))
+    return FC_NODE;
   if (fc_starts(r, "number") || fc_starts(r, "variable") || fc_starts(r, "bondlabel")) {
     *id = fc_num_after(r, "bond=");
     return FC_NUMBER;
