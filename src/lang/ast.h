@@ -100,8 +100,16 @@ typedef struct bg_ast_stmt {
   int nexprs;
   bg_ast_option *opts;
   int nopts;
-  bg_ast_item *items; /* SUBMODEL, PORT, INSTANCE */
+  bg_ast_item *items; /* SUBMODEL, PORT, INSTANCE; a field ELEMENT's ports */
   int nitems;
+  /* ELEMENT: a multiport field `C K(a, b) : e1 = ..., b.e = ...` (docs/format.md,
+   * Multiport fields): its ports are `items` (named, or "1".."n" for `K(n)`),
+   * its laws `laws` (name = the left-hand side as written: "e1", "b.e",
+   * "energy"; value = the right-hand side) */
+  int is_field;
+  int field_numbered; /* the ports were given as a count: K(2) */
+  bg_ast_item *laws;
+  int nlaws;
 } bg_ast_stmt;
 
 typedef struct bg_ast {

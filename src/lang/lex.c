@@ -105,6 +105,24 @@ static void lex_number(lexer *lx) {
   t->num = strtod(text, NULL);
 }
 
+/* A '.' right after a name, then digits: a numbered port (K.1, K.2.e of a
+ * field, docs/format.md), lexed as '.' and a whole number, never as the
+ * number .1 (a name followed by a number was a syntax error before). */
+static int after_name(const lexer *lx) {
+  if (lx->pos <= lx->line_start) return 0;
+  int c = (unsigned char)lx->src[lx->pos - 1];
+  return isalnum(c) || c == '_';
+}
+
+static void lex_port_number(lexer *lx) {
+  push(lx, BG_TK_DOT, lx->pos++);
+  size_t start = lx->pos;
+  skip_digits(lx);
+  bg_token *t = push(lx, BG_TK_NUMBER, start);
+  t->text = bg_arena_strndup(lx->arena, lx->src + start, lx->pos - start);
+  t->num = strtod(t->text, NULL);
+}
+
 /* string: '"' { char | '\"' | '\\' } '"' on one physical line */
 static void lex_string(lexer *lx) {
   size_t start = lx->pos++;
@@ -191,6 +209,7 @@ void bg_lex_source(const char *src, size_t len, int file, bg_arena *a, bg_diags 
     if (c == -1) break;
     if (c == '\n') { lex_eol(&lx); newline(&lx); }
     else if (isalpha(c) || c == '_') lex_name(&lx);
+    else if (c == '.' && isdigit(peek(&lx, 1)) && after_name(&lx)) lex_port_number(&lx);
     else if (isdigit(c) || (c == '.' && isdigit(peek(&lx, 1)))) lex_number(&lx);
     else if (c == '"') lex_string(&lx);
     else if (!lex_punct(&lx)) lex_stray(&lx);

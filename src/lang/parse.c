@@ -238,12 +238,14 @@ static bg_expr *parse_name(parser *p) {
   bg_expr *e = new_expr(p, BG_EX_NAME, t);
   e->str = t->text;
   if (accept(p, BG_TK_DOT)) {
-    const bg_token *f = expect_name(p, "a field name after '.'");
+    /* a numbered port stands inside a path only: K.2.e */
+    const bg_token *f = at(p, BG_TK_NUMBER) ? next(p) : expect_name(p, "a field name after '.'");
     e->kind = BG_EX_FIELD;
     e->field = f->text;
     e->field_loc = f->loc;
-    while (accept(p, BG_TK_DOT)) {
-      f = expect_name(p, "a name after '.'");
+    while (f->kind == BG_TK_NUMBER || accept(p, BG_TK_DOT)) {
+      if (f->kind == BG_TK_NUMBER) expect(p, BG_TK_DOT, "and a variable after a port number (K.2.e)");
+      f = at(p, BG_TK_NUMBER) ? next(p) : expect_name(p, "a name after '.'");
       e->str = join_dotted(p, e->str, e->field);
       e->field = f->text;
       e->field_loc = f->loc;
@@ -492,8 +494,10 @@ static bg_arrow arrow_of(bg_tkind k) {
 static const bg_token *parse_bond_end(parser *p, const char *what, const char **name) {
   const bg_token *t = expect_name(p, what);
   *name = t->text;
-  while (accept(p, BG_TK_DOT))
-    *name = join_dotted(p, *name, expect_name(p, "a port name after '.'")->text);
+  while (accept(p, BG_TK_DOT)) {
+    const bg_token *port = at(p, BG_TK_NUMBER) ? next(p) : expect_name(p, "a port name after '.'");
+    *name = join_dotted(p, *name, port->text); /* K.2: port 2 of field K */
+  }
   return t;
 }
 
@@ -564,13 +568,22 @@ static int named_stmt(parser *p, bg_stkind k, const bg_token *kind, const bg_tok
   return p->nstmts - 1;
 }
 
-/* element_stmt := KIND NAME ['=' expr | ':' NAME '=' expr] [options] */
+static void parse_field(parser *p, int si);
+static void parse_items(parser *p, bg_ast_stmt *s, bg_tkind close, int value, const char *what);
+
+/* element_stmt := KIND NAME ['=' expr | ':' NAME '=' expr] [options]
+ *               | field_stmt */
 static void parse_element(parser *p, const bg_token *kind) {
   const bg_token *n = expect_name(p, "an element name after the kind");
   /* kind words may name elements (lagrange_rlc has "R R = R0"); keywords may not */
   int si = named_stmt(p, BG_ST_ELEMENT, kind, n, "an element");
   bg_ast_stmt *s = &p->stmts[si];
-  if (accept(p, BG_TK_ASSIGN)) {
+  if (at(p, BG_TK_LPAREN)) {
+    if (strcmp(kind->text, "C") != 0 && strcmp(kind->text, "R") != 0)
+      fail_at(p, cur(p), "only C and R elements can be multiport fields (a port list after "
+              "the name); %s '%s' has one port or two sides", kind->text, n->text);
+    parse_field(p, si);
+  } else if (accept(p, BG_TK_ASSIGN)) {
     bg_expr *e = parse_expr(p);
     p->stmts[si].expr = e;
   } else if (accept(p, BG_TK_COLON)) {
@@ -585,6 +598,81 @@ static void parse_element(parser *p, const bg_token *kind) {
     s->expr = e;
   }
   parse_options(&p->stmts[si], p, 0);
+}
+
+/* ---------------------------------------------------------------- fields */
+/* A port given by number: 1 .. 10^6. */
+static int port_count(parser *p, const bg_token *t) {
+  if (!(t->num >= 1 && t->num <= 1e6) || t->num != floor(t->num))
+    fail_at(p, t, "a field's number of ports must be a whole number from 1 to 1000000, not '%s'",
+            t->text);
+  return (int)t->num;
+}
+
+/* ports := NUMBER | NAME {',' NAME}   (inside the parentheses) */
+static void parse_field_ports(parser *p, int si) {
+  const bg_token *open = next(p);
+  bg_ast_stmt *s = &p->stmts[si];
+  if (at(p, BG_TK_NUMBER)) {
+    const bg_token *t = next(p);
+    int n = port_count(p, t);
+    s->items = bg_arena_alloc(&p->ast->arena, (size_t)n * sizeof *s->items);
+    for (int i = 0; i < n; i++) {
+      char num[16];
+      snprintf(num, sizeof num, "%d", i + 1);
+      memset(&s->items[i], 0, sizeof s->items[i]);
+      s->items[i].name = bg_arena_strdup(&p->ast->arena, num);
+      s->items[i].loc = t->loc;
+    }
+    s->nitems = n;
+    s->field_numbered = 1;
+  } else {
+    bg_ast_stmt tmp = {0};
+    parse_items(p, &tmp, BG_TK_RPAREN, 0, "a port name (or the number of ports)");
+    s = &p->stmts[si];
+    s->items = tmp.items;
+    s->nitems = tmp.nitems;
+  }
+  expect_close(p, BG_TK_RPAREN, ")(", open);
+}
+
+/* law_lhs := NAME ['.' NAME]   (e1, q2, el.e, energy) */
+static void parse_law_lhs(parser *p, bg_ast_item *law) {
+  const bg_token *v = expect_name(p, "a law's left-hand side (e1, f2, PORT.e, energy)");
+  law->name = v->text;
+  law->loc = v->loc;
+  if (accept(p, BG_TK_DOT))
+    law->name = join_dotted(p, v->text, expect_name(p, "e or f after the port's name")->text);
+}
+
+/* field_stmt := ('C' | 'R') NAME '(' ports ')' ':' law {',' law} [options]
+ * law := law_lhs '=' expr */
+static void parse_field(parser *p, int si) {
+  parse_field_ports(p, si);
+  if (!at(p, BG_TK_COLON)) {
+    char found[128];
+    describe(cur(p), found, sizeof found);
+    fail_at(p, cur(p), "expected ':' and the field's laws (e.g. ': e1 = F1(q1, q2), e2 = "
+            "F2(q1, q2)' or ': energy = W(q1, q2)'), found %s", found);
+  }
+  next(p);
+  bg_ast_item buf[256];
+  int n = 0;
+  do {
+    if (n == COUNT(buf)) fail_at(p, cur(p), "too many laws in one field (at most %d)", COUNT(buf));
+    memset(&buf[n], 0, sizeof buf[n]);
+    parse_law_lhs(p, &buf[n]);
+    expect(p, BG_TK_ASSIGN, "after the law's left-hand side");
+    buf[n++].value = parse_expr(p);
+  } while (accept(p, BG_TK_COMMA));
+  bg_ast_stmt *s = &p->stmts[si];
+  s->is_field = 1;
+  s->has_law = 1;
+  s->law_loc = buf[0].loc;
+  s->law_lhs = buf[0].name;
+  s->laws = bg_arena_alloc(&p->ast->arena, (size_t)n * sizeof *s->laws);
+  memcpy(s->laws, buf, (size_t)n * sizeof *s->laws);
+  s->nlaws = n;
 }
 
 /* ---------------------------------------------------------------- components */

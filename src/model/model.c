@@ -2,6 +2,7 @@
  * inputs and states. Elements and the other statements are in
  * model_stmt.c, expressions in model_expr.c, queries in model_query.c. */
 #include <ctype.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,7 +82,7 @@ const ns_entry *bg_build_lookup(const bg_build *b, const char *name) {
 
 
 /* Declares a name; reports duplicates and reserved names. 0 on success. */
-static int declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
+int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
   const ns_entry *old = bg_build_lookup(b, name);
   if (old) {
     bg_diag_error(b->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
@@ -162,21 +163,31 @@ static int kind_from_word(const char *w) {
   return -1;
 }
 
-static void declare_element(bg_build *b, const bg_ast_stmt *s) {
+const char *const bg_ns_what[6] = {"an element", "a param", "an input", "a state", "a detector",
+                                    "a field"};
+
+int bg_build_new_elem(bg_build *b, const bg_ast_stmt *s, int kind, const char *name, bg_srcloc loc) {
   bg_model *m = b->m;
-  int kind = kind_from_word(s->kindword);
-  if (kind < 0) BG_FATAL("parser let through element kind '%s'", s->kindword);
-  if (declare(b, s->name, s->name_loc, NS_ELEM, m->nelem) != 0) return;
+  name = bg_build_strdup(b, name);
+  if (bg_build_declare(b, name, loc, NS_ELEM, m->nelem) != 0) return -1;
   int e = bg_build_new(b, &m->nelem);
   m->elem_kind[e] = kind;
-  m->elem_name[e] = bg_build_strdup(b, s->name);
-  m->elem_loc[e] = s->name_loc;
-  m->elem_expr[e] = m->elem_init[e] = m->elem_inst[e] = -1;
+  m->elem_name[e] = name;
+  m->elem_loc[e] = loc;
+  m->elem_expr[e] = m->elem_init[e] = m->elem_inst[e] = m->elem_field[e] = -1;
   if (m->nelem > b->elem_stmt_cap) {
     b->elem_stmt_cap = b->elem_stmt_cap ? 2 * b->elem_stmt_cap : 64;
     b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)b->elem_stmt_cap * sizeof *b->elem_stmt);
   }
   b->elem_stmt[e] = s;
+  return e;
+}
+
+static void declare_element(bg_build *b, const bg_ast_stmt *s) {
+  int kind = kind_from_word(s->kindword);
+  if (kind < 0) BG_FATAL("parser let through element kind '%s'", s->kindword);
+  if (s->is_field) bg_build_declare_field(b, s);
+  else bg_build_new_elem(b, s, kind, s->name, s->name_loc);
 }
 
 /* Declares every name in file order (one namespace). */
@@ -187,14 +198,14 @@ static void declare_all(bg_build *b, int *nparam_decl) {
     if (s->kind == BG_ST_ELEMENT && bg_build_is_detector(s)) bg_build_declare_detector(b, s);
     else if (s->kind == BG_ST_ELEMENT) declare_element(b, s);
     else if (s->kind == BG_ST_PARAM) {
-      if (declare(b, s->name, s->name_loc, NS_PARAM, *nparam_decl) == 0) (*nparam_decl)++;
+      if (bg_build_declare(b, s->name, s->name_loc, NS_PARAM, *nparam_decl) == 0) (*nparam_decl)++;
     } else if (s->kind == BG_ST_INPUT) {
-      if (declare(b, s->name, s->name_loc, NS_INPUT, m->ninput) != 0) continue;
+      if (bg_build_declare(b, s->name, s->name_loc, NS_INPUT, m->ninput) != 0) continue;
       int k = bg_build_new(b, &m->ninput);
       m->input_name[k] = bg_build_strdup(b, s->name);
       m->input_loc[k] = s->name_loc;
     } else if (s->kind == BG_ST_STATE) {
-      if (declare(b, s->name, s->name_loc, NS_STATE, m->nstate) != 0) continue;
+      if (bg_build_declare(b, s->name, s->name_loc, NS_STATE, m->nstate) != 0) continue;
       int k = bg_build_new(b, &m->nstate);
       m->state_name[k] = bg_build_strdup(b, s->name);
       m->state_loc[k] = s->name_loc;
@@ -204,11 +215,37 @@ static void declare_all(bg_build *b, int *nparam_decl) {
 }
 
 /* ---------------------------------------------------------------- bonds */
+/* "K.x" where K is a field without port x: 1 (reported) naming its ports. */
+static int unknown_port(bg_build *b, const char *name, bg_srcloc loc) {
+  const char *dot = strrchr(name, '.');
+  if (!dot) return 0;
+  char head[512];
+  snprintf(head, sizeof head, "%.*s", (int)(dot - name), name);
+  const ns_entry *n = bg_build_lookup(b, head);
+  if (!n || n->kind != NS_FIELD) return 0;
+  const bg_model *m = b->m;
+  int f = n->id;
+  bg_strbuf ports = {0};
+  for (int k = 0; k < m->field_nport[f]; k++)
+    bg_sb_printf(&ports, "%s%s", k ? ", " : "", bg_elem_port_name(m, m->field_elemadr[f] + k));
+  bg_diag_error(b->dg, loc, "%s field %s has no port '%s' (its ports: %s)",
+                bg_elem_kind_name(m->field_kind[f]), head, dot + 1, ports.s ? ports.s : "");
+  bg_sb_free(&ports);
+  return 1;
+}
+
 /* The element id of a bond end, or -1 (reported). */
 static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
-  static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
   const ns_entry *n = bg_build_lookup(b, name);
   if (n && n->kind == NS_ELEM) return n->id;
+  if (n && n->kind == NS_FIELD) {
+    const bg_model *m = b->m;
+    int f = n->id, p1 = m->field_elemadr[f];
+    bg_diag_error(b->dg, loc, "'%s' is %s field with %d ports; a bond joins one of its ports "
+                  "(e.g. %s)", name, bg_elem_kind_article(m->field_kind[f]), m->field_nport[f],
+                  m->elem_name[p1]);
+    return -1;
+  }
   if (n && n->kind == NS_DETECTOR) {
     bg_diag_error(b->dg, loc, "'%s' is a detector (line %d); a detector has no bond: it reads "
                   "the node named in its statement", name, n->loc.line);
@@ -216,12 +253,13 @@ static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
   }
   if (n) {
     bg_diag_error(b->dg, loc, "'%s' is %s (line %d); a bond joins elements and junctions",
-                  name, what[n->kind], n->loc.line);
+                  name, bg_ns_what[n->kind], n->loc.line);
     return -1;
   }
   const char *s = bg_build_suggest(b, name, NULL, 0);
   const ns_entry *guess = s ? bg_build_lookup(b, s) : NULL;
   if (guess && guess->kind == NS_ELEM) b->elem_guessed[guess->id] = 1; /* see check_bond_count */
+  if (unknown_port(b, name, loc)) return -1;
   if (s) bg_diag_error(b->dg, loc, "undefined name '%s' (did you mean '%s'?)", name, s);
   else bg_diag_error(b->dg, loc, "undefined name '%s' (no element or junction has this name)", name);
   return -1;
@@ -534,7 +572,7 @@ bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, 
   b.m = m;
   b.ast = ast;
   b.dg = dg;
-  b.elem = b.law_elem = -1;
+  b.elem = b.law_elem = b.field = -1;
   int errors0 = dg->nerrors, ndecl = 0;
   const char *path = ast->path ? ast->path : "";
   m->path = bg_arena_strdup(&m->arena, path);

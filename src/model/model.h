@@ -174,7 +174,20 @@ typedef struct bg_xnode {
   X(int, det_var, ndet)             /* 'e' (De) or 'f' (Df) */                 \
   X(int, det_node, ndet)            /* element id of the node it reads */      \
   X(int, det_expr, ndet)            /* root xnode of its value (-1 after an error) */ \
-  X(bg_srcloc, det_loc, ndet)
+  X(bg_srcloc, det_loc, ndet)                                                 \
+  /* multiport fields (docs/format.md, Multiport fields): a C or R field of n \
+     ports is n consecutive one-port elements of its kind, one per port,     \
+     named "K.el" / "K.1", each with the port's law (the efforts of an       \
+     energy form are its gradient); the field record groups them */          \
+  X(int, elem_field, nelem)         /* field the element is a port of; -1 */  \
+  X(int, elem_fport, nelem)         /* its port's number in the field, 1..n; 0 */ \
+  X(const char *, field_name, nfield)                                          \
+  X(int, field_kind, nfield)        /* BG_ELEM_C or BG_ELEM_R */              \
+  X(int, field_elemadr, nfield)     /* the element of port 1 */               \
+  X(int, field_nport, nfield)                                                  \
+  X(int, field_numbered, nfield)    /* ports given as a count: K(2) */         \
+  X(int, field_energy, nfield)      /* energy root xnode (C), or -1 */         \
+  X(bg_srcloc, field_loc, nfield)   /* of the field's name */
 
 typedef struct bg_simspec {
   int present;
@@ -212,7 +225,7 @@ typedef struct bg_model {
   bg_linspec linear;
   int noutput, nlininput;
   int nelem, nbondref, nbond, nparam, ninput, nstate, nsignal, nplot, nplotexpr;
-  int ntable, ntabledata, nxnode, ninst, nseg, ndet;
+  int ntable, ntabledata, nxnode, ninst, nseg, ndet, nfield;
 #define BG_X_DECLARE(type, name, count) type *name;
   BG_MODEL_ARRAYS(BG_X_DECLARE)
 #undef BG_X_DECLARE
@@ -254,6 +267,10 @@ int bg_elem_in_bond(const bg_model *m, int elem);
 int bg_elem_out_bond(const bg_model *m, int elem);
 /* The element at the other end of bond b from element e. */
 int bg_bond_other(const bg_model *m, int b, int e);
+/* The field element `elem` is a port of, or -1 (also for hand-built models
+ * without field arrays); the port's name ("el", "2") after the field's. */
+int bg_elem_field(const bg_model *m, int elem);
+const char *bg_elem_port_name(const bg_model *m, int elem);
 /* Element id by name, or -1. */
 int bg_model_find_elem(const bg_model *m, const char *name);
 /* Builds m->elem_hash (bg_model_compile does; hand-built models may). */

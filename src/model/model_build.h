@@ -7,7 +7,9 @@
 #include "model/model.h"
 
 /* What a name in the shared namespace is. */
-typedef enum { NS_ELEM, NS_PARAM, NS_INPUT, NS_STATE, NS_DETECTOR } ns_kind;
+typedef enum { NS_ELEM, NS_PARAM, NS_INPUT, NS_STATE, NS_DETECTOR, NS_FIELD } ns_kind;
+/* "an element", "a param", ... by ns_kind, for messages. */
+extern const char *const bg_ns_what[6];
 
 typedef struct ns_entry {
   const char *name;
@@ -44,6 +46,7 @@ typedef struct bg_build {
   int input_limit;    /* inputs with id < this may be read */
   int elem;           /* element whose value/law is compiled (signals), or -1 */
   int law_elem;       /* element whose law is compiled (own e, f, q, p), or -1 */
+  int field;          /* field whose law or energy is compiled (port variables), or -1 */
   char law_lhs;       /* the law's left-hand side letter */
   const char *modvar; /* first model variable met (for "modulated by ...") */
   bg_srcloc modvar_loc;
@@ -89,7 +92,37 @@ int bg_build_is_affine(const bg_model *m, int root, int op, int ref);
 /* Param names used by e (for the dependency order); calls fn for each. */
 void bg_build_names(const bg_expr *e, void (*fn)(void *ctx, const bg_expr *name), void *ctx);
 
+/* ---- model_field.c (multiport fields) */
+/* Declares field s (a C or R with ports): its name and one element per port. */
+void bg_build_declare_field(bg_build *b, const bg_ast_stmt *s);
+/* Declares a name in the shared namespace; 0, or -1 after an error (reported). */
+int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id);
+/* A new element of `kind` named `name` written by statement s; -1 if the name is taken. */
+int bg_build_new_elem(bg_build *b, const bg_ast_stmt *s, int kind, const char *name, bg_srcloc loc);
+/* Compiles the laws (or energy) of field f into its port elements. */
+void bg_build_field_laws(bg_build *b, int f);
+/* A port variable named inside field f's laws: `v` of port `port` (its name,
+ * or NULL with its number in `num`); -1 when it names no port of f. */
+int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_expr *e);
+/* The options of a field (label, color, at, q0, causality, per port). */
+void bg_build_field_options(bg_build *b, int f);
+/* d root / d (state of C element `store`), as new xnodes; -1 is the number 0;
+ * -2 when root holds a table (no smooth derivative). */
+int bg_build_diff(bg_build *b, int root, int store);
+/* Node constructors shared by the compiler's files. */
+int bg_build_node(bg_build *b, int op, bg_srcloc loc);
+int bg_build_num(bg_build *b, double v, bg_srcloc loc);
+int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc);
+int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc);
+
 /* ---- model_stmt.c */
+/* The options' helpers (model_stmt.c), for the fields' options. */
+const bg_ast_option *bg_build_find_opt(const bg_ast_stmt *s, const char *key);
+void bg_build_check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose);
+const char *bg_build_string_opt(bg_build *b, const bg_ast_stmt *s, const char *key);
+const char *bg_build_color_opt(bg_build *b, const bg_ast_stmt *s);
+void bg_build_at_opt(bg_build *b, int e, const bg_ast_stmt *s);
+int bg_build_init_expr(bg_build *b, const bg_expr *x);
 void bg_build_elements(bg_build *b);
 void bg_build_statements(bg_build *b);
 #endif

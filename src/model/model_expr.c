@@ -35,6 +35,20 @@ static int ref_node(bg_build *b, int op, int ref, bg_srcloc loc) {
   return k;
 }
 
+int bg_build_node(bg_build *b, int op, bg_srcloc loc) { return node(b, op, loc); }
+int bg_build_num(bg_build *b, double v, bg_srcloc loc) { return num_node(b, v, loc); }
+int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc) { return ref_node(b, op, ref, loc); }
+
+/* A unary (c < 0) or binary operator node over existing nodes. */
+int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc) {
+  int k = node(b, op, loc);
+  bg_xnode *x = &b->m->xnode[k];
+  x->nargs = c < 0 ? 1 : 2;
+  x->arg[0] = a;
+  x->arg[1] = c < 0 ? 0 : c;
+  return k;
+}
+
 /* A placeholder after an error (the compile fails anyway). */
 static int bad(bg_build *b, bg_srcloc loc) { return num_node(b, NAN, loc); }
 
@@ -129,7 +143,33 @@ static int undefined(bg_build *b, const bg_expr *e) {
 static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc);
 
 /* name: t | pi | e7 | f7 | own law variable | param | input | state | detector */
+/* A port variable in a field's law: e2, f1, q3 by the port's number. */
+static int field_name_var(bg_build *b, const bg_expr *e) {
+  const char *s = e->str;
+  if (!strchr("efq", s[0]) || !s[0]) return -1;
+  if (!s[1]) {
+    bg_diag_error(b->dg, e->loc, "in a field's laws, name the port's variable (%c1, %c2, "
+                  "PORT.%c), not '%s'", s[0], s[0], s[0], s);
+    return bad(b, e->loc);
+  }
+  if (strspn(s + 1, "0123456789") != strlen(s + 1) || strlen(s + 1) > 7) return -1;
+  return bg_build_port_var(b, NULL, atoi(s + 1), s[0], e);
+}
+
+/* A field's variables are its ports': a message for the field's bare name. */
+static int field_not_value(bg_build *b, const bg_expr *e, int f) {
+  const bg_model *m = b->m;
+  bg_diag_error(b->dg, e->loc, "'%s' is %s field; use a variable of one of its ports (e.g. "
+                "%s.%s)", e->str, bg_elem_kind_article(m->field_kind[f]),
+                m->elem_name[m->field_elemadr[f]], m->field_kind[f] == BG_ELEM_C ? "q" : "e");
+  return bad(b, e->loc);
+}
+
 static int compile_name(bg_build *b, const bg_expr *e) {
+  if (b->field >= 0) {
+    int k = field_name_var(b, e);
+    if (k >= 0) return k;
+  }
   if (b->law_elem >= 0 && !e->str[1]) {
     int k = own_var(b, e->str[0], e);
     if (k >= 0) return k;
@@ -161,6 +201,7 @@ static int compile_name(bg_build *b, const bg_expr *e) {
     use_model_var(b, el, e);
     return field_node(b, el, b->m->det_var[n->id] == 'e' ? "e" : "f", e->loc);
   }
+  case NS_FIELD: return field_not_value(b, e, n->id);
   default:
     bg_diag_error(b->dg, e->loc, "'%s' is %s, not a value; use one of its variables "
                   "(e.g. %s.%s)", e->str, bg_elem_kind_article(b->m->elem_kind[n->id]), e->str,
@@ -201,11 +242,19 @@ static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc) {
 
 /* field: X.e | X.f | X.q | X.p | X.e1 ... | J.e | J.f */
 static int compile_field(bg_build *b, const bg_expr *e) {
+  if (b->field >= 0 && strchr("efq", e->field[0]) && !e->field[1]) {
+    /* el.e, or K.el.e with the field's own name: a port's own variable */
+    const char *port = e->str, *fname = b->m->field_name[b->field];
+    size_t nf = strlen(fname);
+    if (strncmp(port, fname, nf) == 0 && port[nf] == '.') port += nf + 1;
+    int k = bg_build_port_var(b, port, 0, e->field[0], e);
+    if (k >= 0) return k;
+  }
   const ns_entry *n = bg_build_lookup(b, e->str);
+  if (n && n->kind == NS_FIELD) return field_not_value(b, e, n->id);
   if (!n) return undefined(b, e);
   if (n->kind != NS_ELEM) {
-    static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
-    bg_diag_error(b->dg, e->loc, "'%s' is %s and has no fields", e->str, what[n->kind]);
+    bg_diag_error(b->dg, e->loc, "'%s' is %s and has no fields", e->str, bg_ns_what[n->kind]);
     return bad(b, e->loc);
   }
   int el = n->id, kind = b->m->elem_kind[el];

@@ -45,6 +45,16 @@ static int bond_at_end(const bg_model *m, int elem, int in) {
 int bg_elem_in_bond(const bg_model *m, int elem) { return bond_at_end(m, elem, 1); }
 int bg_elem_out_bond(const bg_model *m, int elem) { return bond_at_end(m, elem, 0); }
 
+int bg_elem_field(const bg_model *m, int elem) {
+  return m->elem_field && elem >= 0 && elem < m->nelem ? m->elem_field[elem] : -1;
+}
+
+const char *bg_elem_port_name(const bg_model *m, int elem) {
+  int f = bg_elem_field(m, elem);
+  if (f < 0) return NULL;
+  return m->elem_name[elem] + strlen(m->field_name[f]) + 1;
+}
+
 int bg_bond_other(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
 }

@@ -117,6 +117,21 @@ static void check_bond_count(bg_build *b, int e) {
   int kind = m->elem_kind[e], n = m->elem_nbond[e];
   const char *name = m->elem_name[e], *kn = bg_elem_kind_name(kind);
   if (b->elem_guessed[e]) return; /* the misspelled bond end is reported instead */
+  if (m->elem_field[e] >= 0 && n != 1) { /* a port of a field */
+    int f = m->elem_field[e];
+    if (n == 0)
+      bg_diag_error(b->dg, m->elem_loc[e], "port %s of %s field %s has no bond (bond it as "
+                    "'%s')", bg_elem_port_name(m, e), bg_elem_kind_name(kind), m->field_name[f], name);
+    else {
+      int second = m->elem_bonds[m->elem_bondadr[e] + 1];
+      bg_diag_error(b->dg, m->bond_loc[second], "port %s of %s field %s is bonded twice (a port "
+                    "takes one bond; join several through a junction)", bg_elem_port_name(m, e),
+                    bg_elem_kind_name(kind), m->field_name[f]);
+      bg_diag_note(b->dg, m->bond_loc[m->elem_bonds[m->elem_bondadr[e]]], "the first bond of %s",
+                   name);
+    }
+    return;
+  }
   if (n == 0) {
     bg_diag_error(b->dg, m->elem_loc[e], "'%s' has no bond (every element and junction needs "
                   "at least one)", name);
@@ -277,11 +292,46 @@ static void element_options(bg_build *b, int e, const bg_ast_stmt *s) {
 }
 
 void bg_build_elements(bg_build *b) {
-  for (int e = 0; e < b->m->nelem; e++) check_bond_count(b, e);
-  for (int e = 0; e < b->m->nelem; e++) {
+  bg_model *m = b->m;
+  for (int e = 0; e < m->nelem; e++) check_bond_count(b, e);
+  for (int e = 0; e < m->nelem; e++) {
+    int f = m->elem_field[e];
+    if (f >= 0) { /* a field's ports: its laws and options, at its first port */
+      if (e == m->field_elemadr[f]) {
+        bg_build_field_laws(b, f);
+        bg_build_field_options(b, f);
+      }
+      continue;
+    }
     compile_element_expr(b, e, b->elem_stmt[e]);
     element_options(b, e, b->elem_stmt[e]);
   }
+}
+
+/* ---------------------------------------------------------------- shared helpers */
+const bg_ast_option *bg_build_find_opt(const bg_ast_stmt *s, const char *key) {
+  return find_opt(s, key);
+}
+void bg_build_check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose) {
+  check_options(b, s, valid, whose);
+}
+const char *bg_build_string_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
+  return string_opt(b, s, key);
+}
+const char *bg_build_color_opt(bg_build *b, const bg_ast_stmt *s) { return color_opt(b, s); }
+void bg_build_at_opt(bg_build *b, int e, const bg_ast_stmt *s) { at_opt(b, e, s); }
+
+/* A constant expression of params (an initial value) as xnodes. */
+int bg_build_init_expr(bg_build *b, const bg_expr *x) {
+  int allow = b->allow, elem = b->elem, law = b->law_elem;
+  b->allow = 0;
+  b->elem = b->law_elem = -1;
+  b->what = "an initial value (use numbers, pi and params)";
+  int root = bg_build_expr(b, x);
+  b->allow = allow;
+  b->elem = elem;
+  b->law_elem = law;
+  return root;
 }
 
 /* ---------------------------------------------------------------- statements */
@@ -390,10 +440,9 @@ static void st_model(bg_build *b, const bg_ast_stmt *s) {
 static void st_output(bg_build *b, const bg_ast_stmt *s) {
   bg_model *m = b->m;
   const ns_entry *n = bg_build_lookup(b, s->name);
-  static const char *const what[] = {"an element", "a param", "an input", "a state", "a detector"};
   if (n) {
     bg_diag_error(b->dg, s->name_loc, "'%s' is already %s (line %d); an output needs a name of "
-                  "its own", s->name, what[n->kind], n->loc.line);
+                  "its own", s->name, bg_ns_what[n->kind], n->loc.line);
     return;
   }
   for (int k = 0; k < m->noutput; k++)

@@ -1,0 +1,276 @@
+/* The model compiler, part 4: multiport C and R fields (docs/format.md,
+ * Multiport fields). A field of n ports becomes n consecutive one-port
+ * elements of its kind, one per port ("K.el", "K.2"), each with its port's
+ * law; every later stage (causality per port, equations, simulation) sees
+ * one-ports whose laws read their sibling ports' variables, and the field
+ * record groups them for the JSON, the report and the diagram.
+ *
+ * Port variables in a field's laws are the port's own variables, power into
+ * the field positive (the one-port convention of docs/format.md): effort e,
+ * flow f (the bond's flow negated when the bond points out of the port) and
+ * for a C field the displacement q with dq/dt = f. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/model_build.h"
+
+/* ---------------------------------------------------------------- declaring */
+void bg_build_declare_field(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int kind = strcmp(s->kindword, "C") == 0 ? BG_ELEM_C : BG_ELEM_R;
+  if (bg_build_declare(b, s->name, s->name_loc, NS_FIELD, m->nfield) != 0) return;
+  int f = bg_build_new(b, &m->nfield);
+  m->field_name[f] = bg_build_strdup(b, s->name);
+  m->field_kind[f] = kind;
+  m->field_elemadr[f] = m->nelem;
+  m->field_numbered[f] = s->field_numbered;
+  m->field_energy[f] = -1;
+  m->field_loc[f] = s->name_loc;
+  for (int k = 0; k < s->nitems; k++) {
+    char *name = malloc(strlen(s->name) + strlen(s->items[k].name) + 2);
+    sprintf(name, "%s.%s", s->name, s->items[k].name);
+    int e = bg_build_new_elem(b, s, kind, name, s->items[k].loc);
+    free(name);
+    if (e < 0) continue; /* a port named twice: reported by the namespace */
+    m->elem_field[e] = f;
+    m->elem_fport[e] = m->field_nport[f] + 1;
+    m->field_nport[f]++;
+  }
+}
+
+/* ---------------------------------------------------------------- port variables */
+/* The element of port `port` (a name) or number `num` of field f; -1. */
+static int port_elem(const bg_model *m, int f, const char *port, int num) {
+  for (int k = 0; k < m->field_nport[f]; k++) {
+    int e = m->field_elemadr[f] + k;
+    if (port ? strcmp(bg_elem_port_name(m, e), port) == 0 : m->elem_fport[e] == num) return e;
+  }
+  return -1;
+}
+
+/* Port `pe`'s own flow: the bond's, negated when the bond points out. */
+static int own_flow(bg_build *b, int pe, int bond, bg_srcloc loc) {
+  int k = bg_build_ref(b, BG_X_FLOW, bond, loc);
+  if (b->m->bond_head[bond] == pe) return k;
+  return bg_build_op(b, BG_X_NEG, k, -1, loc);
+}
+
+int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_expr *e) {
+  bg_model *m = b->m;
+  int f = b->field, pe = port_elem(m, f, port, num);
+  if (pe < 0) {
+    if (port) return -1; /* not a port's name: an ordinary name */
+    bg_diag_error(b->dg, e->loc, "'%s' names no port of field %s: it has ports 1 to %d", e->text,
+                  m->field_name[f], m->field_nport[f]);
+    return bg_build_num(b, 0, e->loc);
+  }
+  int kind = m->field_kind[f];
+  if (kind == BG_ELEM_C && v != 'q') {
+    bg_diag_error(b->dg, e->loc, "a C field's %s reads the ports' displacements q only, not '%s'",
+                  b->law_elem < 0 ? "energy" : "laws", e->text);
+    return bg_build_num(b, 0, e->loc);
+  }
+  if (kind == BG_ELEM_R && v == 'q') {
+    bg_diag_error(b->dg, e->loc, "an R field's ports have no displacement: '%s'", e->text);
+    return bg_build_num(b, 0, e->loc);
+  }
+  if (pe == b->law_elem && v == b->law_lhs) {
+    bg_diag_error(b->dg, e->loc, "the right-hand side of %s's law cannot use its left-hand side "
+                  "'%s'", m->elem_name[pe], e->text);
+    return bg_build_num(b, 0, e->loc);
+  }
+  if (v == 'q') return bg_build_ref(b, BG_X_STORE, pe, e->loc);
+  int bond = bg_elem_port_bond(m, pe);
+  if (bond < 0) return bg_build_num(b, 0, e->loc); /* its bond count is reported */
+  if (v == 'e') return bg_build_ref(b, BG_X_EFFORT, bond, e->loc);
+  return own_flow(b, pe, bond, e->loc);
+}
+
+/* ---------------------------------------------------------------- laws */
+/* The port a law's left-hand side names ("e2", "el.f"), its letter in *v;
+ * -1 if none (reported). "energy" is handled by the caller. */
+static int law_port(bg_build *b, int f, const bg_ast_item *law, char *v) {
+  const bg_model *m = b->m;
+  const char *lhs = law->name, *dot = strchr(lhs, '.');
+  int pe = -1;
+  if (dot) {
+    char port[256];
+    snprintf(port, sizeof port, "%.*s", (int)(dot - lhs), lhs);
+    *v = dot[1] && !dot[2] ? dot[1] : 0;
+    pe = port_elem(m, f, port, 0);
+  } else if (strchr("efq", lhs[0]) && lhs[1] && strspn(lhs + 1, "0123456789") == strlen(lhs + 1)) {
+    *v = lhs[0];
+    pe = port_elem(m, f, NULL, atoi(lhs + 1));
+  } else {
+    *v = 0;
+  }
+  int kind = m->field_kind[f];
+  const char *form = kind == BG_ELEM_C ? "e1 = F(q1, q2) or energy = W(q1, q2)"
+                                       : "e1 = F(f1, f2) or f1 = G(e1, e2)";
+  if (pe < 0 || !*v || (kind == BG_ELEM_C && *v != 'e') || (kind == BG_ELEM_R && *v == 'q')) {
+    if (*v && pe < 0)
+      bg_diag_error(b->dg, law->loc, "'%s': field %s has no such port (a law is %s)", lhs,
+                    m->field_name[f], form);
+    else
+      bg_diag_error(b->dg, law->loc, "'%s = ...' is not a law of %s field (a law is %s)", lhs,
+                    bg_elem_kind_article(kind), form);
+    return -1;
+  }
+  return pe;
+}
+
+/* Compiles one expression of field f: a law of port pe (lhs v), or the
+ * energy (pe -1). */
+static int field_expr(bg_build *b, int f, int pe, char v, const bg_expr *x) {
+  b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
+  b->input_limit = b->m->ninput;
+  b->what = "a field's law";
+  b->elem = pe >= 0 ? pe : b->m->field_elemadr[f];
+  b->law_elem = pe;
+  b->law_lhs = v;
+  b->field = f;
+  b->modvar = NULL;
+  int root = bg_build_expr(b, x);
+  /* reading a variable of no port (another element's, a state) modulates */
+  for (int k = 0; b->modvar && k < b->m->field_nport[f]; k++)
+    if (pe < 0 || b->m->field_elemadr[f] + k == pe) b->m->elem_modulated[b->m->field_elemadr[f] + k] = 1;
+  b->field = b->law_elem = b->elem = -1;
+  return root;
+}
+
+/* The energy form: each port's effort is dW/dq of its port. */
+static void energy_laws(bg_build *b, int f, const bg_ast_item *law) {
+  bg_model *m = b->m;
+  if (m->field_kind[f] != BG_ELEM_C) {
+    bg_diag_error(b->dg, law->loc, "only a C field has an energy function; write an R field's "
+                  "laws per port (f1 = G(e1, e2), ...)");
+    return;
+  }
+  int w = field_expr(b, f, -1, 0, law->value);
+  m->field_energy[f] = w;
+  for (int k = 0; k < m->field_nport[f]; k++) {
+    int pe = m->field_elemadr[f] + k, d = bg_build_diff(b, w, pe);
+    if (d == -2) {
+      bg_diag_error(b->dg, law->loc, "the energy of %s uses table(), which has no smooth "
+                    "gradient; give the efforts as laws (e1 = ..., e2 = ...)", m->field_name[f]);
+      return;
+    }
+    m->elem_expr[pe] = d >= 0 ? d : bg_build_num(b, 0, law->loc);
+    m->elem_form[pe] = BG_FORM_LAW_E;
+  }
+}
+
+/* Is the law of port pe affine in the port's own input variable? */
+static int port_linear(const bg_model *m, int pe) {
+  int root = m->elem_expr[pe];
+  if (m->elem_kind[pe] == BG_ELEM_C) return bg_build_is_affine(m, root, BG_X_STORE, pe);
+  int bond = bg_elem_port_bond(m, pe);
+  if (bond < 0) return 0;
+  return bg_build_is_affine(m, root, m->elem_form[pe] == BG_FORM_LAW_E ? BG_X_FLOW : BG_X_EFFORT,
+                            bond);
+}
+
+/* Laws per port: one for each port, none twice. */
+static void port_laws(bg_build *b, int f, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  int *seen = calloc((size_t)m->field_nport[f] + 1, sizeof *seen);
+  for (int i = 0; i < s->nlaws; i++) {
+    const bg_ast_item *law = &s->laws[i];
+    char v;
+    if (strcmp(law->name, "energy") == 0) {
+      bg_diag_error(b->dg, law->loc, "a field has either an energy or laws per port, not both");
+      continue;
+    }
+    int pe = law_port(b, f, law, &v);
+    if (pe < 0) continue;
+    int k = m->elem_fport[pe];
+    if (seen[k]) {
+      bg_diag_error(b->dg, law->loc, "port %s of %s has two laws (the first at column %d)",
+                    bg_elem_port_name(m, pe), m->field_name[f], s->laws[seen[k] - 1].loc.col);
+      continue;
+    }
+    seen[k] = i + 1;
+    m->elem_expr[pe] = field_expr(b, f, pe, v, law->value);
+    m->elem_form[pe] = v == 'e' ? BG_FORM_LAW_E : BG_FORM_LAW_F;
+  }
+  for (int k = 0; k < m->field_nport[f]; k++) {
+    int pe = m->field_elemadr[f] + k;
+    if (!seen[k + 1])
+      bg_diag_error(b->dg, m->elem_loc[pe], "port %s of %s field %s has no law (write %s%s = ... "
+                    "in the field's laws)", bg_elem_port_name(m, pe),
+                    bg_elem_kind_name(m->field_kind[f]), m->field_name[f],
+                    m->field_numbered[f] ? "e" : bg_elem_port_name(m, pe),
+                    m->field_numbered[f] ? bg_elem_port_name(m, pe) : ".e");
+  }
+  free(seen);
+}
+
+void bg_build_field_laws(bg_build *b, int f) {
+  bg_model *m = b->m;
+  if (m->field_nport[f] == 0) return;
+  const bg_ast_stmt *s = b->elem_stmt[m->field_elemadr[f]];
+  int energy = -1;
+  for (int i = 0; i < s->nlaws; i++)
+    if (strcmp(s->laws[i].name, "energy") == 0 && energy < 0) energy = i;
+  if (energy >= 0 && s->nlaws == 1) energy_laws(b, f, &s->laws[energy]);
+  else port_laws(b, f, s);
+  for (int k = 0; k < m->field_nport[f]; k++) {
+    int pe = m->field_elemadr[f] + k;
+    if (m->elem_expr[pe] >= 0) m->elem_linear[pe] = port_linear(m, pe);
+  }
+}
+
+/* ---------------------------------------------------------------- options */
+/* The value of option `o` for port k: the k-th of a tuple of n, or the one
+ * value when n is 1 (or, for a word, when it stands alone for every port). */
+static const bg_expr *per_port(bg_build *b, int f, const bg_ast_option *o, int k, int word) {
+  const bg_model *m = b->m;
+  int n = m->field_nport[f];
+  const bg_expr *v = o->value;
+  if (v->kind == BG_EX_TUPLE && v->nargs == n) return v->args[k];
+  if (v->kind != BG_EX_TUPLE && (n == 1 || word)) return v;
+  if (k == 0)
+    bg_diag_error(b->dg, v->loc, "option '%s' of field %s needs one value per port: (%s) with %d "
+                  "entries", o->key, m->field_name[f], word ? "a, b, ..." : "v1, v2, ...", n);
+  return NULL;
+}
+
+static int caus_word(bg_build *b, int kind, const bg_expr *v) {
+  static const char *const words[] = {"integral", "derivative", "resistance", "conductance"};
+  static const int opts[] = {BG_CAUS_OPT_INTEGRAL, BG_CAUS_OPT_DERIVATIVE, BG_CAUS_OPT_RESISTANCE,
+                             BG_CAUS_OPT_CONDUCTANCE};
+  int lo = kind == BG_ELEM_C ? 0 : 2;
+  if (v->kind == BG_EX_NAME || v->kind == BG_EX_STR)
+    for (int i = lo; i < lo + 2; i++)
+      if (strcmp(v->str, words[i]) == 0) return opts[i];
+  bg_diag_error(b->dg, v->loc, "invalid causality '%s' (valid: %s, %s)", v->text, words[lo],
+                words[lo + 1]);
+  return BG_CAUS_OPT_NONE;
+}
+
+void bg_build_field_options(bg_build *b, int f) {
+  bg_model *m = b->m;
+  int p1 = m->field_elemadr[f], kind = m->field_kind[f];
+  if (m->field_nport[f] == 0) return;
+  const bg_ast_stmt *s = b->elem_stmt[p1];
+  char whose[160];
+  snprintf(whose, sizeof whose, "%s field '%s'", bg_elem_kind_name(kind), s->name);
+  bg_build_check_options(b, s, kind == BG_ELEM_C ? "label, color, at, causality, q0"
+                                                 : "label, color, at, causality", whose);
+  const char *label = bg_build_string_opt(b, s, "label"), *color = bg_build_color_opt(b, s);
+  const bg_ast_option *caus = bg_build_find_opt(s, "causality"), *q0 = bg_build_find_opt(s, "q0");
+  bg_build_at_opt(b, p1, s);
+  for (int k = 0; k < m->field_nport[f]; k++) {
+    int pe = p1 + k;
+    const bg_expr *v;
+    m->elem_label[pe] = label;
+    m->elem_color[pe] = color;
+    m->elem_has_at[pe] = m->elem_has_at[p1];
+    m->elem_at_x[pe] = m->elem_at_x[p1];
+    m->elem_at_y[pe] = m->elem_at_y[p1];
+    if (caus && (v = per_port(b, f, caus, k, 1)) != NULL) m->elem_causopt[pe] = caus_word(b, kind, v);
+    if (q0 && kind == BG_ELEM_C && (v = per_port(b, f, q0, k, 0)) != NULL)
+      m->elem_init[pe] = bg_build_init_expr(b, v);
+  }
+}
