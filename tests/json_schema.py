@@ -327,6 +327,8 @@ def check(name, text):
                   % (ra["satisfied"], ra["disjoint"], five))
     if "form_parameter_dependent" in d:
         c.typ("form_parameter_dependent", d["form_parameter_dependent"], bool)
+    if "fields" in d:
+        check_fields(c, d, elem_kind, bond_ids)
     if "omitted" in d and c.keys("omitted", d["omitted"],
                                  ["causal_paths", "causal_loops", "topological_loops",
                                   "topological_loops_complete"]):
@@ -348,6 +350,44 @@ def check(name, text):
             if e["node"] not in names:
                 c.bad(w + ".node", "no element %r" % e["node"])
     return c.problems
+
+
+def check_fields(c, d, elem_kind, bond_ids):
+    """Multiport fields: every port an element of the field's kind that names
+    its field and port, on a bond that exists, with a causality of its kind;
+    mixed_causality true exactly when the ports' causalities differ."""
+    by_name = {e["name"]: e for e in d["elements"] if isinstance(e, dict)}
+    for i, f in enumerate(c.list_of("fields", d["fields"], dict)):
+        w = "fields[%d]" % i
+        if not c.keys(w, f, ["name", "kind", "energy", "mixed_causality", "ports"]):
+            continue
+        c.vocab(w + ".kind", f["kind"], {"C", "R"})
+        c.typ(w + ".energy", f["energy"], str, null=True)
+        if f["kind"] == "R" and f["energy"] is not None:
+            c.bad(w, "an R field with an energy")
+        causes = []
+        for k, p in enumerate(c.list_of(w + ".ports", f["ports"], dict)):
+            wp = "%s.ports[%d]" % (w, k)
+            if not c.keys(wp, p, ["name", "number", "element", "bond", "causality", "law",
+                                  "law_form"]):
+                continue
+            e = by_name.get(p["element"])
+            if e is None or elem_kind.get(p["element"]) != f["kind"]:
+                c.bad(wp + ".element", "not an element of kind %s: %r" % (f["kind"], p["element"]))
+            elif e.get("field") != f["name"] or e.get("port") != p["name"]:
+                c.bad(wp, "element %r names field %r port %r" % (p["element"], e.get("field"),
+                                                                  e.get("port")))
+            elif e["causality"] != p["causality"]:
+                c.bad(wp + ".causality", "%r, the element's is %r" % (p["causality"], e["causality"]))
+            if p["number"] != k + 1:
+                c.bad(wp + ".number", "%r, expected %d" % (p["number"], k + 1))
+            if p["bond"] not in bond_ids:
+                c.bad(wp + ".bond", "unknown bond %r" % p["bond"])
+            c.vocab(wp + ".law_form", p["law_form"], {"e", "f"})
+            causes.append(p["causality"])
+        if f["mixed_causality"] != (len(set(causes)) > 1):
+            c.bad(w + ".mixed_causality", "%r with port causalities %r" % (f["mixed_causality"],
+                                                                           causes))
 
 
 def main(argv):

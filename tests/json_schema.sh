@@ -43,6 +43,12 @@ run class12_free.json "$tmp/class12_free.bg"
 sed 's/^R   R1 = R10/R   R1 = R10 [causality = conductance]/' examples/delta.bg >"$tmp/delta_r1.bg"
 run delta_r1.json "$tmp/delta_r1.bg"
 
+# multiport fields (docs/format.md): the reference models of tests/data/fields
+for f in tests/data/fields/*.bg; do
+  b=$(basename "$f" .bg)
+  for m in scap relaxed vandijk lagrange; do run "field_$b.$m.json" "$f" --causality "$m"; done
+done
+
 if ! python3 tests/json_schema.py "$tmp"/*.json; then fail=$((fail + 1)); fi
 echo "$n documents checked, $fail failures"
 [ "$fail" -eq 0 ] && [ "$n" -gt 0 ]

@@ -180,7 +180,9 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
     in.cluster_label_h = label_h;
   }
   char err[256];
+  bg_fields_lay *fields = bg_fields_compact(d, &in);
   int rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
+  bg_fields_expand(d, fields);
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h);
@@ -188,7 +190,9 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
   const char *rd = m->layout.rankdir;
-  if (!strcmp(in.engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")))
+  /* the grid pass places one node per element: not for fields (one node, several elements) */
+  if (!strcmp(in.engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")) &&
+      !d->rep)
     bg_grid_place(d);
   bg_parts_spread(d);
   return 0;
@@ -370,6 +374,7 @@ static void draw_nodes(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int e = 0; e < m->nelem; e++) {
     if (!bg_node_shown(d, e)) continue; /* inside a collapsed box */
+    if (bg_fields_hidden(d, e)) continue; /* its field's node is drawn */
     bg_rgba c = parse_hex(m->elem_color ? m->elem_color[e] : NULL, d->st.fg);
     char role[160];
     snprintf(role, sizeof role, "node %s", m->elem_name[e]);
@@ -564,6 +569,7 @@ static void draw_all(bg_diagram *d) {
   draw_numbers(d);
   draw_nodes(d);
   bg_draw_parts(d);
+  if (d->m->nfield) bg_draw_field_ports(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
   drawing_fence(d);
   bg_place_layer_labels(d);
@@ -579,6 +585,7 @@ static void draw_all(bg_diagram *d) {
 static int lay_out(bg_diagram *d, bg_diags *dg) {
   if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);
+  bg_fields_prepare(d);
   if (run_layout(d, dg) != 0) return -1;
   bg_geom_bonds(d);
   return 0;
@@ -626,6 +633,7 @@ static void copy_layout(bg_diagram *d, const bg_diagram *src) {
   size_t nn = (size_t)src->nnode + 1, nb = (size_t)m->nbond + 1;
   d->nnode = src->nnode;
   d->lag_node = arena_dup(&d->arena, src->lag_node, sizeof(int) * (size_t)(nlag + 1));
+  d->rep = src->rep ? arena_dup(&d->arena, src->rep, sizeof(int) * nn) : NULL;
   d->state_node = arena_dup(&d->arena, src->state_node, sizeof(int) * ((size_t)m->nstate + 1));
   d->det_draw = arena_dup(&d->arena, src->det_draw, sizeof(int) * ((size_t)m->ndet + 1));
   d->inst_box = arena_dup(&d->arena, src->inst_box, sizeof(int) * ((size_t)m->ninst + 1));

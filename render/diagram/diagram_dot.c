@@ -36,6 +36,11 @@ static int node_part(const bg_diagram *d, int n, int *det) {
 }
 
 static void node_id(const bg_diagram *d, int n, bg_strbuf *out) {
+  int f = n < d->m->nelem ? bg_elem_field(d->m, n) : -1;
+  if (f >= 0) { /* a field is one node, named as the field */
+    dot_str(out, d->m->field_name[f]);
+    return;
+  }
   if (n < d->m->nelem) {
     dot_str(out, d->m->elem_name[n]);
     return;
@@ -78,8 +83,14 @@ static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
   node_id(d, n, out);
   bg_sb_puts(out, " [label=");
   int det = -1, box = n >= m->nelem ? node_part(d, n, &det) : -1;
+  int f = n < m->nelem ? bg_elem_field(m, n) : -1;
   if (n < m->nelem && bg_elem_is_junction(m->elem_kind[n])) dot_str(out, bg_elem_display_kind(m, n));
-  else if (n < m->nelem) {
+  else if (f >= 0) {
+    bg_strbuf l = {0};
+    bg_sb_printf(&l, "%s : %s", bg_elem_kind_name(m->field_kind[f]), m->field_name[f]);
+    dot_str(out, bg_sb_str(&l));
+    bg_sb_free(&l);
+  } else if (n < m->nelem) {
     bg_strbuf l = {0};
     bg_sb_printf(&l, "%s : %s", bg_elem_display_kind(m, n), m->elem_name[n]);
     dot_str(out, bg_sb_str(&l));
@@ -167,6 +178,12 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
   bg_sb_printf(out, ", bg_stroke=%s",
                stroke == BG_STROKE_HEAD ? "head" : stroke == BG_STROKE_TAIL ? "tail" : "none");
   if (d->a && d->a->bond_conflict && d->a->bond_conflict[b]) bg_sb_puts(out, ", color=red, bg_conflict=1");
+  for (int k = 0; k < 2; k++) { /* a field's port: its name at that end */
+    int e = k ? m->bond_head[b] : m->bond_tail[b];
+    if (bg_elem_field(m, e) < 0) continue;
+    bg_sb_puts(out, k ? ", headlabel=" : ", taillabel=");
+    dot_str(out, bg_elem_port_name(m, e));
+  }
   write_pos(d, b, stroke, out);
   bg_sb_puts(out, "];\n");
 }
@@ -244,7 +261,7 @@ void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out) {
   bg_sb_printf(out, "  edge [fontsize=%.1f];\n", d->st.font_size * d->st.number_scale);
   write_layers(d, out);
   for (int n = 0; n < d->nnode; n++)
-    if (bg_node_shown(d, n)) write_node(d, n, out);
+    if (bg_node_shown(d, n) && !bg_fields_hidden(d, n)) write_node(d, n, out);
   for (int b = 0; b < m->nbond; b++)
     if (!d->bond_hidden[b]) write_bond(d, b, out);
   write_extras(d, out);

@@ -36,6 +36,8 @@ struct bg_diagram {
   double *nw, *nh, *nx, *ny; /* box size and centre on the page */
   char **nlabel;             /* pango markup */
   int *lag_node;             /* per Lagrange source: its node, or -1 (a split bond) */
+  int *rep;                  /* per node: the node that draws it (a field's other ports:
+                                its first port's, diagram_fields.c); NULL without fields */
   int *state_node;           /* per user state: its integrator node (drawn when a signal
                                 comes from the state and signals are shown), or -1 */
   int *det_draw;             /* per detector: its node (De : vC), or -1 (inside a box) */
@@ -180,6 +182,16 @@ void bg_draw_frames(bg_diagram *d);
 /* markup: the gain typeset (legend), else plain text (DOT). */
 void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
+
+/* multiport fields (diagram_fields.c): one node per field, ports labelled */
+typedef struct bg_fields_lay bg_fields_lay;
+int bg_fields_hidden(const bg_diagram *d, int n);  /* a port drawn by its field's node */
+void bg_fields_prepare(bg_diagram *d);            /* after the nodes are measured */
+/* Leaves the hidden ports out of the layout input (NULL: nothing to do), and
+ * gives them their field's position after it (frees what compact made). */
+bg_fields_lay *bg_fields_compact(const bg_diagram *d, bg_layout_in *in);
+void bg_fields_expand(bg_diagram *d, bg_fields_lay *L);
+void bg_draw_field_ports(bg_diagram *d);
 
 /* DOT output (diagram_dot.c) */
 void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out);

@@ -25,6 +25,7 @@ static void body(rp_ctx *c) {
   if (c->failed) return;
   progress(c, "trace, tables, index");
   rp_sec_components(c);
+  rp_sec_fields(c);
   rp_sec_trace(c);
   rp_sec_tables(c);
   rp_sec_index(c);

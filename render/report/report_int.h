@@ -212,6 +212,7 @@ void rp_sec_highlights(rp_ctx *c);
 void rp_sec_trace(rp_ctx *c);
 /* report_components.c: instances and bond origins (models with submodels only) */
 void rp_sec_components(rp_ctx *c);
+void rp_sec_fields(rp_ctx *c); /* report_fields.c: multiport fields */
 void rp_sec_tables(rp_ctx *c);
 void rp_sec_index(rp_ctx *c);
 void rp_sec_estimates(rp_ctx *c);

@@ -124,7 +124,10 @@ static int tl_add(tlist *T, const int *s, int n, const char *cause) {
   x->mod_elem = gn.mod_edge >= 0 ? T->g->edge[gn.mod_edge].elem : -1;
   x->linear = tl_linear(T, s, n);
   char buf[160];
-  if (!cause && x->mod_elem >= 0)
+  int field = bg_elem_field(T->m, x->mod_elem);
+  if (!cause && field >= 0) /* a field's ports read each other: its own coupling */
+    snprintf(buf, sizeof buf, "coupling of the ports of field %s", T->m->field_name[field]);
+  else if (!cause && x->mod_elem >= 0)
     snprintf(buf, sizeof buf, "internal modulation of %s", T->m->elem_name[x->mod_elem]);
   else
     snprintf(buf, sizeof buf, "%s", cause ? cause : "coupled causal paths");

@@ -264,20 +264,44 @@ static int var_node(const bg_model *m, int op, int ref) {
   }
 }
 
+/* A store in derivative causality: its state is the inverse of its law at
+ * its input, q = F^-1(e) (C; I likewise), so a read of the state depends on
+ * the input by dq/de = 1/F'(q) (C for a value form e = q/C): *scale, with
+ * the symbol over (value form) or under (law: the slope) the line. The
+ * state's dependence on the law's other variables (a field's sibling ports)
+ * goes through their integrators, not algebraically. */
+static void store_state_scale(builder *B, int st, double *scale, const char **factor) {
+  const bg_model *m = B->m;
+  int root = m->elem_expr[st];
+  if (root < 0) return;
+  if (m->elem_form[st] == BG_FORM_VALUE) {
+    *scale = bg_xeval(m, root, &B->op.env);
+    *factor = param_text(B, st);
+  } else {
+    double d = op_slope(m, root, &B->op, BG_X_STORE, st);
+    *scale = d != 0 ? 1.0 / d : 1;
+    *factor = slope_name(B, st);
+  }
+}
+
 /* Where a modulating reference enters the graph, and through how many
  * integrators: a store's state in integral causality is the output of its
  * integrator, not its effort or flow (C1's law reading C2.q does not read
  * C2.e = F(C2.q, ...), which may read C1.q in turn: two such laws closed an
  * "algebraic loop" the equations do not have). It enters from the
  * integrator's input with order 1. Everything else as var_node. */
-static int var_source(const builder *B, const bg_xnode *x, int *order) {
+static int var_source(builder *B, const bg_xnode *x, int *order, double *scale,
+                      const char **factor) {
   const bg_model *m = B->m;
   *order = 0;
+  *scale = 1;
+  *factor = NULL;
   if (x->op == BG_X_STORE && bg_paths_store_integral(m, B->a, x->ref)) {
     int b = m->elem_bonds[m->elem_bondadr[x->ref]];
     *order = 1;
     return m->elem_kind[x->ref] == BG_ELEM_C ? F_(b) : E_(b);
   }
+  if (x->op == BG_X_STORE) store_state_scale(B, x->ref, scale, factor);
   return var_node(m, x->op, x->ref);
 }
 
@@ -347,6 +371,61 @@ static int own_var(const bg_model *m, int e, const bg_xnode *x) {
   return (x->op == BG_X_EFFORT || x->op == BG_X_FLOW) && x->ref == b;
 }
 
+/* How a modulating variable's slope d of an R law reaches the R's output:
+ * an explicit e-law gives e (d); an explicit f-law gives the own flow, the
+ * bond's times sigma (sigma d); an inverted law y = F(x, m) is solved for its
+ * own variable x: -d / F_x (a field port in the causality its law does not
+ * have, reading its sibling ports: the implicit equation's sensitivity).
+ * Sets *inv when the law is inverted (the slope then stands under the line). */
+static double r_mod_gain(builder *B, int e, int b, double d, int *inv) {
+  const bg_model *m = B->m;
+  int form = m->elem_form[e], lawe = form == BG_FORM_LAW_E;
+  *inv = 0;
+  if (m->elem_kind[e] != BG_ELEM_R || form == BG_FORM_VALUE) return d;
+  int cond = bg_paths_effort_in(m, B->a, e, b);
+  if (lawe != cond) return lawe || m->bond_head[b] == e ? d : -d;
+  double dx = op_slope(m, m->elem_expr[e], &B->op, lawe ? BG_X_FLOW : BG_X_EFFORT, b);
+  *inv = 1;
+  return dx != 0 ? -d / dx : d;
+}
+
+/* A C or I with a law in derivative causality. */
+static int deriv_law_store(const bg_model *m, const bg_analysis *a, int e) {
+  return bg_elem_is_store(m->elem_kind[e]) && m->elem_form[e] != BG_FORM_VALUE &&
+         !bg_paths_store_integral(m, a, e);
+}
+
+/* One modulation edge from a read variable into e's output on bond b. */
+static void mod_edge(builder *B, int e, int b, int var) {
+  const bg_model *m = B->m;
+  const bg_xnode *x = &m->xnode[var];
+  int root = m->elem_expr[e], order, inv;
+  double scale;
+  const char *factor;
+  int u = var_source(B, x, &order, &scale, &factor);
+  double d = op_slope(m, root, &B->op, x->op, x->ref);
+  int out = bg_paths_effort_in(m, B->a, e, b) ? F_(b) : E_(b);
+  if (deriv_law_store(m, B->a, e)) { /* q = F^-1(e, m): the rate reads m' */
+    double fq = op_slope(m, root, &B->op, BG_X_STORE, e);
+    bg_sfg_edge *y = add_edge(B, u, out, BG_SFGE_MOD, e, (fq != 0 ? -d / fq : d) * scale);
+    mod_label(B, y, root, var, m->elem_name[e]);
+    y->linear = op_linear(m, root, &B->op, x->op, x->ref);
+    y->sign = -1;
+    y->den[y->den[0] ? 1 : 0] = slope_name(B, e);
+    y->order = order - 1;
+    if (!order) y->num[y->num[0] ? 1 : 0] = "s";
+    return;
+  }
+  double g = r_mod_gain(B, e, b, d, &inv);
+  bg_sfg_edge *y = add_edge(B, u, out, BG_SFGE_MOD, e, g * scale);
+  mod_label(B, y, root, var, m->elem_name[e]);
+  y->linear = op_linear(m, root, &B->op, x->op, x->ref);
+  if (!inv && d != 0 && g == -d) y->sign = -1;
+  if (inv) y->den[y->den[0] ? 1 : 0] = slope_name(B, e), y->sign = -1;
+  if (factor && !y->num[1]) (m->elem_form[x->ref] == BG_FORM_VALUE ? y->num : y->den)[1] = factor;
+  if (order) y->order = order, y->den[y->den[0] ? 1 : 0] = "s";
+}
+
 /* Edges from each modulating variable of element e into its outputs. */
 static void mod_edges(builder *B, int e) {
   const bg_model *m = B->m;
@@ -354,18 +433,10 @@ static void mod_edges(builder *B, int e) {
   if (root < 0) return;
   int nv = collect_vars(m, root, vs, 64);
   for (int i = 0; i < nv; i++) {
-    const bg_xnode *x = &m->xnode[vs[i]];
-    if (own_var(m, e, x)) continue;
-    int order, u = var_source(B, x, &order);
-    double d = op_slope(m, root, &B->op, x->op, x->ref);
+    if (own_var(m, e, &m->xnode[vs[i]])) continue;
     for (int k = 0; k < m->elem_nbond[e]; k++) {
       int b = m->elem_bonds[m->elem_bondadr[e] + k];
-      if (B->a->bond_stroke[b] == BG_STROKE_NONE) continue;
-      int out = bg_paths_effort_in(m, B->a, e, b) ? F_(b) : E_(b);
-      bg_sfg_edge *y = add_edge(B, u, out, BG_SFGE_MOD, e, d);
-      mod_label(B, y, root, vs[i], m->elem_name[e]);
-      y->linear = op_linear(m, root, &B->op, x->op, x->ref);
-      if (order) y->order = order, y->den[y->den[0] ? 1 : 0] = "s";
+      if (B->a->bond_stroke[b] != BG_STROKE_NONE) mod_edge(B, e, b, vs[i]);
     }
   }
 }
@@ -378,9 +449,10 @@ static void state_edges(builder *B, int s) {
   int nv = collect_vars(m, root, vs, 64);
   for (int i = 0; i < nv; i++) {
     const bg_xnode *x = &m->xnode[vs[i]];
-    double d = op_slope(m, root, &B->op, x->op, x->ref);
-    int order, u = var_source(B, x, &order);
-    bg_sfg_edge *y = add_edge(B, u, 2 * m->nbond + s, BG_SFGE_STATE, -1, d);
+    double d = op_slope(m, root, &B->op, x->op, x->ref), scale;
+    const char *factor;
+    int order, u = var_source(B, x, &order, &scale, &factor);
+    bg_sfg_edge *y = add_edge(B, u, 2 * m->nbond + s, BG_SFGE_STATE, -1, d * scale);
     mod_label(B, y, root, vs[i], m->state_name[s]);
     y->den[1] = "s";
     y->order = 1 + order;

@@ -3,6 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "causality/causality.h"
+
 const char *bg_form_name(int form) {
   switch (form) {
   case BG_FORM_ODE: return "ode";
@@ -64,6 +66,22 @@ static void put_loops(const bg_analysis *a, bg_strbuf *out) {
   bg_sb_putc(out, '\n');
 }
 
+/* One line per multiport field: its ports' causalities, "mixed" when they differ. */
+static void put_fields(const bg_model *m, const bg_analysis *a, bg_strbuf *out) {
+  for (int f = 0; f < m->nfield && f < MAX_NAMES; f++) {
+    int p1 = m->field_elemadr[f], mixed = 0;
+    bg_sb_printf(out, "field %s (%s, %d ports):", m->field_name[f],
+                 bg_elem_kind_name(m->field_kind[f]), m->field_nport[f]);
+    for (int k = 0; k < m->field_nport[f]; k++) {
+      bg_sb_printf(out, "%s %s %s", k ? "," : "", m->elem_name[p1 + k],
+                   bg_caus_name(a->elem_caus[p1 + k]));
+      mixed |= a->elem_caus[p1 + k] != a->elem_caus[p1];
+    }
+    bg_sb_puts(out, mixed ? " (mixed causality)\n" : "\n");
+  }
+  if (m->nfield > MAX_NAMES) bg_sb_printf(out, "fields: ... and %d more\n", m->nfield - MAX_NAMES);
+}
+
 void bg_analysis_summary(const bg_model *m, const bg_analysis *a, bg_strbuf *out) {
   bg_sb_printf(out, "method: %s%s\n", bg_method_name(a->method),
                a->complete ? "" : " (causality incomplete)");
@@ -72,6 +90,7 @@ void bg_analysis_summary(const bg_model *m, const bg_analysis *a, bg_strbuf *out
   bg_sb_puts(out, "\ndependent stores: ");
   put_names(out, a->dependent_stores, a->ndependent);
   bg_sb_putc(out, '\n');
+  put_fields(m, a, out);
   put_conflicts(m, a, out);
   put_paths(a, out);
   put_loops(a, out);

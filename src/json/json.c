@@ -138,6 +138,13 @@ static void put_elements(bg_strbuf *o, const bg_model *m, const bg_analysis *a) 
       bg_sb_puts(o, ", \"instance\": ");
       inst_name_or_null(o, m, m->elem_inst[e]);
     }
+    if (m->nfield) { /* a port of a multiport field: its field and port */
+      int f = bg_elem_field(m, e);
+      bg_sb_puts(o, ", \"field\": ");
+      str_or_null(o, f >= 0 ? m->field_name[f] : NULL);
+      bg_sb_puts(o, ", \"port\": ");
+      str_or_null(o, bg_elem_port_name(m, e));
+    }
     bg_sb_putc(o, '}');
   }
   end_list(o, m->nelem);
@@ -372,6 +379,7 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   bg_sb_puts(o, ",\n");
   put_instances(o, m);
   put_detectors(o, m);
+  bg_json_put_fields(o, m, a);
   /* what the listing caps left out (lower bounds when a search budget ran out) */
   key(o, "omitted");
   bg_sb_printf(o, "{\"causal_paths\": %d, \"causal_loops\": %d, \"topological_loops\": %d, "

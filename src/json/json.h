@@ -10,4 +10,8 @@
 /* Appends the whole document (ending with a newline) to out. Lists the
  * analysis has not filled (count 0) are written empty. */
 void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *out);
+/* The `fields` key and list (json_fields.c; nothing without fields), and
+ * whether field f's ports have more than one causality. */
+void bg_json_put_fields(bg_strbuf *o, const bg_model *m, const bg_analysis *a);
+int bg_json_field_mixed(const bg_model *m, const bg_analysis *a, int f);
 #endif

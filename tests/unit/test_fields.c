@@ -10,6 +10,8 @@
 #include "equations/eqprint.h"
 #include "model/expr.h"
 #include "sym/sym.h"
+#include "json/json.h"
+#include "equations/index.h"
 
 /* Loads tests/data/fields/NAME.bg, applies nedit (from, to) edits, runs. */
 static int load_edits(fx *f, const char *name, const char *const (*edit)[2], int nedit) {
@@ -226,6 +228,124 @@ static void test_reaction(void) {
   fx_free(&f);
 }
 
+
+/* ---------------------------------------------------------------- the chapter's notions */
+/* The causal path between elements named a and b (either order), or -1. */
+static int path_between(const fx *f, const char *a, const char *b) {
+  int ea = bg_model_find_elem(f->m, a), eb = bg_model_find_elem(f->m, b);
+  for (int i = 0; i < f->a.npath; i++)
+    if ((f->a.path_end0[i] == ea && f->a.path_end1[i] == eb) ||
+        (f->a.path_end0[i] == eb && f->a.path_end1[i] == ea))
+      return i;
+  return -1;
+}
+
+static int numeric_index(fx *f) {
+  bg_index_result r;
+  memset(&r, 0, sizeof r);
+  int k = bg_index_compute(f->s, f->m, &r);
+  bg_index_free(&r);
+  return k;
+}
+
+/* Dependent store in a field: mixed causality, a class 1 path between two
+ * ports of one field, index 1 predicted and numeric, and the trajectory of
+ * the hand-derived DAE (q1 = (b - c) F t/(a + b - 2c)). */
+static void test_dependent_port(void) {
+  fx f;
+  OK(load_data(&f, "dependent", NULL, NULL) == 0 && f.s && f.rc == 0);
+  if (!f.s) { fx_free(&f); return; }
+  int k1 = bg_model_find_elem(f.m, "K.1"), k2 = bg_model_find_elem(f.m, "K.2");
+  INT_EQ(f.a.elem_caus[k1], BG_CAUS_INTEGRAL);
+  INT_EQ(f.a.elem_caus[k2], BG_CAUS_DERIVATIVE);
+  INT_EQ(f.a.ndependent, 1);
+  STR_EQ(f.a.ndependent ? f.a.dependent_stores[0] : NULL, "K.2");
+  int p = path_between(&f, "K.1", "K.2");
+  OK(p >= 0);
+  INT_EQ(p >= 0 ? f.a.path_class[p] : -1, 1);
+  INT_EQ(f.a.index_predicted, 1);
+  INT_EQ(numeric_index(&f), 1);
+  /* the field's coupling closes an algebraic loop of gain c/b through the
+   * dependent port (q2 = (e - c q1)/b): not 1, so solvable */
+  int found = 0;
+  for (int i = 0; i < f.a.ntloop; i++)
+    if (has(f.a.tloop_cause[i], "coupling of the ports of field K") && f.a.tloop_algebraic[i]) {
+      found = 1;
+      DBL_NEAR(f.a.tloop_gain_value[i], 1.0 / 5.0, 1e-9);
+    }
+  OK(found);
+  OK(bg_json_field_mixed(f.m, &f.a, 0));
+  int c1 = col(&f.r, "K.1.q"), c2 = col(&f.r, "K.2.q");
+  double worst = 0;
+  for (int i = 0; c1 >= 0 && c2 >= 0 && i < f.r.nrows; i++) {
+    double t = f.r.t[i], Q = 2 * t; /* F0 = 2, a = 3, b = 5, c = 1 */
+    worst = fmax(worst, fabs(val(&f.r, i, c1) - 4 * Q / 6));
+    worst = fmax(worst, fabs(val(&f.r, i, c2) - 2 * Q / 6));
+  }
+  OK(c1 >= 0 && c2 >= 0 && f.r.nrows == 5);
+  BG_T_REPORT(worst < 1e-6, "dependent port against the hand-derived solution: %g", worst);
+  fx_free(&f);
+}
+
+/* An R field port in the causality its law does not have: solved
+ * implicitly; a class 2 path between the field's port and Ra; the field's
+ * coupling an algebraic loop of gain Rm^2/(R1 R2); index 1; the trajectory
+ * q(t) = q_inf + (q0 - q_inf) exp(-t/(C0 Reff)). */
+static void test_implicit_r_field(void) {
+  fx f;
+  OK(load_data(&f, "implicit", NULL, NULL) == 0 && f.s && f.rc == 0);
+  if (!f.s) { fx_free(&f); return; }
+  int r1 = bg_model_find_elem(f.m, "Rf.1"), r2 = bg_model_find_elem(f.m, "Rf.2");
+  INT_EQ(f.a.elem_caus[r2], BG_CAUS_CONDUCTANCE);
+  INT_EQ(f.a.elem_inverted[r2], 1);
+  INT_EQ(f.a.elem_caus[r1], BG_CAUS_CONDUCTANCE);
+  int p = path_between(&f, "Ra", "Rf.1");
+  OK(p >= 0);
+  INT_EQ(p >= 0 ? f.a.path_class[p] : -1, 2);
+  INT_EQ(f.a.index_predicted, 1);
+  INT_EQ(numeric_index(&f), 1);
+  int found = 0;
+  for (int i = 0; i < f.a.ntloop; i++)
+    if (has(f.a.tloop_cause[i], "coupling of the ports of field Rf") && f.a.tloop_algebraic[i]) {
+      found = 1;
+      DBL_NEAR(f.a.tloop_gain_value[i], 1.0 / 8.0, 1e-9);
+    }
+  OK(found);
+  const double U0 = 2, F2 = 0.5, Rt = 1 + 2, R2 = 4, Rm = 1, C0 = 0.5, Reff = R2 - Rm * Rm / Rt;
+  const double qinf = C0 * (F2 * Reff + Rm * U0 / Rt);
+  int cq = col(&f.r, "C2.q");
+  double worst = 0;
+  for (int i = 0; cq >= 0 && i < f.r.nrows; i++)
+    worst = fmax(worst, fabs(val(&f.r, i, cq) - qinf * (1 - exp(-f.r.t[i] / (C0 * Reff)))));
+  OK(cq >= 0 && f.r.nrows == 7);
+  BG_T_REPORT(worst < 1e-6, "implicit R field against the closed form: %g", worst);
+  fx_free(&f);
+}
+
+/* A causality option per port that propagation contradicts is a conflict
+ * at that port; a time constant from a path between a field port and an R:
+ * Rs times the port's capacitance eps A / x0 (the slope of its effort). */
+static void test_conflict_and_estimate(void) {
+  fx f;
+  OK(load_data(&f, "dependent", "c*q1*q2 + b*q2^2/2", "c*q1*q2 + b*q2^2/2  [causality = (integral, integral)]") == 0);
+  if (f.m) {
+    int k2 = bg_model_find_elem(f.m, "K.2"), n = 0;
+    for (int i = 0; i < f.a.nconflict; i++) n += f.a.conflict_node[i] == k2;
+    INT_EQ(n, 1);
+  }
+  fx_free(&f);
+  OK(load_data(&f, "transducer", NULL, NULL) == 0);
+  int p = f.m ? path_between(&f, "K.el", "Rs1") : -1, est = 0;
+  OK(p >= 0);
+  for (int i = 0; i < f.a.nestimate; i++)
+    if (f.a.estimate_path[i] == p && f.a.estimate_kind[i] == 0) {
+      est = 1;
+      DBL_NEAR(f.a.estimate_value[i], 1.0, 1e-9); /* Rs eps A / x0 = 1 */
+    }
+  OK(est);
+  fx_free(&f);
+}
+
 int main(void) {
   test_ports_as_elements();
   test_numbered_laws_equal_energy();
@@ -233,5 +353,8 @@ int main(void) {
   test_transducer_equations();
   test_transducer_trajectory();
   test_reaction();
+  test_dependent_port();
+  test_implicit_r_field();
+  test_conflict_and_estimate();
   return bg_t_done();
 }
