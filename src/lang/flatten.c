@@ -293,7 +293,9 @@ static bg_flat *make_result(fl_flattener *f) {
   r->inst = bg_xmalloc((size_t)(f->ninst ? f->ninst : 1) * sizeof *r->inst);
   for (int i = 0; i < f->ninst; i++) r->inst[i] = f->inst[i].pub;
   r->ninst = f->ninst;
-  r->elem_inst = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->elem_inst);
+  size_t nel = 1; /* a multiport field's statement makes one element per port */
+  for (int i = 0; i < f->nstmts; i++) nel += f->stmts[i].is_field ? (size_t)f->stmts[i].nitems : 1;
+  r->elem_inst = bg_xmalloc(nel * sizeof *r->elem_inst);
   r->bond_segadr = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_segadr);
   r->bond_nseg = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_nseg);
   r->seg = bg_xmalloc((size_t)(f->nsegs + 1) * sizeof *r->seg);
@@ -301,7 +303,8 @@ static bg_flat *make_result(fl_flattener *f) {
     const bg_ast_stmt *s = &f->stmts[i];
     if ((int)s->kind < 0) continue; /* a bond segment joined into another statement */
     r->ast->stmts[r->ast->nstmts++] = *s;
-    if (s->kind == BG_ST_ELEMENT && !bg_ast_is_detector(s)) /* a detector is no element */
+    for (int k = 0; s->kind == BG_ST_ELEMENT && !bg_ast_is_detector(s) &&
+                    k < (s->is_field ? s->nitems : 1); k++) /* a detector is no element */
       r->elem_inst[r->nelem++] = f->stmt_inst[i];
     if (s->kind != BG_ST_BOND) continue;
     int c = f->slot_chain[i];

@@ -22,7 +22,25 @@ typedef struct fl_scopectx {
   int *stmt_inst;       /* per statement of the def: the instance it made, -1 */
   int *bond_seg;        /* per statement: its segment, -1 */
   int law;              /* rewriting an element law: e, f, q, p are its own */
+  const bg_ast_stmt *field; /* rewriting a multiport field's laws: its port variables
+                               (e1, q2, el.e) are its own, not the scope's names */
 } fl_scopectx;
+
+/* e1, f2, q3: a numbered port's variable in a field's law */
+static int port_var_name(const char *s) {
+  if (!strchr("efq", s[0]) || !s[0] || !s[1]) return 0;
+  for (const char *p = s + 1; *p; p++)
+    if (!isdigit((unsigned char)*p)) return 0;
+  return 1;
+}
+
+/* el.e in a field's law: the head names one of the field's ports. */
+static int field_port_path(const fl_scopectx *c, const char *path) {
+  size_t n = strcspn(path, ".");
+  for (int k = 0; c->field && k < c->field->nitems; k++)
+    if (strlen(c->field->items[k].name) == n && !strncmp(c->field->items[k].name, path, n)) return 1;
+  return 0;
+}
 
 static fl_def *ctx_def(const fl_scopectx *c) { return &c->f->defs[c->def]; }
 static int in_model(const fl_scopectx *c) { return c->inst < 0; }
@@ -50,6 +68,7 @@ static void rewrite_name(fl_scopectx *c, bg_expr *x) {
   fl_flattener *f = c->f;
   if (in_model(c) || !strcmp(x->str, "t") || !strcmp(x->str, "pi")) return;
   if (c->law && strchr("efqp", x->str[0]) && !x->str[1]) return;
+  if (c->field && port_var_name(x->str)) return;
   int num = bond_var_number(x->str);
   if (num > 0) {
     *FL_PUSH(f->bondvars, f->nbondvars) = (fl_bondvar){x, c->inst, num};
@@ -84,6 +103,7 @@ static const sc_entry *path_head(const fl_scopectx *c, const char *path) {
  * (M1.K), which is decided once every flat name is known. */
 static void rewrite_field(fl_scopectx *c, bg_expr *x) {
   fl_flattener *f = c->f;
+  if (field_port_path(c, x->str)) return; /* a port of the field whose law this is */
   const sc_entry *n = path_head(c, x->str);
   if (n && n->kind == SC_INST) *FL_PUSH(f->fields, f->nfields) = x;
   if (in_model(c)) return;
@@ -135,6 +155,29 @@ static int emit(fl_flattener *f, const bg_ast_stmt *s, int inst) {
   return k;
 }
 
+/* A field's ports (names as written: they are qualified with the field) and
+ * its laws (port variables left as they are, other names qualified). */
+static void copy_field(fl_scopectx *c, const bg_ast_stmt *s, bg_ast_stmt *x) {
+  fl_flattener *f = c->f;
+  x->items = bg_arena_alloc(&f->out->arena, (size_t)(s->nitems ? s->nitems : 1) * sizeof *x->items);
+  for (int k = 0; k < s->nitems; k++) {
+    x->items[k] = s->items[k];
+    x->items[k].name = bg_fl_strdup(f, s->items[k].name);
+    x->items[k].loc = moved(c, s->items[k].loc);
+  }
+  x->nitems = s->nitems;
+  x->laws = bg_arena_alloc(&f->out->arena, (size_t)(s->nlaws ? s->nlaws : 1) * sizeof *x->laws);
+  c->field = s;
+  for (int k = 0; k < s->nlaws; k++) {
+    x->laws[k] = s->laws[k];
+    x->laws[k].name = bg_fl_strdup(f, s->laws[k].name);
+    x->laws[k].loc = moved(c, s->laws[k].loc);
+    x->laws[k].value = rewrite(c, s->laws[k].value);
+  }
+  c->field = NULL;
+  x->nlaws = s->nlaws;
+}
+
 static bg_ast_stmt copy_stmt(fl_scopectx *c, const bg_ast_stmt *s) {
   fl_flattener *f = c->f;
   bg_ast_stmt x = *s;
@@ -164,6 +207,7 @@ static bg_ast_stmt copy_stmt(fl_scopectx *c, const bg_ast_stmt *s) {
   }
   x.items = NULL;
   x.nitems = 0;
+  if (s->is_field) copy_field(c, s, &x);
   return x;
 }
 
@@ -235,7 +279,7 @@ static void expand_instance(fl_scopectx *c, int k) {
   in->src = bg_diags_add_context(f->dg, f->files[d->file].ast->file, in->pub.loc, msg);
   c->stmt_inst[k] = ii;
   fl_scopectx child = {f, di, ii, in->pub.name, in->src, c->depth + 1,
-                       in->pub.bond_offset + d->maxnum, NULL, NULL, 0};
+                       in->pub.bond_offset + d->maxnum, NULL, NULL, 0, NULL};
   if (child.depth > MAX_INSTANCE_DEPTH) {
     bg_diag_error(f->dg, in->pub.loc, "instances nested too deeply (more than %d levels)",
                   MAX_INSTANCE_DEPTH);
@@ -355,6 +399,10 @@ static fl_end resolve_end(fl_scopectx *c, const char *name, bg_srcloc loc, int s
   const sc_entry *n = path_head(c, name);
   if (strchr(name, '.')) {
     if (n && n->kind == SC_INST) return resolve_port(c, name, loc, seg, is_head, n);
+    if (n && n->kind == SC_ELEM) { /* K.el: a port of a field (the compiler checks it) */
+      end.node = bg_fl_join(f, c->prefix, name);
+      return end;
+    }
     bg_diag_error(f->dg, loc, "'%.*s' is not an instance; a dotted bond end names a port of an "
                   "instance (M1.a)", (int)strcspn(name, "."), name);
     return end;
@@ -385,6 +433,6 @@ static fl_end resolve_end(fl_scopectx *c, const char *name, bg_srcloc loc, int s
 }
 
 void bg_fl_expand_model(fl_flattener *f, int root) {
-  fl_scopectx c = {f, root, -1, "", f->files[0].ast->file, 0, f->defs[root].maxnum, NULL, NULL, 0};
+  fl_scopectx c = {f, root, -1, "", f->files[0].ast->file, 0, f->defs[root].maxnum, NULL, NULL, 0, NULL};
   expand_scope(&c);
 }

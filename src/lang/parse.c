@@ -602,10 +602,12 @@ static void parse_element(parser *p, const bg_token *kind) {
 
 /* ---------------------------------------------------------------- fields */
 /* A port given by number: 1 .. 10^6. */
+enum { MAX_FIELD_PORTS = 256 }; /* as many as a list of names may hold */
+
 static int port_count(parser *p, const bg_token *t) {
-  if (!(t->num >= 1 && t->num <= 1e6) || t->num != floor(t->num))
-    fail_at(p, t, "a field's number of ports must be a whole number from 1 to 1000000, not '%s'",
-            t->text);
+  if (!(t->num >= 1 && t->num <= MAX_FIELD_PORTS) || t->num != floor(t->num))
+    fail_at(p, t, "a field's number of ports must be a whole number from 1 to %d, not '%s'",
+            MAX_FIELD_PORTS, t->text);
   return (int)t->num;
 }
 
@@ -628,6 +630,7 @@ static void parse_field_ports(parser *p, int si) {
     s->field_numbered = 1;
   } else {
     bg_ast_stmt tmp = {0};
+    if (at(p, BG_TK_RPAREN)) fail_at(p, cur(p), "a field needs at least one port: K(a, b) or K(2)");
     parse_items(p, &tmp, BG_TK_RPAREN, 0, "a port name (or the number of ports)");
     s = &p->stmts[si];
     s->items = tmp.items;

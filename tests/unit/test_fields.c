@@ -346,6 +346,35 @@ static void test_conflict_and_estimate(void) {
   fx_free(&f);
 }
 
+/* A field inside a submodel: qualified by the instance (T1.K.el), joined
+ * through the submodel's ports, the same trajectories as the flat model; a
+ * field of the model's own scope beside it (K, both ports driven by efforts:
+ * derivative causality). */
+static void test_field_in_submodel(void) {
+  fx a, b;
+  OK(load_data(&a, "transducer", NULL, NULL) == 0 && a.rc == 0);
+  OK(load_data(&b, "transducer_sub", NULL, NULL) == 0 && b.rc == 0);
+  if (!b.m) { fx_free(&a); fx_free(&b); return; }
+  INT_EQ(b.m->nfield, 2);
+  STR_EQ(b.m->field_name[0], "T1.K");
+  int el = bg_model_find_elem(b.m, "T1.K.el"), k2 = bg_model_find_elem(b.m, "K.2");
+  OK(el >= 0 && k2 >= 0);
+  INT_EQ(el >= 0 ? b.m->elem_inst[el] : -2, 0);
+  INT_EQ(k2 >= 0 ? b.a.elem_caus[k2] : -1, BG_CAUS_DERIVATIVE);
+  static const char *const cols[][2] = {{"K.el.q", "T1.K.el.q"}, {"K.mech.q", "T1.K.mech.q"},
+                                        {"mass.p", "mass.p"}};
+  double worst = 0;
+  for (int c = 0; c < 3; c++) {
+    int ca = col(&a.r, cols[c][0]), cb = col(&b.r, cols[c][1]);
+    OK(ca >= 0 && cb >= 0 && a.r.nrows == b.r.nrows);
+    for (int i = 0; ca >= 0 && cb >= 0 && i < a.r.nrows && i < b.r.nrows; i++)
+      worst = fmax(worst, fabs(val(&a.r, i, ca) - val(&b.r, i, cb)));
+  }
+  BG_T_REPORT(worst < 1e-6, "field in a submodel against the flat model: %g", worst);
+  fx_free(&a);
+  fx_free(&b);
+}
+
 int main(void) {
   test_ports_as_elements();
   test_numbered_laws_equal_energy();
@@ -356,5 +385,6 @@ int main(void) {
   test_dependent_port();
   test_implicit_r_field();
   test_conflict_and_estimate();
+  test_field_in_submodel();
   return bg_t_done();
 }
