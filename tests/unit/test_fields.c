@@ -197,6 +197,16 @@ static void test_transducer_trajectory(void) {
     for (int k = 0; k < 3; k++) worst = fmax(worst, fabs(d[k]));
   }
   BG_T_REPORT(worst < 1e-6, "transducer against RK4: worst difference %g", worst);
+  /* port mech's bond drawn out of the field: the same trajectories */
+  fx g;
+  OK(load_data(&g, "transducer", "bond jm -> K.mech", "bond K.mech -> jm") == 0 && g.rc == 0);
+  int gx = col(&g.r, "K.mech.q");
+  double diff = 0;
+  for (int i = 0; gx >= 0 && cx >= 0 && i < f.r.nrows && i < g.r.nrows; i++)
+    diff = fmax(diff, fabs(val(&f.r, i, cx) - val(&g.r, i, gx)));
+  OK(gx >= 0 && g.r.nrows == f.r.nrows);
+  BG_T_REPORT(diff < 1e-9, "transducer with port mech's bond reversed: %g", diff);
+  fx_free(&g);
   /* the plates were pulled together: the gap is below x0 at the end */
   OK(cx >= 0 && val(&f.r, f.r.nrows - 1, cx) < 0.99);
   fx_free(&f);
@@ -225,6 +235,16 @@ static void test_reaction(void) {
   }
   OK(ca >= 0 && cb >= 0 && f.r.nrows == 17);
   BG_T_REPORT(worst < 1e-6, "reaction against the closed form: worst difference %g", worst);
+  /* the own-variable convention: port b's bond drawn out of the field means the same */
+  fx g;
+  OK(load_data(&g, "reaction", "bond jB -> Re.b", "bond Re.b -> jB") == 0 && g.rc == 0);
+  int gb = col(&g.r, "B.q");
+  double diff = 0;
+  for (int i = 0; gb >= 0 && cb >= 0 && i < f.r.nrows && i < g.r.nrows; i++)
+    diff = fmax(diff, fabs(val(&f.r, i, cb) - val(&g.r, i, gb)));
+  OK(gb >= 0 && g.r.nrows == f.r.nrows);
+  BG_T_REPORT(diff < 1e-9, "reaction with port b's bond reversed: %g", diff);
+  fx_free(&g);
   fx_free(&f);
 }
 
