@@ -34,7 +34,13 @@ grep -q '"je" -> "K" \[label="3".*headlabel="el"' "$tmp/t.dot" &&
   grep -q '"jm" -> "K" \[label="4".*headlabel="mech"' "$tmp/t.dot"
 check "DOT: bonds 3 and 4 at ports el and mech" $?
 
-for m in transducer reaction dependent implicit; do
+# the ports' laws in the JSON: the energy's gradient, simplified
+"$BGDRAW" $d/transducer.bg -o "$tmp/t.json"
+grep -q '"element": "K.el", "bond": 3, "causality": "integral", "law": "K.el.q\*K.mech.q/(eps\*A)", "law_form": "e"' "$tmp/t.json" &&
+  grep -q '"law": "0.5\*K.el.q^2/(eps\*A)"' "$tmp/t.json"
+check "JSON: the gradient's components e_el = q x/(eps A), e_mech = q^2/(2 eps A)" $?
+
+for m in transducer reaction dependent implicit transducer_sub; do
   for k in 1 2; do
     "$BGDRAW" $d/$m.bg -q -o "$tmp/$m.$k.svg" -o "$tmp/$m.$k.json" -o "$tmp/$m.$k.csv" \
       --report "$tmp/$m.$k.pdf" 2>"$tmp/err" >/dev/null

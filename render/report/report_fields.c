@@ -5,7 +5,7 @@
 #include <stdio.h>
 
 #include "causality/causality.h"
-#include "model/expr.h"
+#include "sym/sym.h"
 #include "report/report_int.h"
 
 static void field_table(rp_ctx *c, int f) {
@@ -21,7 +21,7 @@ static void field_table(rp_ctx *c, int f) {
     rp_table_text(&t, bg_caus_name(c->a->elem_caus[e]));
     bg_strbuf law = {0};
     bg_sb_puts(&law, m->elem_form[e] == BG_FORM_LAW_F ? "f = " : "e = ");
-    bg_xprint(m, m->elem_expr[e], &law);
+    bg_sym_print_model_expr(m, m->elem_expr[e], &law);
     rp_table_text(&t, bg_sb_str(&law));
     bg_sb_free(&law);
   }
@@ -46,7 +46,7 @@ void rp_sec_fields(rp_ctx *c) {
     bg_sb_free(&h);
     if (m->field_energy[f] >= 0) {
       bg_strbuf w = {0}, p = {0};
-      bg_xprint(m, m->field_energy[f], &w);
+      bg_sym_print_model_expr(m, m->field_energy[f], &w);
       bg_sb_puts(&p, "Energy <tt>");
       bg_markup_escapen(&p, bg_sb_str(&w), w.len);
       bg_sb_puts(&p, "</tt>: each port's effort is the energy's derivative by the port's q (its gradient).");

@@ -4,7 +4,7 @@
 #include "json/json.h"
 
 #include "causality/causality.h"
-#include "model/expr.h"
+#include "sym/sym.h"
 
 /* 1 when the ports of field f do not all have one causality. */
 int bg_json_field_mixed(const bg_model *m, const bg_analysis *a, int f) {
@@ -24,7 +24,7 @@ static void put_port(bg_strbuf *o, const bg_model *m, const bg_analysis *a, int 
   bg_sb_json_str(o, bg_caus_name(a->elem_caus[e]));
   bg_sb_puts(o, ", \"law\": ");
   bg_strbuf law = {0};
-  bg_xprint(m, m->elem_expr[e], &law);
+  bg_sym_print_model_expr(m, m->elem_expr[e], &law);
   bg_sb_json_str(o, law.s ? law.s : "");
   bg_sb_free(&law);
   bg_sb_puts(o, ", \"law_form\": ");
@@ -45,7 +45,7 @@ void bg_json_put_fields(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
     if (m->field_energy[f] < 0) bg_sb_puts(o, "null");
     else {
       bg_strbuf w = {0};
-      bg_xprint(m, m->field_energy[f], &w);
+      bg_sym_print_model_expr(m, m->field_energy[f], &w);
       bg_sb_json_str(o, w.s ? w.s : "");
       bg_sb_free(&w);
     }

@@ -100,8 +100,8 @@ static int law_port(bg_build *b, int f, const bg_ast_item *law, char *v) {
     *v = dot[1] && !dot[2] ? dot[1] : 0;
     pe = port_elem(m, f, port, 0);
   } else if (strchr("efq", lhs[0]) && lhs[1] && strspn(lhs + 1, "0123456789") == strlen(lhs + 1)) {
-    *v = lhs[0];
-    pe = port_elem(m, f, NULL, atoi(lhs + 1));
+    *v = lhs[0]; /* more digits than any port number has: no port */
+    pe = strlen(lhs + 1) > 7 ? -1 : port_elem(m, f, NULL, atoi(lhs + 1));
   } else {
     *v = 0;
   }

@@ -171,4 +171,8 @@ double bg_sym_eval(bg_sym *S, int a, const bg_symenv *env);
  * by the caller (params, inputs and t by the model). latex: 0 text, 1 LaTeX. */
 typedef void (*bg_sym_namefn)(void *ctx, int kind, int ref, int latex, bg_strbuf *out);
 void bg_sym_print(bg_sym *S, int a, int latex, bg_sym_namefn name, void *ctx, bg_strbuf *out);
+/* Model expression `root` simplified and printed as text (sym_xprint.c):
+ * store states C1.q / L1.p, user states and params by name, bond
+ * variables e7 / f7. */
+void bg_sym_print_model_expr(const bg_model *m, int root, bg_strbuf *out);
 #endif
