@@ -46,7 +46,7 @@ int bg_elem_in_bond(const bg_model *m, int elem) { return bond_at_end(m, elem, 1
 int bg_elem_out_bond(const bg_model *m, int elem) { return bond_at_end(m, elem, 0); }
 
 int bg_elem_field(const bg_model *m, int elem) {
-  return m->elem_field && elem >= 0 && elem < m->nelem ? m->elem_field[elem] : -1;
+  return m->nfield > 0 && m->elem_field && elem >= 0 && elem < m->nelem ? m->elem_field[elem] : -1;
 }
 
 const char *bg_elem_port_name(const bg_model *m, int elem) {
