@@ -268,6 +268,23 @@ static int numeric_index(fx *f) {
   return k;
 }
 
+/* A causal path of class cls between a and b, predicted and numeric index 1,
+ * and an algebraic loop with that cause and gain. */
+static void check_paths_index(fx *f, const char *a, const char *b, int cls, const char *cause,
+                              double gain) {
+  int p = path_between(f, a, b), found = 0;
+  OK(p >= 0);
+  INT_EQ(p >= 0 ? f->a.path_class[p] : -1, cls);
+  INT_EQ(f->a.index_predicted, 1);
+  INT_EQ(numeric_index(f), 1);
+  for (int i = 0; i < f->a.ntloop; i++)
+    if (has(f->a.tloop_cause[i], cause) && f->a.tloop_algebraic[i]) {
+      found = 1;
+      DBL_NEAR(f->a.tloop_gain_value[i], gain, 1e-9);
+    }
+  BG_T_REPORT(found, "an algebraic loop from %s", cause);
+}
+
 /* Dependent store in a field: mixed causality, a class 1 path between two
  * ports of one field, index 1 predicted and numeric, and the trajectory of
  * the hand-derived DAE (q1 = (b - c) F t/(a + b - 2c)). */
@@ -280,20 +297,9 @@ static void test_dependent_port(void) {
   INT_EQ(f.a.elem_caus[k2], BG_CAUS_DERIVATIVE);
   INT_EQ(f.a.ndependent, 1);
   STR_EQ(f.a.ndependent ? f.a.dependent_stores[0] : NULL, "K.2");
-  int p = path_between(&f, "K.1", "K.2");
-  OK(p >= 0);
-  INT_EQ(p >= 0 ? f.a.path_class[p] : -1, 1);
-  INT_EQ(f.a.index_predicted, 1);
-  INT_EQ(numeric_index(&f), 1);
   /* the field's coupling closes an algebraic loop of gain c/b through the
    * dependent port (q2 = (e - c q1)/b): not 1, so solvable */
-  int found = 0;
-  for (int i = 0; i < f.a.ntloop; i++)
-    if (has(f.a.tloop_cause[i], "coupling of the ports of field K") && f.a.tloop_algebraic[i]) {
-      found = 1;
-      DBL_NEAR(f.a.tloop_gain_value[i], 1.0 / 5.0, 1e-9);
-    }
-  OK(found);
+  check_paths_index(&f, "K.1", "K.2", 1, "coupling of the ports of field K", 1.0 / 5.0);
   OK(bg_json_field_mixed(f.m, &f.a, 0));
   int c1 = col(&f.r, "K.1.q"), c2 = col(&f.r, "K.2.q");
   double worst = 0;
@@ -319,18 +325,7 @@ static void test_implicit_r_field(void) {
   INT_EQ(f.a.elem_caus[r2], BG_CAUS_CONDUCTANCE);
   INT_EQ(f.a.elem_inverted[r2], 1);
   INT_EQ(f.a.elem_caus[r1], BG_CAUS_CONDUCTANCE);
-  int p = path_between(&f, "Ra", "Rf.1");
-  OK(p >= 0);
-  INT_EQ(p >= 0 ? f.a.path_class[p] : -1, 2);
-  INT_EQ(f.a.index_predicted, 1);
-  INT_EQ(numeric_index(&f), 1);
-  int found = 0;
-  for (int i = 0; i < f.a.ntloop; i++)
-    if (has(f.a.tloop_cause[i], "coupling of the ports of field Rf") && f.a.tloop_algebraic[i]) {
-      found = 1;
-      DBL_NEAR(f.a.tloop_gain_value[i], 1.0 / 8.0, 1e-9);
-    }
-  OK(found);
+  check_paths_index(&f, "Ra", "Rf.1", 2, "coupling of the ports of field Rf", 1.0 / 8.0);
   const double U0 = 2, F2 = 0.5, Rt = 1 + 2, R2 = 4, Rm = 1, C0 = 0.5, Reff = R2 - Rm * Rm / Rt;
   const double qinf = C0 * (F2 * Reff + Rm * U0 / Rt);
   int cq = col(&f.r, "C2.q");
