@@ -108,10 +108,6 @@ int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind,
   return 0;
 }
 
-int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
-  return declare(b, name, loc, kind, id);
-}
-
 static int common_prefix(const char *a, const char *b) {
   int n = 0;
   while (a[n] && a[n] == b[n]) n++;
