@@ -54,4 +54,8 @@ pdftotext "$tmp/transducer.1.pdf" - 2>/dev/null | grep -q "C field K: 2 ports"
 check "report: the Multiport fields section" $?
 pdftotext "$tmp/dependent.1.pdf" - 2>/dev/null | grep -q "C field K: 2 ports, mixed causality"
 check "report: mixed causality" $?
+# --collapse and fields are not combined yet: a clean refusal, no output
+"$BGDRAW" $d/transducer_sub.bg --collapse T1 -o "$tmp/coll.svg" 2>"$tmp/err"
+[ $? -ne 0 ] && [ ! -e "$tmp/coll.svg" ] && grep -q "cannot draw a model with multiport fields" "$tmp/err"
+check "--collapse with a field refused" $?
 finish

@@ -180,6 +180,13 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
     in.cluster_label_h = label_h;
   }
   char err[256];
+  if (d->rep && d->ncollapsed) { /* both leave nodes out of the layout: not combined yet */
+    bg_diag_error(dg, (bg_srcloc){0}, "--collapse cannot draw a model with multiport fields yet; "
+                  "draw it without --collapse");
+    free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
+    free(cluster), free(label_h);
+    return -1;
+  }
   bg_fields_lay *fields = bg_fields_compact(d, &in);
   int rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
   bg_fields_expand(d, fields);
