@@ -25,6 +25,8 @@ typedef struct bg_plot_spec {
   int xlog;          /* log10 abscissa with decade ticks and a minor grid */
   const char *xname; /* the axis name ("ω"); NULL: the panels' xlabel or "t" */
   const char *xunit; /* written as " [unit]"; NULL: seconds with the axis' SI prefix */
+  int angle_panel;   /* 1-based panel whose values are degrees (ticks at multiples of
+                        45, or 90 on large ranges); 0: none */
 } bg_plot_spec;
 void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_spec *spec,
                         const bg_style *st, double width, double height, bg_scene *out);

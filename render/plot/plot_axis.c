@@ -105,6 +105,24 @@ void bg_plot_axis_make(double lo, double hi, int maxn, int pad, bg_plot_axis *ax
   label_format(ax);
 }
 
+/* Angles: the step is 45 degrees, or 90 (and 180, 360, ... doubling) when
+ * 45 would give more than maxn intervals or the range spans more than 360;
+ * the limits snap outward to multiples of the step, so the frame starts and
+ * ends on a tick (a constant phase of 0 gets -45 .. 45). */
+void bg_plot_axis_degrees(double lo, double hi, int maxn, bg_plot_axis *ax) {
+  memset(ax, 0, sizeof *ax);
+  sane_range(&lo, &hi);
+  if (maxn < 2) maxn = 2;
+  double step = 45;
+  if (hi - lo > 360) step = 90;
+  while ((ceil(hi / step - 1e-9) - floor(lo / step + 1e-9)) > maxn && step < 1e300) step *= 2;
+  double k0 = floor(lo / step + 1e-9), k1 = ceil(hi / step - 1e-9);
+  if (k1 <= k0) k1 = k0 + 1;
+  ax->lo = k0 * step, ax->hi = k1 * step;
+  ax->step = step, ax->k0 = k0, ax->n = (int)(k1 - k0 + 1);
+  ax->exp3 = 0, ax->decimals = 0; /* whole degrees, no SI prefix */
+}
+
 double bg_plot_tick(const bg_plot_axis *ax, int i) {
   double k = ax->k0 + i;
   return k == 0 ? 0 : k * ax->step;

@@ -31,6 +31,11 @@ double bg_plot_nice_step(double raw);
  * step within the limits. */
 void bg_plot_axis_make(double lo, double hi, int maxn, int pad, bg_plot_axis *ax);
 
+/* Ticks for angles in degrees over [lo, hi]: multiples of 45 (90 when the
+ * range is large, doubling further to stay within maxn intervals); the
+ * limits are the enclosing multiples of the step. */
+void bg_plot_axis_degrees(double lo, double hi, int maxn, bg_plot_axis *ax);
+
 /* Value of tick i. */
 double bg_plot_tick(const bg_plot_axis *ax, int i);
 

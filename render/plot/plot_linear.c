@@ -143,21 +143,70 @@ static void nyq_axes(nyq *N, const char *xl, const char *yl) {
   bg_scene_text(N->s, yl, 8, N->top - 4, 0.9 * N->st->font_size, 0, 1, N->st->fg, "ylabel 1");
 }
 
-/* H(jw) for w > 0 solid, its mirror (w < 0) in the same style, thinner. */
-static void nyq_curve(nyq *N, const double *re, const double *im, int nw, int j) {
-  for (int mirror = 0; mirror < 2; mirror++) {
-    bg_scene_item *it = bg_scene_begin(N->s, BG_ITEM_STROKE, "curve 1.%d", j + 1);
-    bg_plot_curve_style(N->st, j, it);
-    if (mirror) it->width *= 0.5;
-    int down = 0;
-    for (int k = 0; k < nw; k++) {
-      double x = re[k], y = mirror ? -im[k] : im[k];
-      if (!isfinite(x) || !isfinite(y) || x < N->x.lo || x > N->x.hi || y < N->y.lo || y > N->y.hi) { down = 0; continue; }
-      if (down) bg_scene_line(N->s, nx(N, x), ny(N, y));
-      else bg_scene_move(N->s, nx(N, x), ny(N, y));
-      down = 1;
+/* The visible points of one branch in screen coordinates, in the order of
+ * increasing frequency (the mirror, w < 0, runs from -w_max to -w_min:
+ * backwards through the data); a point outside the axes (or not finite)
+ * starts a new run: brk[i] = 1. Returns the count. */
+static int nyq_points(const nyq *N, const double *re, const double *im, int nw, int mirror, double *px,
+                      double *py, unsigned char *brk) {
+  int m = 0, down = 0;
+  for (int q = 0; q < nw; q++) {
+    int k = mirror ? nw - 1 - q : q;
+    double x = re[k], y = mirror ? -im[k] : im[k];
+    if (!isfinite(x) || !isfinite(y) || x < N->x.lo || x > N->x.hi || y < N->y.lo || y > N->y.hi) {
+      down = 0;
+      continue;
+    }
+    px[m] = nx(N, x), py[m] = ny(N, y), brk[m++] = !down;
+    down = 1;
+  }
+  return m;
+}
+
+/* Filled arrowheads pointing along the branch (increasing frequency) at 1/3
+ * and 2/3 of its visible length, each centred on the curve. */
+static void nyq_arrows(nyq *N, const double *px, const double *py, const unsigned char *brk, int m, int j,
+                       int mirror) {
+  double total = 0;
+  for (int i = 1; i < m; i++) if (!brk[i]) total += hypot(px[i] - px[i - 1], py[i] - py[i - 1]);
+  if (!(total > 30)) return; /* too short to carry arrows */
+  for (int a = 1; a <= 2; a++) {
+    double want = total * a / 3, run = 0;
+    for (int i = 1; i < m; i++) {
+      if (brk[i]) continue;
+      double dx = px[i] - px[i - 1], dy = py[i] - py[i - 1], len = hypot(dx, dy);
+      if (run + len < want || len == 0) { run += len; continue; }
+      double f = (want - run) / len, cx = px[i - 1] + f * dx, cy = py[i - 1] + f * dy;
+      double ux = dx / len, uy = dy / len, h = mirror ? 5 : 7, w = mirror ? 2.2 : 3;
+      bg_scene_item *it = bg_scene_begin(N->s, BG_ITEM_FILL, "arrow 1.%d%s", j + 1, mirror ? " mirror" : "");
+      bg_plot_curve_style(N->st, j, it);
+      it->fill = it->color, it->width = 0, it->dash[0] = it->dash[1] = 0;
+      bg_scene_move(N->s, cx + ux * h / 2, cy + uy * h / 2); /* the tip */
+      bg_scene_line(N->s, cx - ux * h / 2 - uy * w, cy - uy * h / 2 + ux * w);
+      bg_scene_line(N->s, cx - ux * h / 2 + uy * w, cy - uy * h / 2 - ux * w);
+      bg_scene_close(N->s);
+      break;
     }
   }
+}
+
+/* H(jw) for w > 0 in the pair's style, its mirror (w < 0) thinner and
+ * dashed; arrows in the direction of increasing frequency on both. */
+static void nyq_curve(nyq *N, const double *re, const double *im, int nw, int j) {
+  double *px = bg_xcalloc((size_t)nw + 1, sizeof *px), *py = bg_xcalloc((size_t)nw + 1, sizeof *py);
+  unsigned char *brk = bg_xcalloc((size_t)nw + 1, 1);
+  for (int mirror = 0; mirror < 2; mirror++) {
+    int m = nyq_points(N, re, im, nw, mirror, px, py, brk);
+    bg_scene_item *it = bg_scene_begin(N->s, BG_ITEM_STROKE, "curve 1.%d%s", j + 1, mirror ? " mirror" : "");
+    bg_plot_curve_style(N->st, j, it);
+    if (mirror) it->width *= 0.6, it->round = 0, it->dash[0] = 3, it->dash[1] = 2.5;
+    for (int i = 0; i < m; i++) {
+      if (brk[i]) bg_scene_move(N->s, px[i], py[i]);
+      else bg_scene_line(N->s, px[i], py[i]);
+    }
+    nyq_arrows(N, px, py, brk, m, j, mirror);
+  }
+  free(px), free(py), free(brk);
 }
 
 /* The data range with the critical point -1 + 0j, clipped to a few times
@@ -224,7 +273,7 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
   if (kind == BG_PLOT_NYQUIST) return nyquist_scene(m, l, st, width, out);
   table T;
   int rc = kind == BG_PLOT_BODE ? bode_table(m, l, &T) : step_table(m, l, &T);
-  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s"}, time = {0, "t", NULL};
+  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2}, time = {0, "t", NULL, 0};
   if (rc == 0) bg_plot_scene_spec(&T.m, &T.r, kind == BG_PLOT_BODE ? &bode : &time, st, width, 0, out);
   table_free(&T);
   return rc;
