@@ -544,14 +544,16 @@ static void keep_page(bg_diagram *d) {
  * signals, numbers, labels, conflicts, and the path tags and loop gains on
  * top. Text is placed clear of what was drawn before it (diagram_place.c):
  * numbers, tags and gains see the bonds, nodes, signals and polylines. */
-/* Path tags and gains keep to the box of what is drawn before them (nodes,
- * bonds, numbers, signals, the path and loop lines), grown by the margin;
- * bands around it count as obstacles: a highlighted diagram redrawn from a
- * full one then stays on its page (its drawing is inside the full one's,
- * whose page is that much larger), and a fresh build of it draws the same. */
+/* In a highlighted diagram the path tag or gain keeps to the box of what
+ * is drawn before it (nodes, bonds, numbers, signals, its line), grown by
+ * the margin; bands around it count as obstacles. Redrawn from a full
+ * diagram (as the report does), whose drawing holds this one's and whose
+ * page is the margin larger, it then stays on that page, and a fresh build
+ * draws the same. A full diagram's tags need no fence: they keep beside
+ * their lines, and the page grows around them. */
 static void drawing_fence(bg_diagram *d) {
   double x0, y0, x1, y1, t = 120, g = d->st.margin;
-  if (!bg_scene_bbox(&d->scene, &x0, &y0, &x1, &y1)) return;
+  if (!d->o.highlight_kind || !bg_scene_bbox(&d->scene, &x0, &y0, &x1, &y1)) return;
   x0 -= g, y0 -= g, x1 += g, y1 += g;
   for (int twice = 0; twice < 2; twice++) { /* outside costs as much as two labels covered */
     bg_obstacle_rect(d, x0 - t, y0 - t, x1 + t, y0);

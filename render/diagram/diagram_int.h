@@ -54,6 +54,8 @@ struct bg_diagram {
   double *jr;                /* per node: radius of a junction's end circle, else 0 */
   unsigned char *hot_bond, *hot_elem; /* highlight: what stays in colour */
   int *side_use;             /* per bond side: layers already drawn there */
+  int *side_total, *side_home; /* per bond side: layers drawn there in all, the one that runs
+                                  outermost (diagram_layers.c, plan_homes) */
   struct bg_obstacles *obs;  /* what labels must avoid (diagram_place.c) */
   int *loop_path;            /* per topological loop: the causal path whose polyline also
                                 draws it (a flat loop caused by a shown path), or -1 */

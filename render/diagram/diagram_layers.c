@@ -71,34 +71,46 @@ static int other_end(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
 }
 
-static void seg_geom(bg_diagram *d, seg *s) {
-  const bg_model *m = d->m;
+/* Layers stack on a bond side in drawing order, each 3 pt (more for thick
+ * lines) beyond the one before, except the side's home layer
+ * (bg_layers_prepare), which runs outermost; once the home is drawn, the
+ * layers after it close up. side_home: the home's key, -2 - key once it is
+ * drawn, -1 for none. */
+static int side_rank(const bg_diagram *d, int side, int key) {
+  int home = d->side_home ? d->side_home[side] : -1;
+  if (home == key) return d->side_total[side] - 1;
+  return d->side_use[side] - (home <= -2);
+}
+
+static void seg_geom(bg_diagram *d, seg *s, int key) {
   s->dir = bg_vunit(bg_vsub(centre(d, s->v), centre(d, s->u)));
   s->n = bg_vleft(s->dir);
-  int side = s->fwd ? 0 : 1;
-  (void)m;
-  /* each further layer on this side 3 pt out (more for thick lines) */
   double step = fmax(3, 2.5 * d->st.layer_width);
-  s->off = d->st.layer_offset + step * d->side_use[2 * s->b + side];
+  s->off = d->st.layer_offset + step * side_rank(d, 2 * s->b + (s->fwd ? 0 : 1), key);
 }
 
 /* One more layer on each side of a bond this polyline ran along (once for
  * the legs of a bent bond). */
-static void claim_sides(bg_diagram *d, const seg *s, int n) {
-  for (int i = 0; i < n; i++)
-    if (i == 0 || s[i].b != s[i - 1].b || s[i].fwd != s[i - 1].fwd) d->side_use[2 * s[i].b + (s[i].fwd ? 0 : 1)]++;
+static void claim_sides(bg_diagram *d, const seg *s, int n, int key) {
+  for (int i = 0; i < n; i++) {
+    if (i > 0 && s[i].b == s[i - 1].b && s[i].fwd == s[i - 1].fwd) continue;
+    int side = 2 * s[i].b + (s[i].fwd ? 0 : 1);
+    d->side_use[side]++;
+    if (d->side_home && d->side_home[side] == key) d->side_home[side] = -2 - key;
+  }
 }
 
 static double cross(bg_vec a, bg_vec b) { return a.x * b.y - a.y * b.x; }
 
-/* A half turn around the end of bond s->b at node s->v. */
-static joint turn(const bg_diagram *d, const seg *s) {
+/* A half turn around the end of bond s->b at node s->v, from s's offset
+ * to t's (the way back, on the other side; its own rank there). */
+static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
   bg_vec e = bg_box_exit(centre(d, v), d->nw[v] / 2, d->nh[v] / 2, centre(d, s->u));
-  bg_vec t = bg_vsub(e, bg_vscale(s->dir, s->off + 1));
-  bg_vec k = bg_vscale(s->dir, 4.0 / 3 * s->off);
-  joint j = {2, bg_vadd(t, bg_vscale(s->n, s->off)), bg_vsub(t, bg_vscale(s->n, s->off)), {0, 0}, {0, 0}, 0, {{0, 0}}};
-  j.c1 = bg_vadd(j.p0, k), j.c2 = bg_vadd(j.p1, k);
+  bg_vec base = bg_vsub(e, bg_vscale(s->dir, fmax(s->off, t->off) + 1));
+  joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}};
+  j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, 4.0 / 3 * s->off));
+  j.c2 = bg_vadd(j.p1, bg_vscale(s->dir, 4.0 / 3 * t->off));
   return j;
 }
 
@@ -170,7 +182,7 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
   bg_vec c = centre(d, v);
   if (t->u != s->v) return jump(d, s, t);
-  if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s);
+  if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s, t);
   bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
   joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}};
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
@@ -248,9 +260,8 @@ typedef struct run {
 } run;
 
 /* Draws a closed layer polyline through the segments, with an arrow at the
- * middle of each; returns the centroid of its corners and writes each
- * segment's straight run to runs (n of them). */
-static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged, run *runs) {
+ * middle of each; writes each segment's straight run to runs (n of them). */
+static void draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged, run *runs) {
   const char *name = kind == 'p' ? "path" : "loop";
   joint *j = bg_xcalloc((size_t)n, sizeof *j);
   for (int k = 0; k < n; k++) j[k] = join(d, &s[k], &s[(k + 1) % n]);
@@ -266,8 +277,7 @@ static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int m
   it->color = c, it->width = d->st.layer_width, it->round = 1;
   bg_layer_dash(d, kind, i, it->dash);
   bg_scene_move(&d->scene, j[n - 1].p1.x, j[n - 1].p1.y);
-  bg_vec sum = bg_v(0, 0);
-  for (int k = 0; k < n; k++) emit_joint(&d->scene, &j[k]), sum = bg_vadd(sum, j[k].p0);
+  for (int k = 0; k < n; k++) emit_joint(&d->scene, &j[k]);
   bg_scene_close(&d->scene);
   for (int k = 0; k < n; k++) {
     bg_vec a = j[(k + n - 1) % n].p1, b = j[k].p0;
@@ -279,13 +289,11 @@ static bg_vec draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int m
     bg_geom_arrowhead(&d->scene, mid, s[k].dir, 5, 4);
   }
   free(j);
-  return bg_vscale(sum, 1.0 / n);
 }
 
 /* ---------------------------------------------------------------- labels */
-/* A path tag or loop gain, placed after every line is drawn: beside one of
- * the straight runs of its own polyline (in order of preference), else at
- * one of a few extra candidates (an open loop's centroid). */
+/* A path tag or loop gain, placed after every line is drawn beside one of
+ * the straight runs of its own polyline (in order of preference). */
 struct bg_layer_label {
   const char *markup;
   bg_rgba color;
@@ -293,22 +301,19 @@ struct bg_layer_label {
   int owner;     /* its polyline: index in d->poly + 1 */
   run *runs;
   int nrun;
-  bg_vec *cand;
-  int ncand;
 };
 
-static bg_layer_label *new_label(bg_diagram *d, const char *markup, bg_rgba c, int nrun, int ncand) {
+/* A label for the polyline drawn next, its markup set later. */
+static bg_layer_label *new_label(bg_diagram *d, bg_rgba c, int nrun) {
   if (d->nlabels == d->caplabels) {
     d->caplabels = d->caplabels ? 2 * d->caplabels : 16;
     d->labels = bg_xrealloc(d->labels, (size_t)d->caplabels * sizeof *d->labels);
   }
   bg_layer_label *L = &d->labels[d->nlabels++];
-  L->markup = bg_arena_strdup(&d->arena, markup);
   L->color = c;
   L->owner = d->npoly + 1; /* its polyline is drawn next */
   L->runs = bg_arena_alloc(&d->arena, sizeof(run) * (size_t)(nrun + 1));
-  L->cand = bg_arena_alloc(&d->arena, sizeof(bg_vec) * (size_t)(ncand + 1));
-  L->nrun = L->ncand = 0;
+  L->nrun = 0;
   return L;
 }
 
@@ -350,12 +355,13 @@ enum { TAG_GAP = 2 }; /* between a tag's box and its line */
 
 /* What a label at p costs: the obstacles it touches (bg_place_score, 4
  * each), 2 when another polyline comes nearer to it than its own line (the
- * box grown by the gap) and 1 when one comes within 6 pt more, so a tag
+ * box grown by its distance from its own line, out beyond the gap) and 1
+ * when one comes within 6 pt more, so a tag
  * does not nestle between other layers when there is open room: a tag a
  * little astray is better than one over a line. 0 is a perfect place. */
-static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h) {
+static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h, double out) {
   int c = 4 * bg_place_score(d, p, w, h);
-  double g = 2 * (TAG_GAP + 1), far = g + 12;
+  double g = 2 * (TAG_GAP + out + 1), far = g + 12;
   if (bg_place_others(d, p, w + far, h + far, L->owner) > 0)
     c += 1 + (bg_place_others(d, p, w + g, h + g, L->owner) > 0);
   return c;
@@ -373,27 +379,23 @@ static int try_run(bg_diagram *d, const bg_layer_label *L, const run *r, int sid
   for (int k = 0; k == 0 || k * step <= room; k++)
     for (int sgn = -1; sgn <= (k ? 1 : -1); sgn += 2) {
       bg_vec p = bg_vadd(mid, bg_vscale(dir, sgn * k * step));
-      int c = label_cost(d, L, p, w, h);
+      int c = label_cost(d, L, p, w, h, out);
       if (*best_cost < 0 || c < *best_cost) *best = p, *best_cost = c;
       if (c == 0) return 1;
     }
   return 0;
 }
 
-/* The label's place: beside its own runs (outside at the gap, then inside,
- * then 4 pt further out), else its extra candidates; the cheapest, the
- * first of equals. */
+/* The label's place beside its own runs: outside at the gap, then inside
+ * (an open loop's gain inside its bond loop), then 4 and 8 pt further out;
+ * the cheapest, the first of equals. */
 static bg_vec label_place(bg_diagram *d, const bg_layer_label *L, double w, double h) {
   static const struct { int side; double out; } pass[] = {{1, 0}, {-1, 0}, {1, 4}, {-1, 4}, {1, 8}, {-1, 8}};
-  bg_vec best = L->ncand ? L->cand[0] : bg_v(0, 0);
+  bg_vec best = L->nrun ? bg_vscale(bg_vadd(L->runs[0].a, L->runs[0].b), 0.5) : bg_v(0, 0);
   int best_cost = -1;
   for (size_t p = 0; p < sizeof pass / sizeof pass[0]; p++)
     for (int k = 0; k < L->nrun; k++)
       if (try_run(d, L, &L->runs[k], pass[p].side, pass[p].out, w, h, &best, &best_cost)) return best;
-  for (int k = 0; k < L->ncand; k++) {
-    int c = label_cost(d, L, L->cand[k], w, h);
-    if (best_cost < 0 || c < best_cost) best = L->cand[k], best_cost = c;
-  }
   return best;
 }
 
@@ -483,6 +485,51 @@ static int path_segs(const bg_diagram *d, int p, seg *s) {
   return 2 * n;
 }
 
+/* Effort travels towards the stroke end, flow away from it. */
+static seg signal_seg(const bg_diagram *d, int sig) {
+  const bg_model *m = d->m;
+  int b = sig / 2, flow = sig & 1;
+  int head_stroke = d->a->bond_stroke[b] != BG_STROKE_TAIL;
+  int forward = flow ? !head_stroke : head_stroke;
+  int u = forward ? m->bond_tail[b] : m->bond_head[b];
+  return (seg){b, u, other_end(m, b, u), 0, {0, 0}, {0, 0}, 0};
+}
+
+/* A layer's identity among all of them: paths, then loops. */
+static int layer_key(const bg_diagram *d, int kind, int i) { return kind == 'p' ? i : d->a->npath + i; }
+
+/* Whether layer (kind, i) is drawn: its layer is shown or it is the
+ * highlight (a flat loop drawn with its path is not drawn itself). */
+static int layer_drawn(const bg_diagram *d, int kind, int i) {
+  const bg_analysis *a = d->a;
+  unsigned flag = kind == 'p' ? BG_SHOW_PATHS : BG_SHOW_LOOPS;
+  if (!(d->show & flag) && !(d->o.highlight_kind == kind && d->o.highlight_index == i + 1)) return 0;
+  if (kind == 'p') return a->path_n[i] >= 1;
+  return d->loop_path[i] < 0 && a->tloop_n[i] >= 1;
+}
+
+/* The segments of a drawn layer (corners of bent bonds split; *n of
+ * them), the caller frees them; NULL when it is not drawn. */
+static seg *layer_segs(const bg_diagram *d, int kind, int i, int *n) {
+  const bg_analysis *a = d->a;
+  if (!layer_drawn(d, kind, i)) return NULL;
+  seg *s;
+  if (kind == 'p') {
+    s = bg_xcalloc(2 * (size_t)a->path_n[i], sizeof *s);
+    *n = path_segs(d, i, s);
+  } else {
+    *n = a->tloop_n[i];
+    s = bg_xcalloc((size_t)*n, sizeof *s);
+    for (int k = 0; k < *n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[i] + k]);
+  }
+  *n = visible_segs(d, s, *n);
+  if (*n == 0) { /* wholly inside a collapsed instance */
+    free(s);
+    return NULL;
+  }
+  return split_bends(d, s, n);
+}
+
 /* Order of drawing: a highlighted layer goes last, on top of the greyed ones. */
 static int layer_at(const bg_diagram *d, int kind, int k, int n) {
   if (d->o.highlight_kind != kind) return k;
@@ -492,21 +539,13 @@ static int layer_at(const bg_diagram *d, int kind, int k, int n) {
 }
 
 static void draw_path(bg_diagram *d, int p) {
-  const bg_analysis *a = d->a;
-  if (!(d->show & BG_SHOW_PATHS) && !layer_hot(d, 'p', p)) return;
-  if (a->path_n[p] < 1) return;
-  {
-    seg *s = bg_xcalloc(2 * (size_t)a->path_n[p], sizeof *s);
-    int n = visible_segs(d, s, path_segs(d, p, s));
-    if (n == 0) { /* wholly inside a collapsed instance */
-      free(s);
-      return;
-    }
-    s = split_bends(d, s, &n);
-    for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
+  int n, key = layer_key(d, 'p', p);
+  seg *s = layer_segs(d, 'p', p, &n);
+  if (s) {
+    for (int k = 0; k < n; k++) seg_geom(d, &s[k], key);
     int l = path_loop(d, p);
     run *runs = bg_xcalloc((size_t)n, sizeof *runs);
-    bg_layer_label *L = new_label(d, "", bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), n, 0);
+    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), n);
     draw_polyline(d, s, n, 'p', p, l, runs);
     /* the tag (with the gain of the flat loop drawn along) outside the
      * polyline, beside a bond from the middle of the path outwards */
@@ -523,7 +562,7 @@ static void draw_path(bg_diagram *d, int p) {
     label_runs(L, runs, order, n, w, h);
     free(order), free(runs);
     bg_sb_free(&t);
-    claim_sides(d, s, n);
+    claim_sides(d, s, n, key);
     free(s);
   }
 }
@@ -534,51 +573,27 @@ void bg_draw_paths(bg_diagram *d) {
 }
 
 /* ---------------------------------------------------------------- loops */
-/* Effort travels towards the stroke end, flow away from it. */
-static seg signal_seg(const bg_diagram *d, int sig) {
-  const bg_model *m = d->m;
-  int b = sig / 2, flow = sig & 1;
-  int head_stroke = d->a->bond_stroke[b] != BG_STROKE_TAIL;
-  int forward = flow ? !head_stroke : head_stroke;
-  int u = forward ? m->bond_tail[b] : m->bond_head[b];
-  return (seg){b, u, other_end(m, b, u), 0, {0, 0}, {0, 0}, 0};
-}
-
 static void draw_loop(bg_diagram *d, int l) {
-  const bg_analysis *a = d->a;
-  if (!(d->show & BG_SHOW_LOOPS) && !layer_hot(d, 'l', l)) return;
-  if (d->loop_path[l] >= 0) return; /* drawn with its causal path */
-  int n = a->tloop_n[l];
-  if (n < 1) return;
-  {
-    seg *s = bg_xcalloc((size_t)n, sizeof *s);
-    for (int k = 0; k < n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[l] + k]);
-    n = visible_segs(d, s, n);
-    if (n == 0) {
-      free(s);
-      return;
-    }
-    s = split_bends(d, s, &n);
-    for (int k = 0; k < n; k++) seg_geom(d, &s[k]);
+  int n, key = layer_key(d, 'l', l);
+  seg *s = layer_segs(d, 'l', l, &n);
+  if (s) {
+    for (int k = 0; k < n; k++) seg_geom(d, &s[k], key);
     run *runs = bg_xcalloc((size_t)n, sizeof *runs);
-    bg_layer_label *L = new_label(d, "", bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), n, 5);
-    bg_vec c = draw_polyline(d, s, n, 'l', l, -1, runs);
-    /* the gain: an open loop's at its centroid (inside a bond loop), a flat
-     * loop's outside its polyline, like a path tag */
+    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), n);
+    draw_polyline(d, s, n, 'l', l, -1, runs);
+    /* the gain beside the loop's line, like a path tag */
     bg_strbuf t = {0};
     gain_text(d, l, &t);
     double w, h;
     measure_label(d, bg_sb_str(&t), &w, &h);
     L->markup = bg_arena_strdup(&d->arena, bg_sb_str(&t));
     snprintf(L->role, sizeof L->role, "gain loop=%d", l + 1);
-    if (a->tloop_kind[l] == BG_TLOOP_OPEN)
-      for (int k = 0; k < 5; k++) L->cand[L->ncand++] = bg_v(c.x, c.y + ((k + 1) / 2) * (k % 2 ? -1 : 1) * (h + 1));
     int *order = bg_xcalloc((size_t)n, sizeof *order);
     middle_first(order, n);
     label_runs(L, runs, order, n, w, h);
     free(order), free(runs);
     bg_sb_free(&t);
-    claim_sides(d, s, n);
+    claim_sides(d, s, n, key);
     free(s);
   }
 }
@@ -588,9 +603,57 @@ void bg_draw_loops(bg_diagram *d) {
   for (int k = 0; k < n; k++) draw_loop(d, layer_at(d, 'l', k, n));
 }
 
+/* ---------------------------------------------------------------- homes */
+/* The side a layer takes as its home: of those no other layer has, the one
+ * with the fewest layers (beside a horizontal bond on ties, where a tag sits
+ * closest), from the middle of the layer outwards; -1 when none is left. */
+static int choose_home(const bg_diagram *d, const seg *s, int n) {
+  int *order = bg_xcalloc((size_t)n, sizeof *order), best = -1, best_cost = 0;
+  middle_first(order, n);
+  for (int k = 0; k < n; k++) {
+    const seg *t = &s[order[k]];
+    int side = 2 * t->b + (t->fwd ? 0 : 1);
+    bg_vec dir = bg_vsub(centre(d, t->v), centre(d, t->u));
+    int cost = 2 * d->side_total[side] + (fabs(dir.y) > fabs(dir.x));
+    if (d->side_home[side] == -1 && (best < 0 || cost < best_cost)) best = side, best_cost = cost;
+  }
+  free(order);
+  return best;
+}
+
+/* Layers stack on a bond side in drawing order, so a layer drawn early can
+ * run between others on every bond it follows, and no place beside its
+ * line has that line as the nearest: its tag would read as another's.
+ * Before drawing, each layer (in drawing order) gets a home side
+ * (choose_home) where it runs outermost (seg_geom); pass 0 counts the
+ * layers on each side. */
+static void plan_homes(bg_diagram *d) {
+  size_t nside = 2 * (size_t)d->m->nbond + 1;
+  d->side_total = bg_arena_alloc(&d->arena, nside * sizeof(int));
+  d->side_home = bg_arena_alloc(&d->arena, nside * sizeof(int));
+  memset(d->side_total, 0, nside * sizeof(int));
+  for (size_t k = 0; k < nside; k++) d->side_home[k] = -1;
+  static const int kinds[2] = {'p', 'l'};
+  for (int pass = 0; d->a && pass < 2; pass++)
+    for (int ki = 0; ki < 2; ki++) {
+      int kd = kinds[ki], count = kd == 'p' ? d->a->npath : d->a->ntloop;
+      for (int k = 0; k < count; k++) {
+        int n, i = layer_at(d, kd, k, count);
+        seg *s = layer_segs(d, kd, i, &n);
+        if (!s) continue;
+        for (int j = 0; pass == 0 && j < n; j++)
+          if (j == 0 || s[j].b != s[j - 1].b || s[j].fwd != s[j - 1].fwd) d->side_total[2 * s[j].b + (s[j].fwd ? 0 : 1)]++;
+        int home = pass == 1 ? choose_home(d, s, n) : -1;
+        if (home >= 0) d->side_home[home] = layer_key(d, kd, i);
+        free(s);
+      }
+    }
+}
+
 /* A flat loop caused by a causal path runs exactly where the path's polyline
  * runs (out along the path and back): when both layers are shown, and the
- * highlight does not single out either, the path's polyline draws both. */
+ * highlight does not single out either, the path's polyline draws both.
+ * Then every drawn layer gets its home (plan_homes). */
 void bg_layers_prepare(bg_diagram *d) {
   const bg_analysis *a = d->a;
   int n = a ? a->ntloop : 0;
@@ -609,4 +672,5 @@ void bg_layers_prepare(bg_diagram *d) {
       p = -1;
     d->loop_path[l] = p;
   }
+  plan_homes(d);
 }

@@ -290,16 +290,18 @@ static int fc_own_overlay(const fc_line *l, const fc_box *t) {
 /* A tag or gain whose nearest overlay is not its own, or more than 12 pt from its own. */
 static int fc_tag_far(const fc_scene *f, const fc_box *t) {
   double own = 1e300, other = 1e300;
+  int near = -1;
   for (int j = 0; j < f->nline; j++) {
     const fc_line *l = &f->line[j];
     if (l->kind != FC_OVERLAY) continue;
     double d = fc_line_box(l, t);
     if (fc_own_overlay(l, t)) own = fmin(own, d);
-    else other = fmin(other, d);
+    else if (d < other) other = d, near = j;
   }
   if (fc_explain && (other < own || own > 12))
-    printf("  tag far: %s %d at (%.0f,%.0f): own %.1f, other %.1f\n", t->loop ? "loop" : "path",
-           t->loop ? t->loop : t->id, t->x0, t->y0, own, other);
+    printf("  tag far: %s %d at (%.0f,%.0f): own %.1f, other %.1f (path %d loop %d)\n", t->loop ? "loop" : "path",
+           t->loop ? t->loop : t->id, t->x0, t->y0, own, other, near >= 0 ? f->line[near].id : 0,
+           near >= 0 ? f->line[near].loop : 0);
   return other < own || own > 12;
 }
 
