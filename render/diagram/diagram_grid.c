@@ -43,6 +43,8 @@ static unsigned long long cell_key(int x, int y) {
   return ((unsigned long long)(unsigned)x << 32) | (unsigned)y;
 }
 
+enum { RELEASED = -1000000 }; /* a cell given back (rip-up): free, but keeps its probe chain */
+
 /* The slot of cell (x, y): its own, or the empty one where it would go. */
 static int cell_slot(const grid *g, unsigned long long k) {
   unsigned mask = (unsigned)g->cap - 1, i = (unsigned)((k * 0x9E3779B97F4A7C15ull) >> 32) & mask;
@@ -50,7 +52,10 @@ static int cell_slot(const grid *g, unsigned long long k) {
   return (int)i;
 }
 
-static int cell_free(const grid *g, int x, int y) { return g->val[cell_slot(g, cell_key(x, y))] == -1; }
+static int cell_free(const grid *g, int x, int y) {
+  int v = g->val[cell_slot(g, cell_key(x, y))];
+  return v == -1 || v == RELEASED;
+}
 
 static void cell_grow(grid *g) {
   long long *key = g->key;
@@ -259,7 +264,8 @@ static int side_of(int dx, int dy) {
 }
 
 /* Walks the route through pts[0..n) (axis-parallel legs): with take == 0
- * whether every cell but the two ends is free, else claims them for edge e. */
+ * whether every cell but the two ends is free, with take 1 claims them for
+ * edge e, with take -1 gives them back. */
 static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
   for (int k = 0; k + 1 < n; k++) {
     int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
@@ -267,7 +273,8 @@ static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
     while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
       x += sx, y += sy;
       if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
-      if (take) cell_take(g, x, y, -2 - e);
+      if (take > 0) cell_take(g, x, y, -2 - e);
+      else if (take < 0) g->val[cell_slot(g, cell_key(x, y))] = RELEASED;
       else if (!cell_free(g, x, y)) return 0;
     }
   }
@@ -309,11 +316,55 @@ static int route(grid *g, int e, int pass) {
   return 0;
 }
 
+/* Edge e's route as points (its ends and corners); returns how many. */
+static int route_points(const grid *g, int e, int (*pts)[2]) {
+  int n = 0;
+  pts[n][0] = g->gx[g->et[e]], pts[n++][1] = g->gy[g->et[e]];
+  for (int k = 0; k < g->bent[e]; k++) pts[n][0] = g->corner[e][2 * k], pts[n++][1] = g->corner[e][2 * k + 1];
+  pts[n][0] = g->gx[g->eh[e]], pts[n++][1] = g->gy[g->eh[e]];
+  return n;
+}
+
+/* Takes edge e's route away: its cells and the sides at its ends. */
+static void unroute(grid *g, int e) {
+  int pts[6][2], n = route_points(g, e, pts);
+  walk(g, (const int(*)[2])pts, n, -1, e);
+  g->sides[g->et[e]] &= (unsigned char)~side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
+  g->sides[g->eh[e]] &= (unsigned char)~side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
+  g->bent[e] = -1;
+}
+
+static int is_hub_bond(const grid *g, int e) {
+  return g->hub[g->et[e]] && g->hub[g->eh[e]] && g->et[e] != g->eh[e];
+}
+
+/* Edge e found no route: a bond at one of its ends, routed before it, may
+ * block the only side it can reach (loop_class1: bond 3 straight down from
+ * the upper 0-junction, where bond 2 from inside the loop must arrive).
+ * Each such bond f is taken away, e routed, then f again (an elbow may do);
+ * if either fails, f goes back where it was. */
+static void rip_up(grid *g, int e) {
+  for (int end = 0; end < 2 && g->bent[e] < 0; end++) {
+    int v = end ? g->eh[e] : g->et[e];
+    for (int k = g->adr[v]; k < g->adr[v + 1] && g->bent[e] < 0; k++) {
+      int f = g->adj[k], pts[6][2], n;
+      if (f == e || g->bent[f] < 0 || !is_hub_bond(g, f)) continue;
+      n = route_points(g, f, pts);
+      unroute(g, f);
+      if ((route(g, e, 0) || route(g, e, 1)) && (route(g, f, 0) || route(g, f, 1))) return;
+      if (g->bent[e] >= 0) unroute(g, e);
+      try_route(g, f, (const int(*)[2])pts, n); /* back as it was: its cells are free again */
+    }
+  }
+}
+
 static void route_hub_bonds(grid *g) {
   for (int e = 0; e < g->ne; e++) g->bent[e] = -1;
   for (int pass = 0; pass < 2; pass++)
     for (int e = 0; e < g->ne; e++)
-      if (g->bent[e] < 0 && g->hub[g->et[e]] && g->hub[g->eh[e]] && g->et[e] != g->eh[e]) route(g, e, pass);
+      if (g->bent[e] < 0 && is_hub_bond(g, e)) route(g, e, pass);
+  for (int e = 0; e < g->ne; e++)
+    if (g->bent[e] < 0 && is_hub_bond(g, e)) rip_up(g, e);
 }
 
 /* ---------------------------------------------------------------- one-ports */

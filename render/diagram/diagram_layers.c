@@ -21,11 +21,12 @@ typedef struct seg {
 } seg;
 
 /* How the polyline passes a node: entry point p0, exit p1 (kind 0: p1 = p0;
- * 1: a straight link; 2: a half-turn curve with controls c1, c2). */
+ * 1: a straight link; 2: a half-turn curve
+ * with controls c1, c2). */
 typedef struct joint {
   int kind;
   bg_vec p0, p1, c1, c2;
-  int ncorner;      /* kind 3: around a collapsed instance's box, through these corners */
+  int ncorner;      /* kind 3: round a collapsed instance's box or a two-port's label, through these corners */
   bg_vec corner[6];
 } joint;
 
@@ -122,6 +123,43 @@ static bg_vec beside_node(const bg_diagram *d, const seg *s, int v, int other) {
   return bg_vadd(bg_box_exit(c, hw, hh, centre(d, other)), bg_vscale(s->n, s->off));
 }
 
+/* Where p lies on the boundary of the box [x0, x1] × [y0, y1] (moved onto
+ * it first), as the length walked clockwise (on a y-down page) from the
+ * top left corner. */
+static double perimeter_at(const double *b, bg_vec p) {
+  double x = fmax(b[0], fmin(b[2], p.x)), y = fmax(b[1], fmin(b[3], p.y)), w = b[2] - b[0], h = b[3] - b[1];
+  double dt = y - b[1], dr = b[2] - x, db = b[3] - y, dl = x - b[0], m = fmin(fmin(dt, dr), fmin(db, dl));
+  if (m == dt) return x - b[0];
+  if (m == dr) return w + y - b[1];
+  if (m == db) return w + h + b[2] - x;
+  return 2 * w + h + b[3] - y;
+}
+
+/* A straight link from p0 to p1 past a non-junction node v would cut its
+ * label (a two-port passed straight through, or turned at): the line
+ * goes round the label's box (grown by 2, and to hold both ends)
+ * clockwise, which keeps the node on its right, as the bond it follows. */
+static void round_label(const bg_diagram *d, int v, joint *j) {
+  double b[4] = {d->nx[v] - d->nw[v] / 2 - 2, d->ny[v] - d->nh[v] / 2 - 2, d->nx[v] + d->nw[v] / 2 + 2,
+                 d->ny[v] + d->nh[v] / 2 + 2};
+  for (int k = 0; k < 2; k++) {
+    bg_vec p = k ? j->p1 : j->p0;
+    b[0] = fmin(b[0], p.x), b[1] = fmin(b[1], p.y), b[2] = fmax(b[2], p.x), b[3] = fmax(b[3], p.y);
+  }
+  double w = b[2] - b[0], h = b[3] - b[1], per = 2 * (w + h);
+  double from = perimeter_at(b, j->p0), to = perimeter_at(b, j->p1);
+  if (to < from) to += per;
+  const double at[4] = {w, w + h, 2 * w + h, per}; /* top right, bottom right, bottom left, top left */
+  const bg_vec corner[4] = {bg_v(b[2], b[1]), bg_v(b[2], b[3]), bg_v(b[0], b[3]), bg_v(b[0], b[1])};
+  j->ncorner = 0;
+  for (int lap = 0; lap < 2; lap++)
+    for (int k = 0; k < 4; k++) {
+      double q = at[k] + lap * per;
+      if (q > from + 1e-9 && q < to - 1e-9 && j->ncorner < 4) j->corner[j->ncorner++] = corner[k];
+    }
+  if (j->ncorner) j->kind = 3;
+}
+
 /* A modulation closes the loop between different nodes (the signal of s
  * arrives at s->v, whose variable an element's law uses: t->u): a straight
  * line beside the modulating signal, or, back along the same bond (an
@@ -186,9 +224,11 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
   joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}};
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
-    /* keep off the label: leave and re-enter at the box */
+    /* keep off the label: leave and re-enter at the box, around it */
     j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
-    return d->box_inst && d->box_inst[v] >= 0 ? around_box(d, s, t, j) : j;
+    if (d->box_inst && d->box_inst[v] >= 0) return around_box(d, s, t, j);
+    round_label(d, v, &j);
+    return j;
   }
   double den = cross(s->dir, t->dir);
   if (fabs(den) < 0.05) return j;

@@ -128,25 +128,55 @@ static int node_between(const bg_diagram *d, int a, int b) {
   return 0;
 }
 
-/* How many node boxes (ends excepted) the signal curve from a to b bowed by
- * bow passes, sampled at nine points. */
+/* Whether segments p-q and r-s cross. */
+static int segs_cross(bg_vec p, bg_vec q, bg_vec r, bg_vec s) {
+  double d1 = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+  double d2 = (q.x - p.x) * (s.y - p.y) - (q.y - p.y) * (s.x - p.x);
+  double d3 = (s.x - r.x) * (p.y - r.y) - (s.y - r.y) * (p.x - r.x);
+  double d4 = (s.x - r.x) * (q.y - r.y) - (s.y - r.y) * (q.x - r.x);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+/* How many bond legs the chord p-q crosses. */
+static int bond_crossings(const bg_diagram *d, bg_vec p, bg_vec q) {
+  int n = 0;
+  for (int b = 0; b < d->m->nbond; b++) {
+    const bg_bond_geom *g = &d->bg[b];
+    bg_vec a = g->tail;
+    for (int i = 0; i <= g->bendn; i++) {
+      bg_vec c = i == g->bendn ? g->head : bg_v(d->lay.bendx[g->bendadr + i], d->lay.bendy[g->bendadr + i]);
+      n += segs_cross(p, q, a, c);
+      a = c;
+    }
+  }
+  return n;
+}
+
+/* What the signal curve from a to b bowed by bow runs through, sampled at
+ * 24 points: 10 for each sample in a node box (ends excepted, 3 pt of
+ * room), 1 for each bond it crosses. */
 static int bow_hits(const bg_diagram *d, int a, int b, bg_vec bow) {
   bg_vec p = bg_v(d->nx[a], d->ny[a]), q = bg_v(d->nx[b], d->ny[b]), ch = bg_vsub(q, p);
   bg_vec c1 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.25)), bow), c2 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.75)), bow);
   int hits = 0;
-  for (int k = 1; k < 10; k++) {
-    double t = k / 10.0, u = 1 - t;
+  bg_vec prev = p;
+  for (int k = 1; k <= 24; k++) {
+    double t = k / 24.0, u = 1 - t;
     bg_vec f = bg_vadd(bg_vadd(bg_vscale(p, u * u * u), bg_vscale(c1, 3 * u * u * t)),
                        bg_vadd(bg_vscale(c2, 3 * u * t * t), bg_vscale(q, t * t * t)));
-    for (int n = 0; n < d->nnode; n++)
-      hits += n != a && n != b && fabs(f.x - d->nx[n]) < d->nw[n] / 2 + 3 &&
-              fabs(f.y - d->ny[n]) < d->nh[n] / 2 + 3;
+    for (int n = 0; n < d->nnode && k < 24; n++)
+      hits += 10 * (n != a && n != b && fabs(f.x - d->nx[n]) < d->nw[n] / 2 + 3 &&
+                    fabs(f.y - d->ny[n]) < d->nh[n] / 2 + 3);
+    hits += bond_crossings(d, prev, f);
+    prev = f;
   }
   return hits;
 }
 
 /* A signal along a grid line, where bonds run, bows off them: up or down
- * (left or right), as far as it takes to clear the labels there. */
+ * (left or right), as far as it takes to clear the labels there, to the
+ * side where it crosses fewest bonds (the ones it starts and ends on count
+ * on both sides alike). */
 static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
   bg_vec chord = bg_v(d->nx[b] - d->nx[a], d->ny[b] - d->ny[a]);
   bg_vec side = fabs(chord.x) >= fabs(chord.y) ? bg_v(0, -1) : bg_v(-1, 0), best = bg_v(0, 0);
@@ -161,7 +191,8 @@ static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
 
 /* Between two nodes: straight, or bowed out to the barb side of a bond that
  * joins the same two nodes (the bond number is on the other side), or, along
- * a row or column of the grid past other nodes, bowed up or left off the
+ * a row or column of the grid past other nodes, bowed up or down (left or
+ * right) off the
  * bonds there. */
 static void signal_between(bg_diagram *d, sigrole role, int from, int to, int hot) {
   bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
