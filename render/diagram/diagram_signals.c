@@ -192,8 +192,7 @@ static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
 /* Between two nodes: straight, or bowed out to the barb side of a bond that
  * joins the same two nodes (the bond number is on the other side), or, along
  * a row or column of the grid past other nodes, bowed up or down (left or
- * right) off the
- * bonds there. */
+ * right) off the bonds there (clear_bow). */
 static void signal_between(bg_diagram *d, sigrole role, int from, int to, int hot) {
   bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
   bg_vec bow = bg_v(0, 0), aim = ct;
