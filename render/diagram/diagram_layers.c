@@ -126,7 +126,7 @@ static bg_vec beside_node(const bg_diagram *d, const seg *s, int v, int other) {
 /* Where p lies on the boundary of the box [x0, x1] × [y0, y1] (moved onto
  * it first), as the length walked clockwise (on a y-down page) from the
  * top left corner. */
-static double perimeter_at(const double *b, bg_vec p) {
+static double label_perimeter_at(const double *b, bg_vec p) {
   double x = fmax(b[0], fmin(b[2], p.x)), y = fmax(b[1], fmin(b[3], p.y)), w = b[2] - b[0], h = b[3] - b[1];
   double dt = y - b[1], dr = b[2] - x, db = b[3] - y, dl = x - b[0], m = fmin(fmin(dt, dr), fmin(db, dl));
   if (m == dt) return x - b[0];
@@ -147,7 +147,7 @@ static void round_label(const bg_diagram *d, int v, joint *j) {
     b[0] = fmin(b[0], p.x), b[1] = fmin(b[1], p.y), b[2] = fmax(b[2], p.x), b[3] = fmax(b[3], p.y);
   }
   double w = b[2] - b[0], h = b[3] - b[1], per = 2 * (w + h);
-  double from = perimeter_at(b, j->p0), to = perimeter_at(b, j->p1);
+  double from = label_perimeter_at(b, j->p0), to = label_perimeter_at(b, j->p1);
   if (to < from) to += per;
   const double at[4] = {w, w + h, 2 * w + h, per}; /* top right, bottom right, bottom left, top left */
   const bg_vec corner[4] = {bg_v(b[2], b[1]), bg_v(b[2], b[3]), bg_v(b[0], b[3]), bg_v(b[0], b[1])};
