@@ -294,6 +294,19 @@ def check(name, text):
                 c.bad("index", "numeric %r with status %r" % (ix["numeric"], ix["numeric_status"]))
         if d["form"] == "ode" and ix["predicted"] not in (0, None):
             c.bad("index.predicted", "%r for an ODE" % ix["predicted"])
+        if "reduction" in ix and c.keys("index.reduction", ix["reduction"],
+                                        ["status", "message", "index", "differentiated",
+                                         "lost_states", "dummy_derivatives"]):
+            rd = ix["reduction"]
+            c.vocab("index.reduction.status", rd["status"], ("reduced", "failed"))
+            c.typ("index.reduction.message", rd["message"], str)
+            c.typ("index.reduction.index", rd["index"], int, null=True)
+            for k in ("differentiated", "lost_states", "dummy_derivatives"):
+                c.list_of("index.reduction." + k, rd[k], str)
+            if rd["status"] == "reduced" and rd["index"] not in (0, 1):
+                c.bad("index.reduction.index", "%r after a reduction" % rd["index"])
+            if rd["status"] == "reduced" and not rd["differentiated"]:
+                c.bad("index.reduction.differentiated", "empty after a reduction")
     for i, e in enumerate(c.list_of("estimates", d["estimates"], dict)):
         w = "estimates[%d]" % i
         if not c.keys(w, e, ["kind", "path", "value"]):

@@ -238,6 +238,33 @@ static const char *form_words(int form) {
   }
 }
 
+/* The index reduction (Pantelides, dummy derivatives) in bond-graph terms:
+ * what was differentiated, which stores lost their state. */
+static void reduction_lines(rp_ctx *c) {
+  const bg_analysis *a = c->a;
+  if (!a->ired_status) return;
+  bg_strbuf b = {0};
+  bg_sb_puts(&b, "<b>Index reduction:</b> ");
+  rp_esc(&b, a->ired_message ? a->ired_message : "");
+  bg_sb_puts(&b, ".");
+  para(c, bg_sb_str(&b));
+  for (int k = 0; k < a->ired_nconstraint; k++) {
+    bg_sb_clear(&b);
+    bg_sb_puts(&b, "<b>Differentiated:</b> ");
+    rp_esc(&b, a->ired_constraint[k]);
+    bg_sb_puts(&b, ".");
+    para(c, bg_sb_str(&b));
+  }
+  for (int k = 0; k < a->ired_nlost; k++) {
+    bg_sb_clear(&b);
+    bg_sb_puts(&b, "<b>Lost its state:</b> ");
+    rp_esc(&b, a->ired_lost[k]);
+    bg_sb_puts(&b, ".");
+    para(c, bg_sb_str(&b));
+  }
+  bg_sb_free(&b);
+}
+
 static void index_lines(rp_ctx *c) {
   const bg_analysis *a = c->a;
   const bg_report_input *in = c->in;
@@ -273,6 +300,7 @@ static void index_lines(rp_ctx *c) {
     para(c, bg_sb_str(&w));
     bg_sb_free(&w);
   }
+  reduction_lines(c);
 }
 
 static void history_table(rp_ctx *c) {

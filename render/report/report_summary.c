@@ -95,6 +95,9 @@ void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
     if (numeric_index(c) >= 2) bg_sb_printf(out, "Index-%d DAE", idx);
     else bg_sb_puts(out, "DAE of index above 1");
     if (refused) bg_sb_puts(out, ": simulation refused because "), first_sentence(out, in->sim->message);
+    else if (a->ired_status > 0)
+      bg_sb_printf(out, ", reduced to index %d by differentiating %d constraint%s (Pantelides, dummy "
+                        "derivatives)", a->ired_index, a->ired_nconstraint, a->ired_nconstraint == 1 ? "" : "s");
     else if (a->index_reason) bg_sb_puts(out, ": "), first_sentence(out, a->index_reason);
     sim_clause(c, out, refused);
     bg_sb_puts(out, ".");

@@ -120,6 +120,14 @@ typedef struct bg_analysis {
                                 null, numeric_status "singular") */
   const char *reduced_form;  /* "ode" / "dae" after symbolic elimination of linear
                                 algebraic blocks / dependent stores; NULL: not done */
+  /* Index reduction (equations/indexred.h), tried when the index is above 1:
+   * 0 not tried, 1 reduced, -1 failed; what was done or why not, in words
+   * (JSON index.reduction, the report, --check). Strings in the arena. */
+  int ired_status;
+  int ired_index;            /* numeric index of the reduced equations */
+  const char *ired_message;
+  int ired_nconstraint, ired_nlost, ired_ndummy;
+  const char **ired_constraint, **ired_lost, **ired_dummy;
 
   /* estimates from first- and second-order paths, linearised at the initial point */
   int nestimate;

@@ -11,6 +11,7 @@
 #include "base/strbuf.h"
 #include "equations/eqsys.h"
 #include "equations/index.h"
+#include "equations/indexred.h"
 #include "model/model.h"
 #include "lang/parse.h"
 #include "diagram/render.h"
@@ -39,6 +40,8 @@ typedef struct run {
   char *eqsys_problem;  /* why not, in words (owned); nullable */
   bg_index_result index;
   int index_done;
+  bg_indexred ired;     /* index reduction, tried when the index is above 1 */
+  int ired_done;
   bg_simresult sim;
   int sim_status; /* bg_simulate: 0 ok, 1 refused, 2 failed */
   int simulated;

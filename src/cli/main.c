@@ -22,7 +22,8 @@
 static void run_free(run *r) {
   if (r->tx_done) bg_transform_result_free(&r->tx);
   if (r->lin_done) bg_linear_free(&r->lin);
-  if (r->simulated) bg_simresult_free(&r->sim);
+  if (r->simulated) bg_simresult_free(&r->sim); /* before the systems its names point into */
+  if (r->ired_done) bg_indexred_free(&r->ired);
   if (r->index_done) bg_index_free(&r->index);
   if (r->eqsys) bg_eqsys_free(r->eqsys);
   free(r->eqsys_problem);
@@ -112,6 +113,41 @@ static void numeric_index(run *r) {
   }
 }
 
+static const char **arena_list(bg_arena *ar, char **v, int n) {
+  const char **out = bg_arena_alloc(ar, (size_t)(n + 1) * sizeof(char *));
+  for (int k = 0; k < n; k++) out[k] = bg_arena_strdup(ar, v[k]);
+  return out;
+}
+
+/* Pantelides and dummy derivatives when the index is above 1 (or a loop of
+ * gain +1 makes it so); the analysis keeps what was done, in words, for the
+ * JSON, the report and --check. */
+static void index_reduction(run *r) {
+  bg_analysis *a = &r->analysis;
+  if (!r->eqsys || !bg_simulate_index_problem(a)) return;
+  if (r->opts.verbose) fprintf(stderr, "bgdraw: index reduction (Pantelides, dummy derivatives)\n");
+  bg_indexred_run(r->eqsys, &r->ired);
+  r->ired_done = 1;
+  a->ired_status = r->ired.status;
+  a->ired_index = r->ired.index;
+  a->ired_message = bg_arena_strdup(&a->arena, r->ired.message ? r->ired.message : "");
+  a->ired_nconstraint = r->ired.nconstraint, a->ired_nlost = r->ired.nlost, a->ired_ndummy = r->ired.ndummy;
+  a->ired_constraint = arena_list(&a->arena, r->ired.constraint, r->ired.nconstraint);
+  a->ired_lost = arena_list(&a->arena, r->ired.lost, r->ired.nlost);
+  a->ired_dummy = arena_list(&a->arena, r->ired.dummy, r->ired.ndummy);
+  if (r->opts.verbose) {
+    bg_strbuf sb = {0};
+    bg_indexred_text(&r->ired, "bgdraw:   ", &sb);
+    fputs(bg_sb_str(&sb), stderr);
+    bg_sb_free(&sb);
+  }
+}
+
+/* The system a simulation integrates: the index reduction's when there is one. */
+static bg_eqsys *sim_system(run *r) {
+  return r->ired_done && r->ired.status == 1 ? r->ired.reduced : r->eqsys;
+}
+
 static int wants_format(const bg_cli_opts *o, const char *format) {
   for (int i = 0; i < o->nout; i++)
     if (!strcmp(o->out[i].format, format)) return 1;
@@ -141,7 +177,7 @@ static int simulate(run *r) {
   bg_sim_opts so = {0};
   so.verbose = r->opts.verbose;
   so.eqs_problem = r->eqsys_problem;
-  int rc = bg_simulate(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+  int rc = bg_simulate(r->model, &r->analysis, sim_system(r), &so, &r->sim);
   r->sim_status = rc;
   r->simulated = 1;
   if (r->sim.ic_report && !r->opts.quiet && !r->opts.verbose) /* -v printed it already */
@@ -150,7 +186,7 @@ static int simulate(run *r) {
   if (bg_simresult_row_warning(&r->sim, &w)) fprintf(stderr, "bgdraw: warning: %s\n", bg_sb_str(&w));
   bg_sb_clear(&w);
   if (rc == 0 && r->opts.verify) {
-    bg_sim_verify(r->model, &r->analysis, r->eqsys, &so, &r->sim);
+    bg_sim_verify(r->model, &r->analysis, sim_system(r), &so, &r->sim);
     if (bg_sim_verify_text(&r->sim, &w) && !r->opts.quiet) fprintf(stderr, "bgdraw: %s\n", bg_sb_str(&w));
   }
   bg_sb_free(&w);
@@ -178,6 +214,10 @@ static int print_check(run *r) {
     bg_sb_putc(&sb, '\n');
   } else if (r->eqsys_problem) {
     bg_sb_printf(&sb, "equations: %s\n", r->eqsys_problem);
+  }
+  if (r->ired_done) {
+    bg_sb_puts(&sb, "index reduction:\n");
+    bg_indexred_text(&r->ired, "  ", &sb);
   }
   int rc = cli_write_stdout(&sb);
   bg_sb_free(&sb);
@@ -283,6 +323,8 @@ int main(int argc, char **argv) {
   if (wants_equations(&r.opts)) derive_equations(&r);
   /* a simulation needs it too: a numeric index above 1 refuses the run */
   if (wants_index(&r.opts) || wants_simulation(&r.opts)) numeric_index(&r);
+  if (wants_index(&r.opts) || wants_simulation(&r.opts) || (r.opts.report && r.model->sim.present))
+    index_reduction(&r);
   if (cli_wants_linear(&r)) cli_linearise(&r);
   rc = write_all(&r);
   if ((rc == EXIT_OK || rc == EXIT_SIM) && r.opts.depfile) {

@@ -582,6 +582,17 @@ int bg_eqsym_rows(bg_sym *S, const bg_eqsys *s, int *rows) {
   return 0;
 }
 
+int bg_eqsym_rows_signals(bg_sym *S, const bg_eqsys *s, int *rows, int *sigs) {
+  if (s->nsig > SIG_MAX) return -1;
+  red R = {0};
+  R.s = s, R.S = S;
+  substitute_all(&R);
+  memcpy(rows, R.row, (size_t)s->n * sizeof *rows);
+  memcpy(sigs, R.full, (size_t)s->nsig * sizeof *sigs);
+  free(R.full), free(R.row);
+  return 0;
+}
+
 /* ------------------------------------------------------------ printing */
 static void put_lhs(bg_eqred *r, int u, int deriv, int latex, bg_strbuf *out) {
   bg_eqsym_name((void *)r->s, deriv ? SYM_YP : SYM_Y, u, latex, out);

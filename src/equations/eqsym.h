@@ -60,6 +60,9 @@ int bg_eqred_point(bg_eqred *r, double t, const double *x, double *y, double *yp
  * yp, t (residual rows: the expression; state rows: the right-hand side).
  * rows has s's n entries. -1 for models too large. */
 int bg_eqsym_rows(bg_sym *S, const bg_eqsys *s, int *rows);
+/* The same, and every bond variable as an expression in y, yp, t (sigs has
+ * 2 * nbond entries: effort 2b, flow 2b + 1). */
+int bg_eqsym_rows_signals(bg_sym *S, const bg_eqsys *s, int *rows, int *sigs);
 /* The reduced ODE printed: "# reduced form: ..." then the solved algebraic
  * unknowns, the dropped dependent stores and the state equations.
  * latex: align* rows. Prints nothing for a model that was an ODE already. */

@@ -38,6 +38,8 @@ void bg_eqsys_free(bg_eqsys *s);
 int bg_eqsys_n(const bg_eqsys *s);          /* nx + nz */
 int bg_eqsys_nx(const bg_eqsys *s);         /* differential unknowns, first in y */
 int bg_eqsys_is_ode(const bg_eqsys *s);     /* nz == 0 and every state independent */
+/* 1 for the system of an index reduction (equations/indexred.h). */
+int bg_eqsys_is_reduced(const bg_eqsys *s);
 const char *bg_eqsys_name(const bg_eqsys *s, int i); /* "L1.p", "phi", "e4", "R1.e" */
 /* 1 for unknowns whose derivative appears (IDASetId), 0 for algebraic ones. */
 int bg_eqsys_is_differential(const bg_eqsys *s, int i);

@@ -86,7 +86,7 @@ static double max_abs_alg(const bg_eqsys *s, const double *r) {
  * the exact Jacobian, a dense solve, step halving when the residual grows. */
 int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit) {
   int n = s->n, na = 0;
-  if (n == 0 || n > 3000) return 0;
+  if (n == 0 || n > 3000 || s->reduced) return 0; /* reduced: bg_eqsys_initial_yp solves every row */
   int *ix = malloc((size_t)n * sizeof(int)), *piv = malloc((size_t)n * sizeof(int));
   double *yp = calloc((size_t)n, sizeof(double)), *r = malloc((size_t)n * sizeof(double));
   double *J = malloc((size_t)n * n * sizeof(double)), *M = malloc((size_t)n * n * sizeof(double));
@@ -133,7 +133,10 @@ void bg_eqsys_initial_yp(const bg_eqsys *cs, double *y0, double *yp0) {
   /* The evaluation scratch is not observable state: solving for consistent
    * algebraic values leaves the system as it was. */
   bg_eqsys *s = (bg_eqsys *)cs;
-  if (s->a->nlag == 0 || bg_eqs_lagrange_start(s, t0, y0, yp0, 30))
+  /* a reduced system holds its states and solves every row, the
+   * differentiated constraints included, for the rest (like Lagrange's) */
+  if (s->reduced) bg_eqs_lagrange_start(s, t0, y0, yp0, 30);
+  else if (s->a->nlag == 0 || bg_eqs_lagrange_start(s, t0, y0, yp0, 30))
     bg_eqsys_consistent(s, t0, y0, 30);
   s->has_err = 0;
 }
@@ -237,7 +240,9 @@ double bg_eqsys_input_period(const bg_eqsys *s, double t0, double t1) {
   return best;
 }
 
-int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i) { return s->row_kind[i] != 0; }
+int bg_eqsys_is_algebraic_row(const bg_eqsys *s, int i) {
+  return s->row_alg ? s->row_alg[i] : s->row_kind[i] != 0;
+}
 
 /* ------------------------------------------------------------ dependent stores' rates */
 /* A dependent store's state is fixed by its constraint (q = C e(t)); its
@@ -267,7 +272,7 @@ static int solved(bg_eqsys *s, double t, double *y) {
 
 int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp, double h) {
   int n = s->n, nd = 0;
-  for (int i = 0; i < s->nx; i++) nd += s->row_kind[i] == 1;
+  for (int i = 0; i < s->nx && !s->reduced; i++) nd += s->row_kind[i] == 1;
   if (nd == 0 || !(h > 0) || n > 1000) return 0;
   double *J0 = bg_xmalloc((size_t)n * n * sizeof(double)), *J1 = bg_xmalloc((size_t)n * n * sizeof(double));
   double *lo = bg_xmalloc((size_t)n * sizeof(double)), *hi = bg_xmalloc((size_t)n * sizeof(double));

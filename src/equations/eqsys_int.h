@@ -32,6 +32,7 @@ enum { EQF_EXPLICIT, /* signal = tree */ EQF_IMPLICIT /* 0 = tree, solved for si
 /* Tape instruction: out = op(args). op is a bg_xop (arithmetic, comparison,
  * BG_X_CALL with ref = bg_func, BG_X_TABLE with ref = table) or T_LIN. */
 #define T_LIN 200
+#define T_DTABLE 201 /* slope of table ref at a[0] (symbolic derivatives of tables) */
 typedef struct tinstr {
   unsigned char op, na;
   int ref;     /* function or table id; T_LIN: first index into lin arrays */
@@ -133,6 +134,14 @@ struct bg_eqsys {
   double *work;     /* n-sized scratch */
   char err[256];
   int has_err;
+
+  /* index reduction (indexred.c): a system built from the symbolic rows of
+   * another, with differentiated equations and dummy derivatives. Its rows
+   * are all residuals (row_kind 1); row_alg marks those that read no yp;
+   * its initial point is solved like Lagrange causality's (states held,
+   * every row solved for the algebraic unknowns and the derivatives). */
+  int reduced;
+  unsigned char *row_alg;
 };
 
 /* eqsys.c */
@@ -153,6 +162,16 @@ void bg_eqs_sym_lookups(bg_eqsys *s);
 int bg_eqs_lagrange_start(bg_eqsys *s, double t, double *y, double *yp, int maxit);
 /* eqsys_tape.c */
 void bg_eqs_compile(bg_eqsys *s);
+/* Tape building blocks for systems compiled from other trees (indexred_tape.c):
+ * a constant slot; out = op(args) folded when constant (op T_LIN: ref is
+ * the first term pushed with bg_eqs_tl_push, na the number of terms); a
+ * model expression (inputs compiled once). */
+int bg_eqs_const(bg_eqsys *s, double val);
+int bg_eqs_emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq);
+int bg_eqs_tl_push(bg_eqsys *s, int slot, double c);
+int bg_eqs_cx(bg_eqsys *s, int root, int eq);
+/* A slot whose value is set by the caller (t, y, yp of a compiled system). */
+int bg_eqs_var_slot(bg_eqsys *s);
 void bg_eqs_pattern(bg_eqsys *s);
 void bg_eqs_tape_free(bg_eqsys *s);
 /* Runs the main tape (and the outputs with `outputs`); 0, or -1 with s->err. */

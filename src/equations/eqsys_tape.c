@@ -57,6 +57,7 @@ static double ins_val(const bg_eqsys *s, const tinstr *I, const double *v) {
     return bg_func_apply(I->ref, args, I->na);
   }
   case BG_X_TABLE: return bg_table_lookup(s->m, I->ref, v[I->a[0]]);
+  case T_DTABLE: return bg_table_slope(s->m, I->ref, v[I->a[0]]);
   default: return bg_xop_apply(I->op, v[I->a[0]], I->na > 1 ? v[I->a[1]] : 0);
   }
 }
@@ -77,6 +78,13 @@ static int emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
   push_code(s, I);
   return I.out;
 }
+
+int bg_eqs_const(bg_eqsys *s, double val) { return new_slot(s, 1, val); }
+int bg_eqs_var_slot(bg_eqsys *s) { return new_slot(s, 0, 0); }
+int bg_eqs_emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
+  return emit(s, op, ref, na, args, eq);
+}
+int bg_eqs_tl_push(bg_eqsys *s, int slot, double c) { return tl_push(s, slot, c); }
 
 /* ------------------------------------------------------------ compilation */
 /* Linear analysis: the value of input k of the linearisation plus u_k, a
@@ -104,7 +112,7 @@ static int cx(bg_eqsys *s, int root, int eq) {
     if (s->input_slot[n->ref] < 0)
       s->input_slot[n->ref] = lin_offset(s, -1 - n->ref, cx(s, m->input_expr[n->ref], eq), eq);
     return s->input_slot[n->ref];
-  case BG_X_STATE: return s->slot_y + (s->nint - m->nstate) + n->ref;
+  case BG_X_STATE: return s->slot_y + s->state_y[n->ref];
   case BG_X_STORE: return s->slot_y + s->store_y[n->ref];
   case BG_X_EFFORT: case BG_X_FLOW:
     slot = s->sig_slot[2 * n->ref + (n->op == BG_X_FLOW)];
@@ -149,6 +157,8 @@ static int ce(bg_eqsys *s, int nd, int eq) {
   }
   }
 }
+
+int bg_eqs_cx(bg_eqsys *s, int root, int eq) { return cx(s, root, eq); }
 
 /* The run's outputs (CSV columns): the plot expressions, else the states
  * followed by the detectors (docs/simulation.md, "CSV"). */
@@ -302,7 +312,7 @@ static double ins_der(const bg_eqsys *s, const tinstr *I, const double *v, const
   case BG_X_POW: return pow_der(x[0], x[1], y, d[0], d[1]);
   case BG_X_CALL: return call_der(I->ref, x, d, y);
   case BG_X_TABLE: return bg_table_slope(s->m, I->ref, x[0]) * d[0];
-  default: return 0; /* comparisons and logic */
+  default: return 0; /* comparisons and logic; T_DTABLE: a piecewise-linear table's slope is piecewise constant */
   }
 }
 

@@ -279,6 +279,22 @@ static void put_tloops(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
   end_list(o, a->ntloop);
 }
 
+/* index.reduction: only when an index reduction was tried (the index is above 1). */
+static void put_reduction(bg_strbuf *o, const bg_analysis *a) {
+  if (!a->ired_status) return;
+  bg_sb_printf(o, ", \"reduction\": {\"status\": \"%s\", \"message\": ", a->ired_status > 0 ? "reduced" : "failed");
+  str_or_null(o, a->ired_message);
+  bg_sb_puts(o, ", \"index\": ");
+  int_or_null(o, a->ired_index, a->ired_status < 0 || a->ired_index < 0);
+  bg_sb_puts(o, ", \"differentiated\": ");
+  string_list(o, (char *const *)a->ired_constraint, a->ired_nconstraint);
+  bg_sb_puts(o, ", \"lost_states\": ");
+  string_list(o, (char *const *)a->ired_lost, a->ired_nlost);
+  bg_sb_puts(o, ", \"dummy_derivatives\": ");
+  string_list(o, (char *const *)a->ired_dummy, a->ired_ndummy);
+  bg_sb_putc(o, '}');
+}
+
 static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   key(o, "states");
   string_list(o, a->states, a->nstates);
@@ -306,6 +322,7 @@ static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   bg_sb_printf(o, ", \"numeric_status\": \"%s\", \"disagreement\": ",
                computed ? "computed" : a->index_numeric_set ? "singular" : "not computed");
   str_or_null(o, a->index_disagreement);
+  put_reduction(o, a);
   bg_sb_puts(o, "},\n");
 }
 

@@ -128,6 +128,10 @@ static int choose(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg
       return -1;
     }
     bg_sb_printf(&why, "forced by %s", o && o->solver ? "the command line" : "the model's solver =");
+  } else if (!ode && bg_eqsys_is_reduced(s)) {
+    kind = BG_SIM_IDA;
+    bg_sb_printf(&why, "auto: index reduction (Pantelides, dummy derivatives) gave a DAE of index "
+                       "%d (%d algebraic unknowns): IDA", a->ired_index, bg_eqsys_n(s) - bg_eqsys_nx(s));
   } else if (!ode) {
     kind = BG_SIM_IDA;
     bg_sb_printf(&why, "auto: the equations are a DAE (%d algebraic unknown%s, %d dependent "
@@ -219,11 +223,12 @@ static double init_of(const bg_model *m, int root) {
 
 /* What the model says unknown i starts at: a store's q0/p0, a state's init
  * (0 when not given). NAN for algebraic unknowns: the model gives none,
- * their starting value is only a guess. */
+ * their starting value is only a guess; but a store or state that lost its
+ * state to an index reduction keeps the model's value to compare with. */
 static double model_start(const byname *bn, bg_eqsys *s, int i) {
   const bg_model *m = bn->m;
   const char *name = bg_eqsys_name(s, i), *dot = name ? strrchr(name, '.') : NULL;
-  if (!name || !bg_eqsys_is_differential(s, i)) return NAN;
+  if (!name || (!bg_eqsys_is_differential(s, i) && !bg_eqsys_is_reduced(s))) return NAN;
   if (dot && (!strcmp(dot, ".q") || !strcmp(dot, ".p"))) {
     int e = find_elem(bn, name, (size_t)(dot - name));
     if (e >= 0 && bg_elem_is_store(m->elem_kind[e])) return init_of(m, m->elem_init[e]);
@@ -375,7 +380,7 @@ static double step_limit(bg_eqsys *s, const bg_model *m, const bg_sim_opts *o) {
 int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                 bg_simresult *r) {
   memset(r, 0, sizeof *r);
-  char *why = bg_simulate_refusal(m, a);
+  char *why = bg_simulate_refusal_reduced(m, a, s && bg_eqsys_is_reduced(s));
   if (why) return refuse(r, why);
   if (!s) {
     bg_strbuf sb = {0};

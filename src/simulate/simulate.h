@@ -78,7 +78,8 @@ typedef struct bg_simresult {
   signed char *event_dir; /* +1 rising, -1 falling */
 } bg_simresult;
 
-/* Runs the model's simulation. s may be NULL when the equations could not
+/* Runs the model's simulation. s may be the index reduction's system
+ * (bg_eqsys_is_reduced), which lifts the index refusals. s may be NULL when the equations could not
  * be built (the result is then a refusal). Returns 0 ok, 1 refused (no
  * solver was called; r->message names the loop or paths and the remedies),
  * 2 failed (r->message says what went wrong and at which time; the rows up
@@ -111,6 +112,15 @@ double bg_sim_default_rtol(int n);
  * causal loop, a singular algebraic loop, incomplete causality), as a
  * malloc'd message with remedies; NULL when nothing forbids it. */
 char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a);
+/* The same for a system that is (reduced = 1) the index reduction's
+ * (equations/indexred.h): the index problems no longer forbid the run. When
+ * the reduction was tried and failed (a->ired_status < 0) the refusal ends
+ * with its reason. */
+char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int reduced);
+/* 1 when what forbids the run is the index (a class 5 causal loop, an
+ * algebraic loop of gain +1, a predicted or numeric index above 1): an
+ * index reduction may lift it. */
+int bg_simulate_index_problem(const bg_analysis *a);
 
 /* The results as CSV: header "t,<names...>" (a name containing a comma or a
  * quote is quoted CSV-style), one row per output time, numbers in the shortest round-trip form (bg_sb_num).

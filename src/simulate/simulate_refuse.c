@@ -112,13 +112,22 @@ static void say_tloop(const bg_analysis *a, int t, bg_strbuf *sb) {
     bg_sb_puts(sb, REMEDIES);
 }
 
-char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
+/* Refusals an index reduction can lift: a class 5 loop, an algebraic loop of
+ * gain +1, a predicted or numeric index above 1. */
+int bg_simulate_index_problem(const bg_analysis *a) {
+  if (!a->complete || a->form == BG_FORM_INCOMPLETE) return 0;
+  return class5_loop(a) >= 0 || singular_tloop(a) >= 0 || a->index_predicted >= 2 || numeric_above_1(a);
+}
+
+char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int reduced) {
   bg_strbuf sb = {0};
   int l, t;
   if (!a->complete || a->form == BG_FORM_INCOMPLETE)
     bg_sb_puts(&sb, "causality is incomplete: some bonds have no causal stroke, so the "
                     "equations cannot be formed. Fix the conflicts the analysis reports "
                     "(or use --causality relaxed or vandijk).");
+  else if (reduced) /* the index problem below is what the reduction removed */
+    return NULL;
   else if ((l = class5_loop(a)) >= 0)
     say_class5(m, a, l, &sb);
   else if ((t = singular_tloop(a)) >= 0) /* before the index: its own remedies */
@@ -128,7 +137,16 @@ char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
   else if (numeric_above_1(a))
     say_numeric(a, &sb);
   if (!sb.len) return NULL;
+  if (a->ired_status < 0 && a->ired_message && bg_simulate_index_problem(a)) {
+    const char *why = a->ired_message, *pre = "index reduction failed: ";
+    if (!strncmp(why, pre, strlen(pre))) why += strlen(pre);
+    bg_sb_printf(&sb, " Index reduction (Pantelides, dummy derivatives) was tried and failed: %s.", why);
+  }
   char *msg = strdup(bg_sb_str(&sb));
   bg_sb_free(&sb);
   return msg;
+}
+
+char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
+  return bg_simulate_refusal_reduced(m, a, 0);
 }
