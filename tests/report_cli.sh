@@ -68,21 +68,7 @@ check "loop_class1: the index reduction in section 6" $?
 tr '\n' ' ' <"$tmp/loop_class1.txt" | tr -s ' ' | grep -q "Lost its state: C2 (a dependent store already)"
 check "loop_class1: the store that lost its state in section 6" $?
 # a refusal that remains (the reduction fails) is explained in the report
-cat >"$tmp/twosf.bg" <<'BG'
-model twosf "Two flow sources in series"
-param F0 = 1
-Sf  S1 = F0
-Sf  S2 = 2*F0
-1   j
-R   R1 = 1
-C   C1 = 1
-bond 1 S1 -> j
-bond 2 S2 -> j
-bond 3 j -> R1
-bond 4 j -> C1
-simulate t_end = 1
-BG
-"$BGDRAW" "$tmp/twosf.bg" --causality relaxed --report "$tmp/tw.pdf" --simulate 2>/dev/null; st=$?
+"$BGDRAW" tests/data/twosf.bg --causality relaxed --report "$tmp/tw.pdf" --simulate 2>/dev/null; st=$?
 check "twosf --report --simulate exits 3 (got $st)" $((st != 3))
 [ -s "$tmp/tw.pdf" ]; check "twosf --report --simulate still writes the report" $?
 text "$tmp/tw.pdf" | tr '\n' ' ' | tr -s ' ' >"$tmp/tw.txt"

@@ -120,21 +120,7 @@ awk -F, 'NR > 1 { d = $2; if (d < 0) d = -d; if (d > m) m = d } END { exit !(NR 
 check "modulated_source --set k=2: Cc.e = 0" $?
 # the refusal remains where the reduction fails: two flow sources in series
 # fix each other (a type 2 conflict whose balance holds no unknown)
-cat >"$tmp/twosf.bg" <<'BG'
-model twosf "Two flow sources in series"
-param F0 = 1
-Sf  S1 = F0
-Sf  S2 = 2*F0
-1   j
-R   R1 = 1
-C   C1 = 1
-bond 1 S1 -> j
-bond 2 S2 -> j
-bond 3 j -> R1
-bond 4 j -> C1
-simulate t_end = 1
-BG
-"$BGDRAW" "$tmp/twosf.bg" --causality relaxed -o "$tmp/twosf.csv" 2>"$tmp/err"; st=$?
+"$BGDRAW" tests/data/twosf.bg --causality relaxed -o "$tmp/twosf.csv" 2>"$tmp/err"; st=$?
 check "twosf refused with exit 3 (got $st)" $((st != 3))
 [ ! -e "$tmp/twosf.csv" ]; check "twosf writes no CSV" $?
 grep -q 'type 2 conflict at j' "$tmp/err" &&
@@ -161,7 +147,7 @@ grep -Eq '"statistics": \{"steps": [1-9][0-9]*, "function_evaluations": [1-9][0-
 check "JSON simulation: statistics" $?
 "$BGDRAW" examples/rlc.bg -o "$tmp/rlc_plain.json" 2>/dev/null
 ! grep -q '"simulation"' "$tmp/rlc_plain.json"; check "JSON without --simulate has no simulation object" $?
-"$BGDRAW" "$tmp/twosf.bg" --causality relaxed --simulate -o "$tmp/delta.json" 2>/dev/null; st=$?
+"$BGDRAW" tests/data/twosf.bg --causality relaxed --simulate -o "$tmp/delta.json" 2>/dev/null; st=$?
 check "twosf --simulate -o .json: exit 3 (got $st)" $((st != 3))
 grep -q '"status": "refused"' "$tmp/delta.json"; check "JSON simulation: refused" $?
 grep -q '"reduction": {"status": "failed", "message": "index reduction failed: the equations are structurally singular' "$tmp/delta.json"
