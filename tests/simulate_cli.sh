@@ -96,6 +96,12 @@ grep -q 'bgdraw:   differentiated: the residual of f5 (the balance of nA); it cl
   grep -q 'bgdraw:   lost its state: L1: L1.p is no longer a state' "$tmp/err" &&
   grep -q 'solver ida, dense Jacobian (auto: index reduction' "$tmp/err"
 check "delta -v: the differentiated constraint, the lost state, the solver" $?
+"$BGDRAW" examples/delta.bg --check >"$tmp/delta.check" 2>/dev/null
+grep -q '^index reduction:$' "$tmp/delta.check" &&
+  grep -q '^  index reduced (Pantelides, dummy derivatives): 1 equation differentiated, 1 dummy derivative (L1.p.); the reduced equations (5 unknowns) have numeric index 1$' "$tmp/delta.check" &&
+  grep -q '^  differentiated: the residual of f5 (the balance of nA); it closes causal loop 1 (bonds 2, 3, 8, 9, 6, 5, gain 1, class 5): 0 = L1.p/L10 - I0 + L2.p/L20 (differentiated once)$' "$tmp/delta.check" &&
+  grep -q '^  lost its state: L1: L1.p is no longer a state' "$tmp/delta.check"
+check "delta --check: the index reduction in words" $?
 # loop_class1 (Proposition 5.10): C2.q = C1.q; q' = 1 - p/2, p' = q, so
 # L.p = 2(1 - cos(t/sqrt 2)), C1.q = sqrt(2) sin(t/sqrt 2)
 "$BGDRAW" examples/loop_class1.bg -o "$tmp/lc.csv" 2>"$tmp/err"; st=$?
