@@ -203,6 +203,7 @@ static void compile(ir_work *W, bg_eqsys *r, const plan *P) {
   r->nout_code = r->ncode;
   r->dv = bg_xcalloc((size_t)r->nslot + 1, sizeof(double));
   bg_eqs_pattern(r);
+  bg_eqs_events_find(r); /* switching conditions of the reduced rows: state events as anywhere */
   r->work = bg_arena_alloc(&r->arena, (size_t)(n + 1) * sizeof(double));
   /* algebraic rows: those that read no derivative (the output rows' check) */
   for (int i = 0; i < n; i++) {
