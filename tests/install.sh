@@ -20,8 +20,12 @@ done
 pc=$(find "$tmp/p" -name bgdraw.pc | head -1)
 lib=$(find "$tmp/p" -name 'libbgdraw.so' | head -1)
 [ -n "$pc" ] && [ -n "$lib" ]; check "installed libbgdraw.so and bgdraw.pc" $?
+# the render module, where the executable looks for it (src/cli/cli_render.h)
+module=$(find "$tmp/p" -name bgdraw_render.so | head -1)
+[ "$(dirname "$module")" = "$(dirname "$lib")/bgdraw" ]; check "installed bgdraw_render.so in LIBDIR/bgdraw (got '$module')" $?
 objcopy --strip-debug "$tmp/p/bin/bgdraw" "$tmp/exe.nodebug" && objcopy --strip-debug "$lib" "$tmp/lib.nodebug"
-! grep -qF "$ROOT" "$tmp/exe.nodebug" "$tmp/lib.nodebug"
+objcopy --strip-debug "$module" "$tmp/module.nodebug"
+! grep -qF "$ROOT" "$tmp/exe.nodebug" "$tmp/lib.nodebug" "$tmp/module.nodebug"
 check "no path of the source tree in the installed code (debug info aside)" $?
 
 # move the prefix: everything is found relative to the executable / library

@@ -7,7 +7,7 @@
 
 #include "base/strbuf.h"
 #include "cli/cli_run.h"
-#include "scene/style.h"
+#include "cli/cli_render.h"
 
 /* A path as make reads it: blanks and '#' escaped with '\', '$' doubled. */
 static void put_path(bg_strbuf *b, const char *path) {

@@ -9,7 +9,7 @@
 #include "base/fileio.h"
 #include "cli/cli_run.h"
 #include "json/json_linear.h"
-#include "plot/plot_linear.h"
+#include "cli/cli_render.h"
 
 static int has_format(const bg_cli_opts *o, const char *f) {
   for (int i = 0; i < o->nout; i++)

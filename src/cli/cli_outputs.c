@@ -12,19 +12,34 @@
 #include "json/json.h"
 #include "json/json_sim.h"
 #include "json/json_linear.h"
-#include "plot/plot.h"
-#include "report/report.h"
-#include "scene/style.h"
+#include "cli/cli_render.h"
 #include "base/strbuf.h"
+
+static int is_diagram_format(const char *f) {
+  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
+}
+
+/* Whether the run draws, and so reads a style file: a diagram output, a
+ * plot or the report. A run that does not never loads the render module
+ * (cli_render.h). The default diagram is an -o by now. */
+static int run_draws(const run *r) {
+  const bg_cli_opts *o = &r->opts;
+  if (o->plot || o->report || o->bode || o->nyquist || o->step) return 1;
+  for (int i = 0; i < o->nout; i++)
+    if (is_diagram_format(o->out[i].format)) return 1;
+  return 0;
+}
 
 /* No output may be a file the run reads (model, tables, style): compared by
  * device and inode, so another name or a symlink for an input is refused
  * too. A usage error, found before anything is written. */
 int cli_check_outputs(run *r) {
-  char style[4096];
-  bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style,
-                sizeof style);
-  bg_input_note(style);
+  if (run_draws(r)) {
+    char style[4096];
+    bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style,
+                  sizeof style);
+    bg_input_note(style);
+  }
   const char *paths[BG_MAX_OUTPUTS + 6];
   int n = 0;
   for (int i = 0; i < r->opts.nout; i++)
@@ -121,10 +136,6 @@ static int write_csv(run *r, const char *path) {
   int rc = cli_write_text(path, &sb);
   bg_sb_free(&sb);
   return rc;
-}
-
-static int is_diagram_format(const char *f) {
-  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
 }
 
 static int write_one(run *r, const bg_cli_output *out) {

@@ -55,6 +55,9 @@ typedef struct run {
   int tx_done;
 } run;
 
+/* The running executable's folder (from /proc/self/exe) into buf; -1 when
+ * unknown. Styles and the render module are found relative to it. */
+int cli_exe_dir(char *buf, size_t n);
 /* Diagram options from the command line (and --max-list); -1 after a
  * usage message. */
 int cli_render_options(run *r);

@@ -1,0 +1,103 @@
+/* The render functions the command line calls, loading the render module on
+ * first use (cli_render.h): a run that draws nothing starts without mapping
+ * Graphviz, cairo, pango and their dependencies. */
+#include "cli/cli_render.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli_run.h"
+#include "scene/style.h"
+
+#ifndef BG_EXE_TO_MODULE
+#define BG_EXE_TO_MODULE "../lib/bgdraw"
+#endif
+
+/* The running executable's folder + "/" + rel, or "" when unknown. */
+static void beside_exe(const char *rel, char *buf, size_t n) {
+  char dir[4096];
+  buf[0] = 0;
+  if (cli_exe_dir(dir, sizeof dir) == 0) snprintf(buf, n, "%s/%s", dir, rel);
+}
+
+/* RTLD_NOW: an engine function the module needs and the executable lacks is
+ * an error here, not a crash in the middle of a drawing. */
+static void *open_module(char *tried, size_t n) {
+  char installed[4200], here[4200];
+  beside_exe(BG_EXE_TO_MODULE "/bgdraw_render.so", installed, sizeof installed);
+  beside_exe("bgdraw_render.so", here, sizeof here);
+  const char *env = getenv("BGDRAW_RENDER_MODULE");
+  const char *cand[] = {env && *env ? env : NULL, installed, here};
+  tried[0] = 0;
+  for (size_t i = 0; i < sizeof cand / sizeof cand[0]; i++) {
+    if (!cand[i] || !cand[i][0]) continue;
+    void *h = dlopen(cand[i], RTLD_NOW | RTLD_LOCAL);
+    if (h) return h;
+    size_t used = strlen(tried);
+    snprintf(tried + used, n - used, "\n  %s", dlerror());
+    if (env && *env) break; /* an explicit module is the only one tried */
+  }
+  return NULL;
+}
+
+/* The module's table; a run that cannot draw stops here with status 4, as
+ * for any output that cannot be written (nothing half-written: the module
+ * is loaded before an output is opened). */
+static const bg_render_api *api(void) {
+  static const bg_render_api *tab;
+  if (tab) return tab;
+  char tried[8192];
+  void *h = open_module(tried, sizeof tried);
+  const bg_render_api *t = h ? dlsym(h, "bg_render_module") : NULL;
+  if (!t || t->version != BG_RENDER_API_VERSION) {
+    fprintf(stderr, "bgdraw: error: cannot load the renderer module bgdraw_render.so%s%s\n",
+            t ? " (it is from another build)" : ":", t ? "" : tried);
+    exit(EXIT_WRITE);
+  }
+  return tab = t;
+}
+
+bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
+                             bg_diags *dg) {
+  return api()->diagram_build(m, a, o, dg);
+}
+
+void bg_diagram_free(bg_diagram *d) {
+  if (d) api()->diagram_free(d);
+}
+
+int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_diags *dg) {
+  return api()->diagram_write(d, path, format, dg);
+}
+
+int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diags *dg) {
+  return api()->diagram_render(d, format, out, dg);
+}
+
+int bg_show_parse(const char *list, unsigned *out) { return api()->show_parse(list, out); }
+
+int bg_highlight_parse(const char *item, int *kind, int *index) {
+  return api()->highlight_parse(item, kind, index);
+}
+
+int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
+                  const char *style_dir, const char *path, bg_diags *dg) {
+  return api()->plot_write(m, r, style, style_dir, path, dg);
+}
+
+int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
+                         const char *style_dir, const char *path, bg_diags *dg) {
+  return api()->plot_linear_write(m, l, kind, style, style_dir, path, dg);
+}
+
+int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
+  return api()->report_write(in, path, dg);
+}
+
+void bg_style_path(const char *name, const char *style_dir, char *buf, size_t n) {
+  api()->style_path(name, style_dir, buf, n);
+}
+
+void bg_render_versions(bg_strbuf *out) { api()->versions(out); }

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Start-up (issue 19): a run that draws nothing loads none of the render
+# libraries (Graphviz, cairo, pango) and not the render module; a run that
+# draws loads the module once and gives the same diagram; a missing module
+# is an error with status 4, not a crash. Checked with the loader's own list
+# of the files it maps (LD_DEBUG=files), never with a clock.
+# Usage: bash tests/startup_libs.sh PATH_TO_BGDRAW   (from the project root)
+set -u
+BGDRAW=${1:?usage: startup_libs.sh PATH_TO_BGDRAW}
+pass=0 fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+
+mapped() { # ARGS... -> the shared objects the loader maps, one a line
+  LD_DEBUG=files "$BGDRAW" "$@" 2>&1 >/dev/null | sed -n 's/.*file=\([^ ]*\) \[[0-9]*\];  generating link map.*/\1/p'
+}
+
+render_libs='libgvc|libcgraph|libcairo|libpango|bgdraw_render'
+for args in "--check" "--equations text" "-o $tmp/x.json" "--simulate -o $tmp/x.csv"; do
+  # shellcheck disable=SC2086
+  libs=$(mapped examples/rlc.bg $args)
+  if echo "$libs" | grep -Eq "$render_libs"; then bad "rlc $args maps render libraries: $(echo "$libs" | grep -E "$render_libs" | tr '\n' ' ')"
+  else ok; fi
+  n=$(echo "$libs" | grep -c .)
+  if [ "$n" -le 30 ]; then ok; else bad "rlc $args maps $n shared objects"; fi
+done
+
+libs=$(mapped examples/rlc.bg -o "$tmp/a.svg")
+if [ "$(echo "$libs" | grep -c 'bgdraw_render')" = 1 ] && echo "$libs" | grep -q libcairo; then ok
+else bad "a diagram run does not map the render module once"; fi
+if grep -q '<svg' "$tmp/a.svg" && [ "$(grep -c 'stroke' "$tmp/a.svg")" -gt 4 ]; then ok; else bad "no diagram drawn"; fi
+# --show alone must be checked by the module (an unknown layer is a usage error)
+if "$BGDRAW" examples/rlc.bg --show nonsense -o "$tmp/b.svg" 2>/dev/null; then bad "--show nonsense accepted"
+else [ $? = 2 ] && ok || bad "--show nonsense: status not 2"; fi
+
+BGDRAW_RENDER_MODULE=$tmp/none.so "$BGDRAW" examples/rlc.bg -o "$tmp/c.svg" 2>"$tmp/err"
+st=$?
+if [ $st = 4 ] && grep -q 'cannot load the renderer module' "$tmp/err" && [ ! -e "$tmp/c.svg" ]; then ok
+else bad "missing module: status $st, $(head -1 "$tmp/err")"; fi
+BGDRAW_RENDER_MODULE=$tmp/none.so "$BGDRAW" examples/rlc.bg --check >/dev/null 2>&1 && ok ||
+  bad "--check needs the render module"
+
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
