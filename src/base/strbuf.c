@@ -60,14 +60,6 @@ void bg_sb_json_str(bg_strbuf *b, const char *s) {
   bg_sb_putc(b, '"');
 }
 
-void bg_num_format(char *buf, size_t size, double v, int min_digits) {
-  /* 17 significant digits always read back (IEEE double), so the loop ends */
-  for (int prec = min_digits; prec <= 17; prec++) {
-    snprintf(buf, size, "%.*g", prec, v);
-    if (strtod(buf, NULL) == v) return;
-  }
-}
-
 void bg_sb_num(bg_strbuf *b, double v) {
   if (isnan(v)) { bg_sb_puts(b, "nan"); return; }
   if (isinf(v)) { bg_sb_puts(b, v < 0 ? "-inf" : "inf"); return; }

@@ -55,7 +55,7 @@ int bg_eqsys_linearise(bg_eqsys *s, double t, const double *y, const double *yp,
 }
 
 int bg_eqsys_outputs(bg_eqsys *s, double t, const double *y, const double *yp, double *out) {
-  if (bg_eqs_eval(s, t, y, yp, 1)) return -1;
+  if (bg_eqs_eval_outputs(s, t, y, yp)) return -1;
   for (int k = 0; k < s->nout; k++) out[k] = s->v[s->out_slot[k]];
   return 0;
 }

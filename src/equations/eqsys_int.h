@@ -107,6 +107,11 @@ struct bg_eqsys {
   int nout;
   const char **out_name;
   int *out_slot;
+  /* the outputs' slice of the tape (bg_eqs_eval_outputs): the instructions
+   * of [0, nout_code) the output slots depend on, in tape order, and the
+   * unknowns and derivatives they read */
+  int *oslice, noslice;
+  int *oslice_y, noslice_y, *oslice_yp, noslice_yp;
 
   /* linear analysis (bg_eqsys_build_io): perturbable inputs u_k added to a
    * source's value or an input's value, and the model's outputs */
@@ -176,6 +181,10 @@ void bg_eqs_pattern(bg_eqsys *s);
 void bg_eqs_tape_free(bg_eqsys *s);
 /* Runs the main tape (and the outputs with `outputs`); 0, or -1 with s->err. */
 int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int outputs);
+/* Runs only the outputs' slice of the tape: every output slot gets the
+ * value bg_eqs_eval(.., 1) gives it; 0, or -1 with s->err when an output (or
+ * an unknown it reads) is not finite. The other slots are left as they were. */
+int bg_eqs_eval_outputs(bg_eqsys *s, double t, const double *y, const double *yp);
 /* Jacobian columns: fills J (dense column-major, or CSC values when sparse)
  * with dF/dy + cj dF/dyp (rhs form rows as residual rows when `resid`, else
  * as the ODE right-hand side). Values must be current (bg_eqs_eval). */

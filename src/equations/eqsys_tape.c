@@ -64,6 +64,27 @@ static double ins_val(const bg_eqsys *s, const tinstr *I, const double *v) {
 
 double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v) { return ins_val(s, &s->code[k], v); }
 
+/* The evaluation loop's step: the operators the tape is mostly made of
+ * (sums, products, quotients) inline, every other op through ins_val. The
+ * same operations in the same order as ins_val: the same values. */
+static inline double ins_fast(const bg_eqsys *s, const tinstr *I, const double *v) {
+  switch (I->op) {
+  case BG_X_ADD: return v[I->a[0]] + v[I->a[1]];
+  case BG_X_SUB: return v[I->a[0]] - v[I->a[1]];
+  case BG_X_MUL: return v[I->a[0]] * v[I->a[1]];
+  case BG_X_DIV: return v[I->a[0]] / v[I->a[1]];
+  case BG_X_NEG: return -v[I->a[0]];
+  case T_LIN: {
+    const double *c = s->tl_coef + I->ref;
+    const int *sl = s->tl_slot + I->ref;
+    double r = 0;
+    for (int k = 0; k < I->a[0]; k++) r += c[k] * v[sl[k]];
+    return r;
+  }
+  default: return ins_val(s, I, v);
+  }
+}
+
 /* Emits out = op(args), folding it when every argument is a constant. */
 static int emit(bg_eqsys *s, int op, int ref, int na, const int *args, int eq) {
   tinstr I = {(unsigned char)op, (unsigned char)na, ref, -1, {0, 0, 0}, eq, -1};
@@ -185,6 +206,49 @@ static void compile_outputs(bg_eqsys *s) {
   for (int k = 0; k < s->lin_nh; k++) s->lin_hslot[k] = cx(s, m->output_expr[k], -2000000 - k);
 }
 
+/* Marks the instructions the output slots depend on (a walk back from
+ * them through the instruction that writes each slot) and keeps them in
+ * tape order, with the unknowns and derivatives they read. */
+static int *slice_list(bg_eqsys *s, const unsigned char *mark, int lo, int hi, int *cnt) {
+  int c = 0;
+  for (int i = lo; i < hi; i++) c += mark[i];
+  int *L = bg_arena_alloc(&s->arena, (size_t)(c + 1) * sizeof(int));
+  c = 0;
+  for (int i = lo; i < hi; i++)
+    if (mark[i]) L[c++] = i - lo;
+  *cnt = c;
+  return L;
+}
+
+static void compile_output_slice(bg_eqsys *s) {
+  int *prod = bg_xmalloc((size_t)s->nslot * sizeof(int));
+  int *stack = bg_xmalloc((size_t)(s->nslot + 1) * sizeof(int)), top = 0;
+  unsigned char *seen = bg_xcalloc((size_t)s->nslot, 1), *used = bg_xcalloc((size_t)s->ncode + 1, 1);
+  for (int i = 0; i < s->nslot; i++) prod[i] = -1;
+  for (int k = 0; k < s->nout_code; k++) prod[s->code[k].out] = k;
+  for (int k = 0; k < s->nout; k++)
+    if (!seen[s->out_slot[k]]) seen[s->out_slot[k]] = 1, stack[top++] = s->out_slot[k];
+  while (top) {
+    int k = prod[stack[--top]];
+    if (k < 0 || used[k]) continue;
+    used[k] = 1;
+    const tinstr *I = &s->code[k];
+    int na = I->op == T_LIN ? I->a[0] : I->na;
+    for (int a = 0; a < na; a++) {
+      int sl = I->op == T_LIN ? s->tl_slot[I->ref + a] : I->a[a];
+      if (!seen[sl]) seen[sl] = 1, stack[top++] = sl;
+    }
+  }
+  int c = 0;
+  for (int k = 0; k < s->nout_code; k++) c += used[k];
+  s->oslice = bg_arena_alloc(&s->arena, (size_t)(c + 1) * sizeof(int));
+  for (int k = 0; k < s->nout_code; k++)
+    if (used[k]) s->oslice[s->noslice++] = k;
+  s->oslice_y = slice_list(s, seen, s->slot_y, s->slot_y + s->n, &s->noslice_y);
+  s->oslice_yp = slice_list(s, seen, s->slot_yp, s->slot_yp + s->n, &s->noslice_yp);
+  free(prod), free(stack), free(seen), free(used);
+}
+
 /* 1 when the expression reads a param. */
 static int reads_param(const bg_model *m, int root) {
   const bg_xnode *n = &m->xnode[root];
@@ -241,6 +305,7 @@ void bg_eqs_compile(bg_eqsys *s) {
   s->nmain = s->ncode;
   compile_outputs(s);
   s->nout_code = s->ncode;
+  compile_output_slice(s);
   if (s->live_params) compile_initial(s);
   s->dv = bg_xcalloc((size_t)s->nslot + 1, sizeof(double));
 }
@@ -372,11 +437,11 @@ static void run_code(bg_eqsys *s, int c1, int frozen) {
   if (frozen) {
     for (int k = 0; k < c1; k++) {
       int e = k < s->nmain ? s->code_ev[k] : -1;
-      v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_val(s, &s->code[k], v);
+      v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_fast(s, &s->code[k], v);
     }
     return;
   }
-  for (int k = 0; k < c1; k++) v[s->code[k].out] = ins_val(s, &s->code[k], v);
+  for (int k = 0; k < c1; k++) v[s->code[k].out] = ins_fast(s, &s->code[k], v);
 }
 
 static void load_point(bg_eqsys *s, double t, const double *y, const double *yp) {
@@ -412,6 +477,56 @@ int bg_eqs_eval(bg_eqsys *s, double t, const double *y, const double *yp, int ou
    * compiled then, which are what the model means anyway. */
   if (s->vals_frozen && eval_bad(s, outputs)) run_code(s, c1, 0);
   return eval_bad(s, outputs) ? diagnose(s, 0, c1, t) : 0;
+}
+
+/* diagnose() for the outputs' slice: only what the slice read and wrote. */
+static int diagnose_slice(bg_eqsys *s, double t) {
+  s->has_err = 1;
+  for (int k = 0; k < s->noslice_y; k++) {
+    int i = s->oslice_y[k];
+    if (isfinite(s->v[s->slot_y + i])) continue;
+    snprintf(s->err, sizeof s->err, "the unknown %s is not a finite number at t = %g",
+             s->uname[i], t);
+    return -1;
+  }
+  for (int k = 0; k < s->noslice; k++) {
+    const tinstr *I = &s->code[s->oslice[k]];
+    if (isfinite(s->v[I->out])) continue;
+    describe(s, I, t);
+    return -1;
+  }
+  snprintf(s->err, sizeof s->err, "a value that is not a finite number at t = %g", t);
+  return -1;
+}
+
+/* run_code() on the outputs' slice. */
+static void run_slice(bg_eqsys *s, int frozen) {
+  double *v = s->v;
+  s->vals_frozen = frozen;
+  for (int q = 0; q < s->noslice; q++) {
+    int k = s->oslice[q], e = frozen && k < s->nmain ? s->code_ev[k] : -1;
+    v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_fast(s, &s->code[k], v);
+  }
+}
+
+static int outputs_bad(const bg_eqsys *s) {
+  int bad = 0;
+  for (int k = 0; k < s->nout; k++) bad |= !isfinite(s->v[s->out_slot[k]]);
+  return bad;
+}
+
+int bg_eqs_eval_outputs(bg_eqsys *s, double t, const double *y, const double *yp) {
+  double *v = s->v;
+  v[0] = t;
+  for (int k = 0; k < s->noslice_y; k++) v[s->slot_y + s->oslice_y[k]] = y[s->oslice_y[k]];
+  for (int k = 0; k < s->noslice_yp; k++)
+    v[s->slot_yp + s->oslice_yp[k]] = yp ? yp[s->oslice_yp[k]] : 0;
+  int frozen = s->ev_frozen && s->nev;
+  run_slice(s, frozen);
+  s->has_err = 0;
+  /* as bg_eqs_eval: a frozen branch past its switching point, the values as compiled */
+  if (frozen && outputs_bad(s)) run_slice(s, 0);
+  return outputs_bad(s) ? diagnose_slice(s, t) : 0;
 }
 
 /* ------------------------------------------------------------ Jacobians */
