@@ -2,7 +2,7 @@
 # Benchmark (not a test): a doubling sweep over model size, per stage.
 # For each shape (bench/gen_models.py: chain, ladder, grid) and each size in
 # bonds (FROM, 2·FROM, ... up to TO), runs bench/stage_time.c in a fresh
-# process and prints per stage the time, the growth exponent against the
+# process and prints per stage the CPU time, the growth exponent against the
 # previous size (log t2/t1 / log n2/n1: 1 is linear, 2 quadratic; n log n
 # shows as about 1.1) and the peak resident memory of the run so far.
 # Usage: bash bench/sweep.sh BGDRAW_BUILD_DIR [TO] [FROM]

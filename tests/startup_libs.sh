@@ -42,5 +42,17 @@ else bad "missing module: status $st, $(head -1 "$tmp/err")"; fi
 BGDRAW_RENDER_MODULE=$tmp/none.so "$BGDRAW" examples/rlc.bg --check >/dev/null 2>&1 && ok ||
   bad "--check needs the render module"
 
+# The module is opened with RTLD_LAZY (src/cli/cli_render.c): every engine
+# function it calls must be one the executable exports, or a drawing would
+# stop half-way at the first call of a missing one.
+module=$(dirname "$BGDRAW")/bgdraw_render.so
+if [ -f "$module" ] && command -v nm >/dev/null; then
+  nm -D --undefined-only "$module" | awk '$2 ~ /^bg_/ {print $2}' | sort -u >"$tmp/needs"
+  nm -D --defined-only "$BGDRAW" | awk '$3 ~ /^bg_/ {print $3}' | sort -u >"$tmp/has"
+  missing=$(comm -23 "$tmp/needs" "$tmp/has" | tr '\n' ' ')
+  if [ -s "$tmp/needs" ] && [ -z "$missing" ]; then ok
+  else bad "the render module needs engine functions the executable lacks: '$missing'"; fi
+fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

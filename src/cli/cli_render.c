@@ -22,8 +22,10 @@ static void beside_exe(const char *rel, char *buf, size_t n) {
   if (cli_exe_dir(dir, sizeof dir) == 0) snprintf(buf, n, "%s/%s", dir, rel);
 }
 
-/* RTLD_NOW: an engine function the module needs and the executable lacks is
- * an error here, not a crash in the middle of a drawing. */
+/* RTLD_LAZY: binding every function of the module and of the libraries it
+ * brings (cairo, pango, glib, Graphviz) at once would cost more than the
+ * drawing of a small model; the executable carries the whole engine
+ * (--whole-archive), so no engine function the module calls is missing. */
 static void *open_module(char *tried, size_t n) {
   char installed[4200], here[4200];
   beside_exe(BG_EXE_TO_MODULE "/bgdraw_render.so", installed, sizeof installed);
@@ -33,7 +35,7 @@ static void *open_module(char *tried, size_t n) {
   tried[0] = 0;
   for (size_t i = 0; i < sizeof cand / sizeof cand[0]; i++) {
     if (!cand[i] || !cand[i][0]) continue;
-    void *h = dlopen(cand[i], RTLD_NOW | RTLD_LOCAL);
+    void *h = dlopen(cand[i], RTLD_LAZY | RTLD_LOCAL);
     if (h) return h;
     size_t used = strlen(tried);
     snprintf(tried + used, n - used, "\n  %s", dlerror());
