@@ -325,7 +325,7 @@ static int fc_through(const fc_scene *f, int kind) {
   return n;
 }
 
-static void fc_count(const bg_scene *s, fc_stats *st) {
+static inline void fc_count(const bg_scene *s, fc_stats *st) {
   fc_scene f;
   fc_read(s, &f);
   for (int j = 0; j < f.nline; j++) {
@@ -349,7 +349,7 @@ static void fc_count(const bg_scene *s, fc_stats *st) {
   fc_free(&f);
 }
 
-static void fc_add(fc_stats *sum, const fc_stats *s) {
+static inline void fc_add(fc_stats *sum, const fc_stats *s) {
   const int *a = (const int *)s;
   int *b = (int *)sum;
   for (size_t k = 0; k < sizeof *s / sizeof(int); k++) b[k] += a[k];
