@@ -15,6 +15,8 @@
 #include "base/diag.h"
 #include "base/strbuf.h"
 #include "causality/causality.h"
+#include "equations/eqsym.h"
+#include "equations/eqsys.h"
 #include "lang/parse.h"
 #include "model/model.h"
 
@@ -64,6 +66,17 @@ static inline int fuzz_load(fuzz_run *f, const uint8_t *data, size_t size) {
   bg_analysis_summary(f->model, &f->analysis, &sb);
   bg_sb_free(&sb);
   return 0;
+}
+
+/* The equations of a model fuzz_load accepted (NULL when they cannot be
+ * built), their reduced form recorded in the analysis as the CLI does. */
+static inline bg_eqsys *fuzz_eqsys(fuzz_run *f, size_t size) {
+  bg_diags eqd;
+  bg_diags_init(&eqd, "fuzz", f->src, size);
+  bg_eqsys *s = bg_eqsys_build(f->model, &f->analysis, &eqd);
+  bg_diags_free(&eqd);
+  if (s) f->analysis.reduced_form = bg_eqred_form(s);
+  return s;
 }
 
 static inline void fuzz_free(fuzz_run *f) {

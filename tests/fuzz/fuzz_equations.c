@@ -11,13 +11,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (size > FUZZ_MAX_LEN) return 0;
   fuzz_run f;
   if (fuzz_load(&f, data, size) == 0) {
-    bg_diags eqd;
-    bg_diags_init(&eqd, "fuzz", f.src, size);
-    bg_eqsys *s = bg_eqsys_build(f.model, &f.analysis, &eqd);
-    bg_diags_free(&eqd);
+    bg_eqsys *s = fuzz_eqsys(&f, size);
     bg_strbuf sb = {0};
     if (s) {
-      f.analysis.reduced_form = bg_eqred_form(s);
       static const char *const forms[] = {"text", "latex", "c", "json"};
       for (int i = 0; i < 4; i++) bg_eqprint(s, forms[i], &sb);
       if (bg_eqsys_n(s) <= 40) { /* the dense index is cubic: keep runs short */

@@ -11,11 +11,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (size > FUZZ_MAX_LEN) return 0;
   fuzz_run f;
   if (fuzz_load(&f, data, size) == 0) {
-    bg_diags eqd;
-    bg_diags_init(&eqd, "fuzz", f.src, size);
-    bg_eqsys *s = bg_eqsys_build(f.model, &f.analysis, &eqd);
-    bg_diags_free(&eqd);
-    if (s) f.analysis.reduced_form = bg_eqred_form(s);
+    bg_eqsys *s = fuzz_eqsys(&f, size);
     /* the grid the model asks for, coarsened to at most 50 rows */
     bg_simspec *sp = &f.model->sim;
     if (sp->dt > 0 && (sp->t_end - sp->t0) / sp->dt > 50) sp->dt = 0;
