@@ -27,6 +27,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 typedef struct fuzz_run {
   char *src;
   bg_diags dg;
+  bg_ast *ast; /* kept for the transformations (fuzz_equations) */
   bg_model *model;
   bg_analysis analysis;
   int analysed;
@@ -46,7 +47,7 @@ static inline int fuzz_load(fuzz_run *f, const uint8_t *data, size_t size) {
   bg_diags_init(&f->dg, path, f->src, size);
   bg_ast *ast = bg_parse_string(path, f->src, size, &f->dg);
   if (ast && !f->dg.nerrors) f->model = bg_model_compile(ast, NULL, 0, &f->dg);
-  bg_ast_free(ast);
+  f->ast = ast;
   char *text = NULL;
   size_t len = 0;
   FILE *mem = open_memstream(&text, &len);
@@ -82,6 +83,7 @@ static inline bg_eqsys *fuzz_eqsys(fuzz_run *f, size_t size) {
 static inline void fuzz_free(fuzz_run *f) {
   if (f->analysed) bg_analysis_free(&f->analysis);
   if (f->model) bg_model_free(f->model);
+  bg_ast_free(f->ast);
   bg_diags_free(&f->dg);
   free(f->src);
 }

@@ -1,11 +1,49 @@
 /* Fuzz target: the equations (every printed form, the reduced form), the
- * numeric index of small systems, and the analysis JSON (fuzz_common.h). */
+ * numeric index of small systems, the analysis JSON, the model exports (C,
+ * Python, Octave, Modelica, the FMU's description and glue) and the three
+ * model transformations with their recompiled results (fuzz_common.h). */
 #include "equations/eqprint.h"
 #include "equations/eqsym.h"
 #include "equations/eqsys.h"
 #include "equations/index.h"
+#include "export/export.h"
 #include "fuzz_common.h"
 #include "json/json.h"
+#include "transform/transform.h"
+
+static void exports(fuzz_run *f, size_t size) {
+  bg_diags dg;
+  bg_diags_init(&dg, "fuzz", f->src, size);
+  bg_eqsys *s = bg_eqsys_build_export(f->model, &f->analysis, &dg);
+  bg_diags_free(&dg);
+  if (!s) return;
+  char prefix[80], guid[64];
+  bg_export_default_prefix(f->model, prefix, sizeof prefix);
+  bg_strbuf h = {0}, c = {0};
+  bg_export_c(s, prefix, "model.h", &h, &c);
+  bg_export_python(s, &c);
+  bg_export_octave(s, "model", &c);
+  bg_export_modelica(s, &c);
+  bg_export_fmu_guid(f->src, size, guid, sizeof guid);
+  bg_export_fmu_description(s, prefix, guid, &c);
+  bg_export_fmu_glue(s, prefix, "model.h", guid, &c);
+  bg_sb_free(&h);
+  bg_sb_free(&c);
+  bg_eqsys_free(s);
+}
+
+static void transforms(fuzz_run *f, size_t size) {
+  static const char *const names[] = {"merge-stores", "parasitic", "relax-junction"};
+  for (int i = 0; i < 3; i++) {
+    bg_transform_input in = {names[i], f->src, size, "model.bg", f->ast, f->model,
+                             &f->analysis, NULL, 0};
+    bg_transform_result r;
+    memset(&r, 0, sizeof r);
+    char *why = NULL;
+    if (bg_transform_apply(&in, &r, &why) == 0) bg_transform_result_free(&r);
+    free(why);
+  }
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (size > FUZZ_MAX_LEN) return 0;
@@ -23,10 +61,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         f.analysis.index_numeric = ix.index;
         bg_index_free(&ix);
       }
+      exports(&f, size);
     }
     bg_json_write_analysis(f.model, &f.analysis, &sb);
     bg_sb_free(&sb);
     if (s) bg_eqsys_free(s);
+    transforms(&f, size);
   }
   fuzz_free(&f);
   return 0;
