@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # bgdraw's own memory on every output kind (issue 20): one run writes every
 # -o format (svg pdf png dot json tex c csv), the plot and the report of the
-# RLC example; --check and --equations text run too. Under valgrind: no
+# RLC example; --check and --equations text run too; then the exports, the
+# linear outputs, a transformation, events, index reduction, fields and a
+# collapsed submodel. Under valgrind: no
 # invalid read, write or free, and no block definitely lost that bgdraw
 # itself allocated (its first frame above the allocator is in bgdraw's code;
 # fontconfig's and pango's process-wide caches are theirs). In a sanitizer
@@ -11,8 +13,18 @@
 set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
 m=$root/examples/rlc.bg
+d=$root/tests/data
 runs=("$m --simulate -o x.svg -o x.pdf -o x.png -o x.dot -o x.json -o x.tex -o x.c -o x.csv --plot p.svg --report r.pdf"
-      "$m --check" "$m --equations text")
+      "$m --check" "$m --equations text"
+      # the exports, the linear analysis and its plots, a transformation,
+      # state events, an index-reduced DAE, n-port fields, a collapsed submodel
+      "$m -o x.m -o x.py -o x.mo --verify -o v.csv"
+      "$d/linear_rlc.bg --linear json --bode b.svg --nyquist n.pdf --step s.png"
+      "$root/examples/hydraulic_bridge.bg --transform parasitic -o t.bg"
+      "$d/bouncing_ball.bg --simulate -o e.csv -o e.json"
+      "$root/examples/delta.bg --simulate -o i.csv"
+      "$d/fields/transducer.bg --simulate -o f.csv -o f.svg --report f.pdf"
+      "$root/examples/components/motor_drive.bg --collapse all -o c.svg")
 cd "$tmp"
 if grep -qa __asan_init "$BGDRAW"; then
   for i in "${!runs[@]}"; do
@@ -36,7 +48,8 @@ else
     check "valgrind run $i: no leak of bgdraw's own memory ($own)" $((own != 0))
     [ "$own" -eq 0 ] || grep -A12 "definitely lost" vg$i.log | head -40
   done
-  for f in x.svg x.pdf x.png x.dot x.json x.tex x.c x.csv p.svg r.pdf; do
+  for f in x.svg x.pdf x.png x.dot x.json x.tex x.c x.csv p.svg r.pdf x.m x.py x.mo b.svg n.pdf \
+           s.png t.bg v.csv e.csv e.json i.csv f.csv f.svg f.pdf c.svg; do
     [ -s $f ] || { echo "FAIL $f not written"; fail=$((fail + 1)); }
   done
 fi
