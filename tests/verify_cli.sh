@@ -44,6 +44,20 @@ if command -v pdftotext >/dev/null; then
   "$BGDRAW" "$tmp/loose.bg" --verify --report "$tmp/loose.pdf" 2>/dev/null
   pdftotext "$tmp/loose.pdf" - | tr -s ' \n' ' ' | grep -q "Verification verification at rtol"; check "loose: report row" $?
 fi
+# an algebraic model (no states, no unknowns): no solver ran, so there are no
+# tolerances to tighten; the summary says so and the JSON has null tolerances
+printf 'model alg\nSe U = 1\nR R1 = 2\nbond U -> R1\nsimulate t_end = 1, dt = 0.5\nplot R1.f\n' >"$tmp/alg.bg"
+"$BGDRAW" "$tmp/alg.bg" --verify -o "$tmp/alg.json" -o "$tmp/alg.csv" 2>"$tmp/alg.err"; check "algebraic: exit status" $?
+grep -q "verification: nothing was integrated" "$tmp/alg.err"; check "algebraic: stderr summary" $?
+python3 - "$tmp/alg.json" "$tmp/alg.csv" <<'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))["simulation"]["verify"]
+rows = [l.strip().split(",") for l in open(sys.argv[2])][1:]
+ok = v["rtol"] is None and v["atol"] is None and v["worst"] == 0 and \
+     [float(r[1]) for r in rows] == [0.5, 0.5, 0.5]
+sys.exit(0 if ok else 1)
+PY
+check "algebraic: null tolerances, deviation 0, the flow U/R at each row" $?
 # without --verify: null
 "$BGDRAW" examples/rlc.bg --simulate -o "$tmp/plain.json" 2>/dev/null
 python3 -c "import json,sys; sys.exit(json.load(open(sys.argv[1]))['simulation']['verify'] is not None)" "$tmp/plain.json"

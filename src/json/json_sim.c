@@ -19,10 +19,12 @@ static const char *status_name(int status) {
 static void put_verify(bg_strbuf *o, const bg_simresult *r) {
   bg_sb_puts(o, ",\n    \"verify\": ");
   if (!r->verified) { bg_sb_puts(o, "null"); return; }
-  bg_sb_puts(o, "{\"rtol\": ");
-  bg_sb_json_num(o, r->verify_rtol);
+  bg_sb_puts(o, "{\"rtol\": "); /* null when no solver ran (an algebraic model) */
+  if (r->n) bg_sb_json_num(o, r->verify_rtol);
+  else bg_sb_puts(o, "null");
   bg_sb_puts(o, ", \"atol\": ");
-  bg_sb_json_num(o, r->verify_atol);
+  if (r->n) bg_sb_json_num(o, r->verify_atol);
+  else bg_sb_puts(o, "null");
   bg_sb_puts(o, ", \"outputs\": [");
   for (int k = 0; r->verified > 0 && k < r->nout; k++) {
     bg_sb_printf(o, "%s{\"name\": ", k ? ", " : "");

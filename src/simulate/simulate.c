@@ -519,6 +519,11 @@ int bg_sim_verify_text(const bg_simresult *r, bg_strbuf *out) {
     bg_sb_printf(out, "verification not possible: %s", r->verify_message ? r->verify_message : "");
     return 1;
   }
+  if (r->n == 0) { /* no solver ran: there are no tolerances to tighten */
+    bg_sb_printf(out, "verification: nothing was integrated (no states and no algebraic unknowns): "
+                      "the outputs are evaluated directly at each output time, exact to round-off");
+    return 1;
+  }
   bg_sb_printf(out, "verification at rtol %g, atol %g: largest deviation %.2g of the range", r->verify_rtol,
                r->verify_atol, r->verify_worst);
   if (r->verify_worst_col >= 0) bg_sb_printf(out, " (%s)", r->names[r->verify_worst_col]);
