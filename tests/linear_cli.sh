@@ -19,6 +19,10 @@ check "text exit 0" '[ $rc -eq 0 ]'
 check "vC/U" 'grep -qxF "vC/U = (20) / (s^2 + 4*s + 20)" "$TMP/t.txt"'
 check "i/U" 'grep -qxF "i/U = (2*s) / (s^2 + 4*s + 20)" "$TMP/t.txt"'
 check "poles" 'grep -qF -- "-2 ± 4j   wn = 4.47214 rad/s, zeta = 0.447214" "$TMP/t.txt"'
+# a coefficient that prints as 1 is left out before s (in the examples' rlc the
+# numerator of L1.p/U is 1 within rounding; it printed "(1*s)")
+"$BG" examples/rlc.bg --linear text >"$TMP/rlc.txt" 2>/dev/null
+check "rlc: no 1*s" 'grep -qxF "L1.p/U = (s) / (s^2 + 10000*s + 1e+09)" "$TMP/rlc.txt"'
 check "no diagram written" '[ ! -e out/linear_rlc.svg ]'
 "$BG" $M --linear latex >"$TMP/t.tex"
 check "latex" 'grep -qF "\frac{vC}{U} &= \frac{20}{s^{2} + 4 s + 20}" "$TMP/t.tex"'

@@ -35,11 +35,15 @@ static void poly(bg_strbuf *o, const double *c, int nc, int latex) {
     int p = nc - 1 - k;
     double v = c[k];
     if (v == 0 && !(nc == 1)) continue;
-    double a = fabs(v);
+    /* the coefficient as printed decides: 0.99999999 prints as 1 and is left
+     * out before a power of s ("s^5", not "1*s^5") */
+    char a[32];
+    snprintf(a, sizeof a, "%.6g", fabs(v));
+    int one = !strcmp(a, "1");
     bg_sb_puts(o, first ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + "));
     first = 0;
-    if (a != 1 || p == 0) bg_sb_printf(o, "%.6g", a);
-    if (p > 0 && a != 1) bg_sb_puts(o, latex ? " " : "*");
+    if (!one || p == 0) bg_sb_puts(o, a);
+    if (p > 0 && !one) bg_sb_puts(o, latex ? " " : "*");
     if (p == 1) bg_sb_puts(o, "s");
     else if (p > 1) bg_sb_printf(o, latex ? "s^{%d}" : "s^%d", p);
   }
