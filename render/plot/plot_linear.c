@@ -58,15 +58,6 @@ static void pair_names(table *T, const bg_linear *l, int npanel) {
     }
 }
 
-/* Degrees, continuous along the frequencies (jumps of more than 180 unwrapped). */
-static void unwrap(double *ph, int n) {
-  for (int k = 1; k < n; k++) {
-    if (!isfinite(ph[k]) || !isfinite(ph[k - 1])) continue;
-    while (ph[k] - ph[k - 1] > 180) ph[k] -= 360;
-    while (ph[k] - ph[k - 1] < -180) ph[k] += 360;
-  }
-}
-
 static int bode_table(const bg_model *m, const bg_linear *l, table *T) {
   int np = l->ny * l->nu, nw = BODE_POINTS;
   double *re = bg_xcalloc((size_t)nw * np + 1, sizeof *re), *im = bg_xcalloc((size_t)nw * np + 1, sizeof *im);
@@ -78,9 +69,8 @@ static int bode_table(const bg_model *m, const bg_linear *l, table *T) {
     for (int k = 0; k < nw; k++) {
       double mag = hypot(re[(size_t)p * nw + k], im[(size_t)p * nw + k]);
       T->r.values[(size_t)k * T->r.nout + p] = mag > 0 ? 20 * log10(mag) : -INFINITY;
-      ph[k] = mag > 0 ? atan2(im[(size_t)p * nw + k], re[(size_t)p * nw + k]) * (180 / 3.141592653589793) : NAN;
     }
-    unwrap(ph, nw);
+    bg_linear_phase(l, p, nw, T->r.t, re + (size_t)p * nw, im + (size_t)p * nw, ph);
     for (int k = 0; k < nw; k++) T->r.values[(size_t)k * T->r.nout + np + p] = ph[k];
   }
   pair_names(T, l, 2);

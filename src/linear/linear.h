@@ -91,6 +91,12 @@ int bg_linear_freqs(const bg_linear *l, const bg_model *m, int nw, double *w);
  * ((iy * nu + iu) * nw + k). Reduced systems: A in Hessenberg form once,
  * O(n^2) per frequency; descriptor only: a dense complex solve each. */
 int bg_linear_freqresp(const bg_linear *l, int nw, const double *w, double *re, double *im);
+/* The phase in degrees of one pair's samples re/im (nw each) at w, continuous
+ * along w (linear_phase.c): each sample's angle, on the branch its transfer
+ * function's poles and zeros give, or unwrapped where there is none; NaN
+ * where H is 0. The first sample keeps its angle in (-180, 180]. */
+void bg_linear_phase(const bg_linear *l, int pair, int nw, const double *w, const double *re,
+                     const double *im, double *ph);
 
 /* ---- time responses (linear_time.c): step and impulse of every pair,
  * nt points on [0, t_end] (t_end: the model's or 5 slowest time constants);
