@@ -299,6 +299,27 @@ static void say_targets(tx_ctx *c, const plan *p) {
 }
 
 /* The trial model (every parameter 1) sizes the stores; then the real one. */
+/* The model with every planned store at value 1 (their estimates are then
+ * measured and the values sized), compiled and analysed; -1 with the
+ * reason in c->problem when it does not compile. */
+static int trial_model(tx_ctx *c, plan *p, bg_model **tm, bg_analysis *ta) {
+  for (int i = 0; i < p->n; i++) p->t[i].value = 1;
+  initial_values(c, p);
+  tx_doc trial;
+  tx_doc_init(&trial, c->in->src, c->in->srclen);
+  emit(c, p, &trial);
+  char *text = tx_doc_text(&trial), *why = NULL;
+  tx_doc_free(&trial);
+  int rc = tx_compile(c, text, tm, ta, &why);
+  free(text);
+  if (rc != 0) {
+    bg_sb_puts(&c->problem, why);
+    free(why);
+    return -1;
+  }
+  return 0;
+}
+
 int tx_parasitic(tx_ctx *c) {
   plan p = {.n = 0};
   collect(c, &p);
@@ -317,22 +338,9 @@ int tx_parasitic(tx_ctx *c) {
                             "choose the stores' values from");
     goto out;
   }
-  for (int i = 0; i < p.n; i++) p.t[i].value = 1;
-  initial_values(c, &p);
-  tx_doc trial;
-  tx_doc_init(&trial, c->in->src, c->in->srclen);
-  emit(c, &p, &trial);
-  char *text = tx_doc_text(&trial), *why = NULL;
-  tx_doc_free(&trial);
   bg_model *tm;
   bg_analysis ta;
-  if (tx_compile(c, text, &tm, &ta, &why) != 0) {
-    bg_sb_puts(&c->problem, why);
-    free(why);
-    free(text);
-    goto out;
-  }
-  free(text);
+  if (trial_model(c, &p, &tm, &ta) != 0) goto out;
   double want = scale / BG_TX_PARASITIC_FACTOR;
   rc = size_stores(c, &p, tm, &ta, want, &said);
   /* better: a lower predicted index, or fewer algebraic loops and conflicts */
