@@ -2,7 +2,8 @@
 # bgdraw's own memory on every output kind (issue 20): one run writes every
 # -o format (svg pdf png dot json tex c csv), the plot and the report of the
 # RLC example; --check and --equations text run too; then the exports, the
-# linear outputs, a transformation, events, index reduction, fields and a
+# FMU (bgdraw itself; the C compiler it runs is not traced), the linear
+# outputs, a transformation, events, index reduction, fields and a
 # collapsed submodel. Under valgrind: no
 # invalid read, write or free, and no block definitely lost that bgdraw
 # itself allocated (its first frame above the allocator is in bgdraw's code;
@@ -18,7 +19,7 @@ runs=("$m --simulate -o x.svg -o x.pdf -o x.png -o x.dot -o x.json -o x.tex -o x
       "$m --check" "$m --equations text"
       # the exports, the linear analysis and its plots, a transformation,
       # state events, an index-reduced DAE, n-port fields, a collapsed submodel
-      "$m -o x.m -o x.py -o x.mo --verify -o v.csv"
+      "$m -o x.m -o x.py -o x.mo -o x.fmu --verify -o v.csv"
       "$d/linear_rlc.bg --linear json --bode b.svg --nyquist n.pdf --step s.png"
       "$root/examples/hydraulic_bridge.bg --transform parasitic -o t.bg"
       "$d/bouncing_ball.bg --simulate -o e.csv -o e.json"
@@ -49,7 +50,7 @@ else
     [ "$own" -eq 0 ] || grep -A12 "definitely lost" vg$i.log | head -40
   done
   for f in x.svg x.pdf x.png x.dot x.json x.tex x.c x.csv p.svg r.pdf x.m x.py x.mo b.svg n.pdf \
-           s.png t.bg v.csv e.csv e.json i.csv f.csv f.svg f.pdf c.svg; do
+           s.png t.bg v.csv e.csv e.json i.csv f.csv f.svg f.pdf c.svg x.fmu; do
     [ -s $f ] || { echo "FAIL $f not written"; fail=$((fail + 1)); }
   done
 fi
