@@ -18,7 +18,7 @@ for spec in parse:20000 equations:4000 simulate:2000 render:400; do
   exe=$bin/fuzz_$t
   if [ ! -x "$exe" ]; then echo "FAIL fuzz_$t not built next to $BGDRAW"; fail=$((fail + 1)); continue; fi
   BG_FUZZ_SAVE=$tmp/input "$exe" -runs "$runs" -seed 20 -dict tests/fuzz/bg.dict \
-    examples tests/bad tests/fuzz/corpus >"$tmp/out" 2>&1
+    examples tests/bad tests/fuzz/corpus tests/data >"$tmp/out" 2>&1
   st=$?
   if [ $st -eq 0 ]; then
     pass=$((pass + 1))

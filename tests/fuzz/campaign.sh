@@ -34,7 +34,7 @@ for t in "${targets[@]}"; do
   ASAN_OPTIONS=detect_leaks=$leaks:allocator_may_return_null=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   nice -n 19 "$build/fuzz_$t" "$dir/corpus" "$root/examples" "$root/tests/bad" \
-    "$root/tests/fuzz/corpus" -dict="$root/tests/fuzz/bg.dict" -max_len=8192 \
+    "$root/tests/fuzz/corpus" "$root/tests/data" -dict="$root/tests/fuzz/bg.dict" -max_len=8192 \
     -timeout=10 -rss_limit_mb=2048 -max_total_time="$secs" -print_final_stats=1 \
     -artifact_prefix="$dir/found/" -close_fd_mask=3 >"$dir/log" 2>&1
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$dir/log" | tail -1)
