@@ -134,8 +134,8 @@ static void first_sources(const bg_diagram *d, const int *tail, const int *head,
     up[a] = b;
   }
   for (int e = 0; e < m->nelem; e++) {
-    int c = e;
-    while (up[c] != c) c = up[c];
+    int c = e; /* halving here too: unions in file order leave paths as long as the chain */
+    while (up[c] != c) c = up[c] = up[up[c]];
     if (bg_elem_is_source(m->elem_kind[e]) && !has[c]) has[c] = 1, root[e] = 1;
   }
   free(up), free(has);

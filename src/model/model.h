@@ -231,8 +231,10 @@ typedef struct bg_model {
 #undef BG_X_DECLARE
   /* element names hashed (open addressing, elem_hashcap a power of two, -1
    * empty) so bg_model_find_elem is O(1); NULL in hand-built models, which
-   * are then searched linearly */
+   * are then searched linearly. Bond numbers likewise (bond_hash, same
+   * capacity rule) for bg_model_find_bond when they are not 1..n in order. */
   int *elem_hash, elem_hashcap;
+  int *bond_hash, bond_hashcap;
   bg_arena arena; /* owns every array and string above */
 } bg_model;
 
@@ -273,7 +275,8 @@ int bg_elem_field(const bg_model *m, int elem);
 const char *bg_elem_port_name(const bg_model *m, int elem);
 /* Element id by name, or -1. */
 int bg_model_find_elem(const bg_model *m, const char *name);
-/* Builds m->elem_hash (bg_model_compile does; hand-built models may). */
+/* Builds m->elem_hash and m->bond_hash (bg_model_compile does; hand-built
+ * models may). */
 void bg_model_hash_names(bg_model *m);
 /* Bond id by user number, or -1. */
 int bg_model_find_bond(const bg_model *m, int number);

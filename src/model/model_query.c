@@ -76,6 +76,16 @@ void bg_model_hash_names(bg_model *m) {
     while (m->elem_hash[h] >= 0) h = (h + 1) & (unsigned)(cap - 1);
     m->elem_hash[h] = e;
   }
+  cap = 16;
+  while (cap < 2 * m->nbond + 2) cap *= 2;
+  m->bond_hash = bg_arena_alloc(&m->arena, (size_t)cap * sizeof *m->bond_hash);
+  m->bond_hashcap = cap;
+  for (int i = 0; i < cap; i++) m->bond_hash[i] = -1;
+  for (int b = 0; b < m->nbond; b++) {
+    unsigned h = ((unsigned)m->bond_num[b] * 2654435761u) & (unsigned)(cap - 1);
+    while (m->bond_hash[h] >= 0) h = (h + 1) & (unsigned)(cap - 1);
+    m->bond_hash[h] = b;
+  }
 }
 
 int bg_model_find_elem(const bg_model *m, const char *name) {
@@ -93,8 +103,14 @@ int bg_model_find_elem(const bg_model *m, const char *name) {
 int bg_model_find_bond(const bg_model *m, int number) {
   /* fast path: bonds numbered 1..n in file order */
   if (number >= 1 && number <= m->nbond && m->bond_num[number - 1] == number) return number - 1;
-  for (int b = 0; b < m->nbond; b++)
-    if (m->bond_num[b] == number) return b;
+  if (!m->bond_hash) {
+    for (int b = 0; b < m->nbond; b++)
+      if (m->bond_num[b] == number) return b;
+    return -1;
+  }
+  unsigned mask = (unsigned)(m->bond_hashcap - 1);
+  for (unsigned h = ((unsigned)number * 2654435761u) & mask; m->bond_hash[h] >= 0; h = (h + 1) & mask)
+    if (m->bond_num[m->bond_hash[h]] == number) return m->bond_hash[h];
   return -1;
 }
 

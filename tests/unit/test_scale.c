@@ -1,6 +1,6 @@
 /* The lookups that keep large models linear give the same answers as the
- * scans they replace: element names through the compile-time hash (and
- * linearly in a hand-built model), remembered text measurements, the label
+ * scans they replace: element names and bond numbers through the
+ * compile-time hashes (and linearly in a hand-built model), remembered text measurements, the label
  * obstacle grid once it has grown, and a placed scene that skips the items
  * outside its clip rectangle writes exactly the PDF it wrote with those
  * items absent. */
@@ -36,6 +36,40 @@ static void test_find_elem(void) {
     INT_EQ(bg_model_find_elem(m, "r299"), bg_model_find_elem(m, "U") + 301);
     m->elem_hash = hash;
     INT_EQ(bg_model_find_elem(m, "r299"), bg_model_find_elem(m, "U") + 301);
+    bg_model_free(m);
+  }
+  bg_diags_free(&dg);
+  bg_sb_free(&sb);
+}
+
+/* Explicit bond numbers out of file order miss the 1..n fast path and go
+ * through the number hash; a hand-built model without it scans. */
+static void test_find_bond(void) {
+  bg_strbuf sb = {0};
+  bg_sb_puts(&sb, "model numbers\nSe U = 1\n1 j\n");
+  for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "R r%d = 1\n", i);
+  for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "bond %d j -> r%d\n", 7 * (300 - i), i);
+  bg_sb_puts(&sb, "bond U -> j\n");
+  const char *src = bg_sb_str(&sb);
+  bg_diags dg;
+  bg_diags_init(&dg, "numbers.bg", src, strlen(src));
+  bg_ast *ast = bg_parse_string("numbers.bg", src, strlen(src), &dg);
+  bg_model *m = ast ? bg_model_compile(ast, NULL, 0, &dg) : NULL;
+  bg_ast_free(ast);
+  OK(m && m->bond_hash);
+  if (m) {
+    int all = 1;
+    for (int b = 0; b < m->nbond; b++) all &= bg_model_find_bond(m, m->bond_num[b]) == b;
+    OK(all);
+    INT_EQ(bg_model_find_bond(m, 2100), 0);  /* r0's bond, the first in the file */
+    INT_EQ(bg_model_find_bond(m, 1), 300);   /* U's bond takes the smallest free number */
+    INT_EQ(bg_model_find_bond(m, 8), -1);
+    INT_EQ(bg_model_find_bond(m, -7), -1);
+    int *hash = m->bond_hash;
+    m->bond_hash = NULL;
+    INT_EQ(bg_model_find_bond(m, 7), 299);
+    m->bond_hash = hash;
+    INT_EQ(bg_model_find_bond(m, 7), 299);
     bg_model_free(m);
   }
   bg_diags_free(&dg);
@@ -127,6 +161,7 @@ static void test_clipped_place(void) {
 
 int main(void) {
   test_find_elem();
+  test_find_bond();
   test_measure_memo();
   test_obstacle_grid();
   test_clipped_place();
