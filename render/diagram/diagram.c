@@ -287,16 +287,22 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
 
 /* Places text beside bond b, on the barb side (side 1) or opposite (-1),
  * 3.5 pt clear of the line: at the middle if that is free, else a little
- * along the bond or further out. On a bent bond the places are along its
- * longest leg, on that leg's side. */
-static void text_beside(bg_diagram *d, const char *markup, int b, int side, double size,
+ * along the bond or 4, 8, 12 pt further out; the first place that touches
+ * nothing and whose nearest bond is b, else the one touching least (a
+ * place nearer another bond costs as much as a line crossed, so the text
+ * never reads as another bond's when there is room). With flip (a bond
+ * number on a bond without a label) the other side is tried when no place
+ * on its own side is free: a slanted bond in a narrow wedge. On a bent bond
+ * the places are along its longest leg, on that leg's side. */
+static void text_beside(bg_diagram *d, const char *markup, int b, int side, int flip, double size,
                         bg_rgba c, const char *role) {
   static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
-  enum { NT = sizeof ts / sizeof ts[0] };
+  enum { NT = sizeof ts / sizeof ts[0], NOUT = 4, NC = 2 * NOUT * NT };
   double w, h;
   bg_text_measure(d->st.font, size, markup, &w, &h);
   h *= 0.8;
-  bg_vec cand[2 * NT];
+  bg_vec cand[NC];
+  double reach[NC];
   bg_vec p0, p1;
   bg_geom_longest_leg(d, b, &p0, &p1);
   for (int k = 0; k < NT; k++) {
@@ -304,11 +310,24 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, doub
     if (ts[k] == 0.5) dir = d->bg[b].mdir;
     if (d->bg[b].bendn) /* a bent bond: along its longest leg */
       at = bg_vadd(p0, bg_vscale(bg_vsub(p1, p0), ts[k])), dir = bg_vunit(bg_vsub(p1, p0));
-    bg_vec n = bg_vscale(bg_barb_side_at(d, dir), side);
-    double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2, gap = layers_beside(d, b, dir, n);
-    for (int j = 0; j < 2; j++) cand[j * NT + k] = bg_vadd(at, bg_vscale(n, gap + extent + 4 * j));
+    for (int f = 0; f < 2; f++) {
+      bg_vec n = bg_vscale(bg_barb_side_at(d, dir), f ? -side : side);
+      double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2, gap = layers_beside(d, b, dir, n);
+      for (int j = 0; j < NOUT; j++) {
+        int i = (f * NOUT + j) * NT + k;
+        cand[i] = bg_vadd(at, bg_vscale(n, gap + extent + 4 * j));
+        reach[i] = gap + extent + 4 * j + 1;
+      }
+    }
   }
-  bg_vec p = cand[bg_place_best(d, cand, 2 * NT, w + 1, h)];
+  int best = 0, best_cost = -1;
+  for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && best_cost != 1; k++) {
+    int cost = 2 * bg_place_score(d, cand[k], w + 1, h) + (k >= NOUT * NT); /* flipped: 1 more */
+    if (best_cost < 0 || cost < best_cost) cost += bg_place_nearest_bond(d, cand[k], reach[k]) != b ? 2 : 0;
+    if (best_cost < 0 || cost < best_cost) best = k, best_cost = cost;
+  }
+  bg_vec p = cand[best];
+  bg_obstacle_rect(d, p.x - (w + 1) / 2, p.y - h / 2, p.x + (w + 1) / 2, p.y + h / 2);
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind)
     bg_text_halo(d, markup, p, size);
   bg_scene_text(&d->scene, markup, p.x, p.y, size, 0.5, 0.5, c, role);
@@ -329,18 +348,18 @@ static void draw_number(bg_diagram *d, int b) {
     bg_strbuf t = {0};
     var_markup(&t, 'f', m->bond_num[b], size);
     snprintf(role, sizeof role, "variable bond=%d f", m->bond_num[b]);
-    text_beside(d, bg_sb_str(&t), b, -1, size, ink, role);
+    text_beside(d, bg_sb_str(&t), b, -1, 0, size, ink, role);
     bg_sb_clear(&t);
     var_markup(&t, 'e', m->bond_num[b], size);
     snprintf(role, sizeof role, "variable bond=%d e", m->bond_num[b]);
-    text_beside(d, bg_sb_str(&t), b, 1, size, ink, role);
+    text_beside(d, bg_sb_str(&t), b, 1, 0, size, ink, role);
     bg_sb_free(&t);
     return;
   }
   char num[32];
   snprintf(num, sizeof num, "%d", m->bond_num[b]);
   snprintf(role, sizeof role, "number bond=%d", m->bond_num[b]);
-  text_beside(d, num, b, -1, size, ink, role);
+  text_beside(d, num, b, -1, !(m->bond_label && m->bond_label[b] && (d->show & BG_SHOW_LABELS)), size, ink, role);
 }
 
 static void draw_bond_label(bg_diagram *d, int b) {
@@ -350,7 +369,7 @@ static void draw_bond_label(bg_diagram *d, int b) {
   bg_markup_escapen(&t, m->bond_label[b], strlen(m->bond_label[b]));
   char role[48];
   snprintf(role, sizeof role, "bondlabel bond=%d", m->bond_num[b]);
-  text_beside(d, bg_sb_str(&t), b, 1, d->st.font_size * d->st.number_scale,
+  text_beside(d, bg_sb_str(&t), b, 1, 0, d->st.font_size * d->st.number_scale,
               bg_diagram_ink(d, d->st.fg, d->hot_bond[b]), role);
   bg_sb_free(&t);
 }
@@ -360,7 +379,7 @@ static void draw_bonds(bg_diagram *d) {
   for (int b = 0; b < m->nbond; b++) {
     if (d->bond_hidden[b]) continue; /* inside a collapsed box */
     draw_bond(d, b);
-    bg_obstacle_item(d, d->scene.nitem - 1);
+    bg_obstacle_owned(d, d->scene.nitem - 1, -1 - b);
   }
   if (d->a && (d->show & BG_SHOW_STROKES))
     for (int b = 0; b < m->nbond; b++)

@@ -125,12 +125,16 @@ void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1)
 void bg_obstacle_nodes(bg_diagram *d);
 /* The lines of scene item i (curves flattened). */
 void bg_obstacle_item(bg_diagram *d, int i);
-/* The same for a path or loop polyline: its segments remember their owner (1, 2, ...). */
+/* The same for a path or loop polyline: its segments remember their owner
+ * (1, 2, ...); bond b's line is owned by -1 - b. */
 void bg_obstacle_owned(bg_diagram *d, int i, int owner);
 /* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
 int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
 /* How many segments of polylines other than owner's a w × h box centred at p touches. */
 int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner);
+/* The bond whose line comes nearest to p within r (the lowest index of
+ * equals), or -1: a bond number is astray where it is not its own. */
+int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r);
 /* The index of the candidate centre with the lowest score (the first on
  * ties); its box becomes an obstacle. */
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);

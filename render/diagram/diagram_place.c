@@ -16,7 +16,8 @@ struct bg_obstacles {
   int n, cap;
   double *box;          /* x0 y0 x1 y1; a segment keeps its end points */
   unsigned char *seg;   /* 1: the segment (x0,y0)-(x1,y1), 0: a rectangle */
-  int *owner;           /* per obstacle: the path/loop polyline it belongs to (1, 2, ...), or 0 */
+  int *owner;           /* per obstacle: the path/loop polyline it belongs to (1, 2, ...), a bond's
+                           line -1 - b, or 0 */
   unsigned *stamp;      /* per obstacle: last query that looked at it */
   unsigned query;
   int *head;            /* per hash bucket: first entry, -1 */
@@ -102,7 +103,7 @@ void bg_obstacle_rect(bg_diagram *d, double x0, double y0, double x1, double y1)
 
 void bg_obstacle_item(bg_diagram *d, int i) { bg_obstacle_owned(d, i, 0); }
 
-/* The lines of scene item i (curves flattened) become obstacles. */
+/* The lines of scene item i (curves flattened into chords) become obstacles. */
 void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
   const bg_scene *s = &d->scene;
   const bg_scene_item *it = &s->item[i];
@@ -115,11 +116,15 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
       double x = op->code == BG_OP_LINE ? op->x[0] : sx, y = op->code == BG_OP_LINE ? op->y[0] : sy;
       add_obstacle(d, 1, owner, px, py, x, y);
       px = x, py = y;
-    } else {
-      for (int j = 1; j <= 4; j++) {
-        double t = j / 4.0, u = 1 - t;
-        double x = u * u * u * px + 3 * u * u * t * op->x[0] + 3 * u * t * t * op->x[1] + t * t * t * op->x[2];
-        double y = u * u * u * py + 3 * u * u * t * op->y[0] + 3 * u * t * t * op->y[1] + t * t * t * op->y[2];
+    } else { /* a chord per 5 pt of the control polygon, at least 4: a long bulge keeps its shape */
+      double len = hypot(op->x[0] - px, op->y[0] - py) + hypot(op->x[1] - op->x[0], op->y[1] - op->y[0]) +
+                   hypot(op->x[2] - op->x[1], op->y[2] - op->y[1]);
+      int nc = (int)fmin(32, fmax(4, ceil(len / 5)));
+      double x0 = px, y0 = py; /* the curve's start: px, py move along the chords */
+      for (int j = 1; j <= nc; j++) {
+        double t = (double)j / nc, u = 1 - t;
+        double x = u * u * u * x0 + 3 * u * u * t * op->x[0] + 3 * u * t * t * op->x[1] + t * t * t * op->x[2];
+        double y = u * u * u * y0 + 3 * u * u * t * op->y[0] + 3 * u * t * t * op->y[1] + t * t * t * op->y[2];
         add_obstacle(d, 1, owner, px, py, x, y);
         px = x, py = y;
       }
@@ -157,7 +162,7 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
         int k = o->eob[e];
         if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
-        if (owner && (!o->owner[k] || o->owner[k] == owner)) continue;
+        if (owner && (o->owner[k] <= 0 || o->owner[k] == owner)) continue;
         const double *b = o->box + 4 * k;
         if (o->seg[k] ? seg_hits_box(b, x0, y0, x1, y1)
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
@@ -170,6 +175,32 @@ int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) { return query(d
 
 int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
   return query(d, p, w, h, owner);
+}
+
+static double seg_dist(const double *s, bg_vec p) {
+  double dx = s[2] - s[0], dy = s[3] - s[1], l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? ((p.x - s[0]) * dx + (p.y - s[1]) * dy) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return hypot(p.x - s[0] - t * dx, p.y - s[1] - t * dy);
+}
+
+int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
+  bg_obstacles *o = obstacles(d);
+  int best = -1;
+  double best_d = r;
+  o->query++;
+  for (int cy = cell_of(p.y - r); cy <= cell_of(p.y + r); cy++)
+    for (int cx = cell_of(p.x - r); cx <= cell_of(p.x + r); cx++)
+      for (int e = o->head[bucket(o, cx, cy)]; e >= 0; e = o->enext[e]) {
+        int k = o->eob[e];
+        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        o->stamp[k] = o->query;
+        if (o->owner[k] >= 0) continue;
+        double dk = seg_dist(o->box + 4 * k, p);
+        if (dk < best_d || (dk == best_d && best >= 0 && -1 - o->owner[k] < best))
+          best_d = dk, best = -1 - o->owner[k];
+      }
+  return best;
 }
 
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) {

@@ -98,9 +98,9 @@ static int fc_text_kind(const char *r, int *id, int *loop) {
   return FC_IGNORED; /* legend text, titles */
 }
 
-/* The item's path as segments, curves flattened into 8 chords. */
+/* The item's path as segments, curves flattened into 16 chords. */
 static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) {
-  int cap = 8 * it->nop + 1, n = 0;
+  int cap = 16 * it->nop + 1, n = 0;
   fc_seg *seg = malloc((size_t)cap * sizeof *seg);
   double px = 0, py = 0, sx = 0, sy = 0;
   for (int k = 0; k < it->nop; k++) {
@@ -112,10 +112,11 @@ static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) 
       seg[n++] = (fc_seg){px, py, x, y};
       px = x, py = y;
     } else {
-      for (int j = 1; j <= 8; j++) {
-        double t = j / 8.0, u = 1 - t;
-        double x = u * u * u * px + 3 * u * u * t * o->x[0] + 3 * u * t * t * o->x[1] + t * t * t * o->x[2];
-        double y = u * u * u * py + 3 * u * u * t * o->y[0] + 3 * u * t * t * o->y[1] + t * t * t * o->y[2];
+      double x0 = px, y0 = py; /* the curve's start: px, py move along the chords */
+      for (int j = 1; j <= 16; j++) {
+        double t = j / 16.0, u = 1 - t;
+        double x = u * u * u * x0 + 3 * u * u * t * o->x[0] + 3 * u * t * t * o->x[1] + t * t * t * o->x[2];
+        double y = u * u * u * y0 + 3 * u * u * t * o->y[0] + 3 * u * t * t * o->y[1] + t * t * t * o->y[2];
         seg[n++] = (fc_seg){px, py, x, y};
         px = x, py = y;
       }
