@@ -15,17 +15,19 @@ set -u
 cd "$tmp"
 asan=0
 grep -qa __asan_init "$BGDRAW" && asan=1 # gcc links libasan.so, clang links it in
-ms() { date +%s%3N; }
+# Runs that once went on for minutes run under a CPU-time limit (20 s: SIGXCPU,
+# exit status 152, fails the exit-status check) instead of a wall-clock
+# threshold, which a loaded machine or a sanitizer build would trip.
+cpu() { bash -c 'ulimit -t 20; exec "$@"' _ "$@"; }
 
 # ------------------------------------------------------------- error floods
 { echo "model flood"; for i in $(seq 1 20000); do echo "R R$i = \$"; done; } > flood.bg
-t0=$(ms); "$BGDRAW" flood.bg --check 2>err; st=$?; t1=$(ms)
-check "flood exits 1 (got $st)" $((st != 1))
+cpu "$BGDRAW" flood.bg --check 2>err; st=$?
+check "flood exits 1 within 20 s of CPU (got $st)" $((st != 1))
 n=$(grep -c ': error: ' err)
 check "flood: 100 errors shown (got $n)" $((n != 100))
 grep -q "flood.bg: note: 19900 more errors not shown: stopped at 100 errors (--max-errors N" err
 check "flood: the note names the limit and the option" $?
-check "flood: under 3 s (took $((t1 - t0)) ms)" $((t1 - t0 > 3000))
 "$BGDRAW" flood.bg --check --max-errors 3 2>err
 n=$(grep -c ': error: ' err); check "--max-errors 3 shows 3 (got $n)" $((n != 3))
 "$BGDRAW" flood.bg --check --max-errors 0 2>err
@@ -36,12 +38,11 @@ check "--max-errors -1 is a usage error (got $st)" $((st != 2))
 
 head -c 1000000 /dev/urandom > bin.bg
 printf 'model b\n' | cat - bin.bg > bin2.bg
-t0=$(ms); "$BGDRAW" bin2.bg --check 2>err; st=$?; t1=$(ms)
-check "binary file exits 1 (got $st)" $((st != 1))
+cpu "$BGDRAW" bin2.bg --check 2>err; st=$?
+check "binary file exits 1 within 20 s of CPU (got $st)" $((st != 1))
 n=$(grep -c ': error: ' err); check "binary file: one error (got $n)" $((n != 1))
 grep -q "^bin2.bg:2:[0-9]*: error: not a text file: .* at byte [0-9]*; a model is UTF-8 text" err
 check "binary file: not a text file, at the byte" $?
-check "binary file: under 2 s (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
 
 # ------------------------------------------------------ sparse bond numbers
 cat > sparse.bg <<'M'
@@ -56,11 +57,10 @@ bond 3 j -> C1
 M
 limit=""
 [ $asan -eq 0 ] && limit="ulimit -v 1000000;" # ASan reserves terabytes of address space
-t0=$(ms); bash -c "$limit \"$BGDRAW\" sparse.bg --check > sum.txt" 2>err; st=$?; t1=$(ms)
+bash -c "$limit ulimit -t 20; \"$BGDRAW\" sparse.bg --check > sum.txt" 2>err; st=$?
 bash -c "$limit \"$BGDRAW\" sparse.bg -o sparse.svg -o sparse.json" 2>>err; st2=$?
-check "bond 10^9 under 1 GB of address space exits 0 (got $st, $st2)" $((st + st2))
+check "bond 10^9 under 1 GB of address space and 20 s of CPU exits 0 (got $st, $st2)" $((st + st2))
 grep -q '{"id": 1000000000, "from": "U", "to": "j"' sparse.json; check "bond 10^9 keeps its number" $?
-check "bond 10^9: --check under 2 s (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
 
 # ------------------------------------------------------ algebraic models
 cat > alg.bg <<'M'
@@ -111,12 +111,11 @@ check "two sources, no unknowns: simulates (got $st)" $st
 
 # ------------------------------------------------------------ row limit
 sed 's/dt = 0.5/dt = 1e-300/' alg.bg > tiny.bg
-t0=$(ms); "$BGDRAW" tiny.bg --simulate -o tiny.csv 2>err; st=$?; t1=$(ms)
-check "dt = 1e-300 exits 3 (got $st)" $((st != 3))
+cpu "$BGDRAW" tiny.bg --simulate -o tiny.csv 2>err; st=$?
+check "dt = 1e-300 exits 3 within 20 s of CPU (got $st)" $((st != 3))
 grep -q "dt = 1e-300 gives 2e+300 output rows over \[0, 2\], more than the limit of 1000000 rows; use dt >= 2.01e-06" err
 check "dt = 1e-300: rows, limit and the fix" $?
 [ ! -e tiny.csv ]; check "dt = 1e-300: no CSV" $?
-check "dt = 1e-300: refused at once (took $((t1 - t0)) ms)" $((t1 - t0 > 2000))
 sed 's/dt = 0.5/dt = 2e-6/' alg.bg > edge.bg
 "$BGDRAW" edge.bg --simulate -o edge.csv 2>err; st=$?
 check "dt = 2e-6: 1000001 rows are refused too (got $st)" $((st != 3))
