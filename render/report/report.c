@@ -43,6 +43,8 @@ static void body(rp_ctx *c) {
 static void free_ctx(rp_ctx *c) {
   for (int i = 0; i < c->ndiag; i++) bg_diagram_free(c->diag[i]);
   free(c->diag);
+  for (int i = 0; i < c->nhl; i++) bg_scene_free(c->hl[i]), free(c->hl[i]);
+  free(c->hl);
   if (c->plot) bg_scene_free(c->plot), free(c->plot);
   for (int i = 0; i < c->nlin_plot; i++) bg_scene_free(c->lin_plot[i]), free(c->lin_plot[i]);
   rp_doc_free(&c->body);

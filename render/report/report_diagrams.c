@@ -44,10 +44,30 @@ static bg_diagram *build_full(rp_ctx *c) {
 }
 
 /* A highlighted diagram: the full diagram's layout drawn again, so nodes are
- * where they are in section 2. */
+ * where they are in section 2. Not kept: its pages place only the part of
+ * its scene that keep_cropped keeps. */
 static bg_diagram *build_highlight(rp_ctx *c, int kind, int index) {
-  if (!c->full) return rp_keep(c, NULL);
-  return rp_keep(c, bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg));
+  bg_diagram *d = c->full ? bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg) : NULL;
+  if (!d) c->failed = 1;
+  return d;
+}
+
+/* Keeps the items of s that pages placing rectangles inside r (x, y, w, h)
+ * replay: those meeting r grown by the cull margin (BG_PLACE_CULL_PAD), so
+ * the PDF is the same as with all of s. A highlight of a large diagram shows
+ * a small part of it, and thirteen whole scenes kept until the PDF is
+ * written were most of a large report's memory. */
+static const bg_scene *keep_cropped(rp_ctx *c, const bg_scene *s, const double r[4]) {
+  if (c->nhl == c->caphl) {
+    c->caphl = c->caphl ? 2 * c->caphl : 16;
+    c->hl = bg_xrealloc(c->hl, (size_t)c->caphl * sizeof *c->hl);
+  }
+  const double pad = BG_PLACE_CULL_PAD;
+  const double clip[4] = {r[0] - pad, r[1] - pad, r[0] + r[2] + pad, r[1] + r[3] + pad};
+  bg_scene *k = bg_xmalloc(sizeof *k);
+  bg_scene_crop(s, clip, k);
+  k->background.a = 0; /* as rp_keep: the page's own items stay visible */
+  return c->hl[c->nhl++] = k;
 }
 
 static double min_text(const bg_scene *s) {
@@ -441,21 +461,24 @@ static void show_one(rp_ctx *c, const hl *h) {
   hl_text(c, h, &x);
   if (cropped) bg_sb_puts(&x, " The diagram is cropped to the highlighted item.");
   if (sc >= smin) {
+    const bg_scene *k = keep_cropped(c, s, r);
     rp_subsection(d, bg_sb_str(&t), 16 + r[3] * sc);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
     d->y += 4;
-    rp_place(d, s, r[0], r[1], r[2], r[3], rp_left() + (cw - r[2] * sc) / 2, d->y, sc);
+    rp_place(d, k, r[0], r[1], r[2], r[3], rp_left() + (cw - r[2] * sc) / 2, d->y, sc);
     d->y += r[3] * sc + 10;
   } else {
-    tiling tl;
+    tiling tl; /* planned on the whole scene, as before the crop */
     plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, MAX_HL_TILES, &tl);
+    const bg_scene *k = keep_cropped(c, s, r); /* every tile lies inside r */
     rp_subsection(d, bg_sb_str(&t), 30);
     bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
-    emit_tiles(d, s, r, &tl, 0, bg_sb_str(&t));
+    emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t));
   }
   bg_sb_free(&t);
   bg_sb_free(&x);
+  bg_diagram_free(dg);
 }
 
 static void rest_note(rp_ctx *c, const hl *h, int from, int n) {

@@ -195,6 +195,8 @@ typedef struct rp_ctx {
   bg_diagram **diag; /* kept until the PDF is written (placed scenes are borrowed) */
   bg_diagram *full;  /* section 2's diagram, whose layout the highlights reuse (in diag) */
   int ndiag, capdiag;
+  bg_scene **hl;     /* section 3's highlighted diagrams, cropped to what their pages show */
+  int nhl, caphl;
   bg_scene *plot;     /* the simulation plots (owned), nullable */
   bg_scene *lin_plot[2]; /* the linear analysis' Bode and step plots (owned) */
   int nlin_plot;

@@ -107,6 +107,33 @@ void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) 
   }
 }
 
+void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst) {
+  bg_scene_init(dst, src->font);
+  dst->width = src->width, dst->height = src->height, dst->background = src->background;
+  dst->title = src->title ? bg_arena_strdup(&dst->arena, src->title) : NULL;
+  for (int i = 0; i < src->nitem; i++) {
+    const bg_scene_item *it = &src->item[i];
+    double b[4];
+    bg_scene_item_box(src, it, b);
+    if (b[2] < clip[0] || b[0] > clip[2] || b[3] < clip[1] || b[1] > clip[3]) continue;
+    if (dst->nitem == dst->capitem) {
+      dst->capitem = dst->capitem ? 2 * dst->capitem : 64;
+      dst->item = bg_xrealloc(dst->item, (size_t)dst->capitem * sizeof *dst->item);
+    }
+    while (dst->nop + it->nop > dst->capop) {
+      dst->capop = dst->capop ? 2 * dst->capop : 256;
+      dst->op = bg_xrealloc(dst->op, (size_t)dst->capop * sizeof *dst->op);
+    }
+    bg_scene_item *d = &dst->item[dst->nitem++];
+    *d = *it;
+    d->opadr = dst->nop;
+    if (it->nop) memcpy(dst->op + dst->nop, src->op + it->opadr, (size_t)it->nop * sizeof *dst->op);
+    dst->nop += it->nop;
+    d->role = bg_arena_strdup(&dst->arena, it->role);
+    if (it->text) d->text = bg_arena_strdup(&dst->arena, it->text);
+  }
+}
+
 static void grow_item(const bg_scene *s, const bg_scene_item *it, double b[4]) {
   if (it->kind == BG_ITEM_TEXT) {
     double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;

@@ -76,6 +76,12 @@ int bg_scene_bbox(const bg_scene *s, double *x0, double *y0, double *x1, double 
  * plus its font size for ink beyond it; lines: their points plus what caps
  * and miter joins can add): x0, y0, x1, y1. Empty paths give x0 > x1. */
 void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]);
+/* dst (initialised here) gets the items of src whose box meets the
+ * rectangle clip (x0, y0, x1, y1), in their order, with src's page size,
+ * background, font and title. Replaying dst clipped to any rectangle inside
+ * clip draws what src draws there: the report keeps only this much of a
+ * highlighted diagram that shows one part of a large one. */
+void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst);
 /* Moves everything so the bounding box starts at (margin, margin) and sets
  * the page size to the box plus margins. */
 void bg_scene_fit(bg_scene *s, double margin);

@@ -31,6 +31,11 @@ int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out);
  * scene's points, drawn scaled by `scale` with its corner at page point
  * (x, y) and clipped to the rectangle. Placed scenes are drawn after the
  * page's own items; everything is borrowed. */
+/* A placed scene replays only the items whose box meets its rectangle
+ * grown by this much on each side (points of the placed scene): a viewer's
+ * anti-aliased clip edge still shows some of an item that lies just outside
+ * it, within the edge pixel. */
+#define BG_PLACE_CULL_PAD 24.0
 typedef struct bg_surface_place {
   const bg_scene *scene;
   double sx, sy, sw, sh;

@@ -47,10 +47,8 @@ static void draw_place(cairo_t *cr, const bg_surface_place *p) {
   cairo_translate(cr, p->x, p->y);
   cairo_scale(cr, p->scale, p->scale);
   cairo_translate(cr, -p->sx, -p->sy);
-  /* a tile of a large diagram draws only what reaches into it; 24 pt more
-   * on each side, because a viewer's anti-aliased clip edge still shows some
-   * of an item that lies just outside it, within the edge pixel */
-  const double pad = 24, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
+  /* a tile of a large diagram draws only what reaches into it (surface.h) */
+  const double pad = BG_PLACE_CULL_PAD, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
   bg_surface_replay_clipped(cr, p->scene, clip);
   cairo_restore(cr);
 }

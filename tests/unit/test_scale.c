@@ -3,7 +3,7 @@
  * compile-time hashes (and linearly in a hand-built model), remembered text measurements, the label
  * obstacle grid once it has grown, and a placed scene that skips the items
  * outside its clip rectangle writes exactly the PDF it wrote with those
- * items absent. */
+ * items absent, and so does a scene cropped to that rectangle. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -159,11 +159,39 @@ static void test_clipped_place(void) {
   bg_scene_free(&a), bg_scene_free(&b);
 }
 
+/* A scene cropped to a placed rectangle plus the cull margin places into
+ * the same PDF as the whole scene, and keeps only the items near it. */
+static void test_crop(void) {
+  bg_scene a;
+  bg_scene_init(&a, "DejaVu Sans");
+  a.width = 1000, a.height = 100;
+  a.title = bg_arena_strdup(&a.arena, "crop");
+  line_item(&a, 10, 90, "inside");
+  line_item(&a, 500, 600, "far outside");
+  line_item(&a, 120, 130, "within the margin");
+  bg_scene_text(&a, "near", 105, 50, 11, 0, 0.5, (bg_rgba){0, 0, 0, 1}, "near text");
+  bg_scene_text(&a, "far", 800, 50, 11, 0, 0, (bg_rgba){0, 0, 0, 1}, "far text");
+  const double pad = BG_PLACE_CULL_PAD, clip[4] = {-pad, -pad, 100 + pad, 100 + pad};
+  bg_scene k;
+  bg_scene_crop(&a, clip, &k);
+  INT_EQ(k.nitem, 3);
+  OK(k.nitem == 3 && !strcmp(k.item[0].role, "inside") && !strcmp(k.item[1].role, "within the margin") &&
+     !strcmp(k.item[2].text, "near") && k.item[1].nop == 2 && k.op[k.item[1].opadr].x[0] == 120);
+  OK(k.width == a.width && k.height == a.height && !strcmp(k.title, "crop"));
+  bg_strbuf pa = {0}, pk = {0};
+  page_pdf(&a, 0, &pa);
+  page_pdf(&k, 0, &pk);
+  OK(pa.len > 0 && pa.len == pk.len && !memcmp(pa.s, pk.s, pa.len));
+  bg_sb_free(&pa), bg_sb_free(&pk);
+  bg_scene_free(&a), bg_scene_free(&k);
+}
+
 int main(void) {
   test_find_elem();
   test_find_bond();
   test_measure_memo();
   test_obstacle_grid();
   test_clipped_place();
+  test_crop();
   return bg_t_done();
 }
