@@ -147,5 +147,13 @@ scale=$(grep -o "Diagram, part 1 of [0-9]* (row 1, column 1), at [0-9]* %" "$tmp
 [ "${scale:-0}" -ge 70 ]; check "chain: tiles at a readable scale (got ${scale:-?} %)" $?
 grep -q "more not drawn here" "$tmp/chain.txt"; check "chain: highlights capped with the rest counted" $?
 
+# a diagram that needs a page of its own but no more: one page, no parts, no map
+"$BGDRAW" examples/hydraulic_bridge.bg -q --report "$tmp/hb.pdf"; check "bridge: exit status" $?
+text "$tmp/hb.pdf" | tr -s ' \n' ' ' >"$tmp/hb.txt"
+grep -q "so it follows on a page of its own at [0-9]* %\. .*Diagram, at [0-9]* %" "$tmp/hb.txt"
+check "bridge: the diagram on a page of its own" $?
+! grep -q "part 1 of 1\|in 1 parts\|on 1 pages\|where each part lies" "$tmp/hb.txt"
+check "bridge: not called one part of one" $?
+
 echo "report_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

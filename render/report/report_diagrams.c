@@ -221,8 +221,10 @@ static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const ti
       if (!t->num[j * t->nx + i]) continue;
       rp_new_page(d, landscape);
       char cap[256];
-      snprintf(cap, sizeof cap, "%s, part %d of %d (row %d, column %d), at %.0f %%", what,
-               t->num[j * t->nx + i], t->nused, j + 1, i + 1, 100 * t->scale);
+      if (t->nused == 1) snprintf(cap, sizeof cap, "%s, at %.0f %%", what, 100 * t->scale);
+      else
+        snprintf(cap, sizeof cap, "%s, part %d of %d (row %d, column %d), at %.0f %%", what,
+                 t->num[j * t->nx + i], t->nused, j + 1, i + 1, 100 * t->scale);
       rp_para(d, cap, RP_SIZE_SMALL, 0, 0, rp_grey);
       d->y += 2;
       double sx = r[0] + i * t->stepx, sy = r[1] + j * t->stepy;
@@ -267,15 +269,20 @@ void rp_sec_diagram(rp_ctx *c) {
   double full = rp_page_room(d) - 14;
   plan_tiles(s, r, cw, full, smin, MAX_TILES, &t);
   bg_strbuf b = {0};
-  bg_sb_printf(&b, "The diagram is too large for one page at a readable size (its smallest text "
-                   "would be below %.0f pt), so it follows in %d parts at %.0f %%; the map below "
-                   "shows where each part lies.", RP_MIN_TEXT, t.nused, 100 * t.scale);
+  if (t.nused == 1) /* a page of its own is enough: no parts, no map */
+    bg_sb_printf(&b, "The diagram does not fit below this text at a readable size (its smallest "
+                     "text would be below %.0f pt), so it follows on a page of its own at %.0f %%.",
+                 RP_MIN_TEXT, 100 * t.scale);
+  else
+    bg_sb_printf(&b, "The diagram is too large for one page at a readable size (its smallest text "
+                     "would be below %.0f pt), so it follows in %d parts at %.0f %%; the map below "
+                     "shows where each part lies.", RP_MIN_TEXT, t.nused, 100 * t.scale);
   if (t.scale < smin) bg_sb_puts(&b, " Even so the diagram needs more pages than the report allows, "
                                      "so its text is below that size.");
   rp_para(d, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
   bg_sb_free(&b);
   rp_gap(d, 4);
-  overview(d, s, r, &t);
+  if (t.nused > 1) overview(d, s, r, &t);
   emit_tiles(d, s, r, &t, land, "Diagram");
 }
 
@@ -472,7 +479,8 @@ static void show_one(rp_ctx *c, const hl *h) {
     plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, MAX_HL_TILES, &tl);
     const bg_scene *k = keep_cropped(c, s, r); /* every tile lies inside r */
     rp_subsection(d, bg_sb_str(&t), 30);
-    bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
+    if (tl.nused == 1) bg_sb_puts(&x, " It follows on a page of its own.");
+    else bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
     emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t));
   }
