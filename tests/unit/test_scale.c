@@ -4,6 +4,7 @@
  * obstacle grid once it has grown, and a placed scene that skips the items
  * outside its clip rectangle writes exactly the PDF it wrote with those
  * items absent, and so does a scene cropped to that rectangle. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -137,6 +138,49 @@ static void line_item(bg_scene *s, double x0, double x1, const char *role) {
   bg_scene_line(s, x1, 50);
 }
 
+/* Whether segment a-b meets the closed box, by separating axes (the box's
+ * two and the segment's normal): independent of the grid's Liang-Barsky. */
+static int seg_meets_box(const double *s, double x0, double y0, double x1, double y1) {
+  if (fmax(s[0], s[2]) < x0 || fmin(s[0], s[2]) > x1 || fmax(s[1], s[3]) < y0 || fmin(s[1], s[3]) > y1)
+    return 0;
+  double nx = s[3] - s[1], ny = s[0] - s[2], c = nx * s[0] + ny * s[1];
+  double v[4] = {nx * x0 + ny * y0 - c, nx * x1 + ny * y0 - c, nx * x0 + ny * y1 - c, nx * x1 + ny * y1 - c};
+  return fmin(fmin(v[0], v[1]), fmin(v[2], v[3])) <= 0 && fmax(fmax(v[0], v[1]), fmax(v[2], v[3])) >= 0;
+}
+
+/* Long slanted lines are entered only in the cells along them: every query
+ * still counts exactly the segments its box meets (and the slanted lines
+ * do not fill their bounding boxes with entries). */
+static void test_obstacle_segments(void) {
+  bg_diagram d;
+  memset(&d, 0, sizeof d);
+  bg_scene_init(&d.scene, "DejaVu Sans");
+  enum { NS = 400 };
+  static double seg[NS][4];
+  unsigned st = 777;
+  for (int i = 0; i < NS; i++) {
+    for (int k = 0; k < 4; k++) st = st * 1103515245u + 12345u, seg[i][k] = (st >> 9) % 4000 + 0.37 * k;
+    if (i % 7 == 0) seg[i][3] = seg[i][1];  /* some horizontal */
+    if (i % 11 == 0) seg[i][2] = seg[i][0]; /* some vertical */
+    line_item(&d.scene, 0, 0, "segment");
+    bg_scene_item *it = &d.scene.item[d.scene.nitem - 1];
+    d.scene.op[it->opadr].x[0] = seg[i][0], d.scene.op[it->opadr].y[0] = seg[i][1];
+    d.scene.op[it->opadr + 1].x[0] = seg[i][2], d.scene.op[it->opadr + 1].y[0] = seg[i][3];
+    bg_obstacle_item(&d, d.scene.nitem - 1);
+  }
+  int same = 1;
+  for (int q = 0; q < 2000; q++) {
+    st = st * 1103515245u + 12345u;
+    double x = (st >> 8) % 4000 + 0.5, y = (st >> 3) % 4000 + 0.25, w = 10 + q % 90, h = 6 + q % 30;
+    int direct = 0;
+    for (int i = 0; i < NS; i++) direct += seg_meets_box(seg[i], x - w / 2, y - h / 2, x + w / 2, y + h / 2);
+    same &= bg_place_score(&d, bg_v(x, y), w, h) == direct;
+  }
+  OK(same);
+  bg_obstacles_free(d.obs);
+  bg_scene_free(&d.scene);
+}
+
 static void test_clipped_place(void) {
   bg_scene a, b;
   bg_scene_init(&a, "DejaVu Sans"), bg_scene_init(&b, "DejaVu Sans");
@@ -191,6 +235,7 @@ int main(void) {
   test_find_bond();
   test_measure_memo();
   test_obstacle_grid();
+  test_obstacle_segments();
   test_clipped_place();
   test_crop();
   return bg_t_done();
