@@ -135,6 +135,10 @@ int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner);
 /* The bond whose line comes nearest to p within r (the lowest index of
  * equals), or -1: a bond number is astray where it is not its own. */
 int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r);
+/* What the segment a-b runs through: the boxes (returned), bond lines
+ * (*bonds) and other lines (*lines), the lines of polyline `owner` left out:
+ * the cost of a tag's leader line. */
+int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds, int *lines);
 /* The index of the candidate centre with the lowest score (the first on
  * ties); its box becomes an obstacle. */
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);

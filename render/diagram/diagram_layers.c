@@ -160,13 +160,44 @@ static void round_label(const bg_diagram *d, int v, joint *j) {
   if (j->ncorner) j->kind = 3;
 }
 
+/* How many of 24 points along the cubic p0 c1 c2 p1 fall in the box of a
+ * node other than a and b. */
+static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b) {
+  int hits = 0;
+  for (int k = 1; k < 24; k++) {
+    double t = k / 24.0, u = 1 - t;
+    bg_vec p = bg_vadd(bg_vadd(bg_vscale(c[0], u * u * u), bg_vscale(c[1], 3 * u * u * t)),
+                       bg_vadd(bg_vscale(c[2], 3 * u * t * t), bg_vscale(c[3], t * t * t)));
+    for (int n = 0; n < d->nnode; n++)
+      if (n != a && n != b && d->node_of[n] == n && fabs(p.x - d->nx[n]) < d->nw[n] / 2 &&
+          fabs(p.y - d->ny[n]) < d->nh[n] / 2)
+        hits++;
+  }
+  return hits;
+}
+
 /* A modulation closes the loop between different nodes (the signal of s
  * arrives at s->v, whose variable an element's law uses: t->u): a straight
- * line beside the modulating signal, or, back along the same bond (an
- * element modulated by its own output), a curve bulging further out. */
+ * line beside the modulating signal, bowed (12 to 45 pt at its middle,
+ * either side) where it would cross another node's label, or, back along
+ * the same bond (an element modulated by its own output), a curve bulging
+ * further out. */
 static joint jump(const bg_diagram *d, const seg *s, const seg *t) {
   joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}};
-  if (s->b != t->b) return j;
+  if (s->b != t->b) {
+    static const double bows[] = {0, 12, -12, 20, -20, 30, -30, 45, -45};
+    bg_vec ab = bg_vsub(j.p1, j.p0), nrm = bg_vleft(bg_vunit(ab));
+    int best = -1, fewest = 0;
+    for (size_t k = 0; k < sizeof bows / sizeof bows[0] && (best < 0 || fewest > 0); k++) {
+      bg_vec off = bg_vscale(nrm, bows[k] / 0.75); /* both controls out: the middle moves 3/4 of it */
+      bg_vec c[4] = {j.p0, bg_vadd(bg_vadd(j.p0, bg_vscale(ab, 1.0 / 3)), off),
+                     bg_vadd(bg_vadd(j.p0, bg_vscale(ab, 2.0 / 3)), off), j.p1};
+      int hits = curve_in_labels(d, c, s->v, t->u);
+      if (best < 0 || hits < fewest) best = (int)k, fewest = hits, j.c1 = c[1], j.c2 = c[2];
+    }
+    if (best > 0) j.kind = 2;
+    return j;
+  }
   double k = 0.3 * bg_vlen(bg_vsub(j.p1, j.p0)) + 12, bulge = 14 + s->off;
   j.kind = 2;
   j.c1 = bg_vadd(j.p0, bg_vadd(bg_vscale(s->dir, k), bg_vscale(s->n, bulge)));
@@ -299,9 +330,28 @@ typedef struct run {
   bg_vec a, b, n;
 } run;
 
+static bg_vec bezier(bg_vec p0, bg_vec c1, bg_vec c2, bg_vec p1, double t) {
+  double u = 1 - t;
+  return bg_vadd(bg_vadd(bg_vscale(p0, u * u * u), bg_vscale(c1, 3 * u * u * t)),
+                 bg_vadd(bg_vscale(c2, 3 * u * t * t), bg_vscale(p1, t * t * t)));
+}
+
+/* The top of the curve that closes a loop back along its own bond (jump):
+ * the chord of its middle fifth, outside towards the bulge, where a gain
+ * reads as the curve's. */
+static run bulge_run(const joint *j) {
+  bg_vec a = bezier(j->p0, j->c1, j->c2, j->p1, 0.4), b = bezier(j->p0, j->c1, j->c2, j->p1, 0.6);
+  bg_vec n = bg_vleft(bg_vunit(bg_vsub(b, a)));
+  bg_vec out = bg_vsub(bg_vscale(bg_vadd(a, b), 0.5), bg_vscale(bg_vadd(j->p0, j->p1), 0.5));
+  if (n.x * out.x + n.y * out.y < 0) n = bg_vscale(n, -1);
+  return (run){a, b, n};
+}
+
 /* Draws a closed layer polyline through the segments, with an arrow at the
- * middle of each; writes each segment's straight run to runs (n of them). */
-static void draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged, run *runs) {
+ * middle of each; writes each segment's straight run to runs (n of them),
+ * then the top of each bulge that closes the loop (room for 2 n); returns
+ * how many runs it wrote. */
+static int draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merged, run *runs) {
   const char *name = kind == 'p' ? "path" : "loop";
   joint *j = bg_xcalloc((size_t)n, sizeof *j);
   for (int k = 0; k < n; k++) j[k] = join(d, &s[k], &s[(k + 1) % n]);
@@ -328,7 +378,11 @@ static void draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int mer
     it->fill = it->color = c, it->width = 0;
     bg_geom_arrowhead(&d->scene, mid, s[k].dir, 5, 4);
   }
+  int nrun = n;
+  for (int k = 0; k < n; k++)
+    if (j[k].kind == 2 && s[(k + 1) % n].u != s[k].v) runs[nrun++] = bulge_run(&j[k]);
   free(j);
+  return nrun;
 }
 
 /* ---------------------------------------------------------------- labels */
@@ -428,15 +482,88 @@ static int try_run(bg_diagram *d, const bg_layer_label *L, const run *r, int sid
 
 /* The label's place beside its own runs: outside at the gap, then inside
  * (an open loop's gain inside its bond loop), then 4 and 8 pt further out;
- * the cheapest, the first of equals. */
-static bg_vec label_place(bg_diagram *d, const bg_layer_label *L, double w, double h) {
+ * the cheapest, the first of equals. Returns its cost. */
+static int label_place(bg_diagram *d, const bg_layer_label *L, double w, double h, bg_vec *at) {
   static const struct { int side; double out; } pass[] = {{1, 0}, {-1, 0}, {1, 4}, {-1, 4}, {1, 8}, {-1, 8}};
   bg_vec best = L->nrun ? bg_vscale(bg_vadd(L->runs[0].a, L->runs[0].b), 0.5) : bg_v(0, 0);
   int best_cost = -1;
   for (size_t p = 0; p < sizeof pass / sizeof pass[0]; p++)
     for (int k = 0; k < L->nrun; k++)
-      if (try_run(d, L, &L->runs[k], pass[p].side, pass[p].out, w, h, &best, &best_cost)) return best;
-  return best;
+      if (try_run(d, L, &L->runs[k], pass[p].side, pass[p].out, w, h, &best, &best_cost)) {
+        *at = best;
+        return 0;
+      }
+  *at = best;
+  return best_cost < 0 ? 0 : best_cost;
+}
+
+/* A tag on a leader line: the tag at p, the line from a (on its own
+ * polyline, with a dot) to e (the tag's box). */
+typedef struct leader {
+  bg_vec p, a, e;
+} leader;
+
+enum { LEADER_RUNS = 6, LEADER_TRIES = 600 };
+
+/* Where no place beside its own line is free and nearer its own line than
+ * any other (a crowded figure), the tag goes into open room nearby on a
+ * leader line, as a textbook labels a line in a bundle: straight out from
+ * a point of one of its first runs (either side, the run's middle
+ * outwards), at right angles or 45° to it, 8 to 44 pt long. The tag must
+ * touch nothing and have no other layer within 3 pt; the line must cross no
+ * label or node; of those, the fewest lines crossed (a bond counts 5), then
+ * the shortest, at right angles before slanted, the first of equals. Returns
+ * 0 when there is none. */
+static int leader_place(bg_diagram *d, const bg_layer_label *L, double w, double h, leader *best) {
+  static const double lens[] = {8, 14, 22, 32, 44};
+  static const double ts[] = {0.5, 0.375, 0.625, 0.25, 0.75, 0.125, 0.875};
+  int best_cost = -1, tries = 0;
+  for (size_t li = 0; li < sizeof lens / sizeof lens[0]; li++)
+    for (int k = 0; k < L->nrun && k < LEADER_RUNS; k++) {
+      const run *r = &L->runs[k];
+      bg_vec ab = bg_vsub(r->b, r->a), dir = bg_vunit(ab);
+      if (bg_vlen(ab) < 6) continue;
+      for (int side = 1; side >= -1; side -= 2)
+        for (size_t ti = 0; ti < sizeof ts / sizeof ts[0]; ti++)
+          for (int slant = 0; slant < 3; slant++) {
+            if (++tries > LEADER_TRIES && best_cost >= 0) return 1;
+            bg_vec n = bg_vscale(r->n, side), a = bg_vadd(r->a, bg_vscale(ab, ts[ti]));
+            if (slant) n = bg_vscale(bg_vadd(n, bg_vscale(dir, slant == 1 ? 1 : -1)), BG_SQRT1_2);
+            bg_vec p = bg_vadd(a, bg_vscale(n, lens[li] + reach(n, w, h)));
+            if (bg_place_score(d, p, w, h) || bg_place_others(d, p, w + 6, h + 6, L->owner)) continue;
+            bg_vec e = bg_box_exit(p, w / 2, h / 2, a);
+            int bonds, lines;
+            if (bg_place_crossings(d, a, e, L->owner, &bonds, &lines)) continue;
+            int cost = 5 * bonds + lines;
+            if (best_cost < 0 || cost < best_cost) best_cost = cost, *best = (leader){p, a, e};
+            if (cost == 0) return 1;
+          }
+    }
+  return best_cost >= 0;
+}
+
+/* The leader line, thin and solid in the tag's colour, with a dot where it
+ * meets the tag's own line (roles "path-leader K", "gain-leader loop=K"). */
+static void draw_leader(bg_diagram *d, const bg_layer_label *L, const leader *q) {
+  char kind[8], which[24];
+  int path = !strncmp(L->role, "path-tag ", 9);
+  snprintf(kind, sizeof kind, "%s", path ? "path" : "gain");
+  snprintf(which, sizeof which, path ? "%d" : "loop=%d", atoi(L->role + (path ? 9 : 10)));
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "%s-leader %s", kind, which);
+  it->color = L->color, it->width = fmax(0.4, 0.5 * d->st.layer_width), it->round = 1;
+  bg_scene_move(&d->scene, q->a.x, q->a.y);
+  bg_scene_line(&d->scene, q->e.x, q->e.y);
+  bg_obstacle_item(d, d->scene.nitem - 1);
+  it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-leader-dot %s", kind, which);
+  it->fill = it->color = L->color, it->width = 0;
+  double r = fmax(1.2, d->st.layer_width), k = 0.5523 * r;
+  bg_vec c = q->a;
+  bg_scene_move(&d->scene, c.x + r, c.y);
+  bg_scene_curve(&d->scene, c.x + r, c.y + k, c.x + k, c.y + r, c.x, c.y + r);
+  bg_scene_curve(&d->scene, c.x - k, c.y + r, c.x - r, c.y + k, c.x - r, c.y);
+  bg_scene_curve(&d->scene, c.x - r, c.y - k, c.x - k, c.y - r, c.x, c.y - r);
+  bg_scene_curve(&d->scene, c.x + k, c.y - r, c.x + r, c.y - k, c.x + r, c.y);
+  bg_scene_close(&d->scene);
 }
 
 void bg_place_layer_labels(bg_diagram *d) {
@@ -444,7 +571,13 @@ void bg_place_layer_labels(bg_diagram *d) {
     bg_layer_label *L = &d->labels[i];
     double w, h;
     measure_label(d, L->markup, &w, &h);
-    bg_vec p = label_place(d, L, w, h);
+    bg_vec p;
+    leader q = {{0, 0}, {0, 0}, {0, 0}};
+    /* cost 1: another line within 6 pt beyond the gap, but none nearer than its own */
+    if (label_place(d, L, w, h, &p) > 1 && leader_place(d, L, w, h, &q)) {
+      p = q.p;
+      draw_leader(d, L, &q);
+    }
     bg_obstacle_rect(d, p.x - w / 2, p.y - h / 2, p.x + w / 2, p.y + h / 2);
     bg_text_halo(d, L->markup, p, label_size(d));
     bg_scene_text(&d->scene, L->markup, p.x, p.y, label_size(d), 0.5, 0.5, L->color, L->role);
@@ -584,9 +717,9 @@ static void draw_path(bg_diagram *d, int p) {
   if (s) {
     for (int k = 0; k < n; k++) seg_geom(d, &s[k], key);
     int l = path_loop(d, p);
-    run *runs = bg_xcalloc((size_t)n, sizeof *runs);
-    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), n);
-    draw_polyline(d, s, n, 'p', p, l, runs);
+    run *runs = bg_xcalloc((size_t)(2 * n), sizeof *runs);
+    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'p', p), layer_hot(d, 'p', p)), 2 * n);
+    int nrun = draw_polyline(d, s, n, 'p', p, l, runs);
     /* the tag (with the gain of the flat loop drawn along) outside the
      * polyline, beside a bond from the middle of the path outwards */
     bg_strbuf t = {0};
@@ -594,12 +727,13 @@ static void draw_path(bg_diagram *d, int p) {
     if (l >= 0) bg_sb_puts(&t, ", "), gain_text(d, l, &t);
     double w, h;
     measure_label(d, bg_sb_str(&t), &w, &h);
-    int *order = bg_xcalloc((size_t)n, sizeof *order);
+    int *order = bg_xcalloc((size_t)nrun, sizeof *order);
     middle_first(order, n / 2);
     for (int k = 0; k < n / 2; k++) order[n / 2 + k] = n - 1 - order[k]; /* the way back */
+    for (int k = n; k < nrun; k++) order[k] = k;                         /* bulges last */
     L->markup = bg_arena_strdup(&d->arena, bg_sb_str(&t));
     snprintf(L->role, sizeof L->role, l >= 0 ? "path-tag %d gain" : "path-tag %d", p + 1);
-    label_runs(L, runs, order, n, w, h);
+    label_runs(L, runs, order, nrun, w, h);
     free(order), free(runs);
     bg_sb_free(&t);
     claim_sides(d, s, n, key);
@@ -618,9 +752,9 @@ static void draw_loop(bg_diagram *d, int l) {
   seg *s = layer_segs(d, 'l', l, &n);
   if (s) {
     for (int k = 0; k < n; k++) seg_geom(d, &s[k], key);
-    run *runs = bg_xcalloc((size_t)n, sizeof *runs);
-    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), n);
-    draw_polyline(d, s, n, 'l', l, -1, runs);
+    run *runs = bg_xcalloc((size_t)(2 * n), sizeof *runs);
+    bg_layer_label *L = new_label(d, bg_diagram_ink(d, bg_layer_color(d, 'l', l), layer_hot(d, 'l', l)), 2 * n);
+    int nrun = draw_polyline(d, s, n, 'l', l, -1, runs);
     /* the gain beside the loop's line, like a path tag */
     bg_strbuf t = {0};
     gain_text(d, l, &t);
@@ -628,9 +762,10 @@ static void draw_loop(bg_diagram *d, int l) {
     measure_label(d, bg_sb_str(&t), &w, &h);
     L->markup = bg_arena_strdup(&d->arena, bg_sb_str(&t));
     snprintf(L->role, sizeof L->role, "gain loop=%d", l + 1);
-    int *order = bg_xcalloc((size_t)n, sizeof *order);
+    int *order = bg_xcalloc((size_t)nrun, sizeof *order);
     middle_first(order, n);
-    label_runs(L, runs, order, n, w, h);
+    for (int k = n; k < nrun; k++) order[k] = k; /* bulges last */
+    label_runs(L, runs, order, nrun, w, h);
     free(order), free(runs);
     bg_sb_free(&t);
     claim_sides(d, s, n, key);

@@ -217,6 +217,36 @@ int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
   return best;
 }
 
+static double orient(const double *s, double x, double y) {
+  return (s[2] - s[0]) * (y - s[1]) - (s[3] - s[1]) * (x - s[0]);
+}
+
+/* Whether the segments s and t (x0 y0 x1 y1) cross or touch. */
+static int segs_meet(const double *s, const double *t) {
+  double d1 = orient(s, t[0], t[1]), d2 = orient(s, t[2], t[3]);
+  double d3 = orient(t, s[0], s[1]), d4 = orient(t, s[2], s[3]);
+  return d1 * d2 <= 0 && d3 * d4 <= 0 && (d1 != 0 || d2 != 0 || d3 != 0 || d4 != 0);
+}
+
+int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds, int *lines) {
+  bg_obstacles *o = obstacles(d);
+  double s[4] = {a.x, a.y, b.x, b.y};
+  int boxes = 0;
+  *bonds = *lines = 0;
+  o->query++;
+  for (int cy = cell_of(fmin(a.y, b.y)); cy <= cell_of(fmax(a.y, b.y)); cy++)
+    for (int cx = cell_of(fmin(a.x, b.x)); cx <= cell_of(fmax(a.x, b.x)); cx++)
+      for (int e = o->head[bucket(o, cx, cy)]; e >= 0; e = o->enext[e]) {
+        int k = o->eob[e];
+        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        o->stamp[k] = o->query;
+        const double *r = o->box + 4 * k;
+        if (!o->seg[k]) boxes += seg_hits_box(s, r[0], r[1], r[2], r[3]);
+        else if (o->owner[k] != owner && segs_meet(s, r)) ++*(o->owner[k] < 0 ? bonds : lines);
+      }
+  return boxes;
+}
+
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) {
   int best = 0, best_score = -1;
   for (int k = 0; k < n && best_score != 0; k++) {

@@ -20,12 +20,12 @@ typedef struct fc_stats {
   int labels, over;          /* numbers, tags, gains, conflict texts; those over a line or label */
   int numbers, astray;       /* bond numbers and variables; those nearer another bond */
   int tags, tags_far;        /* path tags and gains; nearer another overlay or > 12 pt off */
-  int through;               /* overlay polylines × element labels they run through */
+  int through;               /* overlay polylines and leaders × element labels they run through */
   int lines_through;         /* bonds and signals × element labels they run through */
   int crossings;             /* pairs of bonds that cross */
 } fc_stats;
 
-enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_OTHER };     /* line kinds */
+enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_OTHER }; /* line kinds */
 enum { FC_NODE, FC_NUMBER, FC_TAG, FC_TEXT, FC_IGNORED };         /* text kinds */
 
 /* Set (BG_FIGURES_VERBOSE=2) to print every fault found, with where it is. */
@@ -80,6 +80,9 @@ static int fc_line_kind(const char *r, int *id, int *loop) {
     return FC_OVERLAY;
   }
   if (fc_starts(r, "loop")) return *id = 0, *loop = atoi(r + 5), FC_OVERLAY;
+  /* a tag's leader line: "path-leader K" (id K), "gain-leader loop=K" (loop K) */
+  if (fc_starts(r, "path-leader")) return *id = atoi(r + 12), FC_LEADER;
+  if (fc_starts(r, "gain-leader")) return *id = 0, *loop = fc_num_after(r, "loop="), FC_LEADER;
   return *id = 0, FC_OTHER;
 }
 
@@ -288,12 +291,25 @@ static int fc_own_overlay(const fc_line *l, const fc_box *t) {
   return t->loop ? l->loop == t->loop : l->id == t->id;
 }
 
-/* A tag or gain whose nearest overlay is not its own, or more than 12 pt from its own. */
+/* Whether leader line l starts on (within 0.5 pt of) an overlay line of its tag. */
+static int fc_leader_on_own(const fc_scene *f, const fc_line *l) {
+  for (int j = 0; j < f->nline; j++)
+    if (f->line[j].kind == FC_OVERLAY && fc_own_overlay(&f->line[j], &(fc_box){FC_TAG, l->id, l->loop, 0, 0, 0, 0}) &&
+        fc_line_pt(&f->line[j], l->seg[0].x0, l->seg[0].y0, 0) <= 0.5)
+      return 1;
+  return 0;
+}
+
+/* A tag or gain whose nearest overlay is not its own, or more than 12 pt
+ * from its own; its own line is its polyline, or a leader line of its own
+ * that starts on it (a leader elsewhere counts for nothing). */
 static int fc_tag_far(const fc_scene *f, const fc_box *t) {
   double own = 1e300, other = 1e300;
   int near = -1;
   for (int j = 0; j < f->nline; j++) {
     const fc_line *l = &f->line[j];
+    if (l->kind == FC_LEADER && fc_own_overlay(l, t) && l->nseg && fc_leader_on_own(f, l))
+      own = fmin(own, fc_line_box(l, t));
     if (l->kind != FC_OVERLAY) continue;
     double d = fc_line_box(l, t);
     if (fc_own_overlay(l, t)) own = fmin(own, d);
@@ -345,7 +361,7 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
     if (b->kind == FC_NUMBER) st->numbers++, st->astray += fc_number_astray(&f, b);
     if (b->kind == FC_TAG) st->tags++, st->tags_far += fc_tag_far(&f, b);
   }
-  st->through += fc_through(&f, FC_OVERLAY);
+  st->through += fc_through(&f, FC_OVERLAY) + fc_through(&f, FC_LEADER);
   st->lines_through += fc_through(&f, FC_BOND) + fc_through(&f, FC_SIGNAL);
   fc_free(&f);
 }
