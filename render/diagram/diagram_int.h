@@ -132,6 +132,8 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner);
 int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
 /* How many segments of polylines other than owner's a w × h box centred at p touches. */
 int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner);
+/* How many boxes (nodes, texts) a w × h box centred at p touches. */
+int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h);
 /* The bond whose line comes nearest to p within r (the lowest index of
  * equals), or -1: a bond number is astray where it is not its own. */
 int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r);

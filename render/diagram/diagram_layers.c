@@ -447,18 +447,22 @@ static void measure_label(const bg_diagram *d, const char *markup, double *w, do
 
 enum { TAG_GAP = 2 }; /* between a tag's box and its line */
 
-/* What a label at p costs: the obstacles it touches (bg_place_score, 4
- * each), 2 when another polyline comes nearer to it than its own line (the
- * box grown by its distance from its own line, out beyond the gap) and 1
- * when one comes within 6 pt more, so a tag
- * does not nestle between other layers when there is open room: a tag a
- * little astray is better than one over a line. 0 is a perfect place. */
+enum { TEXT_CLEAR = 4 }; /* between a tag and other text beside it, so "L2: G = n" and "1" stay two */
+
+/* What a label at p costs: the obstacles it touches (bg_place_score, 8
+ * each), 4 when another polyline comes nearer to it than its own line (the
+ * box grown by its distance from its own line, out beyond the gap), 2 when
+ * one comes within 6 pt more, so a tag does not nestle between other
+ * layers when there is open room (a tag a little astray is better than one
+ * over a line), and 1 when a node label or another text is within
+ * TEXT_CLEAR pt beside it (where they would read as one: "L2: G = n 1").
+ * 0 is a perfect place; below 4 its nearest line is its own. */
 static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h, double out) {
-  int c = 4 * bg_place_score(d, p, w, h);
+  int c = 8 * bg_place_score(d, p, w, h);
   double g = 2 * (TAG_GAP + out + 1), far = g + 12;
   if (bg_place_others(d, p, w + far, h + far, L->owner) > 0)
-    c += 1 + (bg_place_others(d, p, w + g, h + g, L->owner) > 0);
-  return c;
+    c += 2 + 2 * (bg_place_others(d, p, w + g, h + g, L->owner) > 0);
+  return c + (bg_place_boxes(d, p, w + 2 * TEXT_CLEAR, h + 2) > 0);
 }
 
 /* Tries the places beside run r at distance `out` beyond the gap, on its
@@ -534,7 +538,7 @@ static int leader_place(bg_diagram *d, const bg_layer_label *L, double w, double
             bg_vec e = bg_box_exit(p, w / 2, h / 2, a);
             int bonds, lines;
             if (bg_place_crossings(d, a, e, L->owner, &bonds, &lines)) continue;
-            int cost = 5 * bonds + lines;
+            int cost = 2 * (5 * bonds + lines) + (bg_place_boxes(d, p, w + 2 * TEXT_CLEAR, h + 2) > 0);
             if (best_cost < 0 || cost < best_cost) best_cost = cost, *best = (leader){p, a, e};
             if (cost == 0) return 1;
           }
@@ -573,8 +577,8 @@ void bg_place_layer_labels(bg_diagram *d) {
     measure_label(d, L->markup, &w, &h);
     bg_vec p;
     leader q = {{0, 0}, {0, 0}, {0, 0}};
-    /* cost 1: another line within 6 pt beyond the gap, but none nearer than its own */
-    if (label_place(d, L, w, h, &p) > 1 && leader_place(d, L, w, h, &q)) {
+    /* below 4: no other line nearer than its own, nothing touched */
+    if (label_place(d, L, w, h, &p) >= 4 && leader_place(d, L, w, h, &q)) {
       p = q.p;
       draw_leader(d, L, &q);
     }

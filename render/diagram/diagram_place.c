@@ -164,7 +164,8 @@ static int seg_hits_box(const double *s, double x0, double y0, double x1, double
 }
 
 /* What a w × h box centred at p touches: the score of bg_place_score, or
- * (owner > 0) how many segments of polylines other than owner's. */
+ * (owner > 0) how many segments of polylines other than owner's, or (owner
+ * -1) how many boxes. */
 static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
   bg_obstacles *o = obstacles(d);
   double x0 = p.x - w / 2, y0 = p.y - h / 2, x1 = p.x + w / 2, y1 = p.y + h / 2;
@@ -176,7 +177,8 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
         int k = o->eob[e];
         if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
-        if (owner && (o->owner[k] <= 0 || o->owner[k] == owner)) continue;
+        if (owner < 0 && o->seg[k]) continue;
+        if (owner > 0 && (o->owner[k] <= 0 || o->owner[k] == owner)) continue;
         const double *b = o->box + 4 * k;
         if (o->seg[k] ? seg_hits_box(b, x0, y0, x1, y1)
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
@@ -190,6 +192,8 @@ int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) { return query(d
 int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
   return query(d, p, w, h, owner);
 }
+
+int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, -1) / 10; }
 
 static double seg_dist(const double *s, bg_vec p) {
   double dx = s[2] - s[0], dy = s[3] - s[1], l2 = dx * dx + dy * dy;

@@ -56,6 +56,11 @@ static void test_checker(void) {
   line(&s, "path 4", 0, 250, 100, 250);
   line(&s, "path-leader 4", 50, 262, 50, 270);
   bg_scene_text(&s, "P4", 50, 275, 8, 0.5, 0.5, ink, "path-tag 4");
+  /* a tag beside its path with a text 1 pt to its right: crowded */
+  line(&s, "path 5", 150, -55, 250, -55);
+  bg_scene_text(&s, "P5", 200, -60, 8, 0.5, 0.5, ink, "path-tag 5");
+  double pw = s.item[s.nitem - 1].tw;
+  bg_scene_text(&s, "k", 200 + pw / 2 + 1, -60, 8, 0, 0.5, ink, "conflict-text 3");
   fc_stats st = {0};
   fc_count(&s, &st);
   INT_EQ(st.bonds, 4);
@@ -63,17 +68,18 @@ static void test_checker(void) {
   INT_EQ(st.crossings, 1);
   INT_EQ(st.strokes, 2);
   INT_EQ(st.touching, 1);
-  INT_EQ(st.labels, 8);
+  INT_EQ(st.labels, 10);
   INT_EQ(st.over, 2);
   INT_EQ(st.numbers, 2);
   INT_EQ(st.astray, 1);
-  INT_EQ(st.tags, 4);
+  INT_EQ(st.tags, 5);
   INT_EQ(st.tags_far, 2);
+  INT_EQ(st.crowded, 1);
   INT_EQ(st.through, 1);
   INT_EQ(st.lines_through, 1);
   fc_scene f;
   fc_read(&s, &f);
-  INT_EQ(f.nbox, 9);
+  INT_EQ(f.nbox, 11);
   INT_EQ(fc_label_over(&f, 5), 0); /* the text above the curve */
   INT_EQ(fc_label_over(&f, 6), 1); /* the text on it */
   fc_free(&f);
@@ -94,18 +100,18 @@ static const char *const show_names[] = {"default", "all"};
  * no line through an element label, no crossings; 1 slanted bond of 136
  * (series_conductances' fifth bond at one junction). Order: bonds,
  * slanted, strokes, touching, labels, over, numbers, astray, tags,
- * tags_far, through, lines_through, crossings; bonds, strokes and labels
+ * tags_far, crowded, through, lines_through, crossings; bonds, strokes and labels
  * must be equal (every bond of every example, the two Sf* bonds of
  * lagrange_rlc included). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0}, {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n", what, t->bonds, t->slanted,
-         t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags, t->tags_far,
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n", what, t->bonds, t->slanted,
+         t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags, t->tags_far, t->crowded,
          t->through, t->lines_through, t->crossings);
 }
 
@@ -141,7 +147,7 @@ static void measure(fc_stats tot[3][2]) {
 static void test_examples(void) {
   fc_stats tot[3][2] = {{{0}}};
   measure(tot);
-  printf("%-34s bond slnt strk touc labl over numb astr tags tfar thru lthr cros\n", "");
+  printf("%-34s bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros\n", "");
   for (int si = 0; si < 3; si++)
     for (int k = 0; k < 2; k++) {
       char what[64];
