@@ -4,6 +4,7 @@
  * layout's idea of every label's size. */
 #include "scene/surface_cairo.h"
 
+#include <fontconfig/fontconfig.h>
 #include <pango/pangocairo.h>
 #include <string.h>
 
@@ -19,6 +20,37 @@ int bg_surface_close(cairo_t *cr, cairo_surface_t *sf) {
   if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
   cairo_surface_destroy(sf);
   return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
+}
+
+/* The font map, with fontconfig's configuration loaded as FcInit would load
+ * it but for one step: FcInit also parses every template in fontconfig's
+ * conf.avail folder, disabled, for the descriptions only fc-conflist shows
+ * (10 M of a small diagram's 64 M instructions; pango starts FcInit in a
+ * thread when its font map is made). Here the same
+ * configuration file (FONTCONFIG_FILE or the system's fonts.conf, with its
+ * includes) is parsed into a config that becomes fontconfig's current one
+ * before pango asks, so fonts, rules and caches are the same. When that
+ * fails, or the configuration names no cache folder (FcInit would then add
+ * fallbacks), fontconfig is left to FcInit. */
+static void load_font_config(void) {
+  FcConfig *cfg = FcConfigCreate();
+  if (!cfg) return;
+  FcStrList *caches = NULL;
+  int ok = FcConfigParseAndLoad(cfg, NULL, FcTrue) && (caches = FcConfigGetCacheDirs(cfg)) &&
+           FcStrListNext(caches) && FcConfigBuildFonts(cfg);
+  if (caches) FcStrListDone(caches);
+  /* the current config keeps it (fontconfig >= 2.13.9x holds a reference,
+   * older ones the pointer): not destroyed when it was taken */
+  if (!ok || !FcConfigSetCurrent(cfg)) FcConfigDestroy(cfg);
+}
+
+static PangoFontMap *font_map(void) {
+  static PangoFontMap *map;
+  if (!map) {
+    load_font_config();
+    map = pango_cairo_font_map_get_default();
+  }
+  return map;
 }
 
 /* Font options free of the surface's defaults (hinting differs per backend). */
@@ -97,7 +129,7 @@ static void memo_grow(void) {
 void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h) {
   static PangoContext *ctx;
   if (!ctx) {
-    ctx = pango_font_map_create_context(pango_cairo_font_map_get_default());
+    ctx = pango_font_map_create_context(font_map());
     setup_context(ctx);
   }
   if (2 * (memo_n + 1) > memo_cap) memo_grow();
@@ -116,7 +148,7 @@ void bg_text_measure(const char *font, double size, const char *markup, double *
 double bg_text_baseline(const char *font, double size, const char *markup) {
   static PangoContext *ctx;
   if (!ctx) {
-    ctx = pango_font_map_create_context(pango_cairo_font_map_get_default());
+    ctx = pango_font_map_create_context(font_map());
     setup_context(ctx);
   }
   PangoLayout *lay = make_layout(ctx, font, size, markup);
@@ -183,6 +215,7 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
   cairo_font_options_t *fo = neutral_font_options();
   cairo_set_font_options(cr, fo);
   cairo_font_options_destroy(fo);
+  font_map(); /* pango_cairo_create_context takes the default map */
   PangoContext *ctx = pango_cairo_create_context(cr);
   setup_context(ctx);
   set_color(cr, s->background);
