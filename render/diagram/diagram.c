@@ -431,6 +431,11 @@ static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, doub
   bg_scene_move(&d->scene, p.x, p.y);
   bg_scene_line(&d->scene, t.x, t.y);
   bg_scene_line(&d->scene, barb.x, barb.y);
+  /* the barb again, solid: the bond's dashes would cut it wherever its length falls in a gap */
+  it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-barb %d", i + 1);
+  it->width = st->line_width, it->round = 1, it->color = ink;
+  bg_scene_move(&d->scene, t.x, t.y);
+  bg_scene_line(&d->scene, barb.x, barb.y);
   it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-stroke %d", i + 1);
   it->width = 1.5 * st->line_width, it->color = ink;
   stroke_bar(d, t, bg_vleft(dir), 4.5 * st->line_width);

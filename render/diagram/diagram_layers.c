@@ -28,6 +28,8 @@ typedef struct joint {
   bg_vec p0, p1, c1, c2;
   int ncorner;      /* kind 3: round a collapsed instance's box or a two-port's label, through these corners */
   bg_vec corner[6];
+  int rounded;      /* kind 3 round a two-port's label: the corners rounded, so the line reads as
+                       passing the label, not as a dashed box drawn round it */
 } joint;
 
 static bg_vec centre(const bg_diagram *d, int n) {
@@ -109,7 +111,7 @@ static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
   bg_vec e = bg_box_exit(centre(d, v), d->nw[v] / 2, d->nh[v] / 2, centre(d, s->u));
   bg_vec base = bg_vsub(e, bg_vscale(s->dir, fmax(s->off, t->off) + 1));
-  joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}};
+  joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
   j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, 4.0 / 3 * s->off));
   j.c2 = bg_vadd(j.p1, bg_vscale(s->dir, 4.0 / 3 * t->off));
   return j;
@@ -157,7 +159,7 @@ static void round_label(const bg_diagram *d, int v, joint *j) {
       double q = at[k] + lap * per;
       if (q > from + 1e-9 && q < to - 1e-9 && j->ncorner < 4) j->corner[j->ncorner++] = corner[k];
     }
-  if (j->ncorner) j->kind = 3;
+  if (j->ncorner) j->kind = 3, j->rounded = 1;
 }
 
 /* How many of 24 points along the cubic p0 c1 c2 p1 fall in the box of a
@@ -183,7 +185,7 @@ static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b)
  * the same bond (an element modulated by its own output), a curve bulging
  * further out. */
 static joint jump(const bg_diagram *d, const seg *s, const seg *t) {
-  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}};
+  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
   if (s->b != t->b) {
     static const double bows[] = {0, 12, -12, 20, -20, 30, -30, 45, -45};
     bg_vec ab = bg_vsub(j.p1, j.p0), nrm = bg_vleft(bg_vunit(ab));
@@ -253,7 +255,7 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   if (t->u != s->v) return jump(d, s, t);
   if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s, t);
   bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
-  joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}};
+  joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
     /* keep off the label: leave and re-enter at the box, around it */
     j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
@@ -279,9 +281,23 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   return j;
 }
 
+/* A corner c between a and b as a quarter circle of radius up to 3 pt
+ * (half the shorter leg at most). */
+static void round_corner(bg_scene *sc, bg_vec a, bg_vec c, bg_vec b) {
+  double r = fmin(3, 0.5 * fmin(bg_vlen(bg_vsub(a, c)), bg_vlen(bg_vsub(b, c))));
+  bg_vec in = bg_vadd(c, bg_vscale(bg_vunit(bg_vsub(a, c)), r)), out = bg_vadd(c, bg_vscale(bg_vunit(bg_vsub(b, c)), r));
+  bg_vec c1 = bg_vadd(in, bg_vscale(bg_vsub(c, in), 0.5523)), c2 = bg_vadd(out, bg_vscale(bg_vsub(c, out), 0.5523));
+  bg_scene_line(sc, in.x, in.y);
+  bg_scene_curve(sc, c1.x, c1.y, c2.x, c2.y, out.x, out.y);
+}
+
 static void emit_joint(bg_scene *sc, const joint *j) {
   bg_scene_line(sc, j->p0.x, j->p0.y);
-  for (int k = 0; j->kind == 3 && k < j->ncorner; k++) bg_scene_line(sc, j->corner[k].x, j->corner[k].y);
+  for (int k = 0; j->kind == 3 && k < j->ncorner; k++)
+    if (j->rounded)
+      round_corner(sc, k ? j->corner[k - 1] : j->p0, j->corner[k], k + 1 < j->ncorner ? j->corner[k + 1] : j->p1);
+    else
+      bg_scene_line(sc, j->corner[k].x, j->corner[k].y);
   if (j->kind == 1 || j->kind == 3) bg_scene_line(sc, j->p1.x, j->p1.y);
   if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
 }

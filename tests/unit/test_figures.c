@@ -196,6 +196,15 @@ static void test_lagrange(void) {
       const bg_scene_item *bond = item(s, r);
       snprintf(r, sizeof r, "lagrange-stroke %d", i);
       const bg_scene_item *stroke = item(s, r);
+      snprintf(r, sizeof r, "lagrange-barb %d", i);
+      const bg_scene_item *barb = item(s, r); /* the half arrow drawn again, solid */
+      OK(barb && barb->nop == 2 && barb->dash[0] == 0);
+      if (barb && bond && bond->nop == 3) {
+        const bg_scene_op *bo = s->op + barb->opadr, *lo = s->op + bond->opadr;
+        BG_T_REPORT(hypot(bo[0].x[0] - lo[1].x[0], bo[0].y[0] - lo[1].y[0]) < 1e-9 &&
+                        hypot(bo[1].x[0] - lo[2].x[0], bo[1].y[0] - lo[2].y[0]) < 1e-9,
+                    "Sf* %d: the solid barb over the dashed bond's", i);
+      }
       OK(box && bond && stroke && bond->nop == 3);
       if (!box || !bond || !stroke) continue;
       const bg_scene_op *o = s->op + bond->opadr, *b0 = s->op + box->opadr, *b2 = b0 + 2;
