@@ -473,11 +473,16 @@ enum { TEXT_CLEAR = 4 }; /* between a tag and other text beside it, so "L2: G = 
  * over a line), and 1 when a node label or another text is within
  * TEXT_CLEAR pt beside it (where they would read as one: "L2: G = n 1").
  * 0 is a perfect place; below 4 its nearest line is its own. */
-static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h, double out) {
+/* Once the cost reaches bound (a place as good is already known; -1:
+ * none) the rest is not looked at: the place cannot win. */
+static int label_cost(bg_diagram *d, const bg_layer_label *L, bg_vec p, double w, double h, double out,
+                      int bound) {
   int c = 8 * bg_place_score(d, p, w, h);
+  if (bound >= 0 && c >= bound) return c;
   double g = 2 * (TAG_GAP + out + 1), far = g + 12;
   if (bg_place_others(d, p, w + far, h + far, L->owner) > 0)
     c += 2 + 2 * (bg_place_others(d, p, w + g, h + g, L->owner) > 0);
+  if (bound >= 0 && c >= bound) return c;
   return c + (bg_place_boxes(d, p, w + 2 * TEXT_CLEAR, h + 2) > 0);
 }
 
@@ -493,7 +498,7 @@ static int try_run(bg_diagram *d, const bg_layer_label *L, const run *r, int sid
   for (int k = 0; k == 0 || k * step <= room; k++)
     for (int sgn = -1; sgn <= (k ? 1 : -1); sgn += 2) {
       bg_vec p = bg_vadd(mid, bg_vscale(dir, sgn * k * step));
-      int c = label_cost(d, L, p, w, h, out);
+      int c = label_cost(d, L, p, w, h, out, *best_cost);
       if (*best_cost < 0 || c < *best_cost) *best = p, *best_cost = c;
       if (c == 0) return 1;
     }
