@@ -90,6 +90,20 @@ static void test_measure_memo(void) {
   bg_text_measure("DejaVu Sans", 11, "R : R<sub>1</sub>", &w4, &h4);
   OK(w1 > 0 && h1 > 0);
   OK(w4 == w1 && h4 == h1);
+  /* the baseline is remembered beside the size: asked before and after the
+   * table has grown, the same; below the top and above the bottom of the box;
+   * twice the size, twice as far down */
+  double b1 = bg_text_baseline("DejaVu Sans", 11, "R : R<sub>1</sub>");
+  double b2 = bg_text_baseline("DejaVu Sans", 22, "R : R<sub>1</sub>");
+  for (int i = 3000; i < 6000; i++) {
+    char s[32];
+    snprintf(s, sizeof s, "%d", i);
+    bg_text_baseline("DejaVu Sans", 8, s);
+  }
+  OK(b1 > 0 && b1 < h1);
+  OK(bg_text_baseline("DejaVu Sans", 11, "R : R<sub>1</sub>") == b1);
+  OK(b2 > 1.9 * b1 && b2 < 2.1 * b1);
+  OK(bg_text_baseline("DejaVu Sans", 11, "new text") > 0);
   OK(w2 > 1.9 * w1 && w2 < 2.1 * w1);
   OK(w3 > w1);
 }
