@@ -538,8 +538,12 @@ static void to_points(grid *g) {
   range(g, g->gx, &x0, &x1);
   range(g, g->gy, &y0, &y1);
   double band = layer_band(g);
-  double *cx = line_centres(g, g->gx, d->nw, x0, x1, d->st.rank_sep / 2 + band);
-  double *cy = line_centres(g, g->gy, d->nh, y0, y1, d->st.node_sep * 0.75 + band);
+  /* a bond between neighbouring cells at least 2.5 half arrows long (7 line
+   * widths each) and the junction's end circle: thick lines (slides) had
+   * one-port bonds not much longer than their barb */
+  double least = 2.5 * 7 * d->st.line_width + 3;
+  double *cx = line_centres(g, g->gx, d->nw, x0, x1, fmax(d->st.rank_sep / 2, least) + band);
+  double *cy = line_centres(g, g->gy, d->nh, y0, y1, fmax(d->st.node_sep * 0.75, least) + band);
   for (int v = 0; v < g->n; v++)
     if (bg_node_shown(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
   bg_layout *l = &d->lay;

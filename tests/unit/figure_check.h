@@ -3,7 +3,8 @@
  * slanted bonds, causal strokes touching a neighbouring bond, labels over
  * lines or other labels, bond numbers nearer another bond than their own,
  * path tags and gains away from their line, overlays and lines through
- * element labels, and bond crossings. Used by test_figures.c; the
+ * element labels, bond crossings and bonds hardly longer than their half
+ * arrow. Used by test_figures.c; the
  * definitions are in docs/drawing.md ("Measured geometry"). */
 #ifndef BG_TEST_FIGURE_CHECK_H
 #define BG_TEST_FIGURE_CHECK_H
@@ -24,6 +25,7 @@ typedef struct fc_stats {
   int through;               /* overlay polylines and leaders × element labels they run through */
   int lines_through;         /* bonds and signals × element labels they run through */
   int crossings;             /* pairs of bonds that cross */
+  int short_bonds;           /* bonds shorter than 2.5 half arrows (the half arrow not counted) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_OTHER }; /* line kinds */
@@ -236,6 +238,18 @@ static int fc_slanted(const fc_line *l) {
   return 0;
 }
 
+/* A bond whose line (its half arrow not counted) is shorter than 2.5 times
+ * its half arrow: the barb is then most of what one sees of the bond. */
+static int fc_short(const fc_line *l) {
+  if (!l->barb) return 0;
+  double body = 0;
+  for (int k = 0; k < l->nseg - 1; k++) body += hypot(l->seg[k].x1 - l->seg[k].x0, l->seg[k].y1 - l->seg[k].y0);
+  const fc_seg *b = &l->seg[l->nseg - 1];
+  int is_short = body < 2.5 * hypot(b->x1 - b->x0, b->y1 - b->y0);
+  if (fc_explain && is_short) printf("  short: bond %d, %.1f pt\n", l->id, body);
+  return is_short;
+}
+
 /* A stroke touches another bond when their inked widths meet. */
 static int fc_touching(const fc_scene *f, const fc_line *st) {
   for (int j = 0; j < f->nline; j++) {
@@ -365,7 +379,7 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
   for (int j = 0; j < f.nline; j++) {
     const fc_line *l = &f.line[j];
     if (l->kind == FC_BOND) {
-      st->bonds++, st->slanted += fc_slanted(l);
+      st->bonds++, st->slanted += fc_slanted(l), st->short_bonds += fc_short(l);
       for (int k = j + 1; k < f.nline; k++)
         if (f.line[k].kind == FC_BOND) st->crossings += fc_crosses(l, &f.line[k]);
     }
