@@ -463,7 +463,7 @@ static void measure_label(const bg_diagram *d, const char *markup, double *w, do
 
 enum { TAG_GAP = 2 }; /* between a tag's box and its line */
 
-enum { TEXT_CLEAR = 4 }; /* between a tag and other text beside it, so "L2: G = n" and "1" stay two */
+enum { TEXT_CLEAR = 6 }; /* between a tag and other text beside it, so "L2: G = n" and "1" stay two */
 
 /* What a label at p costs: the obstacles it touches (bg_place_score, 8
  * each), 4 when another polyline comes nearer to it than its own line (the
