@@ -708,6 +708,23 @@ static int layer_drawn(const bg_diagram *d, int kind, int i) {
 
 /* The segments of a drawn layer (corners of bent bonds split; *n of
  * them), the caller frees them; NULL when it is not drawn. */
+/* Whether a loop closed by a modulation (segment `last` ends where the
+ * next one, `first`, does not start: the jump) reads the variable of the
+ * node `last` left, not of the one it reaches: internal_mod_r's `js.f` is
+ * the flow of bond 1 to E, but the signal comes from the junction js. That
+ * segment is then left out, so the loop closes from js along its signal
+ * instead of running out to E and across the figure. */
+static int modulation_detour(const bg_diagram *d, const seg *last, const seg *first) {
+  const bg_model *m = d->m;
+  if (first->u == last->v || last->u >= m->nelem || first->u >= m->nelem) return 0;
+  int from_u = 0, from_v = 0;
+  for (int k = 0; k < m->nsignal; k++) {
+    if (m->signal_to[k] != first->u) continue;
+    from_u |= m->signal_from[k] == last->u, from_v |= m->signal_from[k] == last->v;
+  }
+  return from_u && !from_v;
+}
+
 static seg *layer_segs(const bg_diagram *d, int kind, int i, int *n) {
   const bg_analysis *a = d->a;
   if (!layer_drawn(d, kind, i)) return NULL;
@@ -719,6 +736,11 @@ static seg *layer_segs(const bg_diagram *d, int kind, int i, int *n) {
     *n = a->tloop_n[i];
     s = bg_xcalloc((size_t)*n, sizeof *s);
     for (int k = 0; k < *n; k++) s[k] = signal_seg(d, a->tloop_signals[a->tloop_adr[i] + k]);
+    for (int k = 0; *n > 2 && k < *n; k++)
+      if (modulation_detour(d, &s[k], &s[(k + 1) % *n])) {
+        memmove(&s[k], &s[k + 1], (size_t)(*n - k - 1) * sizeof *s), --*n;
+        break;
+      }
   }
   *n = visible_segs(d, s, *n);
   if (*n == 0) { /* wholly inside a collapsed instance */
