@@ -163,17 +163,23 @@ static void round_label(const bg_diagram *d, int v, joint *j) {
 }
 
 /* How many of 24 points along the cubic p0 c1 c2 p1 fall in the box of a
- * node other than a and b. */
+ * node other than a and b (only nodes whose box meets the control
+ * polygon's box are looked at: the curve stays inside it). */
 static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b) {
+  double x0 = c[0].x, x1 = c[0].x, y0 = c[0].y, y1 = c[0].y;
+  for (int k = 1; k < 4; k++)
+    x0 = fmin(x0, c[k].x), x1 = fmax(x1, c[k].x), y0 = fmin(y0, c[k].y), y1 = fmax(y1, c[k].y);
   int hits = 0;
-  for (int k = 1; k < 24; k++) {
-    double t = k / 24.0, u = 1 - t;
-    bg_vec p = bg_vadd(bg_vadd(bg_vscale(c[0], u * u * u), bg_vscale(c[1], 3 * u * u * t)),
-                       bg_vadd(bg_vscale(c[2], 3 * u * t * t), bg_vscale(c[3], t * t * t)));
-    for (int n = 0; n < d->nnode; n++)
-      if (n != a && n != b && d->node_of[n] == n && fabs(p.x - d->nx[n]) < d->nw[n] / 2 &&
-          fabs(p.y - d->ny[n]) < d->nh[n] / 2)
-        hits++;
+  for (int n = 0; n < d->nnode; n++) {
+    if (n == a || n == b || d->node_of[n] != n || d->nx[n] + d->nw[n] / 2 < x0 || d->nx[n] - d->nw[n] / 2 > x1 ||
+        d->ny[n] + d->nh[n] / 2 < y0 || d->ny[n] - d->nh[n] / 2 > y1)
+      continue;
+    for (int k = 1; k < 24; k++) {
+      double t = k / 24.0, u = 1 - t;
+      bg_vec p = bg_vadd(bg_vadd(bg_vscale(c[0], u * u * u), bg_vscale(c[1], 3 * u * u * t)),
+                         bg_vadd(bg_vscale(c[2], 3 * u * t * t), bg_vscale(c[3], t * t * t)));
+      hits += fabs(p.x - d->nx[n]) < d->nw[n] / 2 && fabs(p.y - d->ny[n]) < d->nh[n] / 2;
+    }
   }
   return hits;
 }
