@@ -19,6 +19,11 @@ int bg_surface_svg_write_tips(const bg_scene *s, bg_svg_tip_fn tip, void *ctx, b
 /* cairo's SVG of the same scene (text as glyph outlines): the reference the
  * tests compare the SVG writer's rasterisation with. */
 int bg_surface_svg_cairo_write(const bg_scene *s, bg_strbuf *out);
+/* For a program that is fontconfig's only user (the bgdraw executable),
+ * called before any text is measured: the renderers then load fontconfig's
+ * configuration themselves, as FcInit would but without parsing every
+ * template of conf.avail (surface_cairo.c). Others leave it to FcInit. */
+void bg_fonts_own(void);
 /* The baseline of markup below the top of its box (pango), points. */
 double bg_text_baseline(const char *font, double size, const char *markup);
 int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out);

@@ -31,7 +31,9 @@ int bg_surface_close(cairo_t *cr, cairo_surface_t *sf) {
  * includes) is parsed into a config that becomes fontconfig's current one
  * before pango asks, so fonts, rules and caches are the same. When that
  * fails, or the configuration names no cache folder (FcInit would then add
- * fallbacks), fontconfig is left to FcInit. */
+ * fallbacks), fontconfig is left to FcInit. Only when the program asked
+ * for it (bg_fonts_own): setting the current configuration would replace
+ * one a host program of libbgdraw already uses. */
 static void load_font_config(void) {
   FcConfig *cfg = FcConfigCreate();
   if (!cfg) return;
@@ -44,10 +46,14 @@ static void load_font_config(void) {
   if (!ok || !FcConfigSetCurrent(cfg)) FcConfigDestroy(cfg);
 }
 
+static int own_fonts;
+
+void bg_fonts_own(void) { own_fonts = 1; }
+
 static PangoFontMap *font_map(void) {
   static PangoFontMap *map;
   if (!map) {
-    load_font_config();
+    if (own_fonts) load_font_config();
     map = pango_cairo_font_map_get_default();
   }
   return map;

@@ -58,6 +58,7 @@ static const bg_render_api *api(void) {
             t ? " (it is from another build)" : ":", t ? "" : tried);
     exit(EXIT_WRITE);
   }
+  t->fonts_own(); /* nothing else in this process uses fontconfig */
   return tab = t;
 }
 

@@ -19,7 +19,7 @@
 
 /* Raised whenever a signature below changes: a module from another build is
  * refused rather than called wrongly. */
-#define BG_RENDER_API_VERSION 2
+#define BG_RENDER_API_VERSION 3
 
 typedef struct bg_render_api {
   int version;
@@ -37,6 +37,7 @@ typedef struct bg_render_api {
   int (*report_write)(const bg_report_input *in, const char *path, bg_diags *dg);
   void (*style_path)(const char *name, const char *style_dir, char *buf, size_t n);
   void (*versions)(bg_strbuf *out);
+  void (*fonts_own)(void); /* bgdraw is fontconfig's only user (scene/surface.h) */
 } bg_render_api;
 
 /* The module's table (the one symbol the executable looks up). */

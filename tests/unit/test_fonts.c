@@ -1,5 +1,5 @@
 /* The font configuration the renderers set up before pango's first use
- * (surface_cairo.c) is the one FcInit would load, without the step FcInit
+ * when the program owns fontconfig (bg_fonts_own, surface_cairo.c) is the one FcInit would load, without the step FcInit
  * adds: the configuration files in effect are those of a configuration
  * parsed from the same file, no template of fontconfig's conf.avail folder
  * was parsed (FcInit parses them all, disabled, for their descriptions),
@@ -11,6 +11,7 @@
 
 #include "harness.h"
 #include "scene/scene.h"
+#include "scene/surface.h"
 
 /* Files parsed into cfg: applied (enabled) and only described (disabled). */
 static void count_files(FcConfig *cfg, int *enabled, int *disabled) {
@@ -42,6 +43,7 @@ static char *match_file(FcConfig *cfg, const char *family) {
 }
 
 int main(void) {
+  bg_fonts_own(); /* as the bgdraw executable does */
   double w, h;
   bg_text_measure("DejaVu Sans", 11, "R<sub>1</sub>", &w, &h);
   OK(w > 0 && h > 0);
