@@ -29,8 +29,10 @@ static void stats(rp_ctx *c, const bg_simresult *r) {
   static const char *head[] = {"Solver statistics", ""};
   rp_table t;
   rp_table_init(&t, 2, head, "ll");
+  int fp = r->linear_solver && !strcmp(r->linear_solver, "none");
   row(&t, "Solver", "%s%s%s", r->solver_used ? r->solver_used : "none",
-      r->linear_solver ? ", linear algebra " : "", r->linear_solver ? r->linear_solver : "");
+      fp ? ", fixed-point iteration (no Jacobian)" : r->linear_solver ? ", linear algebra " : "",
+      !fp && r->linear_solver ? r->linear_solver : "");
   if (r->solver_reason) row(&t, "Why this solver", "%s", r->solver_reason);
   row(&t, "Time span", "%g to %g s%s", sp->t0, sp->t_end, r->partial ? " (stopped early)" : "");
   if (r->partial) row(&t, "Time reached", "%.8g s", r->t_reached);

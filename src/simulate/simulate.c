@@ -336,6 +336,26 @@ static int check_spec(const bg_simspec *sp, bg_simresult *r) {
   return refuse(r, strdup(buf));
 }
 
+/* A fixed-point run that failed: most often more than BG_SIM_FP_MAX_STEPS
+ * steps in an output interval (the model is stiffer than its estimate, or
+ * turned stiff after t0, and the iteration converges only at tiny steps).
+ * The whole run again with Newton's method and KLU, from a clean result. */
+static int integrate_newton_again(bg_eqsys *s, bg_simplan *p, bg_simresult *r) {
+  if (p->verbose)
+    fprintf(stderr, "bgdraw: simulate: fixed-point iteration failed (%s); again with Newton's "
+                    "method and KLU\n", r->message ? r->message : "no message");
+  free(r->message), free(r->y0), free(r->yp0);
+  free(r->event_t), free(r->event_cond), free(r->event_dir);
+  r->message = NULL, r->y0 = r->yp0 = NULL;
+  r->event_t = NULL, r->event_cond = NULL, r->event_dir = NULL, r->nevents = 0;
+  r->nrows = 0, r->partial = 0, r->t_reached = p->t0, r->ic_retries = 0;
+  r->rows_redone = r->rows_violating = 0, r->row_worst = r->row_worst_t = 0;
+  r->row_worst_unknown = NULL;
+  p->fixed_point = 0;
+  r->linear_solver = "klu";
+  return bg_sim_integrate(s, p, r);
+}
+
 /* No unknowns: the outputs over the grid, without a solver. */
 static int simulate_algebraic(const bg_model *m, bg_eqsys *s, bg_simresult *r) {
   bg_simplan p = {0};
@@ -400,9 +420,15 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   bg_simplan p = {0};
   p.kind = kind;
   p.sparse = n > SIM_SPARSE_ABOVE;
+  /* Adams on a large system: fixed-point iteration, the pairing for
+   * non-stiff problems (no Jacobian, no factorisation: a sparse LU of a 2-D
+   * mesh grows as n^1.5); Newton again if it fails (integrate_newton_again) */
+  p.fixed_point = kind == BG_SIM_ADAMS && p.sparse;
   if (o && o->verbose)
     fprintf(stderr, "bgdraw: simulate: %d unknowns, solver %s, %s (%s)\n", n, r->solver_used,
-            p.sparse ? "sparse Jacobian, KLU" : "dense Jacobian", r->solver_reason);
+            p.fixed_point ? "fixed-point iteration (no Jacobian)"
+            : p.sparse    ? "sparse Jacobian, KLU"
+                          : "dense Jacobian", r->solver_reason);
   p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
   p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : bg_sim_default_rtol(n);
   double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
@@ -413,7 +439,7 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   p.events = !(o && o->no_events);
   conditions_keep(s, p.events, r);
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
-  r->linear_solver = p.sparse ? "klu" : "dense";
+  r->linear_solver = p.fixed_point ? "none" : p.sparse ? "klu" : "dense";
   r->rtol = p.rtol, r->atol = atol;
   byname bn = byname_make(m);
   double *atolv = make_atol(&bn, s, atol), *times = make_times(&m->sim, &p.nrows);
@@ -426,6 +452,7 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   clock_gettime(CLOCK_MONOTONIC, &c0);
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &u0);
   rc = bg_sim_integrate(s, &p, r);
+  if (rc && p.fixed_point) rc = integrate_newton_again(s, &p, r);
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &u1);
   clock_gettime(CLOCK_MONOTONIC, &c1);
   if (r->nrows) report_start(&bn, s, atolv, p.rtol, r);

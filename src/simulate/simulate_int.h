@@ -6,9 +6,17 @@
 
 enum { BG_SIM_BDF, BG_SIM_ADAMS, BG_SIM_IDA };
 
+/* Steps per output interval a fixed-point run may take before the whole run
+ * is made again with Newton's method: more means the model is stiffer than
+ * its estimate said, where the iteration only converges at tiny steps. */
+#define BG_SIM_FP_MAX_STEPS 2000
+
 typedef struct bg_simplan {
   int kind;         /* BG_SIM_* */
   int sparse;       /* KLU with the eqsys sparsity pattern (else dense) */
+  int fixed_point;  /* CVODE Adams: fixed-point iteration, no Jacobian and no
+                       linear solver (docs/simulation.md, "Nonlinear iteration"),
+                       at most BG_SIM_FP_MAX_STEPS steps per output interval */
   double t0, t_end; /* t_end > t0 */
   double rtol, max_step; /* max_step 0: no limit */
   long max_steps;   /* per output interval */

@@ -18,6 +18,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include "base/arena.h"
@@ -33,6 +34,7 @@ typedef struct simrun {
   N_Vector y, yp, atol, id;
   SUNMatrix A;
   SUNLinearSolver LS;
+  SUNNonlinearSolver NLS;        /* fixed-point iteration (p->fixed_point), else NULL */
   sunindextype *colptr, *rowind; /* the sparse pattern, copied in at each evaluation */
   int nnz, *diagpos;             /* position of each diagonal entry in the pattern */
   double tcur;                   /* where the solution is known */
@@ -232,10 +234,16 @@ static int setup_cvode(simrun *R) {
   f |= CVodeInit(R->mem, cv_rhs, p->t0, R->y);
   f |= CVodeSVtolerances(R->mem, p->rtol, R->atol);
   f |= CVodeSetUserData(R->mem, R);
-  f |= CVodeSetMaxNumSteps(R->mem, p->max_steps);
+  long max_steps = p->fixed_point && p->max_steps > BG_SIM_FP_MAX_STEPS ? BG_SIM_FP_MAX_STEPS : p->max_steps;
+  f |= CVodeSetMaxNumSteps(R->mem, max_steps);
   if (p->max_step > 0) f |= CVodeSetMaxStep(R->mem, p->max_step);
-  f |= CVodeSetLinearSolver(R->mem, R->LS, R->A);
-  f |= CVodeSetJacFn(R->mem, cv_jac);
+  if (p->fixed_point) {
+    R->NLS = SUNNonlinSol_FixedPoint(R->y, 0, R->ctx);
+    f |= !R->NLS || CVodeSetNonlinearSolver(R->mem, R->NLS);
+  } else {
+    f |= CVodeSetLinearSolver(R->mem, R->LS, R->A);
+    f |= CVodeSetJacFn(R->mem, cv_jac);
+  }
   if (R->nroot) f |= CVodeRootInit(R->mem, R->nroot, cv_g);
   return f ? -1 : 0;
 }
@@ -285,7 +293,7 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
   R->tcur = p->t0;
   R->t_shown = p->t0;
   R->wall0 = R->wall_last = wall();
-  if (make_linsol(R)) return -1;
+  if (!p->fixed_point && make_linsol(R)) return -1;
   if (p->kind == BG_SIM_IDA) alg_open(R);
   R->nroot = p->events ? bg_eqsys_nroots(s) : 0;
   if (R->nroot) {
@@ -302,6 +310,7 @@ static void run_close(simrun *R) {
     if (R->p->kind == BG_SIM_IDA) IDAFree(&R->mem);
     else CVodeFree(&R->mem);
   }
+  if (R->NLS) SUNNonlinSolFree(R->NLS);
   if (R->LS) SUNLinSolFree(R->LS);
   if (R->A) SUNMatDestroy(R->A);
   N_Vector v[] = {R->y, R->yp, R->atol, R->id};
