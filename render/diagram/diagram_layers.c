@@ -587,14 +587,7 @@ static void draw_leader(bg_diagram *d, const bg_layer_label *L, const leader *q)
   bg_obstacle_item(d, d->scene.nitem - 1);
   it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-leader-dot %s", kind, which);
   it->fill = it->color = L->color, it->width = 0;
-  double r = fmax(1.2, d->st.layer_width), k = 0.5523 * r;
-  bg_vec c = q->a;
-  bg_scene_move(&d->scene, c.x + r, c.y);
-  bg_scene_curve(&d->scene, c.x + r, c.y + k, c.x + k, c.y + r, c.x, c.y + r);
-  bg_scene_curve(&d->scene, c.x - k, c.y + r, c.x - r, c.y + k, c.x - r, c.y);
-  bg_scene_curve(&d->scene, c.x - r, c.y - k, c.x - k, c.y - r, c.x, c.y - r);
-  bg_scene_curve(&d->scene, c.x + k, c.y - r, c.x + r, c.y - k, c.x + r, c.y);
-  bg_scene_close(&d->scene);
+  bg_scene_circle(&d->scene, q->a.x, q->a.y, fmax(1.2, d->st.layer_width));
 }
 
 void bg_place_layer_labels(bg_diagram *d) {

@@ -236,13 +236,7 @@ static int signal_from_bond(bg_diagram *d, sigrole role, const char *var, int to
   bg_vec p0 = d->bg[b].mid;
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
   it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
-  double r = 1.6, k = 0.5523 * r;
-  bg_scene_move(&d->scene, p0.x + r, p0.y);
-  bg_scene_curve(&d->scene, p0.x + r, p0.y + k, p0.x + k, p0.y + r, p0.x, p0.y + r);
-  bg_scene_curve(&d->scene, p0.x - k, p0.y + r, p0.x - r, p0.y + k, p0.x - r, p0.y);
-  bg_scene_curve(&d->scene, p0.x - r, p0.y - k, p0.x - k, p0.y - r, p0.x, p0.y - r);
-  bg_scene_curve(&d->scene, p0.x + k, p0.y - r, p0.x + r, p0.y - k, p0.x + r, p0.y);
-  bg_scene_close(&d->scene);
+  bg_scene_circle(&d->scene, p0.x, p0.y, 1.6);
   signal_to_node(d, role, p0, to, bg_v(0, 0), hot);
   return 0;
 }

@@ -72,6 +72,16 @@ void bg_scene_curve(bg_scene *s, double x1, double y1, double x2, double y2, dou
 
 void bg_scene_close(bg_scene *s) { add_op(s, BG_OP_CLOSE); }
 
+void bg_scene_circle(bg_scene *s, double x, double y, double r) {
+  double k = 0.5523 * r; /* the control distance of a quarter circle */
+  bg_scene_move(s, x + r, y);
+  bg_scene_curve(s, x + r, y + k, x + k, y + r, x, y + r);
+  bg_scene_curve(s, x - k, y + r, x - r, y + k, x - r, y);
+  bg_scene_curve(s, x - r, y - k, x - k, y - r, x, y - r);
+  bg_scene_curve(s, x + k, y - r, x + r, y - k, x + r, y);
+  bg_scene_close(s);
+}
+
 bg_scene_item *bg_scene_text(bg_scene *s, const char *markup, double x, double y, double size,
                              double halign, double valign, bg_rgba color, const char *role) {
   bg_scene_item *it = bg_scene_begin(s, BG_ITEM_TEXT, "%s", role);

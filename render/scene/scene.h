@@ -66,6 +66,9 @@ void bg_scene_line(bg_scene *s, double x, double y);
 void bg_scene_curve(bg_scene *s, double x1, double y1, double x2, double y2, double x3,
                     double y3);
 void bg_scene_close(bg_scene *s);
+/* A closed circle of radius r around (x, y): four cubic Béziers from its
+ * rightmost point, clockwise in page coordinates (y down). */
+void bg_scene_circle(bg_scene *s, double x, double y, double r);
 /* A text item; markup is copied. */
 bg_scene_item *bg_scene_text(bg_scene *s, const char *markup, double x, double y, double size,
                              double halign, double valign, bg_rgba color, const char *role);

@@ -13,18 +13,25 @@
 #include "lang/parse.h"
 #include "scene/surface.h"
 
+/* The model of the text in sb, compiled (NULL on errors); dg is initialised
+ * and stays the caller's to free (it points into sb). */
+static bg_model *compile_text(const bg_strbuf *sb, const char *file, bg_diags *dg) {
+  const char *src = bg_sb_str(sb);
+  bg_diags_init(dg, file, src, strlen(src));
+  bg_ast *ast = bg_parse_string(file, src, strlen(src), dg);
+  bg_model *m = ast ? bg_model_compile(ast, NULL, 0, dg) : NULL;
+  bg_ast_free(ast);
+  return m;
+}
+
 static void test_find_elem(void) {
   bg_strbuf sb = {0};
   bg_sb_puts(&sb, "model names\nSe U = 1\n1 j\n");
   for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "R r%d = 1\n", i);
   for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "bond j -> r%d\n", i);
   bg_sb_puts(&sb, "bond U -> j\n");
-  const char *src = bg_sb_str(&sb);
   bg_diags dg;
-  bg_diags_init(&dg, "names.bg", src, strlen(src));
-  bg_ast *ast = bg_parse_string("names.bg", src, strlen(src), &dg);
-  bg_model *m = ast ? bg_model_compile(ast, NULL, 0, &dg) : NULL;
-  bg_ast_free(ast);
+  bg_model *m = compile_text(&sb, "names.bg", &dg);
   OK(m && m->elem_hash);
   if (m) {
     int all = 1;
@@ -51,12 +58,8 @@ static void test_find_bond(void) {
   for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "R r%d = 1\n", i);
   for (int i = 0; i < 300; i++) bg_sb_printf(&sb, "bond %d j -> r%d\n", 7 * (300 - i), i);
   bg_sb_puts(&sb, "bond U -> j\n");
-  const char *src = bg_sb_str(&sb);
   bg_diags dg;
-  bg_diags_init(&dg, "numbers.bg", src, strlen(src));
-  bg_ast *ast = bg_parse_string("numbers.bg", src, strlen(src), &dg);
-  bg_model *m = ast ? bg_model_compile(ast, NULL, 0, &dg) : NULL;
-  bg_ast_free(ast);
+  bg_model *m = compile_text(&sb, "numbers.bg", &dg);
   OK(m && m->bond_hash);
   if (m) {
     int all = 1;
