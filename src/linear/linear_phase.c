@@ -28,6 +28,11 @@ static double factored(const bg_lin_tf *t, double w) {
   return a;
 }
 
+/* Each sample's own angle in (-180, 180]; NaN where H is 0. */
+static void sample_angles(int nw, const double *re, const double *im, double *ph) {
+  for (int k = 0; k < nw; k++) ph[k] = re[k] == 0 && im[k] == 0 ? NAN : atan2(im[k], re[k]) * DEG;
+}
+
 /* Samples' steps above 180 degrees taken as wraps (no factored form). */
 static void unwrap(double *ph, int n) {
   for (int k = 1; k < n; k++) {
@@ -43,8 +48,7 @@ static void unwrap(double *ph, int n) {
 
 void bg_linear_phase(const bg_linear *l, int pair, int nw, const double *w, const double *re,
                      const double *im, double *ph) {
-  for (int k = 0; k < nw; k++)
-    ph[k] = re[k] == 0 && im[k] == 0 ? NAN : atan2(im[k], re[k]) * DEG;
+  sample_angles(nw, re, im, ph);
   const bg_lin_tf *t = pair < l->ntf && l->tf ? &l->tf[pair] : NULL;
   if (!t) {
     unwrap(ph, nw);
@@ -60,7 +64,7 @@ void bg_linear_phase(const bg_linear *l, int pair, int nw, const double *w, cons
     if (!isfinite(ph[k])) continue;
     double f = factored(t, w[k]) + c, d = remainder(ph[k] - f, 360);
     if (fabs(d) > PHASE_AGREE) {
-      for (int j = 0; j < nw; j++) ph[j] = re[j] == 0 && im[j] == 0 ? NAN : atan2(im[j], re[j]) * DEG;
+      sample_angles(nw, re, im, ph); /* the samples before k were moved already */
       unwrap(ph, nw);
       return;
     }
