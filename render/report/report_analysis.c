@@ -238,31 +238,24 @@ static const char *form_words(int form) {
   }
 }
 
+/* "<b>Label:</b> text." as a paragraph, the text escaped. */
+static void labelled(rp_ctx *c, const char *label, const char *text) {
+  bg_strbuf b = {0};
+  bg_sb_printf(&b, "<b>%s:</b> ", label);
+  rp_esc(&b, text);
+  bg_sb_puts(&b, ".");
+  para(c, bg_sb_str(&b));
+  bg_sb_free(&b);
+}
+
 /* The index reduction (Pantelides, dummy derivatives) in bond-graph terms:
  * what was differentiated, which stores lost their state. */
 static void reduction_lines(rp_ctx *c) {
   const bg_analysis *a = c->a;
   if (!a->ired_status) return;
-  bg_strbuf b = {0};
-  bg_sb_puts(&b, "<b>Index reduction:</b> ");
-  rp_esc(&b, a->ired_message ? a->ired_message : "");
-  bg_sb_puts(&b, ".");
-  para(c, bg_sb_str(&b));
-  for (int k = 0; k < a->ired_nconstraint; k++) {
-    bg_sb_clear(&b);
-    bg_sb_puts(&b, "<b>Differentiated:</b> ");
-    rp_esc(&b, a->ired_constraint[k]);
-    bg_sb_puts(&b, ".");
-    para(c, bg_sb_str(&b));
-  }
-  for (int k = 0; k < a->ired_nlost; k++) {
-    bg_sb_clear(&b);
-    bg_sb_puts(&b, "<b>Lost its state:</b> ");
-    rp_esc(&b, a->ired_lost[k]);
-    bg_sb_puts(&b, ".");
-    para(c, bg_sb_str(&b));
-  }
-  bg_sb_free(&b);
+  labelled(c, "Index reduction", a->ired_message ? a->ired_message : "");
+  for (int k = 0; k < a->ired_nconstraint; k++) labelled(c, "Differentiated", a->ired_constraint[k]);
+  for (int k = 0; k < a->ired_nlost; k++) labelled(c, "Lost its state", a->ired_lost[k]);
 }
 
 static void index_lines(rp_ctx *c) {
