@@ -339,20 +339,13 @@ static int check_spec(const bg_simspec *sp, bg_simresult *r) {
 /* A fixed-point run that failed: most often more than BG_SIM_FP_MAX_STEPS
  * steps in an output interval (the model is stiffer than its estimate, or
  * turned stiff after t0, and the iteration converges only at tiny steps).
- * The whole run again with Newton's method and KLU, from a clean result. */
+ * The whole run again with Newton's method and KLU (bg_sim_integrate starts
+ * from a clean result). */
 static int integrate_newton_again(bg_eqsys *s, bg_simplan *p, bg_simresult *r) {
   if (p->verbose)
     fprintf(stderr, "bgdraw: simulate: fixed-point iteration failed (%s); again with Newton's "
                     "method and KLU\n", r->message ? r->message : "no message");
-  free(r->message), free(r->y0), free(r->yp0);
-  free(r->event_t), free(r->event_cond), free(r->event_dir);
-  r->message = NULL, r->y0 = r->yp0 = NULL;
-  r->event_t = NULL, r->event_cond = NULL, r->event_dir = NULL, r->nevents = 0;
-  r->nrows = 0, r->partial = 0, r->t_reached = p->t0, r->ic_retries = 0;
-  r->rows_redone = r->rows_violating = 0, r->row_worst = r->row_worst_t = 0;
-  r->row_worst_unknown = NULL;
   p->fixed_point = 0;
-  r->linear_solver = "klu";
   return bg_sim_integrate(s, p, r);
 }
 
@@ -439,7 +432,6 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   p.events = !(o && o->no_events);
   conditions_keep(s, p.events, r);
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
-  r->linear_solver = p.fixed_point ? "none" : p.sparse ? "klu" : "dense";
   r->rtol = p.rtol, r->atol = atol;
   byname bn = byname_make(m);
   double *atolv = make_atol(&bn, s, atol), *times = make_times(&m->sim, &p.nrows);
@@ -453,6 +445,7 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &u0);
   rc = bg_sim_integrate(s, &p, r);
   if (rc && p.fixed_point) rc = integrate_newton_again(s, &p, r);
+  r->linear_solver = p.fixed_point ? "none" : p.sparse ? "klu" : "dense"; /* of the run kept */
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &u1);
   clock_gettime(CLOCK_MONOTONIC, &c1);
   if (r->nrows) report_start(&bn, s, atolv, p.rtol, r);

@@ -31,7 +31,8 @@ typedef struct bg_simplan {
 } bg_simplan;
 
 /* Integrates; fills r->t, r->values (preallocated for p->nrows rows), nrows,
- * the statistics, t_reached, partial and message. Returns 0 or 2 (failed). */
+ * the statistics, t_reached, partial and message, after clearing what an
+ * earlier call into r wrote. Returns 0 or 2 (failed). */
 int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r);
 /* A model without unknowns (purely algebraic: sources and resistors): no
  * solver, the outputs evaluated at each output time. Same contract. */

@@ -757,9 +757,21 @@ static int run_start(simrun *R, bg_simresult *r) {
   return f < 0 ? -1 : 0;
 }
 
+/* What an earlier bg_sim_integrate into r wrote (a run made again). */
+static void result_rewind(bg_simresult *r) {
+  free(r->message), free(r->y0), free(r->yp0);
+  free(r->event_t), free(r->event_cond), free(r->event_dir);
+  r->message = NULL, r->y0 = r->yp0 = NULL;
+  r->event_t = NULL, r->event_cond = NULL, r->event_dir = NULL, r->nevents = 0;
+  r->nrows = 0, r->partial = 0, r->ic_retries = 0;
+  r->rows_redone = r->rows_violating = 0, r->row_worst = r->row_worst_t = 0;
+  r->row_worst_unknown = NULL;
+}
+
 int bg_sim_integrate(bg_eqsys *s, const bg_simplan *p, bg_simresult *r) {
   simrun R;
   int rc = 0, k = 0;
+  result_rewind(r);
   r->t_reached = p->t0;
   int bad_open = run_open(&R, s, p);
   R.r = r;
