@@ -81,8 +81,7 @@ static const char *choose_engine(const bg_diagram *d) {
   if (!strcmp(e, "dot") && d->nnode > 2000) {
     /* dot and sfdp need 10-30 s at 10 000 nodes, rows (linear) a few ms
      * (docs/drawing.md) */
-    if (d->o.verbose)
-      fprintf(stderr, "bgdraw: %d nodes: laying out with rows instead of dot\n", d->nnode);
+    bg_logf(d->o.log, BG_LOG_PROGRESS, "%d nodes: laying out with rows instead of dot", d->nnode);
     return "rows";
   }
   return e;

@@ -78,8 +78,7 @@ int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_dia
     bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
-  if (rc == BG_RENDER_OK && d->o.verbose)
-    fprintf(stderr, "bgdraw: wrote %s (%zu bytes)\n", path, out.len);
+  if (rc == BG_RENDER_OK) bg_logf(d->o.log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, out.len);
   bg_sb_free(&out);
   return rc;
 }

@@ -13,6 +13,7 @@
 #define BG_RENDER_H
 #include "causality/analysis.h"
 #include "base/diag.h"
+#include "base/log.h"
 #include "model/model.h"
 #include "base/strbuf.h"
 
@@ -43,7 +44,7 @@ typedef struct bg_render_opts {
   const char *style_dir; /* nullable: where named styles live (the CLI passes BG_STYLE_DIR);
                             NULL: $BGDRAW_STYLE_DIR, else "styles" */
   const char *layout;    /* nullable: engine; NULL = the model's layout statement, else dot */
-  int verbose;           /* progress and engine choices to stderr */
+  const bg_log *log;     /* progress and engine choices (-v); nullable: silent */
   int layer_room;        /* the grid layout leaves room beside the bonds for path and loop
                             lines: 0 when show has paths or loops, 1 always, -1 never
                             (a redraw keeps its source's layout, room and all) */

@@ -12,7 +12,7 @@
 #include "report/report_int.h"
 
 static void progress(const rp_ctx *c, const char *what) {
-  if (c->in->ropts && c->in->ropts->verbose) fprintf(stderr, "bgdraw: report: %s\n", what);
+  if (c->in->ropts) bg_logf(c->in->ropts->log, BG_LOG_PROGRESS, "report: %s", what);
 }
 
 static void body(rp_ctx *c) {
@@ -92,8 +92,8 @@ int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
   } else if (bg_write_file_atomic(path, pdf.s ? pdf.s : "", pdf.len) != 0) {
     bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
-  } else if (o && o->verbose) {
-    fprintf(stderr, "bgdraw: wrote %s (%zu bytes)\n", path, pdf.len);
+  } else if (o) {
+    bg_logf(o->log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, pdf.len);
   }
   bg_sb_free(&pdf);
   free_ctx(&c);

@@ -29,6 +29,7 @@ enum { INDEX_MAX_UNKNOWNS = 500 };
 /* Everything one run holds; freed by run_free. */
 typedef struct run {
   bg_cli_opts opts;
+  bg_log log; /* the engine's messages to stderr (main.c) */
   char *src;
   size_t srclen;
   bg_diags dg;

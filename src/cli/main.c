@@ -175,7 +175,7 @@ static int wants_simulation(const bg_cli_opts *o) {
  * (partial results are still written), EXIT_OK otherwise. */
 static int simulate(run *r) {
   bg_sim_opts so = {0};
-  so.verbose = r->opts.verbose;
+  so.log = &r->log;
   so.eqs_problem = r->eqsys_problem;
   int rc = bg_simulate(r->model, &r->analysis, sim_system(r), &so, &r->sim);
   r->sim_status = rc;
@@ -283,9 +283,18 @@ static int write_all(run *r) {
   return rc;
 }
 
+/* The engine's messages on stderr: progress with -v, the rest unless -q. */
+static void log_stderr(void *ctx, bg_log_level level, const char *msg) {
+  const bg_cli_opts *o = ctx;
+  if (level >= BG_LOG_INFO && o->quiet) return;
+  fprintf(stderr, "bgdraw: %s%s\n",
+          level == BG_LOG_WARNING ? "warning: " : level == BG_LOG_NOTE ? "note: " : "", msg);
+}
+
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
+  r.log = (bg_log){log_stderr, &r.opts, 0};
   if (bg_cli_parse(argc, argv, &r.opts) != 0) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
@@ -297,6 +306,7 @@ int main(int argc, char **argv) {
     return EXIT_OK;
   }
   diagnostics_output(&r.opts);
+  r.log.verbose = r.opts.verbose;
   if (cli_render_options(&r) != 0) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;

@@ -343,8 +343,8 @@ static int check_spec(const bg_simspec *sp, bg_simresult *r) {
  * from a clean result). */
 static int integrate_newton_again(bg_eqsys *s, bg_simplan *p, bg_simresult *r) {
   if (p->verbose)
-    fprintf(stderr, "bgdraw: simulate: fixed-point iteration failed (%s); again with Newton's "
-                    "method and KLU\n", r->message ? r->message : "no message");
+    bg_logf(p->log, BG_LOG_PROGRESS, "simulate: fixed-point iteration failed (%s); again with Newton's "
+                    "method and KLU", r->message ? r->message : "no message");
   p->fixed_point = 0;
   return bg_sim_integrate(s, p, r);
 }
@@ -383,9 +383,9 @@ static double step_limit(bg_eqsys *s, const bg_model *m, const bg_sim_opts *o) {
   double lim = per / SIM_STEPS_PER_PERIOD;
   if (per > 0 && (h <= 0 || lim < h)) {
     h = lim;
-    if (o && o->verbose)
-      fprintf(stderr, "bgdraw: simulate: steps of at most %.6g s (1/%d of the shortest input "
-                      "period, %.6g s)\n", h, SIM_STEPS_PER_PERIOD, per);
+    if (o)
+      bg_logf(o->log, BG_LOG_PROGRESS, "simulate: steps of at most %.6g s (1/%d of the shortest input "
+                      "period, %.6g s)", h, SIM_STEPS_PER_PERIOD, per);
   }
   return h;
 }
@@ -417,8 +417,8 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
    * non-stiff problems (no Jacobian, no factorisation: a sparse LU of a 2-D
    * mesh grows as n^1.5); Newton again if it fails (integrate_newton_again) */
   p.fixed_point = kind == BG_SIM_ADAMS && p.sparse;
-  if (o && o->verbose)
-    fprintf(stderr, "bgdraw: simulate: %d unknowns, solver %s, %s (%s)\n", n, r->solver_used,
+  if (o)
+    bg_logf(o->log, BG_LOG_PROGRESS, "simulate: %d unknowns, solver %s, %s (%s)", n, r->solver_used,
             p.fixed_point ? "fixed-point iteration (no Jacobian)"
             : p.sparse    ? "sparse Jacobian, KLU"
                           : "dense Jacobian", r->solver_reason);
@@ -428,7 +428,8 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   p.max_step = step_limit(s, m, o);
   r->max_step = p.max_step;
   p.max_steps = o && o->max_steps > 0 ? o->max_steps : SIM_MAX_STEPS;
-  p.verbose = o ? o->verbose : 0;
+  p.log = o ? o->log : NULL;
+  p.verbose = bg_log_on(p.log, BG_LOG_DETAIL) ? 2 : bg_log_on(p.log, BG_LOG_PROGRESS);
   p.events = !(o && o->no_events);
   conditions_keep(s, p.events, r);
   p.progress_every = o && o->progress_every > 0 ? o->progress_every : SIM_PROGRESS_EVERY;
@@ -450,21 +451,21 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   clock_gettime(CLOCK_MONOTONIC, &c1);
   if (r->nrows) report_start(&bn, s, atolv, p.rtol, r);
   if (p.verbose && r->ic_report)
-    fprintf(stderr, "bgdraw: simulate: initial values made consistent: %s\n", r->ic_report);
+    bg_logf(p.log, BG_LOG_PROGRESS, "simulate: initial values made consistent: %s", r->ic_report);
   if (p.verbose)
-    fprintf(stderr, "bgdraw: simulate: %s in %.3f s (CPU %.3f s): %d rows, %ld steps, %ld "
+    bg_logf(p.log, BG_LOG_PROGRESS, "simulate: %s in %.3f s (CPU %.3f s): %d rows, %ld steps, %ld "
                     "function and %ld Jacobian evaluations, %ld error test failures, %ld "
-                    "nonlinear iterations\n",
+                    "nonlinear iterations",
             rc ? "failed" : "done", (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec),
             (double)(u1.tv_sec - u0.tv_sec) + 1e-9 * (double)(u1.tv_nsec - u0.tv_nsec),
             r->nrows, r->steps, r->rhs_evals, r->jac_evals, r->err_test_fails, r->nonlin_iters);
   if (p.verbose && r->nconditions)
-    fprintf(stderr, "bgdraw: simulate: %d state event%s at %d switching condition%s%s\n", r->nevents,
+    bg_logf(p.log, BG_LOG_PROGRESS, "simulate: %d state event%s at %d switching condition%s%s", r->nevents,
             r->nevents == 1 ? "" : "s", r->nconditions, r->nconditions == 1 ? "" : "s",
             r->events_searched ? "" : " (not searched)");
   if (p.verbose && r->rows_redone)
-    fprintf(stderr, "bgdraw: simulate: %d output interval%s integrated again with short steps: "
-                    "the row violated the algebraic equations\n", r->rows_redone, r->rows_redone == 1 ? "" : "s");
+    bg_logf(p.log, BG_LOG_PROGRESS, "simulate: %d output interval%s integrated again with short steps: "
+                    "the row violated the algebraic equations", r->rows_redone, r->rows_redone == 1 ? "" : "s");
   free(atolv), free(times), free(bp), free(bn.ids);
   return rc;
 }
@@ -508,7 +509,7 @@ void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const b
                    bg_simresult *r) {
   bg_sim_opts tight = o ? *o : (bg_sim_opts){0};
   tight.rtol = r->rtol / BG_VERIFY_FACTOR, tight.atol = r->atol / BG_VERIFY_FACTOR;
-  tight.verbose = 0;
+  tight.log = NULL;
   r->verify_rtol = tight.rtol, r->verify_atol = tight.atol, r->verify_worst_col = -1;
   bg_simresult t;
   int rc = bg_simulate(m, a, s, &tight, &t);

@@ -10,11 +10,12 @@
 #include "causality/analysis.h"
 #include "equations/eqsys.h"
 #include "model/model.h"
+#include "base/log.h"
 #include "base/strbuf.h"
 
 typedef struct bg_sim_opts {
   const char *solver; /* NULL: the model's `solver =` (default "auto") */
-  int verbose;        /* progress and the solver choice on stderr */
+  const bg_log *log;  /* progress and the solver choice (-v); nullable: silent */
   /* Overrides of the model's simulate block (0: the model's value). */
   double rtol, atol;
   /* -v progress: at most one line per this many seconds of wall time

@@ -25,7 +25,8 @@ typedef struct bg_simplan {
   const double *times; /* nrows output times, times[0] = t0, last = t_end */
   int nbp;
   const double *bp;    /* sorted breakpoints strictly inside (t0, t_end) */
-  int verbose;
+  const bg_log *log; /* progress (-v) and solver messages (-vv); nullable */
+  int verbose;       /* what log wants: 0, 1 progress, 2 solver messages too */
   int events;          /* find state events (root functions; docs/simulation.md) */
   double progress_every; /* -v: seconds of wall time between progress lines */
 } bg_simplan;

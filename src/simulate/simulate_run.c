@@ -159,7 +159,7 @@ static int ida_g(sunrealtype t, N_Vector y, N_Vector yp, sunrealtype *g, void *u
  * takes handlers on the context instead. Both keep the last message. */
 static void keep_sunmsg(simrun *R, const char *module, const char *fn, const char *msg) {
   snprintf(R->sunmsg, sizeof R->sunmsg, "%s/%s: %s", module, fn, msg);
-  if (R->p->verbose > 1) fprintf(stderr, "bgdraw: %s\n", R->sunmsg);
+  bg_logf(R->p->log, BG_LOG_DETAIL, "%s", R->sunmsg);
 }
 
 #if SUNDIALS_VERSION_MAJOR >= 7
@@ -429,10 +429,10 @@ static void show_events(simrun *R) {
   for (; R->p->verbose && R->nev_shown < r->nevents; R->nev_shown++) {
     int k = R->nev_shown;
     if (k < SIM_EVENTS_SHOWN)
-      fprintf(stderr, "bgdraw: simulate: state event at t = %.10g: %s (%s)\n", r->event_t[k],
+      bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: state event at t = %.10g: %s (%s)", r->event_t[k],
               bg_eqsys_root_text(R->s, r->event_cond[k]), r->event_dir[k] > 0 ? "rising" : "falling");
     else if (k == SIM_EVENTS_SHOWN)
-      fprintf(stderr, "bgdraw: simulate: more state events (not shown; the JSON lists them all)\n");
+      bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: more state events (not shown; the JSON lists them all)");
   }
 }
 
@@ -561,7 +561,7 @@ static void progress(simrun *R, double t) {
   if (t > R->t_shown) R->t_shown = t;
   long st[5];
   stats_now(R, st);
-  fprintf(stderr, "bgdraw: simulate: t = %.6g (%.1f%% of the span), %ld steps, %.1f s\n",
+  bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: t = %.6g (%.1f%% of the span), %ld steps, %.1f s",
           R->t_shown, 100.0 * (R->t_shown - p->t0) / (p->t_end - p->t0), st[0], now - R->wall0);
 }
 
@@ -749,8 +749,8 @@ static int run_start(simrun *R, bg_simresult *r) {
   } else {
     r->ic_retries = f0 < 0 ? k - 1 : 0;
     if (r->ic_retries && R->p->verbose)
-      fprintf(stderr, "bgdraw: simulate: IDACalcIC failed from the model's guess of the "
-                      "algebraic unknowns; %s worked\n", r->ic_retries == 1 ? "+1" : "-1");
+      bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: IDACalcIC failed from the model's guess of the "
+                      "algebraic unknowns; %s worked", r->ic_retries == 1 ? "+1" : "-1");
   }
   keep_start(R, r);
   free(y0);
