@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "model/expr.h"
+#include "model/model.h"
 
 static bg_model *model_new(int nstate, int cap) {
   bg_model *m = calloc(1, sizeof *m);

@@ -8,10 +8,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "base/fileio.h"
 #include "causality/causality.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "linear/linear.h"
 
 static double now(void) {

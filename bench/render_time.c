@@ -7,8 +7,8 @@
 #include <time.h>
 
 #include "causality/causality.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 #include "diagram/render.h"
 
 static double now(void) {

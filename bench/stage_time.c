@@ -14,13 +14,12 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "causality/causality.h"
 #include "diagram/render.h"
-#include "equations/eqprint.h"
-#include "equations/eqsym.h"
+#include "equations/equations.h"
 #include "json/json.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "report/report.h"
 #include "simulate/simulate.h"
 

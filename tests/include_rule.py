@@ -8,6 +8,12 @@ beside cli, and uses nothing of it), so the build and this check cannot disagree
 Every folder of src/ and render/ must be a stage, and every project include is
 written "stage/name.h" (a bare "name.h" only for a header of the same folder).
 
+Each engine stage S above base (lang ... transform) has one front door, S/S.h:
+the only header of S that a file of another stage includes. The headers S.h
+includes from its own folder are parts of the front door; every other header
+of S holds cross-file internals and is named *_int.h. Including another
+stage's *_int.h is a violation (tests, fuzzers and benchmarks may look inside).
+
 usage: include_rule.py [ROOT]     exit 0 when the tree keeps the rule
 """
 import os
@@ -28,12 +34,45 @@ def stage_order(root):
     return order + ["cli", "api"]
 
 
+def front_door_problems(root, order, home):
+    """Engine stages: the front door exists, and each header it does not reach
+    is an internal one (*_int.h)."""
+    problems = []
+    for s in order[1:order.index("scene")]:
+        folder = os.path.join(root, home[s], s)
+        if not os.path.isdir(folder):
+            continue
+        door = "%s.h" % s
+        if not os.path.exists(os.path.join(folder, door)):
+            problems.append("%s/%s/: no front door %s" % (home[s], s, door))
+            continue
+        seen, todo = set(), [door]
+        while todo:
+            h = todo.pop()
+            if h in seen:
+                continue
+            seen.add(h)
+            text = open(os.path.join(folder, h), encoding="utf-8").read()
+            for inc in INCLUDE.findall(text):
+                parts = inc.split("/")
+                name = parts[-1]
+                if (len(parts) == 1 or parts[0] == s) and not name.endswith("_int.h") \
+                        and os.path.exists(os.path.join(folder, name)):
+                    todo.append(name)
+        for name in sorted(os.listdir(folder)):
+            if name.endswith(".h") and name not in seen and not name.endswith("_int.h"):
+                problems.append("%s/%s/%s: not part of the front door %s/%s, so internal: "
+                                "name it *_int.h" % (home[s], s, name, s, door))
+    return problems
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "."
     order = stage_order(root)
     rank = {s: i for i, s in enumerate(order)}
     home = {s: ("render" if s in order[order.index("scene"):-2] else "src") for s in order}
-    problems = []
+    engine = set(order[1:order.index("scene")])
+    problems = front_door_problems(root, order, home)
     checked = 0
     for top in ("src", "render"):
         for entry in sorted(os.listdir(os.path.join(root, top))):
@@ -63,6 +102,12 @@ def main():
                     if rank[parts[0]] > rank[entry] or (entry == "api" and parts[0] == "cli"):
                         problems.append('%s: stage %s includes "%s" of the higher stage %s'
                                         % (rel, entry, inc, parts[0]))
+                    elif parts[0] != entry and parts[1].endswith("_int.h") and parts[0] in engine:
+                        problems.append('%s: "%s" is internal to stage %s (include "%s/%s.h")'
+                                        % (rel, inc, parts[0], parts[0], parts[0]))
+                    elif parts[0] != entry and parts[0] in engine and parts[1] != parts[0] + ".h":
+                        problems.append('%s: "%s" is not the front door of stage %s '
+                                        '(include "%s/%s.h")' % (rel, inc, parts[0], parts[0], parts[0]))
                     elif not os.path.exists(os.path.join(root, home[parts[0]], inc)):
                         problems.append('%s: "%s" does not exist' % (rel, inc))
     for p in problems:

@@ -1,7 +1,7 @@
 /* Internals of the diagram builder, shared by diagram*.c and render.c. */
 #ifndef BG_DIAGRAM_INT_H
 #define BG_DIAGRAM_INT_H
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "diagram/layout.h"
 #include "model/model.h"
 #include "diagram/render.h"

@@ -9,7 +9,7 @@
 
 #include "causality/causality.h"
 #include "diagram/diagram_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 /* "e = R0 * f": the law as the element computes it, from its value or law. */
 static void law(const bg_model *m, int e, bg_strbuf *out) {

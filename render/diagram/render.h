@@ -11,7 +11,7 @@
  * with the computed positions). Conventions: docs/drawing.md. */
 #ifndef BG_RENDER_H
 #define BG_RENDER_H
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "base/diag.h"
 #include "base/log.h"
 #include "model/model.h"

@@ -6,10 +6,9 @@
  * Contents list, page numbers and PDF outlines. Conventions: docs/report.md. */
 #ifndef BG_REPORT_H
 #define BG_REPORT_H
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "base/diag.h"
-#include "equations/eqsys.h"
-#include "equations/index.h"
+#include "equations/equations.h"
 #include "model/model.h"
 #include "diagram/render.h"
 #include "simulate/simulate.h"

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "report/report_int.h"
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 
 #define MAX_ROWS 400 /* per table; the JSON lists everything */
 #define MAX_EIGS 60

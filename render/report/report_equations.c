@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "equations/eqprint.h"
+#include "equations/equations.h"
 #include "report/report_int.h"
 
 #define MAX_EQ_LINES 600 /* per block; the rest: --equations text */

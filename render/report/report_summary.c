@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "report/report_int.h"
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 
 /* ---------------------------------------------------------------- verdict */
 static int numeric_index(const rp_ctx *c) {

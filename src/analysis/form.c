@@ -8,9 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model/expr.h"
-#include "analysis/paths.h"
-#include "analysis/sfg.h"
+#include "model/model.h"
+#include "analysis/paths_int.h"
+#include "analysis/sfg_int.h"
 #include "base/strbuf.h"
 
 /* Budget of the algebraic-cycle search, in steps. */

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/paths.h"
+#include "analysis/paths_int.h"
 
 /* Work budget of one search, in steps; past it the omitted counts are lower
  * bounds. Generous: real models need far fewer steps than this. */

@@ -1,4 +1,4 @@
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 
 #include <stdio.h>
 #include <string.h>

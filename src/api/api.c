@@ -10,15 +10,14 @@
 #include <sys/stat.h>
 
 #include <bgdraw.h> /* the public header, include/ */
-#include "analysis/paths.h"
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 #include "base/diag.h"
 #include "base/fileio.h"
 #include "base/strbuf.h"
 #include "causality/causality.h"
 #include "diagram/render.h"
 #include "json/json.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "model/model.h"
 
 #ifndef BG_VERSION

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "causality/causality.h"
+#include "causality/causality_int.h"
 #include "base/strbuf.h"
 
 /* ---------------------------------------------------------------- set-up */

@@ -4,8 +4,8 @@
  * into the first open bond. Generalised forces (4.10.2) as text. */
 #include <string.h>
 
-#include "causality/causality.h"
-#include "model/expr.h"
+#include "causality/causality_int.h"
+#include "model/model.h"
 #include "base/strbuf.h"
 
 static void lag_push(bg_ceng *E, int junction, int bond) {

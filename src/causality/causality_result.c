@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "causality/causality.h"
+#include "causality/causality_int.h"
 #include "base/strbuf.h"
 
 static int elem_caus(const bg_ceng *E, int e) {

@@ -4,7 +4,7 @@
  * internal bonds by bond order. */
 #include <stdlib.h>
 
-#include "causality/causality.h"
+#include "causality/causality_int.h"
 #include "base/strbuf.h"
 
 static const char *end_name(const bg_ceng *E, int b) {

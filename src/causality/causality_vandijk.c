@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "causality/causality.h"
-#include "model/expr.h"
+#include "causality/causality_int.h"
+#include "model/model.h"
 #include "base/strbuf.h"
 
 typedef struct vd {

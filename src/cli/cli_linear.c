@@ -8,7 +8,7 @@
 
 #include "base/fileio.h"
 #include "cli/cli_run.h"
-#include "json/json_linear.h"
+#include "json/json.h"
 #include "cli/cli_render.h"
 
 static int has_format(const bg_cli_opts *o, const char *f) {

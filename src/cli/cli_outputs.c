@@ -7,11 +7,9 @@
 #include <sys/stat.h>
 
 #include "cli/cli_run.h"
-#include "equations/eqprint.h"
+#include "equations/equations.h"
 #include "base/fileio.h"
 #include "json/json.h"
-#include "json/json_sim.h"
-#include "json/json_linear.h"
 #include "cli/cli_render.h"
 #include "base/strbuf.h"
 

@@ -5,15 +5,13 @@
 #define BG_CLI_RUN_H
 #include <stddef.h>
 
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "cli/cli_opts.h"
 #include "base/diag.h"
 #include "base/strbuf.h"
-#include "equations/eqsys.h"
-#include "equations/index.h"
-#include "equations/indexred.h"
+#include "equations/equations.h"
 #include "model/model.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "diagram/render.h"
 #include "simulate/simulate.h"
 #include "linear/linear.h"

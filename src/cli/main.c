@@ -9,11 +9,10 @@
 
 #include "causality/causality.h"
 #include "cli/cli_run.h"
-#include "equations/eqsym.h"
+#include "equations/equations.h"
 #include "base/fileio.h"
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "base/strbuf.h"
-#include "analysis/summary.h"
 
 #ifndef BG_VERSION
 #define BG_VERSION "0.0.0"

@@ -9,7 +9,7 @@
 #include "equations/eqprint.h"
 #include "equations/eqsym.h"
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 enum { ST_TEXT, ST_LATEX };
 

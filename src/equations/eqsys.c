@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
-#include "analysis/paths.h"
+#include "model/model.h"
+#include "analysis/analysis.h"
 
 /* ------------------------------------------------------------ equation trees */
 int bg_eqs_node(bg_eqsys *s, int kind, int a, int b, double c) {

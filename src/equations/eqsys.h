@@ -13,7 +13,7 @@
  * thread-safe, no allocation. */
 #ifndef BG_EQSYS_H
 #define BG_EQSYS_H
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "base/diag.h"
 #include "model/model.h"
 

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 int bg_eqsys_rhs(bg_eqsys *s, double t, const double *y, double *ydot) {
   if (bg_eqs_eval(s, t, y, NULL, 0)) return -1;

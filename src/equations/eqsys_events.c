@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 /* ------------------------------------------------------------ which ops */
 /* Number of root functions of instruction I (0: not piecewise), and in

@@ -8,7 +8,7 @@
 
 #include "base/scc.h"
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 /* Signals read by a model expression (recursion bounded by the parser's
  * nesting limit). */

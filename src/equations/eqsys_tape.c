@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "equations/eqsys_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 /* ------------------------------------------------------------ slots and code */
 static int new_slot(bg_eqsys *s, int cst, double val) {

@@ -7,7 +7,7 @@
 #define BG_INDEX_H
 #include "equations/eqsys.h"
 #include "model/model.h"
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "base/strbuf.h"
 
 #define BG_INDEX_SINGULAR (-1)  /* singular pencil: no (unique) solution */

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "equations/indexred_int.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 static int pow_slot(bg_eqsys *r, int a, double w, int eq) {
   if (w == 1) return a;

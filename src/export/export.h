@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 #include "base/strbuf.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 
 /* The default symbol prefix: the model name made a C identifier ("rlc",
  * "my_model"); buf of size n. */

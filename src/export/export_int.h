@@ -3,9 +3,9 @@
 #ifndef BG_EXPORT_INT_H
 #define BG_EXPORT_INT_H
 #include "base/strbuf.h"
-#include "equations/eqsys_int.h"
+#include "equations/equations.h"
 #include "export/export.h"
-#include "model/expr.h"
+#include "model/model.h"
 
 /* How a language writes the tape's operations. Templates use %0 %1 %2 for
  * the argument values and %t for a table number (0-based). */

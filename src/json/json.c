@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "causality/causality.h"
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 
 /* ---------------------------------------------------------------- small pieces */
 static void key(bg_strbuf *o, const char *k) {

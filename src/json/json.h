@@ -1,9 +1,10 @@
 /* The analysis JSON of docs/json.md (format "bgdraw-analysis", version 1):
  * every required key in the schema's order, 2-space indentation, one list
- * item per line, deterministic (same model and analysis, same bytes). */
+ * item per line, deterministic (same model and analysis, same bytes). The
+ * json stage's front door: other stages include this header only. */
 #ifndef BG_JSON_H
 #define BG_JSON_H
-#include "causality/analysis.h"
+#include "causality/causality.h"
 #include "model/model.h"
 #include "base/strbuf.h"
 
@@ -14,4 +15,7 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
  * whether field f's ports have more than one causality. */
 void bg_json_put_fields(bg_strbuf *o, const bg_model *m, const bg_analysis *a);
 int bg_json_field_mixed(const bg_model *m, const bg_analysis *a, int f);
+/* The simulation's and the linear analysis' JSON objects. */
+#include "json/json_linear.h"
+#include "json/json_sim.h"
 #endif

@@ -1,5 +1,5 @@
 /* The .bg lexer: bytes -> tokens with 1-based line and byte-column positions. */
-#include "lang/lex.h"
+#include "lang/lex_int.h"
 
 #include <ctype.h>
 #include <stdlib.h>

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lang/lex.h"
+#include "lang/lex_int.h"
 #include "lang/parse.h"
 #include "base/strbuf.h"
 

@@ -9,8 +9,8 @@
 #define BG_LINEAR_H
 #include "base/arena.h"
 #include "base/strbuf.h"
-#include "causality/analysis.h"
-#include "equations/eqsys.h"
+#include "causality/causality.h"
+#include "equations/equations.h"
 #include "model/model.h"
 
 /* Above these sizes the dense parts are skipped (documented in docs/linear.md). */

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "equations/eqsym.h"
+#include "equations/equations.h"
 #include "linear/linear_int.h"
 
 /* Why these caps: the expansion costs (n + 1) 2^(n + 1) entry products per

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "model/expr.h"
-#include "model/model_build.h"
+#include "model/model_int.h"
 
 /* ---------------------------------------------------------------- arrays */
 static void *reserve(void *p, int n, int *cap, size_t size) {

@@ -4,7 +4,7 @@
 #ifndef BG_MODEL_H
 #define BG_MODEL_H
 #include "base/arena.h"
-#include "lang/ast.h"
+#include "lang/lang.h"
 #include "base/diag.h"
 #include "base/strbuf.h"
 
@@ -285,4 +285,7 @@ int bg_method_parse(const char *s); /* -1 if unknown */
 /* One-line human summary for --check, e.g. "rlc: 4 elements (Se 1, R 1, I 1, C 1),
  * 1 junction, 4 bonds; 2 stores, 1 source" (no newline). */
 void bg_model_summary(const bg_model *m, bg_strbuf *out);
+/* The model's expressions (evaluator, printer, bytecode) are part of the
+ * stage's front door. */
+#include "model/expr.h"
 #endif

@@ -3,8 +3,8 @@
  * where each element and bond came from is then recorded in the model. */
 #include <string.h>
 
-#include "lang/flatten.h"
-#include "model/model_build.h"
+#include "lang/lang.h"
+#include "model/model_int.h"
 
 static void *arena_copy(bg_model *m, const void *src, size_t n) {
   void *p = bg_arena_alloc(&m->arena, n ? n : 1);

@@ -6,8 +6,8 @@
  * of the linear analysis. */
 #include <string.h>
 
-#include "lang/parse.h"
-#include "model/model_build.h"
+#include "lang/lang.h"
+#include "model/model_int.h"
 
 int bg_build_is_detector(const bg_ast_stmt *s) { return bg_ast_is_detector(s); }
 

@@ -10,8 +10,8 @@
 #include <string.h>
 
 #include "model/expr.h"
-#include "model/model_build.h"
-#include "lang/parse.h"
+#include "model/model_int.h"
+#include "lang/lang.h"
 
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 

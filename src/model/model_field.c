@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model/model_build.h"
+#include "model/model_int.h"
 
 /* ---------------------------------------------------------------- declaring */
 void bg_build_declare_field(bg_build *b, const bg_ast_stmt *s) {

@@ -12,7 +12,7 @@
  * (the parser bounds it). */
 #include <math.h>
 
-#include "model/model_build.h"
+#include "model/model_int.h"
 
 enum { ZERO = -1, TABLE = -2 };
 

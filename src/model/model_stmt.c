@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "model/expr.h"
-#include "model/model_build.h"
+#include "model/model_int.h"
 
 /* ---------------------------------------------------------------- options */
 /* Reports unknown and repeated option keys; `valid` is "a, b, c". */

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "model/expr.h"
+#include "model/model.h"
 #include "simulate/simulate_int.h"
 
 #define SIM_DEFAULT_ATOL 1e-9

@@ -7,8 +7,8 @@
  * Only src/simulate*.c include SUNDIALS headers. */
 #ifndef BG_SIMULATE_H
 #define BG_SIMULATE_H
-#include "causality/analysis.h"
-#include "equations/eqsys.h"
+#include "causality/causality.h"
+#include "equations/equations.h"
 #include "model/model.h"
 #include "base/log.h"
 #include "base/strbuf.h"

@@ -23,7 +23,7 @@
 
 #include "base/arena.h"
 #include "simulate/simulate_int.h"
-#include "simulate/simulate_words.h"
+#include "simulate/simulate_words_int.h"
 
 typedef struct simrun {
   bg_eqsys *s;

@@ -5,7 +5,7 @@
 #include <cvode/cvode.h>
 #include <ida/ida.h>
 
-#include "simulate/simulate_words.h"
+#include "simulate/simulate_words_int.h"
 
 typedef struct flagword {
   int flag;

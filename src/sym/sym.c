@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model/expr.h"
+#include "model/model.h"
 #include "sym/sym.h"
 
 /* ------------------------------------------------------------ the store */

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model/expr.h"
+#include "model/model.h"
 #include "sym/sym.h"
 
 enum { P_CMP, P_ADD, P_NEG, P_MUL, P_POW, P_ATOM };

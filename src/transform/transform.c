@@ -4,9 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "causality/causality.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "transform/tx_int.h"
 
 static const struct {

@@ -15,8 +15,8 @@
 #include <stddef.h>
 
 #include "base/strbuf.h"
-#include "causality/analysis.h"
-#include "lang/ast.h"
+#include "causality/causality.h"
+#include "lang/lang.h"
 #include "model/model.h"
 
 /* The factor by which the parasitic stores' estimated time scales are

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "causality/causality.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "transform/tx_int.h"
 
 enum { MAX_TARGET = 32 };

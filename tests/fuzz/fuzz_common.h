@@ -10,14 +10,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/paths.h"
-#include "analysis/summary.h"
+#include "analysis/analysis.h"
 #include "base/diag.h"
 #include "base/strbuf.h"
 #include "causality/causality.h"
-#include "equations/eqsym.h"
-#include "equations/eqsys.h"
-#include "lang/parse.h"
+#include "equations/equations.h"
+#include "lang/lang.h"
 #include "model/model.h"
 
 enum { FUZZ_MAX_LEN = 8192 };

@@ -2,10 +2,7 @@
  * numeric index of small systems, the analysis JSON, the model exports (C,
  * Python, Octave, Modelica, the FMU's description and glue) and the three
  * model transformations with their recompiled results (fuzz_common.h). */
-#include "equations/eqprint.h"
-#include "equations/eqsym.h"
-#include "equations/eqsys.h"
-#include "equations/index.h"
+#include "equations/equations.h"
 #include "export/export.h"
 #include "fuzz_common.h"
 #include "json/json.h"

@@ -1,10 +1,8 @@
 /* Fuzz target: a short simulation (at most 50 output rows, 500 steps per
  * interval), its CSV and its JSON (fuzz_common.h). */
-#include "equations/eqsym.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "fuzz_common.h"
 #include "json/json.h"
-#include "json/json_sim.h"
 #include "simulate/simulate.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

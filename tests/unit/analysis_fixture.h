@@ -8,10 +8,11 @@
  * here so the test does not depend on where bg_analysis_init lives. */
 #include <stdlib.h>
 #include "causality/causality.h"
-#include "model/expr.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
-#include "analysis/sfg.h"
+#include "model/model.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
+#include "analysis/paths_int.h" /* white-box: the tests call the stage's parts */
+#include "analysis/sfg_int.h"
 
 typedef struct fx {
   bg_model *m;

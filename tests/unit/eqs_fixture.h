@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "causality/causality.h"
-#include "equations/eqsys.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "equations/equations.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 
 typedef struct efx {
   bg_model *m;

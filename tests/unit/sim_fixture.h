@@ -8,10 +8,10 @@
 #include <string.h>
 
 #include "causality/causality.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "base/fileio.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 #include "simulate/simulate.h"
 
 typedef struct fx {

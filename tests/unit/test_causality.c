@@ -5,7 +5,7 @@
 
 #include "causality/causality.h"
 #include "harness.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "base/strbuf.h"
 
 /* ---------------------------------------------------------------- loading */

@@ -4,12 +4,11 @@
  * expression, it is an output of the linear analysis, and inside a submodel
  * it is qualified like the other names. */
 #include "causality/causality.h"
-#include "equations/eqprint.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "harness.h"
-#include "lang/parse.h"
-#include "model/expr.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "model/model.h"
+#include "analysis/analysis.h"
 
 typedef struct run {
   bg_model *m;

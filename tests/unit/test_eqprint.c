@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/eqprint.h"
+#include "equations/equations.h"
 
 static void test_text(void) {
   efx f;

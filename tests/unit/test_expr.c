@@ -3,7 +3,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "model/expr.h"
+#include "model/model.h"
 #include "harness.h"
 
 #define PI 3.14159265358979323846

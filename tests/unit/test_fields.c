@@ -7,11 +7,10 @@
 #include "harness.h"
 #include "sim_fixture.h"
 #include "base/strbuf.h"
-#include "equations/eqprint.h"
-#include "model/expr.h"
+#include "equations/equations.h"
+#include "model/model.h"
 #include "sym/sym.h"
 #include "json/json.h"
-#include "equations/index.h"
 
 /* Loads tests/data/fields/NAME.bg, applies nedit (from, to) edits, runs. */
 static int load_edits(fx *f, const char *name, const char *const (*edit)[2], int nedit) {

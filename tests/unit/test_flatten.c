@@ -3,12 +3,11 @@
  * nesting, ports passed through, bond variables inside submodels, and the
  * instance chain of diagnostics. The reference is a hand-flattened model. */
 #include "causality/causality.h"
-#include "equations/eqprint.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "harness.h"
-#include "lang/parse.h"
-#include "model/expr.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "model/model.h"
+#include "analysis/analysis.h"
 #include "diagram/render.h"
 #include "scene/scene.h"
 

@@ -3,7 +3,7 @@
 #include <complex.h>
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/index.h"
+#include "equations/equations.h"
 
 static int index_of(const char *name, const char *text, int method, const char *set, double val,
                     int print) {

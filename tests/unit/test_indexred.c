@@ -10,7 +10,7 @@
  * reason. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/indexred.h"
+#include "equations/equations.h"
 #include "simulate/simulate.h"
 
 /* The reduction of f, its result published in the analysis as the CLI does. */

@@ -6,7 +6,7 @@
 #include "causality/causality.h"
 #include "harness.h"
 #include "json/json.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 
 static bg_model *load_example(const char *name) {
   char path[512];

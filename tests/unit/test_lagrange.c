@@ -8,7 +8,7 @@
  * tests/lagrange_inserted.sh. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/index.h"
+#include "equations/equations.h"
 
 /* a == b to 1e-12 relative to the sum of magnitudes `scale`. */
 #define CLOSE(a, b, scale, what)                                                           \

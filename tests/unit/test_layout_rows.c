@@ -6,12 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "causality/causality.h"
 #include "diagram/layout.h"
 #include "diagram/render.h"
 #include "harness.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 
 enum { N = 400 };
 

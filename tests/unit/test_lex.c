@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
-#include "lang/lex.h"
+#include "lang/lex_int.h"
 
 typedef struct lexed {
   bg_arena arena;

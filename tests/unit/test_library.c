@@ -2,10 +2,10 @@
  * its state derivatives evaluated at a chosen state against the equations
  * derived by hand from the component's header comment. */
 #include "causality/causality.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "harness.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 
 #define LIB BG_SOURCE_DIR "/lib/"
 

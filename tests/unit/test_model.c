@@ -2,10 +2,9 @@
  * overrides and dependency order, signals, modulation, linearity, queries. */
 #include <stdlib.h>
 
-#include "model/expr.h"
-#include "harness.h"
 #include "model/model.h"
-#include "lang/parse.h"
+#include "harness.h"
+#include "lang/lang.h"
 
 /* Compiles a model from text (path only names the file). */
 static bg_model *compile_src(const char *path, const char *src, const bg_param_override *ov,

@@ -2,10 +2,9 @@
  * through bg_model_compile + bg_xeval), functions, tables, error recovery. */
 #include <stdlib.h>
 
-#include "model/expr.h"
-#include "harness.h"
 #include "model/model.h"
-#include "lang/parse.h"
+#include "harness.h"
+#include "lang/lang.h"
 
 #define PI 3.14159265358979323846
 

@@ -8,10 +8,10 @@
 #include <stdlib.h>
 
 #include "causality/causality.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "base/fileio.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 #include "plot/plot.h"
 #include "plot/plot_int.h"
 #include "diagram/render.h"

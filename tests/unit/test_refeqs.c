@@ -14,8 +14,7 @@
  * other way (bond_loop f3, loop_class1 f6), the test says so: f_ref = -f. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/eqprint.h"
-#include "equations/eqsym.h"
+#include "equations/equations.h"
 
 #define NB 32
 typedef struct pt {

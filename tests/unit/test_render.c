@@ -9,8 +9,8 @@
 #include "causality/causality.h"
 #include "examples_list.h"
 #include "harness.h"
-#include "analysis/paths.h"
-#include "lang/parse.h"
+#include "analysis/analysis.h"
+#include "lang/lang.h"
 #include "diagram/render.h"
 #include "scene/style.h"
 

@@ -10,7 +10,7 @@
 #include "harness.h" /* first: <math.h> for eqs_fixture.h */
 #include "eqs_fixture.h"
 #include "base/fileio.h"
-#include "equations/index.h"
+#include "equations/equations.h"
 #include "report/report_int.h"
 
 static void test_words(void) {

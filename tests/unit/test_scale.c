@@ -10,7 +10,7 @@
 
 #include "diagram/diagram_int.h"
 #include "harness.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "scene/surface.h"
 
 /* The model of the text in sb, compiled (NULL on errors); dg is initialised

@@ -9,10 +9,10 @@
 #include <stdlib.h>
 
 #include "causality/causality.h"
-#include "equations/eqsys.h"
+#include "equations/equations.h"
 #include "base/fileio.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 
 static long nalloc;
 static int counting;

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "causality/causality.h"
 #include "harness.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 #include "simulate/simulate.h"
 
 static char *chain_text(int n) {

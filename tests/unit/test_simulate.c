@@ -13,11 +13,11 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "causality/causality.h"
-#include "equations/eqsys.h"
-#include "model/expr.h"
+#include "equations/equations.h"
+#include "model/model.h"
 #include "base/fileio.h"
-#include "lang/parse.h"
-#include "analysis/paths.h"
+#include "lang/lang.h"
+#include "analysis/analysis.h"
 #include "simulate/simulate.h"
 
 #include "sim_fixture.h"

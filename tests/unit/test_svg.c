@@ -9,12 +9,12 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "base/fileio.h"
 #include "causality/causality.h"
 #include "diagram/render.h"
 #include "harness.h"
-#include "lang/parse.h"
+#include "lang/lang.h"
 
 typedef struct loaded {
   char *src;

@@ -9,9 +9,8 @@
  * - which examples reduce to an ODE, and the printed reduced equations. */
 #include "harness.h"
 #include "eqs_fixture.h"
-#include "equations/eqprint.h"
-#include "equations/eqsym.h"
-#include "model/expr.h"
+#include "equations/equations.h"
+#include "model/model.h"
 #include "equations/eqsys_int.h" /* row kinds */
 #include "sym/sym.h"
 

@@ -2,10 +2,10 @@
  * spanning continuation lines, comments kept, CRLF and a byte-order mark;
  * and the merged store through the library call, its parameter evaluated. */
 #include "harness.h"
-#include "analysis/paths.h"
+#include "analysis/analysis.h"
 #include "causality/causality.h"
-#include "lang/parse.h"
-#include "model/expr.h"
+#include "lang/lang.h"
+#include "model/model.h"
 #include "transform/tx_int.h"
 
 static void test_doc_edits(void) {

@@ -3,7 +3,7 @@
  * the model's arena at the end. */
 #ifndef BG_MODEL_BUILD_H
 #define BG_MODEL_BUILD_H
-#include "lang/ast.h"
+#include "lang/lang.h"
 #include "model/model.h"
 
 /* What a name in the shared namespace is. */

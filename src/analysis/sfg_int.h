@@ -3,10 +3,11 @@
  * one node per user state (2*nbond + state id). Every constitutive relation
  * and junction equation, read with the causal strokes, gives edges from its
  * inputs to its outputs, labelled with the influence coefficient: a sign, a
- * number (linearised at the initial point) and symbolic factors. */
-#ifndef BG_SFG_H
-#define BG_SFG_H
-#include "causality/analysis.h"
+ * number (linearised at the initial point) and symbolic factors. Internal to
+ * the analysis stage (form.c, summary.c, paths.c). */
+#ifndef BG_SFG_INT_H
+#define BG_SFG_INT_H
+#include "causality/causality.h"
 #include "base/arena.h"
 #include "model/model.h"
 

@@ -1,7 +1,8 @@
 /* Lexer for .bg files: the whole source becomes one token array, with a
  * BG_TK_EOL token at the end of every logical line (a line ending in `\`
  * continues on the next). Lexical errors go to the diagnostics and leave a
- * BG_TK_ERROR token, so the parser can skip that statement silently. */
+ * BG_TK_ERROR token, so the parser can skip that statement silently. Internal
+ * to the lang stage (lex.c, parse.c): other stages include lang/lang.h. */
 #ifndef BG_LEX_H
 #define BG_LEX_H
 #include <stddef.h>
