@@ -63,6 +63,17 @@ static void put_events(bg_strbuf *o, const bg_simresult *r) {
   bg_sb_puts(o, r->nevents ? "\n    ]}" : "]}");
 }
 
+/* The accuracy control of a switching model at default tolerances: only
+ * when it ran (docs/json.md, docs/simulation.md "Accuracy through events"). */
+static void put_control(bg_strbuf *o, const bg_simresult *r) {
+  if (r->control_runs <= 0) return;
+  bg_sb_printf(o, ",\n    \"accuracy_control\": {\"runs\": %d, \"deviation\": ", r->control_runs);
+  bg_sb_json_num(o, r->control_dev);
+  bg_sb_printf(o, ", \"target\": ");
+  bg_sb_json_num(o, BG_SIM_SWITCH_TARGET);
+  bg_sb_printf(o, ", \"reached\": %s}", r->control_short ? "false" : "true");
+}
+
 void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
   bg_sb_puts(o, "  \"simulation\": {\n    \"status\": ");
   bg_sb_json_str(o, status_name(status));
@@ -114,6 +125,7 @@ void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int stat
   bg_sb_puts(o, "}");
   put_verify(o, r);
   put_events(o, r);
+  put_control(o, r);
   bg_sb_puts(o, "\n  }");
 }
 

@@ -158,6 +158,11 @@ double bg_sim_default_rtol(int n) {
   return r < 1e-10 ? 1e-10 : r;
 }
 
+double bg_sim_default_rtol_switching(int n) {
+  double r = bg_sim_default_rtol(n) / BG_SIM_SWITCH_TIGHTER;
+  return r < 1e-10 ? 1e-10 : r;
+}
+
 /* atol is meant for efforts and flows: a linear store's state q = C e (p = I f)
  * gets atol times its capacitance (inertance), so that 1e-9 on a 1 uF
  * capacitor's charge does not mean 1e-3 V. Other unknowns get atol as is. */
@@ -314,7 +319,14 @@ static double *make_breakpoints(bg_eqsys *s, const bg_simspec *sp, int *nbp) {
 }
 
 /* ------------------------------------------------------------------ entry */
-static void result_alloc(bg_eqsys *s, int nrows, bg_simresult *r) {
+/* States are kept at every row (for comparing runs state by state) when
+ * asked or when they take at most this many values (16 MB) */
+#define SIM_KEEP_STATES 2000000.0
+
+static void result_alloc(bg_eqsys *s, int nrows, int keep_states, bg_simresult *r) {
+  int n = bg_eqsys_n(s);
+  if (n > 0 && (keep_states || (double)n * nrows <= SIM_KEEP_STATES))
+    r->states = bg_xmalloc((size_t)nrows * (size_t)n * sizeof(double));
   r->nout = bg_eqsys_noutput(s);
   r->names = bg_xmalloc((size_t)(r->nout > 0 ? r->nout : 1) * sizeof(char *));
   for (int k = 0; k < r->nout; k++) r->names[k] = bg_eqsys_output_name(s, k);
@@ -355,7 +367,7 @@ static int simulate_algebraic(const bg_model *m, bg_eqsys *s, bg_simresult *r) {
   p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
   double *times = make_times(&m->sim, &p.nrows);
   p.times = times;
-  result_alloc(s, p.nrows, r);
+  result_alloc(s, p.nrows, 0, r);
   r->solver_used = "none";
   r->solver_reason = strdup("no states and no algebraic unknowns: the outputs are functions of "
                             "t alone, evaluated at each output time");
@@ -390,8 +402,8 @@ static double step_limit(bg_eqsys *s, const bg_model *m, const bg_sim_opts *o) {
   return h;
 }
 
-int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
-                bg_simresult *r) {
+static int simulate_once(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                         bg_simresult *r) {
   memset(r, 0, sizeof *r);
   char *why = bg_simulate_refusal_reduced(m, a, s && bg_eqsys_is_reduced(s));
   if (why) return refuse(r, why);
@@ -423,7 +435,8 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
             : p.sparse    ? "sparse Jacobian, KLU"
                           : "dense Jacobian", r->solver_reason);
   p.t0 = m->sim.t0, p.t_end = m->sim.t_end;
-  p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : bg_sim_default_rtol(n);
+  double rtol_default = bg_eqsys_nroots(s) ? bg_sim_default_rtol_switching(n) : bg_sim_default_rtol(n);
+  p.rtol = o && o->rtol > 0 ? o->rtol : m->sim.rtol > 0 ? m->sim.rtol : rtol_default;
   double atol = o && o->atol > 0 ? o->atol : m->sim.atol > 0 ? m->sim.atol : SIM_DEFAULT_ATOL;
   p.max_step = step_limit(s, m, o);
   r->max_step = p.max_step;
@@ -438,7 +451,7 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   double *atolv = make_atol(&bn, s, atol), *times = make_times(&m->sim, &p.nrows);
   double *bp = make_breakpoints(s, &m->sim, &p.nbp);
   p.atol = atolv, p.times = times, p.bp = bp;
-  result_alloc(s, p.nrows, r);
+  result_alloc(s, p.nrows, o && o->keep_states, r);
   /* wall and CPU time (-v; bench/sim_bench.sh compares the CPU time: on
    * a shared machine the wall clock measures the other programs too) */
   struct timespec c0, c1, u0, u1;
@@ -470,6 +483,76 @@ int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_s
   return rc;
 }
 
+/* ------------------------------------------------------------------ accuracy control
+ * A switching model amplifies what the integrator leaves: each event's time
+ * moves with the state before it, and what follows moves with the event
+ * (docs/simulation.md, "Accuracy through events": a backlash whose error is
+ * 300 times rtol, another 2e5 times). No single default tolerance holds a
+ * stated accuracy on all of them, so at the default tolerances a run with
+ * events is compared with one at tolerances BG_VERIFY_FACTOR times tighter,
+ * and the tighter is kept (and compared again) until two runs agree to
+ * BG_SIM_SWITCH_TARGET of every output's and state's range; never tighter
+ * than SIM_CONTROL_FLOOR. */
+#define SIM_CONTROL_FLOOR 1e-13
+
+static int control_wanted(const bg_model *m, bg_eqsys *s, const bg_sim_opts *o) {
+  return s && bg_eqsys_nroots(s) > 0 && !(m->sim.rtol > 0) &&
+         !(o && (o->rtol > 0 || o->no_control || o->no_events));
+}
+
+static void control_say(const bg_sim_opts *o, const bg_simresult *a, const bg_simcmp *c, double rtol_b) {
+  if (!o || !bg_log_on(o->log, BG_LOG_PROGRESS)) return;
+  bg_logf(o->log, BG_LOG_PROGRESS, "simulate: accuracy control (state events at default tolerances): "
+          "rtol %g deviates %.2g of the range (%s at t = %.6g) from rtol %g; %d and %d events, times %.2g s apart",
+          a->rtol, c->worst, c->worst_name ? c->worst_name : "?", c->worst_t, rtol_b, c->events_a, c->events_b,
+          c->event_dt);
+}
+
+/* Runs tighter until two runs agree; r holds the run kept. */
+static void control(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                    bg_simresult *r) {
+  bg_sim_opts tight = o ? *o : (bg_sim_opts){0};
+  tight.log = NULL, tight.keep_states = 1, tight.no_control = 1;
+  int runs = 1;
+  for (;;) {
+    tight.rtol = r->rtol / BG_VERIFY_FACTOR, tight.atol = r->atol / BG_VERIFY_FACTOR;
+    if (tight.rtol < SIM_CONTROL_FLOOR * (1 - 1e-9)) { r->control_short = 1; break; }
+    bg_simresult t;
+    int rc = simulate_once(m, a, s, &tight, &t);
+    runs++;
+    if (rc) { /* the tighter run failed: the one we have is the best there is */
+      bg_simresult_free(&t);
+      r->control_short = 1;
+      break;
+    }
+    bg_simcmp c;
+    bg_sim_compare(r, &t, s, NULL, &c);
+    control_say(o, r, &c, t.rtol);
+    r->control_dev = c.worst;
+    if (c.worst <= BG_SIM_SWITCH_TARGET && c.event_dt >= 0) { bg_simresult_free(&t); break; }
+    t.control_dev = c.worst; /* what is known of it until it is compared itself */
+    bg_simresult_free(r);
+    *r = t;
+  }
+  r->control_runs = runs;
+  if (r->control_short && o)
+    bg_logf(o->log, BG_LOG_WARNING, "state events: the accuracy control kept its tightest run (rtol %g), "
+            "which deviates by %.2g of the range from the run before it, more than the %g the default "
+            "tolerances aim at; no tighter run was made (rtol is not made smaller than %g or the run failed), "
+            "so its own error is not measured: check with --verify or a smaller rtol",
+            r->rtol, r->control_dev, BG_SIM_SWITCH_TARGET, SIM_CONTROL_FLOOR);
+}
+
+int bg_simulate(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
+                bg_simresult *r) {
+  int want = control_wanted(m, s, o);
+  bg_sim_opts first = o ? *o : (bg_sim_opts){0};
+  first.keep_states |= want;
+  int rc = simulate_once(m, a, s, &first, r);
+  if (rc == 0 && want && r->n > 0 && r->nevents > 0) control(m, a, s, o, r);
+  return rc;
+}
+
 void bg_simresult_free(bg_simresult *r) {
   free(r->names);
   free(r->t);
@@ -482,6 +565,7 @@ void bg_simresult_free(bg_simresult *r) {
   free(r->verify_dev);
   free(r->verify_message);
   free(r->condition_text), free(r->event_t), free(r->event_cond), free(r->event_dir);
+  free(r->states);
   memset(r, 0, sizeof *r);
 }
 

@@ -29,6 +29,12 @@ typedef struct bg_sim_opts {
   /* 1: integrate straight over the switching conditions, as before state
    * events existed (tests show what root finding changes) */
   int no_events;
+  /* 1: keep every state at every output row (bg_simresult.states), for
+   * comparing two runs state by state (--verify, the accuracy control) */
+  int keep_states;
+  /* 1: no accuracy control of a switching model (one run at the default
+   * tolerances; docs/simulation.md, "Accuracy through events") */
+  int no_control;
 } bg_sim_opts;
 
 typedef struct bg_simresult {
@@ -65,6 +71,24 @@ typedef struct bg_simresult {
   int verify_worst_col;     /* output of the worst deviation, -1 none */
   double *verify_dev;       /* nout; NULL unless verified == 1 */
   char *verify_message;     /* why the comparison could not be made; nullable */
+  /* what verify_worst is the deviation of: an output or a state (the name,
+   * borrowed from the eqsys), at which time */
+  const char *verify_worst_name;
+  double verify_worst_t;
+  /* states compared (0 when n == 0), the largest deviation among them; the
+   * events: the tighter run's count, the largest difference of their times
+   * in seconds (-1 when the counts differ: then verify_event_t is the first
+   * time where the two lists part) */
+  double verify_state_worst, verify_event_dt, verify_event_t;
+  int verify_events_other;
+  double *states;      /* nrows x n, row-major, when opts.keep_states; else NULL */
+  /* The accuracy control of a switching model at default tolerances
+   * (docs/simulation.md, "Accuracy through events"): runs made (0: none),
+   * the deviation of the kept run from the next tighter one (relative to
+   * the range, outputs and states), and 1 when even the tightest run kept
+   * did not reach BG_SIM_SWITCH_TARGET against its tighter one */
+  int control_runs, control_short;
+  double control_dev;
   int ic_retries;      /* IDA: initial guesses of the algebraic unknowns tried
                           after the model's own failed (0: the model's worked) */
   /* State events (docs/simulation.md): the switching conditions of the
@@ -94,6 +118,14 @@ void bg_simresult_free(bg_simresult *r);
  * tighter run's range of that output (max - min; max |value| when constant,
  * 1 when all zero). r must be a complete run (status 0). */
 #define BG_VERIFY_FACTOR 100.0
+/* The error bound --verify states: this many times the deviation (the tighter
+ * run has an error of its own, about 1/BG_VERIFY_FACTOR of the first's when
+ * the error is proportional to the tolerance, but not always exactly so:
+ * docs/simulation.md, "Verification"). */
+#define BG_VERIFY_BOUND 2.0
+/* The accuracy the default tolerances hold on a switching model: of each
+ * output's and state's range (docs/simulation.md, "Accuracy through events") */
+#define BG_SIM_SWITCH_TARGET 1e-6
 #define BG_VERIFY_LOOSE 1e-3 /* a worse deviation flags the tolerances as too loose */
 void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                    bg_simresult *r);
@@ -108,6 +140,14 @@ const char *bg_simulate_sundials_version(void);
 /* The relative tolerance used when neither the options nor the model give
  * one, for n unknowns: 1e-7 up to 100, 1e-7 sqrt(100 / n) above. */
 double bg_sim_default_rtol(int n);
+/* The same for a model with switching conditions (state events):
+ * BG_SIM_SWITCH_TIGHTER times smaller, never below 1e-10. A switching model
+ * amplifies what the integrator leaves (the time of each contact moves with
+ * the state before it): measured on a backlash, the error is about 300
+ * times rtol however many events (docs/simulation.md, "Accuracy through
+ * events"). */
+#define BG_SIM_SWITCH_TIGHTER 100.0
+double bg_sim_default_rtol_switching(int n);
 
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a

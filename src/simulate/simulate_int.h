@@ -31,6 +31,23 @@ typedef struct bg_simplan {
   double progress_every; /* -v: seconds of wall time between progress lines */
 } bg_simplan;
 
+/* Two runs of one model compared (simulate_compare.c): the largest deviation
+ * of any output or state (when both runs kept them) relative to its range in
+ * b, what it is (a name borrowed from r or the eqsys) and when; the output
+ * column when it is an output (else -1); the event counts and the largest
+ * difference of their times (-1 when the counts differ; event_part_t is then
+ * the first time where the two lists part). */
+typedef struct bg_simcmp {
+  double worst, worst_t;
+  const char *worst_name;
+  int worst_col, states_compared;
+  double state_worst;
+  int events_a, events_b;
+  double event_dt, event_part_t;
+} bg_simcmp;
+void bg_sim_compare(const bg_simresult *a, const bg_simresult *b, const bg_eqsys *s, double *out_dev,
+                    bg_simcmp *c);
+
 /* Integrates; fills r->t, r->values (preallocated for p->nrows rows), nrows,
  * the statistics, t_reached, partial and message, after clearing what an
  * earlier call into r wrote. Returns 0 or 2 (failed). */

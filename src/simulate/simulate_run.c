@@ -495,6 +495,8 @@ static int record(simrun *R, bg_simresult *r, double t) {
     keep_error(R);
     return -1;
   }
+  if (r->states) memcpy(r->states + (size_t)r->nrows * (size_t)R->n, N_VGetArrayPointer(R->y),
+                        (size_t)R->n * sizeof(double));
   r->t[r->nrows++] = t;
   r->t_reached = t;
   R->nfunc_err = 0;
