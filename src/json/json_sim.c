@@ -36,6 +36,25 @@ static void put_verify(bg_strbuf *o, const bg_simresult *r) {
   bg_sb_puts(o, "], \"worst\": ");
   if (r->verified > 0) bg_sb_json_num(o, r->verify_worst);
   else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ", \"bound\": ");
+  if (r->verified > 0) bg_sb_json_num(o, BG_VERIFY_BOUND * r->verify_worst);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ", \"worst_of\": ");
+  if (r->verified > 0 && r->verify_worst_name) bg_sb_json_str(o, r->verify_worst_name);
+  else bg_sb_puts(o, "null");
+  bg_sb_puts(o, ", \"states\": ");
+  if (r->verified > 0 && r->verify_state_worst >= 0) bg_sb_json_num(o, r->verify_state_worst);
+  else bg_sb_puts(o, "null");
+  if (r->verified > 0 && r->nconditions > 0) {
+    bg_sb_printf(o, ", \"events\": {\"count\": %d, \"tighter_count\": %d, \"time_deviation\": ", r->nevents,
+                 r->verify_events_other);
+    if (r->verify_event_dt >= 0) bg_sb_json_num(o, r->verify_event_dt);
+    else bg_sb_puts(o, "null");
+    bg_sb_puts(o, ", \"part_at\": ");
+    if (r->verify_event_dt < 0) bg_sb_json_num(o, r->verify_event_t);
+    else bg_sb_puts(o, "null");
+    bg_sb_puts(o, "}");
+  }
   bg_sb_printf(o, ", \"too_loose\": %s, \"text\": ", r->verified > 0 && r->verify_worst > BG_VERIFY_LOOSE ? "true" : "false");
   bg_strbuf t = {0};
   bg_sim_verify_text(r, &t);

@@ -580,20 +580,12 @@ int bg_simresult_row_warning(const bg_simresult *r, bg_strbuf *out) {
 }
 
 /* ------------------------------------------------------------------ --verify */
-static double column_range(const bg_simresult *t, int k) {
-  double lo = INFINITY, hi = -INFINITY, big = 0;
-  for (int i = 0; i < t->nrows; i++) {
-    double v = t->values[(size_t)i * t->nout + k];
-    lo = fmin(lo, v), hi = fmax(hi, v), big = fmax(big, fabs(v));
-  }
-  return hi > lo ? hi - lo : big > 0 ? big : 1.0;
-}
-
 void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                    bg_simresult *r) {
   bg_sim_opts tight = o ? *o : (bg_sim_opts){0};
   tight.rtol = r->rtol / BG_VERIFY_FACTOR, tight.atol = r->atol / BG_VERIFY_FACTOR;
   tight.log = NULL;
+  tight.keep_states = r->states != NULL; /* every state compared when this run kept them */
   r->verify_rtol = tight.rtol, r->verify_atol = tight.atol, r->verify_worst_col = -1;
   bg_simresult t;
   int rc = bg_simulate(m, a, s, &tight, &t);
@@ -606,14 +598,13 @@ void bg_sim_verify(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const b
   } else {
     r->verified = 1;
     r->verify_dev = bg_xmalloc((size_t)(r->nout > 0 ? r->nout : 1) * sizeof(double));
-    for (int k = 0; k < r->nout; k++) {
-      double d = 0, range = column_range(&t, k);
-      for (int i = 0; i < r->nrows; i++)
-        d = fmax(d, fabs(r->values[(size_t)i * r->nout + k] - t.values[(size_t)i * t.nout + k]));
-      r->verify_dev[k] = d / range;
-      if (r->verify_worst_col < 0 || r->verify_dev[k] > r->verify_worst)
-        r->verify_worst = r->verify_dev[k], r->verify_worst_col = k;
-    }
+    bg_simcmp c;
+    bg_sim_compare(r, &t, s, r->verify_dev, &c);
+    r->verify_worst = c.worst, r->verify_worst_col = c.worst_col;
+    r->verify_worst_name = c.worst_name, r->verify_worst_t = c.worst_t;
+    r->verify_state_worst = c.states_compared ? c.state_worst : -1;
+    r->verify_events_other = c.events_b;
+    r->verify_event_dt = c.event_dt, r->verify_event_t = c.event_part_t;
   }
   bg_simresult_free(&t);
 }
@@ -631,12 +622,24 @@ int bg_sim_verify_text(const bg_simresult *r, bg_strbuf *out) {
   }
   bg_sb_printf(out, "verification at rtol %g, atol %g: largest deviation %.2g of the range", r->verify_rtol,
                r->verify_atol, r->verify_worst);
-  if (r->verify_worst_col >= 0) bg_sb_printf(out, " (%s)", r->names[r->verify_worst_col]);
-  double w = r->verify_worst;
-  int digits = w > 0 ? (int)floor(-log10(w)) : 15;
+  if (r->verify_worst_name) bg_sb_printf(out, " (%s at t = %.6g)", r->verify_worst_name, r->verify_worst_t);
+  bg_sb_printf(out, " over %d output%s", r->nout, r->nout == 1 ? "" : "s");
+  if (r->verify_state_worst >= 0) bg_sb_printf(out, " and %d state%s", r->n, r->n == 1 ? "" : "s");
+  else bg_sb_puts(out, " (states not kept: too many to compare)");
+  if (r->nconditions > 0 && r->verify_event_dt >= 0)
+    bg_sb_printf(out, ", %d state event%s at times %.2g s apart", r->nevents, r->nevents == 1 ? "" : "s",
+                 r->verify_event_dt);
+  bg_sb_printf(out, "; error bound about %.2g (%g times the deviation)", BG_VERIFY_BOUND * r->verify_worst,
+               BG_VERIFY_BOUND);
+  double w = r->verify_worst, bound = BG_VERIFY_BOUND * w;
+  int digits = bound > 0 ? (int)floor(-log10(bound)) : 15;
   bg_sb_printf(out, ": about %d significant digit%s to trust", digits < 0 ? 0 : digits, digits == 1 ? "" : "s");
   if (w > BG_VERIFY_LOOSE)
     bg_sb_printf(out, "; warning: the tolerances (rtol %g, atol %g) are too loose for this model: "
                       "set a smaller rtol", r->rtol, r->atol);
+  if (r->nconditions > 0 && r->verify_event_dt < 0)
+    bg_sb_printf(out, "; warning: the tighter run has %d state events, this run %d: they part at t = %.9g, "
+                      "and the rows after it cannot be trusted: set a smaller rtol",
+                 r->verify_events_other, r->nevents, r->verify_event_t);
   return 1;
 }
