@@ -26,7 +26,7 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 def stage_order(root):
     text = open(os.path.join(root, "CMakeLists.txt")).read()
     order = []
-    for var in ("BG_ENGINE_STAGES", "BG_RENDER_STAGES"):
+    for var in ("BG_ENGINE_STAGES", "BG_RENDER_STAGES", "BG_FRONT_STAGES"):
         m = re.search(r"set\(%s\s+([^)]*)\)" % var, text)
         if not m:
             sys.exit("include_rule: CMakeLists.txt has no set(%s ...)" % var)
@@ -70,7 +70,9 @@ def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "."
     order = stage_order(root)
     rank = {s: i for i, s in enumerate(order)}
-    home = {s: ("render" if s in order[order.index("scene"):-2] else "src") for s in order}
+    text = open(os.path.join(root, "CMakeLists.txt")).read()
+    renders = re.search(r"set\(BG_RENDER_STAGES\s+([^)]*)\)", text).group(1).split()
+    home = {s: ("render" if s in renders else "src") for s in order}
     engine = set(order[1:order.index("scene")])
     problems = front_door_problems(root, order, home)
     checked = 0

@@ -649,14 +649,17 @@ static int render_format(const bg_scene *s, const char *fmt, double png_scale, b
   return bg_surface_png_write(s, png_scale, out);
 }
 
+int bg_plot_render_scene(const bg_scene *sc, const char *fmt, double png_scale, bg_strbuf *out,
+                         bg_diags *dg) {
+  if (render_format(sc, fmt, png_scale, out) == 0) return BG_RENDER_OK;
+  bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the %s plot", fmt);
+  return BG_RENDER_ERROR;
+}
+
 int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, bg_diags *dg) {
-  const char *fmt = bg_path_ext(path);
   bg_strbuf out = {0};
-  int rc = BG_RENDER_OK;
-  if (render_format(sc, fmt, png_scale, &out) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the %s plot", fmt);
-    rc = BG_RENDER_ERROR;
-  } else if (bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
+  int rc = bg_plot_render_scene(sc, bg_path_ext(path), png_scale, &out, dg);
+  if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
     bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
     rc = BG_RENDER_EWRITE;
   }
@@ -666,10 +669,22 @@ int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, 
 
 int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
                   const char *style_dir, const char *path, bg_diags *dg) {
-  const char *fmt = bg_path_ext(path);
+  bg_strbuf out = {0};
+  int rc = bg_plot_render(m, r, style, style_dir, bg_path_ext(path), path, &out, dg);
+  if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
+    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    rc = BG_RENDER_EWRITE;
+  }
+  bg_sb_free(&out);
+  return rc;
+}
+
+int bg_plot_render(const bg_model *m, const bg_simresult *r, const char *style,
+                   const char *style_dir, const char *fmt, const char *path, bg_strbuf *out,
+                   bg_diags *dg) {
   if (strcmp(fmt, "svg") && strcmp(fmt, "pdf") && strcmp(fmt, "png")) {
     bg_diag_error(dg, (bg_srcloc){0}, "unknown plot format '%s' for '%s' (svg, pdf, png)",
-                  fmt, path);
+                  fmt, path ? path : "the plot");
     return BG_RENDER_ERROR;
   }
   bg_style st;
@@ -682,7 +697,7 @@ int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
   sc.title = bg_arena_strdup(&sc.arena, bg_sb_str(&t));
   bg_sb_free(&t);
   bg_plot_scene(m, r, &st, PLOT_WIDTH, 0, &sc);
-  int rc = bg_plot_write_scene(&sc, path, st.png_scale, dg);
+  int rc = bg_plot_render_scene(&sc, fmt, st.png_scale, out, dg);
   bg_scene_free(&sc);
   return rc;
 }

@@ -43,4 +43,12 @@ int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, 
  * errors reported to dg. */
 int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
                   const char *style_dir, const char *path, bg_diags *dg);
+/* The same plot in format fmt ("svg", "pdf", "png") into out; path (nullable)
+ * only names it in messages. */
+int bg_plot_render(const bg_model *m, const bg_simresult *r, const char *style,
+                   const char *style_dir, const char *fmt, const char *path, bg_strbuf *out,
+                   bg_diags *dg);
+/* A scene in format fmt into out; BG_RENDER_OK or BG_RENDER_ERROR. */
+int bg_plot_render_scene(const bg_scene *sc, const char *fmt, double png_scale, bg_strbuf *out,
+                         bg_diags *dg);
 #endif

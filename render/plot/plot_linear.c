@@ -14,6 +14,8 @@
 #include "diagram/render.h"
 #include "plot/plot.h"
 #include "plot/plot_int.h"
+#include "base/fileio.h"
+#include <errno.h>
 
 enum { BODE_POINTS = 400, TIME_POINTS = 401 };
 #define WIDTH 540.0
@@ -271,6 +273,19 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
 
 int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
                          const char *style_dir, const char *path, bg_diags *dg) {
+  bg_strbuf out = {0};
+  int rc = bg_plot_linear_render(m, l, kind, style, style_dir, bg_path_ext(path), path, &out, dg);
+  if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
+    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
+    rc = BG_RENDER_EWRITE;
+  }
+  bg_sb_free(&out);
+  return rc;
+}
+
+int bg_plot_linear_render(const bg_model *m, const bg_linear *l, int kind, const char *style,
+                          const char *style_dir, const char *fmt, const char *path,
+                          bg_strbuf *out, bg_diags *dg) {
   static const char *const what[] = {"Bode diagram", "Nyquist diagram", "step and impulse responses"};
   bg_style st;
   if (bg_style_load(&st, style, style_dir, dg) != 0) return BG_RENDER_ERROR;
@@ -282,10 +297,10 @@ int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const 
   sc.title = bg_arena_strdup(&sc.arena, title);
   int rc = BG_RENDER_ERROR;
   if (bg_plot_linear_scene(m, l, kind, &st, WIDTH, &sc) != 0)
-    bg_diag_error(dg, (bg_srcloc){0}, "no %s for '%s': %s", what[kind], path,
+    bg_diag_error(dg, (bg_srcloc){0}, "no %s for '%s': %s", what[kind], path ? path : "the plot",
                   !l->reduced && kind == BG_PLOT_STEP ? "no state space (descriptor form only)"
                   : l->nu * l->ny == 0 ? "no inputs or no outputs" : "the responses could not be computed");
-  else rc = bg_plot_write_scene(&sc, path, st.png_scale, dg);
+  else rc = bg_plot_render_scene(&sc, fmt, st.png_scale, out, dg);
   bg_scene_free(&sc);
   return rc;
 }

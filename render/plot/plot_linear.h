@@ -15,6 +15,11 @@ enum { BG_PLOT_BODE, BG_PLOT_NYQUIST, BG_PLOT_STEP };
  * no pair, step responses of a descriptor-only system or above 400 states). */
 int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const bg_style *st,
                          double width, bg_scene *out);
+/* Into out in format fmt (svg, pdf, png); path (nullable) names it in
+ * messages. BG_RENDER_OK / _ERROR. */
+int bg_plot_linear_render(const bg_model *m, const bg_linear *l, int kind, const char *style,
+                          const char *style_dir, const char *fmt, const char *path,
+                          bg_strbuf *out, bg_diags *dg);
 /* Writes it to path (svg, pdf, png) atomically; BG_RENDER_OK / _ERROR / _EWRITE. */
 int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
                          const char *style_dir, const char *path, bg_diags *dg);

@@ -72,7 +72,13 @@ static int assemble(rp_ctx *c, bg_strbuf *out) {
   return rc;
 }
 
-int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
+int bg_report_render(const bg_run *r, const bg_report_opts *ro, bg_strbuf *pdf, bg_diags *dg) {
+  bg_report_input input = {r->model, &r->analysis, r->eqsys, r->eqsys_problem, &r->facts,
+                           r->facts.numeric, r->facts.numeric_skipped,
+                           bg_run_has(r, BG_STAGE_SIMULATION) ? &r->sim : NULL, r->sim_status,
+                           ro ? ro->ropts : NULL, bg_run_has(r, BG_STAGE_LINEAR) ? &r->lin : NULL,
+                           ro && ro->tx ? ro->tx_name : NULL, ro ? ro->tx : NULL};
+  const bg_report_input *in = &input;
   rp_ctx c;
   memset(&c, 0, sizeof c);
   c.in = in, c.m = in->m, c.a = in->a, c.dg = dg;
@@ -84,18 +90,11 @@ int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
     free_ctx(&c);
     return BG_RENDER_ERROR;
   }
-  bg_strbuf pdf = {0};
   int rc = BG_RENDER_OK;
-  if (assemble(&c, &pdf) != 0) {
+  if (assemble(&c, pdf) != 0) {
     bg_diag_error(dg, (bg_srcloc){0}, "cairo could not draw the report");
     rc = BG_RENDER_ERROR;
-  } else if (bg_write_file_atomic(path, pdf.s ? pdf.s : "", pdf.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
-    rc = BG_RENDER_EWRITE;
-  } else if (o) {
-    bg_logf(o->log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, pdf.len);
   }
-  bg_sb_free(&pdf);
   free_ctx(&c);
   return rc;
 }

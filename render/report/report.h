@@ -13,26 +13,18 @@
 #include "diagram/render.h"
 #include "simulate/simulate.h"
 #include "linear/linear.h"
+#include "run/run.h"
 #include "transform/transform.h"
 
-/* What one run knows; everything borrowed; the nullable parts are missing
- * when that stage did not run or failed (the report then says why). */
-typedef struct bg_report_input {
-  const bg_model *m;
-  const bg_analysis *a;
-  const bg_eqsys *eqs;          /* nullable */
-  const char *eqs_problem;      /* nullable: why there are no equations */
-  const bg_index_result *index; /* nullable: numeric index not computed */
-  const char *index_skipped;    /* nullable: why not (e.g. too many unknowns) */
-  const bg_simresult *sim;      /* nullable: no simulate block / not run */
-  int sim_status;               /* bg_simulate's return: 0 ok, 1 refused, 2 failed */
-  const bg_render_opts *ropts;  /* style, layout, verbose */
-  const bg_linear *lin;         /* nullable: no linear analysis (section 10 left out) */
-  const char *tx_name;          /* nullable: --transform NAME (section 11 left out) */
+/* What the report shows beyond the run. */
+typedef struct bg_report_opts {
+  const bg_render_opts *ropts;   /* style, layout, log */
+  const char *tx_name;           /* nullable: --transform NAME (section 11 left out) */
   const bg_transform_result *tx; /* the transformed model, with tx_name */
-} bg_report_input;
+} bg_report_opts;
 
-/* Writes the report to path atomically. Returns BG_RENDER_OK,
- * BG_RENDER_ERROR or BG_RENDER_EWRITE (render.h), errors reported to dg. */
-int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg);
+/* The report of what the run computed (the stages it has not run are said
+ * so: no equations, no simulation, no linear analysis) as PDF into out.
+ * Returns BG_RENDER_OK or BG_RENDER_ERROR (render.h), errors reported to dg. */
+int bg_report_render(const bg_run *r, const bg_report_opts *o, bg_strbuf *out, bg_diags *dg);
 #endif

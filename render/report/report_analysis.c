@@ -251,11 +251,11 @@ static void labelled(rp_ctx *c, const char *label, const char *text) {
 /* The index reduction (Pantelides, dummy derivatives) in bond-graph terms:
  * what was differentiated, which stores lost their state. */
 static void reduction_lines(rp_ctx *c) {
-  const bg_analysis *a = c->a;
-  if (!a->ired_status) return;
-  labelled(c, "Index reduction", a->ired_message ? a->ired_message : "");
-  for (int k = 0; k < a->ired_nconstraint; k++) labelled(c, "Differentiated", a->ired_constraint[k]);
-  for (int k = 0; k < a->ired_nlost; k++) labelled(c, "Lost its state", a->ired_lost[k]);
+  const bg_indexred *ir = c->in->facts->reduction;
+  if (!ir || !ir->status) return;
+  labelled(c, "Index reduction", ir->message ? ir->message : "");
+  for (int k = 0; k < ir->nconstraint; k++) labelled(c, "Differentiated", ir->constraint[k]);
+  for (int k = 0; k < ir->nlost; k++) labelled(c, "Lost its state", ir->lost[k]);
 }
 
 static void index_lines(rp_ctx *c) {
@@ -285,10 +285,10 @@ static void index_lines(rp_ctx *c) {
   rp_para(&c->body, bg_sb_str(&b), RP_SIZE_BODY, 0, 12, rp_ink);
   rp_gap(&c->body, 2);
   bg_sb_free(&b);
-  if (a->index_disagreement) {
+  if (c->in->facts->disagreement) {
     bg_strbuf w = {0};
     bg_sb_puts(&w, "<b>Warning:</b> ");
-    rp_esc(&w, a->index_disagreement);
+    rp_esc(&w, c->in->facts->disagreement);
     bg_sb_puts(&w, ".");
     para(c, bg_sb_str(&w));
     bg_sb_free(&w);
@@ -318,7 +318,8 @@ void rp_sec_index(rp_ctx *c) {
   rp_section(&c->body, "Model form and index", 1, 0, 80);
   bg_strbuf b = {0};
   bg_sb_printf(&b, "<b>Form:</b> %s", form_words(a->form));
-  if (a->reduced_form) bg_sb_printf(&b, "; after symbolic elimination: %s", a->reduced_form);
+  if (c->in->facts->reduced_form)
+    bg_sb_printf(&b, "; after symbolic elimination: %s", c->in->facts->reduced_form);
   bg_sb_puts(&b, ".");
   if (a->form_parameter_dependent)
     bg_sb_puts(&b, " The form depends on parameter values: an algebraic loop is linear and solvable "

@@ -186,6 +186,25 @@ int rp_paginate(const double *rowh, int n, double headh, double room, double cap
 int rp_two_columns(int n, int rows_first, int rows_full, int *page, int *col, int *row);
 
 /* ---------------------------------------------------------------- sections */
+/* What one run knows, as the sections read it (report.c fills it from the
+ * run); the nullable parts are missing when that stage did not run or
+ * failed (the report then says why). */
+typedef struct bg_report_input {
+  const bg_model *m;
+  const bg_analysis *a;
+  const bg_eqsys *eqs;          /* nullable */
+  const char *eqs_problem;      /* nullable: why there are no equations */
+  const bg_index_facts *facts;  /* numeric index, reduced form, index reduction */
+  const bg_index_result *index; /* facts->numeric: nullable, numeric index not computed */
+  const char *index_skipped;    /* nullable: why not (e.g. too many unknowns) */
+  const bg_simresult *sim;      /* nullable: no simulate block / not run */
+  int sim_status;               /* bg_simulate's return: 0 ok, 1 refused, 2 failed */
+  const bg_render_opts *ropts;  /* style, layout, log */
+  const bg_linear *lin;         /* nullable: no linear analysis (section 10 left out) */
+  const char *tx_name;          /* nullable: --transform NAME (section 11 left out) */
+  const bg_transform_result *tx; /* the transformed model, with tx_name */
+} bg_report_input;
+
 typedef struct rp_ctx {
   const bg_report_input *in;
   const bg_model *m;

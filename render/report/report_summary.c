@@ -89,15 +89,16 @@ void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
     bg_strbuf causes = {0};
     if (index1_causes(c, &causes)) bg_sb_printf(out, ": %s", bg_sb_str(&causes));
     bg_sb_free(&causes);
-    if (a->reduced_form && !strcmp(a->reduced_form, "ode"))
+    if (c->in->facts->reduced_form && !strcmp(c->in->facts->reduced_form, "ode"))
       bg_sb_puts(out, " (an explicit ODE after symbolic elimination)");
   } else if (idx >= 2) {
     if (numeric_index(c) >= 2) bg_sb_printf(out, "Index-%d DAE", idx);
     else bg_sb_puts(out, "DAE of index above 1");
     if (refused) bg_sb_puts(out, ": simulation refused because "), first_sentence(out, in->sim->message);
-    else if (a->ired_status > 0)
+    else if (c->in->facts->reduction && c->in->facts->reduction->status > 0)
       bg_sb_printf(out, ", reduced to index %d by differentiating %d constraint%s (Pantelides, dummy "
-                        "derivatives)", a->ired_index, a->ired_nconstraint, a->ired_nconstraint == 1 ? "" : "s");
+                        "derivatives)", c->in->facts->reduction->index, c->in->facts->reduction->nconstraint,
+                   c->in->facts->reduction->nconstraint == 1 ? "" : "s");
     else if (a->index_reason) bg_sb_puts(out, ": "), first_sentence(out, a->index_reason);
     sim_clause(c, out, refused);
     bg_sb_puts(out, ".");
@@ -184,7 +185,8 @@ static void summary_table(const rp_ctx *c, rp_doc *d) {
   counts_row(c, &t);
   bg_sb_clear(&b);
   bg_sb_puts(&b, bg_form_name(a->form));
-  if (a->reduced_form) bg_sb_printf(&b, " (after elimination: %s)", a->reduced_form);
+  if (c->in->facts->reduced_form)
+    bg_sb_printf(&b, " (after elimination: %s)", c->in->facts->reduced_form);
   row(&t, "Form", bg_sb_str(&b));
   bg_sb_clear(&b);
   if (a->index_predicted < 0) bg_sb_puts(&b, "unknown");

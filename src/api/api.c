@@ -113,7 +113,7 @@ char *bg_api_summary(const bg_api_model *m) {
 
 char *bg_api_json(const bg_api_model *m) {
   bg_strbuf sb = {0};
-  bg_json_write_analysis(m->model, &m->analysis, &sb);
+  bg_json_write_analysis(m->model, &m->analysis, NULL, &sb);
   return sb.s;
 }
 

@@ -111,24 +111,6 @@ typedef struct bg_analysis {
   int index_predicted;       /* 0, 1, 2 (2 = "above 1"); -1 unknown */
   char *index_reason;
   int form_parameter_dependent; /* Equation 4.45 case */
-  /* Filled by the equations stage (JSON index.numeric, index.numeric_status,
-   * reduced_form); the JSON writes null while they are unset. */
-  const char *index_disagreement; /* set with the numeric index when it and the
-                                     prediction disagree: why, in words (index.c) */
-  int index_numeric_set;     /* Algorithm 4.1 ran to a verdict (not set when it failed) */
-  int index_numeric;         /* its index; < 0 with _set: singular pencil (JSON numeric
-                                null, numeric_status "singular") */
-  const char *reduced_form;  /* "ode" / "dae" after symbolic elimination of linear
-                                algebraic blocks / dependent stores; NULL: not done */
-  /* Index reduction (equations/indexred.h), tried when the index is above 1:
-   * 0 not tried, 1 reduced, -1 failed; what was done or why not, in words
-   * (JSON index.reduction, the report, --check). Strings in the arena. */
-  int ired_status;
-  int ired_index;            /* numeric index of the reduced equations */
-  const char *ired_message;
-  int ired_nconstraint, ired_nlost, ired_ndummy;
-  const char **ired_constraint, **ired_lost, **ired_dummy;
-
   /* estimates from first- and second-order paths, linearised at the initial point */
   int nestimate;
   int *estimate_kind;  /* 0 time constant [s], 1 natural frequency [rad/s] */

@@ -29,13 +29,13 @@ static void add_unique(const char **list, int *n, int cap, const char *path) {
 static int collect_inputs(const run *r, const char **in, int cap, char *style_buf, size_t n) {
   int k = 0;
   if (!bg_cli_is_stdout(r->opts.model_path)) add_unique(in, &k, cap, r->opts.model_path);
-  if (r->diagram || r->opts.plot || r->opts.report || r->opts.bode || r->opts.nyquist ||
+  if (r->out.diagram || r->opts.plot || r->opts.report || r->opts.bode || r->opts.nyquist ||
       r->opts.step) {
     bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style_buf, n);
     if (access(style_buf, R_OK) == 0) add_unique(in, &k, cap, style_buf);
   }
-  for (int t = 0; t < r->model->ntable; t++)
-    if (r->model->table_path[t]) add_unique(in, &k, cap, r->model->table_path[t]);
+  for (int t = 0; t < r->R->model->ntable; t++)
+    if (r->R->model->table_path[t]) add_unique(in, &k, cap, r->R->model->table_path[t]);
   return k;
 }
 

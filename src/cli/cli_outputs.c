@@ -1,21 +1,17 @@
-/* The writers of bgdraw's outputs: diagrams, JSON, equations, CSV, plots
- * and the report, each written atomically; their exit statuses (docs/cli.md). */
+/* Where the outputs go: every output's bytes come from src/output's table;
+ * here they are written atomically to their files, or in place to standard
+ * output, and their statuses become exit codes (docs/cli.md). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/cli_run.h"
-#include "equations/equations.h"
 #include "base/fileio.h"
-#include "json/json.h"
-#include "cli/cli_render.h"
 #include "base/strbuf.h"
-
-static int is_diagram_format(const char *f) {
-  return !strcmp(f, "svg") || !strcmp(f, "pdf") || !strcmp(f, "png") || !strcmp(f, "dot");
-}
+#include "cli/cli_render.h"
+#include "cli/cli_run.h"
+#include "export/export.h"
 
 /* Whether the run draws, and so reads a style file: a diagram output, a
  * plot or the report. A run that does not never loads the render module
@@ -23,8 +19,10 @@ static int is_diagram_format(const char *f) {
 static int run_draws(const run *r) {
   const bg_cli_opts *o = &r->opts;
   if (o->plot || o->report || o->bode || o->nyquist || o->step) return 1;
-  for (int i = 0; i < o->nout; i++)
-    if (is_diagram_format(o->out[i].format)) return 1;
+  for (int i = 0; i < o->nout; i++) {
+    const bg_output_kind *k = bg_output_find(o->out[i].format);
+    if (k && (k->flags & BG_OUTK_DRAWS)) return 1;
+  }
   return 0;
 }
 
@@ -60,7 +58,7 @@ int cli_check_outputs(run *r) {
 /* The default output when no -o is given: out/<model>.svg. */
 void cli_default_output(run *r, char *buf, size_t n) {
   mkdir("out", 0777); /* may exist already */
-  snprintf(buf, n, "out/%s.svg", r->model->name);
+  snprintf(buf, n, "out/%s.svg", r->R->model->name);
   r->opts.out[0].path = buf;
   r->opts.out[0].format = "svg";
   r->opts.nout = 1;
@@ -79,120 +77,115 @@ int cli_write_stdout(const bg_strbuf *sb) {
   return EXIT_WRITE;
 }
 
-static int write_json(run *r, const char *path) {
+/* The writers' messages: errors as diagnostics, a refusal in words. */
+static void say(run *r) {
+  bg_output *w = &r->out;
+  bg_diags_print(&w->dg_model, stderr);
+  bg_diags_print(&w->dg, stderr);
+  if (w->refusal) fprintf(stderr, "bgdraw: %s\n", w->refusal);
+  bg_output_clear_messages(w);
+}
+
+int cli_write_output(run *r, const char *kind, const char *form, const char *path) {
+  if (!path) path = BG_CLI_STDOUT;
+  int to_stdout = bg_cli_is_stdout(path);
   bg_strbuf sb = {0};
-  bg_json_write_analysis(r->model, &r->analysis, &sb);
-  if (r->simulated) bg_json_append_simulation(&sb, r->model, &r->sim, r->sim_status);
-  if (r->lin_done) bg_json_append_linear(&sb, &r->lin);
-  int rc = cli_write_text(path, &sb);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-static int write_diagram(run *r, const bg_cli_output *out) {
-  if (!r->diagram) {
-    r->diagram = bg_diagram_build(r->model, &r->analysis, &r->ropts, &r->dg);
-    if (!r->diagram) {
-      bg_diags_print(&r->dg, stderr);
-      return EXIT_USAGE;
-    }
-  }
-  int rc;
-  if (bg_cli_is_stdout(out->path)) {
-    bg_strbuf sb = {0};
-    rc = bg_diagram_render(r->diagram, out->format, &sb, &r->dg);
-    if (rc == BG_RENDER_OK) rc = cli_write_text(out->path, &sb) == EXIT_OK ? BG_RENDER_OK
-                                                                      : BG_RENDER_EWRITE;
-    bg_sb_free(&sb);
-    if (rc == BG_RENDER_EWRITE) return EXIT_WRITE;
-  } else {
-    rc = bg_diagram_write(r->diagram, out->path, out->format, &r->dg);
-  }
-  if (rc == BG_RENDER_OK) return EXIT_OK;
-  bg_diags_print(&r->dg, stderr);
-  return rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
-}
-
-int cli_write_equations(run *r, const char *path, const char *form) {
-  if (!r->eqsys) {
-    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path ? path : "stdout",
-            r->eqsys_problem ? r->eqsys_problem : "unknown reason");
-    return EXIT_MODEL;
-  }
-  if (!strcmp(form, "c")) return cli_write_export(r, path, "c");
-  bg_strbuf sb = {0};
-  bg_eqprint(r->eqsys, form, &sb);
-  int rc = cli_write_text(path ? path : BG_CLI_STDOUT, &sb);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-static int write_csv(run *r, const char *path) {
-  if (!r->simulated || !r->sim.nrows) return EXIT_OK; /* refused: nothing to write */
-  bg_strbuf sb = {0};
-  bg_csv_write(&r->sim, &sb);
-  int rc = cli_write_text(path, &sb);
-  bg_sb_free(&sb);
-  return rc;
-}
-
-static int write_one(run *r, const bg_cli_output *out) {
-  if (r->opts.verbose)
-    fprintf(stderr, "bgdraw: writing %s\n", bg_cli_is_stdout(out->path) ? "stdout" : out->path);
-  if (!strcmp(out->format, "json")) return write_json(r, out->path);
-  if (is_diagram_format(out->format)) return write_diagram(r, out);
-  if (!strcmp(out->format, "tex")) return cli_write_equations(r, out->path, "latex");
-  if (!strcmp(out->format, "c") || !strcmp(out->format, "py") || !strcmp(out->format, "m") ||
-      !strcmp(out->format, "mo") || !strcmp(out->format, "fmu"))
-    return cli_write_export(r, out->path, out->format);
-  if (!strcmp(out->format, "csv")) return write_csv(r, out->path);
-  if (!strcmp(out->format, "bg")) {
-    bg_strbuf sb = {0};
-    bg_sb_puts(&sb, r->tx.text);
-    int rc = cli_write_text(out->path, &sb);
+  int rc = (int)bg_output_write(&r->out, kind, form, to_stdout ? NULL : path, &sb);
+  say(r);
+  if (r->out.nothing) {
     bg_sb_free(&sb);
     return rc;
   }
-  BG_FATAL("option parsing let through output format '%s'", out->format);
+  if (rc == EXIT_OK) rc = cli_write_text(path, &sb);
+  if (rc == EXIT_OK && !to_stdout)
+    bg_logf(&r->R->o.log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, sb.len);
+  bg_sb_free(&sb);
+  return rc;
+}
+
+/* -o NAME.fmu: the export build compiled by cli_fmu.c. */
+static int write_fmu(run *r, const char *path) {
+  bg_run *R = r->R;
+  bg_output_need(&r->out, bg_output_find("fmu"));
+  if (r->opts.prefix && !bg_export_prefix_ok(r->opts.prefix)) {
+    fprintf(stderr, "bgdraw: error: --prefix '%s' is not a C identifier (letters, digits, '_')\n",
+            r->opts.prefix);
+    return EXIT_USAGE;
+  }
+  if (!R->eqsys) {
+    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path,
+            R->eqsys_problem ? R->eqsys_problem : "unknown reason");
+    return EXIT_MODEL;
+  }
+  bg_diags dg;
+  bg_diags_init(&dg, R->name, R->src, R->srclen);
+  bg_eqsys *s = bg_eqsys_build_export(R->model, &R->analysis, &dg);
+  bg_diags_free(&dg);
+  if (!s) {
+    fprintf(stderr, "bgdraw: error: no equations for '%s'\n", path);
+    return EXIT_MODEL;
+  }
+  char prefix[80];
+  if (r->opts.prefix) snprintf(prefix, sizeof prefix, "%s", r->opts.prefix);
+  else bg_export_default_prefix(R->model, prefix, sizeof prefix);
+  int rc = cli_write_fmu(s, prefix, path);
+  bg_eqsys_free(s);
+  return rc;
+}
+
+/* -o NAME.c: NAME.h beside it, then the source that includes it. */
+static int write_c(run *r, const char *path) {
+  if (bg_cli_is_stdout(path)) return cli_write_output(r, "c", NULL, NULL); /* as --equations c */
+  size_t len = strlen(path);
+  char hpath[4096];
+  if (len + 1 > sizeof hpath) {
+    fprintf(stderr, "bgdraw: error: output path too long: '%s'\n", path);
+    return EXIT_USAGE;
+  }
+  memcpy(hpath, path, len + 1);
+  hpath[len - 1] = 'h'; /* NAME.c -> NAME.h */
+  bg_strbuf h = {0};
+  int rc = (int)bg_output_write(&r->out, "h", NULL, path, &h);
+  say(r);
+  if (rc == EXIT_OK) rc = cli_write_text(hpath, &h);
+  bg_sb_free(&h);
+  return rc ? rc : cli_write_output(r, "c", NULL, path);
 }
 
 int cli_write_outputs(run *r) {
   for (int i = 0; i < r->opts.nout; i++) {
-    int rc = write_one(r, &r->opts.out[i]);
+    const bg_cli_output *out = &r->opts.out[i];
+    bg_logf(&r->R->o.log, BG_LOG_PROGRESS, "writing %s",
+            bg_cli_is_stdout(out->path) ? "stdout" : out->path);
+    int rc;
+    if (!strcmp(out->format, "fmu")) rc = write_fmu(r, bg_cli_is_stdout(out->path) ? BG_CLI_STDOUT : out->path);
+    else if (!strcmp(out->format, "c")) rc = write_c(r, out->path);
+    else rc = cli_write_output(r, out->format, NULL, out->path);
     if (rc) return rc;
   }
   return EXIT_OK;
 }
 
-/* --plot FILE: the simulation plots, also of a partial run; none when the
- * run was refused (no rows). The extension was checked with the options. */
-int cli_write_plot(run *r) {
-  const char *path = r->opts.plot;
-  if (!r->simulated || !r->sim.nrows) return EXIT_OK;
-  bg_diags dg;
-  bg_diags_init(&dg, "bgdraw", NULL, 0);
-  int rc = bg_plot_write(r->model, &r->sim, r->ropts.style, r->ropts.style_dir, path, &dg);
-  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
-  else if (r->opts.verbose) fprintf(stderr, "bgdraw: wrote %s\n", path);
-  bg_diags_free(&dg);
-  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+int cli_linear_asked(const bg_cli_opts *o) { return o->linear || o->bode || o->nyquist || o->step; }
+
+int cli_linear_only(const bg_cli_opts *o) {
+  return cli_linear_asked(o) && o->nout == 0 && !o->simulate && !o->plot && !o->report &&
+         !o->equations;
 }
 
-/* --report FILE.pdf; the simulation ran when the model has a simulate block. */
-int cli_write_report(run *r) {
-  char skipped[160] = "";
-  if (r->eqsys && !r->index_done)
-    snprintf(skipped, sizeof skipped, "%d unknowns, more than the dense algorithm's limit of %d",
-             bg_eqsys_n(r->eqsys), INDEX_MAX_UNKNOWNS);
-  bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem,
-                        r->index_done ? &r->index : NULL, skipped[0] ? skipped : NULL,
-                        r->simulated ? &r->sim : NULL, r->sim_status, &r->ropts,
-                        r->lin_done ? &r->lin : NULL, r->tx_done ? r->opts.transform : NULL,
-                        r->tx_done ? &r->tx : NULL};
-  bg_diags dg;
-  bg_diags_init(&dg, "bgdraw", NULL, 0);
-  int rc = bg_report_write(&in, r->opts.report, &dg);
-  if (rc != BG_RENDER_OK) bg_diags_print(&dg, stderr);
-  bg_diags_free(&dg);
-  return rc == BG_RENDER_OK ? EXIT_OK : rc == BG_RENDER_EWRITE ? EXIT_WRITE : EXIT_USAGE;
+int cli_write_linear(run *r) {
+  const bg_cli_opts *o = &r->opts;
+  if (!cli_linear_asked(o)) return EXIT_OK;
+  bg_run_need(r->R, BG_STAGE_LINEAR);
+  int rc = o->linear ? cli_write_output(r, "linear", o->linear, NULL) : EXIT_OK;
+  if (rc) return rc;
+  if (!r->R->lin.ok) { /* the text said why; the plots would say it again */
+    fprintf(stderr, "bgdraw: linear analysis refused: %s\n",
+            r->R->lin.message ? r->R->lin.message : "unknown reason");
+    return EXIT_SIM;
+  }
+  if (o->bode) rc = cli_write_output(r, "bode", NULL, o->bode);
+  if (!rc && o->nyquist) rc = cli_write_output(r, "nyquist", NULL, o->nyquist);
+  if (!rc && o->step) rc = cli_write_output(r, "step", NULL, o->step);
+  return rc;
 }

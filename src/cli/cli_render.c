@@ -62,45 +62,9 @@ static const bg_render_api *api(void) {
   return tab = t;
 }
 
-bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
-                             bg_diags *dg) {
-  return api()->diagram_build(m, a, o, dg);
-}
-
-void bg_diagram_free(bg_diagram *d) {
-  if (d) api()->diagram_free(d);
-}
-
-int bg_diagram_write(bg_diagram *d, const char *path, const char *format, bg_diags *dg) {
-  return api()->diagram_write(d, path, format, dg);
-}
-
-int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diags *dg) {
-  return api()->diagram_render(d, format, out, dg);
-}
-
-int bg_show_parse(const char *list, unsigned *out) { return api()->show_parse(list, out); }
-
-int bg_highlight_parse(const char *item, int *kind, int *index) {
-  return api()->highlight_parse(item, kind, index);
-}
-
-int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
-                  const char *style_dir, const char *path, bg_diags *dg) {
-  return api()->plot_write(m, r, style, style_dir, path, dg);
-}
-
-int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
-                         const char *style_dir, const char *path, bg_diags *dg) {
-  return api()->plot_linear_write(m, l, kind, style, style_dir, path, dg);
-}
-
-int bg_report_write(const bg_report_input *in, const char *path, bg_diags *dg) {
-  return api()->report_write(in, path, dg);
-}
-
-void bg_style_path(const char *name, const char *style_dir, char *buf, size_t n) {
-  api()->style_path(name, style_dir, buf, n);
-}
-
-void bg_render_versions(bg_strbuf *out) { api()->versions(out); }
+/* The functions under their usual names, each loading the module first. */
+#define WRAP_R(ret, name, params, args) \
+  ret bg_##name params { return api()->name args; }
+#define WRAP_V(name, params, args) \
+  void bg_##name params { api()->name args; }
+BG_RENDER_CALLS(WRAP_R, WRAP_V)

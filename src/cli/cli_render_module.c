@@ -6,9 +6,9 @@
 #include "scene/style.h"
 #include "scene/surface.h"
 
+#define ENTRY_R(ret, name, params, args) .name = bg_##name,
+#define ENTRY_V(name, params, args) .name = bg_##name,
 const bg_render_api bg_render_module = {
-    BG_RENDER_API_VERSION, bg_diagram_build,   bg_diagram_free, bg_diagram_write,
-    bg_diagram_render,     bg_show_parse,      bg_highlight_parse, bg_plot_write,
-    bg_plot_linear_write,  bg_report_write,    bg_style_path,   bg_render_versions,
-    bg_fonts_own,
+    .version = BG_RENDER_API_VERSION,
+    BG_RENDER_CALLS(ENTRY_R, ENTRY_V)
 };

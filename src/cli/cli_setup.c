@@ -132,6 +132,5 @@ int cli_render_options(run *r) {
   const char *env = getenv("BGDRAW_STYLE_DIR");
   ro->style_dir = env && *env ? NULL : installed_style_dir();
   ro->layout = o->layout;
-  ro->log = &r->log;
   return 0;
 }

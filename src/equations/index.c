@@ -374,3 +374,7 @@ char *bg_index_disagreement(const bg_analysis *a, const bg_index_result *r) {
   bg_sb_free(&sb);
   return msg;
 }
+
+int bg_index_facts_numeric_set(const bg_index_facts *f) {
+  return f && f->numeric && f->numeric->index != BG_INDEX_FAILED;
+}

@@ -29,6 +29,22 @@ int bg_index_compute(bg_eqsys *s, const bg_model *m, bg_index_result *out);
 /* The same on a given pencil A x' + B x (column-major n x n; copied). */
 int bg_index_pencil(const double *A, const double *B, int n, bg_index_result *out);
 void bg_index_free(bg_index_result *r);
+
+struct bg_indexred;
+/* What the equations stage found about the index beyond the causal
+ * prediction (bg_analysis): the numeric index, the reduced form and the
+ * index reduction. The run (src/run) fills it as those stages finish; the
+ * simulation's refusals, the JSON and the report read it. Everything is
+ * borrowed; {0}: nothing computed. */
+typedef struct bg_index_facts {
+  const bg_index_result *numeric;  /* NULL: not computed */
+  const char *numeric_skipped;     /* why not computed (too many unknowns); nullable */
+  const char *disagreement;        /* the prediction and the numeric index disagree: why */
+  const char *reduced_form;        /* "ode" / "dae" after symbolic elimination; NULL: not done */
+  const struct bg_indexred *reduction; /* index reduction; NULL: not tried */
+} bg_index_facts;
+/* Algorithm 4.1 ran to a verdict (an index, or a singular pencil). */
+int bg_index_facts_numeric_set(const bg_index_facts *f);
 /* What eigenvalue k means for stability. "Zero" and "undamped" are decided
  * relative to the largest magnitude (BG_EIG_ZERO_REL of it): a conserved
  * quantity's eigenvalue comes out as ~1e-16 of the largest, of either sign,

@@ -280,22 +280,22 @@ static void put_tloops(bg_strbuf *o, const bg_model *m, const bg_analysis *a) {
 }
 
 /* index.reduction: only when an index reduction was tried (the index is above 1). */
-static void put_reduction(bg_strbuf *o, const bg_analysis *a) {
-  if (!a->ired_status) return;
-  bg_sb_printf(o, ", \"reduction\": {\"status\": \"%s\", \"message\": ", a->ired_status > 0 ? "reduced" : "failed");
-  str_or_null(o, a->ired_message);
+static void put_reduction(bg_strbuf *o, const bg_indexred *r) {
+  if (!r || !r->status) return;
+  bg_sb_printf(o, ", \"reduction\": {\"status\": \"%s\", \"message\": ", r->status > 0 ? "reduced" : "failed");
+  str_or_null(o, r->message ? r->message : "");
   bg_sb_puts(o, ", \"index\": ");
-  int_or_null(o, a->ired_index, a->ired_status < 0 || a->ired_index < 0);
+  int_or_null(o, r->index, r->status < 0 || r->index < 0);
   bg_sb_puts(o, ", \"differentiated\": ");
-  string_list(o, (char *const *)a->ired_constraint, a->ired_nconstraint);
+  string_list(o, r->constraint, r->nconstraint);
   bg_sb_puts(o, ", \"lost_states\": ");
-  string_list(o, (char *const *)a->ired_lost, a->ired_nlost);
+  string_list(o, r->lost, r->nlost);
   bg_sb_puts(o, ", \"dummy_derivatives\": ");
-  string_list(o, (char *const *)a->ired_dummy, a->ired_ndummy);
+  string_list(o, r->dummy, r->ndummy);
   bg_sb_putc(o, '}');
 }
 
-static void put_summary(bg_strbuf *o, const bg_analysis *a) {
+static void put_summary(bg_strbuf *o, const bg_analysis *a, const bg_index_facts *f) {
   key(o, "states");
   string_list(o, a->states, a->nstates);
   bg_sb_puts(o, ",\n");
@@ -314,15 +314,15 @@ static void put_summary(bg_strbuf *o, const bg_analysis *a) {
   /* The numeric index needs the equations (a later stage): null until it is
    * computed, and null for a singular pencil, which has no index; the extra
    * key numeric_status tells the two apart. */
-  int computed = a->index_numeric_set && a->index_numeric >= 0;
+  int set = bg_index_facts_numeric_set(f), computed = set && f->numeric->index >= 0;
   bg_sb_puts(o, ", \"numeric\": ");
-  int_or_null(o, a->index_numeric, !computed);
+  int_or_null(o, computed ? f->numeric->index : 0, !computed);
   bg_sb_puts(o, ", \"reason\": ");
   str_or_null(o, a->index_reason);
   bg_sb_printf(o, ", \"numeric_status\": \"%s\", \"disagreement\": ",
-               computed ? "computed" : a->index_numeric_set ? "singular" : "not computed");
-  str_or_null(o, a->index_disagreement);
-  put_reduction(o, a);
+               computed ? "computed" : set ? "singular" : "not computed");
+  str_or_null(o, f ? f->disagreement : NULL);
+  put_reduction(o, f ? f->reduction : NULL);
   bg_sb_puts(o, "},\n");
 }
 
@@ -359,7 +359,8 @@ static void put_lagrange(bg_strbuf *o, const bg_model *m, const bg_analysis *a) 
   bg_sb_puts(o, "}");
 }
 
-void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *o) {
+void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, const bg_index_facts *f,
+                            bg_strbuf *o) {
   bg_sb_puts(o, "{\n");
   key(o, "format");
   bg_sb_puts(o, "\"bgdraw-analysis\",\n");
@@ -381,7 +382,7 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
   put_paths(o, m, a);
   put_cloops(o, m, a);
   put_tloops(o, m, a);
-  put_summary(o, a);
+  put_summary(o, a, f);
   put_estimates(o, a);
   put_lagrange(o, m, a);
   bg_sb_puts(o, ",\n");
@@ -405,6 +406,6 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, bg_strbuf *
                a->tloop_capped ? "false" : "true");
   /* set by the equations stage after symbolic elimination; null until then */
   key(o, "reduced_form");
-  str_or_null(o, a->reduced_form);
+  str_or_null(o, f ? f->reduced_form : NULL);
   bg_sb_puts(o, "\n}\n");
 }

@@ -131,7 +131,9 @@ static int choose(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg
   } else if (!ode && bg_eqsys_is_reduced(s)) {
     kind = BG_SIM_IDA;
     bg_sb_printf(&why, "auto: index reduction (Pantelides, dummy derivatives) gave a DAE of index "
-                       "%d (%d algebraic unknowns): IDA", a->ired_index, bg_eqsys_n(s) - bg_eqsys_nx(s));
+                       "%d (%d algebraic unknowns): IDA",
+                 o && o->facts && o->facts->reduction ? o->facts->reduction->index : -1,
+                 bg_eqsys_n(s) - bg_eqsys_nx(s));
   } else if (!ode) {
     kind = BG_SIM_IDA;
     bg_sb_printf(&why, "auto: the equations are a DAE (%d algebraic unknown%s, %d dependent "
@@ -405,7 +407,7 @@ static double step_limit(bg_eqsys *s, const bg_model *m, const bg_sim_opts *o) {
 static int simulate_once(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const bg_sim_opts *o,
                          bg_simresult *r) {
   memset(r, 0, sizeof *r);
-  char *why = bg_simulate_refusal_reduced(m, a, s && bg_eqsys_is_reduced(s));
+  char *why = bg_simulate_refusal_reduced(m, a, o ? o->facts : NULL, s && bg_eqsys_is_reduced(s));
   if (why) return refuse(r, why);
   if (!s) {
     bg_strbuf sb = {0};

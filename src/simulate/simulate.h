@@ -26,6 +26,10 @@ typedef struct bg_sim_opts {
   /* Why the equations could not be formed when bg_simulate gets s == NULL
    * (the eqsys diagnostic), for the refusal message; nullable. */
   const char *eqs_problem;
+  /* What the equations stage found about the index (the run's facts):
+   * a numeric index above 1 refuses the run, a failed reduction says why;
+   * nullable: the causal prediction alone */
+  const bg_index_facts *facts;
   /* 1: integrate straight over the switching conditions, as before state
    * events existed (tests show what root finding changes) */
   int no_events;
@@ -152,16 +156,17 @@ double bg_sim_default_rtol_switching(int n);
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a
  * malloc'd message with remedies; NULL when nothing forbids it. */
-char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a);
+char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a, const bg_index_facts *f);
 /* The same for a system that is (reduced = 1) the index reduction's
  * (equations/indexred.h): the index problems no longer forbid the run. When
- * the reduction was tried and failed (a->ired_status < 0) the refusal ends
+ * the reduction was tried and failed (f->reduction->status < 0) the refusal ends
  * with its reason. */
-char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int reduced);
+char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const bg_index_facts *f,
+                                  int reduced);
 /* 1 when what forbids the run is the index (a class 5 causal loop, an
  * algebraic loop of gain +1, a predicted or numeric index above 1): an
  * index reduction may lift it. */
-int bg_simulate_index_problem(const bg_analysis *a);
+int bg_simulate_index_problem(const bg_analysis *a, const bg_index_facts *f);
 
 /* The results as CSV: header "t,<names...>" (a name containing a comma or a
  * quote is quoted CSV-style), one row per output time, numbers in the shortest round-trip form (bg_sb_num).

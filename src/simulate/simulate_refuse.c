@@ -75,14 +75,16 @@ static void say_index2(const bg_model *m, const bg_analysis *a, bg_strbuf *sb) {
 /* The prediction said 1 or less but the equations, linearised at the start,
  * have index 2 or more (or none): the numeric index is the one to trust
  * (bg_index_disagreement), and IDA would integrate them unreliably. */
-static int numeric_above_1(const bg_analysis *a) {
-  return a->index_numeric_set && a->index_predicted < 2 && (a->index_numeric >= 2 || a->index_numeric < 0);
+static int numeric_above_1(const bg_analysis *a, const bg_index_facts *f) {
+  if (!bg_index_facts_numeric_set(f)) return 0;
+  int k = f->numeric->index;
+  return a->index_predicted < 2 && (k >= 2 || k < 0);
 }
 
-static void say_numeric(const bg_analysis *a, bg_strbuf *sb) {
-  if (a->index_numeric >= 0)
+static void say_numeric(const bg_analysis *a, const bg_index_facts *f, bg_strbuf *sb) {
+  if (f->numeric->index >= 0)
     bg_sb_printf(sb, "the equations have numeric index %d (Algorithm 4.1 at the initial point), ",
-                 a->index_numeric);
+                 f->numeric->index);
   else bg_sb_puts(sb, "the linearised equations are singular (no index), ");
   bg_sb_printf(sb, "although the causal pattern predicts %d; the numeric index, computed from the "
                    "equations themselves, is the one to trust%s. IDA cannot integrate index-2 "
@@ -114,12 +116,14 @@ static void say_tloop(const bg_analysis *a, int t, bg_strbuf *sb) {
 
 /* Refusals an index reduction can lift: a class 5 loop, an algebraic loop of
  * gain +1, a predicted or numeric index above 1. */
-int bg_simulate_index_problem(const bg_analysis *a) {
+int bg_simulate_index_problem(const bg_analysis *a, const bg_index_facts *f) {
   if (!a->complete || a->form == BG_FORM_INCOMPLETE) return 0;
-  return class5_loop(a) >= 0 || singular_tloop(a) >= 0 || a->index_predicted >= 2 || numeric_above_1(a);
+  return class5_loop(a) >= 0 || singular_tloop(a) >= 0 || a->index_predicted >= 2 ||
+         numeric_above_1(a, f);
 }
 
-char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int reduced) {
+char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const bg_index_facts *f,
+                                  int reduced) {
   bg_strbuf sb = {0};
   int l, t;
   if (!a->complete || a->form == BG_FORM_INCOMPLETE)
@@ -134,11 +138,12 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int r
     say_tloop(a, t, &sb);
   else if (a->index_predicted >= 2)
     say_index2(m, a, &sb);
-  else if (numeric_above_1(a))
-    say_numeric(a, &sb);
+  else if (numeric_above_1(a, f))
+    say_numeric(a, f, &sb);
   if (!sb.len) return NULL;
-  if (a->ired_status < 0 && a->ired_message && bg_simulate_index_problem(a)) {
-    const char *why = a->ired_message, *pre = "index reduction failed: ";
+  const bg_indexred *ir = f ? f->reduction : NULL;
+  if (ir && ir->status < 0 && ir->message && bg_simulate_index_problem(a, f)) {
+    const char *why = ir->message, *pre = "index reduction failed: ";
     if (!strncmp(why, pre, strlen(pre))) why += strlen(pre);
     bg_sb_printf(&sb, " Index reduction (Pantelides, dummy derivatives) was tried and failed: %s.", why);
   }
@@ -147,6 +152,6 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, int r
   return msg;
 }
 
-char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a) {
-  return bg_simulate_refusal_reduced(m, a, 0);
+char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a, const bg_index_facts *f) {
+  return bg_simulate_refusal_reduced(m, a, f, 0);
 }

@@ -29,6 +29,7 @@ typedef struct fuzz_run {
   bg_model *model;
   bg_analysis analysis;
   int analysed;
+  bg_index_facts facts; /* the reduced form and numeric index, as the run keeps them */
 } fuzz_run;
 
 /* Parses, compiles, assigns causality and analyses; 0 when the model is
@@ -74,7 +75,7 @@ static inline bg_eqsys *fuzz_eqsys(fuzz_run *f, size_t size) {
   bg_diags_init(&eqd, "fuzz", f->src, size);
   bg_eqsys *s = bg_eqsys_build(f->model, &f->analysis, &eqd);
   bg_diags_free(&eqd);
-  if (s) f->analysis.reduced_form = bg_eqred_form(s);
+  if (s) f->facts.reduced_form = bg_eqred_form(s);
   return s;
 }
 

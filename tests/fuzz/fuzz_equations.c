@@ -54,13 +54,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       if (bg_eqsys_n(s) <= 40) { /* the dense index is cubic: keep runs short */
         bg_index_result ix;
         bg_index_compute(s, f.model, &ix);
-        f.analysis.index_numeric_set = ix.index != BG_INDEX_FAILED;
-        f.analysis.index_numeric = ix.index;
+        f.facts.numeric = &ix;
+        bg_json_write_analysis(f.model, &f.analysis, &f.facts, &sb);
+        f.facts.numeric = NULL;
         bg_index_free(&ix);
       }
       exports(&f, size);
     }
-    bg_json_write_analysis(f.model, &f.analysis, &sb);
+    bg_json_write_analysis(f.model, &f.analysis, &f.facts, &sb);
     bg_sb_free(&sb);
     if (s) bg_eqsys_free(s);
     transforms(&f, size);

@@ -20,7 +20,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     bg_strbuf sb = {0};
     bg_csv_write(&r, &sb);
     bg_sb_clear(&sb);
-    bg_json_write_analysis(f.model, &f.analysis, &sb);
+    bg_json_write_analysis(f.model, &f.analysis, &f.facts, &sb);
     bg_json_append_simulation(&sb, f.model, &r, rc);
     bg_sb_free(&sb);
     bg_simresult_free(&r);

@@ -35,7 +35,7 @@ static char *json_of(const char *name, int method) {
   bg_analysis_init(&a, m);
   bg_causality_assign(m, method, &a, &dg);
   bg_strbuf sb = {0};
-  bg_json_write_analysis(m, &a, &sb);
+  bg_json_write_analysis(m, &a, NULL, &sb);
   bg_analysis_free(&a);
   bg_model_free(m);
   bg_diags_free(&dg);
@@ -149,9 +149,10 @@ static void test_generic_lists(void) {
   static int ek[1] = {0}, ep[1] = {0};
   static double ev[1] = {1e-4};
   a.nestimate = 1, a.estimate_kind = ek, a.estimate_path = ep, a.estimate_value = ev;
-  a.index_numeric_set = 1, a.index_numeric = 0, a.reduced_form = "ode";
+  bg_index_result ix = {.index = 0};
+  bg_index_facts facts = {.numeric = &ix, .reduced_form = "ode"};
   bg_strbuf sb = {0};
-  bg_json_write_analysis(m, &a, &sb);
+  bg_json_write_analysis(m, &a, &facts, &sb);
   const char *j = bg_sb_str(&sb);
   OK(has(j, "{\"id\": 1, \"bonds\": [2, 3], \"ends\": [\"R1\", \"L1\"], \"kind\": \"I-R\", "
             "\"class\": null, \"order\": 1}"));
@@ -171,10 +172,10 @@ static void test_generic_lists(void) {
   OK(has(j, "\"reduced_form\": \"ode\"\n}\n"));
   bg_sb_free(&sb);
   /* a singular pencil has no index: null, and the status says why */
-  a.index_numeric = -1;
+  ix.index = BG_INDEX_SINGULAR;
   a.npath_omitted = 7, a.ncloop_omitted = 2, a.ntloop_omitted = 3, a.tloop_capped = 1;
   sb = (bg_strbuf){0};
-  bg_json_write_analysis(m, &a, &sb);
+  bg_json_write_analysis(m, &a, &facts, &sb);
   j = bg_sb_str(&sb);
   OK(has(j, "\"numeric\": null, \"reason\": \"no zero-order path\", \"numeric_status\": \"singular\", \"disagreement\": null}"));
   OK(has(j, "\"omitted\": {\"causal_paths\": 7, \"causal_loops\": 2, \"topological_loops\": 3, "

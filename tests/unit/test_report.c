@@ -1,7 +1,7 @@
 /* The report's machinery (render/report/report_int.h): markup pieces, greedy line
  * breaking, equations as markup, table column widths and page breaks, two
  * balanced columns, headings and pages of a document; then whole reports
- * written through bg_report_write (PDF bytes, outlines, unwritable path). */
+ * rendered from a run by bg_report_render (PDF bytes, outlines). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +12,7 @@
 #include "base/fileio.h"
 #include "equations/equations.h"
 #include "report/report_int.h"
+#include "run/run.h"
 
 static void test_words(void) {
   rp_words w;
@@ -197,34 +198,30 @@ static void test_doc(void) {
   rp_doc_free(&d);
 }
 
-/* A whole report of an example: a PDF file; an unwritable path: EWRITE. */
+/* A whole report of an example's run, with its numeric index: PDF bytes
+ * that name the index; a style that does not exist: an error. */
 static void test_report(const char *name) {
-  efx f;
-  OK(efx_load(&f, name, NULL, -1, NULL, 0) == 0);
-  if (!f.s) {
-    efx_free(&f);
-    return;
-  }
-  bg_index_result ir;
-  bg_index_compute(f.s, f.m, &ir);
+  char path[512];
+  snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
+  bg_run *r = bg_run_new(NULL);
+  OK(bg_run_load_file(r, path) == 0);
+  OK(bg_run_need(r, BG_STAGE_INDEX) == 0);
+  OK(r->index_computed);
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
-  bg_report_input in = {f.m, &f.a, f.s, NULL, &ir, NULL, NULL, 0, &o, NULL, NULL, NULL};
-  char path[512];
-  snprintf(path, sizeof path, "%s/test_report_%s.pdf", BG_BINARY_DIR, name);
+  bg_report_opts ro = {&o, NULL, NULL};
   bg_diags dg;
   bg_diags_init(&dg, "test", NULL, 0);
-  INT_EQ(bg_report_write(&in, path, &dg), BG_RENDER_OK);
-  size_t len = 0;
-  char *bytes = bg_read_file(path, &len);
-  OK(bytes && len > 5000 && !memcmp(bytes, "%PDF", 4));
-  free(bytes);
-  unlink(path);
-  INT_EQ(bg_report_write(&in, "/nonexistent-dir/r.pdf", &dg), BG_RENDER_EWRITE);
+  bg_strbuf pdf = {0};
+  INT_EQ(bg_report_render(r, &ro, &pdf, &dg), BG_RENDER_OK);
+  OK(pdf.len > 5000 && !memcmp(pdf.s, "%PDF", 4));
+  bg_sb_free(&pdf);
+  o.style = "no-such-style";
+  INT_EQ(bg_report_render(r, &ro, &pdf, &dg), BG_RENDER_ERROR);
   OK(dg.nerrors >= 1);
+  bg_sb_free(&pdf);
   bg_diags_free(&dg);
-  bg_index_free(&ir);
-  efx_free(&f);
+  bg_run_free(r);
 }
 
 /* Node label positions from a scene dump ("node NAME\ttext #rrggbb X,Y
@@ -281,7 +278,8 @@ static void test_highlights_share_layout(const char *name, const char *text, int
   }
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
-  bg_report_input in = {f.m, &f.a, f.s, NULL, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL};
+  static const bg_index_facts none;
+  bg_report_input in = {f.m, &f.a, f.s, NULL, &none, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL};
   bg_diags dg;
   bg_diags_init(&dg, "test", NULL, 0);
   rp_ctx c;

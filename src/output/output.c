@@ -1,0 +1,227 @@
+/* The output table (output.h) and the writers of the analysis, the
+ * diagram, the equations, the simulation and the report. Exports are in
+ * output_export.c, the linear analysis' outputs in output_linear.c. */
+#include "output/output.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "analysis/analysis.h"
+#include "base/fileio.h"
+#include "json/json.h"
+#include "output/output_int.h"
+#include "plot/plot.h"
+#include "report/report.h"
+
+void bg_output_init(bg_output *w, bg_run *run, const bg_output_opts *o) {
+  memset(w, 0, sizeof *w);
+  w->run = run;
+  if (o) w->o = *o;
+  bg_diags_init(&w->dg, "bgdraw", NULL, 0);
+  bg_diags_init(&w->dg_model, run->name ? run->name : "bgdraw", run->src, run->srclen);
+}
+
+void bg_output_free(bg_output *w) {
+  if (w->diagram) bg_diagram_free(w->diagram);
+  w->diagram = NULL;
+  bg_diags_free(&w->dg);
+  bg_diags_free(&w->dg_model);
+  free(w->refusal);
+  w->refusal = NULL;
+}
+
+void bg_output_clear_messages(bg_output *w) {
+  bg_diags_free(&w->dg);
+  bg_diags_free(&w->dg_model);
+  bg_diags_init(&w->dg, "bgdraw", NULL, 0);
+  bg_diags_init(&w->dg_model, w->run->name ? w->run->name : "bgdraw", w->run->src, w->run->srclen);
+  free(w->refusal);
+  w->refusal = NULL;
+}
+
+bg_output_status bg_out_refuse(bg_output *w, const char *what, const char *why) {
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "%s%s", what, why);
+  free(w->refusal);
+  w->refusal = sb.s;
+  return BG_OUT_REFUSED;
+}
+
+bg_output_status bg_out_error(bg_output *w, bg_output_status st, const char *fmt, const char *a,
+                              const char *b) {
+  bg_diag_error(&w->dg, (bg_srcloc){0}, fmt, a, b);
+  return st;
+}
+
+bg_output_status bg_out_render_status(int rc) {
+  return rc == BG_RENDER_OK ? BG_OUT_OK : rc == BG_RENDER_EWRITE ? BG_OUT_WRITE : BG_OUT_USAGE;
+}
+
+/* ------------------------------------------------------------ the analysis */
+static bg_output_status write_json(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *out) {
+  (void)k, (void)form, (void)path;
+  bg_json_write_run(w->run, out);
+  return BG_OUT_OK;
+}
+
+/* --check: the model and analysis summary, the numeric index, the index reduction. */
+static bg_output_status write_check(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *sb) {
+  (void)k, (void)form, (void)path;
+  const bg_run *r = w->run;
+  bg_model_summary(r->model, sb);
+  bg_sb_putc(sb, '\n');
+  bg_analysis_summary(r->model, &r->analysis, sb);
+  if (r->index_computed) {
+    bg_sb_puts(sb, "numeric index: ");
+    if (r->index.index >= 0) bg_sb_printf(sb, "%d", r->index.index);
+    else bg_sb_puts(sb, r->index.index == BG_INDEX_SINGULAR ? "singular" : "not computed");
+    if (r->index.message) bg_sb_printf(sb, " (%s)", r->index.message);
+    bg_sb_putc(sb, '\n');
+  } else if (r->eqsys_problem) {
+    bg_sb_printf(sb, "equations: %s\n", r->eqsys_problem);
+  }
+  if (r->ired_tried) {
+    bg_sb_puts(sb, "index reduction:\n");
+    bg_indexred_text(&r->ired, "  ", sb);
+  }
+  return BG_OUT_OK;
+}
+
+/* ------------------------------------------------------------- the diagram */
+static bg_output_status write_diagram(bg_output *w, const bg_output_kind *k, const char *form,
+                                      const char *path, bg_strbuf *out) {
+  (void)k, (void)path;
+  if (!w->diagram) {
+    w->diagram = bg_diagram_build(w->run->model, &w->run->analysis, &w->o.render, &w->dg_model);
+    if (!w->diagram) return BG_OUT_USAGE;
+  }
+  return bg_out_render_status(bg_diagram_render(w->diagram, form, out, &w->dg_model));
+}
+
+/* ----------------------------------------------------------- the equations */
+bg_output_status bg_out_no_equations(bg_output *w, const char *path) {
+  return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s': %s", path ? path : "stdout",
+                      w->run->eqsys_problem ? w->run->eqsys_problem : "unknown reason");
+}
+
+static bg_output_status write_equations(bg_output *w, const bg_output_kind *k, const char *form,
+                                        const char *path, bg_strbuf *out) {
+  (void)k;
+  if (!w->run->eqsys) return bg_out_no_equations(w, path);
+  if (!strcmp(form, "c")) return bg_out_export(w, "c", NULL, out); /* header and source */
+  bg_eqprint(w->run->eqsys, form, out);
+  return BG_OUT_OK;
+}
+
+static bg_output_status write_tex(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *out) {
+  (void)k, (void)form;
+  return write_equations(w, k, "latex", path, out);
+}
+
+/* ---------------------------------------------------------- the simulation */
+static bg_output_status write_csv(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *out) {
+  (void)k, (void)form, (void)path;
+  if (!w->run->sim.nrows) return w->nothing = 1, BG_OUT_OK; /* refused: the run said why */
+  bg_csv_write(&w->run->sim, out);
+  return BG_OUT_OK;
+}
+
+/* The simulation plots, also of a partial run; none when it was refused. */
+static bg_output_status write_plot(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *out) {
+  (void)k;
+  if (!w->run->sim.nrows) return w->nothing = 1, BG_OUT_OK;
+  const bg_render_opts *ro = &w->o.render;
+  return bg_out_render_status(bg_plot_render(w->run->model, &w->run->sim, ro->style, ro->style_dir,
+                                             form, path, out, &w->dg));
+}
+
+/* ------------------------------------------------------ report, transform */
+static bg_output_status write_report(bg_output *w, const bg_output_kind *k, const char *form,
+                                     const char *path, bg_strbuf *out) {
+  (void)k, (void)form, (void)path;
+  bg_report_opts ro = {&w->o.render, w->o.tx ? w->o.transform : NULL, w->o.tx};
+  return bg_out_render_status(bg_report_render(w->run, &ro, out, &w->dg));
+}
+
+static bg_output_status write_transformed(bg_output *w, const bg_output_kind *k, const char *form,
+                                          const char *path, bg_strbuf *out) {
+  (void)k, (void)form;
+  if (!w->o.tx) return bg_out_error(w, BG_OUT_USAGE, "%s%s: a .bg output is the model --transform "
+                                    "writes; no transformation was asked for", "", path ? path : "");
+  bg_sb_puts(out, w->o.tx->text);
+  return BG_OUT_OK;
+}
+
+/* ------------------------------------------------------------------ table */
+const bg_output_kind bg_output_kinds[] = {
+    {"svg", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, SVG"},
+    {"pdf", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, PDF"},
+    {"png", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, PNG"},
+    {"dot", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the diagram's layout as Graphviz DOT"},
+    {"json", BG_STAGE_REDUCTION, BG_OUTK_MODEL_LIN, write_json, "the analysis document (docs/json.md)"},
+    {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},
+    {"equations", BG_STAGE_EQUATIONS, 0, write_equations, "the equations: text, latex, json or c"},
+    {"tex", BG_STAGE_EQUATIONS, 0, write_tex, "the equations as LaTeX"},
+    {"c", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's source (docs/export.md)"},
+    {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
+    {"py", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Python export"},
+    {"m", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Octave/MATLAB export"},
+    {"mo", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Modelica export"},
+    {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_FILE_ONLY, NULL, "an FMI 2.0 Model Exchange FMU"},
+    {"csv", BG_STAGE_SIMULATION, 0, write_csv, "the simulation's output rows"},
+    {"plot", BG_STAGE_SIMULATION, BG_OUTK_DRAWS, write_plot, "the simulation plots: svg, pdf or png"},
+    {"report", BG_STAGE_REDUCTION, BG_OUTK_DRAWS | BG_OUTK_MODEL_SIM | BG_OUTK_MODEL_LIN, write_report,
+     "the multi-page PDF report"},
+    {"linear", BG_STAGE_LINEAR, 0, bg_out_linear, "the linear analysis: text, latex, json, octave or python"},
+    {"bode", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Bode diagrams: svg, pdf or png"},
+    {"nyquist", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Nyquist diagrams: svg, pdf or png"},
+    {"step", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "step and impulse responses: svg, pdf or png"},
+    {"bg", BG_STAGE_ANALYSIS, 0, write_transformed, "the model --transform wrote"},
+    {NULL, 0, 0, NULL, NULL},
+};
+
+const bg_output_kind *bg_output_find(const char *name) {
+  for (const bg_output_kind *k = bg_output_kinds; name && k->name; k++)
+    if (!strcmp(k->name, name)) return k;
+  return NULL;
+}
+
+/* The outputs a file extension chooses: the diagram formats, json, tex, the
+ * exports, csv and bg (not check, equations, plot, report or the linear
+ * plots, which have options of their own). */
+const bg_output_kind *bg_output_for_ext(const char *ext) {
+  static const char *const by_ext[] = {"svg", "pdf", "png", "dot", "json", "tex", "c", "py",
+                                       "m", "mo", "fmu", "csv", "bg", NULL};
+  for (int i = 0; ext && by_ext[i]; i++)
+    if (!strcasecmp(ext, by_ext[i])) return bg_output_find(by_ext[i]);
+  return NULL;
+}
+
+void bg_output_need(bg_output *w, const bg_output_kind *k) {
+  bg_run *r = w->run;
+  const bg_model *m = r->model;
+  if (!m) return;
+  int lin = k->need == BG_STAGE_LINEAR || ((k->flags & BG_OUTK_MODEL_LIN) && m->linear.present);
+  int sim = k->need == BG_STAGE_SIMULATION || ((k->flags & BG_OUTK_MODEL_SIM) && m->sim.present);
+  bg_run_need(r, k->need == BG_STAGE_LINEAR || k->need == BG_STAGE_SIMULATION ? BG_STAGE_ANALYSIS
+                                                                             : k->need);
+  if (sim) bg_run_need(r, BG_STAGE_REDUCTION); /* its index decides whether it may run */
+  if (lin) bg_run_need(r, BG_STAGE_LINEAR);
+  if (sim) bg_run_need(r, BG_STAGE_SIMULATION);
+}
+
+bg_output_status bg_output_write(bg_output *w, const char *kind, const char *form, const char *path,
+                                 bg_strbuf *out) {
+  const bg_output_kind *k = bg_output_find(kind);
+  if (!k || !k->write)
+    return bg_out_error(w, BG_OUT_USAGE, "no output '%s'%s", kind ? kind : "(none)",
+                        k ? " into a buffer (it is written by the command line)" : "");
+  if (!w->run->model) return bg_out_error(w, BG_OUT_MODEL, "%s%s: the model did not load", "", kind);
+  bg_output_need(w, k);
+  w->nothing = 0;
+  if (!form && k->write == write_diagram) form = kind;
+  else if (!form && (k->flags & BG_OUTK_DRAWS) && strcmp(kind, "report"))
+    form = path ? bg_path_ext(path) : "svg"; /* the plots: their file's format */
+  return k->write(w, k, form, path, out);
+}
