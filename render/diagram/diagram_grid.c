@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "diagram/diagram_int.h"
+#include "base/sort.h"
 
 enum { SIDE_R = 1, SIDE_U = 2, SIDE_L = 4, SIDE_D = 8 };
 
@@ -120,8 +121,8 @@ static void classify(grid *g) {
 }
 
 /* ---------------------------------------------------------------- columns and rows */
-static const grid *sort_g;
-static int by_x(const void *a, const void *b) {
+static int by_x(const void *a, const void *b, void *ctx) {
+  const grid *sort_g = ctx;
   int i = *(const int *)a, j = *(const int *)b;
   double dx = sort_g->d->nx[i] - sort_g->d->nx[j], dy = sort_g->d->ny[i] - sort_g->d->ny[j];
   return dx < -0.5 ? -1 : dx > 0.5 ? 1 : dy < 0 ? -1 : dy > 0 ? 1 : i - j;
@@ -132,8 +133,7 @@ static int *order_hubs(grid *g, int *nh) {
   int *h = bg_xcalloc((size_t)g->n + 1, sizeof(int)), k = 0;
   for (int v = 0; v < g->n; v++)
     if (g->hub[v]) h[k++] = v;
-  sort_g = g;
-  qsort(h, (size_t)k, sizeof(int), by_x);
+  bg_sort(h, (size_t)k, sizeof(int), by_x, g);
   for (int i = 0, c = -1; i < k; i++) {
     if (i == 0 || g->d->nx[h[i]] - g->d->nx[h[i - 1]] > 0.5) c++;
     g->col[h[i]] = c;

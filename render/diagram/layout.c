@@ -6,6 +6,7 @@
 #include <graphviz/cgraph.h>
 #include <graphviz/gvc.h>
 #include <graphviz/graphviz_version.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -193,6 +194,10 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   const char *gv_engine = !strcmp(engine, "pinned") ? "neato" : engine;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   out->nnode = in->nnode, out->nedge = in->nedge;
+  /* Graphviz keeps process-wide state (its error level, cgraph's and the
+   * layout engines' statics, this context): one layout at a time */
+  static pthread_mutex_t gv_lock = PTHREAD_MUTEX_INITIALIZER;
+  pthread_mutex_lock(&gv_lock);
   agseterr(AGMAX); /* Graphviz warnings are ours to report, not its to print */
   /* one context per process: creating it reads Graphviz's plugin
    * configuration (slow, and it leaks inside libgvc 2.43 every time) */
@@ -218,6 +223,7 @@ int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn
   free(rev);
   free(sub);
   agclose(g);
+  pthread_mutex_unlock(&gv_lock);
   return rc == 0 ? 0 : -1;
 }
 

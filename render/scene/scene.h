@@ -95,9 +95,9 @@ void bg_scene_dump(const bg_scene *s, bg_strbuf *out);
  * end of the role ("path" counts "path 1", not "path-arrow 1"). */
 int bg_scene_count(const bg_scene *s, const char *prefix);
 
-/* Text metrics, implemented with pango in surface_cairo.c so that measuring
- * and drawing use the same font settings: the logical size in points of
- * markup set in font at size points. */
+/* Text metrics, implemented with pango in text.c with the settings the
+ * surfaces draw with: the logical size in points of markup set in font at
+ * size points. Safe to call from several threads (text.c's lock). */
 void bg_text_measure(const char *font, double size, const char *markup, double *w, double *h);
 /* Appends the first n bytes of s (or s up to its end) with pango markup's
  * special characters escaped; bg_markup_escape takes all of s. Every text

@@ -1,6 +1,7 @@
 /* Surfaces: replay a bg_scene with cairo into SVG, PDF or PNG bytes.
- * surface_cairo.c holds the replay and the pango text code shared by the
- * three format files; only these four files include cairo or pango. */
+ * surface_cairo.c holds the replay shared by the three format files, text.c
+ * the pango text set-up and measurement; only these five files include cairo
+ * or pango. */
 #ifndef BG_SURFACE_H
 #define BG_SURFACE_H
 #include "scene/scene.h"
@@ -22,9 +23,12 @@ int bg_surface_svg_cairo_write(const bg_scene *s, bg_strbuf *out);
 /* For a program that is fontconfig's only user (the bgdraw executable),
  * called before any text is measured: the renderers then load fontconfig's
  * configuration themselves, as FcInit would but without parsing every
- * template of conf.avail (surface_cairo.c). Others leave it to FcInit. */
+ * template of conf.avail (text.c). Others leave it to FcInit. A setting of
+ * the process (fontconfig's current configuration is), made once before any
+ * run starts. */
 void bg_fonts_own(void);
-/* The baseline of markup below the top of its box (pango), points. */
+/* The baseline of markup below the top of its box (pango), points; safe to
+ * call from several threads, as bg_text_measure. */
 double bg_text_baseline(const char *font, double size, const char *markup);
 int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out);
 /* scale: pixels per point (2 gives 144 dpi). */

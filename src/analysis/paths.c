@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "analysis/paths_int.h"
+#include "base/sort.h"
 
 /* Work budget of one search, in steps; past it the omitted counts are lower
  * bounds. Generous: real models need far fewer steps than this. */
@@ -130,24 +131,27 @@ static void rec_add(recs *r, const search *s, int end0, int end1, int last) {
   r->nrec++;
 }
 
-/* qsort has no context argument; the sort is short and single-threaded. */
-static const recs *sort_r;
-static const bg_model *sort_m;
-
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
 
 /* By the pair of ends (lower element id first, whichever end the bonds
  * start from), then by bond numbers in listed order. */
-static int rec_cmp(const void *pa, const void *pb) {
-  const int *x = &sort_r->meta.v[4 * *(const int *)pa];
-  const int *y = &sort_r->meta.v[4 * *(const int *)pb];
+typedef struct rec_sort {
+  const recs *r;
+  const bg_model *m;
+} rec_sort;
+
+static int rec_cmp(const void *pa, const void *pb, void *ctx) {
+  const recs *r = ((const rec_sort *)ctx)->r;
+  const bg_model *m = ((const rec_sort *)ctx)->m;
+  const int *x = &r->meta.v[4 * *(const int *)pa];
+  const int *y = &r->meta.v[4 * *(const int *)pb];
   int x0 = imin(x[0], x[1]), y0 = imin(y[0], y[1]), x1 = imax(x[0], x[1]), y1 = imax(y[0], y[1]);
   if (x0 != y0) return x0 < y0 ? -1 : 1;
   if (x1 != y1) return x1 < y1 ? -1 : 1;
   for (int i = 0; i < x[3] && i < y[3]; i++) {
-    int bx = sort_m->bond_num[sort_r->bonds.v[x[2] + i]];
-    int by = sort_m->bond_num[sort_r->bonds.v[y[2] + i]];
+    int bx = m->bond_num[r->bonds.v[x[2] + i]];
+    int by = m->bond_num[r->bonds.v[y[2] + i]];
     if (bx != by) return bx < by ? -1 : 1;
   }
   return (x[3] > y[3]) - (x[3] < y[3]);
@@ -157,9 +161,8 @@ static int rec_cmp(const void *pa, const void *pb) {
 static int *rec_order(const bg_model *m, const recs *r) {
   int *ord = bg_xcalloc((size_t)r->nrec + 1, sizeof(int));
   for (int i = 0; i < r->nrec; i++) ord[i] = i;
-  sort_r = r;
-  sort_m = m;
-  qsort(ord, (size_t)r->nrec, sizeof(int), rec_cmp);
+  rec_sort ctx = {r, m};
+  bg_sort(ord, (size_t)r->nrec, sizeof(int), rec_cmp, &ctx);
   return ord;
 }
 
@@ -313,10 +316,9 @@ static void loops_from(search *s, recs *r, const int *rank, int s0) {
   s->on[t] = 0;
 }
 
-static const bg_model *sort_model; /* qsort has no context argument */
-
-static int by_bond_number(const void *a, const void *b) {
-  int na = sort_model->bond_num[*(const int *)a], nb = sort_model->bond_num[*(const int *)b];
+static int by_bond_number(const void *a, const void *b, void *ctx) {
+  const bg_model *m = ctx;
+  int na = m->bond_num[*(const int *)a], nb = m->bond_num[*(const int *)b];
   return (na > nb) - (na < nb);
 }
 
@@ -327,8 +329,7 @@ static int *bond_ranks(const bg_model *m, int **order_out) {
   int *ord = bg_xcalloc((size_t)m->nbond + 1, sizeof(int));
   int *rank = bg_xcalloc((size_t)m->nbond + 1, sizeof(int));
   for (int b = 0; b < m->nbond; b++) ord[b] = b;
-  sort_model = m;
-  qsort(ord, (size_t)m->nbond, sizeof *ord, by_bond_number);
+  bg_sort(ord, (size_t)m->nbond, sizeof *ord, by_bond_number, (void *)m);
   for (int k = 0; k < m->nbond; k++) rank[ord[k]] = k;
   *order_out = ord;
   return rank;

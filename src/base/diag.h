@@ -73,7 +73,11 @@ int bg_diags_full(const bg_diags *d);
  * after the limit, a note that more errors were not shown. */
 void bg_diags_print(const bg_diags *d, FILE *out);
 
-/* How bg_diags_print writes, for the whole process (the CLI sets it once):
+/* How bg_diags_print writes, for the whole process: the program sets it once,
+ * before any run starts, from its own stderr (a terminal or not, NO_COLOR,
+ * --diagnostics-format), and never again, so runs on several threads only
+ * read it. A library host that wants other settings per run prints
+ * bg_diags' records itself.
  * color adds gcc's ANSI colours (the CLI: on a terminal, unless NO_COLOR);
  * json writes one JSON object a line instead of text, each error or warning
  * with its notes: {"file","line","column","severity","message","notes":[...]}. */

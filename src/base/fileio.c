@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,10 +21,14 @@
 #include "base/arena.h"
 
 /* ------------------------------------------------- the signal clean-up */
-/* The one temporary file in existence (outputs are written one at a time). */
+/* The one temporary file in existence: signal handlers are the process's,
+ * so is this slot. Outputs are written one at a time: replace_file holds
+ * replace_lock from creating the temporary file to its rename, so runs on
+ * several threads take turns (fileio.h). */
 static char pending_tmp[PATH_MAX + 64];
 static volatile sig_atomic_t pending_set;
 static int handlers_installed;
+static pthread_mutex_t replace_lock = PTHREAD_MUTEX_INITIALIZER;
 static void (*before_rename_hook)(const char *tmp);
 
 void bg_fileio_set_before_rename_hook(void (*hook)(const char *tmp)) { before_rename_hook = hook; }
@@ -59,10 +64,10 @@ static void block_signals(sigset_t *saved) {
   sigemptyset(&s);
   for (size_t i = 0; i < sizeof cleanup_signals / sizeof *cleanup_signals; i++)
     sigaddset(&s, cleanup_signals[i]);
-  sigprocmask(SIG_BLOCK, &s, saved);
+  pthread_sigmask(SIG_BLOCK, &s, saved);
 }
 
-static void restore_signals(const sigset_t *saved) { sigprocmask(SIG_SETMASK, saved, NULL); }
+static void restore_signals(const sigset_t *saved) { pthread_sigmask(SIG_SETMASK, saved, NULL); }
 
 /* ------------------------------------------------------------ helpers */
 static int write_all(int fd, const char *p, size_t len) {
@@ -182,7 +187,8 @@ static int finish_tmp(const char *tmp, const char *target, int ok) {
 }
 
 /* A regular file or a new name: replaced atomically. */
-static int replace_file(const char *target, const struct stat *old, const void *data, size_t len) {
+static int replace_file_locked(const char *target, const struct stat *old, const void *data,
+                               size_t len) {
   char *tmpl = tmp_template(target);
   int fd = create_tmp(tmpl, old);
   if (fd < 0) {
@@ -200,6 +206,15 @@ static int replace_file(const char *target, const struct stat *old, const void *
   int rc = finish_tmp(tmpl, target, ok);
   if (!ok) errno = e;
   free(tmpl);
+  return rc;
+}
+
+static int replace_file(const char *target, const struct stat *old, const void *data, size_t len) {
+  pthread_mutex_lock(&replace_lock);
+  int rc = replace_file_locked(target, old, data, len);
+  int e = errno;
+  pthread_mutex_unlock(&replace_lock);
+  errno = e;
   return rc;
 }
 

@@ -2,6 +2,17 @@
  * output can replace one), and outputs that never damage what they point at
  * (docs/cli.md, "Output files").
  *
+ * Process-wide state, on purpose, each behind a lock so runs on several
+ * threads may call every function here at once:
+ * - the set of inputs is the process's, not a run's: a program with several
+ *   runs refuses to write over a file any of them read (a stricter check,
+ *   never a weaker one), and the readers (parser, flattening, styles) need no
+ *   run handed down to them;
+ * - the signal clean-up (SIGINT, SIGTERM, SIGHUP remove the temporary file of
+ *   an atomic write) is the process's because signal handlers are: one
+ *   temporary file exists at a time, so atomic writes take turns;
+ * - bg_fileio_set_before_rename_hook is a test hook for the whole process.
+ *
  * Every function reports failure as -1 / NULL with errno set; errno may be
  * one of bgdraw's own codes below, so print it with bg_file_strerror, not
  * strerror. */

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -16,17 +17,28 @@ typedef struct file_id {
   ino_t ino;
 } file_id;
 
+/* The process's inputs (fileio.h says why one set): runs on several threads
+ * add to it and ask it under this lock. */
 static file_id *inputs;
 static int ninputs, inputs_cap;
+static pthread_mutex_t inputs_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int known(dev_t dev, ino_t ino) {
+  for (int i = 0; i < ninputs; i++)
+    if (inputs[i].dev == dev && inputs[i].ino == ino) return 1;
+  return 0;
+}
 
 static void remember(const struct stat *st) {
-  for (int i = 0; i < ninputs; i++)
-    if (inputs[i].dev == st->st_dev && inputs[i].ino == st->st_ino) return;
-  if (ninputs == inputs_cap) {
-    inputs_cap = inputs_cap ? 2 * inputs_cap : 8;
-    inputs = bg_xrealloc(inputs, (size_t)inputs_cap * sizeof *inputs);
+  pthread_mutex_lock(&inputs_lock);
+  if (!known(st->st_dev, st->st_ino)) {
+    if (ninputs == inputs_cap) {
+      inputs_cap = inputs_cap ? 2 * inputs_cap : 8;
+      inputs = bg_xrealloc(inputs, (size_t)inputs_cap * sizeof *inputs);
+    }
+    inputs[ninputs++] = (file_id){st->st_dev, st->st_ino};
   }
-  inputs[ninputs++] = (file_id){st->st_dev, st->st_ino};
+  pthread_mutex_unlock(&inputs_lock);
 }
 
 void bg_input_note(const char *path) {
@@ -37,9 +49,10 @@ void bg_input_note(const char *path) {
 int bg_path_is_input(const char *path) {
   struct stat st;
   if (stat(path, &st) != 0) return 0;
-  for (int i = 0; i < ninputs; i++)
-    if (inputs[i].dev == st.st_dev && inputs[i].ino == st.st_ino) return 1;
-  return 0;
+  pthread_mutex_lock(&inputs_lock);
+  int yes = known(st.st_dev, st.st_ino);
+  pthread_mutex_unlock(&inputs_lock);
+  return yes;
 }
 
 const char *bg_file_strerror(int err) {

@@ -12,6 +12,7 @@
 #include "equations/eqsym.h"
 #include "equations/index.h"
 #include "equations/indexred_int.h"
+#include "base/sort.h"
 
 enum {
   IR_MAX_UNKNOWNS = 500, /* dense selection and index check, like the numeric index */
@@ -262,9 +263,9 @@ static int pref_key(const ir_work *W, int v) {
   return (g * (W->n + 1) + j) * (IR_MAX_ORDER + 2) + W->v_ord[v];
 }
 
-static const ir_work *sort_w; /* qsort has no context argument in C11 */
-static int cmp_pref(const void *a, const void *b) {
-  int ka = pref_key(sort_w, *(const int *)a), kb = pref_key(sort_w, *(const int *)b);
+static int cmp_pref(const void *a, const void *b, void *ctx) {
+  const ir_work *W = ctx;
+  int ka = pref_key(W, *(const int *)a), kb = pref_key(W, *(const int *)b);
   return ka < kb ? -1 : ka > kb;
 }
 
@@ -293,8 +294,7 @@ static double jac_entry(ir_work *W, int e, int v) {
 /* nh columns of dH/dZ, in the order of preference, that are independent at
  * the initial point; they become dummy derivatives. Rows scaled by their max. */
 static int select_dummies(ir_work *W, const int *H, int nh, int *Z, int nz, int *sel) {
-  sort_w = W;
-  qsort(Z, (size_t)nz, sizeof *Z, cmp_pref);
+  bg_sort(Z, (size_t)nz, sizeof *Z, cmp_pref, W);
   double *G = bg_xcalloc((size_t)nh * nz + 1, sizeof(double)), *M = bg_xmalloc(((size_t)nh * nz + 1) * sizeof(double));
   for (int c = 0; c < nz; c++)
     for (int r = 0; r < nh; r++) G[(size_t)c * nh + r] = jac_entry(W, H[r], Z[c]);

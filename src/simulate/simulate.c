@@ -10,6 +10,7 @@
 
 #include "model/model.h"
 #include "simulate/simulate_int.h"
+#include "base/sort.h"
 
 #define SIM_DEFAULT_ATOL 1e-9
 #define SIM_DEFAULT_ROWS 500
@@ -173,10 +174,9 @@ typedef struct byname {
   int *ids; /* element ids sorted by name: the look-up per unknown must not be linear */
 } byname;
 
-static const bg_model *sort_model; /* qsort has no context argument in C11 */
-
-static int cmp_elem(const void *x, const void *y) {
-  return strcmp(sort_model->elem_name[*(const int *)x], sort_model->elem_name[*(const int *)y]);
+static int cmp_elem(const void *x, const void *y, void *ctx) {
+  const bg_model *m = ctx;
+  return strcmp(m->elem_name[*(const int *)x], m->elem_name[*(const int *)y]);
 }
 
 static int find_elem(const byname *bn, const char *name, size_t len) {
@@ -209,8 +209,7 @@ static double store_scale(const byname *bn, const char *name) {
 static byname byname_make(const bg_model *m) {
   byname bn = {m, bg_xmalloc((size_t)(m->nelem > 0 ? m->nelem : 1) * sizeof(int))};
   for (int e = 0; e < m->nelem; e++) bn.ids[e] = e;
-  sort_model = m;
-  qsort(bn.ids, (size_t)m->nelem, sizeof(int), cmp_elem);
+  bg_sort(bn.ids, (size_t)m->nelem, sizeof(int), cmp_elem, (void *)m);
   return bn;
 }
 

@@ -1,0 +1,13 @@
+/* bg_sort: qsort with a context argument for the comparison, so that no
+ * sort in the engine keeps its context in a global (two runs on two threads
+ * must not share one). It is glibc's qsort_r: the same algorithm as qsort,
+ * so every order the engine produced with qsort (ties and comparisons with a
+ * tolerance included) stays the same byte for byte. qsort_r is a GNU
+ * extension; this file is the one place that asks for it. */
+#ifndef BG_SORT_H
+#define BG_SORT_H
+#include <stddef.h>
+
+typedef int (*bg_sort_cmp)(const void *a, const void *b, void *ctx);
+void bg_sort(void *base, size_t n, size_t size, bg_sort_cmp cmp, void *ctx);
+#endif
