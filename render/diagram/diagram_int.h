@@ -144,13 +144,8 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
 /* The index of the candidate centre with the lowest score (the first on
  * ties); its box becomes an obstacle. */
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);
-/* Moves a w × h label centred at *p to the best of a few positions above
- * and below, and registers it. */
-void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p);
 
 /* signals (diagram_signals.c) */
-/* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
-bg_vec bg_node_exit(const bg_diagram *d, int n, bg_vec toward, double gap);
 /* The user state signal i comes from, or -1. */
 int bg_signal_state(const bg_model *m, int i);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */

@@ -262,14 +262,6 @@ int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) 
   return best;
 }
 
-void bg_place_label(bg_diagram *d, double w, double h, bg_vec *p) {
-  static const double steps[] = {0, 1, -1, 2, -2, 3, -3, 4, -4};
-  enum { N = sizeof steps / sizeof steps[0] };
-  bg_vec cand[N];
-  for (int k = 0; k < N; k++) cand[k] = bg_v(p->x, p->y + steps[k] * (h + 1));
-  *p = cand[bg_place_best(d, cand, N, w, h)];
-}
-
 void bg_obstacle_nodes(bg_diagram *d) {
   for (int i = 0; i < d->nnode; i++)
     bg_obstacle_rect(d, d->nx[i] - d->nw[i] / 2, d->ny[i] - d->nh[i] / 2, d->nx[i] + d->nw[i] / 2,

@@ -10,7 +10,8 @@
 
 #include "diagram/diagram_int.h"
 
-bg_vec bg_node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
+/* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
+static bg_vec node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
   return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
 }
 
@@ -95,7 +96,7 @@ static void signal_head(bg_diagram *d, sigrole role, bg_vec tip, bg_vec dir, int
 static void signal_to_node(bg_diagram *d, sigrole role, bg_vec p0, int to, bg_vec bow, int hot) {
   bg_vec ct = bg_v(d->nx[to], d->ny[to]);
   bg_vec aim = bg_vlen(bow) > 0 ? bg_vadd(bg_vscale(bg_vadd(p0, ct), 0.5), bow) : p0;
-  bg_vec p1 = bg_node_exit(d, to, aim, 1.5);
+  bg_vec p1 = node_exit(d, to, aim, 1.5);
   signal_item(d, role, hot);
   bg_scene_move(&d->scene, p0.x, p0.y);
   bg_vec dir;
@@ -206,16 +207,16 @@ static void signal_between(bg_diagram *d, sigrole role, int from, int to, int ho
     bow = clear_bow(d, from, to, len);
   }
   if (b >= 0 || bg_vlen(bow) > 0) aim = bg_vadd(bg_vscale(bg_vadd(cf, ct), 0.5), bow);
-  signal_to_node(d, role, bg_node_exit(d, from, aim, 0), to, bow, hot);
+  signal_to_node(d, role, node_exit(d, from, aim, 0), to, bow, hot);
 }
 
 /* Self-modulation: a loop leaving the box and coming back, on its free side. */
 static void signal_self(bg_diagram *d, sigrole role, int e, int hot) {
   bg_vec c = bg_v(d->nx[e], d->ny[e]), dir = bg_free_direction(d, e), n = bg_vleft(dir);
   /* leave and re-enter the box 8 pt either side of where `dir` leaves it */
-  bg_vec q = bg_node_exit(d, e, bg_vadd(c, bg_vscale(dir, 100)), 0);
-  bg_vec p0 = bg_node_exit(d, e, bg_vadd(q, bg_vscale(n, 8)), 0);
-  bg_vec p1 = bg_node_exit(d, e, bg_vsub(q, bg_vscale(n, 8)), 1.5);
+  bg_vec q = node_exit(d, e, bg_vadd(c, bg_vscale(dir, 100)), 0);
+  bg_vec p0 = node_exit(d, e, bg_vadd(q, bg_vscale(n, 8)), 0);
+  bg_vec p1 = node_exit(d, e, bg_vsub(q, bg_vscale(n, 8)), 1.5);
   bg_vec c1 = bg_vadd(p0, bg_vadd(bg_vscale(dir, 24), bg_vscale(n, 10)));
   bg_vec c2 = bg_vadd(p1, bg_vsub(bg_vscale(dir, 24), bg_vscale(n, 10)));
   bg_vec adir = bg_vunit(bg_vsub(p1, c2)), end = bg_vsub(p1, bg_vscale(adir, ALEN * 0.8));

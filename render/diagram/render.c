@@ -97,11 +97,3 @@ void bg_diagram_size(const bg_diagram *d, double *w, double *h) {
   *w = d->scene.width, *h = d->scene.height;
 }
 
-int bg_render_file(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
-                   const char *path, const char *format, bg_diags *dg) {
-  bg_diagram *d = bg_diagram_build(m, a, o, dg);
-  if (!d) return BG_RENDER_ERROR;
-  int rc = bg_diagram_write(d, path, format, dg);
-  bg_diagram_free(d);
-  return rc;
-}

@@ -33,7 +33,7 @@ enum {
                     BG_SHOW_LABELS
 };
 
-/* Return values of bg_diagram_write / bg_render_file. */
+/* Return values of bg_diagram_write and bg_diagram_render. */
 enum { BG_RENDER_OK = 0, BG_RENDER_ERROR = -1, BG_RENDER_EWRITE = -2 };
 
 typedef struct bg_render_opts {
@@ -99,9 +99,6 @@ const char *bg_diagram_engine(const bg_diagram *d);
 void bg_diagram_size(const bg_diagram *d, double *w, double *h);
 void bg_diagram_free(bg_diagram *d);
 
-/* One-shot: build and write one file. Same returns as bg_diagram_write. */
-int bg_render_file(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
-                   const char *path, const char *format, bg_diags *dg);
 /* "Graphviz X, cairo Y, pango Z": the rendering libraries bgdraw was built with. */
 void bg_render_versions(bg_strbuf *out);
 #endif

@@ -43,15 +43,15 @@ bg_scene *rp_scene(rp_doc *d) {
   return &d->page[d->npage - 1]->sc;
 }
 
-double rp_page_w(const rp_doc *d) { return d->npage ? d->page[d->npage - 1]->sc.width : RP_A4_W; }
-double rp_page_h(const rp_doc *d) { return d->npage ? d->page[d->npage - 1]->sc.height : RP_A4_H; }
+static double page_w(const rp_doc *d) { return d->npage ? d->page[d->npage - 1]->sc.width : RP_A4_W; }
+static double page_h(const rp_doc *d) { return d->npage ? d->page[d->npage - 1]->sc.height : RP_A4_H; }
 double rp_left(void) { return RP_MARGIN_X; }
-double rp_content_w(const rp_doc *d) { return rp_page_w(d) - 2 * RP_MARGIN_X; }
-double rp_page_room(const rp_doc *d) { return rp_page_h(d) - RP_MARGIN_TOP - RP_MARGIN_BOTTOM; }
+double rp_content_w(const rp_doc *d) { return page_w(d) - 2 * RP_MARGIN_X; }
+double rp_page_room(const rp_doc *d) { return page_h(d) - RP_MARGIN_TOP - RP_MARGIN_BOTTOM; }
 
 double rp_room(const rp_doc *d) {
   if (!d->npage) return RP_A4_H - RP_MARGIN_TOP - RP_MARGIN_BOTTOM;
-  return rp_page_h(d) - RP_MARGIN_BOTTOM - d->y;
+  return page_h(d) - RP_MARGIN_BOTTOM - d->y;
 }
 
 static int page_empty(const rp_doc *d) { return d->npage && d->y <= RP_MARGIN_TOP + 0.01; }

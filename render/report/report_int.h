@@ -112,8 +112,6 @@ void rp_doc_free(rp_doc *d);
 /* Starts a page (A4, landscape when asked); the cursor goes to the top margin. */
 void rp_new_page(rp_doc *d, int landscape);
 bg_scene *rp_scene(rp_doc *d);
-double rp_page_w(const rp_doc *d);
-double rp_page_h(const rp_doc *d);
 double rp_left(void);
 double rp_content_w(const rp_doc *d);
 /* Room left below the cursor on the last page. */
@@ -165,7 +163,6 @@ void rp_table_text(rp_table *t, const char *plain);
 /* Lays the table out at the cursor, splitting it across pages with the
  * header row repeated, then frees its cells. */
 void rp_table_emit(rp_doc *d, rp_table *t);
-void rp_table_free(rp_table *t);
 /* Column widths: natural (unwrapped) and minimum (widest piece) widths of
  * each column; every column gets its natural width when they all fit in
  * avail, else its minimum plus a share of the rest proportional to what it
@@ -248,8 +245,4 @@ void rp_sec_transform(rp_ctx *c);
 /* report_summary.c: the title page with the summary and the contents of
  * body (page numbers counted after the front pages). */
 void rp_front(rp_ctx *c, rp_doc *front);
-/* The one-sentence verdict, plain text. */
-void rp_verdict(const rp_ctx *c, bg_strbuf *out);
-/* "ode", "DAE", index words shared by sections. */
-void rp_index_text(const rp_ctx *c, bg_strbuf *out);
 #endif

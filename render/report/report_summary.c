@@ -67,7 +67,8 @@ static void sim_clause(const rp_ctx *c, bg_strbuf *out, int said_refusal) {
     bg_sb_printf(out, "; the simulation failed at t = %.6g s", r->t_reached);
 }
 
-void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
+/* The one-sentence verdict, plain text. */
+static void verdict(const rp_ctx *c, bg_strbuf *out) {
   const bg_analysis *a = c->a;
   const bg_report_input *in = c->in;
   if (!a->complete || a->form == BG_FORM_INCOMPLETE) {
@@ -110,7 +111,8 @@ void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
   bg_sb_puts(out, ".");
 }
 
-void rp_index_text(const rp_ctx *c, bg_strbuf *out) {
+/* "ode", "DAE", index words. */
+static void index_text(const rp_ctx *c, bg_strbuf *out) {
   const bg_report_input *in = c->in;
   if (in->index && in->index->index >= 0) bg_sb_printf(out, "%d", in->index->index);
   else if (in->index && in->index->index == BG_INDEX_SINGULAR) bg_sb_puts(out, "singular pencil");
@@ -195,7 +197,7 @@ static void summary_table(const rp_ctx *c, rp_doc *d) {
   if (a->index_reason) bg_sb_printf(&b, " (%s)", a->index_reason);
   row(&t, "Predicted index", bg_sb_str(&b));
   bg_sb_clear(&b);
-  rp_index_text(c, &b);
+  index_text(c, &b);
   row(&t, "Numeric index", bg_sb_str(&b));
   bg_sb_free(&b);
   sim_row(c, &t);
@@ -242,7 +244,7 @@ static void title_block(const rp_ctx *c, rp_doc *d) {
 
 static void verdict_box(const rp_ctx *c, rp_doc *d) {
   bg_strbuf v = {0}, mk = {0};
-  rp_verdict(c, &v);
+  verdict(c, &v);
   rp_esc(&mk, bg_sb_str(&v));
   double size = RP_SIZE_H2, pad = 10, w = rp_content_w(d) - 2 * pad;
   rp_lines l;

@@ -43,7 +43,7 @@ void rp_table_text(rp_table *t, const char *plain) {
   bg_sb_free(&b);
 }
 
-void rp_table_free(rp_table *t) {
+static void table_free(rp_table *t) {
   for (int i = 0; i < t->ncell; i++) free(t->cell[i]);
   free(t->cell);
   t->cell = NULL;
@@ -221,5 +221,5 @@ void rp_table_emit(rp_doc *d, rp_table *t) {
   d->y += 6;
   free(page);
   free_layout(t, &L);
-  rp_table_free(t);
+  table_free(t);
 }

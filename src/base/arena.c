@@ -82,21 +82,10 @@ char *bg_arena_strdup(bg_arena *a, const char *s) {
   return bg_arena_strndup(a, s, strlen(s));
 }
 
-bg_arena_mark bg_arena_get_mark(const bg_arena *a) {
-  bg_arena_mark m = {a->head, a->head ? a->head->used : 0};
-  return m;
-}
-
-void bg_arena_release(bg_arena *a, bg_arena_mark m) {
-  while (a->head && a->head != m.block) {
+void bg_arena_free(bg_arena *a) {
+  while (a->head) {
     bg_arena_block *prev = a->head->prev;
     free(a->head);
     a->head = prev;
   }
-  if (a->head) a->head->used = m.used;
-}
-
-void bg_arena_free(bg_arena *a) {
-  bg_arena_mark none = {NULL, 0};
-  bg_arena_release(a, none);
 }

@@ -1,4 +1,4 @@
-/* Arena: a bump allocator with mark/release, for data that lives as long as
+/* Arena: a bump allocator, for data that lives as long as
  * one stage (the AST, a compiled model, an analysis). */
 #ifndef BG_ARENA_H
 #define BG_ARENA_H
@@ -9,19 +9,12 @@ typedef struct bg_arena {
   bg_arena_block *head;
 } bg_arena;
 
-typedef struct bg_arena_mark {
-  bg_arena_block *block;
-  size_t used;
-} bg_arena_mark;
-
 /* Zero-filled memory from the arena, aligned for any type; never NULL
  * (aborts on out-of-memory through bg_fatal). */
 void *bg_arena_alloc(bg_arena *a, size_t size);
 /* A copy of s (len bytes, NUL added) owned by the arena. */
 char *bg_arena_strndup(bg_arena *a, const char *s, size_t len);
 char *bg_arena_strdup(bg_arena *a, const char *s);
-bg_arena_mark bg_arena_get_mark(const bg_arena *a);
-void bg_arena_release(bg_arena *a, bg_arena_mark m);
 void bg_arena_free(bg_arena *a);
 
 /* Internal invariant failure: prints file:line and aborts. */

@@ -47,9 +47,7 @@ int bg_ceng_open(const bg_ceng *E, int b); /* no stroke and not split */
 void bg_ceng_set(bg_ceng *E, int b, int stroke, int reason);
 /* Marks bond b split by an inserted 1-junction (Lagrange): away from both ends. */
 void bg_ceng_split(bg_ceng *E, int b);
-void bg_ceng_queue(bg_ceng *E, int e);
 void bg_ceng_propagate(bg_ceng *E);
-void bg_ceng_rollback(bg_ceng *E, int mark);
 /* Assigns, propagates and keeps the result only if no node's rule became
  * more violated; returns 1 when kept. */
 int bg_ceng_try(bg_ceng *E, int b, int stroke, int reason);
@@ -86,6 +84,4 @@ void bg_ceng_vandijk(bg_ceng *E);
 void bg_ceng_finish(bg_ceng *E);
 /* The generalised force of Lagrange source i in words (causality_lagrange.c). */
 void bg_ceng_lag_force(const bg_ceng *E, int i, struct bg_strbuf *sb);
-/* Number of conflicts (nodes with badness) in the current assignment. */
-int bg_ceng_count_conflicts(const bg_ceng *E);
 #endif

@@ -60,12 +60,6 @@ static void add_conflict(const bg_ceng *E, conflicts *c, int e) {
   bg_ivec_push(&c->n, c->bonds.n - c->adr.v[c->adr.n - 1]);
 }
 
-int bg_ceng_count_conflicts(const bg_ceng *E) {
-  int n = 0;
-  for (int e = 0; e < E->m->nelem; e++) n += bg_ceng_badness(E, e) > 0;
-  return n;
-}
-
 /* One trace line per conflict, after the steps, so the report says where
  * the rules broke and how many algebraic constraints each one brings. */
 static void trace_conflict(bg_ceng *E, const conflicts *c, int i) {

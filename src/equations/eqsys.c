@@ -11,7 +11,7 @@
 #include "analysis/analysis.h"
 
 /* ------------------------------------------------------------ equation trees */
-int bg_eqs_node(bg_eqsys *s, int kind, int a, int b, double c) {
+static int new_node(bg_eqsys *s, int kind, int a, int b, double c) {
   if (s->nnode == s->capnode) {
     s->capnode = s->capnode ? 2 * s->capnode : 256;
     s->node = bg_xrealloc(s->node, (size_t)s->capnode * sizeof *s->node);
@@ -31,15 +31,15 @@ static int lin_push(bg_eqsys *s, double c, int nd) {
   return s->nlin++;
 }
 
-static int n_sig(bg_eqsys *s, int sig) { return bg_eqs_node(s, EQ_SIG, sig, 0, 0); }
-static int n_x(bg_eqsys *s, int root) { return bg_eqs_node(s, EQ_X, root, 0, 0); }
-static int n_mul(bg_eqsys *s, int x, int y) { return bg_eqs_node(s, EQ_MUL, x, y, 0); }
-static int n_div(bg_eqsys *s, int x, int y) { return bg_eqs_node(s, EQ_DIV, x, y, 0); }
+static int n_sig(bg_eqsys *s, int sig) { return new_node(s, EQ_SIG, sig, 0, 0); }
+static int n_x(bg_eqsys *s, int root) { return new_node(s, EQ_X, root, 0, 0); }
+static int n_mul(bg_eqsys *s, int x, int y) { return new_node(s, EQ_MUL, x, y, 0); }
+static int n_div(bg_eqsys *s, int x, int y) { return new_node(s, EQ_DIV, x, y, 0); }
 /* c1*x1 + c2*x2 (x2 < 0: one term). */
 static int n_lin2(bg_eqsys *s, double c1, int x1, double c2, int x2) {
   int adr = lin_push(s, c1, x1);
   if (x2 >= 0) lin_push(s, c2, x2);
-  return bg_eqs_node(s, EQ_LIN, adr, x2 >= 0 ? 2 : 1, 0);
+  return new_node(s, EQ_LIN, adr, x2 >= 0 ? 2 : 1, 0);
 }
 /* x scaled by sg (+1: x itself). */
 static int n_signed(bg_eqsys *s, int sg, int x) { return sg > 0 ? x : n_lin2(s, -1, x, 0, -1); }
@@ -75,7 +75,7 @@ typedef struct derive {
 static int split_head(bg_eqsys *s, int *sig, int *form, int *root, int elem) {
   int b = *sig / 2;
   if ((*sig & 1) || !bg_analysis_bond_split(s->a, b) || s->m->bond_head[b] != elem) return 0;
-  if (*form == EQF_EXPLICIT) *root = n_lin2(s, 1, bg_eqs_node(s, EQ_SIG, *sig, 0, 0), -1, *root);
+  if (*form == EQF_EXPLICIT) *root = n_lin2(s, 1, new_node(s, EQ_SIG, *sig, 0, 0), -1, *root);
   *form = EQF_IMPLICIT;
   *sig += 1;
   return 1;
@@ -107,7 +107,7 @@ static int junction_sum(bg_eqsys *s, int e, int fl, int skip, double k) {
     lin_push(s, k * sigma(m, x, e), n_sig(s, 2 * x + fl));
     cnt++;
   }
-  return bg_eqs_node(s, EQ_LIN, adr, cnt, 0); /* n_sig adds no terms: contiguous */
+  return new_node(s, EQ_LIN, adr, cnt, 0); /* n_sig adds no terms: contiguous */
 }
 
 /* 0-junction (fl = 1: its flows balance, efforts equal) or 1-junction (fl = 0).
@@ -235,15 +235,15 @@ static void eq_store(derive *d, int e, int b) {
   int integral = bg_paths_store_integral(m, s->a, e), x = m->elem_expr[e];
   int val = m->elem_form[e] == BG_FORM_VALUE;
   if (integral) {
-    int out = val ? n_div(s, bg_eqs_node(s, EQ_Y, y, 0, 0), n_x(s, x)) : n_x(s, x);
+    int out = val ? n_div(s, new_node(s, EQ_Y, y, 0, 0), n_x(s, x)) : n_x(s, x);
     set_eq(d, st, EQF_EXPLICIT, out, e, val ? "value" : "law");
     s->row_kind[y] = 0;
     s->row_root[y] = n_signed(s, sg, n_sig(s, in));
     return;
   }
-  set_eq(d, in, EQF_EXPLICIT, n_signed(s, sg, bg_eqs_node(s, EQ_YP, y, 0, 0)), e, "rate");
+  set_eq(d, in, EQF_EXPLICIT, n_signed(s, sg, new_node(s, EQ_YP, y, 0, 0)), e, "rate");
   s->row_kind[y] = 1;
-  s->row_root[y] = val ? n_lin2(s, 1, bg_eqs_node(s, EQ_Y, y, 0, 0), -1,
+  s->row_root[y] = val ? n_lin2(s, 1, new_node(s, EQ_Y, y, 0, 0), -1,
                                 n_mul(s, n_x(s, x), n_sig(s, st)))
                        : n_lin2(s, 1, n_x(s, x), -1, n_sig(s, st));
 }

@@ -6,9 +6,7 @@
 #define BG_EQSYS_INT_H
 #include "equations/eqtape.h"
 
-/* eqsys.c */
-int bg_eqs_node(bg_eqsys *s, int kind, int a, int b, double c);
-/* Makes signal sig the next algebraic unknown, with its residual row. */
+/* eqsys.c: makes signal sig the next algebraic unknown, with its residual row. */
 void bg_eqsys_add_z(bg_eqsys *s, int sig);
 /* eqsys_order.c: dependency lists, tearing and the computational order. */
 void bg_eqs_deps(bg_eqsys *s);

@@ -27,9 +27,6 @@ extern const bg_xlang bg_xlang_c, bg_xlang_python, bg_xlang_octave;
 void bg_xl_slot(const bg_xlang *L, bg_strbuf *o, const char *arr, int k);
 /* A number literal that reads back exactly (inf and nan spelled per language). */
 void bg_xl_num(const bg_xlang *L, bg_strbuf *o, double c);
-/* "arr[out] = value;" for tape instruction I. */
-void bg_xl_value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
-                      bg_strbuf *o);
 /* Statements that set every constant slot and every param slot (from the
  * parameter record: pfmt is a printf format with %s for the field name,
  * e.g. "p->%s", "p['%s']", "p.%s"). */

@@ -89,8 +89,9 @@ static void lin_value(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, con
   if (!I->a[0]) bg_sb_puts(o, "0");
 }
 
-void bg_xl_value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
-                      bg_strbuf *o) {
+/* "arr[out] = value;" for tape instruction I. */
+static void value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
+                       bg_strbuf *o) {
   static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1",
                                 [BG_X_MUL] = "%0 * %1", [BG_X_DIV] = "%0 / %1"};
   bg_sb_puts(o, L->indent);
@@ -131,7 +132,7 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 }
 
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o) {
-  for (int k = c0; k < c1; k++) bg_xl_value_stmt(L, s, &s->code[k], arr, o);
+  for (int k = c0; k < c1; k++) value_stmt(L, s, &s->code[k], arr, o);
 }
 
 void bg_export_ident(const char *name, char *buf, size_t n) {

@@ -93,7 +93,9 @@ static void put_control(bg_strbuf *o, const bg_simresult *r) {
   bg_sb_printf(o, ", \"reached\": %s}", r->control_short ? "false" : "true");
 }
 
-void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
+/* Appends `  "simulation": {...}` (no trailing comma or newline) to o.
+ * status is bg_simulate's return: 0 ok, 1 refused, 2 failed. */
+static void write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *o) {
   bg_sb_puts(o, "  \"simulation\": {\n    \"status\": ");
   bg_sb_json_str(o, status_name(status));
   bg_sb_puts(o, ",\n    \"message\": ");
@@ -161,6 +163,6 @@ int bg_json_reopen(bg_strbuf *doc) {
 void bg_json_append_simulation(bg_strbuf *doc, const bg_model *m, const bg_simresult *r,
                                int status) {
   if (bg_json_reopen(doc)) return;
-  bg_json_write_simulation(m, r, status, doc);
+  write_simulation(m, r, status, doc);
   bg_sb_puts(doc, "\n}\n");
 }

@@ -8,9 +8,6 @@
 #include "simulate/simulate.h"
 #include "base/strbuf.h"
 
-/* Appends `  "simulation": {...}` (no trailing comma or newline) to out.
- * status is bg_simulate's return: 0 ok, 1 refused, 2 failed. */
-void bg_json_write_simulation(const bg_model *m, const bg_simresult *r, int status, bg_strbuf *out);
 
 /* Adds the key to a finished analysis document (bg_json_write_analysis,
  * ending "\n}\n") as its last key. Leaves doc unchanged if it does not end so. */

@@ -1,6 +1,7 @@
-/* The flattener, part 1: the driver, name tables, used files and submodel
- * definitions (their names, bond numbers and bond spans). Instances and
- * expressions are in flatten_expand.c, ports and flat bonds in flatten_bonds.c. */
+/* The flattener, part 1: the driver, used files and submodel definitions
+ * (their names, bond numbers and bond spans). Instances and expressions are
+ * in flatten_expand.c, ports and flat bonds in flatten_bonds.c, the name
+ * tables and growable arrays all three use in flatten_scope.c. */
 #undef _POSIX_C_SOURCE
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
@@ -14,80 +15,6 @@
 #include "lang/parse.h"
 
 enum { MAX_USE_DEPTH = 64 };
-
-void *bg_fl_push(void *arr, int *n, size_t size) {
-  int k = (*n)++;
-  if ((k & (k - 1)) == 0) /* 0, 1, 2, 4, ...: grow to the next power of two */
-    arr = bg_xrealloc(arr, (size_t)(k ? 2 * k : 1) * size);
-  memset((char *)arr + (size_t)k * size, 0, size);
-  return arr;
-}
-
-const char *bg_fl_strdup(fl_flattener *f, const char *s) {
-  return s ? bg_arena_strdup(&f->out->arena, s) : NULL;
-}
-
-const char *bg_fl_join(fl_flattener *f, const char *prefix, const char *name) {
-  return bg_ast_join(&f->out->arena, prefix, name);
-}
-
-/* ---------------------------------------------------------------- name tables */
-static unsigned hash_str(const char *s) {
-  unsigned h = 2166136261u;
-  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
-  return h;
-}
-
-static void scope_rehash(fl_scope *s) {
-  free(s->hash);
-  s->hashcap = 16;
-  while (s->hashcap < 2 * s->n + 2) s->hashcap *= 2;
-  s->hash = bg_xmalloc((size_t)s->hashcap * sizeof *s->hash);
-  for (int i = 0; i < s->hashcap; i++) s->hash[i] = -1;
-  for (int i = 0; i < s->n; i++) {
-    unsigned h = hash_str(s->e[i].name) & (unsigned)(s->hashcap - 1);
-    while (s->hash[h] >= 0) h = (h + 1) & (unsigned)(s->hashcap - 1);
-    s->hash[h] = i;
-  }
-}
-
-const sc_entry *bg_fl_lookup(const fl_scope *s, const char *name) {
-  if (!s->hash) return NULL;
-  unsigned h = hash_str(name) & (unsigned)(s->hashcap - 1);
-  for (; s->hash[h] >= 0; h = (h + 1) & (unsigned)(s->hashcap - 1))
-    if (strcmp(s->e[s->hash[h]].name, name) == 0) return &s->e[s->hash[h]];
-  return NULL;
-}
-
-const sc_entry *bg_fl_declare(fl_scope *s, const char *name, int kind, int index, bg_srcloc loc) {
-  const sc_entry *old = bg_fl_lookup(s, name);
-  if (old) return old;
-  *FL_PUSH(s->e, s->n) = (sc_entry){name, kind, index, loc};
-  if (2 * s->n + 2 > s->hashcap) scope_rehash(s);
-  else {
-    unsigned h = hash_str(name) & (unsigned)(s->hashcap - 1);
-    while (s->hash[h] >= 0) h = (h + 1) & (unsigned)(s->hashcap - 1);
-    s->hash[h] = s->n - 1;
-  }
-  return NULL;
-}
-
-void bg_fl_scope_free(fl_scope *s) {
-  free(s->e);
-  free(s->hash);
-  memset(s, 0, sizeof *s);
-}
-
-const char *bg_fl_suggest(const fl_scope *s, const char *name, unsigned mask) {
-  const char *best = NULL;
-  int bestd = strlen(name) < 3 ? 2 : 3;
-  for (int i = 0; i < s->n; i++) {
-    if (!(mask & (1u << s->e[i].kind))) continue;
-    int d = bg_edit_distance(name, s->e[i].name);
-    if (d > 0 && d < bestd) { bestd = d; best = s->e[i].name; }
-  }
-  return best;
-}
 
 /* ---------------------------------------------------------------- definitions */
 static int def_is_model(const fl_def *d) { return d->head == NULL; }
@@ -163,7 +90,8 @@ static void number_def_bonds(fl_flattener *f, fl_def *d) {
   free(bonds);
 }
 
-void bg_fl_def_names(fl_flattener *f, int di) {
+/* Builds the def's scope and numbers its bonds (once); reports mistakes. */
+static void def_names(fl_flattener *f, int di) {
   fl_def *d = &f->defs[di];
   if (d->names_built) return;
   d->names_built = 1;
@@ -360,7 +288,7 @@ bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
   fl_def *model = FL_PUSH(f.defs, f.ndefs);
   model->name = "the model";
   load_file(&f, 0, 0);
-  for (int i = 0; i < f.ndefs; i++) bg_fl_def_names(&f, i);
+  for (int i = 0; i < f.ndefs; i++) def_names(&f, i);
   for (int i = 1; i < f.ndefs && dg->nerrors == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
   if (dg->nerrors == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});
   if (dg->nerrors == errors0) bg_fl_expand_model(&f, 0);

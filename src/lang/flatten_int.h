@@ -1,6 +1,7 @@
 /* Internal to the flattener (flatten*.c): the state of one flattening. */
 #ifndef BG_FLATTEN_INT_H
 #define BG_FLATTEN_INT_H
+#include "base/strindex.h"
 #include "lang/flatten.h"
 
 /* What a name of a scope (the model or one submodel definition) is. */
@@ -13,12 +14,11 @@ typedef struct sc_entry {
   bg_srcloc loc;
 } sc_entry;
 
-/* A name table: entries in declaration order, open-addressing hash. */
+/* A name table: entries in declaration order, their names hashed. */
 typedef struct fl_scope {
   sc_entry *e;
   int n, cap;
-  int *hash;
-  int hashcap;
+  bg_strindex names;
 } fl_scope;
 
 typedef struct fl_file {
@@ -126,8 +126,6 @@ void bg_fl_scope_free(fl_scope *s);
 const char *bg_fl_suggest(const fl_scope *s, const char *name, unsigned mask);
 const char *bg_fl_strdup(fl_flattener *f, const char *s);
 const char *bg_fl_join(fl_flattener *f, const char *prefix, const char *name);
-/* Builds the def's scope and numbers its bonds (once); reports mistakes. */
-void bg_fl_def_names(fl_flattener *f, int def);
 
 /* ---- flatten_expand.c: instances, statements, expressions */
 void bg_fl_expand_model(fl_flattener *f, int root);

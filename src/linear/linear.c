@@ -9,7 +9,10 @@
 #include "base/arena.h"
 #include "linear/linear_int.h"
 
-int bg_linear_inputs(const bg_model *m, int *refs) {
+/* The inputs of the linearisation: the `linearise inputs` list, else every
+ * source element in file order (refs as bg_eqsys_build_io takes them).
+ * Returns the count; refs has room for m->nelem + m->ninput entries. */
+static int linear_inputs(const bg_model *m, int *refs) {
   int nu = 0;
   if (m->linear.inputs_given) {
     for (int k = 0; k < m->nlininput; k++) refs[nu++] = m->lininput_ref[k];
@@ -89,7 +92,7 @@ int bg_linear_compute(const bg_model *m, const bg_analysis *a, int steady, bg_li
   l->steady = steady < 0 ? m->linear.steady : steady;
   l->t = m->linear.t_given ? m->linear.t : m->sim.present ? m->sim.t0 : 0;
   int *refs = bg_xcalloc((size_t)(m->nelem + m->ninput) + 1, sizeof *refs);
-  l->nu = bg_linear_inputs(m, refs);
+  l->nu = linear_inputs(m, refs);
   bg_diags dg;
   bg_diags_init(&dg, m->path, NULL, 0);
   bg_eqsys *s = bg_eqsys_build_io(m, a, refs, l->nu, &dg);

@@ -78,11 +78,6 @@ typedef struct bg_linear {
 int bg_linear_compute(const bg_model *m, const bg_analysis *a, int steady, bg_linear *out);
 void bg_linear_free(bg_linear *l);
 
-/* The inputs of the linearisation: the `linearise inputs` list, else every
- * source element in file order (refs as bg_eqsys_build_io takes them).
- * Returns the count; refs has room for m->nelem + m->ninput entries. */
-int bg_linear_inputs(const bg_model *m, int *refs);
-
 /* ---- frequency responses (linear_freq.c) */
 /* Frequencies (rad/s) for Bode and Nyquist plots: the model's w_min/w_max or
  * two decades around the poles and zeros, log-spaced; returns the count. */

@@ -1,6 +1,7 @@
-/* The model compiler, part 1: the driver, the namespace, bonds, params,
+/* The model compiler, part 1: the driver, declarations, bonds, params,
  * inputs and states. Elements and the other statements are in
- * model_stmt.c, expressions in model_expr.c, queries in model_query.c. */
+ * model_stmt.c, expressions in model_expr.c, queries in model_query.c; the
+ * growable arrays and the namespace every part uses in model_build.c. */
 #include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,25 +11,6 @@
 #include "model/model_int.h"
 
 /* ---------------------------------------------------------------- arrays */
-static void *reserve(void *p, int n, int *cap, size_t size) {
-  if (n < *cap) return p;
-  int ncap = *cap ? 2 * *cap : 16;
-  while (ncap <= n) ncap *= 2;
-  p = bg_xrealloc(p, (size_t)ncap * size);
-  memset((char *)p + (size_t)*cap * size, 0, (size_t)(ncap - *cap) * size);
-  *cap = ncap;
-  return p;
-}
-
-int bg_build_new(bg_build *b, int *count) {
-  bg_model *m = b->m;
-#define BG_X_GROW(type, name, cnt) \
-  if (&m->cnt == count) m->name = reserve(m->name, *count, &b->cap.name, sizeof(type));
-  BG_MODEL_ARRAYS(BG_X_GROW)
-#undef BG_X_GROW
-  return (*count)++;
-}
-
 /* Moves every array into the model's arena (one owner for everything). */
 static void move_to_arena(bg_model *m) {
 #define BG_X_MOVE(type, name, cnt)                                          \
@@ -48,135 +30,11 @@ static void free_arrays(bg_model *m) {
 #undef BG_X_FREE
 }
 
-const char *bg_build_strdup(bg_build *b, const char *s) {
-  return s ? bg_arena_strdup(&b->m->arena, s) : NULL;
-}
-
-/* ---------------------------------------------------------------- namespace */
-static unsigned hash_str(const char *s) {
-  unsigned h = 2166136261u;
-  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
-  return h;
-}
-
-static void rehash(bg_build *b) {
-  free(b->hash);
-  b->hashcap = 64;
-  while (b->hashcap < 2 * b->nns + 2) b->hashcap *= 2;
-  b->hash = bg_xmalloc((size_t)b->hashcap * sizeof *b->hash);
-  for (int i = 0; i < b->hashcap; i++) b->hash[i] = -1;
-  for (int i = 0; i < b->nns; i++) {
-    unsigned h = hash_str(b->ns[i].name) & (unsigned)(b->hashcap - 1);
-    while (b->hash[h] >= 0) h = (h + 1) & (unsigned)(b->hashcap - 1);
-    b->hash[h] = i;
-  }
-}
-
-const ns_entry *bg_build_lookup(const bg_build *b, const char *name) {
-  if (!b->hash) return NULL;
-  unsigned h = hash_str(name) & (unsigned)(b->hashcap - 1);
-  for (; b->hash[h] >= 0; h = (h + 1) & (unsigned)(b->hashcap - 1))
-    if (strcmp(b->ns[b->hash[h]].name, name) == 0) return &b->ns[b->hash[h]];
-  return NULL;
-}
-
-
-/* Declares a name; reports duplicates and reserved names. 0 on success. */
-int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
-  const ns_entry *old = bg_build_lookup(b, name);
-  if (old) {
-    bg_diag_error(b->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
-    bg_diag_note(b->dg, old->loc, "'%s' first defined here", name);
-    return -1;
-  }
-  if (strcmp(name, "t") == 0 || strcmp(name, "pi") == 0) { /* e<N>, f<N>: check_bond_names */
-    bg_diag_error(b->dg, loc, "'%s' is reserved (%s) and cannot be declared", name,
-                  name[0] == 't' ? "time" : "the constant pi");
-    return -1;
-  }
-  if (b->nns == b->nscap) {
-    b->nscap = b->nscap ? 2 * b->nscap : 64;
-    b->ns = bg_xrealloc(b->ns, (size_t)b->nscap * sizeof *b->ns);
-  }
-  b->ns[b->nns++] = (ns_entry){name, kind, id, loc};
-  if (2 * b->nns + 2 > b->hashcap) rehash(b);
-  else {
-    unsigned h = hash_str(name) & (unsigned)(b->hashcap - 1);
-    while (b->hash[h] >= 0) h = (h + 1) & (unsigned)(b->hashcap - 1);
-    b->hash[h] = b->nns - 1;
-  }
-  return 0;
-}
-
-static int common_prefix(const char *a, const char *b) {
-  int n = 0;
-  while (a[n] && a[n] == b[n]) n++;
-  return n;
-}
-
-/* Closest by edit distance; ties go to the longer common prefix ("sinn": sin, not sign). */
-static void consider(const char *name, const char *cand, const char **best, int *bestd) {
-  int d = bg_edit_distance(name, cand);
-  if (d == 0) return;
-  if (d < *bestd || (d == *bestd && *best && common_prefix(name, cand) > common_prefix(name, *best))) {
-    *bestd = d;
-    *best = cand;
-  }
-}
-
-const char *bg_build_suggest(const bg_build *b, const char *name, const char *const *extra,
-                             int nextra) {
-  const char *best = NULL;
-  int bestd = strlen(name) < 3 ? 2 : 3; /* at most 1 edit for short names, else 2 */
-  for (int i = 0; b && i < b->nns; i++) consider(name, b->ns[i].name, &best, &bestd);
-  for (int i = 0; i < nextra; i++) consider(name, extra[i], &best, &bestd);
-  return best;
-}
-
 /* ---------------------------------------------------------------- declarations */
-static const char *const kind_names[BG_ELEM_COUNT] = {
-    [BG_ELEM_SE] = "Se", [BG_ELEM_SF] = "Sf", [BG_ELEM_MSE] = "MSe", [BG_ELEM_MSF] = "MSf",
-    [BG_ELEM_C] = "C",   [BG_ELEM_I] = "I",   [BG_ELEM_R] = "R",     [BG_ELEM_TF] = "TF",
-    [BG_ELEM_MTF] = "MTF", [BG_ELEM_GY] = "GY", [BG_ELEM_MGY] = "MGY",
-    [BG_ELEM_J0] = "0",  [BG_ELEM_J1] = "1"};
-
-const char *bg_elem_kind_name(int kind) {
-  return kind >= 0 && kind < BG_ELEM_COUNT ? kind_names[kind] : "?";
-}
-
-const char *bg_elem_kind_article(int kind) {
-  static const char *const texts[BG_ELEM_COUNT] = {
-      [BG_ELEM_SE] = "an Se", [BG_ELEM_SF] = "an Sf", [BG_ELEM_MSE] = "an MSe",
-      [BG_ELEM_MSF] = "an MSf", [BG_ELEM_C] = "a C", [BG_ELEM_I] = "an I", [BG_ELEM_R] = "an R",
-      [BG_ELEM_TF] = "a TF", [BG_ELEM_MTF] = "an MTF", [BG_ELEM_GY] = "a GY",
-      [BG_ELEM_MGY] = "an MGY", [BG_ELEM_J0] = "a 0-junction", [BG_ELEM_J1] = "a 1-junction"};
-  return kind >= 0 && kind < BG_ELEM_COUNT ? texts[kind] : "?";
-}
-
 static int kind_from_word(const char *w) {
   for (int k = 0; k < BG_ELEM_COUNT; k++)
-    if (strcmp(kind_names[k], w) == 0) return k;
+    if (strcmp(bg_elem_kind_name(k), w) == 0) return k;
   return -1;
-}
-
-const char *const bg_ns_what[6] = {"an element", "a param", "an input", "a state", "a detector",
-                                    "a field"};
-
-int bg_build_new_elem(bg_build *b, const bg_ast_stmt *s, int kind, const char *name, bg_srcloc loc) {
-  bg_model *m = b->m;
-  name = bg_build_strdup(b, name);
-  if (bg_build_declare(b, name, loc, NS_ELEM, m->nelem) != 0) return -1;
-  int e = bg_build_new(b, &m->nelem);
-  m->elem_kind[e] = kind;
-  m->elem_name[e] = name;
-  m->elem_loc[e] = loc;
-  m->elem_expr[e] = m->elem_init[e] = m->elem_inst[e] = m->elem_field[e] = -1;
-  if (m->nelem > b->elem_stmt_cap) {
-    b->elem_stmt_cap = b->elem_stmt_cap ? 2 * b->elem_stmt_cap : 64;
-    b->elem_stmt = bg_xrealloc(b->elem_stmt, (size_t)b->elem_stmt_cap * sizeof *b->elem_stmt);
-  }
-  b->elem_stmt[e] = s;
-  return e;
 }
 
 static void declare_element(bg_build *b, const bg_ast_stmt *s) {
@@ -554,7 +412,7 @@ static const char *dir_of(bg_build *b, const char *path) {
 
 static void build_free(bg_build *b) {
   free(b->ns);
-  free(b->hash);
+  bg_strindex_free(&b->names);
   free(b->elem_stmt);
   free(b->param_id);
   free(b->elem_guessed);
@@ -577,7 +435,6 @@ bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, 
   m->sim.solver = "auto";
   m->layout.engine = "dot";
   m->layout.rankdir = "LR";
-  rehash(&b);
   declare_all(&b, &ndecl);
   build_bonds(&b);
   bg_build_detectors(&b);

@@ -35,7 +35,6 @@ static int ref_node(bg_build *b, int op, int ref, bg_srcloc loc) {
   return k;
 }
 
-int bg_build_node(bg_build *b, int op, bg_srcloc loc) { return node(b, op, loc); }
 int bg_build_num(bg_build *b, double v, bg_srcloc loc) { return num_node(b, v, loc); }
 int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc) { return ref_node(b, op, ref, loc); }
 

@@ -3,6 +3,7 @@
  * the model's arena at the end. */
 #ifndef BG_MODEL_BUILD_H
 #define BG_MODEL_BUILD_H
+#include "base/strindex.h"
 #include "lang/lang.h"
 #include "model/model.h"
 
@@ -32,11 +33,10 @@ typedef struct bg_build {
 #define BG_X_CAP(type, name, count) int name;
   struct { BG_MODEL_ARRAYS(BG_X_CAP) } cap;
 #undef BG_X_CAP
-  /* namespace: entries in declaration order, open-addressing hash of indices */
+  /* namespace: entries in declaration order, their names hashed */
   ns_entry *ns;
   int nns, nscap;
-  int *hash; /* -1 = empty */
-  int hashcap;
+  bg_strindex names;
   const bg_ast_stmt **elem_stmt; /* per element id */
   int elem_stmt_cap;
   int *param_id;                 /* param file index -> param id (dependency order) */
@@ -110,7 +110,6 @@ void bg_build_field_options(bg_build *b, int f);
  * -2 when root holds a table (no smooth derivative). */
 int bg_build_diff(bg_build *b, int root, int store);
 /* Node constructors shared by the compiler's files. */
-int bg_build_node(bg_build *b, int op, bg_srcloc loc);
 int bg_build_num(bg_build *b, double v, bg_srcloc loc);
 int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc);
 int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc);

@@ -3,6 +3,8 @@
 
 #include "model/model.h"
 
+#include "base/strindex.h"
+
 int bg_elem_is_junction(int kind) { return kind == BG_ELEM_J0 || kind == BG_ELEM_J1; }
 
 int bg_elem_is_twoport(int kind) {
@@ -59,23 +61,11 @@ int bg_bond_other(const bg_model *m, int b, int e) {
   return m->bond_tail[b] == e ? m->bond_head[b] : m->bond_tail[b];
 }
 
-static unsigned name_hash(const char *s) { /* FNV-1a */
-  unsigned h = 2166136261u;
-  for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
-  return h;
-}
-
 void bg_model_hash_names(bg_model *m) {
-  int cap = 16;
-  while (cap < 2 * m->nelem + 2) cap *= 2;
+  int cap = bg_strindex_size(m->nelem);
   m->elem_hash = bg_arena_alloc(&m->arena, (size_t)cap * sizeof *m->elem_hash);
   m->elem_hashcap = cap;
-  for (int i = 0; i < cap; i++) m->elem_hash[i] = -1;
-  for (int e = 0; e < m->nelem; e++) {
-    unsigned h = name_hash(m->elem_name[e]) & (unsigned)(cap - 1);
-    while (m->elem_hash[h] >= 0) h = (h + 1) & (unsigned)(cap - 1);
-    m->elem_hash[h] = e;
-  }
+  bg_strindex_fill(m->elem_hash, cap, BG_STRKEYS_ARRAY(m->elem_name), m->nelem);
   cap = 16;
   while (cap < 2 * m->nbond + 2) cap *= 2;
   m->bond_hash = bg_arena_alloc(&m->arena, (size_t)cap * sizeof *m->bond_hash);
@@ -94,10 +84,7 @@ int bg_model_find_elem(const bg_model *m, const char *name) {
       if (strcmp(m->elem_name[e], name) == 0) return e;
     return -1;
   }
-  unsigned mask = (unsigned)(m->elem_hashcap - 1);
-  for (unsigned h = name_hash(name) & mask; m->elem_hash[h] >= 0; h = (h + 1) & mask)
-    if (strcmp(m->elem_name[m->elem_hash[h]], name) == 0) return m->elem_hash[h];
-  return -1;
+  return bg_strindex_find(m->elem_hash, m->elem_hashcap, BG_STRKEYS_ARRAY(m->elem_name), name);
 }
 
 int bg_model_find_bond(const bg_model *m, int number) {
@@ -148,4 +135,24 @@ void bg_model_summary(const bg_model *m, bg_strbuf *out) {
   bg_sb_printf(out, "%s, %d junction%s, %d bond%s; %d store%s, %d source%s", nk ? ")" : "", njunc,
                plural(njunc), m->nbond, plural(m->nbond), nstore, plural(nstore), nsrc,
                plural(nsrc));
+}
+
+/* ---------------------------------------------------------------- kind names */
+static const char *const kind_names[BG_ELEM_COUNT] = {
+    [BG_ELEM_SE] = "Se", [BG_ELEM_SF] = "Sf", [BG_ELEM_MSE] = "MSe", [BG_ELEM_MSF] = "MSf",
+    [BG_ELEM_C] = "C",   [BG_ELEM_I] = "I",   [BG_ELEM_R] = "R",     [BG_ELEM_TF] = "TF",
+    [BG_ELEM_MTF] = "MTF", [BG_ELEM_GY] = "GY", [BG_ELEM_MGY] = "MGY",
+    [BG_ELEM_J0] = "0",  [BG_ELEM_J1] = "1"};
+
+const char *bg_elem_kind_name(int kind) {
+  return kind >= 0 && kind < BG_ELEM_COUNT ? kind_names[kind] : "?";
+}
+
+const char *bg_elem_kind_article(int kind) {
+  static const char *const texts[BG_ELEM_COUNT] = {
+      [BG_ELEM_SE] = "an Se", [BG_ELEM_SF] = "an Sf", [BG_ELEM_MSE] = "an MSe",
+      [BG_ELEM_MSF] = "an MSf", [BG_ELEM_C] = "a C", [BG_ELEM_I] = "an I", [BG_ELEM_R] = "an R",
+      [BG_ELEM_TF] = "a TF", [BG_ELEM_MTF] = "an MTF", [BG_ELEM_GY] = "a GY",
+      [BG_ELEM_MGY] = "an MGY", [BG_ELEM_J0] = "a 0-junction", [BG_ELEM_J1] = "a 1-junction"};
+  return kind >= 0 && kind < BG_ELEM_COUNT ? texts[kind] : "?";
 }

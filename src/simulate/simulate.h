@@ -155,9 +155,8 @@ double bg_sim_default_rtol_switching(int n);
 
 /* Why the analysis forbids simulating this model (index above 1, a class 5
  * causal loop, a singular algebraic loop, incomplete causality), as a
- * malloc'd message with remedies; NULL when nothing forbids it. */
-char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a, const bg_index_facts *f);
-/* The same for a system that is (reduced = 1) the index reduction's
+ * malloc'd message with remedies; NULL when nothing forbids it. The same for
+ * a system that is (reduced = 1) the index reduction's
  * (equations/indexred.h): the index problems no longer forbid the run. When
  * the reduction was tried and failed (f->reduction->status < 0) the refusal ends
  * with its reason. */

@@ -151,7 +151,3 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const
   bg_sb_free(&sb);
   return msg;
 }
-
-char *bg_simulate_refusal(const bg_model *m, const bg_analysis *a, const bg_index_facts *f) {
-  return bg_simulate_refusal_reduced(m, a, f, 0);
-}

@@ -129,7 +129,8 @@ void bg_sym_dalias_info(const bg_sym *S, int ref, int *alias, int *var) {
 int bg_sym_leaf(bg_sym *S, int kind, int ref) { return intern(S, kind, ref, 0, 0, NULL, NULL); }
 
 /* ------------------------------------------------------------ order */
-int bg_sym_cmp(const bg_sym *S, int a, int b) {
+/* Structural order (the order of sorted terms); 0 only for equal ids. */
+static int sym_cmp(const bg_sym *S, int a, int b) {
   if (a == b) return 0;
   const bg_symnode *x = &S->node[a], *y = &S->node[b];
   if (x->kind != y->kind) return x->kind < y->kind ? -1 : 1;
@@ -137,7 +138,7 @@ int bg_sym_cmp(const bg_sym *S, int a, int b) {
   if (x->ref != y->ref) return x->ref < y->ref ? -1 : 1;
   int n = x->n < y->n ? x->n : y->n;
   for (int k = 0; k < n; k++) {
-    int r = bg_sym_cmp(S, S->arg[x->adr + k], S->arg[y->adr + k]);
+    int r = sym_cmp(S, S->arg[x->adr + k], S->arg[y->adr + k]);
     if (r) return r;
   }
   if (x->n != y->n) return x->n < y->n ? -1 : 1;
@@ -168,7 +169,7 @@ static void tv_sort(const bg_sym *S, tv *v) {
     int t = v->t[i];
     double w = v->w[i];
     int j = i - 1;
-    while (j >= 0 && bg_sym_cmp(S, v->t[j], t) > 0) v->t[j + 1] = v->t[j], v->w[j + 1] = v->w[j], j--;
+    while (j >= 0 && sym_cmp(S, v->t[j], t) > 0) v->t[j + 1] = v->t[j], v->w[j + 1] = v->w[j], j--;
     v->t[j + 1] = t, v->w[j + 1] = w;
   }
 }

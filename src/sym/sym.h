@@ -113,8 +113,6 @@ void bg_sym_dalias_info(const bg_sym *S, int ref, int *alias, int *var);
  * bond variables SYM_SIG leaves, inputs SYM_INPUT leaves. */
 int bg_sym_from_x(bg_sym *S, int root, const int *state_y, const int *store_y);
 
-/* Structural order (the order of sorted terms); 0 only for equal ids. */
-int bg_sym_cmp(const bg_sym *S, int a, int b);
 
 /* ---------------------------------------------------------------- operations */
 /* Replaces leaves: f(ctx, kind, ref) returns the replacement id, or -1 to

@@ -41,7 +41,6 @@ void tx_print_element(bg_strbuf *b, const bg_ast_stmt *s, const char *value, con
  * like (nullable) copied. */
 void tx_print_bond(bg_strbuf *b, int number, const char *from, bg_arrow arrow, const char *to,
                    const bg_ast_stmt *like);
-void tx_print_expr(bg_strbuf *b, const bg_expr *e);
 /* "  [k = v, ...]" of statement s, option key's value replaced by optval
  * (added when s has no such option); nothing when there are none. */
 void tx_print_options(bg_strbuf *b, const bg_ast_stmt *s, const char *key, const char *optval);
@@ -61,20 +60,16 @@ typedef struct tx_ctx {
   int nmade;
 } tx_ctx;
 
-/* The top-level ELEMENT statement of element e, the BOND statement of bond b. */
+/* The top-level ELEMENT statement of element e. */
 const bg_ast_stmt *tx_elem_stmt(const tx_ctx *c, int e);
-const bg_ast_stmt *tx_bond_stmt(const tx_ctx *c, int b);
 /* 1 when expression root x of the model uses only numbers, params, pi and
  * functions of them (a constant for the whole run). */
 int tx_expr_constant(const bg_model *m, int x);
 /* A name not used by the model or by earlier calls: base, base_2, ...
  * (written into buf of n bytes). */
 const char *tx_fresh_name(tx_ctx *c, const char *base, char *buf, size_t n);
-/* Writes every unnumbered bond's number, so that removing a bond renumbers nothing. */
-void tx_number_bonds(tx_ctx *c);
-/* The line of elem e's statement; of bond b's. */
+/* The line of elem e's statement. */
 int tx_elem_line(const tx_ctx *c, int e);
-int tx_bond_line(const tx_ctx *c, int b);
 /* Bond b split in d at a new junction j: the tail's segment keeps the
  * number, the options and a stroke fixed at the tail; the head's segment
  * gets number and a stroke fixed at the head. */

@@ -21,7 +21,7 @@ static const char *const op_text[] = {
 
 /* Whole expressions carry their text; inner operators are rebuilt, fully
  * parenthesised so the printed text parses to the same tree. */
-void tx_print_expr(bg_strbuf *b, const bg_expr *e) {
+static void print_expr(bg_strbuf *b, const bg_expr *e) {
   if (e->kind == BG_EX_STR) {
     print_string(b, e->str);
     return;
@@ -36,14 +36,14 @@ void tx_print_expr(bg_strbuf *b, const bg_expr *e) {
   case BG_EX_FIELD: bg_sb_printf(b, "%s.%s", e->str, e->field); return;
   case BG_EX_UNARY:
     bg_sb_puts(b, e->op == BG_OP_NOT ? "!(" : "-(");
-    tx_print_expr(b, e->args[0]);
+    print_expr(b, e->args[0]);
     bg_sb_putc(b, ')');
     return;
   case BG_EX_BINARY:
     bg_sb_putc(b, '(');
-    tx_print_expr(b, e->args[0]);
+    print_expr(b, e->args[0]);
     bg_sb_puts(b, op_text[e->op]);
-    tx_print_expr(b, e->args[1]);
+    print_expr(b, e->args[1]);
     bg_sb_putc(b, ')');
     return;
   default: break;
@@ -61,7 +61,7 @@ void tx_print_options(bg_strbuf *b, const bg_ast_stmt *s, const char *key, const
       bg_sb_puts(b, optval);
       replaced = 1;
     } else {
-      tx_print_expr(b, s->opts[i].value);
+      print_expr(b, s->opts[i].value);
     }
   }
   if (key && !replaced) {
@@ -78,7 +78,7 @@ void tx_print_element(bg_strbuf *b, const bg_ast_stmt *s, const char *value, con
     if (s->has_law) bg_sb_printf(b, " : %s", s->law_lhs);
     bg_sb_puts(b, " = ");
     if (value) bg_sb_puts(b, value);
-    else tx_print_expr(b, s->expr);
+    else print_expr(b, s->expr);
   }
   tx_print_options(b, s, key, optval);
 }

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Every extern function of src/ and render/ is called from another file, and
+# docs/architecture.md names every source file (tests/symbols_rule.py); the
+# checker catches violations planted in a copy: a function nothing calls, a
+# function only its own file calls, a source file the document does not name,
+# and a path the document cites that does not exist.
+# Usage: bash tests/symbols_rule.sh [PATH_TO_BGDRAW]   (from the project root)
+set -u
+command -v python3 >/dev/null || { echo "python3 not found"; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+python3 tests/symbols_rule.py . || fail=$((fail + 1))
+
+plant() { # plant NAME: copy the tree into $tmp/NAME for one planted violation
+  rm -rf "$tmp/$1"; mkdir -p "$tmp/$1"
+  cp -r src render include tests bench contrib docs "$tmp/$1/"
+}
+expect_violation() { # expect_violation NAME TEXT
+  if python3 tests/symbols_rule.py "$tmp/$1" >"$tmp/$1.out"; then
+    echo "FAIL planted $1: the checker passed"; fail=$((fail + 1))
+  elif ! grep -q "$2" "$tmp/$1.out"; then
+    echo "FAIL planted $1: no message '$2'"; cat "$tmp/$1.out"; fail=$((fail + 1))
+  fi
+}
+plant dead
+printf '\nint bg_arena_unused(int x) {\n  return x + 1;\n}\n' >>"$tmp/dead/src/base/arena.c"
+expect_violation dead 'src/base/arena.c: bg_arena_unused is used nowhere: delete it'
+plant local
+printf '\nint bg_arena_twice(int x) {\n  return 2 * x;\n}\nint bg_arena_four(int x) { return bg_arena_twice(bg_arena_twice(x)); }\n' \
+  >>"$tmp/local/src/base/arena.c"
+printf 'int bg_arena_four(int x);\n' >>"$tmp/local/src/base/arena.h"
+printf 'static int use_four(void) { return bg_arena_four(1); }\n' >>"$tmp/local/src/base/strbuf.c"
+expect_violation local 'bg_arena_twice is used only in its own file: make it static'
+plant undocumented
+echo 'int bg_extra_x;' >"$tmp/undocumented/src/base/extra.c"
+expect_violation undocumented 'src/base/extra.c: not in docs/architecture.md'
+plant stale
+echo 'See `tests/nowhere/` for more.' >>"$tmp/stale/docs/architecture.md"
+expect_violation stale 'cites `tests/nowhere/`, which does not exist'
+echo "symbols rule: 4 planted violations tried, $fail failures"
+[ "$fail" -eq 0 ]
