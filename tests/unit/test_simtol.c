@@ -97,6 +97,10 @@ int main(void) {
   DBL_NEAR(bg_sim_default_rtol(400), 5e-8, 1e-22);
   DBL_NEAR(bg_sim_default_rtol(20000), 1e-7 * sqrt(100.0 / 20000), 1e-22);
   DBL_NEAR(bg_sim_default_rtol(1000000000), 1e-10, 0);
+  /* switching models: 100 times tighter, never below 1e-10 */
+  DBL_NEAR(bg_sim_default_rtol_switching(1), 1e-9, 1e-24);
+  DBL_NEAR(bg_sim_default_rtol_switching(400), 5e-10, 1e-24);
+  DBL_NEAR(bg_sim_default_rtol_switching(1000000), 1e-10, 0);
   check_chain(2);
   check_chain(40);
   check_chain(150);
