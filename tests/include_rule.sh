@@ -7,23 +7,7 @@
 # is not a stage.
 # Usage: bash tests/include_rule.sh [PATH_TO_BGDRAW]   (from the project root)
 set -u
-command -v python3 >/dev/null || { echo "python3 not found"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-python3 tests/include_rule.py . || fail=$((fail + 1))
-
-plant() { # plant NAME: copy the tree into $tmp/NAME for one planted violation
-  rm -rf "$tmp/$1"; mkdir -p "$tmp/$1"
-  cp -r CMakeLists.txt src render "$tmp/$1/"
-}
-expect_violation() { # expect_violation NAME TEXT
-  if python3 tests/include_rule.py "$tmp/$1" >"$tmp/$1.out"; then
-    echo "FAIL planted $1: the checker passed"; fail=$((fail + 1))
-  elif ! grep -q "$2" "$tmp/$1.out"; then
-    echo "FAIL planted $1: no message '$2'"; cat "$tmp/$1.out"; fail=$((fail + 1))
-  fi
-}
+. "$(dirname "$0")/lib/planted.sh" tests/include_rule.py CMakeLists.txt src render
 plant upward
 sed -i '1i #include "equations/eqsys.h"' "$tmp/upward/src/base/arena.c"
 expect_violation upward 'stage base includes "equations/eqsys.h" of the higher stage equations'

@@ -6,23 +6,7 @@
 # and a path the document cites that does not exist.
 # Usage: bash tests/symbols_rule.sh [PATH_TO_BGDRAW]   (from the project root)
 set -u
-command -v python3 >/dev/null || { echo "python3 not found"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-python3 tests/symbols_rule.py . || fail=$((fail + 1))
-
-plant() { # plant NAME: copy the tree into $tmp/NAME for one planted violation
-  rm -rf "$tmp/$1"; mkdir -p "$tmp/$1"
-  cp -r src render include tests bench contrib docs "$tmp/$1/"
-}
-expect_violation() { # expect_violation NAME TEXT
-  if python3 tests/symbols_rule.py "$tmp/$1" >"$tmp/$1.out"; then
-    echo "FAIL planted $1: the checker passed"; fail=$((fail + 1))
-  elif ! grep -q "$2" "$tmp/$1.out"; then
-    echo "FAIL planted $1: no message '$2'"; cat "$tmp/$1.out"; fail=$((fail + 1))
-  fi
-}
+. "$(dirname "$0")/lib/planted.sh" tests/symbols_rule.py src render include tests bench contrib docs
 plant dead
 printf '\nint bg_arena_unused(int x) {\n  return x + 1;\n}\n' >>"$tmp/dead/src/base/arena.c"
 expect_violation dead 'src/base/arena.c: bg_arena_unused is used nowhere: delete it'
