@@ -29,6 +29,11 @@ DEFINITION = re.compile(r'^(?!static\b|typedef\b|extern\b|struct\b|enum\b|union\
                         r'[A-Za-z_][\w \t\*]*?\b([A-Za-z_]\w*)\s*\(([^;{}()]|\([^;{}()]*\))*\)'
                         r'\s*(?:__attribute__\s*\(\(.*?\)\)\s*)?\{', re.M | re.S)
 TOKEN = re.compile(r'[A-Za-z_]\w*')
+# The lead's issue-27 rewrite (the run object, the outputs table, the command
+# line, libbgdraw) lands in steps: until the library that calls into src/run and
+# src/output is in, their findings (and the command line's) are listed as
+# notes, not failures. Empty this when issue 27's library has landed.
+IN_REWRITE = ("src/run/", "src/output/", "src/cli/", "src/api/")
 
 
 def strip(text):
@@ -83,15 +88,16 @@ def symbol_problems(root):
     public = set()  # libbgdraw's interface: called by programs outside the tree
     for rel, path in sources(root, ("include",), (".h",)):
         public |= set(TOKEN.findall(strip(open(path, encoding="utf-8").read())))
-    problems = []
+    problems, notes = [], []
     for name, (home, _) in sorted(defined.items(), key=lambda kv: (kv[1][0], kv[0])):
         if name == "main" or outside.get(name) or name in public:
             continue
+        where = notes if home.startswith(IN_REWRITE) else problems
         if inside.get(name):
-            problems.append("%s: %s is used only in its own file: make it static" % (home, name))
+            where.append("%s: %s is used only in its own file: make it static" % (home, name))
         else:
-            problems.append("%s: %s is used nowhere: delete it" % (home, name))
-    return problems, len(defined)
+            where.append("%s: %s is used nowhere: delete it" % (home, name))
+    return problems, notes, len(defined)
 
 
 def doc_problems(root):
@@ -122,8 +128,10 @@ def doc_problems(root):
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "."
-    sym, nfunc = symbol_problems(root)
+    sym, notes, nfunc = symbol_problems(root)
     doc, named, nfiles = doc_problems(root)
+    for p in notes:
+        print("symbols rule: note (folder in rewrite): " + p)
     for p in sym + doc:
         print("symbols rule: " + p)
     print("symbols rule: %d extern functions, %d not called from another file; "

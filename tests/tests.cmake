@@ -33,3 +33,9 @@ foreach(f ${BG_SCRIPT_TESTS})
   set_tests_properties(${n} PROPERTIES TIMEOUT 900 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 endforeach()
 include(${CMAKE_SOURCE_DIR}/tests/fuzz/fuzz.cmake)
+
+# test_threads drives runs through the outputs table (src/output), which the
+# executable and libbgdraw compile in; the test links the renderers directly.
+if(TARGET test_threads)
+  target_sources(test_threads PRIVATE ${BG_OUTPUT_SRC})
+endif()

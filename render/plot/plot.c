@@ -656,17 +656,6 @@ int bg_plot_render_scene(const bg_scene *sc, const char *fmt, double png_scale, 
   return BG_RENDER_ERROR;
 }
 
-int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, bg_diags *dg) {
-  bg_strbuf out = {0};
-  int rc = bg_plot_render_scene(sc, bg_path_ext(path), png_scale, &out, dg);
-  if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
-    rc = BG_RENDER_EWRITE;
-  }
-  bg_sb_free(&out);
-  return rc;
-}
-
 int bg_plot_write(const bg_model *m, const bg_simresult *r, const char *style,
                   const char *style_dir, const char *path, bg_diags *dg) {
   bg_strbuf out = {0};

@@ -33,10 +33,6 @@ void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_
 /* Curve j's colour and dash pattern (docs/plots.md, Line styles). */
 void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it);
 
-/* Replays a finished scene into path (svg, pdf or png by its extension)
- * atomically: BG_RENDER_OK, BG_RENDER_ERROR or BG_RENDER_EWRITE. */
-int bg_plot_write_scene(const bg_scene *sc, const char *path, double png_scale, bg_diags *dg);
-
 /* --plot FILE: writes the plots to path (svg, pdf or png by its extension)
  * atomically. style and style_dir as in bg_render_opts. Returns
  * BG_RENDER_OK, BG_RENDER_ERROR or BG_RENDER_EWRITE (see render.h), with

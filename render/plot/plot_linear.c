@@ -271,18 +271,6 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
   return rc;
 }
 
-int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
-                         const char *style_dir, const char *path, bg_diags *dg) {
-  bg_strbuf out = {0};
-  int rc = bg_plot_linear_render(m, l, kind, style, style_dir, bg_path_ext(path), path, &out, dg);
-  if (rc == BG_RENDER_OK && bg_write_file_atomic(path, out.s ? out.s : "", out.len) != 0) {
-    bg_diag_error(dg, (bg_srcloc){0}, "cannot write '%s': %s", path, bg_file_strerror(errno));
-    rc = BG_RENDER_EWRITE;
-  }
-  bg_sb_free(&out);
-  return rc;
-}
-
 int bg_plot_linear_render(const bg_model *m, const bg_linear *l, int kind, const char *style,
                           const char *style_dir, const char *fmt, const char *path,
                           bg_strbuf *out, bg_diags *dg) {

@@ -20,7 +20,4 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
 int bg_plot_linear_render(const bg_model *m, const bg_linear *l, int kind, const char *style,
                           const char *style_dir, const char *fmt, const char *path,
                           bg_strbuf *out, bg_diags *dg);
-/* Writes it to path (svg, pdf, png) atomically; BG_RENDER_OK / _ERROR / _EWRITE. */
-int bg_plot_linear_write(const bg_model *m, const bg_linear *l, int kind, const char *style,
-                         const char *style_dir, const char *path, bg_diags *dg);
 #endif
