@@ -118,6 +118,12 @@ int bg_eqsys_signals(bg_eqsys *s, double t, const double *y, const double *yp, d
  * the constraints cannot be solved at t -+ h. Returns the number of stores
  * set (0: none), or -1 when nothing could be set. */
 int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp, double h);
+/* The algebraic unknowns' rates at a consistent point (IDACalcIC leaves
+ * them as guessed): the algebraic rows solved at t + h and t + 2h with the
+ * differential states moved along yp, the one-sided difference of second
+ * order (the limit from the right of a restart at a jump). Returns how
+ * many were set (0 when a solve failed or above 1000 unknowns). */
+int bg_eqsys_algebraic_rates(bg_eqsys *s, double t, const double *y, double *yp, double h);
 /* The shortest period of the periodic functions of time (sin, cos, tan) in
  * the sources and inputs, from their angular rate at t0 and t1 (the larger);
  * 0 when there is none. The simulation keeps its steps below a fraction of
@@ -154,6 +160,17 @@ int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, dou
  * how many modes changed. */
 int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
                           double delta);
+/* The modes of the limit from the right of (t, y, yp): the algebraic
+ * unknowns solved at t + delta (the differential ones moved along yp) under
+ * the modes, the modes set from there, until they agree (at most maxit
+ * rounds): 0 agreed, 1 not, -1 a solve failed (docs/simulation.md,
+ * "Starting on a switching point"). */
+int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *yp, double delta, int maxit);
+/* The root functions of mode e: how many, *first the index of the first. */
+int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first);
+/* How the root function of mode e crossed 0 when the mode went from before
+ * to after: +1 rising, -1 falling. */
+int bg_eqsys_mode_direction(const bg_eqsys *s, int e, double before, double after);
 void bg_eqsys_modes_get(const bg_eqsys *s, double *modes); /* bg_eqsys_nmodes values */
 void bg_eqsys_modes_set(bg_eqsys *s, const double *modes);
 #endif

@@ -270,6 +270,26 @@ static int solved(bg_eqsys *s, double t, double *y) {
   return ok;
 }
 
+int bg_eqsys_algebraic_rates(bg_eqsys *s, double t, const double *y, double *yp, double h) {
+  int n = s->n, nz = 0;
+  for (int i = s->nx; i < n && !s->reduced; i++) nz += s->row_kind[i] == 1;
+  if (nz == 0 || !(h > 0) || n > 1000) return 0;
+  /* one-sided, on the right of t: a restart sits at an input's jump or a
+   * switch, and what is wanted is the limit from the right */
+  double *y1 = bg_xmalloc((size_t)n * sizeof(double)), *y2 = bg_xmalloc((size_t)n * sizeof(double));
+  int set = 0;
+  for (int i = 0; i < n; i++) {
+    double move = i < s->nx && s->row_kind[i] == 0 ? h * yp[i] : 0;
+    y1[i] = y[i] + move, y2[i] = y[i] + 2 * move;
+  }
+  if (solved(s, t + h, y1) && solved(s, t + 2 * h, y2))
+    for (int i = s->nx; i < n; i++)
+      if (s->row_kind[i] == 1) yp[i] = (-3 * y[i] + 4 * y1[i] - y2[i]) / (2 * h), set++;
+  free(y1), free(y2);
+  s->has_err = 0;
+  return set;
+}
+
 int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp, double h) {
   int n = s->n, nd = 0;
   for (int i = 0; i < s->nx && !s->reduced; i++) nd += s->row_kind[i] == 1;

@@ -238,6 +238,20 @@ void bg_eqsys_modes_get(const bg_eqsys *s, double *modes) {
 void bg_eqsys_modes_set(bg_eqsys *s, const double *modes) {
   if (s->nev) memcpy(s->ev_mode, modes, (size_t)s->nev * sizeof(double));
 }
+int bg_eqsys_mode_direction(const bg_eqsys *s, int e, double before, double after) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  int up = after > before ? 1 : -1;
+  /* a < b, a <= b and min(a, b) hold their mode 1 while the root function
+   * a - b is below 0: entering it is falling */
+  if (I->op == BG_X_LT || I->op == BG_X_LE || (I->op == BG_X_CALL && I->ref == BG_FN_MIN)) return -up;
+  return up;
+}
+
+int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first) {
+  int cond;
+  *first = s->ev_root0[e];
+  return roots_of(s, &s->code[s->ev_code[e]], &cond);
+}
 void bg_eqsys_modes_freeze(bg_eqsys *s, int on) { s->ev_frozen = on && s->nev; }
 
 static int roots_finite(bg_eqsys *s, double *g) {
@@ -315,4 +329,40 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
   s->ev_frozen = was;
   for (int e = 0; e < s->nev; e++) changed += s->ev_prev[e] != s->ev_mode[e];
   return changed;
+}
+
+/* The modes of the limit from the right at a point where switching
+ * functions sit at 0 together (a diode bridge at the end of a conduction
+ * interval: two diodes in series leave it at once, and the modes from the
+ * values at t flip back and forth): the differential unknowns moved to
+ * t + delta along yp, the algebraic ones solved there under the current
+ * modes (held: each mode is smooth), the modes set from that point, until
+ * they no longer change. All at once for two rounds; then one mode at a
+ * time (the first that disagrees), since two diodes in series that each
+ * flip when the other does never meet at "both off" all at once. Returns 0
+ * when they agree, 1 when they still changed after maxit rounds, -1 when a
+ * solve failed. */
+int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *yp, double delta, int maxit) {
+  if (!s->nev || !(delta > 0)) return 0;
+  int was = s->ev_frozen, rc = 1;
+  s->ev_frozen = 1;
+  memset(s->ev_free, 0, (size_t)s->nev);
+  for (int k = 0; k < maxit && rc == 1; k++) {
+    for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * yp[i];
+    if (bg_eqsys_consistent(s, t + delta, s->ev_y, 30)) { rc = -1; break; }
+    memcpy(s->ev_prev, s->ev_mode, (size_t)s->nev * sizeof(double));
+    modes_pass(s, t + delta, s->ev_y, yp, NULL, NULL);
+    int first = -1;
+    for (int e = 0; e < s->nev && first < 0; e++)
+      if (s->ev_mode[e] != s->ev_prev[e]) first = e;
+    if (first < 0) rc = 0;
+    else if (k >= 2) { /* one at a time */
+      double keep = s->ev_mode[first];
+      memcpy(s->ev_mode, s->ev_prev, (size_t)s->nev * sizeof(double));
+      s->ev_mode[first] = keep;
+    }
+  }
+  s->ev_frozen = was;
+  s->has_err = 0;
+  return rc;
 }

@@ -530,7 +530,7 @@ static void control(const bg_model *m, const bg_analysis *a, bg_eqsys *s, const 
     bg_sim_compare(r, &t, s, NULL, &c);
     control_say(o, r, &c, t.rtol);
     r->control_dev = c.worst;
-    if (c.worst <= BG_SIM_SWITCH_TARGET && c.event_dt >= 0) { bg_simresult_free(&t); break; }
+    if (c.worst <= BG_SIM_SWITCH_TARGET) { bg_simresult_free(&t); break; }
     t.control_dev = c.worst; /* what is known of it until it is compared itself */
     bg_simresult_free(r);
     *r = t;

@@ -52,18 +52,26 @@ void bg_sim_compare(const bg_simresult *a, const bg_simresult *b, const bg_eqsys
     consider(c, d, bg_eqsys_name(s, i), a->t[at]);
   }
   if (c->worst_name && c->worst_col >= 0 && strcmp(c->worst_name, a->names[c->worst_col])) c->worst_col = -1;
-  /* events: the same count, then the largest difference of their times;
-   * else where the two lists part */
+  /* events: per condition, the same count and the largest difference of
+   * their times (several conditions at one instant may be logged in either
+   * order); else where the two lists part */
   c->events_a = a->nevents, c->events_b = b->nevents;
-  int n = a->nevents < b->nevents ? a->nevents : b->nevents, k;
-  double span = a->nrows ? a->t[a->nrows - 1] - a->t[0] : 1, dt = 0;
-  for (k = 0; k < n; k++) {
-    double x = fabs(a->event_t[k] - b->event_t[k]);
-    if (a->nevents != b->nevents && x > 1e-6 * span) break;
-    dt = fmax(dt, x);
+  c->event_dt = 0, c->event_part_t = INFINITY;
+  int nc = a->nconditions > b->nconditions ? a->nconditions : b->nconditions;
+  for (int cond = 0; cond < nc; cond++) {
+    int i = 0, j = 0;
+    for (;;) {
+      while (i < a->nevents && a->event_cond[i] != cond) i++;
+      while (j < b->nevents && b->event_cond[j] != cond) j++;
+      if (i == a->nevents || j == b->nevents) {
+        if (i < a->nevents || j < b->nevents) /* one run has more of this condition's events */
+          c->event_part_t = fmin(c->event_part_t, i < a->nevents ? a->event_t[i] : b->event_t[j]);
+        break;
+      }
+      c->event_dt = fmax(c->event_dt, fabs(a->event_t[i] - b->event_t[j]));
+      i++, j++;
+    }
   }
-  c->event_dt = a->nevents == b->nevents ? dt : -1;
-  c->event_part_t = a->nevents == b->nevents ? 0
-                    : k < n ? fmin(a->event_t[k], b->event_t[k])
-                    : k < a->nevents ? a->event_t[k] : b->event_t[k];
+  if (isfinite(c->event_part_t)) c->event_dt = -1;
+  else c->event_part_t = 0;
 }

@@ -279,9 +279,10 @@ static void rect_check(const char *name, double rs, const char *solver, const ch
   snprintf(buf, sizeof buf, "1 s\nR Rs = %g\nbond s -> Rs\n", rs);
   bg_sim_opts o = {0};
   o.solver = solver;
-  /* IDA fails at t = 0 on this DAE with atol 1e-12, with or without the
-   * diode's condition (its error test on the first steps): 1e-10 */
-  if ((rs > 0 && (fx_edit(&f, "1 s\n", buf) || fx_edit(&f, "atol = 1e-12", "atol = 1e-10"))) || fx_run(&f, name, BG_METHOD_SCAP, NULL, 0, &o)) { OK(0); fx_free(&f); return; }
+  /* IDA failed at t = 0 on this DAE with atol 1e-12 (its error test on the
+   * first steps, from the algebraic unknowns' rates IDACalcIC leaves at 0):
+   * the rates are computed at the start now (docs/simulation.md) */
+  if ((rs > 0 && fx_edit(&f, "1 s\n", buf)) || fx_run(&f, name, BG_METHOD_SCAP, NULL, 0, &o)) { OK(0); fx_free(&f); return; }
   INT_EQ(f.rc, 0);
   STR_EQ(f.r.solver_used, want_solver);
   r_rs = rs;
