@@ -5,10 +5,12 @@
  * between events the solver evaluates the branch the mode holds (continued
  * smoothly past its switching point), so Newton and the error test never
  * see the kink; at a root the simulation stops, sets the modes from the
- * values there and restarts. Conditions of t alone are input breakpoints
- * (bg_eqsys_breakpoints), not events. */
+ * values there and restarts. Conditions of t shifted by a constant in
+ * step, ramp, pulse and tables are input breakpoints (bg_eqsys_breakpoints),
+ * not events; other conditions of t (step(sin(t)), t > 1) are events. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "equations/eqsys_int.h"
@@ -35,11 +37,12 @@ static int roots_of(const bg_eqsys *s, const tinstr *I, int *cond) {
   }
 }
 
-/* Which slots read y or yp (a slot of t alone is an input's business). */
+/* Which slots read y or yp (bit 1) and which read t (bit 2). */
 static void mark_deps(bg_eqsys *s) {
   s->slot_dep = bg_arena_alloc(&s->arena, (size_t)s->nslot + 1);
   memset(s->slot_dep, 0, (size_t)s->nslot + 1);
   memset(s->slot_dep + s->slot_y, 1, (size_t)(2 * s->n));
+  s->slot_dep[0] = 2; /* t */
   for (int k = 0; k < s->nmain; k++) {
     const tinstr *I = &s->code[k];
     unsigned char d = 0;
@@ -49,6 +52,37 @@ static void mark_deps(bg_eqsys *s) {
       for (int q = 0; q < I->na; q++) d |= s->slot_dep[I->a[q]];
     s->slot_dep[I->out] = d;
   }
+}
+
+/* t, t + c, t - c, c + t (c constant): the arguments an input breakpoint
+ * covers (bg_eqsys_breakpoints); prod: the instruction producing each slot. */
+static int t_shift(const bg_eqsys *s, const int *prod, int slot) {
+  if (slot == 0) return 1;
+  int k = prod[slot];
+  if (k < 0) return 0;
+  const tinstr *I = &s->code[k];
+  if (I->op == BG_X_ADD) return (I->a[0] == 0 && s->is_const[I->a[1]]) || (I->a[1] == 0 && s->is_const[I->a[0]]);
+  if (I->op == BG_X_SUB) return I->a[0] == 0 && s->is_const[I->a[1]];
+  return 0;
+}
+
+/* Whether instruction k is an event: its switching arguments read an
+ * unknown, or read t in a way no input breakpoint covers (step(sin(t)),
+ * t > 1, floor(t): a breakpoint is known only for step, ramp, pulse and
+ * tables of t shifted by a constant). */
+static int is_event(const bg_eqsys *s, const int *prod, int k, int *nr) {
+  const tinstr *I = &s->code[k];
+  int cond, dep = 0, tdep = 0;
+  *nr = roots_of(s, I, &cond);
+  if (!*nr) return 0;
+  for (int q = 0; q < I->na && q < 3; q++)
+    if (cond >> q & 1) dep |= s->slot_dep[I->a[q]] & 1, tdep |= (s->slot_dep[I->a[q]] & 2) != 0;
+  if (dep) return 1;
+  if (!tdep) return 0;
+  int covered = (I->op == BG_X_TABLE ||
+                 (I->op == BG_X_CALL && (I->ref == BG_FN_STEP || I->ref == BG_FN_RAMP || I->ref == BG_FN_PULSE))) &&
+                t_shift(s, prod, I->a[0]) && (I->op != BG_X_CALL || I->ref != BG_FN_PULSE || s->is_const[I->a[1]]);
+  return !covered;
 }
 
 static const char *sub_text(const tinstr *I, int sub) {
@@ -76,15 +110,14 @@ static const char *describe(bg_eqsys *s, const tinstr *I, int sub) {
 
 void bg_eqs_events_find(bg_eqsys *s) {
   mark_deps(s);
-  int nev = 0, nroot = 0, cond;
-  for (int k = 0; k < s->nmain; k++) {
-    const tinstr *I = &s->code[k];
-    int nr = roots_of(s, I, &cond), dep = 0;
-    for (int q = 0; q < I->na && q < 3; q++) dep |= (cond >> q & 1) && s->slot_dep[I->a[q]];
-    if (nr && dep) nev++, nroot += nr;
-  }
+  int nev = 0, nroot = 0, nr;
+  int *prod = bg_xmalloc((size_t)(s->nslot + 1) * sizeof(int));
+  for (int i = 0; i <= s->nslot; i++) prod[i] = -1;
+  for (int k = 0; k < s->nmain; k++) prod[s->code[k].out] = k;
+  for (int k = 0; k < s->nmain; k++)
+    if (is_event(s, prod, k, &nr)) nev++, nroot += nr;
   s->nev = nev, s->nroot = nroot;
-  if (!nev) return;
+  if (!nev) { free(prod); return; }
   s->code_ev = bg_arena_alloc(&s->arena, (size_t)s->nmain * sizeof(int));
   s->ev_code = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(int));
   s->ev_root0 = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(int));
@@ -100,14 +133,13 @@ void bg_eqs_events_find(bg_eqsys *s) {
   nev = nroot = 0;
   for (int k = 0; k < s->nmain; k++) {
     const tinstr *I = &s->code[k];
-    int nr = roots_of(s, I, &cond), dep = 0;
-    for (int q = 0; q < I->na && q < 3; q++) dep |= (cond >> q & 1) && s->slot_dep[I->a[q]];
     s->code_ev[k] = -1;
-    if (!nr || !dep) continue;
+    if (!is_event(s, prod, k, &nr)) continue;
     s->code_ev[k] = nev, s->ev_code[nev] = k, s->ev_root0[nev] = nroot, s->ev_mode[nev] = 0;
     for (int j = 0; j < nr; j++) s->root_ev[nroot + j] = nev, s->root_text[nroot + j] = describe(s, I, j);
     nev++, nroot += nr;
   }
+  free(prod);
 }
 
 /* ------------------------------------------------------------ tables */

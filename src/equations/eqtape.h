@@ -135,7 +135,7 @@ struct bg_eqsys {
   unsigned char *ev_free;     /* per event: undecided at the last update, evaluated as compiled */
   int nroot, *root_ev;
   const char **root_text;
-  unsigned char *slot_dep; /* per slot: reads y or yp */
+  unsigned char *slot_dep; /* per slot: reads y or yp (bit 1), t (bit 2) */
   double *ev_y, *ev_yp;    /* n-sized scratch of the look-ahead */
   int ev_frozen;           /* evaluate with the modes frozen (set by the simulation) */
   int vals_frozen;         /* the current values were computed with frozen modes */
