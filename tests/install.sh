@@ -14,7 +14,7 @@ ROOT=$PWD
 cmake --install "$BUILD" --prefix "$tmp/p" >"$tmp/install.log" 2>&1; st=$?
 check "cmake --install (got $st)" $st
 for f in bin/bgdraw share/bgdraw/styles/print.style share/man/man1/bgdraw.1 \
-         share/bash-completion/completions/bgdraw include/bgdraw.h; do
+         share/bash-completion/completions/bgdraw include/bgdraw.h include/bgdraw_version.h; do
   [ -f "$tmp/p/$f" ]; check "installed $f" $?
 done
 pc=$(find "$tmp/p" -name bgdraw.pc | head -1)
@@ -55,6 +55,24 @@ PKG_CONFIG_PATH=$(dirname "$pc") cc -std=c11 -Wall -Wextra -o "$tmp/prog" "$tmp/
   $(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs bgdraw) 2>"$tmp/cc.err"
 check "the C program compiles and links with pkg-config bgdraw" $?
 
+# docs/library.md's complete program (its first C block) and CMake file
+# (its CMake block): built with pkg-config and with find_package(bgdraw)
+awk '/^```c$/{on=1; next} /^```$/{if (on) exit} on' docs/library.md >"$tmp/rlcinfo.c"
+mkdir -p "$tmp/cm"
+awk '/^```cmake$/{on=1; next} /^```$/{if (on) exit} on' docs/library.md >"$tmp/cm/CMakeLists.txt"
+cp "$tmp/rlcinfo.c" "$tmp/cm/"
+[ -s "$tmp/rlcinfo.c" ] && grep -q find_package "$tmp/cm/CMakeLists.txt"
+check "docs/library.md has the example program and its CMake file" $?
+cc -std=c11 -Wall -Wextra -Werror -o "$tmp/rlcinfo" "$tmp/rlcinfo.c" \
+  $(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs bgdraw) 2>"$tmp/cc2.err"
+check "docs/library.md's program compiles with pkg-config, no warning" $?
+[ -s "$tmp/cc2.err" ] && cat "$tmp/cc2.err"
+cmake -S "$tmp/cm" -B "$tmp/cm/build" -DCMAKE_PREFIX_PATH="$tmp/q" >"$tmp/cm.log" 2>&1 &&
+  cmake --build "$tmp/cm/build" >>"$tmp/cm.log" 2>&1
+st=$?; check "docs/library.md's program builds with find_package(bgdraw) (got $st)" $st
+[ $st -eq 0 ] || tail -20 "$tmp/cm.log"
+cp "$tmp/cm/build/rlcinfo" "$tmp/rlcinfo_cmake" 2>/dev/null
+
 # run everything with the source and build trees hidden
 hide="mount -t tmpfs none '$ROOT'"
 case $BUILD in "$ROOT"/*) ;; *) hide="$hide && mount -t tmpfs none '$BUILD'" ;; esac
@@ -65,6 +83,8 @@ cd '$tmp'
 unset BGDRAW_STYLE_DIR
 '$tmp/q/bin/bgdraw' rlc.bg --style print -o got.svg
 LD_LIBRARY_PATH='$(dirname "$lib")' ./prog rlc.bg lib.svg > prog.out
+LD_LIBRARY_PATH='$(dirname "$lib")' ./rlcinfo rlc.bg info.svg > info.out
+LD_LIBRARY_PATH='$(dirname "$lib")' ./rlcinfo_cmake rlc.bg info_cmake.svg > info_cmake.out
 EOF
 if unshare -m true 2>/dev/null; then
   unshare -m sh -c "$hide && sh '$tmp/run.sh'" 2>"$tmp/err"; st=$?
@@ -79,6 +99,19 @@ cmp -s "$tmp/want.svg" "$tmp/got.svg"; check "installed bgdraw --style print = t
 [ "$(cat "$tmp/prog.out" 2>/dev/null)" = "rlc 4 2 1 1" ]
 check "the C program: name rlc, 4 bonds, 2 states, an SVG (got '$(cat "$tmp/prog.out" 2>/dev/null)')" $?
 cmp -s "$tmp/want.svg" "$tmp/lib.svg"; check "libbgdraw's print-style SVG = bgdraw's" $?
+# what docs/library.md's program prints of rlc: the strokes, the index, the
+# last row (a series RLC after 2 ms: the capacitor charged to 1 V), and the
+# same SVG as bgdraw --style print
+printf '%s\n' 'rlc: 4 bonds, 2 states' 'bond 1 U -> j, stroke at the to end' \
+  'bond 2 j -> R1, stroke at the from end' 'bond 3 j -> L1, stroke at the to end' \
+  'bond 4 j -> C1, stroke at the from end' 'form ode, index 0 predicted, 0 numeric' >"$tmp/info.want"
+head -6 "$tmp/info.out" 2>/dev/null | cmp -s - "$tmp/info.want"
+check "docs/library.md's program prints rlc's strokes and index (got '$(head -6 "$tmp/info.out" 2>/dev/null)')" $?
+tail -1 "$tmp/info.out" 2>/dev/null | grep -qE '^t = 0.002: C1.e = 1(\.0+)? L1.f = -?[0-9.e+-]+$'
+check "docs/library.md's program prints the last row (got '$(tail -1 "$tmp/info.out" 2>/dev/null)')" $?
+cmp -s "$tmp/want.svg" "$tmp/info.svg"; check "docs/library.md's program writes bgdraw's SVG" $?
+cmp -s "$tmp/info.out" "$tmp/info_cmake.out" && cmp -s "$tmp/info.svg" "$tmp/info_cmake.svg"
+check "the find_package build gives the same output" $?
 
 # the man page describes every long option of --help
 sed 's/\\-/-/g' docs/bgdraw.1 >"$tmp/man.txt"

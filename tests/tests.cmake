@@ -13,6 +13,16 @@ function(bg_add_test name)
 endfunction()
 
 file(GLOB BG_UNIT_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/unit/test_*.c)
+# test_api is a program of libbgdraw's users: the public header and the
+# shared library only, nothing of the engine.
+list(REMOVE_ITEM BG_UNIT_TESTS ${CMAKE_SOURCE_DIR}/tests/unit/test_api.c)
+add_executable(test_api ${CMAKE_SOURCE_DIR}/tests/unit/test_api.c)
+target_include_directories(test_api PRIVATE ${CMAKE_SOURCE_DIR}/tests/unit)
+target_link_libraries(test_api PRIVATE libbgdraw m)
+target_compile_definitions(test_api PRIVATE BG_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+  BG_BINARY_DIR="${CMAKE_BINARY_DIR}" BG_EXE="$<TARGET_FILE:bgdraw>")
+add_test(NAME api COMMAND test_api)
+set_tests_properties(api PROPERTIES TIMEOUT 900 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 foreach(f ${BG_UNIT_TESTS})
   get_filename_component(n ${f} NAME_WE)
   string(REGEX REPLACE "^test_" "" n ${n})

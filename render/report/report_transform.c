@@ -79,11 +79,11 @@ void rp_sec_transform(rp_ctx *c) {
   rp_para(d, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
   bg_sb_free(&b);
   rp_gap(d, 6);
-  compare(c, c->a, &tx->analysis);
+  compare(c, c->a, &tx->run->analysis);
   rp_gap(d, 6);
   /* both drawings below the table when each gets 150 points there, else on a new page */
   double h = (rp_room(d) - 90) / 2;
   if (h < 150) h = (rp_page_room(d) - 90) / 2;
   drawing(c, "Before", c->m, c->a, h);
-  drawing(c, "After", tx->model, &tx->analysis, h);
+  drawing(c, "After", tx->run->model, &tx->run->analysis, h);
 }

@@ -268,12 +268,35 @@ static void print_json(const bg_diags *d, const bg_diag *g, FILE *out) {
   bg_sb_free(&b);
 }
 
+/* bg_diags_each's instance chain: each link a note. */
+static void visit_chain(const bg_diag *g, void *ctx) {
+  struct { void (*fn)(void *, const bg_diag *, int); void *ctx; } *c = ctx;
+  c->fn(c->ctx, g, 1);
+}
+
 static int cmp_pos(const void *a, const void *b) {
   const bg_diag *x = *(bg_diag *const *)a, *y = *(bg_diag *const *)b;
   if (x->loc.file != y->loc.file) return x->loc.file < y->loc.file ? -1 : 1;
   if (x->loc.line != y->loc.line) return x->loc.line < y->loc.line ? -1 : 1;
   if (x->loc.col != y->loc.col) return x->loc.col < y->loc.col ? -1 : 1;
   return x < y ? -1 : (x > y);
+}
+
+void bg_diags_each(const bg_diags *d, void (*fn)(void *ctx, const bg_diag *g, int is_note),
+                   void *ctx) {
+  const bg_diag **order = bg_xmalloc((size_t)(d->n ? d->n : 1) * sizeof *order);
+  int k = 0;
+  for (int i = 0; i < d->n; i++)
+    if (d->items[i].sev != BG_SEV_NOTE || i == 0) order[k++] = &d->items[i];
+  qsort(order, (size_t)k, sizeof *order, cmp_pos);
+  for (int i = 0; i < k; i++) {
+    fn(ctx, order[i], 0);
+    for (const bg_diag *n = order[i] + 1; n < d->items + d->n && n->sev == BG_SEV_NOTE; n++)
+      fn(ctx, n, 1);
+    struct { void (*fn)(void *, const bg_diag *, int); void *ctx; } chain = {fn, ctx};
+    each_context(d, order[i]->loc.file, visit_chain, &chain);
+  }
+  free(order);
 }
 
 void bg_diags_print(const bg_diags *d, FILE *out) {

@@ -73,6 +73,11 @@ int bg_diags_full(const bg_diags *d);
  * after the limit, a note that more errors were not shown. */
 void bg_diags_print(const bg_diags *d, FILE *out);
 
+/* Every diagnostic in the order bg_diags_print prints them, each followed
+ * by its notes (is_note 1: the notes written after it, then the chain of
+ * instances its source is used from); a note's g lives only during the call. */
+void bg_diags_each(const bg_diags *d, void (*fn)(void *ctx, const bg_diag *g, int is_note),
+                   void *ctx);
 /* How bg_diags_print writes, for the whole process: the program sets it once,
  * before any run starts, from its own stderr (a terminal or not, NO_COLOR,
  * --diagnostics-format), and never again, so runs on several threads only

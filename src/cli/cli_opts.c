@@ -13,6 +13,7 @@
 #include "base/fileio.h"
 #include "base/strbuf.h"
 #include "cli/cli_opts.h"
+#include "output/output.h"
 #include "cli/cli_usage.h"
 
 enum {
@@ -214,13 +215,10 @@ void bg_cli_print_help(FILE *out) {
       "draws it. With no -o the diagram goes to out/<model>.svg; MODEL '-' reads\n"
       "standard input.\n"
       "\n"
-      "outputs (-o FILE, repeatable; the format follows the extension):\n"
-      "  .svg .pdf .png   annotated diagram        .json  analysis\n"
-      "  .dot             graph with positions     .tex   equations in LaTeX\n"
-      "  .c               equations as C           .csv   simulation results\n"
-      "  .m .py .mo       the model for Octave/MATLAB, Python, Modelica (export.md)\n"
-      "  .fmu             FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)\n"
-      "  .bg              the model rewritten by --transform\n"
+      "outputs (-o FILE, repeatable; the format follows the extension):\n", out);
+  for (const bg_output_kind *k = bg_output_kinds; k->name; k++) /* src/output's table */
+    if (k->flags & BG_OUTK_EXT) fprintf(out, "  .%-5s %s\n", k->name, k->what);
+  fputs(
       "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
       "                      -o - (stdout); -T alone writes to stdout\n"
       "  -M, --depfile FILE  make rule: the outputs depend on the model, style\n"

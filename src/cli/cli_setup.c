@@ -10,59 +10,13 @@
 #include "base/strbuf.h"
 #include "cli/cli_run.h"
 
-static const char *const layer_words[] = {"strokes", "numbers", "paths",  "loops",
-                                          "conflicts", "signals", "labels", "legend",
-                                          "variables", "all", "none", NULL};
-/* Naming one of these makes the list the whole set of layers; a list of
- * overlays only (paths, loops, conflicts, signals, legend, variables) or
- * +LAYER items add to the default layers. */
-static const char *const base_words[] = {"strokes", "numbers", "labels", "all", "none", NULL};
-
-static int word_in(const char *w, const char *const *list) {
-  for (int i = 0; list[i]; i++)
-    if (!strcmp(w, list[i])) return 1;
-  return 0;
-}
-
-static int unknown_layer(const char *w, const char *list) {
-  const char *best = NULL;
-  int bestd = 3;
-  for (int i = 0; layer_words[i]; i++) {
-    int d = bg_edit_distance(w, layer_words[i]);
-    if (d < bestd) bestd = d, best = layer_words[i];
-  }
-  fprintf(stderr, "bgdraw: error: unknown layer '%s' in --show '%s'", w, list);
-  if (best) fprintf(stderr, " (did you mean '%s'?)", best);
-  fputs("\n  layers: strokes, numbers, paths, loops, conflicts, signals, labels, legend, "
-        "variables; or all, none; +LAYER adds to the default\n", stderr);
-  return -1;
-}
-
 /* Parses --show into *bits; -1 after a message. */
 static int parse_show(const char *list, unsigned *bits) {
-  bg_strbuf plain = {0};
-  int replaces = 0;
-  char *copy = strdup(list), *save = NULL;
-  for (char *w = strtok_r(copy, ",", &save); w; w = strtok_r(NULL, ",", &save)) {
-    while (*w == ' ') w++;
-    for (size_t n = strlen(w); n && w[n - 1] == ' '; n--) w[n - 1] = '\0';
-    int plus = *w == '+';
-    if (plus) w++;
-    if (!word_in(w, layer_words)) {
-      int rc = unknown_layer(w, list);
-      free(copy), bg_sb_free(&plain);
-      return rc;
-    }
-    replaces |= !plus && word_in(w, base_words);
-    bg_sb_printf(&plain, "%s%s", plain.len ? "," : "", w);
-  }
-  free(copy);
-  unsigned b = 0;
-  bg_show_parse(bg_sb_str(&plain), &b); /* every word was checked above */
-  bg_sb_free(&plain);
-  if (!replaces) b = (b & ~(1u << 31)) | BG_SHOW_DEFAULT;
-  *bits = b;
-  return 0;
+  bg_strbuf err = {0};
+  int rc = bg_output_parse_show(list, bits, &err);
+  if (rc) fprintf(stderr, "bgdraw: error: %s\n", bg_sb_str(&err));
+  bg_sb_free(&err);
+  return rc;
 }
 
 /* DIR/../share/bgdraw/styles of the running executable (installed), else

@@ -7,9 +7,9 @@
 
 #include "base/fileio.h"
 #include "cli/cli_usage.h"
+#include "output/output.h"
 #include "transform/transform.h"
 
-static const char *const formats[] = {"svg", "pdf", "png", "json", "dot", "tex", "c", "csv", "m", "py", "mo", "fmu", "bg", NULL};
 static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
 static const char *const lin_forms[] = {"text", "latex", "json", "octave", "python", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
@@ -38,6 +38,25 @@ static void join_list(const char *const *list, char *buf, size_t n) {
   }
 }
 
+/* The formats -o FILE.EXT and -T choose: the rows of the output table
+ * (src/output) marked BG_OUTK_EXT, in the table's order. */
+static void join_formats(char *buf, size_t n) {
+  buf[0] = '\0';
+  for (const bg_output_kind *k = bg_output_kinds; k->name; k++) {
+    if (!(k->flags & BG_OUTK_EXT)) continue;
+    if (buf[0]) strncat(buf, ", ", n - strlen(buf) - 1);
+    strncat(buf, k->name, n - strlen(buf) - 1);
+  }
+}
+
+static int check_format(const char *val) {
+  if (!val || bg_output_for_ext(val)) return 0;
+  char buf[200], msg[300];
+  join_formats(buf, sizeof buf);
+  snprintf(msg, sizeof msg, "-T takes one of: %s", buf);
+  return bg_cli_usage_error("unknown value '%s' for %s", val, msg);
+}
+
 static int check_choice(const char *opt, const char *val, const char *const *list) {
   if (!val || in_list(val, list)) return 0;
   char buf[200], msg[300];
@@ -57,7 +76,7 @@ static int check_choices(const bg_cli_opts *o) {
          check_choice("--equations", o->equations, eq_forms) ||
          check_choice("--linear", o->linear, lin_forms) ||
          check_choice("--layout", o->layout, layouts) ||
-         check_choice("-T", o->force_format, formats) ||
+         check_format(o->force_format) ||
          check_choice("--diagnostics-format", o->diag_format, diag_formats) ||
          check_choice("--color", o->color, colors) || check_transform(o->transform) ? -1 : 0;
 }
@@ -70,22 +89,24 @@ static int resolve_format(const bg_cli_opts *o, bg_cli_output *out) {
   if (bg_cli_is_stdout(out->path)) {
     if (!T) return bg_cli_usage_error("-o - writes to stdout: name its format with -T "
                                       "(e.g. -T svg)%s%s", "", "");
-    out->format = T;
+    out->format = bg_output_for_ext(T)->name;
     return 0;
   }
   /* .bg is a format only for --transform: before it, -T svg -o m.bg wrote svg */
   int bg_without_transform = !strcmp(out->format, "bg") && !o->transform && T;
-  if (in_list(out->format, formats) && !bg_without_transform) {
-    if (!T || !strcmp(T, out->format)) return 0;
+  const bg_output_kind *k = bg_output_for_ext(out->format);
+  if (k && !bg_without_transform) {
+    out->format = k->name; /* ".SVG" is an SVG */
+    if (!T || !strcmp(bg_output_for_ext(T)->name, out->format)) return 0;
     snprintf(msg, sizeof msg, "-T %s with -o '%s'", T, out->path);
     return bg_cli_usage_error("%s: the extension says %s; drop -T or rename the file",
                               msg, out->format);
   }
   if (T) {
-    out->format = T;
+    out->format = bg_output_for_ext(T)->name;
     return 0;
   }
-  join_list(formats, buf, sizeof buf);
+  join_formats(buf, sizeof buf);
   return bg_cli_usage_error("cannot tell the format of '%s': use an extension (%s) or -T FMT",
                             out->path, buf);
 }

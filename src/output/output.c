@@ -155,21 +155,26 @@ static bg_output_status write_transformed(bg_output *w, const bg_output_kind *k,
 
 /* ------------------------------------------------------------------ table */
 const bg_output_kind bg_output_kinds[] = {
-    {"svg", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, SVG"},
-    {"pdf", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, PDF"},
-    {"png", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the annotated diagram, PNG"},
-    {"dot", BG_STAGE_ANALYSIS, BG_OUTK_DRAWS, write_diagram, "the diagram's layout as Graphviz DOT"},
-    {"json", BG_STAGE_REDUCTION, BG_OUTK_MODEL_LIN, write_json, "the analysis document (docs/json.md)"},
+    /* chosen by -o FILE.EXT, in --help's order */
+    {"svg", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, SVG"},
+    {"pdf", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, PDF"},
+    {"png", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, PNG"},
+    {"json", BG_STAGE_REDUCTION, BG_OUTK_EXT | BG_OUTK_MODEL_LIN, write_json,
+     "the analysis (docs/json.md)"},
+    {"dot", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "graph with positions (Graphviz)"},
+    {"tex", BG_STAGE_EQUATIONS, BG_OUTK_EXT, write_tex, "equations in LaTeX"},
+    {"c", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "equations as C, NAME.h beside it"},
+    {"csv", BG_STAGE_SIMULATION, BG_OUTK_EXT, write_csv, "simulation results"},
+    {"m", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Octave/MATLAB (export.md)"},
+    {"py", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Python/SciPy"},
+    {"mo", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Modelica"},
+    {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_EXT | BG_OUTK_FILE_ONLY, NULL,
+     "FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)"},
+    {"bg", BG_STAGE_ANALYSIS, BG_OUTK_EXT, write_transformed, "the model rewritten by --transform"},
+    /* chosen by options of their own */
+    {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
     {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},
     {"equations", BG_STAGE_EQUATIONS, 0, write_equations, "the equations: text, latex, json or c"},
-    {"tex", BG_STAGE_EQUATIONS, 0, write_tex, "the equations as LaTeX"},
-    {"c", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's source (docs/export.md)"},
-    {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
-    {"py", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Python export"},
-    {"m", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Octave/MATLAB export"},
-    {"mo", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the Modelica export"},
-    {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_FILE_ONLY, NULL, "an FMI 2.0 Model Exchange FMU"},
-    {"csv", BG_STAGE_SIMULATION, 0, write_csv, "the simulation's output rows"},
     {"plot", BG_STAGE_SIMULATION, BG_OUTK_DRAWS, write_plot, "the simulation plots: svg, pdf or png"},
     {"report", BG_STAGE_REDUCTION, BG_OUTK_DRAWS | BG_OUTK_MODEL_SIM | BG_OUTK_MODEL_LIN, write_report,
      "the multi-page PDF report"},
@@ -177,7 +182,6 @@ const bg_output_kind bg_output_kinds[] = {
     {"bode", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Bode diagrams: svg, pdf or png"},
     {"nyquist", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Nyquist diagrams: svg, pdf or png"},
     {"step", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "step and impulse responses: svg, pdf or png"},
-    {"bg", BG_STAGE_ANALYSIS, 0, write_transformed, "the model --transform wrote"},
     {NULL, 0, 0, NULL, NULL},
 };
 
@@ -187,14 +191,9 @@ const bg_output_kind *bg_output_find(const char *name) {
   return NULL;
 }
 
-/* The outputs a file extension chooses: the diagram formats, json, tex, the
- * exports, csv and bg (not check, equations, plot, report or the linear
- * plots, which have options of their own). */
 const bg_output_kind *bg_output_for_ext(const char *ext) {
-  static const char *const by_ext[] = {"svg", "pdf", "png", "dot", "json", "tex", "c", "py",
-                                       "m", "mo", "fmu", "csv", "bg", NULL};
-  for (int i = 0; ext && by_ext[i]; i++)
-    if (!strcasecmp(ext, by_ext[i])) return bg_output_find(by_ext[i]);
+  for (const bg_output_kind *k = bg_output_kinds; ext && k->name; k++)
+    if ((k->flags & BG_OUTK_EXT) && !strcasecmp(ext, k->name)) return k;
   return NULL;
 }
 

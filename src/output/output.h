@@ -25,7 +25,8 @@ enum {
   BG_OUTK_DRAWS = 1,      /* needs the renderers (Graphviz, cairo, pango) */
   BG_OUTK_MODEL_SIM = 2,  /* and the simulation when the model has a simulate block */
   BG_OUTK_MODEL_LIN = 4,  /* and the linear analysis when the model has a linearise statement */
-  BG_OUTK_FILE_ONLY = 8   /* only into a named file (the FMU: the command line builds it) */
+  BG_OUTK_FILE_ONLY = 8,  /* only into a named file (the FMU: the command line builds it) */
+  BG_OUTK_EXT = 16        /* chosen by a file's extension (-o FILE.EXT) or -T */
 };
 
 typedef struct bg_output bg_output;
@@ -65,12 +66,17 @@ struct bg_output {
 extern const bg_output_kind bg_output_kinds[];
 /* The row named name, or NULL. */
 const bg_output_kind *bg_output_find(const char *name);
-/* The output kind of a file extension ("svg" -> "svg", "tex" -> "tex"),
- * case as given; NULL when no output has it. */
+/* The output kind of a file extension (a row with BG_OUTK_EXT; "SVG" and
+ * "svg" alike); NULL when no output has it. */
 const bg_output_kind *bg_output_for_ext(const char *ext);
 
 void bg_output_init(bg_output *w, bg_run *run, const bg_output_opts *o);
 void bg_output_free(bg_output *w);
+/* A --show list into layer bits: overlays (paths, loops, conflicts,
+ * signals, legend, variables) and +LAYER add to the default layers; a base
+ * layer makes the list the whole set. -1 with the reason (and the layers'
+ * names) in err. */
+int bg_output_parse_show(const char *list, unsigned *bits, bg_strbuf *err);
 /* Forgets the messages of the writes so far (after they were shown). */
 void bg_output_clear_messages(bg_output *w);
 /* Runs the stages the output needs (bg_output_need) and writes it into out.

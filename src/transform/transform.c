@@ -52,9 +52,7 @@ static void write_header(tx_ctx *c) {
 
 /* The new text compiled and analysed into out. */
 static int check_result(tx_ctx *c, bg_transform_result *out, char **why) {
-  if (tx_compile(c, out->text, &out->model, &out->analysis, why) != 0) return -1;
-  out->analysed = 1;
-  return 0;
+  return tx_compile(c, out->text, &out->run, why);
 }
 
 int bg_transform_apply(const bg_transform_input *in, bg_transform_result *out, char **why) {
@@ -96,7 +94,6 @@ int bg_transform_apply(const bg_transform_input *in, bg_transform_result *out, c
 void bg_transform_result_free(bg_transform_result *r) {
   free(r->text);
   free(r->summary);
-  if (r->analysed) bg_analysis_free(&r->analysis);
-  if (r->model) bg_model_free(r->model);
+  bg_run_free(r->run);
   memset(r, 0, sizeof *r);
 }

@@ -18,6 +18,7 @@
 #include "causality/causality.h"
 #include "lang/lang.h"
 #include "model/model.h"
+#include "run/run.h"
 
 /* The factor by which the parasitic stores' estimated time scales are
  * faster than the model's fastest estimate (docs/transform.md). */
@@ -42,9 +43,8 @@ typedef struct bg_transform_input {
 typedef struct bg_transform_result {
   char *text;          /* the new model (malloc) */
   char *summary;       /* what changed and why, one paragraph (malloc) */
-  bg_model *model;     /* the new model compiled (with the run's --set) */
-  bg_analysis analysis; /* and analysed with its own causality method */
-  int analysed;
+  bg_run *run;         /* the new model, loaded (with the run's --set) and analysed
+                          with its own causality method: a second run */
 } bg_transform_result;
 
 /* 0 with out filled; -1 when the transformation does not apply to this

@@ -94,29 +94,24 @@ void tx_remove_bond(tx_ctx *c, int b) {
   tx_delete_stmt(&c->doc, bond_line(c, b));
 }
 
-int tx_compile(const tx_ctx *c, const char *text, bg_model **m, bg_analysis *a, char **why) {
-  bg_diags dg;
-  size_t len = strlen(text);
-  bg_diags_init(&dg, c->in->path, text, len);
-  bg_ast *ast = bg_parse_string(c->in->path, text, len, &dg);
-  *m = NULL;
-  if (ast && !dg.nerrors) *m = bg_model_compile(ast, c->in->sets, c->in->nsets, &dg);
-  if (ast) bg_ast_free(ast);
-  if (!*m || dg.nerrors) {
+int tx_compile(const tx_ctx *c, const char *text, bg_run **out, char **why) {
+  bg_run_opts o;
+  bg_run_opts_init(&o);
+  o.sets = c->in->sets, o.nsets = c->in->nsets;
+  bg_run *r = bg_run_new(&o);
+  *out = NULL;
+  if (bg_run_load_string(r, c->in->path, text) != 0) {
+    const bg_diags *dg = &r->dg;
     bg_strbuf b = {0};
     bg_sb_printf(&b, "internal error: the transformed model does not compile (line %d: %s)",
-                 dg.n ? dg.items[0].loc.line : 0, dg.n ? dg.items[0].msg : "?");
+                 dg->n ? dg->items[0].loc.line : 0, dg->n ? dg->items[0].msg : "?");
     *why = strdup(bg_sb_str(&b));
     bg_sb_free(&b);
-    bg_diags_free(&dg);
-    if (*m) bg_model_free(*m);
-    *m = NULL;
+    bg_run_free(r);
     return -1;
   }
-  bg_analysis_init(a, *m);
-  bg_causality_assign(*m, (*m)->method, a, &dg);
-  bg_analysis_run(*m, a, NULL);
-  bg_diags_free(&dg);
+  bg_run_need(r, BG_STAGE_ANALYSIS); /* the model's own causality method */
+  *out = r;
   return 0;
 }
 

@@ -79,7 +79,7 @@ void tx_remove_bond(tx_ctx *c, int b);
 
 /* Parses, compiles (with the run's --set) and analyses text: 0 with *m and
  * *a set (free both), -1 with *why (malloc) the first diagnostic. */
-int tx_compile(const tx_ctx *c, const char *text, bg_model **m, bg_analysis *a, char **why);
+int tx_compile(const tx_ctx *c, const char *text, bg_run **out, char **why);
 /* The line after which new params go: the last param statement, else the
  * model statement, else 0 (the top). */
 int tx_param_line(const tx_ctx *c);

@@ -302,7 +302,7 @@ static void say_targets(tx_ctx *c, const plan *p) {
 /* The model with every planned store at value 1 (their estimates are then
  * measured and the values sized), compiled and analysed; -1 with the
  * reason in c->problem when it does not compile. */
-static int trial_model(tx_ctx *c, plan *p, bg_model **tm, bg_analysis *ta) {
+static int trial_model(tx_ctx *c, plan *p, bg_run **trial_run) {
   for (int i = 0; i < p->n; i++) p->t[i].value = 1;
   initial_values(c, p);
   tx_doc trial;
@@ -310,7 +310,7 @@ static int trial_model(tx_ctx *c, plan *p, bg_model **tm, bg_analysis *ta) {
   emit(c, p, &trial);
   char *text = tx_doc_text(&trial), *why = NULL;
   tx_doc_free(&trial);
-  int rc = tx_compile(c, text, tm, ta, &why);
+  int rc = tx_compile(c, text, trial_run, &why);
   free(text);
   if (rc != 0) {
     bg_sb_puts(&c->problem, why);
@@ -338,21 +338,20 @@ int tx_parasitic(tx_ctx *c) {
                             "choose the stores' values from");
     goto out;
   }
-  bg_model *tm;
-  bg_analysis ta;
-  if (trial_model(c, &p, &tm, &ta) != 0) goto out;
+  bg_run *trial;
+  if (trial_model(c, &p, &trial) != 0) goto out;
+  const bg_analysis *ta = &trial->analysis;
   double want = scale / BG_TX_PARASITIC_FACTOR;
-  rc = size_stores(c, &p, tm, &ta, want, &said);
+  rc = size_stores(c, &p, trial->model, ta, want, &said);
   /* better: a lower predicted index, or fewer algebraic loops and conflicts */
-  int ia = c->a->index_predicted, ib = ta.index_predicted;
-  int new_ode = ta.form == BG_FORM_ODE;
-  int fixed = (ib >= 0 && ia >= 0 && ib < ia) || (ib <= ia && problems(&ta) < problems(c->a));
+  int ia = c->a->index_predicted, ib = ta->index_predicted;
+  int new_ode = ta->form == BG_FORM_ODE;
+  int fixed = (ib >= 0 && ia >= 0 && ib < ia) || (ib <= ia && problems(ta) < problems(c->a));
   char after[160];
   snprintf(after, sizeof after, " The new model is %s with predicted index %s.",
-           ta.form == BG_FORM_ODE ? "an explicit ODE" : ta.form == BG_FORM_DAE ? "a DAE"
+           ta->form == BG_FORM_ODE ? "an explicit ODE" : ta->form == BG_FORM_DAE ? "a DAE"
            : "causally incomplete", ib < 0 ? "unknown" : ib >= 2 ? "above 1" : ib ? "1" : "0");
-  bg_analysis_free(&ta);
-  bg_model_free(tm);
+  bg_run_free(trial);
   if (rc == 0 && !fixed) {
     bg_sb_puts(&c->problem, "the stores would not remove a class 2 causal path, a causal loop "
                             "or a conflict");

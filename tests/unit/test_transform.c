@@ -61,12 +61,12 @@ static void test_merge_capacitors(void) {
   char *why = NULL;
   INT_EQ(bg_transform_apply(&in, &r, &why), 0);
   OK(strstr(r.text, "C   C1 = C1v + C2v*n^2\n") != NULL);
-  int e = bg_model_find_elem(r.model, "C1");
-  OK(e >= 0 && bg_model_find_elem(r.model, "C2") < 0);
-  INT_EQ(r.analysis.elem_caus[e], BG_CAUS_INTEGRAL);
-  INT_EQ(r.analysis.ndependent, 0);
+  int e = bg_model_find_elem(r.run->model, "C1");
+  OK(e >= 0 && bg_model_find_elem(r.run->model, "C2") < 0);
+  INT_EQ(r.run->analysis.elem_caus[e], BG_CAUS_INTEGRAL);
+  INT_EQ(r.run->analysis.ndependent, 0);
   bg_xenv env = {0};
-  DBL_NEAR(bg_xeval(r.model, r.model->elem_expr[e], &env), 2 + 9 * 5, 1e-12);
+  DBL_NEAR(bg_xeval(r.run->model, r.run->model->elem_expr[e], &env), 2 + 9 * 5, 1e-12);
   bg_transform_result_free(&r);
   bg_analysis_free(&a);
   bg_model_free(m);
