@@ -64,18 +64,20 @@ void cli_default_output(run *r, char *buf, size_t n) {
   r->opts.nout = 1;
 }
 
+/* Text to stdout, flushed; EXIT_WRITE (with a message) on a write error. */
+static int write_stdout(const bg_strbuf *sb) {
+  if (bg_write_stream(stdout, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
+  fprintf(stderr, "bgdraw: error: cannot write to stdout: %s\n", bg_file_strerror(errno));
+  return EXIT_WRITE;
+}
+
 int cli_write_text(const char *path, const bg_strbuf *sb) {
-  if (bg_cli_is_stdout(path)) return cli_write_stdout(sb); /* in place, never renamed */
+  if (bg_cli_is_stdout(path)) return write_stdout(sb); /* in place, never renamed */
   if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
   fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
   return EXIT_WRITE;
 }
 
-int cli_write_stdout(const bg_strbuf *sb) {
-  if (bg_write_stream(stdout, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write to stdout: %s\n", bg_file_strerror(errno));
-  return EXIT_WRITE;
-}
 
 /* The writers' messages: errors as diagnostics, a refusal in words. */
 static void say(run *r) {

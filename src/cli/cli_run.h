@@ -36,8 +36,6 @@ int cli_exe_dir(char *buf, size_t n);
 int cli_render_options(run *r);
 /* EXIT_USAGE (with a message) when an output is one of the run's inputs. */
 int cli_check_outputs(run *r);
-/* Text to stdout, flushed; EXIT_WRITE (with a message) on a write error. */
-int cli_write_stdout(const bg_strbuf *sb);
 /* The default output when no -o is given: out/<model>.svg (buf holds the path). */
 void cli_default_output(run *r, char *buf, size_t n);
 /* path's text: atomically to a file, or in place to stdout (BG_CLI_STDOUT);

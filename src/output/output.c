@@ -54,7 +54,8 @@ bg_output_status bg_out_error(bg_output *w, bg_output_status st, const char *fmt
   return st;
 }
 
-bg_output_status bg_out_render_status(int rc) {
+/* BG_RENDER_* as a status. */
+static bg_output_status render_status(int rc) {
   return rc == BG_RENDER_OK ? BG_OUT_OK : rc == BG_RENDER_EWRITE ? BG_OUT_WRITE : BG_OUT_USAGE;
 }
 
@@ -96,7 +97,7 @@ static bg_output_status write_diagram(bg_output *w, const bg_output_kind *k, con
     w->diagram = bg_diagram_build(w->run->model, &w->run->analysis, &w->o.render, &w->dg_model);
     if (!w->diagram) return BG_OUT_USAGE;
   }
-  return bg_out_render_status(bg_diagram_render(w->diagram, form, out, &w->dg_model));
+  return render_status(bg_diagram_render(w->diagram, form, out, &w->dg_model));
 }
 
 /* ----------------------------------------------------------- the equations */
@@ -132,7 +133,7 @@ static bg_output_status write_plot(bg_output *w, const bg_output_kind *k, const 
   (void)k;
   if (!w->run->sim.nrows) return w->nothing = 1, BG_OUT_OK;
   const bg_render_opts *ro = &w->o.render;
-  return bg_out_render_status(bg_plot_render(w->run->model, &w->run->sim, ro->style, ro->style_dir,
+  return render_status(bg_plot_render(w->run->model, &w->run->sim, ro->style, ro->style_dir,
                                              form, path, out, &w->dg));
 }
 
@@ -141,7 +142,7 @@ static bg_output_status write_report(bg_output *w, const bg_output_kind *k, cons
                                      const char *path, bg_strbuf *out) {
   (void)k, (void)form, (void)path;
   bg_report_opts ro = {&w->o.render, w->o.tx ? w->o.transform : NULL, w->o.tx};
-  return bg_out_render_status(bg_report_render(w->run, &ro, out, &w->dg));
+  return render_status(bg_report_render(w->run, &ro, out, &w->dg));
 }
 
 static bg_output_status write_transformed(bg_output *w, const bg_output_kind *k, const char *form,

@@ -8,8 +8,6 @@ bg_output_status bg_out_error(bg_output *w, bg_output_status st, const char *fmt
                               const char *b);
 /* BG_OUT_REFUSED with w->refusal = what followed by why. */
 bg_output_status bg_out_refuse(bg_output *w, const char *what, const char *why);
-/* BG_RENDER_* as a status. */
-bg_output_status bg_out_render_status(int rc);
 /* "no equations for 'path': why". */
 bg_output_status bg_out_no_equations(bg_output *w, const char *path);
 /* output_export.c: one export text (c, h, py, m, mo; "c" without a path: the

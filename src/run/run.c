@@ -11,13 +11,6 @@
 #include "base/fileio.h"
 #include "base/strbuf.h"
 
-static const char *const stage_names[BG_STAGE_COUNT] = {
-    "model", "analysis", "equations", "index", "reduction", "simulation", "linear"};
-
-const char *bg_stage_name(bg_stage s) {
-  return s >= 0 && s < BG_STAGE_COUNT ? stage_names[s] : "unknown";
-}
-
 void bg_run_opts_init(bg_run_opts *o) {
   memset(o, 0, sizeof *o);
   o->method = -1;
@@ -145,7 +138,8 @@ static void index_reduction(bg_run *r) {
   }
 }
 
-bg_eqsys *bg_run_sim_system(const bg_run *r) {
+/* The system a simulation integrates: the index reduction's when there is one. */
+static bg_eqsys *sim_system(const bg_run *r) {
   return r->ired_tried && r->ired.status == 1 ? r->ired.reduced : r->eqsys;
 }
 
@@ -156,7 +150,7 @@ static void simulate(bg_run *r) {
   so.log = &r->o.log;
   so.eqs_problem = r->eqsys_problem;
   so.facts = &r->facts;
-  r->sim_status = bg_simulate(r->model, &r->analysis, bg_run_sim_system(r), &so, &r->sim);
+  r->sim_status = bg_simulate(r->model, &r->analysis, sim_system(r), &so, &r->sim);
   const bg_log *log = &r->o.log;
   if (r->sim.ic_report && !bg_log_on(log, BG_LOG_PROGRESS)) /* -v said it already */
     bg_logf(log, BG_LOG_NOTE, "initial values made consistent: %s", r->sim.ic_report);
@@ -164,7 +158,7 @@ static void simulate(bg_run *r) {
   if (bg_simresult_row_warning(&r->sim, &w)) bg_logf(log, BG_LOG_WARNING, "%s", bg_sb_str(&w));
   bg_sb_clear(&w);
   if (r->sim_status == 0 && r->o.verify) {
-    bg_sim_verify(r->model, &r->analysis, bg_run_sim_system(r), &so, &r->sim);
+    bg_sim_verify(r->model, &r->analysis, sim_system(r), &so, &r->sim);
     if (bg_sim_verify_text(&r->sim, &w)) bg_logf(log, BG_LOG_INFO, "%s", bg_sb_str(&w));
   }
   bg_sb_free(&w);

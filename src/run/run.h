@@ -92,9 +92,5 @@ int bg_run_load_string(bg_run *r, const char *name, const char *text);
  * the model did not load. */
 int bg_run_need(bg_run *r, bg_stage s);
 int bg_run_has(const bg_run *r, bg_stage s);
-/* The system a simulation integrates: the index reduction's when there is one. */
-bg_eqsys *bg_run_sim_system(const bg_run *r);
-/* The stage's name ("model", "analysis", ...). */
-const char *bg_stage_name(bg_stage s);
 void bg_run_free(bg_run *r);
 #endif
