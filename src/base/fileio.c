@@ -218,8 +218,32 @@ static int replace_file(const char *target, const struct stat *old, const void *
   return rc;
 }
 
+/* /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N name a file
+ * descriptor this process already has open: written through it, so a pipe
+ * gets the bytes and a shell's `>> file` appends (following the link to
+ * the file would replace it). -1 when path is none of these. */
+static int open_fd_of(const char *path) {
+  if (!strcmp(path, "/dev/stdout")) return 1;
+  if (!strcmp(path, "/dev/stderr")) return 2;
+  if (!strcmp(path, "/dev/stdin")) return 0;
+  const char *prefixes[] = {"/dev/fd/", "/proc/self/fd/"};
+  for (int i = 0; i < 2; i++) {
+    size_t n = strlen(prefixes[i]);
+    if (strncmp(path, prefixes[i], n) || !path[n]) continue;
+    char *end;
+    long fd = strtol(path + n, &end, 10);
+    if (!*end && fd >= 0 && fd < 1 << 20) return (int)fd;
+  }
+  return -1;
+}
+
 /* ------------------------------------------------------------- public */
 int bg_write_file_atomic(const char *path, const void *data, size_t len) {
+  int fd = open_fd_of(path);
+  if (fd >= 0) {
+    if (fd == 1) fflush(stdout); /* what stdio holds goes first */
+    return write_all(fd, data, len);
+  }
   char *target = resolve_links(path);
   if (!target) return -1;
   struct stat st;

@@ -58,6 +58,9 @@ int bg_path_is_input(const char *path);
  * - a symlink is followed: its final target is written (atomically when
  *   regular) and the link stays;
  * - a character device, FIFO, terminal or socket is written in place;
+ * - /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N are written
+ *   through the descriptor the process has open (a pipe gets the bytes, a
+ *   shell's `>> file` appends);
  * - a block device, a directory or one of the run's inputs is refused
  *   (BG_EBLOCKDEV, EISDIR, BG_EISINPUT).
  * Returns 0, or -1 with errno set. */

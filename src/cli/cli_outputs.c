@@ -1,6 +1,7 @@
 /* Where the outputs go: every output's bytes come from src/output's table;
  * here they are written atomically to their files, or in place to standard
  * output, and their statuses become exit codes (docs/cli.md). */
+#define _DEFAULT_SOURCE /* realpath */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +25,52 @@ static int run_draws(const run *r) {
     if (k && (k->flags & BG_OUTK_DRAWS)) return 1;
   }
   return 0;
+}
+
+/* The file a path names, for comparing outputs: the real path of what exists
+ * (links followed), else the real path of its folder and its name. */
+static char *file_identity(const char *path) {
+  char *real = realpath(path, NULL);
+  if (real) return real;
+  const char *slash = strrchr(path, '/');
+  char dir[4096];
+  snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
+  if (slash == path) snprintf(dir, sizeof dir, "/");
+  char *rdir = realpath(dir, NULL);
+  if (!rdir) return strdup(path);
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "%s/%s", rdir, slash ? slash + 1 : path);
+  free(rdir);
+  return sb.s;
+}
+
+/* Two outputs into one file would overwrite each other: refused before
+ * anything is computed (a usage error). An -o NAME.c also writes NAME.h. */
+static int same_file_twice(const run *r, const char **paths, int n) {
+  char hpaths[BG_MAX_OUTPUTS][4096];
+  const char *all[2 * BG_MAX_OUTPUTS + 8];
+  int k = 0, nh = 0;
+  for (int i = 0; i < n; i++) all[k++] = paths[i];
+  for (int i = 0; i < r->opts.nout && nh < BG_MAX_OUTPUTS; i++) {
+    const char *p = r->opts.out[i].path;
+    size_t len = strlen(p);
+    if (bg_cli_is_stdout(p) || strcmp(r->opts.out[i].format, "c") || len >= sizeof hpaths[0]) continue;
+    memcpy(hpaths[nh], p, len + 1);
+    hpaths[nh][len - 1] = 'h';
+    all[k++] = hpaths[nh++];
+  }
+  char *id[2 * BG_MAX_OUTPUTS + 8];
+  for (int i = 0; i < k; i++) id[i] = file_identity(all[i]);
+  int rc = EXIT_OK;
+  for (int i = 0; i < k && !rc; i++)
+    for (int j = i + 1; j < k && !rc; j++) {
+      if (strcmp(id[i], id[j])) continue;
+      fprintf(stderr, "bgdraw: error: two outputs go to one file, '%s' and '%s' (%s); give each "
+                      "output its own file\n", all[i], all[j], id[i]);
+      rc = EXIT_USAGE;
+    }
+  for (int i = 0; i < k; i++) free(id[i]);
+  return rc;
 }
 
 /* No output may be a file the run reads (model, tables, style): compared by
@@ -52,7 +99,7 @@ int cli_check_outputs(run *r) {
                     "table or a style file); refusing to overwrite it\n", paths[i]);
     return EXIT_USAGE;
   }
-  return EXIT_OK;
+  return same_file_twice(r, paths, n);
 }
 
 /* The default output when no -o is given: out/<model>.svg. */

@@ -2,6 +2,7 @@
  * equations, numeric index, simulation); cli_outputs.c writes the outputs.
  * Only the cli files touch argv, output paths and exit codes. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -154,6 +155,8 @@ static int write_all(run *r) {
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
+  /* a reader that closed the pipe is a write error (status 4), not a death */
+  signal(SIGPIPE, SIG_IGN);
   if (bg_cli_parse(argc, argv, &r.opts) != 0) {
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
