@@ -198,4 +198,19 @@ for law in '= 2' ': e = 2*f' ': f = e/2'; do
   check "outward R1 $law: C1.e(1) = 1 - e^-0.5 and the path estimate RC = 2" $?
 done
 
+# ---- habits of the ecosystem (issue 32): dot's -K, case-blind extensions,
+# the diagram on standard output when it is not a terminal, hints for short options
+usage "-t suggests -T" "did you mean '-T'" "$M" -t svg
+usage "-c lists the long options beginning with c" "did you mean one of --causality, --color, --collapse, --check" "$M" -c
+usage "-T svg:cairo is a sentence" "one renderer for each format.*write -T svg" "$M" -T svg:cairo
+"$BGDRAW" "$M" -K neato -o "$tmp/k.svg" && "$BGDRAW" "$M" --layout neato -o "$tmp/l.svg" &&
+  cmp -s "$tmp/k.svg" "$tmp/l.svg" && ! cmp -s "$tmp/k.svg" <("$BGDRAW" "$M" -T svg)
+check "-K neato is --layout neato" $?
+"$BGDRAW" "$M" -o "$tmp/upper.SVG" && "$BGDRAW" "$M" -o "$tmp/lower.svg" && cmp -s "$tmp/upper.SVG" "$tmp/lower.svg"
+check ".SVG is an SVG" $?
+(cd "$tmp" && rm -rf out && "$BGDRAW" "$root/$M" >redirected.svg && [ ! -e out ] &&
+  cmp -s redirected.svg lower.svg)
+check "bgdraw m.bg > m.svg: the diagram on standard output, no out/ folder" $?
+(cd "$tmp" && rm -rf out && "$BGDRAW" "$root/$M" -M dep.d >/dev/null && [ -s out/rlc.svg ])
+check "with -M the default diagram stays a file (the depfile names it)" $?
 finish

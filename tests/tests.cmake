@@ -1,3 +1,18 @@
+# Labels: `quick` for the tests that together run in under a minute on an
+# idle machine (tools/test.sh --quick, the developer's loop), `slow` for the
+# rest; CI and tools/test.sh run both.
+set(BG_SLOW_TESTS valgrind_outputs fuzz_short render_examples render api index_agree export_cli
+    report_cli threads install equations_json sim_iteration sim_accuracy verify_bound
+    symbols_rule figures scale fonts contrib components fmu_cli transform_cli linear_cli
+    plot_cli mutated_models sim_bridge sim_time_events include_rule)
+function(bg_label name)
+  if(name IN_LIST BG_SLOW_TESTS)
+    set_property(TEST ${name} APPEND PROPERTY LABELS slow)
+  else()
+    set_property(TEST ${name} APPEND PROPERTY LABELS quick)
+  endif()
+endfunction()
+
 # Every tests/unit/test_<name>.c is one test executable linked with the engine
 # (and the renderers when they exist).
 function(bg_add_test name)
@@ -10,6 +25,7 @@ function(bg_add_test name)
   add_test(NAME ${name} COMMAND test_${name})
   set_tests_properties(${name} PROPERTIES TIMEOUT 600
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  bg_label(${name})
 endfunction()
 
 file(GLOB BG_UNIT_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/unit/test_*.c)
@@ -23,6 +39,7 @@ target_compile_definitions(test_api PRIVATE BG_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
   BG_BINARY_DIR="${CMAKE_BINARY_DIR}" BG_EXE="$<TARGET_FILE:bgdraw>")
 add_test(NAME api COMMAND test_api)
 set_tests_properties(api PROPERTIES TIMEOUT 900 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+bg_label(api)
 foreach(f ${BG_UNIT_TESTS})
   get_filename_component(n ${f} NAME_WE)
   string(REGEX REPLACE "^test_" "" n ${n})
@@ -41,6 +58,7 @@ foreach(f ${BG_SCRIPT_TESTS})
   get_filename_component(n ${f} NAME_WE)
   add_test(NAME ${n} COMMAND bash ${f} $<TARGET_FILE:bgdraw>)
   set_tests_properties(${n} PROPERTIES TIMEOUT 900 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  bg_label(${n})
 endforeach()
 include(${CMAKE_SOURCE_DIR}/tests/fuzz/fuzz.cmake)
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs missing packages, configures (once) and builds bgdraw into build/.
+#   bash tools/build.sh           what bgdraw needs (the main job)
+#   bash tools/build.sh --tests   and what the tests need (tools/test.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/deps.sh
+bash tools/deps.sh "$@"
 BUILD_TYPE=${BUILD_TYPE:-RelWithDebInfo}
 BUILD_DIR=${BUILD_DIR:-build}
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages bgdraw needs, only if some are missing.
+# Installs the Debian 12 packages bgdraw needs, only if some are missing:
+#   bash tools/deps.sh          what building and running bgdraw needs (the main job)
+#   bash tools/deps.sh --tests  that and what the test suite needs
 # Runs as root (or with sudo available). Idempotent and quick when nothing is missing.
 set -euo pipefail
 PKGS=(gcc make cmake pkg-config
       libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev zlib1g-dev
-      fonts-dejavu-core poppler-utils libxml2-utils python3
-      python3-numpy python3-scipy octave  # these three run the Python and Octave exports in tests
-      librsvg2-bin pandoc python3-sphinx  # SVG rasterisation check; contrib/ integrations
-      valgrind)  # tests/valgrind_outputs.sh
+      fonts-dejavu-core)
+if [ "${1:-}" = "--tests" ]; then
+  PKGS+=(python3 poppler-utils libxml2-utils  # checkers, PDF pages, SVG well-formedness
+         python3-numpy python3-scipy octave   # the Python and Octave exports, reference solutions
+         librsvg2-bin pandoc python3-sphinx   # SVG rasterisation check; contrib/ integrations
+         valgrind)                            # tests/valgrind_outputs.sh
+fi
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

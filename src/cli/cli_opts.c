@@ -5,6 +5,7 @@
 #define _GNU_SOURCE /* getopt_long */
 #include <getopt.h>
 #include <stddef.h>
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,7 +23,7 @@ enum {
   OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE
 };
 
-static const char short_opts[] = ":o:T:M:qvhV";
+static const char short_opts[] = ":o:T:M:K:qvhV";
 
 static const struct option long_opts[] = {
     {"output", required_argument, NULL, 'o'},
@@ -83,6 +84,7 @@ static const struct {
     {OPT_TRANSFORM, offsetof(bg_cli_opts, transform)},
     {'T', offsetof(bg_cli_opts, force_format)},
     {'M', offsetof(bg_cli_opts, depfile)},
+    {'K', offsetof(bg_cli_opts, layout)}, /* dot's -K ENGINE */
 };
 
 int bg_cli_is_stdout(const char *path) { return path && strcmp(path, BG_CLI_STDOUT) == 0; }
@@ -108,12 +110,36 @@ static const char *closest_option(const char *arg, char *buf, size_t n) {
   return buf[0] ? buf : NULL;
 }
 
+/* An unknown short option -x: the short option of the other case (-t: -T),
+ * else the long options that begin with its letter (-c: --check,
+ * --causality, ...); NULL when none. One letter is too little for an edit
+ * distance: every short option is one edit away. */
+static const char *closest_short(char c, char *buf, size_t n) {
+  static const char shorts[] = "oTMKqvhV";
+  buf[0] = '\0';
+  for (int i = 0; shorts[i]; i++)
+    if (shorts[i] != c && tolower((unsigned char)shorts[i]) == tolower((unsigned char)c)) {
+      snprintf(buf, n, "-%c", shorts[i]);
+      return buf;
+    }
+  int k = 0;
+  for (int i = 0; long_opts[i].name; i++) {
+    if (long_opts[i].name[0] != tolower((unsigned char)c)) continue;
+    size_t used = strlen(buf);
+    snprintf(buf + used, n - used, "%s--%s", k++ ? ", " : "", long_opts[i].name);
+  }
+  return k ? buf : NULL;
+}
+
 static int unknown_option(char **argv, int optopt_char) {
-  char typed[64], hint[64];
+  char typed[64], hint[200];
   if (optopt_char) snprintf(typed, sizeof typed, "-%c", optopt_char);
   else snprintf(typed, sizeof typed, "%s", argv[optind - 1]);
   typed[strcspn(typed, "=")] = '\0'; /* --stlye=print: the option is --stlye */
-  const char *h = closest_option(typed, hint, sizeof hint);
+  const char *h = optopt_char ? closest_short((char)optopt_char, hint, sizeof hint)
+                              : closest_option(typed, hint, sizeof hint);
+  if (h && optopt_char && strchr(h, ','))
+    return bg_cli_usage_error("unknown option '%s' (did you mean one of %s?)", typed, h);
   if (h) return bg_cli_usage_error("unknown option '%s' (did you mean '%s'?)", typed, h);
   return bg_cli_usage_error("unknown option '%s'%s", typed, "");
 }
@@ -232,7 +258,8 @@ void bg_cli_print_help(FILE *out) {
       "  --highlight ITEM    path:K | loop:K | conflict:K\n"
       "  --collapse NAME     draw submodel instance NAME as one box (repeatable; all)\n"
       "  --style NAME|FILE   default | print | slides, or a style file\n"
-      "  --layout ENGINE     dot (default) | neato | fdp | sfdp | pinned | rows\n"
+      "  --layout ENGINE, -K ENGINE\n"
+      "                      dot (default) | neato | fdp | sfdp | pinned | rows\n"
       "  --report FILE.pdf   the full analysis report\n"
       "  --simulate          run the model's simulate block (with --plot FILE, -o FILE.csv\n"
       "                      or -o FILE.json)\n"

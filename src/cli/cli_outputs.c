@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "base/fileio.h"
 #include "base/strbuf.h"
@@ -102,10 +103,16 @@ int cli_check_outputs(run *r) {
   return same_file_twice(r, paths, n);
 }
 
-/* The default output when no -o is given: out/<model>.svg. */
+/* The default output when no -o is given: the SVG diagram on standard
+ * output when that is not a terminal (`bgdraw m.bg > m.svg`, as dot does),
+ * unless a depfile needs a file to name; else out/<model>.svg. */
 void cli_default_output(run *r, char *buf, size_t n) {
-  mkdir("out", 0777); /* may exist already */
-  snprintf(buf, n, "out/%s.svg", r->R->model->name);
+  if (!isatty(STDOUT_FILENO) && !r->opts.depfile) {
+    snprintf(buf, n, "%s", BG_CLI_STDOUT);
+  } else {
+    mkdir("out", 0777); /* may exist already */
+    snprintf(buf, n, "out/%s.svg", r->R->model->name);
+  }
   r->opts.out[0].path = buf;
   r->opts.out[0].format = "svg";
   r->opts.nout = 1;

@@ -36,7 +36,8 @@ int cli_exe_dir(char *buf, size_t n);
 int cli_render_options(run *r);
 /* EXIT_USAGE (with a message) when an output is one of the run's inputs. */
 int cli_check_outputs(run *r);
-/* The default output when no -o is given: out/<model>.svg (buf holds the path). */
+/* The default output when no -o is given: the SVG on standard output when it
+ * is not a terminal, else out/<model>.svg (buf holds the path). */
 void cli_default_output(run *r, char *buf, size_t n);
 /* path's text: atomically to a file, or in place to stdout (BG_CLI_STDOUT);
  * EXIT_WRITE after a message when that failed. */

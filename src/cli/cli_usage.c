@@ -51,6 +51,15 @@ static void join_formats(char *buf, size_t n) {
 
 static int check_format(const char *val) {
   if (!val || bg_output_for_ext(val)) return 0;
+  const char *colon = strchr(val, ':');
+  if (colon) { /* dot's -Tsvg:cairo */
+    char fmt[64];
+    snprintf(fmt, sizeof fmt, "%.*s", (int)(colon - val), val);
+    if (bg_output_for_ext(fmt))
+      return bg_cli_usage_error("-T %s: bgdraw has one renderer for each format (its own SVG "
+                                "writer; cairo and pango for PDF and PNG), so there is nothing to "
+                                "choose after ':'; write -T %s", val, fmt);
+  }
   char buf[200], msg[300];
   join_formats(buf, sizeof buf);
   snprintf(msg, sizeof msg, "-T takes one of: %s", buf);
