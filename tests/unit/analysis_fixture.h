@@ -13,15 +13,17 @@
 #include "analysis/analysis.h"
 #include "analysis/paths_int.h" /* white-box: the tests call the stage's parts */
 #include "analysis/sfg_int.h"
+#include "run_fixture.h"
 
 typedef struct fx {
+  bg_run *run;    /* owns the model and its analysis; NULL when a test builds them */
   bg_model *m;
-  bg_analysis a;
-  bg_diags dg;
+  bg_analysis a;  /* the run's analysis (a view: freed with the run) */
+  bg_diags dg;    /* the test's own diagnostics over src */
   char *src;
 } fx;
 
-static void fx_init_analysis(bg_analysis *a, const bg_model *m) {
+__attribute__((unused)) static void fx_init_analysis(bg_analysis *a, const bg_model *m) {
   memset(a, 0, sizeof *a);
   size_t nb = (size_t)m->nbond + 1, ne = (size_t)m->nelem + 1;
   a->bond_stroke = bg_arena_alloc(&a->arena, nb * sizeof(int));
@@ -37,31 +39,25 @@ static void fx_init_analysis(bg_analysis *a, const bg_model *m) {
  * the source, for variants */
 static int fx_load(fx *f, const char *name, int method, const char *set_name, double set_value,
                    const char *from, const char *to) {
-  char path[512];
-  size_t len;
-  snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
   memset(f, 0, sizeof *f);
-  f->src = bg_read_file(path, &len);
-  if (!f->src) { fprintf(stderr, "cannot read %s\n", path); return -1; }
-  if (from) {
-    if (bg_t_replace(&f->src, from, to)) return -1;
-    len = strlen(f->src);
-  }
-  bg_diags_init(&f->dg, path, f->src, len);
-  bg_ast *ast = bg_parse_string(path, f->src, len, &f->dg);
-  bg_param_override ov = {set_name, set_value};
-  if (ast && !f->dg.nerrors) f->m = bg_model_compile(ast, &ov, set_name ? 1 : 0, &f->dg);
-  if (ast) bg_ast_free(ast);
-  if (!f->m) { bg_diags_print(&f->dg, stderr); return -1; }
-  fx_init_analysis(&f->a, f->m);
-  bg_causality_assign(f->m, method < 0 ? f->m->method : method, &f->a, &f->dg);
-  bg_analysis_run(f->m, &f->a, NULL);
+  bg_t_model mm = {name, NULL, NULL, from, to, method, set_name, set_value};
+  f->run = bg_t_run(&mm, BG_STAGE_ANALYSIS);
+  if (!f->run) return -1;
+  f->src = strdup(f->run->src ? f->run->src : "");
+  bg_diags_init(&f->dg, f->run->name, f->src, strlen(f->src));
+  if (!f->run->model) return -1;
+  f->m = f->run->model;
+  f->a = f->run->analysis;
   return 0;
 }
 
 static void fx_free(fx *f) {
-  bg_arena_free(&f->a.arena);
-  if (f->m) bg_model_free(f->m);
+  if (f->run) {
+    bg_run_free(f->run);
+  } else { /* what a test built itself (fx_init_analysis) */
+    bg_arena_free(&f->a.arena);
+    if (f->m) bg_model_free(f->m);
+  }
   bg_diags_free(&f->dg);
   free(f->src);
 }

@@ -9,53 +9,36 @@
 #include "equations/equations.h"
 #include "lang/lang.h"
 #include "analysis/analysis.h"
+#include "run_fixture.h"
 
 typedef struct efx {
+  bg_run *run;    /* owns the model, its analysis and its equations */
   bg_model *m;
-  bg_analysis a;
-  bg_diags dg;
-  char *src;
+  bg_analysis a;  /* the run's analysis (a view: freed with the run) */
+  bg_diags dg;    /* the test's own diagnostics over the source */
+  char *src;      /* a copy of the source */
   bg_eqsys *s;
-  int analysed;
 } efx;
 
 /* name: example stem, or NULL with inline text; method -1: the model's own. */
 static inline int efx_load(efx *f, const char *name, const char *text, int method, const char *set_name,
                     double set_value) {
-  char path[512];
-  size_t len = 0;
   memset(f, 0, sizeof *f);
-  if (name) {
-    snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
-    f->src = bg_read_file(path, &len);
-  } else {
-    if (!text) return -1; /* neither an example nor inline text */
-    snprintf(path, sizeof path, "inline.bg");
-    len = strlen(text);
-    f->src = malloc(len + 1);
-    memcpy(f->src, text, len + 1);
-  }
-  bg_diags_init(&f->dg, path, f->src, len);
-  if (!f->src) return -1;
-  bg_ast *ast = bg_parse_string(path, f->src, len, &f->dg);
-  if (!ast) return -1;
-  bg_param_override ov = {set_name, set_value};
-  f->m = bg_model_compile(ast, &ov, set_name ? 1 : 0, &f->dg);
-  bg_ast_free(ast);
-  if (!f->m) return -1;
-  bg_analysis_init(&f->a, f->m);
-  f->analysed = 1;
-  bg_causality_assign(f->m, method < 0 ? f->m->method : method, &f->a, &f->dg);
-  bg_analysis_run(f->m, &f->a, NULL);
-  f->s = bg_eqsys_build(f->m, &f->a, &f->dg);
-  if (!f->s) bg_diags_print(&f->dg, stderr);
+  bg_t_model mm = {name, text, NULL, NULL, NULL, method, set_name, set_value};
+  f->run = bg_t_run(&mm, BG_STAGE_EQUATIONS);
+  if (!f->run) return -1;
+  f->src = strdup(f->run->src ? f->run->src : "");
+  bg_diags_init(&f->dg, f->run->name, f->src, strlen(f->src));
+  if (!f->run->model) return -1;
+  f->m = f->run->model;
+  f->a = f->run->analysis;
+  f->s = f->run->eqsys;
+  if (!f->s) fprintf(stderr, "%s: %s\n", f->run->name, f->run->eqsys_problem);
   return f->s ? 0 : -1;
 }
 
 static inline void efx_free(efx *f) {
-  bg_eqsys_free(f->s);
-  if (f->analysed) bg_analysis_free(&f->a);
-  if (f->m) bg_model_free(f->m);
+  bg_run_free(f->run);
   bg_diags_free(&f->dg);
   free(f->src);
 }

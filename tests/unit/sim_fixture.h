@@ -13,12 +13,15 @@
 #include "lang/lang.h"
 #include "analysis/analysis.h"
 #include "simulate/simulate.h"
+#include "run_fixture.h"
 
 typedef struct fx {
+  bg_run *run;    /* owns the model, its analysis and its equations; NULL when
+                     a test builds the model itself */
   bg_model *m;
-  bg_analysis a;
+  bg_analysis a;  /* the run's analysis (a view: freed with the run) */
   bg_eqsys *s;
-  bg_diags dg;
+  bg_diags dg;    /* the test's own diagnostics over src */
   char *src;
   bg_simresult r;
   int rc;
@@ -27,21 +30,17 @@ typedef struct fx {
 /* Replaces the first `from` in f->src by `to` (model variants). */
 static inline int fx_edit(fx *f, const char *from, const char *to) { return bg_t_replace(&f->src, from, to); }
 
-/* Parses f->src, compiles with an optional --set, assigns causality,
- * analyses, builds the equations (which may fail: s NULL) and simulates. */
+/* A run of f->src (path names it) with an optional --set, up to its
+ * equations (none when causality is incomplete), then the simulation with o. */
 static inline int fx_run(fx *f, const char *path, int method, const char *set_name, double set_value,
                   const bg_sim_opts *o) {
-  size_t len = strlen(f->src);
-  bg_diags_init(&f->dg, path, f->src, len);
-  bg_ast *ast = bg_parse_string(path, f->src, len, &f->dg);
-  bg_param_override ov = {set_name, set_value};
-  if (ast && !f->dg.nerrors) f->m = bg_model_compile(ast, &ov, set_name ? 1 : 0, &f->dg);
-  if (ast) bg_ast_free(ast);
-  if (!f->m) { bg_diags_print(&f->dg, stderr); return -1; }
-  bg_analysis_init(&f->a, f->m);
-  bg_causality_assign(f->m, method, &f->a, &f->dg);
-  bg_analysis_run(f->m, &f->a, NULL);
-  if (f->a.complete) f->s = bg_eqsys_build(f->m, &f->a, &f->dg);
+  bg_diags_init(&f->dg, path, f->src, strlen(f->src));
+  bg_t_model mm = {NULL, f->src, path, NULL, NULL, method, set_name, set_value};
+  f->run = bg_t_run(&mm, BG_STAGE_EQUATIONS);
+  if (!f->run || !f->run->model) return -1;
+  f->m = f->run->model;
+  f->a = f->run->analysis;
+  if (f->a.complete) f->s = f->run->eqsys;
   f->rc = bg_simulate(f->m, &f->a, f->s, o, &f->r);
   if (f->r.message) fprintf(stderr, "%s: %s\n", path, f->r.message);
   return 0;
@@ -66,10 +65,14 @@ static inline int fx_text(fx *f, const char *text, const bg_sim_opts *o) {
 }
 
 static inline void fx_free(fx *f) {
-  bg_simresult_free(&f->r);
-  if (f->s) bg_eqsys_free(f->s);
-  bg_analysis_free(&f->a);
-  if (f->m) bg_model_free(f->m);
+  bg_simresult_free(&f->r); /* before the equations its names point into */
+  if (f->run) {
+    bg_run_free(f->run);
+  } else { /* what a test built itself */
+    if (f->s) bg_eqsys_free(f->s);
+    bg_analysis_free(&f->a);
+    if (f->m) bg_model_free(f->m);
+  }
   bg_diags_free(&f->dg);
   free(f->src);
 }

@@ -63,7 +63,7 @@ static void test_hand_rlc(void) {
   memcpy(a.bond_stroke, stroke, sizeof stroke);
   bg_paths_find(&m, &a, 0);
   bg_cloops_find(&m, &a, 0);
-  fx f = {&m, a, {0}, NULL};
+  fx f = {NULL, &m, a, {0}, NULL};
   const char *want[] = {"1,3 U-L1 S-* 0 -", "2,3 R1-L1 I-R 0 1", "3,4 L1-C1 C-I 0 2"};
   check_paths(&f, want, 3);
   INT_EQ(a.ncloop, 0);
