@@ -62,6 +62,15 @@ foreach(f ${BG_SCRIPT_TESTS})
 endforeach()
 include(${CMAKE_SOURCE_DIR}/tests/fuzz/fuzz.cmake)
 
+# The property campaign (docs/property.md): a short deterministic run of
+# generated models against the physics and each other, and the shrinker's
+# self-test.
+add_test(NAME property_short COMMAND bash ${CMAKE_SOURCE_DIR}/tests/property/short.sh
+         $<TARGET_FILE:bgdraw>)
+add_test(NAME property_shrink COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/property/prop.py --self-test)
+set_tests_properties(property_short property_shrink PROPERTIES TIMEOUT 900
+                     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
 # test_threads drives runs through the outputs table (src/output), which the
 # executable and libbgdraw compile in; the test links the renderers directly.
 if(TARGET test_threads)

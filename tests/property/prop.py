@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""The property campaign's driver (docs/property.md).
+
+    prop.py BGDRAW [--count N] [--seed S] [--max-elems K] [--found DIR] [--jobs J]
+    prop.py --self-test          the shrinker shrinks (a synthetic predicate)
+
+Generates models seed S, S+1, ..., S+N-1 (tests/property/gen.py), checks each
+(check.py), shrinks each failure by delta debugging over its elements and
+bonds to a small model that fails the same check, writes it to DIR, prints
+the table of checks (ran, passed, failed, skipped) and exits 1 when any
+check failed.
+"""
+import argparse
+import os
+import sys
+import tempfile
+from concurrent.futures import ProcessPoolExecutor
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import check  # noqa: E402
+import gen    # noqa: E402
+
+
+def ddmin(items, fails):
+    """Zeller's delta debugging: a 1-minimal sublist of items for which
+    fails(sublist) holds (fails(items) must hold)."""
+    n = 2
+    while len(items) >= 2:
+        size = max(1, len(items) // n)
+        chunks = [items[i:i + size] for i in range(0, len(items), size)]
+        reduced = False
+        for i in range(len(chunks)):
+            rest = [x for k, c in enumerate(chunks) if k != i for x in c]
+            if rest and fails(rest):
+                items, n, reduced = rest, max(n - 1, 2), True
+                break
+        if not reduced:
+            if n >= len(items):
+                break
+            n = min(len(items), 2 * n)
+    return items
+
+
+def submodel(m, keep):
+    """The model with only the elements and bonds in keep (('e', name) and
+    ('b', number)); a bond to a dropped element is dropped, an element that
+    reads a dropped one is dropped."""
+    names = {k[1] for k in keep if k[0] == "e"}
+    changed = True
+    while changed:
+        changed = False
+        for x in m.elems:
+            if x.name in names and any(d not in names for d in x.mods):
+                names.discard(x.name)
+                changed = True
+    s = m.copy()
+    s.elems = [x for x in m.elems if x.name in names]
+    s.bonds = [b for b in s.bonds if ("b", b[0]) in keep and b[1] in names and b[2] in names]
+    return s
+
+
+def shrink(bgdraw, m, name, workdir, seed):
+    """Shrinks m to a small model that still fails check `name`."""
+    def fails(keep):
+        s = submodel(m, set(keep))
+        if not s.bonds:
+            return False
+        r = check.check(bgdraw, s, workdir, seed)
+        return r.get(name, ("skip",))[0] == "fail"
+    items = [("e", x.name) for x in m.elems] + [("b", b[0]) for b in m.bonds]
+    return submodel(m, set(ddmin(items, fails)))
+
+
+def one(args):
+    bgdraw, seed, max_elems, found, known = args
+    m = gen.generate(seed, max_elems)
+    with tempfile.TemporaryDirectory() as wd:
+        res = check.check(bgdraw, m, wd, seed)
+        failed = [k for k, v in res.items() if v[0] == "fail" and k not in known]
+        shrunk = []
+        for name in failed[:1]:  # the first failing check of the model
+            small = shrink(bgdraw, m, name, wd, seed)
+            again = check.check(bgdraw, small, wd, seed)[name]
+            if found:
+                os.makedirs(found, exist_ok=True)
+                base = os.path.join(found, "seed%d_%s" % (seed, name))
+                with open(base + ".bg", "w") as f:
+                    f.write("# property campaign, seed %d, check %s: %s\n# shrunk from %d elements "
+                            "and %d bonds\n" % (seed, name, again[1].splitlines()[0] if again[1] else "",
+                                                len(m.elems), len(m.bonds)))
+                    f.write(small.text())
+            shrunk.append((name, len(small.elems), len(small.bonds), again[1]))
+    res_ = {k: v[0] for k, v in res.items() if not k.startswith("_")}
+    res_["_refused"] = res.get("_refused")
+    return seed, len(m.elems), res_, \
+        {k: v[1] for k, v in res.items() if v[0] == "fail"}, shrunk
+
+
+def self_test():
+    """The shrinker shrinks: a predicate that fails when two given items are
+    both present is shrunk to exactly those two, from 100 items; and a
+    generated model with a planted 'failure' (a GY present) shrinks to a
+    model holding that GY."""
+    calls = []
+
+    def fails(xs):
+        calls.append(1)
+        return 17 in xs and 63 in xs
+    got = ddmin(list(range(100)), fails)
+    assert got == [17, 63], got
+    print("ddmin: 100 items -> %s in %d tests" % (got, len(calls)))
+    for seed in range(200):
+        m = gen.generate(seed, 60)
+        gy = [x.name for x in m.elems if x.kind == "GY"]
+        if len(m.elems) > 20 and gy:
+            break
+    keep = ddmin([("e", x.name) for x in m.elems] + [("b", b[0]) for b in m.bonds],
+                 lambda k: any(x.kind == "GY" for x in submodel(m, set(k)).elems))
+    small = submodel(m, set(keep))
+    assert [x.kind for x in small.elems] == ["GY"], small.text()
+    print("submodel: %d elements -> %s" % (len(m.elems), [x.name for x in small.elems]))
+    print("self-test passed")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("bgdraw", nargs="?")
+    ap.add_argument("--count", type=int, default=300)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--max-elems", type=int, default=100)
+    ap.add_argument("--found", default=None)
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--known", action="append",
+                    help="a check whose failures are counted but do not fail the run (docs/property.md)")
+    ap.add_argument("--self-test", action="store_true")
+    a = ap.parse_args()
+    if a.self_test:
+        return self_test()
+    bgdraw = os.path.abspath(a.bgdraw)
+    table = {c: {"pass": 0, "fail": 0, "skip": 0} for c in check.CHECKS}
+    sizes = []
+    refused = {}
+    nfail = 0
+    known = set(a.known or [])
+    nknown = 0
+    jobs = [(bgdraw, s, a.max_elems, a.found, known) for s in range(a.seed, a.seed + a.count)]
+    with ProcessPoolExecutor(max_workers=a.jobs) as ex:
+        for k, (seed, size, res, why, shrunk) in enumerate(ex.map(one, jobs, chunksize=4)):
+            sizes.append(size)
+            if res.get("_refused"):
+                refused[res["_refused"]] = refused.get(res["_refused"], 0) + 1
+            for c in check.CHECKS:
+                table[c][res.get(c, "skip")] += 1
+            if set(why) & known:
+                nknown += 1
+            why = {c: d for c, d in why.items() if c not in known}
+            if why:
+                nfail += 1
+                for c, d in why.items():
+                    print("FAIL seed %d (%d elements) %s: %s" % (seed, size, c, d.splitlines()[0]))
+                for name, ne, nb, d in shrunk:
+                    print("  shrunk to %d elements, %d bonds: %s" % (ne, nb, d.splitlines()[0] if d else ""))
+            if (k + 1) % 500 == 0:
+                print("... %d models" % (k + 1), file=sys.stderr, flush=True)
+    print("%d models (seeds %d..%d), %d to %d elements (mean %.1f), %d with a failure" % (
+        a.count, a.seed, a.seed + a.count - 1, min(sizes), max(sizes), sum(sizes) / len(sizes), nfail))
+    print("%d models not simulated (exit status 3, the reason stated):" % sum(refused.values()))
+    for k, v in sorted(refused.items(), key=lambda kv: -kv[1]):
+        print("  %5d  %s" % (v, k))
+    if known:
+        print("%d models failed only known checks (%s): counted, not shrunk" % (nknown, ", ".join(sorted(known))))
+    print("| check | ran | passed | failed | skipped |")
+    print("|---|---|---|---|---|")
+    for c in check.CHECKS:
+        t = table[c]
+        print("| %s | %d | %d | %d | %d |" % (c, t["pass"] + t["fail"], t["pass"], t["fail"], t["skip"]))
+    return 1 if nfail else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
