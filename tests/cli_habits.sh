@@ -213,4 +213,10 @@ check ".SVG is an SVG" $?
 check "bgdraw m.bg > m.svg: the diagram on standard output, no out/ folder" $?
 (cd "$tmp" && rm -rf out && "$BGDRAW" "$root/$M" -M dep.d >/dev/null && [ -s out/rlc.svg ])
 check "with -M the default diagram stays a file (the depfile names it)" $?
+# docs/cli.md's diagnostic sample is what bgdraw prints for the file it names
+awk '/^    tests\/bad\/duplicate_name.bg:5:3/{on=1} on && /^$/{exit} on{print substr($0, 5)}' \
+  docs/cli.md >"$tmp/sample.txt"
+"$BGDRAW" tests/bad/duplicate_name.bg --check --color=never 2>"$tmp/sample.got" >/dev/null
+[ -s "$tmp/sample.txt" ] && cmp -s "$tmp/sample.txt" "$tmp/sample.got"
+check "docs/cli.md's diagnostic sample = the program's output" $?
 finish

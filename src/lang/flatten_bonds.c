@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "base/strbuf.h"
 #include "lang/flatten_int.h"
@@ -23,6 +24,12 @@ static void unknown_submodel(fl_flattener *f, const bg_ast_stmt *s) {
                   s->kindword);
     return;
   }
+  for (size_t i = 0; i < sizeof element_kinds / sizeof *element_kinds; i++)
+    if (!strcasecmp(s->kindword, element_kinds[i])) { /* a case slip: r is R, tf is TF */
+      bg_diag_error(f->dg, s->loc, "unknown element kind or submodel '%s' (did you mean '%s'?)",
+                    s->kindword, element_kinds[i]);
+      return;
+    }
   const char *best = bg_fl_suggest(&f->defnames, s->kindword, ~0u);
   int bestd = best ? bg_edit_distance(s->kindword, best) : (strlen(s->kindword) < 3 ? 2 : 3);
   for (size_t i = 0; i < sizeof element_kinds / sizeof *element_kinds; i++) {

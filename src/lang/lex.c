@@ -76,6 +76,18 @@ static void lex_name(lexer *lx) {
   t->text = bg_arena_strndup(lx->arena, lx->src + start, lx->pos - start);
 }
 
+int bg_lex_is_unit(const char *w) {
+  static const char *const units[] = {"V", "A", "ohm", "Ohm", "F", "H", "s", "Hz", "W", "J",
+                                      "N", "Nm", "m", "kg", "g", "Pa", "bar", "rad", "K", "degC",
+                                      "S", "C", "Wb", "T", "l", "L", "mol", "min", "h"};
+  static const char prefixes[] = "pnumkMG";
+  for (size_t i = 0; i < sizeof units / sizeof *units; i++) {
+    if (!strcmp(w, units[i])) return 1;
+    if (w[0] && strchr(prefixes, w[0]) && !strcmp(w + 1, units[i])) return 1;
+  }
+  return !strcmp(w, "kohm") || !strcmp(w, "Mohm") || !strcmp(w, "ohms");
+}
+
 static void skip_digits(lexer *lx) {
   while (isdigit(peek(lx, 0))) lx->pos++;
 }
@@ -93,8 +105,20 @@ static void lex_number(lexer *lx) {
     skip_digits(lx);
   }
   /* "2x", "1e", "1.2.3": one malformed token rather than two confusing ones */
+  size_t num_end = lx->pos;
+  int numeric_ok = ok;
   while (isalnum(peek(lx, 0)) || peek(lx, 0) == '_' || peek(lx, 0) == '.') { lx->pos++; ok = 0; }
   char *text = bg_arena_strndup(lx->arena, lx->src + start, lx->pos - start);
+  char *suffix = bg_arena_strndup(lx->arena, lx->src + num_end, lx->pos - num_end);
+  if (!ok && numeric_ok && bg_lex_is_unit(suffix)) { /* "1mH", "10uF" */
+    bg_diag_error(lx->dg, loc_at(lx, start), "units are not part of expressions: '%s' is the "
+                  "number %.*s with the unit %s; write the number alone and give the unit in "
+                  "the description (param L0 = %.*s \"inductance [%s]\")", text,
+                  (int)(num_end - start), lx->src + start, suffix, (int)(num_end - start),
+                  lx->src + start, suffix);
+    push(lx, BG_TK_ERROR, start);
+    return;
+  }
   if (!ok) {
     bg_diag_error(lx->dg, loc_at(lx, start), "malformed number '%s'", text);
     push(lx, BG_TK_ERROR, start);

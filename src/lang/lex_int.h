@@ -37,6 +37,9 @@ typedef struct bg_tokens {
   int n;
 } bg_tokens;
 
+/* 1 when w is a unit (V, mH, uF, ohm, kohm...): the messages for "12 V" and
+ * "1mH", which take a unit for part of an expression. */
+int bg_lex_is_unit(const char *w);
 /* Tokenizes src (len bytes). Strings live in arena a; errors go to dg. */
 void bg_lex_all(const char *src, size_t len, bg_arena *a, bg_diags *dg, bg_tokens *out);
 /* The same for source `file` of dg (a used file): positions carry that index. */

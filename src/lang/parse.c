@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "lang/lex_int.h"
 #include "lang/parse.h"
@@ -96,6 +97,11 @@ static int in_list(const char *s, const char *const *list, int n) {
 
 
 static const char *closest_word(const char *w) {
+  /* a case slip first: r is R, tf is TF, mse is MSe */
+  for (int i = 0; i < COUNT(kinds) + COUNT(keywords); i++) {
+    const char *c = i < COUNT(kinds) ? kinds[i] : keywords[i - COUNT(kinds)];
+    if (!strcasecmp(w, c)) return c;
+  }
   const char *best = NULL;
   int bestd = strlen(w) < 3 ? 2 : 3;
   for (int i = 0; i < COUNT(kinds) + COUNT(keywords); i++) {
@@ -586,6 +592,9 @@ static void parse_element(parser *p, const bg_token *kind) {
   } else if (accept(p, BG_TK_ASSIGN)) {
     bg_expr *e = parse_expr(p);
     p->stmts[si].expr = e;
+  } else if (at(p, BG_TK_NUMBER)) { /* "Se U2 12" */
+    fail_at(p, cur(p), "missing '=' before '%s'? (write: %s %s = %s)", cur(p)->text, kind->text,
+            n->text, cur(p)->text);
   } else if (accept(p, BG_TK_COLON)) {
     const bg_token *v = expect_name(p, "the law's variable after ':' (e or f)");
     expect(p, BG_TK_ASSIGN, "after the law's variable");
@@ -850,7 +859,14 @@ static void parse_line(parser *p) {
   parse_statement(p);
   if (!at(p, BG_TK_EOL) && !at(p, BG_TK_EOF)) {
     char found[128];
-    describe(cur(p), found, sizeof found);
+    const bg_token *t = cur(p);
+    if (t->kind == BG_TK_NAME && p->pos > 0 && p->toks.tok[p->pos - 1].kind == BG_TK_NUMBER &&
+        bg_lex_is_unit(t->text))
+      fail_at(p, t, "units are not part of expressions: '%s %s' is the number %s and a stray "
+              "'%s'; write the number alone and give the unit in the description "
+              "(param V0 = %s \"supply voltage [%s]\")", p->toks.tok[p->pos - 1].text, t->text,
+              p->toks.tok[p->pos - 1].text, t->text, p->toks.tok[p->pos - 1].text, t->text);
+    describe(t, found, sizeof found);
     fail_at(p, cur(p), "unexpected %s after the end of the statement", found);
   }
   accept(p, BG_TK_EOL);
@@ -873,6 +889,31 @@ static int is_text(const char *src, size_t len, int file, bg_diags *dg) {
   return 0;
 }
 
+/* BondGraphTools saves its models as YAML with the same .bg extension
+ * (`root:`, `models:`, `components:`, `netlist:`): such a file is one clear
+ * error at its first key instead of an error a line. 1 when src is one. */
+static int is_foreign_yaml(const char *src, size_t len, int file, bg_diags *dg) {
+  static const char *const keys[] = {"root:", "models:", "netlist:", "components:", "version:"};
+  int hits = 0, first_line = 0, line = 1;
+  for (size_t i = 0; i < len;) {
+    size_t end = i;
+    while (end < len && src[end] != '\n') end++;
+    for (size_t k = 0; k < sizeof keys / sizeof *keys; k++) {
+      size_t n = strlen(keys[k]);
+      if (end - i >= n && !strncmp(src + i, keys[k], n)) {
+        hits++;
+        if (!first_line) first_line = line;
+      }
+    }
+    i = end + 1, line++;
+  }
+  if (hits < 2) return 0;
+  bg_diag_error(dg, (bg_srcloc){first_line, 1, file},
+                "this looks like a BondGraphTools model (YAML with root:, models:, netlist:), "
+                "not bgdraw's model language; bgdraw reads models written as in docs/format.md");
+  return 1;
+}
+
 bg_ast *bg_parse_string(const char *path, const char *src, size_t len, bg_diags *dg) {
   return bg_parse_source(path, src, len, 0, dg);
 }
@@ -886,6 +927,7 @@ bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file,
   p->ast = ast;
   p->dg = dg;
   if (!is_text(src, len, file, dg)) len = 0; /* parse nothing: one error, at the byte */
+  else if (is_foreign_yaml(src, len, file, dg)) len = 0;
   p->open_def = -1;
   bg_lex_source(src, len, file, &ast->arena, dg, &p->toks);
   while (!at(p, BG_TK_EOF) && !bg_diags_full(dg)) parse_line(p);

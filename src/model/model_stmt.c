@@ -21,8 +21,23 @@ static void check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, 
       p += n;
     }
     if (!found) {
-      bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (valid: %s)", key, whose,
-                    valid);
+      char best[32] = "";
+      int bestd = 3;
+      for (const char *q = valid; *q;) { /* the nearest valid option: tend -> t_end */
+        size_t len = strcspn(q, ",");
+        char cand[32];
+        snprintf(cand, sizeof cand, "%.*s", (int)len, q);
+        int d = bg_edit_distance(key, cand);
+        if (d < bestd) bestd = d, snprintf(best, sizeof best, "%s", cand);
+        q += len;
+        while (*q == ',' || *q == ' ') q++;
+      }
+      if (best[0])
+        bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (did you mean '%s'? "
+                      "valid: %s)", key, whose, best, valid);
+      else
+        bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (valid: %s)", key, whose,
+                      valid);
       continue;
     }
     for (int j = 0; j < i; j++)
@@ -374,7 +389,11 @@ static void st_simulate(bg_build *b, const bg_ast_stmt *s) {
   const char *solver = word_opt(b, s, "solver", "auto, cvode_bdf, cvode_adams, ida");
   if (solver) sim->solver = solver;
   if (!find_opt(s, "t_end")) {
-    bg_diag_error(b->dg, s->loc, "simulate needs t_end (e.g. simulate t_end = 10)");
+    /* an unknown option reported above may be the misspelt t_end: no second error */
+    int unknown = 0;
+    for (int i = 0; i < s->nopts; i++)
+      unknown |= !strstr("t_end, t0, dt, solver, rtol, atol, max_step", s->opts[i].key);
+    if (!unknown) bg_diag_error(b->dg, s->loc, "simulate needs t_end (e.g. simulate t_end = 10)");
     return;
   }
   if (!(sim->t_end > sim->t0))
