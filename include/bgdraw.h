@@ -70,6 +70,7 @@ typedef struct bgd_options {
   bgd_log_fn log;                  /* NULL: silent */
   void *log_ctx;
   int verbose;                     /* 1: progress messages to log */
+  const char *warnings;            /* as -W: "no-unused-param,error"; NULL: all on */
 } bgd_options;
 
 /* Fills o with the defaults (all NULL/0, max_errors -1). */

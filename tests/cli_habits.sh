@@ -208,10 +208,11 @@ usage "-T svg:cairo is a sentence" "one renderer for each format.*write -T svg" 
 check "-K neato is --layout neato" $?
 "$BGDRAW" "$M" -o "$tmp/upper.SVG" && "$BGDRAW" "$M" -o "$tmp/lower.svg" && cmp -s "$tmp/upper.SVG" "$tmp/lower.svg"
 check ".SVG is an SVG" $?
-(cd "$tmp" && rm -rf out && "$BGDRAW" "$root/$M" >redirected.svg && [ ! -e out ] &&
-  cmp -s redirected.svg lower.svg)
+mkdir -p "$tmp/habits"
+(cd "$tmp/habits" && "$BGDRAW" "$root/$M" >redirected.svg && [ ! -e out ] &&
+  cmp -s redirected.svg ../lower.svg)
 check "bgdraw m.bg > m.svg: the diagram on standard output, no out/ folder" $?
-(cd "$tmp" && rm -rf out && "$BGDRAW" "$root/$M" -M dep.d >/dev/null && [ -s out/rlc.svg ])
+(cd "$tmp/habits" && "$BGDRAW" "$root/$M" -M dep.d >/dev/null && [ -s out/rlc.svg ])
 check "with -M the default diagram stays a file (the depfile names it)" $?
 # docs/cli.md's diagnostic sample is what bgdraw prints for the file it names
 awk '/^    tests\/bad\/duplicate_name.bg:5:3/{on=1} on && /^$/{exit} on{print substr($0, 5)}' \
@@ -219,4 +220,22 @@ awk '/^    tests\/bad\/duplicate_name.bg:5:3/{on=1} on && /^$/{exit} on{print su
 "$BGDRAW" tests/bad/duplicate_name.bg --check --color=never 2>"$tmp/sample.got" >/dev/null
 [ -s "$tmp/sample.txt" ] && cmp -s "$tmp/sample.txt" "$tmp/sample.got"
 check "docs/cli.md's diagnostic sample = the program's output" $?
+# ---- named warnings: on by default, -Wno-NAME, -Werror
+printf 'param a = 1, unused = 3\nSe U = a\n1 j\nC C1 = 0\nbond U -> j\nbond j -> C1\n' >"$tmp/w.bg"
+"$BGDRAW" "$tmp/w.bg" --check >/dev/null 2>"$tmp/w.err"; st=$?
+[ $st -eq 0 ] && grep -q "1:14: warning: param 'unused' is never used \[-Wunused-param\]" "$tmp/w.err" &&
+  grep -q "4:3: warning: the capacitance of C 'C1' is 0 .*\[-Wdegenerate-value\]" "$tmp/w.err"
+check "warnings: unused param and a zero capacitance, status 0 (got $st)" $?
+"$BGDRAW" "$tmp/w.bg" --check -Wno-unused-param -Werror >/dev/null 2>"$tmp/w.err"; st=$?
+[ $st -eq 1 ] && ! grep -q unused "$tmp/w.err" && grep -q "error: .*\[-Werror=degenerate-value\]" "$tmp/w.err"
+check "-Wno-unused-param -Werror: the other warning an error, status 1 (got $st)" $?
+usage "-W with an unknown name" "unknown warning '-Wfoo'" "$M" -Wfoo
+printf 'submodel S(p)\n  R r = 1\n  bond p -> r\nend\n' >"$tmp/only_sub.bg"
+"$BGDRAW" "$tmp/only_sub.bg" --check >/dev/null 2>"$tmp/w.err"
+grep -q "defines 1 submodel but no model uses them.*\[-Wempty-model\]" "$tmp/w.err"
+check "a file of submodels only: -Wempty-model" $?
+printf 'param Ra = 2\nSe U = 1\n1 j\nR Ra = Ra\nbond U -> j\nbond j -> Ra\n' >"$tmp/shadow.bg"
+"$BGDRAW" "$tmp/shadow.bg" --check >/dev/null 2>"$tmp/w.err"; st=$?
+[ $st -eq 1 ] && [ "$(grep -c 'error:' "$tmp/w.err")" = 1 ] && grep -q "the element 'Ra' has the name of the param 'Ra'" "$tmp/w.err"
+check "an element named like a param: one clear error (got $st, $(grep -c 'error:' "$tmp/w.err") errors)" $?
 finish

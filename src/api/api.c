@@ -91,6 +91,17 @@ static void configure(bgd_model *m, const bgd_options *o, bg_run_opts *ro, bg_re
   ro->max_list = o->max_list > 0 ? o->max_list : 0;
   ro->max_errors = o->max_errors < 0 ? BG_DIAG_MAX_ERRORS : o->max_errors;
   ro->verify = o->verify;
+  for (const char *w = o->warnings; w && *w;) { /* "no-unused-param,error" as -W */
+    char one[64];
+    size_t len = strcspn(w, ",");
+    snprintf(one, sizeof one, "%.*s", (int)len, w);
+    int off = !strncmp(one, "no-", 3), id = bg_warning_parse(off ? one + 3 : one);
+    if (!strcmp(one, "error")) ro->werror = 1;
+    else if (id < 0) option_error(m, "unknown warning in the warnings list");
+    else if (off) ro->warn_off |= 1u << id;
+    else ro->warn_off &= ~(1u << id);
+    w += len + (w[len] == ',');
+  }
   if (o->log) ro->log = (bg_log){to_caller, m, o->verbose};
   memset(rd, 0, sizeof *rd);
   rd->show = BG_SHOW_DEFAULT;

@@ -149,6 +149,28 @@ static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va
     add(d, sev, loc, fmt, ap);                                         \
     va_end(ap);                                                        \
   }
+static const char *const warning_names[BG_W_COUNT] = {"unused-param", "empty-model",
+                                                      "degenerate-value"};
+
+int bg_warning_parse(const char *name) {
+  for (int i = 0; i < BG_W_COUNT; i++)
+    if (!strcmp(name, warning_names[i])) return i;
+  return -1;
+}
+
+const char *bg_warning_name(bg_warning w) { return w < BG_W_COUNT ? warning_names[w] : "?"; }
+
+void bg_diag_warn(bg_diags *d, bg_warning w, bg_srcloc loc, const char *fmt, ...) {
+  if (w >= BG_W_COUNT || (d->warn_off >> w & 1u)) return;
+  char msg[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  if (d->werror) bg_diag_error(d, loc, "%s [-Werror=%s]", msg, warning_names[w]);
+  else bg_diag_warning(d, loc, "%s [-W%s]", msg, warning_names[w]);
+}
+
 DEFINE_ADDER(bg_diag_error, BG_SEV_ERROR)
 DEFINE_ADDER(bg_diag_warning, BG_SEV_WARNING)
 DEFINE_ADDER(bg_diag_note, BG_SEV_NOTE)

@@ -44,9 +44,23 @@ typedef struct bg_diags {
   int max_errors;  /* errors kept and printed at most (0: no limit); bg_diags_init sets
                       BG_DIAG_MAX_ERRORS */
   int dropped;     /* errors beyond max_errors: counted, not kept */
+  unsigned warn_off; /* bit per bg_warning: not reported (-Wno-NAME) */
+  int werror;        /* named warnings are errors (-Werror) */
   int dropping;    /* the last error was dropped (beyond the limit, or a repeat of an
                       earlier one), and so are its notes */
 } bg_diags;
+
+/* Named warnings, as compilers have them (docs/cli.md, "Warnings"): each
+ * can be turned off (-Wno-NAME) and all turned into errors (-Werror). */
+typedef enum bg_warning {
+  BG_W_UNUSED_PARAM,  /* unused-param: a param no expression reads */
+  BG_W_EMPTY_MODEL,   /* empty-model: no element (or only submodel definitions) */
+  BG_W_DEGENERATE,    /* degenerate-value: a C, I, TF or GY whose value is 0 */
+  BG_W_COUNT
+} bg_warning;
+/* The warning named name ("unused-param"), or -1. */
+int bg_warning_parse(const char *name);
+const char *bg_warning_name(bg_warning w);
 
 /* The default error limit (--max-errors changes it; docs/cli.md). */
 enum { BG_DIAG_MAX_ERRORS = 100 };
@@ -66,6 +80,10 @@ void bg_diag_warning(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void bg_diag_note(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* A named warning: nothing when it is off, an error with -Werror; the
+ * message ends with its name, " [-Wunused-param]". */
+void bg_diag_warn(bg_diags *d, bg_warning w, bg_srcloc loc, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 /* 1 when the error limit is reached: the stages may stop looking for more. */
 int bg_diags_full(const bg_diags *d);
 /* Prints every diagnostic in source order (stable for equal positions):

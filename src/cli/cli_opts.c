@@ -23,7 +23,7 @@ enum {
   OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE
 };
 
-static const char short_opts[] = ":o:T:M:K:qvhV";
+static const char short_opts[] = ":o:T:M:K:W:qvhV";
 
 static const struct option long_opts[] = {
     {"output", required_argument, NULL, 'o'},
@@ -183,6 +183,25 @@ static int add_set(bg_cli_opts *o, const char *arg) {
 }
 
 /* Applies one option getopt_long returned; -1 on a usage error. */
+/* -W NAME, -Wno-NAME, -Werror (as compilers have them; docs/cli.md, "Warnings"). */
+static int take_warning(bg_cli_opts *o, const char *arg) {
+  if (!strcmp(arg, "error")) return o->werror = 1, 0;
+  if (!strcmp(arg, "all")) return o->warn_off = 0, 0;
+  int off = !strncmp(arg, "no-", 3);
+  int w = bg_warning_parse(off ? arg + 3 : arg);
+  if (w < 0) {
+    char names[200] = "";
+    for (int i = 0; i < BG_W_COUNT; i++) {
+      if (i) strncat(names, ", ", sizeof names - strlen(names) - 1);
+      strncat(names, bg_warning_name(i), sizeof names - strlen(names) - 1);
+    }
+    return bg_cli_usage_error("unknown warning '-W%s' (the warnings: %s; -Werror, -Wall)", arg, names);
+  }
+  if (off) o->warn_off |= 1u << w;
+  else o->warn_off &= ~(1u << w);
+  return 0;
+}
+
 static int take(bg_cli_opts *o, int c, const char *arg) {
   for (size_t i = 0; i < sizeof valued / sizeof *valued; i++)
     if (valued[i].val == c) {
@@ -199,6 +218,7 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
   case OPT_SIMULATE: o->simulate = 1; return 0;
   case OPT_VERIFY: o->verify = 1; o->simulate = 1; return 0;
   case OPT_CHECK: o->check = 1; return 0;
+  case 'W': return take_warning(o, arg);
   case 'q': o->quiet = 1; return 0;
   case 'v': o->verbose = 1; return 0;
   case 'h': o->help = 1; return 0;
@@ -279,6 +299,8 @@ void bg_cli_print_help(FILE *out) {
       "  --prefix NAME       symbol prefix of exported C (-o NAME.c; default: the model name)\n"
       "  --diagnostics-format FMT  text (default) | json (one object a line)\n"
       "  --color WHEN        auto (default: on a terminal, unless NO_COLOR) | always | never\n"
+      "  -W NAME, -Wno-NAME  turn a named warning on or off: unused-param, empty-model,\n"
+      "                      degenerate-value; -Werror makes them errors\n"
       "  -q, --quiet         no warnings and notes\n"
       "  -v, --verbose       progress on stderr\n"
       "  -V, --version       version and the library versions built with\n"

@@ -38,6 +38,8 @@ typedef struct bg_cli_opts {
   const char *prefix;       /* --prefix NAME: symbol prefix of exported C */
   const char *transform;    /* --transform NAME: the model rewritten (docs/transform.md) */
   int simulate, verify, check, quiet, verbose, help, version;
+  unsigned warn_off;        /* -Wno-NAME: bit per bg_warning */
+  int werror;               /* -Werror */
   bg_param_override sets[BG_MAX_SETS];
   int nsets;
   const char *collapse[BG_MAX_COLLAPSE]; /* --collapse NAME (repeatable) or all */

@@ -45,6 +45,7 @@ static int load_model(run *r) {
   ro.max_list = r->max_list;
   ro.max_errors = r->max_errors;
   ro.verify = o->verify;
+  ro.warn_off = o->warn_off, ro.werror = o->werror;
   ro.keep_ast = o->transform != NULL; /* the transformations edit the syntax */
   ro.log = (bg_log){log_stderr, &r->opts, o->verbose};
   r->R = bg_run_new(&ro);

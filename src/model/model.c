@@ -105,6 +105,8 @@ static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
                   "the node named in its statement", name, n->loc.line);
     return -1;
   }
+  for (int i = 0; n && n->kind == NS_PARAM && i < b->nparam_named; i++)
+    if (!strcmp(b->param_named[i], name)) return -1; /* said at the element */
   if (n) {
     bg_diag_error(b->dg, loc, "'%s' is %s (line %d); a bond joins elements and junctions",
                   name, bg_ns_what[n->kind], n->loc.line);
@@ -416,6 +418,7 @@ static void build_free(bg_build *b) {
   free(b->elem_stmt);
   free(b->param_id);
   free(b->elem_guessed);
+  free(b->param_named);
 }
 
 bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, int nov,

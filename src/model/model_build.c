@@ -42,6 +42,18 @@ const ns_entry *bg_build_lookup(const bg_build *b, const char *name) {
 /* Declares a name; reports duplicates and reserved names. 0 on success. */
 int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind, int id) {
   const ns_entry *old = bg_build_lookup(b, name);
+  if (old && old->kind == NS_PARAM && kind == NS_ELEM) {
+    bg_diag_error(b->dg, loc, "the element '%s' has the name of the param '%s' (line %d): params "
+                  "and elements share one namespace; name the param after what it is "
+                  "(param %s_value = ...) or the element after its role", name, name,
+                  old->loc.line, name);
+    if (b->nparam_named == b->param_named_cap) {
+      b->param_named_cap = b->param_named_cap ? 2 * b->param_named_cap : 8;
+      b->param_named = bg_xrealloc(b->param_named, (size_t)b->param_named_cap * sizeof *b->param_named);
+    }
+    b->param_named[b->nparam_named++] = name;
+    return -1;
+  }
   if (old) {
     bg_diag_error(b->dg, loc, "'%s' already defined at line %d", name, old->loc.line);
     bg_diag_note(b->dg, old->loc, "'%s' first defined here", name);

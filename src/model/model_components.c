@@ -45,11 +45,16 @@ static void attach_components(bg_model *m, const bg_flat *f) {
 
 bg_model *bg_model_compile(const bg_ast *ast, const bg_param_override *ov, int nov,
                            bg_diags *dg) {
-  if (!ast->has_components) return bg_model_compile_flat(ast, ov, nov, dg);
+  if (!ast->has_components) {
+    bg_model *m = bg_model_compile_flat(ast, ov, nov, dg);
+    if (m) bg_model_warnings(m, ast, dg);
+    return m;
+  }
   bg_flat *flat = bg_flat_expand(ast, dg);
   if (!flat) return NULL;
   bg_model *m = bg_model_compile_flat(flat->ast, ov, nov, dg);
   if (m) attach_components(m, flat);
+  if (m) bg_model_warnings(m, ast, dg);
   bg_flat_free(flat);
   return m;
 }

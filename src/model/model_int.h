@@ -53,6 +53,9 @@ typedef struct bg_build {
   const char *base_dir; /* the model file's directory, for table CSV files */
   unsigned char *elem_guessed; /* per element: the "did you mean" of a misspelled bond end;
                                  its bond count is then not reported (a consequence) */
+  const char **param_named;   /* elements refused for a param's name (20-sim's habit
+                                 `param Ra = 2`, `R Ra = Ra`): their bonds say nothing more */
+  int nparam_named, param_named_cap;
 } bg_build;
 
 /* ---- model.c */
@@ -67,6 +70,9 @@ const char *bg_build_strdup(bg_build *b, const char *s);
 const char *bg_elem_kind_article(int kind);
 
 /* The version 1 compiler (model.c): bg_model_compile without flattening. */
+/* The named warnings of a compiled model (model_warn.c): unused params, an
+ * empty model, values that make an element degenerate. */
+void bg_model_warnings(const bg_model *m, const bg_ast *ast, bg_diags *dg);
 bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, int nov,
                                 bg_diags *dg);
 

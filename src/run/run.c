@@ -42,6 +42,8 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
   r->src = text, r->srclen = len;
   bg_diags_init(&r->dg, r->name, r->src, r->srclen);
   r->dg.max_errors = r->o.max_errors;
+  r->dg.warn_off = r->o.warn_off;
+  r->dg.werror = r->o.werror;
   if (!r->src) {
     bg_diag_error(&r->dg, (bg_srcloc){0}, "cannot read the model: %s", bg_file_strerror(errno));
     return -1;

@@ -48,6 +48,8 @@ typedef struct bg_run_opts {
   int max_errors; /* diagnostics kept at most; 0: no limit (default BG_DIAG_MAX_ERRORS) */
   int verify;     /* the simulation is verified at tighter tolerances (--verify) */
   int keep_ast;   /* the syntax stays in the run (the transformations edit it) */
+  unsigned warn_off; /* named warnings not reported: bit per bg_warning (-Wno-NAME) */
+  int werror;        /* named warnings are errors (-Werror) */
   bg_log log;     /* progress, notes and warnings; {0}: silent */
 } bg_run_opts;
 

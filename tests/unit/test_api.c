@@ -399,6 +399,20 @@ static void test_options(void) {
   INT_EQ(bgd_output(m, "gif", NULL, &data, NULL), BGD_USAGE);
   OK(bgd_last_error(m) && strstr(bgd_last_error(m), "gif"));
   bgd_free(m);
+  /* named warnings: off one by one, or errors */
+  const char *wsrc = "param a = 1, unused = 3\nSe U = a\n1 j\nC C1 = 0\nbond U -> j\nbond j -> C1\n";
+  m = bgd_open("w.bg", wsrc, NULL);
+  const bgd_diagnostic *d;
+  INT_EQ(bgd_status(m), BGD_OK);
+  INT_EQ(bgd_diagnostics(m, &d), 2);
+  bgd_free(m);
+  bgd_options_init(&o);
+  o.warnings = "no-unused-param,error";
+  m = bgd_open("w.bg", wsrc, &o);
+  INT_EQ(bgd_status(m), BGD_MODEL);
+  INT_EQ(bgd_diagnostics(m, &d), 1);
+  OK(strstr(d[0].message, "[-Werror=degenerate-value]") != NULL);
+  bgd_free(m);
   INT_EQ(bgd_api_version(), BGDRAW_API_VERSION);
   STR_EQ(bgd_version(), BGDRAW_VERSION_STRING);
 }
