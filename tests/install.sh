@@ -14,7 +14,8 @@ ROOT=$PWD
 cmake --install "$BUILD" --prefix "$tmp/p" >"$tmp/install.log" 2>&1; st=$?
 check "cmake --install (got $st)" $st
 for f in bin/bgdraw share/bgdraw/styles/print.style share/man/man1/bgdraw.1 \
-         share/bash-completion/completions/bgdraw include/bgdraw.h include/bgdraw_version.h; do
+         share/bash-completion/completions/bgdraw include/bgdraw.h include/bgdraw_version.h \
+         share/doc/bgdraw/cli.md share/doc/bgdraw/LICENSE share/doc/bgdraw/NEWS.md; do
   [ -f "$tmp/p/$f" ]; check "installed $f" $?
 done
 pc=$(find "$tmp/p" -name bgdraw.pc | head -1)
@@ -79,7 +80,7 @@ case $BUILD in "$ROOT"/*) ;; *) hide="$hide && mount -t tmpfs none '$BUILD'" ;; 
 cat >"$tmp/run.sh" <<EOF
 set -e
 cd '$tmp'
-[ ! -e '$ROOT/CMakeLists.txt' ]
+[ "\${BG_TREES_HIDDEN:-1}" = 0 ] || [ ! -e '$ROOT/CMakeLists.txt' ]
 unset BGDRAW_STYLE_DIR
 '$tmp/q/bin/bgdraw' rlc.bg --style print -o got.svg
 LD_LIBRARY_PATH='$(dirname "$lib")' ./prog rlc.bg lib.svg > prog.out
@@ -90,7 +91,7 @@ if unshare -m true 2>/dev/null; then
   unshare -m sh -c "$hide && sh '$tmp/run.sh'" 2>"$tmp/err"; st=$?
 else # no mount namespaces here: the trees stay, the installed files must not use them
   echo "install.sh: no mount namespace: running with the source tree in place" >&2
-  sh "$tmp/run.sh" 2>"$tmp/err"; st=$?
+  BG_TREES_HIDDEN=0 sh "$tmp/run.sh" 2>"$tmp/err"; st=$?
 fi
 check "installed bgdraw and the program run without the source tree (got $st)" $st
 [ $st -eq 0 ] || cat "$tmp/err"
@@ -113,6 +114,11 @@ cmp -s "$tmp/want.svg" "$tmp/info.svg"; check "docs/library.md's program writes 
 cmp -s "$tmp/info.out" "$tmp/info_cmake.out" && cmp -s "$tmp/info.svg" "$tmp/info_cmake.svg"
 check "the find_package build gives the same output" $?
 
+# the installed man page carries the one version, and its copyright
+v=$("$BGDRAW" --version | head -1 | awk '{print $2}')
+grep -q "^.TH BGDRAW 1 \"2026\" \"bgdraw $v\"" "$tmp/q/share/man/man1/bgdraw.1" &&
+  grep -q "BSD 3-Clause" "$tmp/q/share/man/man1/bgdraw.1"
+check "installed man page: version $v and the licence" $?
 # the man page describes every long option of --help
 sed 's/\\-/-/g' docs/bgdraw.1 >"$tmp/man.txt"
 missing=""
