@@ -114,6 +114,12 @@ cmp -s "$tmp/want.svg" "$tmp/info.svg"; check "docs/library.md's program writes 
 cmp -s "$tmp/info.out" "$tmp/info_cmake.out" && cmp -s "$tmp/info.svg" "$tmp/info_cmake.svg"
 check "the find_package build gives the same output" $?
 
+# a packager's build: -DBUILD_TESTING=OFF configures the program, the
+# renderers and the library, and no test or fuzzer
+cmake -S "$ROOT" -B "$tmp/notests" -DBUILD_TESTING=OFF >"$tmp/notests.log" 2>&1 &&
+  cmake --build "$tmp/notests" --target help >"$tmp/targets" 2>&1
+grep -q "bgdraw$" "$tmp/targets" && grep -q "libbgdraw$" "$tmp/targets" && ! grep -q "test_\|fuzz_" "$tmp/targets"
+check "-DBUILD_TESTING=OFF: bgdraw and libbgdraw, no test target" $?
 # the installed man page carries the one version, and its copyright
 v=$("$BGDRAW" --version | head -1 | awk '{print $2}')
 grep -q "^.TH BGDRAW 1 \"2026\" \"bgdraw $v\"" "$tmp/q/share/man/man1/bgdraw.1" &&
