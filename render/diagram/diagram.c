@@ -11,23 +11,6 @@
 
 /* ---------------------------------------------------------------- labels */
 
-/* A name with its trailing digits (or the part after the last '_') set as a
- * subscript: a pango span, since <sub> mis-scales on scaled surfaces. */
-void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
-  size_t n = strlen(name), k = n;
-  while (k > 0 && isdigit((unsigned char)name[k - 1])) k--;
-  const char *us = strrchr(name, '_');
-  size_t base = k, sub = k;
-  if (k == n || k == 0) base = sub = n;
-  if (us && us > name && us[1]) base = (size_t)(us - name), sub = base + 1;
-  bg_markup_escapen(b, name, base);
-  if (sub < n) {
-    bg_sb_printf(b, "<span size=\"70%%\" rise=\"%.1fpt\">", -0.27 * font_size);
-    bg_markup_escapen(b, name + sub, n - sub);
-    bg_sb_puts(b, "</span>");
-  }
-}
-
 static char *elem_markup(bg_diagram *d, int e) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};
@@ -202,13 +185,6 @@ static int run_layout(bg_diagram *d, bg_diags *dg) {
     bg_grid_place(d);
   bg_parts_spread(d);
   return 0;
-}
-
-/* ---------------------------------------------------------------- colours */
-int bg_diagram_muted(const bg_diagram *d) { return d->o.highlight_kind != 0; }
-
-bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot) {
-  return hot || !bg_diagram_muted(d) ? c : d->st.muted;
 }
 
 static bg_rgba parse_hex(const char *s, bg_rgba dflt) {

@@ -10,10 +10,6 @@
 
 #include "diagram/diagram_int.h"
 
-int bg_fields_hidden(const bg_diagram *d, int n) {
-  return d->rep && n < d->m->nelem && d->rep[n] != n;
-}
-
 /* "C : K" (MC when a port is modulated), or the field's label. */
 static char *field_markup(bg_diagram *d, int f) {
   const bg_model *m = d->m;

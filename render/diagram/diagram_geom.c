@@ -3,27 +3,6 @@
 
 #include "diagram/diagram_int.h"
 
-bg_vec bg_v(double x, double y) { return (bg_vec){x, y}; }
-bg_vec bg_vadd(bg_vec a, bg_vec b) { return bg_v(a.x + b.x, a.y + b.y); }
-bg_vec bg_vsub(bg_vec a, bg_vec b) { return bg_v(a.x - b.x, a.y - b.y); }
-bg_vec bg_vscale(bg_vec a, double k) { return bg_v(a.x * k, a.y * k); }
-double bg_vlen(bg_vec a) { return hypot(a.x, a.y); }
-bg_vec bg_vleft(bg_vec d) { return bg_v(d.y, -d.x); }
-
-bg_vec bg_vunit(bg_vec a) {
-  double n = bg_vlen(a);
-  return n > 1e-12 ? bg_vscale(a, 1 / n) : bg_v(1, 0);
-}
-
-bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p) {
-  bg_vec dv = bg_vsub(p, c);
-  double tx = fabs(dv.x) > 1e-12 ? hw / fabs(dv.x) : 1e300;
-  double ty = fabs(dv.y) > 1e-12 ? hh / fabs(dv.y) : 1e300;
-  double t = tx < ty ? tx : ty;
-  if (t > 1) t = 1; /* overlapping boxes: stop at the other centre */
-  return bg_vadd(c, bg_vscale(dv, t));
-}
-
 static bg_vec node_centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
 
 /* The i-th point of bond b's route: its tail node's centre, the corners,
@@ -190,4 +169,26 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
   bg_scene_line(s, a.x, a.y);
   bg_scene_line(s, c.x, c.y);
   bg_scene_close(s);
+}
+
+/* ---------------------------------------------------------------- conflicts */
+bg_vec bg_free_direction(const bg_diagram *d, int j) {
+  const bg_model *m = d->m;
+  bg_vec c = bg_v(d->nx[j], d->ny[j]), best = bg_v(BG_SQRT1_2, -BG_SQRT1_2);
+  double best_gap = -1;
+  int nb = j < m->nelem ? m->elem_nbond[j] : 0;
+  for (int k = 0; k < 8; k++) {
+    double ang = -BG_PI / 4 + k * BG_PI / 4; /* upper right first */
+    bg_vec cand = bg_v(cos(ang), sin(ang));
+    double gap = BG_PI;
+    for (int i = 0; i < nb; i++) {
+      int b = m->elem_bonds[m->elem_bondadr[j] + i];
+      int o = m->bond_tail[b] == j ? m->bond_head[b] : m->bond_tail[b];
+      bg_vec dir = bg_vunit(bg_vsub(bg_v(d->nx[o], d->ny[o]), c));
+      double g = acos(fmax(-1, fmin(1, dir.x * cand.x + dir.y * cand.y)));
+      if (g < gap) gap = g;
+    }
+    if (gap > best_gap + 1e-9) best_gap = gap, best = cand;
+  }
+  return best;
 }

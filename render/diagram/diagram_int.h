@@ -70,15 +70,17 @@ struct bg_diagram {
   bg_arena arena;
 };
 
-/* A name as markup (diagram.c): its trailing digits (or what follows the
- * last '_') a subscript, as in element labels. */
-void bg_name_markup(bg_strbuf *b, const char *name, double font_size);
-/* A loop gain as markup (diagram_layers.c), typeset like the labels:
- * names with subscripts, powers raised, products by juxtaposition (a thin
- * space), minus signs, primes. */
-void bg_gain_markup(const char *gain, double size, bg_strbuf *out);
 
-/* geometry (diagram_geom.c) */
+/* The files call down this list, never a sibling or up (docs/developer.md):
+ *   diagram_base.c, diagram_words.c  leaves: vectors, ink, colours, queries; markup
+ *   diagram_geom.c, diagram_place.c  where bonds run; text placement
+ *   passes: diagram_grid.c (layout stage), diagram_layers.c, diagram_marks.c,
+ *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
+ *           diagram_frames.c, diagram_dot.c, diagram_tips.c
+ *   diagram.c  the driver: layout stage, then the scene stage calling each pass
+ *   render.c   the front door (render.h) */
+
+/* ---- shared helpers (diagram_base.c): calls nothing of the diagram */
 bg_vec bg_v(double x, double y);
 bg_vec bg_vadd(bg_vec a, bg_vec b);
 bg_vec bg_vsub(bg_vec a, bg_vec b);
@@ -88,6 +90,36 @@ bg_vec bg_vleft(bg_vec d); /* left of travel on a y-down page */
 double bg_vlen(bg_vec a);
 /* Where the ray from a box's centre towards p leaves the box (half sizes hw, hh). */
 bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p);
+/* colours with the highlight applied */
+bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot);
+int bg_diagram_muted(const bg_diagram *d);
+/* The layer colour and dash of path (kind 'p') or loop ('l') i. */
+bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
+void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
+/* The user state signal i comes from, or -1. */
+int bg_signal_state(const bg_model *m, int i);
+/* Elements whose variables user state s integrates (at most cap, no repeats). */
+int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
+/* Whether node n is drawn (not an element hidden in a collapsed box). */
+int bg_node_shown(const bg_diagram *d, int n);
+/* The node a detector's node is anchored to in the layout (its det_node as drawn). */
+int bg_detector_anchor(const bg_diagram *d, int k);
+/* A field's port drawn by its field's node. */
+int bg_fields_hidden(const bg_diagram *d, int n);
+
+/* ---- words (diagram_words.c): calls nothing of the diagram */
+/* A name as markup: its trailing digits (or what follows the
+ * last '_') a subscript, as in element labels. */
+void bg_name_markup(bg_strbuf *b, const char *name, double font_size);
+/* A loop gain as markup, typeset like the labels:
+ * names with subscripts, powers raised, products by juxtaposition (a thin
+ * space), minus signs, primes. */
+void bg_gain_markup(const char *gain, double size, bg_strbuf *out);
+/* Text for a path's or loop's legend line.
+ * markup: the gain typeset (legend), else plain text (DOT). */
+void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);
+
+/* geometry (diagram_geom.c) */
 void bg_geom_bonds(bg_diagram *d);
 /* Where a bond leaving node n's centre in direction dir stops: on a
  * junction's end circle, else on the node's box. */
@@ -106,12 +138,11 @@ bg_vec bg_barb_side(const bg_diagram *d, int b);
 bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir);
 /* Draws the bond's centre line as the current item's path. */
 void bg_geom_bond_path(const bg_diagram *d, int b);
+/* The direction (of 8) around node n farthest in angle from its bonds. */
+bg_vec bg_free_direction(const bg_diagram *d, int n);
 /* Filled arrowhead with its tip at p, pointing along dir. */
 void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid);
 
-/* colours with the highlight applied */
-bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot);
-int bg_diagram_muted(const bg_diagram *d);
 
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */
@@ -146,10 +177,6 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);
 
 /* signals (diagram_signals.c) */
-/* The user state signal i comes from, or -1. */
-int bg_signal_state(const bg_model *m, int i);
-/* Elements whose variables user state s integrates (at most cap, no repeats). */
-int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
 void bg_draw_signals(bg_diagram *d);
 
 /* layers (diagram_layers.c) */
@@ -158,12 +185,9 @@ typedef struct bg_layer_label bg_layer_label;
 void bg_layers_prepare(bg_diagram *d);
 /* Places and draws the path tags and loop gains collected while drawing. */
 void bg_place_layer_labels(bg_diagram *d);
-void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
 void bg_draw_paths(bg_diagram *d);
 void bg_draw_loops(bg_diagram *d);
 void bg_draw_conflicts(bg_diagram *d);
-/* The direction (of 8) around node n farthest in angle from its bonds. */
-bg_vec bg_free_direction(const bg_diagram *d, int n);
 void bg_draw_legend(bg_diagram *d);
 /* detectors and collapsed instances (diagram_parts.c) */
 /* Validates --collapse (unknown names: an error with a suggestion) and
@@ -171,12 +195,8 @@ void bg_draw_legend(bg_diagram *d);
 int bg_parts_nodes(bg_diagram *d, bg_diags *dg);
 /* Labels of detector and box nodes (markup, in the arena). */
 void bg_parts_labels(bg_diagram *d);
-/* Whether node n is drawn (not an element hidden in a collapsed box). */
-int bg_node_shown(const bg_diagram *d, int n);
 /* After the layout: hidden nodes take their box's centre and size. */
 void bg_parts_spread(bg_diagram *d);
-/* The node a detector's node is anchored to in the layout (its det_node as drawn). */
-int bg_detector_anchor(const bg_diagram *d, int k);
 /* bg_layout_run with each collapsed instance laid out as its box alone. */
 int bg_parts_layout(const bg_diagram *d, const bg_layout_in *in, bg_layout *out, char *err,
                     size_t errn);
@@ -185,14 +205,9 @@ void bg_draw_parts(bg_diagram *d);
 /* instance frames (diagram_frames.c): one labelled box per submodel instance */
 double bg_frame_label_height(const bg_diagram *d);
 void bg_draw_frames(bg_diagram *d);
-/* Text for a path's or loop's legend line. */
-/* markup: the gain typeset (legend), else plain text (DOT). */
-void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);
-bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 
 /* multiport fields (diagram_fields.c): one node per field, ports labelled */
 typedef struct bg_fields_lay bg_fields_lay;
-int bg_fields_hidden(const bg_diagram *d, int n);  /* a port drawn by its field's node */
 void bg_fields_prepare(bg_diagram *d);            /* after the nodes are measured */
 /* Leaves the hidden ports out of the layout input (NULL: nothing to do), and
  * gives them their field's position after it (frees what compact made). */

@@ -308,40 +308,6 @@ static void emit_joint(bg_scene *sc, const joint *j) {
   if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
 }
 
-/* The k-th layer's style (paths, then loops): colour c and dash pattern p
- * of 4. Without per-layer patterns, colours cycle and each further round of
- * them takes the next pattern; with them (print), pattern k mod 4 and colour
- * k mod n, shifted by one after every lcm(n, 4) layers. Either way the
- * first 4 n lines drawn all differ (n colours: 32 by default, 12 in print);
- * k counts drawn lines (a flat loop drawn with its path is that line). */
-static void layer_style(const bg_diagram *d, int kind, int i, int *c, int *p) {
-  if (kind == 'l' && d->loop_path && d->loop_path[i] >= 0) kind = 'p', i = d->loop_path[i];
-  int k = kind == 'p' ? i : (d->a ? d->a->npath : 0) + i, n = d->st.nlayer_color;
-  /* loops drawn with their path take no style of their own */
-  for (int l = 0; kind == 'l' && d->loop_path && l < i; l++) k -= d->loop_path[l] >= 0;
-  if (!d->st.layer_patterns) {
-    *c = k % n, *p = (k / n) % 4;
-    return;
-  }
-  int l = n % 2 ? 4 * n : n % 4 ? 2 * n : n; /* lcm(n, 4) */
-  *p = k % 4, *c = (k + k / l) % n;
-}
-
-bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i) {
-  int c, p;
-  layer_style(d, kind, i, &c, &p);
-  return d->st.layer_color[c];
-}
-
-void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]) {
-  static const double pat[4][2] = {{5, 2.5}, {1.5, 2}, {8, 3}, {3, 3}};
-  int c, pi;
-  layer_style(d, kind, i, &c, &pi);
-  const double *p = pat[pi];
-  double z = fmax(1, d->st.layer_width / 1.2); /* thick lines: longer dashes */
-  dash[0] = z * p[0], dash[1] = z * p[1];
-}
-
 static int layer_hot(const bg_diagram *d, int kind, int i) {
   return !d->o.highlight_kind || (d->o.highlight_kind == kind && d->o.highlight_index == i + 1);
 }
@@ -605,51 +571,6 @@ void bg_place_layer_labels(bg_diagram *d) {
     bg_obstacle_rect(d, p.x - w / 2, p.y - h / 2, p.x + w / 2, p.y + h / 2);
     bg_text_halo(d, L->markup, p, label_size(d));
     bg_scene_text(&d->scene, L->markup, p.x, p.y, label_size(d), 0.5, 0.5, L->color, L->role);
-  }
-}
-
-/* The exponent after a '^' at p: a number, a name or a bracketed group
- * (without its brackets); returns where it ends, the text in [from, to). */
-static const char *exponent(const char *p, const char **from, const char **to) {
-  const char *e = p;
-  if (*e == '(') {
-    int depth = 0;
-    do depth += *e == '(' ? 1 : *e == ')' ? -1 : 0;
-    while (*++e && depth > 0);
-    *from = p + 1, *to = depth ? e : e - 1;
-    return e;
-  }
-  if (*e == '-') e++;
-  while (isalnum((unsigned char)*e) || *e == '.' || *e == '_') e++;
-  *from = p, *to = e;
-  return e;
-}
-
-static void gain_char(bg_strbuf *out, char c) {
-  if (c == '*') bg_sb_puts(out, "\u2009"); /* a product: juxtaposition */
-  else if (c == '-') bg_sb_puts(out, "\u2212");
-  else if (c == '\'') bg_sb_puts(out, "\u2032");
-  else bg_markup_escapen(out, &c, 1);
-}
-
-void bg_gain_markup(const char *g, double size, bg_strbuf *out) {
-  char name[128];
-  for (const char *p = g; *p;) {
-    if (isalpha((unsigned char)*p) || *p == '_') {
-      const char *e = p;
-      while (isalnum((unsigned char)*e) || *e == '_') e++;
-      snprintf(name, sizeof name, "%.*s", (int)(e - p), p);
-      bg_name_markup(out, name, size);
-      p = e;
-    } else if (*p == '^' && p[1]) {
-      const char *from, *to;
-      p = exponent(p + 1, &from, &to);
-      bg_sb_printf(out, "<span size=\"70%%\" rise=\"%.1fpt\">", 0.42 * size);
-      for (const char *q = from; q < to; q++) gain_char(out, *q);
-      bg_sb_puts(out, "</span>");
-    } else {
-      gain_char(out, *p++);
-    }
   }
 }
 

@@ -6,28 +6,6 @@
 
 #include "diagram/diagram_int.h"
 
-/* ---------------------------------------------------------------- conflicts */
-bg_vec bg_free_direction(const bg_diagram *d, int j) {
-  const bg_model *m = d->m;
-  bg_vec c = bg_v(d->nx[j], d->ny[j]), best = bg_v(BG_SQRT1_2, -BG_SQRT1_2);
-  double best_gap = -1;
-  int nb = j < m->nelem ? m->elem_nbond[j] : 0;
-  for (int k = 0; k < 8; k++) {
-    double ang = -BG_PI / 4 + k * BG_PI / 4; /* upper right first */
-    bg_vec cand = bg_v(cos(ang), sin(ang));
-    double gap = BG_PI;
-    for (int i = 0; i < nb; i++) {
-      int b = m->elem_bonds[m->elem_bondadr[j] + i];
-      int o = m->bond_tail[b] == j ? m->bond_head[b] : m->bond_tail[b];
-      bg_vec dir = bg_vunit(bg_vsub(bg_v(d->nx[o], d->ny[o]), c));
-      double g = acos(fmax(-1, fmin(1, dir.x * cand.x + dir.y * cand.y)));
-      if (g < gap) gap = g;
-    }
-    if (gap > best_gap + 1e-9) best_gap = gap, best = cand;
-  }
-  return best;
-}
-
 /* A lightning flash about `size` points high, centred at p. */
 static void flash_path(bg_scene *s, bg_vec p, double size) {
   static const double pt[][2] = {{0.62, 0},    {0.16, 0.56}, {0.45, 0.56}, {0.28, 1},
@@ -163,13 +141,13 @@ static void legend_conventions(legend *L) {
     it->dash[0] = 4, it->dash[1] = 2;
     legend_text(L, "Sf*: artificial flow source (Lagrange causality)");
   }
-  if (bg_diagram_count(d, "signal") && (d->show & BG_SHOW_SIGNALS)) {
+  if (bg_scene_count(&d->scene, "signal") && (d->show & BG_SHOW_SIGNALS)) {
     it = sample_line(L, "legend-sample", st->signal, st->signal_width);
     if (st->signal_dashed) it->dash[0] = 3, it->dash[1] = 2;
     it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "legend-sample");
     it->fill = it->color = st->signal, it->width = 0;
     bg_geom_arrowhead(&d->scene, bg_v(L->x + L->sample, L->y), bg_v(1, 0), 6, 4);
-    legend_text(L, bg_diagram_count(d, "state-node")
+    legend_text(L, bg_scene_count(&d->scene, "state-node")
                        ? "modulating signal; \u222b : x integrates a user state x"
                        : "modulating signal");
   }
@@ -258,54 +236,4 @@ void bg_draw_legend(bg_diagram *d) {
     legend_text(&L, "a \u2192 GY \u2192 b:  e<span size=\"70%\" rise=\"-2pt\">a</span> = r f"
                     "<span size=\"70%\" rise=\"-2pt\">b</span>,  e<span size=\"70%\" rise=\"-2pt\">b</span>"
                     " = r f<span size=\"70%\" rise=\"-2pt\">a</span>  (r: the modulus)");
-}
-
-/* ---------------------------------------------------------------- descriptions */
-static void describe_bonds(const bg_diagram *d, const int *bonds, int n, bg_strbuf *out) {
-  for (int k = 0; k < n; k++) bg_sb_printf(out, "%s%d", k ? "-" : "", d->m->bond_num[bonds[k]]);
-}
-
-static void describe_text(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out,
-                          bg_strbuf *dst);
-
-/* Appends t to out (escaped for markup) and empties t. */
-static void flush_text(bg_strbuf *t, int markup, bg_strbuf *out) {
-  if (markup) bg_markup_escape(out, bg_sb_str(t));
-  else bg_sb_puts(out, bg_sb_str(t));
-  bg_sb_clear(t);
-}
-
-void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *dst) {
-  bg_strbuf t = {0}, *out = &t;
-  describe_text(d, kind, i, markup, out, dst);
-  flush_text(out, markup, dst);
-  bg_sb_free(&t);
-}
-
-/* The description into out; a typeset gain goes to dst directly. */
-static void describe_text(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out,
-                          bg_strbuf *dst) {
-  const bg_analysis *a = d->a;
-  const bg_model *m = d->m;
-  if (kind == 'p') {
-    bg_sb_printf(out, "P%d causal path %s \u2013 %s, bonds ", i + 1, m->elem_name[a->path_end0[i]],
-                 m->elem_name[a->path_end1[i]]);
-    describe_bonds(d, a->path_bonds + a->path_adr[i], a->path_n[i], out);
-    bg_sb_printf(out, " (%s", a->path_kind && a->path_kind[i] ? a->path_kind[i] : "?");
-    if (a->path_class && a->path_class[i]) bg_sb_printf(out, ", class %d", a->path_class[i]);
-    if (a->path_order && a->path_order[i] != BG_PATH_ORDER_NONE)
-      bg_sb_printf(out, ", order %d", a->path_order[i]);
-    bg_sb_putc(out, ')');
-    return;
-  }
-  bg_sb_printf(out, "L%d %s topological loop, order %d", i + 1,
-               a->tloop_kind[i] == BG_TLOOP_FLAT ? "flat" : "open", a->tloop_order[i]);
-  if (a->tloop_gain && a->tloop_gain[i] && markup) {
-    bg_sb_puts(out, ", G = ");
-    flush_text(out, markup, dst);
-    bg_gain_markup(a->tloop_gain[i], d->st.font_size * d->st.number_scale, dst);
-  } else if (a->tloop_gain && a->tloop_gain[i])
-    bg_sb_printf(out, ", G = %s", a->tloop_gain[i]);
-  if (a->tloop_algebraic && a->tloop_algebraic[i]) bg_sb_puts(out, ", algebraic");
-  if (a->tloop_cause && a->tloop_cause[i]) bg_sb_printf(out, " (%s)", a->tloop_cause[i]);
 }

@@ -95,10 +95,6 @@ int bg_parts_nodes(bg_diagram *d, bg_diags *dg) {
   return 0;
 }
 
-int bg_node_shown(const bg_diagram *d, int n) { return !d->node_of || d->node_of[n] == n; }
-
-int bg_detector_anchor(const bg_diagram *d, int k) { return d->node_of[d->m->det_node[k]]; }
-
 void bg_parts_labels(bg_diagram *d) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};

@@ -15,52 +15,6 @@ static bg_vec node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
   return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
 }
 
-/* ---------------------------------------------------------------- user states */
-/* The user state a signal comes from, or -1. */
-int bg_signal_state(const bg_model *m, int i) {
-  if (m->signal_from[i] >= 0 || !m->signal_var[i]) return -1;
-  for (int s = 0; s < m->nstate; s++)
-    if (!strcmp(m->state_name[s], m->signal_var[i])) return s;
-  return -1;
-}
-
-/* The element a bond variable of a state expression refers to: the junction
- * whose common variable it is (X.f of a 1-junction is its first bond's flow),
- * else the one-port on the bond, else a two-port. The expression keeps only
- * the bond, and these agree in value. */
-static int var_elem(const bg_model *m, int op, int b) {
-  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
-  for (int k = 0; k < 2; k++) {
-    int e = ends[k], kind = m->elem_kind[e];
-    if (((kind == BG_ELEM_J1 && op == BG_X_FLOW) || (kind == BG_ELEM_J0 && op == BG_X_EFFORT)) &&
-        m->elem_bonds[m->elem_bondadr[e]] == b)
-      return e;
-  }
-  for (int k = 0; k < 2; k++)
-    if (bg_elem_is_oneport(m->elem_kind[ends[k]])) return ends[k];
-  for (int k = 0; k < 2; k++)
-    if (bg_elem_is_twoport(m->elem_kind[ends[k]])) return ends[k];
-  return ends[0];
-}
-
-int bg_state_inputs(const bg_model *m, int s, int *out, int cap) {
-  int n = 0, sp = 0, root = m->state_expr[s];
-  if (root < 0) return 0;
-  int *stack = bg_xcalloc((size_t)m->nxnode + 1, sizeof *stack);
-  stack[sp++] = root;
-  while (sp > 0) {
-    const bg_xnode *x = &m->xnode[stack[--sp]];
-    for (int k = 0; k < x->nargs; k++) stack[sp++] = x->arg[k];
-    int e = x->op == BG_X_STORE ? x->ref
-            : x->op == BG_X_EFFORT || x->op == BG_X_FLOW ? var_elem(m, x->op, x->ref) : -1;
-    int seen = e < 0;
-    for (int k = 0; k < n && !seen; k++) seen = out[k] == e;
-    if (!seen && n < cap) out[n++] = e;
-  }
-  free(stack);
-  return n;
-}
-
 /* ---------------------------------------------------------------- drawing */
 static int bond_between(const bg_model *m, int x, int y) {
   for (int i = 0; i < m->elem_nbond[x]; i++) {

@@ -1,0 +1,131 @@
+/* The diagram's shared helpers, called by every pass and calling none:
+ * vector maths, ink (the highlight's muting), layer colours and dashes,
+ * and questions about the model and the layout result (which nodes are
+ * drawn, what a user state reads). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+bg_vec bg_v(double x, double y) { return (bg_vec){x, y}; }
+
+bg_vec bg_vadd(bg_vec a, bg_vec b) { return bg_v(a.x + b.x, a.y + b.y); }
+
+bg_vec bg_vsub(bg_vec a, bg_vec b) { return bg_v(a.x - b.x, a.y - b.y); }
+
+bg_vec bg_vscale(bg_vec a, double k) { return bg_v(a.x * k, a.y * k); }
+
+double bg_vlen(bg_vec a) { return hypot(a.x, a.y); }
+
+bg_vec bg_vleft(bg_vec d) { return bg_v(d.y, -d.x); }
+
+bg_vec bg_vunit(bg_vec a) {
+  double n = bg_vlen(a);
+  return n > 1e-12 ? bg_vscale(a, 1 / n) : bg_v(1, 0);
+}
+
+bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p) {
+  bg_vec dv = bg_vsub(p, c);
+  double tx = fabs(dv.x) > 1e-12 ? hw / fabs(dv.x) : 1e300;
+  double ty = fabs(dv.y) > 1e-12 ? hh / fabs(dv.y) : 1e300;
+  double t = tx < ty ? tx : ty;
+  if (t > 1) t = 1; /* overlapping boxes: stop at the other centre */
+  return bg_vadd(c, bg_vscale(dv, t));
+}
+
+/* ---------------------------------------------------------------- colours */
+int bg_diagram_muted(const bg_diagram *d) { return d->o.highlight_kind != 0; }
+
+bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot) {
+  return hot || !bg_diagram_muted(d) ? c : d->st.muted;
+}
+
+int bg_node_shown(const bg_diagram *d, int n) { return !d->node_of || d->node_of[n] == n; }
+
+int bg_detector_anchor(const bg_diagram *d, int k) { return d->node_of[d->m->det_node[k]]; }
+
+int bg_fields_hidden(const bg_diagram *d, int n) {
+  return d->rep && n < d->m->nelem && d->rep[n] != n;
+}
+
+/* ---------------------------------------------------------------- user states */
+/* The user state a signal comes from, or -1. */
+int bg_signal_state(const bg_model *m, int i) {
+  if (m->signal_from[i] >= 0 || !m->signal_var[i]) return -1;
+  for (int s = 0; s < m->nstate; s++)
+    if (!strcmp(m->state_name[s], m->signal_var[i])) return s;
+  return -1;
+}
+
+/* The element a bond variable of a state expression refers to: the junction
+ * whose common variable it is (X.f of a 1-junction is its first bond's flow),
+ * else the one-port on the bond, else a two-port. The expression keeps only
+ * the bond, and these agree in value. */
+static int var_elem(const bg_model *m, int op, int b) {
+  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
+  for (int k = 0; k < 2; k++) {
+    int e = ends[k], kind = m->elem_kind[e];
+    if (((kind == BG_ELEM_J1 && op == BG_X_FLOW) || (kind == BG_ELEM_J0 && op == BG_X_EFFORT)) &&
+        m->elem_bonds[m->elem_bondadr[e]] == b)
+      return e;
+  }
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_oneport(m->elem_kind[ends[k]])) return ends[k];
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_twoport(m->elem_kind[ends[k]])) return ends[k];
+  return ends[0];
+}
+
+int bg_state_inputs(const bg_model *m, int s, int *out, int cap) {
+  int n = 0, sp = 0, root = m->state_expr[s];
+  if (root < 0) return 0;
+  int *stack = bg_xcalloc((size_t)m->nxnode + 1, sizeof *stack);
+  stack[sp++] = root;
+  while (sp > 0) {
+    const bg_xnode *x = &m->xnode[stack[--sp]];
+    for (int k = 0; k < x->nargs; k++) stack[sp++] = x->arg[k];
+    int e = x->op == BG_X_STORE ? x->ref
+            : x->op == BG_X_EFFORT || x->op == BG_X_FLOW ? var_elem(m, x->op, x->ref) : -1;
+    int seen = e < 0;
+    for (int k = 0; k < n && !seen; k++) seen = out[k] == e;
+    if (!seen && n < cap) out[n++] = e;
+  }
+  free(stack);
+  return n;
+}
+
+/* The k-th layer's style (paths, then loops): colour c and dash pattern p
+ * of 4. Without per-layer patterns, colours cycle and each further round of
+ * them takes the next pattern; with them (print), pattern k mod 4 and colour
+ * k mod n, shifted by one after every lcm(n, 4) layers. Either way the
+ * first 4 n lines drawn all differ (n colours: 32 by default, 12 in print);
+ * k counts drawn lines (a flat loop drawn with its path is that line). */
+static void layer_style(const bg_diagram *d, int kind, int i, int *c, int *p) {
+  if (kind == 'l' && d->loop_path && d->loop_path[i] >= 0) kind = 'p', i = d->loop_path[i];
+  int k = kind == 'p' ? i : (d->a ? d->a->npath : 0) + i, n = d->st.nlayer_color;
+  /* loops drawn with their path take no style of their own */
+  for (int l = 0; kind == 'l' && d->loop_path && l < i; l++) k -= d->loop_path[l] >= 0;
+  if (!d->st.layer_patterns) {
+    *c = k % n, *p = (k / n) % 4;
+    return;
+  }
+  int l = n % 2 ? 4 * n : n % 4 ? 2 * n : n; /* lcm(n, 4) */
+  *p = k % 4, *c = (k + k / l) % n;
+}
+
+bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i) {
+  int c, p;
+  layer_style(d, kind, i, &c, &p);
+  return d->st.layer_color[c];
+}
+
+void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]) {
+  static const double pat[4][2] = {{5, 2.5}, {1.5, 2}, {8, 3}, {3, 3}};
+  int c, pi;
+  layer_style(d, kind, i, &c, &pi);
+  const double *p = pat[pi];
+  double z = fmax(1, d->st.layer_width / 1.2); /* thick lines: longer dashes */
+  dash[0] = z * p[0], dash[1] = z * p[1];
+}
