@@ -11,7 +11,7 @@
 
 /* ---------------------------------------------------------------- labels */
 
-static char *elem_markup(bg_diagram *d, int e) {
+static char *elem_markup(bg_diagram_layout *d, int e) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};
   const char *kind = bg_elem_display_kind(m, e);
@@ -27,7 +27,7 @@ static char *elem_markup(bg_diagram *d, int e) {
 }
 
 /* "∫ : phi": the integrator of a user state. */
-static char *state_markup(bg_diagram *d, int s) {
+static char *state_markup(bg_diagram_layout *d, int s) {
   bg_strbuf b = {0};
   bg_sb_puts(&b, "\u222b : ");
   bg_name_markup(&b, d->m->state_name[s], d->st.font_size);
@@ -36,7 +36,7 @@ static char *state_markup(bg_diagram *d, int s) {
   return r;
 }
 
-static void measure_nodes(bg_diagram *d) {
+static void measure_nodes(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   for (int i = 0; i < d->nnode; i++) d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
   for (int s = 0; s < m->nstate; s++)
@@ -57,7 +57,7 @@ static void measure_nodes(bg_diagram *d) {
 }
 
 /* ---------------------------------------------------------------- layout */
-static const char *choose_engine(const bg_diagram *d) {
+static const char *choose_engine(const bg_diagram_layout *d) {
   const bg_model *m = d->m;
   if (d->o.layout) return d->o.layout;
   const char *e = m->layout.engine ? m->layout.engine : "dot";
@@ -73,7 +73,7 @@ static const char *choose_engine(const bg_diagram *d) {
 /* Layout edges: the bonds, Sf* → junction for Lagrange sources, and for a
  * drawn user state its inputs → integrator → modulated elements. Returns
  * the count; *tail and *head are allocated. */
-static int layout_edges(const bg_diagram *d, int **tail, int **head) {
+static int layout_edges(const bg_diagram_layout *d, int **tail, int **head) {
   const bg_model *m = d->m;
   int cap = m->nbond + d->nnode + m->nsignal + m->ndet + 1, n = 0;
   for (int s = 0; s < m->nstate; s++) cap += d->state_node[s] >= 0 ? 64 : 0;
@@ -103,7 +103,7 @@ static int layout_edges(const bg_diagram *d, int **tail, int **head) {
  * connected part, so a chain with sources at both ends (slider crank) runs
  * from one to the other instead of folding back from both. A part without a
  * source starts from its first node (layout.c). */
-static void first_sources(const bg_diagram *d, const int *tail, const int *head, int ne,
+static void first_sources(const bg_diagram_layout *d, const int *tail, const int *head, int ne,
                           unsigned char *root) {
   const bg_model *m = d->m;
   int *up = bg_xcalloc((size_t)d->nnode + 1, sizeof *up);
@@ -123,7 +123,7 @@ static void first_sources(const bg_diagram *d, const int *tail, const int *head,
   free(up), free(has);
 }
 
-static int run_layout(bg_diagram *d, bg_diags *dg) {
+static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int *tail, *head, ne = layout_edges(d, &tail, &head);
   int *pinned = bg_xcalloc((size_t)d->nnode, sizeof *pinned);
@@ -202,11 +202,11 @@ static void draw_bond(bg_diagram *d, int b) {
   it->color = bg_diagram_ink(d, c, d->hot_bond[b]);
   it->width = st->line_width;
   it->round = 1;
-  bg_geom_bond_path(d, b);
+  bg_geom_bond_path(d->L, &d->scene, b);
   /* the half arrow: one barb, 45 degrees back from the tip */
-  const bg_bond_geom *g = &d->bg[b];
+  const bg_bond_geom *g = &d->L->bg[b];
   double len = 7 * st->line_width;
-  bg_vec barb = bg_vadd(g->head, bg_vscale(bg_vsub(bg_barb_side(d, b), g->hdir), len * BG_SQRT1_2));
+  bg_vec barb = bg_vadd(g->head, bg_vscale(bg_vsub(bg_barb_side(d->L, b), g->hdir), len * BG_SQRT1_2));
   bg_scene_line(&d->scene, barb.x, barb.y);
 }
 
@@ -226,7 +226,7 @@ static void stroke_bar(bg_diagram *d, bg_vec e, bg_vec n, double half) {
 
 static void draw_stroke(bg_diagram *d, int b) {
   const bg_style *st = &d->st;
-  const bg_bond_geom *g = &d->bg[b];
+  const bg_bond_geom *g = &d->L->bg[b];
   int at_head = d->a->bond_stroke[b] == BG_STROKE_HEAD;
   int conflict = d->a->bond_conflict && d->a->bond_conflict[b];
   int deriv = derivative_bond(d, b);
@@ -252,7 +252,7 @@ static void draw_stroke(bg_diagram *d, int b) {
  * the line: 3.5 pt, or beyond the path and loop lines drawn on that side. */
 static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
   bg_vec left = bg_vleft(dir);
-  int fwd = dir.x * d->bg[b].hdir.x + dir.y * d->bg[b].hdir.y > 0; /* dir is tail → head */
+  int fwd = dir.x * d->L->bg[b].hdir.x + dir.y * d->L->bg[b].hdir.y > 0; /* dir is tail → head */
   int on_left = left.x * n.x + left.y * n.y > 0;
   int used = d->side_use[2 * b + (fwd == on_left ? 0 : 1)];
   if (!used) return 3.5;
@@ -279,14 +279,14 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
   bg_vec cand[NC];
   double reach[NC];
   bg_vec p0, p1;
-  bg_geom_longest_leg(d, b, &p0, &p1);
+  bg_geom_longest_leg(d->L, b, &p0, &p1);
   for (int k = 0; k < NT; k++) {
-    bg_vec dir, at = ts[k] == 0.5 ? d->bg[b].mid : bg_geom_along(d, b, ts[k], &dir);
-    if (ts[k] == 0.5) dir = d->bg[b].mdir;
-    if (d->bg[b].bendn) /* a bent bond: along its longest leg */
+    bg_vec dir, at = ts[k] == 0.5 ? d->L->bg[b].mid : bg_geom_along(d->L, b, ts[k], &dir);
+    if (ts[k] == 0.5) dir = d->L->bg[b].mdir;
+    if (d->L->bg[b].bendn) /* a bent bond: along its longest leg */
       at = bg_vadd(p0, bg_vscale(bg_vsub(p1, p0), ts[k])), dir = bg_vunit(bg_vsub(p1, p0));
     for (int f = 0; f < 2; f++) {
-      bg_vec n = bg_vscale(bg_barb_side_at(d, dir), f ? -side : side);
+      bg_vec n = bg_vscale(bg_barb_side_at(d->L, dir), f ? -side : side);
       double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2, gap = layers_beside(d, b, dir, n);
       for (int j = 0; j < NOUT; j++) {
         int i = (f * NOUT + j) * NT + k;
@@ -352,19 +352,19 @@ static void draw_bond_label(bg_diagram *d, int b) {
 static void draw_bonds(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int b = 0; b < m->nbond; b++) {
-    if (d->bond_hidden[b]) continue; /* inside a collapsed box */
+    if (d->L->bond_hidden[b]) continue; /* inside a collapsed box */
     draw_bond(d, b);
     bg_obstacle_owned(d, d->scene.nitem - 1, -1 - b);
   }
   if (d->a && (d->show & BG_SHOW_STROKES))
     for (int b = 0; b < m->nbond; b++)
-      if (d->a->bond_stroke[b] != BG_STROKE_NONE && !d->bond_hidden[b]) draw_stroke(d, b);
+      if (d->a->bond_stroke[b] != BG_STROKE_NONE && !d->L->bond_hidden[b]) draw_stroke(d, b);
 }
 
 static void draw_numbers(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int b = 0; b < m->nbond; b++) {
-    if (d->bond_hidden[b]) continue;
+    if (d->L->bond_hidden[b]) continue;
     if (d->show & (BG_SHOW_NUMBERS | BG_SHOW_VARIABLES)) draw_number(d, b);
     if (d->show & BG_SHOW_LABELS) draw_bond_label(d, b);
   }
@@ -374,12 +374,12 @@ static void draw_numbers(bg_diagram *d) {
 static void draw_nodes(bg_diagram *d) {
   const bg_model *m = d->m;
   for (int e = 0; e < m->nelem; e++) {
-    if (!bg_node_shown(d, e)) continue; /* inside a collapsed box */
-    if (bg_fields_hidden(d, e)) continue; /* its field's node is drawn */
+    if (!bg_node_shown(d->L, e)) continue; /* inside a collapsed box */
+    if (bg_fields_hidden(d->L, e)) continue; /* its field's node is drawn */
     bg_rgba c = parse_hex(m->elem_color ? m->elem_color[e] : NULL, d->st.fg);
     char role[160];
     snprintf(role, sizeof role, "node %s", m->elem_name[e]);
-    bg_scene_text(&d->scene, d->nlabel[e], d->nx[e], d->ny[e], d->st.font_size, 0.5, 0.5,
+    bg_scene_text(&d->scene, d->L->nlabel[e], d->L->nx[e], d->L->ny[e], d->st.font_size, 0.5, 0.5,
                   bg_diagram_ink(d, c, d->hot_elem[e]), role);
   }
 }
@@ -402,7 +402,7 @@ static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, doub
   bg_vec t = bg_box_exit(c, hw, hh, p), dir = bg_vunit(bg_vsub(t, p));
   it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-bond %d", i + 1);
   it->width = st->line_width, it->dash[0] = 4, it->dash[1] = 2, it->round = 1, it->color = ink;
-  bg_vec barb = bg_vadd(t, bg_vscale(bg_vsub(bg_barb_side_at(d, dir), dir), 7 * st->line_width * BG_SQRT1_2));
+  bg_vec barb = bg_vadd(t, bg_vscale(bg_vsub(bg_barb_side_at(d->L, dir), dir), 7 * st->line_width * BG_SQRT1_2));
   bg_scene_move(&d->scene, p.x, p.y);
   bg_scene_line(&d->scene, t.x, t.y);
   bg_scene_line(&d->scene, barb.x, barb.y);
@@ -419,15 +419,15 @@ static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, doub
 static void draw_lagrange(bg_diagram *d) {
   const bg_analysis *a = d->a;
   for (int i = 0; a && i < a->nlag; i++) {
-    int n = d->lag_node[i];
+    int n = d->L->lag_node[i];
     if (n >= 0) {
       int j = a->lag_junction[i];
-      bg_vec cn = bg_v(d->nx[n], d->ny[n]), cj = bg_v(d->nx[j], d->ny[j]);
-      draw_lagrange_source(d, i, cn, d->nw[n] / 2, d->nh[n] / 2, bg_node_end(d, j, bg_vunit(bg_vsub(cn, cj))));
+      bg_vec cn = bg_v(d->L->nx[n], d->L->ny[n]), cj = bg_v(d->L->nx[j], d->L->ny[j]);
+      draw_lagrange_source(d, i, cn, d->L->nw[n] / 2, d->L->nh[n] / 2, bg_node_end(d->L, j, bg_vunit(bg_vsub(cn, cj))));
     } else if (a->lag_bond[i] >= 0) {
       /* the inserted 1-junction sits on the split bond: attach beside it */
       int b = a->lag_bond[i];
-      bg_vec side = bg_vscale(bg_barb_side(d, b), -1), mid = d->bg[b].mid;
+      bg_vec side = bg_vscale(bg_barb_side(d->L, b), -1), mid = d->L->bg[b].mid;
       double w, h;
       bg_text_measure(d->st.font, d->st.font_size, "Sf*", &w, &h);
       bg_vec c = bg_vadd(mid, bg_vscale(side, 30 + h / 2));
@@ -441,7 +441,7 @@ static void draw_lagrange(bg_diagram *d) {
 static void hot_bond(bg_diagram *d, int b) {
   d->hot_bond[b] = 1;
   d->hot_elem[d->m->bond_tail[b]] = d->hot_elem[d->m->bond_head[b]] = 1;
-  d->hot_elem[d->node_of[d->m->bond_tail[b]]] = d->hot_elem[d->node_of[d->m->bond_head[b]]] = 1;
+  d->hot_elem[d->L->node_of[d->m->bond_tail[b]]] = d->hot_elem[d->L->node_of[d->m->bond_head[b]]] = 1;
 }
 
 static int count_of(const bg_analysis *a, int kind) {
@@ -469,7 +469,7 @@ static void mark_hot(bg_diagram *d) {
   int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
   if (!kind) {
     memset(d->hot_bond, 1, (size_t)m->nbond + 1);
-    memset(d->hot_elem, 1, (size_t)d->nnode + 1);
+    memset(d->hot_elem, 1, (size_t)d->L->nnode + 1);
     return;
   }
   if (kind == 'p')
@@ -483,7 +483,7 @@ static void mark_hot(bg_diagram *d) {
 }
 
 /* ---------------------------------------------------------------- build */
-static int alloc_nodes(bg_diagram *d, bg_diags *dg) {
+static int alloc_nodes(bg_diagram_layout *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int nlag = d->a ? d->a->nlag : 0;
   d->lag_node = bg_arena_alloc(&d->arena, sizeof(int) * (size_t)(nlag + 1));
@@ -590,7 +590,7 @@ static void draw_all(bg_diagram *d) {
 }
 
 /* The layout stage: nodes measured and laid out, where the bonds run. */
-static int lay_out(bg_diagram *d, bg_diags *dg) {
+static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
   if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);
   bg_fields_prepare(d);
@@ -602,7 +602,7 @@ static int lay_out(bg_diagram *d, bg_diags *dg) {
 /* The scene stage: what the highlight touches, then everything drawn. */
 static void draw_scene(bg_diagram *d) {
   const bg_model *m = d->m;
-  d->hot_elem = bg_arena_alloc(&d->arena, (size_t)d->nnode + 1);
+  d->hot_elem = bg_arena_alloc(&d->arena, (size_t)d->L->nnode + 1);
   d->hot_bond = bg_arena_alloc(&d->arena, (size_t)m->nbond + 1);
   d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
   mark_hot(d);
@@ -610,6 +610,27 @@ static void draw_scene(bg_diagram *d) {
   d->scene.background = d->st.background;
   d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");
   draw_all(d);
+}
+
+static void layout_release(bg_diagram_layout *L) {
+  if (!L || --L->refs > 0) return;
+  bg_layout_free(&L->lay);
+  bg_arena_free(&L->arena);
+  free(L);
+}
+
+/* The layout of a build: o's names are used here and not kept (they may be
+ * gone when a redraw draws it again). */
+static bg_diagram_layout *layout_build(const bg_diagram *d, bg_diags *dg) {
+  bg_diagram_layout *L = bg_xcalloc(1, sizeof *L);
+  L->refs = 1;
+  L->m = d->m, L->a = d->a, L->o = d->o, L->show = d->show, L->st = d->st;
+  int rc = lay_out(L, dg);
+  L->o.style = L->o.style_dir = L->o.layout = NULL;
+  L->o.collapse = NULL, L->o.ncollapse = 0;
+  if (rc == 0) return L;
+  layout_release(L);
+  return NULL;
 }
 
 bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_render_opts *o,
@@ -620,44 +641,13 @@ bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_r
   if (bg_style_load(&d->st, o->style, o->style_dir, dg) != 0) goto fail;
   /* a bad highlight is reported before the layout is paid for */
   if (o->highlight_kind && check_highlight(d, dg) != 0) goto fail;
-  if (lay_out(d, dg) != 0) goto fail;
+  if (!(d->held = layout_build(d, dg))) goto fail;
+  d->L = d->held;
   draw_scene(d);
   return d;
 fail:
   bg_diagram_free(d);
   return NULL;
-}
-
-static void *arena_dup(bg_arena *a, const void *src, size_t size) {
-  void *p = bg_arena_alloc(a, size);
-  memcpy(p, src, size);
-  return p;
-}
-
-/* The layout stage of src, copied: d shares nothing with src. */
-static void copy_layout(bg_diagram *d, const bg_diagram *src) {
-  const bg_model *m = d->m;
-  int nlag = d->a ? d->a->nlag : 0;
-  size_t nn = (size_t)src->nnode + 1, nb = (size_t)m->nbond + 1;
-  d->nnode = src->nnode;
-  d->lag_node = arena_dup(&d->arena, src->lag_node, sizeof(int) * (size_t)(nlag + 1));
-  d->rep = src->rep ? arena_dup(&d->arena, src->rep, sizeof(int) * nn) : NULL;
-  d->state_node = arena_dup(&d->arena, src->state_node, sizeof(int) * ((size_t)m->nstate + 1));
-  d->det_draw = arena_dup(&d->arena, src->det_draw, sizeof(int) * ((size_t)m->ndet + 1));
-  d->inst_box = arena_dup(&d->arena, src->inst_box, sizeof(int) * ((size_t)m->ninst + 1));
-  d->node_of = arena_dup(&d->arena, src->node_of, sizeof(int) * nn);
-  d->box_inst = arena_dup(&d->arena, src->box_inst, sizeof(int) * nn);
-  d->bond_hidden = arena_dup(&d->arena, src->bond_hidden, nb);
-  d->ncollapsed = src->ncollapsed;
-  d->nw = arena_dup(&d->arena, src->nw, nn * sizeof(double));
-  d->nh = arena_dup(&d->arena, src->nh, nn * sizeof(double));
-  d->nlabel = bg_arena_alloc(&d->arena, nn * sizeof(char *));
-  for (int i = 0; i < d->nnode; i++) d->nlabel[i] = bg_arena_strdup(&d->arena, src->nlabel[i]);
-  bg_layout_copy(&src->lay, &d->lay);
-  d->nx = d->lay.x, d->ny = d->lay.y;
-  d->splx = d->lay.splx, d->sply = d->lay.sply;
-  d->bg = arena_dup(&d->arena, src->bg, nb * sizeof *d->bg);
-  d->jr = src->jr ? arena_dup(&d->arena, src->jr, nn * sizeof(double)) : NULL;
 }
 
 bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highlight_kind,
@@ -678,14 +668,17 @@ bg_diagram *bg_diagram_redraw(const bg_diagram *src, unsigned show, int highligh
     bg_diagram_free(d);
     return NULL;
   }
-  copy_layout(d, src);
+  /* the layout is shared, read only: either diagram may be freed first */
+  d->held = src->held;
+  d->held->refs++;
+  d->L = d->held;
   draw_scene(d);
   return d;
 }
 
 void bg_diagram_free(bg_diagram *d) {
   if (!d) return;
-  bg_layout_free(&d->lay);
+  layout_release(d->held);
   bg_obstacles_free(d->obs);
   free(d->labels);
   free(d->poly);

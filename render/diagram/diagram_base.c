@@ -42,11 +42,11 @@ bg_rgba bg_diagram_ink(const bg_diagram *d, bg_rgba c, int hot) {
   return hot || !bg_diagram_muted(d) ? c : d->st.muted;
 }
 
-int bg_node_shown(const bg_diagram *d, int n) { return !d->node_of || d->node_of[n] == n; }
+int bg_node_shown(const bg_diagram_layout *d, int n) { return !d->node_of || d->node_of[n] == n; }
 
-int bg_detector_anchor(const bg_diagram *d, int k) { return d->node_of[d->m->det_node[k]]; }
+int bg_detector_anchor(const bg_diagram_layout *d, int k) { return d->node_of[d->m->det_node[k]]; }
 
-int bg_fields_hidden(const bg_diagram *d, int n) {
+int bg_fields_hidden(const bg_diagram_layout *d, int n) {
   return d->rep && n < d->m->nelem && d->rep[n] != n;
 }
 

@@ -17,21 +17,21 @@ static void dot_str(bg_strbuf *b, const char *s) {
   bg_sb_putc(b, '"');
 }
 
-static double yup(const bg_diagram *d, double y) { return d->lay.height - y; }
+static double yup(const bg_diagram *d, double y) { return d->L->lay.height - y; }
 
 /* The user state whose integrator node n is, or -1. */
 static int node_state(const bg_diagram *d, int n) {
   for (int s = 0; s < d->m->nstate; s++)
-    if (d->state_node[s] == n) return s;
+    if (d->L->state_node[s] == n) return s;
   return -1;
 }
 
 /* The instance whose box node n is, else -1 (and *det: the detector node n draws, or -1). */
 static int node_part(const bg_diagram *d, int n, int *det) {
   *det = -1;
-  if (d->box_inst[n] >= 0) return d->box_inst[n];
+  if (d->L->box_inst[n] >= 0) return d->L->box_inst[n];
   for (int k = 0; k < d->m->ndet; k++)
-    if (d->det_draw[k] == n) *det = k;
+    if (d->L->det_draw[k] == n) *det = k;
   return -1;
 }
 
@@ -111,8 +111,8 @@ static void write_node(const bg_diagram *d, int n, bg_strbuf *out) {
   } else {
     bg_sb_puts(out, "\"Sf*\", style=dashed, shape=box");
   }
-  bg_sb_printf(out, ", pos=\"%.2f,%.2f\", width=%.4f, height=%.4f", d->nx[n], yup(d, d->ny[n]),
-               d->nw[n] / 72, d->nh[n] / 72);
+  bg_sb_printf(out, ", pos=\"%.2f,%.2f\", width=%.4f, height=%.4f", d->L->nx[n], yup(d, d->L->ny[n]),
+               d->L->nw[n] / 72, d->L->nh[n] / 72);
   char c[64];
   if (n < m->nelem && conflict_at(d, n, c, sizeof c)) {
     bg_sb_puts(out, ", fontcolor=red, bg_conflict=");
@@ -134,17 +134,17 @@ static void put_pt(const bg_diagram *d, bg_strbuf *out, bg_vec p, int first) {
  * straight pieces, one per leg), so `neato -n2` draws the half arrow and the
  * strokes where bgdraw does. */
 static void write_pos(const bg_diagram *d, int b, int stroke, bg_strbuf *out) {
-  const bg_bond_geom *g = &d->bg[b];
+  const bg_bond_geom *g = &d->L->bg[b];
   double elen = ARROW_LVEE + (stroke == BG_STROKE_HEAD ? ARROW_TEE : 0);
   double slen = stroke == BG_STROKE_TAIL ? ARROW_TEE : 0;
   int n = g->spln ? 0 : g->bendn + 2;
   bg_vec *p = bg_xcalloc((size_t)(g->spln ? g->spln : n) + 1, sizeof *p);
   if (g->spln)
-    for (int i = 0; i < g->spln; i++) p[i] = bg_v(d->splx[g->spladr + i], d->sply[g->spladr + i]);
+    for (int i = 0; i < g->spln; i++) p[i] = bg_v(d->L->splx[g->spladr + i], d->L->sply[g->spladr + i]);
   else
     for (int i = 0; i < n; i++)
       p[i] = i == 0 ? g->tail : i == n - 1 ? g->head
-                             : bg_v(d->lay.bendx[g->bendadr + i - 1], d->lay.bendy[g->bendadr + i - 1]);
+                             : bg_v(d->L->lay.bendx[g->bendadr + i - 1], d->L->lay.bendy[g->bendadr + i - 1]);
   int last = g->spln ? g->spln - 1 : n - 1;
   /* short legs keep a third of their length */
   double lh = bg_vlen(bg_vsub(p[last], p[last - 1])), lt = bg_vlen(bg_vsub(p[1], p[0]));
@@ -169,9 +169,9 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
   const bg_model *m = d->m;
   int stroke = d->a ? d->a->bond_stroke[b] : BG_STROKE_NONE;
   bg_sb_puts(out, "  ");
-  node_id(d, d->node_of[m->bond_tail[b]], out);
+  node_id(d, d->L->node_of[m->bond_tail[b]], out);
   bg_sb_puts(out, " -> ");
-  node_id(d, d->node_of[m->bond_head[b]], out);
+  node_id(d, d->L->node_of[m->bond_head[b]], out);
   bg_sb_printf(out, " [label=\"%d\", bg_bond=%d, arrowhead=%s", m->bond_num[b], m->bond_num[b],
                stroke == BG_STROKE_HEAD ? "teelvee" : "lvee");
   if (stroke == BG_STROKE_TAIL) bg_sb_puts(out, ", dir=both, arrowtail=tee");
@@ -191,29 +191,29 @@ static void write_bond(const bg_diagram *d, int b, bg_strbuf *out) {
 static void write_extras(const bg_diagram *d, bg_strbuf *out) {
   const bg_model *m = d->m;
   for (int s = 0; s < m->nstate; s++) {
-    if (d->state_node[s] < 0) continue;
+    if (d->L->state_node[s] < 0) continue;
     int in[64], nin = bg_state_inputs(m, s, in, 64);
     for (int k = 0; k < nin; k++) {
       bg_sb_puts(out, "  ");
       node_id(d, in[k], out);
       bg_sb_puts(out, " -> ");
-      node_id(d, d->state_node[s], out);
+      node_id(d, d->L->state_node[s], out);
       bg_sb_puts(out, " [style=dashed, color=\"#8b3a1a\", arrowhead=normal, bg_state_input=1];\n");
     }
   }
   for (int k = 0; k < m->ndet; k++) {
-    if (d->det_draw[k] < 0) continue;
+    if (d->L->det_draw[k] < 0) continue;
     bg_sb_puts(out, "  ");
-    node_id(d, bg_detector_anchor(d, k), out);
+    node_id(d, bg_detector_anchor(d->L, k), out);
     bg_sb_puts(out, " -> ");
-    node_id(d, d->det_draw[k], out);
+    node_id(d, d->L->det_draw[k], out);
     bg_sb_puts(out, " [arrowhead=normal, bg_detector=1];\n"); /* an activated bond */
   }
   for (int i = 0; i < m->nsignal; i++) {
-    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->node_of[m->signal_to[i]];
-    if (from < 0 && s >= 0) from = d->state_node[s];
+    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->L->node_of[m->signal_to[i]];
+    if (from < 0 && s >= 0) from = d->L->state_node[s];
     if (from < 0) continue; /* a bond variable: no node to start from */
-    from = d->node_of[from];
+    from = d->L->node_of[from];
     if (from == to && to != m->signal_to[i]) continue; /* inside a collapsed instance */
     bg_sb_puts(out, "  ");
     node_id(d, from, out);
@@ -224,9 +224,9 @@ static void write_extras(const bg_diagram *d, bg_strbuf *out) {
     bg_sb_puts(out, "];\n");
   }
   for (int i = 0; d->a && i < d->a->nlag; i++) {
-    if (d->lag_node[i] < 0) continue;
+    if (d->L->lag_node[i] < 0) continue;
     bg_sb_puts(out, "  ");
-    node_id(d, d->lag_node[i], out);
+    node_id(d, d->L->lag_node[i], out);
     bg_sb_puts(out, " -> ");
     node_id(d, d->a->lag_junction[i], out);
     bg_sb_puts(out, " [style=dashed, arrowhead=lvee, dir=both, arrowtail=tee];\n");
@@ -254,16 +254,16 @@ void bg_diagram_write_dot(const bg_diagram *d, bg_strbuf *out) {
   bg_sb_puts(out, "/* bgdraw: annotated bond graph; positions in points. Redraw: neato -n2 -Tsvg */\n");
   bg_sb_puts(out, "digraph ");
   dot_str(out, m->name ? m->name : "bg");
-  bg_sb_printf(out, " {\n  graph [bb=\"0,0,%.2f,%.2f\", bg_engine=\"%s\"];\n", d->lay.width,
-               d->lay.height, d->lay.engine);
+  bg_sb_printf(out, " {\n  graph [bb=\"0,0,%.2f,%.2f\", bg_engine=\"%s\"];\n", d->L->lay.width,
+               d->L->lay.height, d->L->lay.engine);
   bg_sb_printf(out, "  node [shape=plaintext, fixedsize=true, fontname=\"%s\", fontsize=%.1f];\n",
                d->st.font, d->st.font_size);
   bg_sb_printf(out, "  edge [fontsize=%.1f];\n", d->st.font_size * d->st.number_scale);
   write_layers(d, out);
-  for (int n = 0; n < d->nnode; n++)
-    if (bg_node_shown(d, n) && !bg_fields_hidden(d, n)) write_node(d, n, out);
+  for (int n = 0; n < d->L->nnode; n++)
+    if (bg_node_shown(d->L, n) && !bg_fields_hidden(d->L, n)) write_node(d, n, out);
   for (int b = 0; b < m->nbond; b++)
-    if (!d->bond_hidden[b]) write_bond(d, b, out);
+    if (!d->L->bond_hidden[b]) write_bond(d, b, out);
   write_extras(d, out);
   bg_sb_puts(out, "}\n");
 }

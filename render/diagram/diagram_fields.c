@@ -11,7 +11,7 @@
 #include "diagram/diagram_int.h"
 
 /* "C : K" (MC when a port is modulated), or the field's label. */
-static char *field_markup(bg_diagram *d, int f) {
+static char *field_markup(bg_diagram_layout *d, int f) {
   const bg_model *m = d->m;
   int p1 = m->field_elemadr[f], mod = 0;
   for (int k = 0; k < m->field_nport[f]; k++) mod |= m->elem_modulated[p1 + k];
@@ -27,7 +27,7 @@ static char *field_markup(bg_diagram *d, int f) {
   return s;
 }
 
-void bg_fields_prepare(bg_diagram *d) {
+void bg_fields_prepare(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   if (!m->nfield) return;
   d->rep = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof *d->rep);
@@ -56,9 +56,9 @@ struct bg_fields_lay {
   unsigned char *root;
 };
 
-static int lay_node(const bg_diagram *d, const bg_fields_lay *L, int n) { return L->vis[d->rep[n]]; }
+static int lay_node(const bg_diagram_layout *d, const bg_fields_lay *L, int n) { return L->vis[d->rep[n]]; }
 
-bg_fields_lay *bg_fields_compact(const bg_diagram *d, bg_layout_in *in) {
+bg_fields_lay *bg_fields_compact(const bg_diagram_layout *d, bg_layout_in *in) {
   if (!d->rep) return NULL;
   bg_fields_lay *L = calloc(1, sizeof *L);
   int nn = in->nnode;
@@ -91,7 +91,7 @@ bg_fields_lay *bg_fields_compact(const bg_diagram *d, bg_layout_in *in) {
 }
 
 /* The laid-out positions back on every node: a hidden port where its field is. */
-void bg_fields_expand(bg_diagram *d, bg_fields_lay *L) {
+void bg_fields_expand(bg_diagram_layout *d, bg_fields_lay *L) {
   if (!L) return;
   bg_layout *lay = &d->lay;
   if (!lay->x) lay->nnode = L->n; /* the layout failed: nothing to move */
@@ -120,7 +120,7 @@ void bg_draw_field_ports(bg_diagram *d) {
     for (int k = 0; k < m->field_nport[f]; k++) {
       int pe = m->field_elemadr[f] + k, b = bg_elem_port_bond(m, pe);
       if (b < 0) continue;
-      const bg_bond_geom *g = &d->bg[b];
+      const bg_bond_geom *g = &d->L->bg[b];
       int at_tail = m->bond_tail[b] == pe;
       bg_vec end = at_tail ? g->tail : g->head, out = at_tail ? g->tdir : bg_vscale(g->hdir, -1);
       bg_vec side = bg_vleft(out);

@@ -13,14 +13,14 @@
 enum { FRAME_PAD = 6 };
 
 /* The frames' label height, which the layout keeps free above the nodes. */
-double bg_frame_label_height(const bg_diagram *d) { return 1.3 * 0.85 * d->st.font_size; }
+double bg_frame_label_height(const bg_diagram_layout *d) { return 1.3 * 0.85 * d->st.font_size; }
 
 typedef struct box { double x0, y0, x1, y1; } box;
 
 static void grow(box *b, int k, const bg_diagram *d, int n) {
   if (k < 0) return;
-  b[k].x0 = fmin(b[k].x0, d->nx[n] - d->nw[n] / 2), b[k].x1 = fmax(b[k].x1, d->nx[n] + d->nw[n] / 2);
-  b[k].y0 = fmin(b[k].y0, d->ny[n] - d->nh[n] / 2), b[k].y1 = fmax(b[k].y1, d->ny[n] + d->nh[n] / 2);
+  b[k].x0 = fmin(b[k].x0, d->L->nx[n] - d->L->nw[n] / 2), b[k].x1 = fmax(b[k].x1, d->L->nx[n] + d->L->nw[n] / 2);
+  b[k].y0 = fmin(b[k].y0, d->L->ny[n] - d->L->nh[n] / 2), b[k].y1 = fmax(b[k].y1, d->L->ny[n] + d->L->nh[n] / 2);
 }
 
 /* Boxes of every instance: its nodes, then (children after parents in the
@@ -31,12 +31,12 @@ static box *instance_boxes(const bg_diagram *d) {
   for (int k = 0; k < m->ninst; k++) b[k] = (box){INFINITY, INFINITY, -INFINITY, -INFINITY};
   /* an element, a collapsed child's box, a detector: in its instance's frame */
   for (int e = 0; e < m->nelem; e++)
-    if (bg_node_shown(d, e)) grow(&b[0], m->elem_inst[e], d, e);
+    if (bg_node_shown(d->L, e)) grow(&b[0], m->elem_inst[e], d, e);
   for (int i = 0; i < m->ninst; i++)
-    if (d->inst_box[i] >= 0) grow(&b[0], m->inst_parent[i], d, d->inst_box[i]);
+    if (d->L->inst_box[i] >= 0) grow(&b[0], m->inst_parent[i], d, d->L->inst_box[i]);
   for (int i = 0; i < m->ndet; i++)
-    if (d->det_draw[i] >= 0) grow(&b[0], m->elem_inst[m->det_node[i]], d, d->det_draw[i]);
-  double lh = bg_frame_label_height(d);
+    if (d->L->det_draw[i] >= 0) grow(&b[0], m->elem_inst[m->det_node[i]], d, d->L->det_draw[i]);
+  double lh = bg_frame_label_height(d->L);
   for (int k = m->ninst - 1; k >= 0; k--) {
     if (!(b[k].x0 <= b[k].x1)) continue; /* no element at all */
     b[k].x0 -= FRAME_PAD, b[k].x1 += FRAME_PAD, b[k].y1 += FRAME_PAD;

@@ -3,24 +3,24 @@
 
 #include "diagram/diagram_int.h"
 
-static bg_vec node_centre(const bg_diagram *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
+static bg_vec node_centre(const bg_diagram_layout *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
 
 /* The i-th point of bond b's route: its tail node's centre, the corners,
  * its head node's centre (i = 0 .. bendn + 1). */
-static bg_vec route_pt(const bg_diagram *d, int b, int i) {
+static bg_vec route_pt(const bg_diagram_layout *d, int b, int i) {
   const bg_bond_geom *g = &d->bg[b];
   if (i == 0) return node_centre(d, d->node_of[d->m->bond_tail[b]]);
   if (i > g->bendn) return node_centre(d, d->node_of[d->m->bond_head[b]]);
   return bg_v(d->lay.bendx[g->bendadr + i - 1], d->lay.bendy[g->bendadr + i - 1]);
 }
 
-bg_vec bg_node_end(const bg_diagram *d, int n, bg_vec dir) {
+bg_vec bg_node_end(const bg_diagram_layout *d, int n, bg_vec dir) {
   bg_vec c = node_centre(d, n);
   if (d->jr && d->jr[n] > 0) return bg_vadd(c, bg_vscale(dir, d->jr[n]));
   return bg_box_exit(c, d->nw[n] / 2, d->nh[n] / 2, bg_vadd(c, bg_vscale(dir, 1e4)));
 }
 
-static void route_geom(const bg_diagram *d, int b, bg_bond_geom *g) {
+static void route_geom(const bg_diagram_layout *d, int b, bg_bond_geom *g) {
   /* a bond through a port of a collapsed instance ends on its box */
   int t = d->node_of[d->m->bond_tail[b]], h = d->node_of[d->m->bond_head[b]], n = g->bendn;
   g->tdir = bg_vunit(bg_vsub(route_pt(d, b, 1), route_pt(d, b, 0)));
@@ -31,7 +31,7 @@ static void route_geom(const bg_diagram *d, int b, bg_bond_geom *g) {
   g->mid = bg_geom_along(d, b, 0.5, &g->mdir);
 }
 
-bg_vec bg_geom_along(const bg_diagram *d, int b, double t, bg_vec *dir) {
+bg_vec bg_geom_along(const bg_diagram_layout *d, int b, double t, bg_vec *dir) {
   const bg_bond_geom *g = &d->bg[b];
   int n = g->bendn;
   double len = 0, want;
@@ -52,7 +52,7 @@ bg_vec bg_geom_along(const bg_diagram *d, int b, double t, bg_vec *dir) {
   return g->mid;
 }
 
-void bg_geom_longest_leg(const bg_diagram *d, int b, bg_vec *p, bg_vec *q) {
+void bg_geom_longest_leg(const bg_diagram_layout *d, int b, bg_vec *p, bg_vec *q) {
   const bg_bond_geom *g = &d->bg[b];
   double best = -1;
   for (int i = 0; i <= g->bendn; i++) {
@@ -62,7 +62,7 @@ void bg_geom_longest_leg(const bg_diagram *d, int b, bg_vec *p, bg_vec *q) {
 }
 
 /* Direction in which edge (bond or Sf* bond) k leaves node n. */
-static bg_vec leave_dir(const bg_diagram *d, int b, int n) {
+static bg_vec leave_dir(const bg_diagram_layout *d, int b, int n) {
   const bg_bond_geom *g = &d->bg[b];
   return d->m->bond_tail[b] == n ? g->tdir : bg_vscale(g->hdir, -1);
 }
@@ -72,7 +72,7 @@ static bg_vec leave_dir(const bg_diagram *d, int b, int n) {
  * by half a line width: r sin(a) >= (4.5 cos(a) + 2) w for the smallest
  * angle a between two bonds at the junction (capped: a tiny angle cannot
  * be cured by distance). */
-static void junction_radii(bg_diagram *d) {
+static void junction_radii(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   d->jr = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(double));
   double w = d->st.line_width;
@@ -90,7 +90,7 @@ static void junction_radii(bg_diagram *d) {
   }
 }
 
-static bg_vec spl_pt(const bg_diagram *d, int i) { return bg_v(d->splx[i], d->sply[i]); }
+static bg_vec spl_pt(const bg_diagram_layout *d, int i) { return bg_v(d->splx[i], d->sply[i]); }
 
 /* Point and derivative of one cubic piece at t. */
 static void bezier_eval(const bg_vec p[4], double t, bg_vec *pt, bg_vec *dt) {
@@ -101,7 +101,7 @@ static void bezier_eval(const bg_vec p[4], double t, bg_vec *pt, bg_vec *dt) {
   dt->y = 3 * u * u * (p[1].y - p[0].y) + 6 * u * t * (p[2].y - p[1].y) + 3 * t * t * (p[3].y - p[2].y);
 }
 
-static void spline_geom(const bg_diagram *d, int adr, int n, bg_bond_geom *g) {
+static void spline_geom(const bg_diagram_layout *d, int adr, int n, bg_bond_geom *g) {
   g->spladr = adr, g->spln = n;
   g->tail = spl_pt(d, adr);
   g->head = spl_pt(d, adr + n - 1);
@@ -114,7 +114,7 @@ static void spline_geom(const bg_diagram *d, int adr, int n, bg_bond_geom *g) {
   g->mdir = bg_vlen(dt) > 1e-9 ? bg_vunit(dt) : bg_vunit(bg_vsub(g->head, g->tail));
 }
 
-void bg_geom_bonds(bg_diagram *d) {
+void bg_geom_bonds(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   d->jr = NULL;
   for (int pass = 0; pass < 2; pass++) {
@@ -132,9 +132,9 @@ void bg_geom_bonds(bg_diagram *d) {
   }
 }
 
-bg_vec bg_barb_side(const bg_diagram *d, int b) { return bg_barb_side_at(d, d->bg[b].hdir); }
+bg_vec bg_barb_side(const bg_diagram_layout *d, int b) { return bg_barb_side_at(d, d->bg[b].hdir); }
 
-bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir) {
+bg_vec bg_barb_side_at(const bg_diagram_layout *d, bg_vec dir) {
   bg_vec left = bg_vleft(dir);
   if (d->st.harpoon == BG_HARPOON_LEFT) return left;
   /* "down": below horizontal bonds, right of vertical ones (y grows downwards) */
@@ -142,9 +142,8 @@ bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir) {
   return left.x > 0 ? left : bg_vscale(left, -1);
 }
 
-void bg_geom_bond_path(const bg_diagram *d, int b) {
+void bg_geom_bond_path(const bg_diagram_layout *d, bg_scene *s, int b) {
   const bg_bond_geom *g = &d->bg[b];
-  bg_scene *s = (bg_scene *)&d->scene;
   bg_scene_move(s, g->tail.x, g->tail.y);
   if (!g->spln) {
     for (int i = 1; i <= g->bendn; i++) {
@@ -172,7 +171,7 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
 }
 
 /* ---------------------------------------------------------------- conflicts */
-bg_vec bg_free_direction(const bg_diagram *d, int j) {
+bg_vec bg_free_direction(const bg_diagram_layout *d, int j) {
   const bg_model *m = d->m;
   bg_vec c = bg_v(d->nx[j], d->ny[j]), best = bg_v(BG_SQRT1_2, -BG_SQRT1_2);
   double best_gap = -1;

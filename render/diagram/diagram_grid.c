@@ -25,7 +25,7 @@
 enum { SIDE_R = 1, SIDE_U = 2, SIDE_L = 4, SIDE_D = 8 };
 
 typedef struct grid {
-  bg_diagram *d;
+  bg_diagram_layout *d;
   int n, ne;          /* nodes; edges (bonds, then Sf* → junction) */
   int *et, *eh;       /* edge ends */
   int *adr, *adj;     /* node → incident edges (CSR) */
@@ -373,7 +373,7 @@ static const int side_dx[4] = {1, 0, -1, 0}, side_dy[4] = {0, -1, 0, 1}; /* R U 
 /* How far (radians) side k is from where dot put leaf w around hub v; a
  * source prefers the left, where textbooks start the chain. */
 static double side_cost(const grid *g, int v, int w, int k) {
-  const bg_diagram *d = g->d;
+  const bg_diagram_layout *d = g->d;
   double ang = atan2(d->ny[w] - d->ny[v], d->nx[w] - d->nx[v]);
   double dif = fabs(remainder(ang - atan2(side_dy[k], side_dx[k]), 2 * BG_PI));
   int source = w < d->m->nelem && bg_elem_is_source(d->m->elem_kind[w]);
@@ -454,7 +454,7 @@ static void place_leaves(grid *g) {
 /* The node a float sits beside: for a user-state integrator the element
  * its first signal modulates, else the placed node dot put nearest. */
 static int float_anchor(const grid *g, int v) {
-  const bg_diagram *d = g->d;
+  const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
   for (int k = 0; k < m->ndet; k++) /* a detector beside the node it reads */
     if (d->det_draw[k] == v && g->placed[bg_detector_anchor(d, k)]) return bg_detector_anchor(d, k);
@@ -515,7 +515,7 @@ static void range(const grid *g, const int *cell, int *lo, int *hi) {
 /* Room for the path and loop lines a bond carries on one side when those
  * layers are shown (at most six counted), so numbers fit beyond them. */
 static double layer_band(const grid *g) {
-  const bg_diagram *d = g->d;
+  const bg_diagram_layout *d = g->d;
   const bg_analysis *a = d->a;
   unsigned show = d->show;
   if (d->o.layer_room > 0) show |= BG_SHOW_PATHS | BG_SHOW_LOOPS;
@@ -533,7 +533,7 @@ static double layer_band(const grid *g) {
 
 /* Node centres and bond corners in points; the layout's box. */
 static void to_points(grid *g) {
-  bg_diagram *d = g->d;
+  bg_diagram_layout *d = g->d;
   int x0, x1, y0, y1;
   range(g, g->gx, &x0, &x1);
   range(g, g->gy, &y0, &y1);
@@ -571,7 +571,7 @@ static void to_points(grid *g) {
 }
 
 /* ---------------------------------------------------------------- the pass */
-static void grid_alloc(grid *g, bg_diagram *d) {
+static void grid_alloc(grid *g, bg_diagram_layout *d) {
   memset(g, 0, sizeof *g);
   g->d = d, g->n = d->nnode;
   build_edges(g);
@@ -591,7 +591,7 @@ static void grid_free(grid *g) {
   free(g->key), free(g->val);
 }
 
-void bg_grid_place(bg_diagram *d) {
+void bg_grid_place(bg_diagram_layout *d) {
   if (d->nnode == 0) return; /* an empty model: nothing to place, and no line range */
   grid g;
   grid_alloc(&g, d);

@@ -25,11 +25,17 @@ typedef struct bg_bond_geom {
   int bendadr, bendn;  /* else the corners of its route (lay.bendx/y), bendn 0: straight */
 } bg_bond_geom;
 
-struct bg_diagram {
+/* The layout result: fixed once laid out (nodes measured, Graphviz or
+ * rows, the grid pass, where each bond runs). Every drawing of it reads it
+ * and none writes: bg_diagram_redraw shares its source's (counted by refs,
+ * so either may be freed first). The layout stage's functions take it
+ * writable; the passes see it through bg_diagram.L, const. */
+typedef struct bg_diagram_layout {
+  int refs;
   const bg_model *m;
   const bg_analysis *a; /* nullable */
-  bg_render_opts o;
-  unsigned show;
+  bg_render_opts o;     /* as built (collapse, engine, verbose); names not kept after the build */
+  unsigned show;        /* its labels and signals bits decide the nodes */
   bg_style st;
   /* nodes: the model's elements, then one per Lagrange flow source attached to a junction */
   int nnode;
@@ -52,6 +58,18 @@ struct bg_diagram {
   double *splx, *sply;       /* spline points moved onto the page */
   bg_bond_geom *bg;          /* per bond */
   double *jr;                /* per node: radius of a junction's end circle, else 0 */
+  bg_arena arena;
+} bg_diagram_layout;
+
+/* One drawing: the scene of a layout with some layers and a highlight. */
+struct bg_diagram {
+  const bg_model *m;
+  const bg_analysis *a; /* nullable */
+  bg_render_opts o;
+  unsigned show;
+  bg_style st;
+  const bg_diagram_layout *L; /* read only */
+  bg_diagram_layout *held;    /* the same, for the reference count (diagram.c alone) */
   unsigned char *hot_bond, *hot_elem; /* highlight: what stays in colour */
   int *side_use;             /* per bond side: layers already drawn there */
   int *side_total, *side_home; /* per bond side: layers drawn there in all, the one that runs
@@ -101,11 +119,11 @@ int bg_signal_state(const bg_model *m, int i);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */
 int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
 /* Whether node n is drawn (not an element hidden in a collapsed box). */
-int bg_node_shown(const bg_diagram *d, int n);
+int bg_node_shown(const bg_diagram_layout *d, int n);
 /* The node a detector's node is anchored to in the layout (its det_node as drawn). */
-int bg_detector_anchor(const bg_diagram *d, int k);
+int bg_detector_anchor(const bg_diagram_layout *d, int k);
 /* A field's port drawn by its field's node. */
-int bg_fields_hidden(const bg_diagram *d, int n);
+int bg_fields_hidden(const bg_diagram_layout *d, int n);
 
 /* ---- words (diagram_words.c): calls nothing of the diagram */
 /* A name as markup: its trailing digits (or what follows the
@@ -120,26 +138,26 @@ void bg_gain_markup(const char *gain, double size, bg_strbuf *out);
 void bg_layer_describe(const bg_diagram *d, int kind, int i, int markup, bg_strbuf *out);
 
 /* geometry (diagram_geom.c) */
-void bg_geom_bonds(bg_diagram *d);
+void bg_geom_bonds(bg_diagram_layout *d);
 /* Where a bond leaving node n's centre in direction dir stops: on a
  * junction's end circle, else on the node's box. */
-bg_vec bg_node_end(const bg_diagram *d, int n, bg_vec dir);
+bg_vec bg_node_end(const bg_diagram_layout *d, int n, bg_vec dir);
 /* The point a fraction t of the way along bond b (its route's length), and
  * the direction of travel there (dir nullable). */
-bg_vec bg_geom_along(const bg_diagram *d, int b, double t, bg_vec *dir);
+bg_vec bg_geom_along(const bg_diagram_layout *d, int b, double t, bg_vec *dir);
 /* The ends of bond b's longest leg (the whole bond when it is straight). */
-void bg_geom_longest_leg(const bg_diagram *d, int b, bg_vec *p, bg_vec *q);
+void bg_geom_longest_leg(const bg_diagram_layout *d, int b, bg_vec *p, bg_vec *q);
 /* The grid placement pass (diagram_grid.c): node centres and bond routes. */
-void bg_grid_place(bg_diagram *d);
+void bg_grid_place(bg_diagram_layout *d);
 /* The side of the barb at the head of bond b: a unit normal. */
-bg_vec bg_barb_side(const bg_diagram *d, int b);
+bg_vec bg_barb_side(const bg_diagram_layout *d, int b);
 /* The barb's side for travel in direction dir (a bent bond's numbers use
  * the direction of the leg they are beside). */
-bg_vec bg_barb_side_at(const bg_diagram *d, bg_vec dir);
-/* Draws the bond's centre line as the current item's path. */
-void bg_geom_bond_path(const bg_diagram *d, int b);
+bg_vec bg_barb_side_at(const bg_diagram_layout *d, bg_vec dir);
+/* Draws the bond's centre line as the current item's path of scene s. */
+void bg_geom_bond_path(const bg_diagram_layout *d, bg_scene *s, int b);
 /* The direction (of 8) around node n farthest in angle from its bonds. */
-bg_vec bg_free_direction(const bg_diagram *d, int n);
+bg_vec bg_free_direction(const bg_diagram_layout *d, int n);
 /* Filled arrowhead with its tip at p, pointing along dir. */
 void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid);
 
@@ -192,27 +210,27 @@ void bg_draw_legend(bg_diagram *d);
 /* detectors and collapsed instances (diagram_parts.c) */
 /* Validates --collapse (unknown names: an error with a suggestion) and
  * appends the detector and box nodes from d->nnode on. */
-int bg_parts_nodes(bg_diagram *d, bg_diags *dg);
+int bg_parts_nodes(bg_diagram_layout *d, bg_diags *dg);
 /* Labels of detector and box nodes (markup, in the arena). */
-void bg_parts_labels(bg_diagram *d);
+void bg_parts_labels(bg_diagram_layout *d);
 /* After the layout: hidden nodes take their box's centre and size. */
-void bg_parts_spread(bg_diagram *d);
+void bg_parts_spread(bg_diagram_layout *d);
 /* bg_layout_run with each collapsed instance laid out as its box alone. */
-int bg_parts_layout(const bg_diagram *d, const bg_layout_in *in, bg_layout *out, char *err,
+int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layout *out, char *err,
                     size_t errn);
 /* Boxes and detectors with their activated bonds. */
 void bg_draw_parts(bg_diagram *d);
 /* instance frames (diagram_frames.c): one labelled box per submodel instance */
-double bg_frame_label_height(const bg_diagram *d);
+double bg_frame_label_height(const bg_diagram_layout *d);
 void bg_draw_frames(bg_diagram *d);
 
 /* multiport fields (diagram_fields.c): one node per field, ports labelled */
 typedef struct bg_fields_lay bg_fields_lay;
-void bg_fields_prepare(bg_diagram *d);            /* after the nodes are measured */
+void bg_fields_prepare(bg_diagram_layout *d);            /* after the nodes are measured */
 /* Leaves the hidden ports out of the layout input (NULL: nothing to do), and
  * gives them their field's position after it (frees what compact made). */
-bg_fields_lay *bg_fields_compact(const bg_diagram *d, bg_layout_in *in);
-void bg_fields_expand(bg_diagram *d, bg_fields_lay *L);
+bg_fields_lay *bg_fields_compact(const bg_diagram_layout *d, bg_layout_in *in);
+void bg_fields_expand(bg_diagram_layout *d, bg_fields_lay *L);
 void bg_draw_field_ports(bg_diagram *d);
 
 /* DOT output (diagram_dot.c) */

@@ -33,22 +33,22 @@ typedef struct joint {
 } joint;
 
 static bg_vec centre(const bg_diagram *d, int n) {
-  if (n >= d->nnode) return bg_v(d->lay.bendx[n - d->nnode], d->lay.bendy[n - d->nnode]);
-  return bg_v(d->nx[n], d->ny[n]);
+  if (n >= d->L->nnode) return bg_v(d->L->lay.bendx[n - d->L->nnode], d->L->lay.bendy[n - d->L->nnode]);
+  return bg_v(d->L->nx[n], d->L->ny[n]);
 }
 
 /* The segments split at the corners of bent bonds, each leg a segment of
  * its own (the corners joined like junctions: mitred or rounded). */
 static seg *split_bends(const bg_diagram *d, seg *s, int *n) {
   int total = 0;
-  for (int k = 0; k < *n; k++) total += 1 + d->bg[s[k].b].bendn;
+  for (int k = 0; k < *n; k++) total += 1 + d->L->bg[s[k].b].bendn;
   seg *out = bg_xcalloc((size_t)total + 1, sizeof *out);
   int m = 0;
   for (int k = 0; k < *n; k++) {
-    const bg_bond_geom *g = &d->bg[s[k].b];
-    int nb = g->bendn, fwd = s[k].u == d->node_of[d->m->bond_tail[s[k].b]], prev = s[k].u;
+    const bg_bond_geom *g = &d->L->bg[s[k].b];
+    int nb = g->bendn, fwd = s[k].u == d->L->node_of[d->m->bond_tail[s[k].b]], prev = s[k].u;
     for (int i = 0; i < nb; i++) {
-      int c = d->nnode + g->bendadr + (fwd ? i : nb - 1 - i);
+      int c = d->L->nnode + g->bendadr + (fwd ? i : nb - 1 - i);
       out[m] = s[k], out[m].fwd = fwd, out[m].u = prev, out[m].v = c, prev = c, m++;
     }
     out[m] = s[k], out[m].fwd = fwd, out[m].u = prev, m++;
@@ -64,8 +64,8 @@ static seg *split_bends(const bg_diagram *d, seg *s, int *n) {
 static int visible_segs(const bg_diagram *d, seg *s, int n) {
   int m = 0;
   for (int k = 0; k < n; k++) {
-    if (d->bond_hidden[s[k].b]) continue;
-    s[m] = s[k], s[m].u = d->node_of[s[k].u], s[m].v = d->node_of[s[k].v], m++;
+    if (d->L->bond_hidden[s[k].b]) continue;
+    s[m] = s[k], s[m].u = d->L->node_of[s[k].u], s[m].v = d->L->node_of[s[k].v], m++;
   }
   return m;
 }
@@ -109,7 +109,7 @@ static double cross(bg_vec a, bg_vec b) { return a.x * b.y - a.y * b.x; }
  * to t's (the way back, on the other side; its own rank there). */
 static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
-  bg_vec e = bg_box_exit(centre(d, v), d->nw[v] / 2, d->nh[v] / 2, centre(d, s->u));
+  bg_vec e = bg_box_exit(centre(d, v), d->L->nw[v] / 2, d->L->nh[v] / 2, centre(d, s->u));
   bg_vec base = bg_vsub(e, bg_vscale(s->dir, fmax(s->off, t->off) + 1));
   joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
   j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, 4.0 / 3 * s->off));
@@ -121,7 +121,7 @@ static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
  * a non-junction, grown by 2, at the segment's offset. */
 static bg_vec beside_node(const bg_diagram *d, const seg *s, int v, int other) {
   bg_vec c = centre(d, v);
-  double hw = d->nw[v] / 2 + 2, hh = d->nh[v] / 2 + 2;
+  double hw = d->L->nw[v] / 2 + 2, hh = d->L->nh[v] / 2 + 2;
   return bg_vadd(bg_box_exit(c, hw, hh, centre(d, other)), bg_vscale(s->n, s->off));
 }
 
@@ -142,8 +142,8 @@ static double label_perimeter_at(const double *b, bg_vec p) {
  * goes round the label's box (grown by 2, and to hold both ends)
  * clockwise, which keeps the node on its right, as the bond it follows. */
 static void round_label(const bg_diagram *d, int v, joint *j) {
-  double b[4] = {d->nx[v] - d->nw[v] / 2 - 2, d->ny[v] - d->nh[v] / 2 - 2, d->nx[v] + d->nw[v] / 2 + 2,
-                 d->ny[v] + d->nh[v] / 2 + 2};
+  double b[4] = {d->L->nx[v] - d->L->nw[v] / 2 - 2, d->L->ny[v] - d->L->nh[v] / 2 - 2, d->L->nx[v] + d->L->nw[v] / 2 + 2,
+                 d->L->ny[v] + d->L->nh[v] / 2 + 2};
   for (int k = 0; k < 2; k++) {
     bg_vec p = k ? j->p1 : j->p0;
     b[0] = fmin(b[0], p.x), b[1] = fmin(b[1], p.y), b[2] = fmax(b[2], p.x), b[3] = fmax(b[3], p.y);
@@ -170,15 +170,15 @@ static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b)
   for (int k = 1; k < 4; k++)
     x0 = fmin(x0, c[k].x), x1 = fmax(x1, c[k].x), y0 = fmin(y0, c[k].y), y1 = fmax(y1, c[k].y);
   int hits = 0;
-  for (int n = 0; n < d->nnode; n++) {
-    if (n == a || n == b || d->node_of[n] != n || d->nx[n] + d->nw[n] / 2 < x0 || d->nx[n] - d->nw[n] / 2 > x1 ||
-        d->ny[n] + d->nh[n] / 2 < y0 || d->ny[n] - d->nh[n] / 2 > y1)
+  for (int n = 0; n < d->L->nnode; n++) {
+    if (n == a || n == b || d->L->node_of[n] != n || d->L->nx[n] + d->L->nw[n] / 2 < x0 || d->L->nx[n] - d->L->nw[n] / 2 > x1 ||
+        d->L->ny[n] + d->L->nh[n] / 2 < y0 || d->L->ny[n] - d->L->nh[n] / 2 > y1)
       continue;
     for (int k = 1; k < 24; k++) {
       double t = k / 24.0, u = 1 - t;
       bg_vec p = bg_vadd(bg_vadd(bg_vscale(c[0], u * u * u), bg_vscale(c[1], 3 * u * u * t)),
                          bg_vadd(bg_vscale(c[2], 3 * u * t * t), bg_vscale(c[3], t * t * t)));
-      hits += fabs(p.x - d->nx[n]) < d->nw[n] / 2 && fabs(p.y - d->ny[n]) < d->nh[n] / 2;
+      hits += fabs(p.x - d->L->nx[n]) < d->L->nw[n] / 2 && fabs(p.y - d->L->ny[n]) < d->L->nh[n] / 2;
     }
   }
   return hits;
@@ -233,8 +233,8 @@ static double perimeter_at(const double r[4], bg_vec p, bg_vec *on) {
 static joint around_box(const bg_diagram *d, const seg *s, const seg *t, joint j) {
   int v = s->v;
   double g = 2 + fmax(s->off, t->off);
-  double r[4] = {d->nx[v] - d->nw[v] / 2 - g, d->ny[v] - d->nh[v] / 2 - g,
-                 d->nx[v] + d->nw[v] / 2 + g, d->ny[v] + d->nh[v] / 2 + g};
+  double r[4] = {d->L->nx[v] - d->L->nw[v] / 2 - g, d->L->ny[v] - d->L->nh[v] / 2 - g,
+                 d->L->nx[v] + d->L->nw[v] / 2 + g, d->L->ny[v] + d->L->nh[v] / 2 + g};
   double w = r[2] - r[0], h = r[3] - r[1], per = 2 * (w + h);
   const double at[4] = {0, w, w + h, 2 * w + h};
   const bg_vec c[4] = {{r[0], r[1]}, {r[2], r[1]}, {r[2], r[3]}, {r[0], r[3]}};
@@ -265,7 +265,7 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
     /* keep off the label: leave and re-enter at the box, around it */
     j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
-    if (d->box_inst && d->box_inst[v] >= 0) return around_box(d, s, t, j);
+    if (d->L->box_inst && d->L->box_inst[v] >= 0) return around_box(d, s, t, j);
     round_label(d, v, &j);
     return j;
   }

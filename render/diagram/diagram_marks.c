@@ -21,10 +21,10 @@ static void flash_path(bg_scene *s, bg_vec p, double size) {
 static void draw_conflict(bg_diagram *d, int k) {
   const bg_analysis *a = d->a;
   const bg_style *st = &d->st;
-  int j = d->node_of[a->conflict_node[k]]; /* at the box of a collapsed instance */
+  int j = d->L->node_of[a->conflict_node[k]]; /* at the box of a collapsed instance */
   int hot = !d->o.highlight_kind || (d->o.highlight_kind == 'c' && d->o.highlight_index == k + 1);
-  bg_vec dir = bg_free_direction(d, j), c = bg_v(d->nx[j], d->ny[j]);
-  double r = fmax(d->nw[j], d->nh[j]) / 2 + 8;
+  bg_vec dir = bg_free_direction(d->L, j), c = bg_v(d->L->nx[j], d->L->ny[j]);
+  double r = fmax(d->L->nw[j], d->L->nh[j]) / 2 + 8;
   bg_vec p = bg_vadd(c, bg_vscale(dir, r));
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "flash conflict=%d", k + 1);
   it->fill = bg_diagram_ink(d, st->conflict, hot);

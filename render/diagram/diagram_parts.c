@@ -40,7 +40,7 @@ static void unknown_instance(const bg_model *m, const char *name, bg_diags *dg) 
 }
 
 /* Marks the instances named by --collapse; -1 after an unknown name. */
-static int mark_collapsed(const bg_diagram *d, unsigned char *on, bg_diags *dg) {
+static int mark_collapsed(const bg_diagram_layout *d, unsigned char *on, bg_diags *dg) {
   const bg_model *m = d->m;
   int bad = 0;
   for (int i = 0; i < d->o.ncollapse; i++) {
@@ -57,7 +57,7 @@ static int mark_collapsed(const bg_diagram *d, unsigned char *on, bg_diags *dg) 
 }
 
 /* ---------------------------------------------------------------- nodes */
-int bg_parts_nodes(bg_diagram *d, bg_diags *dg) {
+int bg_parts_nodes(bg_diagram_layout *d, bg_diags *dg) {
   const bg_model *m = d->m;
   unsigned char *on = bg_xcalloc((size_t)m->ninst + 1, 1);
   if (mark_collapsed(d, on, dg) != 0) {
@@ -95,7 +95,7 @@ int bg_parts_nodes(bg_diagram *d, bg_diags *dg) {
   return 0;
 }
 
-void bg_parts_labels(bg_diagram *d) {
+void bg_parts_labels(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};
   for (int k = 0; k < m->ninst; k++) {
@@ -120,7 +120,7 @@ void bg_parts_labels(bg_diagram *d) {
 }
 
 /* A box is wider than its label alone, so several bonds fit along its sides. */
-void bg_parts_spread(bg_diagram *d) {
+void bg_parts_spread(bg_diagram_layout *d) {
   for (int n = 0; n < d->nnode; n++) {
     int to = d->node_of[n];
     if (to == n) continue;
@@ -131,9 +131,9 @@ void bg_parts_spread(bg_diagram *d) {
 
 /* ---------------------------------------------------------------- drawing */
 static void draw_box(bg_diagram *d, int k) {
-  int n = d->inst_box[k];
-  double x0 = d->nx[n] - d->nw[n] / 2, x1 = d->nx[n] + d->nw[n] / 2;
-  double y0 = d->ny[n] - d->nh[n] / 2, y1 = d->ny[n] + d->nh[n] / 2;
+  int n = d->L->inst_box[k];
+  double x0 = d->L->nx[n] - d->L->nw[n] / 2, x1 = d->L->nx[n] + d->L->nw[n] / 2;
+  double y0 = d->L->ny[n] - d->L->nh[n] / 2, y1 = d->L->ny[n] + d->L->nh[n] / 2;
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "box %s", d->m->inst_name[k]);
   it->color = bg_diagram_ink(d, d->st.fg, d->hot_elem[n]);
   it->width = d->st.line_width;
@@ -144,7 +144,7 @@ static void draw_box(bg_diagram *d, int k) {
   bg_scene_close(&d->scene);
   char role[256];
   snprintf(role, sizeof role, "box-label %s", d->m->inst_name[k]);
-  bg_scene_text(&d->scene, d->nlabel[n], d->nx[n], d->ny[n], d->st.font_size, 0.5, 0.5,
+  bg_scene_text(&d->scene, d->L->nlabel[n], d->L->nx[n], d->L->ny[n], d->st.font_size, 0.5, 0.5,
                 bg_diagram_ink(d, d->st.fg, d->hot_elem[n]), role);
 }
 
@@ -152,10 +152,10 @@ static void draw_box(bg_diagram *d, int k) {
  * full arrowhead at the detector (the signal it passes on), no half arrow. */
 static void draw_detector(bg_diagram *d, int k) {
   const bg_model *m = d->m;
-  int n = d->det_draw[k], a = bg_detector_anchor(d, k);
-  bg_vec cn = bg_v(d->nx[n], d->ny[n]), ca = bg_v(d->nx[a], d->ny[a]);
-  bg_vec p = bg_node_end(d, a, bg_vunit(bg_vsub(cn, ca)));
-  bg_vec q = bg_box_exit(cn, d->nw[n] / 2, d->nh[n] / 2, ca);
+  int n = d->L->det_draw[k], a = bg_detector_anchor(d->L, k);
+  bg_vec cn = bg_v(d->L->nx[n], d->L->ny[n]), ca = bg_v(d->L->nx[a], d->L->ny[a]);
+  bg_vec p = bg_node_end(d->L, a, bg_vunit(bg_vsub(cn, ca)));
+  bg_vec q = bg_box_exit(cn, d->L->nw[n] / 2, d->L->nh[n] / 2, ca);
   bg_vec dir = bg_vunit(bg_vsub(q, p));
   bg_rgba ink = bg_diagram_ink(d, d->st.fg, d->hot_elem[a]);
   double len = 7 * d->st.line_width;
@@ -170,14 +170,14 @@ static void draw_detector(bg_diagram *d, int k) {
   bg_geom_arrowhead(&d->scene, q, dir, len, 0.75 * len);
   char role[256];
   snprintf(role, sizeof role, "detector %s", m->det_name[k]);
-  bg_scene_text(&d->scene, d->nlabel[n], cn.x, cn.y, d->st.font_size, 0.5, 0.5, ink, role);
+  bg_scene_text(&d->scene, d->L->nlabel[n], cn.x, cn.y, d->st.font_size, 0.5, 0.5, ink, role);
 }
 
 void bg_draw_parts(bg_diagram *d) {
   for (int k = 0; k < d->m->ninst; k++)
-    if (d->inst_box[k] >= 0) draw_box(d, k);
+    if (d->L->inst_box[k] >= 0) draw_box(d, k);
   for (int k = 0; k < d->m->ndet; k++)
-    if (d->det_draw[k] >= 0) draw_detector(d, k);
+    if (d->L->det_draw[k] >= 0) draw_detector(d, k);
 }
 
 /* ---------------------------------------------------------------- layout */
@@ -222,7 +222,7 @@ static void expand(const bg_layout_in *in, const compact *c, bg_layout *out) {
 /* Lays out the graph with every collapsed instance as its box alone: the
  * hidden elements and the bonds inside boxes are left out (their edges join
  * a box to itself). Without boxes, the layout of `in` as it is. */
-int bg_parts_layout(const bg_diagram *d, const bg_layout_in *in, bg_layout *out, char *err,
+int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layout *out, char *err,
                     size_t errn) {
   if (!d->ncollapsed) return bg_layout_run(in, out, err, errn);
   compact c = {bg_xcalloc((size_t)in->nnode + 1, sizeof(int)),

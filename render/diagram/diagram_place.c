@@ -263,9 +263,9 @@ int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) 
 }
 
 void bg_obstacle_nodes(bg_diagram *d) {
-  for (int i = 0; i < d->nnode; i++)
-    bg_obstacle_rect(d, d->nx[i] - d->nw[i] / 2, d->ny[i] - d->nh[i] / 2, d->nx[i] + d->nw[i] / 2,
-                     d->ny[i] + d->nh[i] / 2);
+  for (int i = 0; i < d->L->nnode; i++)
+    bg_obstacle_rect(d, d->L->nx[i] - d->L->nw[i] / 2, d->L->ny[i] - d->L->nh[i] / 2, d->L->nx[i] + d->L->nw[i] / 2,
+                     d->L->ny[i] + d->L->nh[i] / 2);
 }
 
 void bg_text_halo(bg_diagram *d, const char *markup, bg_vec p, double size) {

@@ -11,7 +11,7 @@
 #include "diagram/diagram_int.h"
 
 /* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
-static bg_vec node_exit(const bg_diagram *d, int n, bg_vec toward, double gap) {
+static bg_vec node_exit(const bg_diagram_layout *d, int n, bg_vec toward, double gap) {
   return bg_box_exit(bg_v(d->nx[n], d->ny[n]), d->nw[n] / 2 + gap, d->nh[n] / 2 + gap, toward);
 }
 
@@ -48,9 +48,9 @@ static void signal_head(bg_diagram *d, sigrole role, bg_vec tip, bg_vec dir, int
 /* A signal from p0 to the box of node `to`, bowed by `bow` (a vector, or
  * zero for a straight line). */
 static void signal_to_node(bg_diagram *d, sigrole role, bg_vec p0, int to, bg_vec bow, int hot) {
-  bg_vec ct = bg_v(d->nx[to], d->ny[to]);
+  bg_vec ct = bg_v(d->L->nx[to], d->L->ny[to]);
   bg_vec aim = bg_vlen(bow) > 0 ? bg_vadd(bg_vscale(bg_vadd(p0, ct), 0.5), bow) : p0;
-  bg_vec p1 = node_exit(d, to, aim, 1.5);
+  bg_vec p1 = node_exit(d->L, to, aim, 1.5);
   signal_item(d, role, hot);
   bg_scene_move(&d->scene, p0.x, p0.y);
   bg_vec dir;
@@ -71,14 +71,14 @@ static void signal_to_node(bg_diagram *d, sigrole role, bg_vec p0, int to, bg_ve
 
 /* Whether the line between the centres of a and b passes another node's box. */
 static int node_between(const bg_diagram *d, int a, int b) {
-  bg_vec p = bg_v(d->nx[a], d->ny[a]), q = bg_v(d->nx[b], d->ny[b]), pq = bg_vsub(q, p);
+  bg_vec p = bg_v(d->L->nx[a], d->L->ny[a]), q = bg_v(d->L->nx[b], d->L->ny[b]), pq = bg_vsub(q, p);
   double l2 = pq.x * pq.x + pq.y * pq.y;
-  for (int n = 0; n < d->nnode && l2 > 0; n++) {
+  for (int n = 0; n < d->L->nnode && l2 > 0; n++) {
     if (n == a || n == b) continue;
-    bg_vec c = bg_v(d->nx[n], d->ny[n]);
+    bg_vec c = bg_v(d->L->nx[n], d->L->ny[n]);
     double t = ((c.x - p.x) * pq.x + (c.y - p.y) * pq.y) / l2;
     bg_vec f = bg_vadd(p, bg_vscale(pq, t));
-    if (t > 0 && t < 1 && fabs(f.x - c.x) < d->nw[n] / 2 + 2 && fabs(f.y - c.y) < d->nh[n] / 2 + 2) return 1;
+    if (t > 0 && t < 1 && fabs(f.x - c.x) < d->L->nw[n] / 2 + 2 && fabs(f.y - c.y) < d->L->nh[n] / 2 + 2) return 1;
   }
   return 0;
 }
@@ -96,10 +96,10 @@ static int segs_cross(bg_vec p, bg_vec q, bg_vec r, bg_vec s) {
 static int bond_crossings(const bg_diagram *d, bg_vec p, bg_vec q) {
   int n = 0;
   for (int b = 0; b < d->m->nbond; b++) {
-    const bg_bond_geom *g = &d->bg[b];
+    const bg_bond_geom *g = &d->L->bg[b];
     bg_vec a = g->tail;
     for (int i = 0; i <= g->bendn; i++) {
-      bg_vec c = i == g->bendn ? g->head : bg_v(d->lay.bendx[g->bendadr + i], d->lay.bendy[g->bendadr + i]);
+      bg_vec c = i == g->bendn ? g->head : bg_v(d->L->lay.bendx[g->bendadr + i], d->L->lay.bendy[g->bendadr + i]);
       n += segs_cross(p, q, a, c);
       a = c;
     }
@@ -111,7 +111,7 @@ static int bond_crossings(const bg_diagram *d, bg_vec p, bg_vec q) {
  * 24 points: 10 for each sample in a node box (ends excepted, 3 pt of
  * room), 1 for each bond it crosses. */
 static int bow_hits(const bg_diagram *d, int a, int b, bg_vec bow) {
-  bg_vec p = bg_v(d->nx[a], d->ny[a]), q = bg_v(d->nx[b], d->ny[b]), ch = bg_vsub(q, p);
+  bg_vec p = bg_v(d->L->nx[a], d->L->ny[a]), q = bg_v(d->L->nx[b], d->L->ny[b]), ch = bg_vsub(q, p);
   bg_vec c1 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.25)), bow), c2 = bg_vadd(bg_vadd(p, bg_vscale(ch, 0.75)), bow);
   int hits = 0;
   bg_vec prev = p;
@@ -119,9 +119,9 @@ static int bow_hits(const bg_diagram *d, int a, int b, bg_vec bow) {
     double t = k / 24.0, u = 1 - t;
     bg_vec f = bg_vadd(bg_vadd(bg_vscale(p, u * u * u), bg_vscale(c1, 3 * u * u * t)),
                        bg_vadd(bg_vscale(c2, 3 * u * t * t), bg_vscale(q, t * t * t)));
-    for (int n = 0; n < d->nnode && k < 24; n++)
-      hits += 10 * (n != a && n != b && fabs(f.x - d->nx[n]) < d->nw[n] / 2 + 3 &&
-                    fabs(f.y - d->ny[n]) < d->nh[n] / 2 + 3);
+    for (int n = 0; n < d->L->nnode && k < 24; n++)
+      hits += 10 * (n != a && n != b && fabs(f.x - d->L->nx[n]) < d->L->nw[n] / 2 + 3 &&
+                    fabs(f.y - d->L->ny[n]) < d->L->nh[n] / 2 + 3);
     hits += bond_crossings(d, prev, f);
     prev = f;
   }
@@ -133,7 +133,7 @@ static int bow_hits(const bg_diagram *d, int a, int b, bg_vec bow) {
  * side where it crosses fewest bonds (the ones it starts and ends on count
  * on both sides alike). */
 static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
-  bg_vec chord = bg_v(d->nx[b] - d->nx[a], d->ny[b] - d->ny[a]);
+  bg_vec chord = bg_v(d->L->nx[b] - d->L->nx[a], d->L->ny[b] - d->L->ny[a]);
   bg_vec side = fabs(chord.x) >= fabs(chord.y) ? bg_v(0, -1) : bg_v(-1, 0), best = bg_v(0, 0);
   int best_hits = -1;
   for (int k = 0; k < 8 && best_hits != 0; k++) {
@@ -149,28 +149,28 @@ static bg_vec clear_bow(const bg_diagram *d, int a, int b, double len) {
  * a row or column of the grid past other nodes, bowed up or down (left or
  * right) off the bonds there (clear_bow). */
 static void signal_between(bg_diagram *d, sigrole role, int from, int to, int hot) {
-  bg_vec cf = bg_v(d->nx[from], d->ny[from]), ct = bg_v(d->nx[to], d->ny[to]);
+  bg_vec cf = bg_v(d->L->nx[from], d->L->ny[from]), ct = bg_v(d->L->nx[to], d->L->ny[to]);
   bg_vec bow = bg_v(0, 0), aim = ct;
   int b = from < d->m->nelem && to < d->m->nelem ? bond_between(d->m, from, to) : -1;
   bg_vec chord = bg_vsub(ct, cf);
   double len = bg_vlen(chord);
   if (b >= 0) {
-    bow = bg_vscale(bg_barb_side(d, b), 20);
+    bow = bg_vscale(bg_barb_side(d->L, b), 20);
   } else if (fmin(fabs(chord.x), fabs(chord.y)) < 0.18 * fmax(fabs(chord.x), fabs(chord.y)) &&
              node_between(d, from, to)) {
     bow = clear_bow(d, from, to, len);
   }
   if (b >= 0 || bg_vlen(bow) > 0) aim = bg_vadd(bg_vscale(bg_vadd(cf, ct), 0.5), bow);
-  signal_to_node(d, role, node_exit(d, from, aim, 0), to, bow, hot);
+  signal_to_node(d, role, node_exit(d->L, from, aim, 0), to, bow, hot);
 }
 
 /* Self-modulation: a loop leaving the box and coming back, on its free side. */
 static void signal_self(bg_diagram *d, sigrole role, int e, int hot) {
-  bg_vec c = bg_v(d->nx[e], d->ny[e]), dir = bg_free_direction(d, e), n = bg_vleft(dir);
+  bg_vec c = bg_v(d->L->nx[e], d->L->ny[e]), dir = bg_free_direction(d->L, e), n = bg_vleft(dir);
   /* leave and re-enter the box 8 pt either side of where `dir` leaves it */
-  bg_vec q = node_exit(d, e, bg_vadd(c, bg_vscale(dir, 100)), 0);
-  bg_vec p0 = node_exit(d, e, bg_vadd(q, bg_vscale(n, 8)), 0);
-  bg_vec p1 = node_exit(d, e, bg_vsub(q, bg_vscale(n, 8)), 1.5);
+  bg_vec q = node_exit(d->L, e, bg_vadd(c, bg_vscale(dir, 100)), 0);
+  bg_vec p0 = node_exit(d->L, e, bg_vadd(q, bg_vscale(n, 8)), 0);
+  bg_vec p1 = node_exit(d->L, e, bg_vsub(q, bg_vscale(n, 8)), 1.5);
   bg_vec c1 = bg_vadd(p0, bg_vadd(bg_vscale(dir, 24), bg_vscale(n, 10)));
   bg_vec c2 = bg_vadd(p1, bg_vsub(bg_vscale(dir, 24), bg_vscale(n, 10)));
   bg_vec adir = bg_vunit(bg_vsub(p1, c2)), end = bg_vsub(p1, bg_vscale(adir, ALEN * 0.8));
@@ -188,7 +188,7 @@ static int signal_from_bond(bg_diagram *d, sigrole role, const char *var, int to
   long num = strtol(var + 1, &end, 10);
   int b = *end ? -1 : bg_model_find_bond(m, (int)num);
   if (b < 0) return -1;
-  bg_vec p0 = d->bg[b].mid;
+  bg_vec p0 = d->L->bg[b].mid;
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
   it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
   bg_scene_circle(&d->scene, p0.x, p0.y, 1.6);
@@ -206,30 +206,30 @@ static void draw_signal(bg_diagram *d, int i) {
   sigrole role = {"signal", name};
   /* a collapsed instance: its signals start or end at its box; the ones
    * inside it are not drawn */
-  int to_box = d->node_of[to], from_box = from >= 0 ? d->node_of[from] : -1;
+  int to_box = d->L->node_of[to], from_box = from >= 0 ? d->L->node_of[from] : -1;
   if (to_box != to && (from_box == to_box || from < 0)) return;
   if (from >= 0 && from_box != from && from_box != to_box) from = from_box;
   to = to_box;
   if (from == to) signal_self(d, role, to, hot);
   else if (from >= 0) signal_between(d, role, from, to, hot);
-  else if (s >= 0 && d->state_node[s] >= 0) signal_between(d, role, d->state_node[s], to, hot);
+  else if (s >= 0 && d->L->state_node[s] >= 0) signal_between(d, role, d->L->state_node[s], to, hot);
   else signal_from_bond(d, role, m->signal_var[i], to, hot);
 }
 
 /* The integrator of a user state and the signals that feed it. */
 static void draw_state(bg_diagram *d, int s) {
   const bg_model *m = d->m;
-  int n = d->state_node[s];
+  int n = d->L->state_node[s];
   if (n < 0) return;
   char role[160];
   snprintf(role, sizeof role, "state-node %s", m->state_name[s]);
-  bg_scene_text(&d->scene, d->nlabel[n], d->nx[n], d->ny[n], d->st.font_size, 0.5, 0.5,
+  bg_scene_text(&d->scene, d->L->nlabel[n], d->L->nx[n], d->L->ny[n], d->st.font_size, 0.5, 0.5,
                 bg_diagram_ink(d, d->st.signal, !bg_diagram_muted(d)), role);
   int in[64], nin = bg_state_inputs(m, s, in, 64);
   for (int k = 0; k < nin; k++) {
     char name[160];
     snprintf(name, sizeof name, "%s->%s", m->elem_name[in[k]], m->state_name[s]);
-    signal_between(d, (sigrole){"state-input", name}, d->node_of[in[k]], n, !bg_diagram_muted(d));
+    signal_between(d, (sigrole){"state-input", name}, d->L->node_of[in[k]], n, !bg_diagram_muted(d));
   }
 }
 

@@ -91,7 +91,7 @@ int bg_diagram_count(const bg_diagram *d, const char *prefix) {
   return bg_scene_count(&d->scene, prefix);
 }
 
-const char *bg_diagram_engine(const bg_diagram *d) { return d->lay.engine; }
+const char *bg_diagram_engine(const bg_diagram *d) { return d->L->lay.engine; }
 
 void bg_diagram_size(const bg_diagram *d, double *w, double *h) {
   *w = d->scene.width, *h = d->scene.height;
