@@ -92,7 +92,7 @@ struct bg_diagram {
 /* The files call down this list, never a sibling or up (docs/developer.md):
  *   diagram_base.c, diagram_words.c  leaves: vectors, ink, colours, queries; markup
  *   diagram_geom.c, diagram_place.c  where bonds run; text placement
- *   passes: diagram_grid.c (layout stage), diagram_layers.c, diagram_marks.c,
+ *   passes: diagram_grid.c (layout stage), diagram_bonds.c, diagram_layers.c, diagram_marks.c,
  *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
  *           diagram_frames.c, diagram_dot.c, diagram_tips.c
  *   diagram.c  the driver: layout stage, then the scene stage calling each pass
@@ -193,6 +193,13 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
 /* The index of the candidate centre with the lowest score (the first on
  * ties); its box becomes an obstacle. */
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h);
+
+/* bonds (diagram_bonds.c): lines, strokes; numbers and labels beside them;
+ * element labels; Lagrange sources */
+void bg_draw_bonds(bg_diagram *d);
+void bg_draw_numbers(bg_diagram *d);
+void bg_draw_nodes(bg_diagram *d);
+void bg_draw_lagrange(bg_diagram *d);
 
 /* signals (diagram_signals.c) */
 void bg_draw_signals(bg_diagram *d);
