@@ -4,7 +4,11 @@
  * lines or other labels, bond numbers nearer another bond than their own,
  * path tags and gains away from their line, overlays and lines through
  * element labels, bond crossings and bonds hardly longer than their half
- * arrow. Used by test_figures.c; the
+ * arrow; and (issue 31) signals crossing bonds, lines drawn on top of each
+ * other, bond ends on another bond (false T-junctions), bonds shorter than
+ * their half arrow, crossing frames and elements inside a foreign frame,
+ * text below 6 pt, and the arrangement a style changed
+ * (fc_arrangement). Used by test_figures.c; the
  * definitions are in docs/drawing.md ("Measured geometry"). */
 #ifndef BG_TEST_FIGURE_CHECK_H
 #define BG_TEST_FIGURE_CHECK_H
@@ -26,9 +30,19 @@ typedef struct fc_stats {
   int lines_through;         /* bonds and signals × element labels they run through */
   int crossings;             /* pairs of bonds that cross */
   int short_bonds;           /* bonds shorter than 2.5 half arrows (the half arrow not counted) */
+  /* issue 31 */
+  int sig_cross;             /* signal × bond pairs that cross */
+  int sig_oblique;           /* of those, crossing more than 5 degrees off a right angle */
+  int overlaps;              /* pairs of lines (bonds, signals) sharing a stretch: collinear, < 1 pt apart, > 2 pt long */
+  int false_tees;            /* bond ends on another bond's line away from its ends (read as a T-junction) */
+  int tiny_bonds;            /* bonds shorter than their own half arrow */
+  int frames, frame_cross;   /* instance frames; pairs of frames whose borders cross */
+  int foreign;               /* element labels inside a frame of an instance they do not belong to */
+  int texts, small_text;     /* every text item; those with some part below 6 pt */
+  int arrangement;           /* element label pairs in another order than in the default style (fc_arrangement) */
 } fc_stats;
 
-enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_OTHER }; /* line kinds */
+enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
 enum { FC_NODE, FC_NUMBER, FC_TAG, FC_TEXT, FC_IGNORED };         /* text kinds */
 
 /* Set (BG_FIGURES_VERBOSE=2) to print every fault found, with where it is. */
@@ -39,6 +53,7 @@ typedef struct fc_seg {
 } fc_seg;
 
 typedef struct fc_line {
+  const char *name;         /* frames: the instance (the role's second word) */
   int kind, id, nseg, barb; /* id: bond number, path/loop number; barb: last seg is the half arrow */
   int loop;                 /* overlays: "loop K" or "path K loop=K" draws loop K, else 0 */
   double width;
@@ -46,8 +61,10 @@ typedef struct fc_line {
 } fc_line;
 
 typedef struct fc_box {
+  const char *name;   /* element labels: the element ("node NAME") */
   int kind, id, loop; /* numbers: bond; tags: path (loop 0) or loop (id 0) */
   double x0, y0, x1, y1;
+  int elem;           /* an element's label ("node NAME") */
 } fc_box;
 
 typedef struct fc_scene {
@@ -86,6 +103,7 @@ static int fc_line_kind(const char *r, int *id, int *loop) {
   /* a tag's leader line: "path-leader K" (id K), "gain-leader loop=K" (loop K) */
   if (fc_starts(r, "path-leader")) return *id = atoi(r + 12), FC_LEADER;
   if (fc_starts(r, "gain-leader")) return *id = 0, *loop = fc_num_after(r, "loop="), FC_LEADER;
+  if (fc_starts(r, "frame")) return *id = 0, FC_FRAME;
   return *id = 0, FC_OTHER;
 }
 
@@ -100,7 +118,7 @@ static int fc_text_kind(const char *r, int *id, int *loop) {
   }
   if (fc_starts(r, "path-tag")) return *id = atoi(r + 9), FC_TAG;
   if (fc_starts(r, "gain")) return *loop = fc_num_after(r, "loop="), FC_TAG;
-  if (fc_starts(r, "conflict-text")) return FC_TEXT;
+  if (fc_starts(r, "conflict-text") || fc_starts(r, "frame-label")) return FC_TEXT;
   return FC_IGNORED; /* legend text, titles */
 }
 
@@ -137,7 +155,8 @@ static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) 
 static fc_box fc_text_box(const bg_scene_item *it, int kind, int id, int loop) {
   double h = 0.8 * it->th, cx = it->x + (0.5 - it->halign) * it->tw;
   double cy = it->y + (0.5 - it->valign) * it->th;
-  return (fc_box){kind, id, loop, cx - it->tw / 2, cy - h / 2, cx + it->tw / 2, cy + h / 2};
+  const char *sp = strchr(it->role, ' ');
+  return (fc_box){sp ? sp + 1 : "", kind, id, loop, cx - it->tw / 2, cy - h / 2, cx + it->tw / 2, cy + h / 2, 0};
 }
 
 static void fc_read(const bg_scene *s, fc_scene *f) {
@@ -150,10 +169,13 @@ static void fc_read(const bg_scene *s, fc_scene *f) {
     if (it->kind == BG_ITEM_TEXT) {
       int k = fc_text_kind(it->role, &id, &loop);
       if (k != FC_IGNORED) f->box[f->nbox++] = fc_text_box(it, k, id, loop);
+      if (k == FC_NODE) f->box[f->nbox - 1].elem = fc_starts(it->role, "node");
     } else if (it->kind == BG_ITEM_STROKE) {
       int k = fc_line_kind(it->role, &id, &loop);
       if (k == FC_OTHER) continue;
       fc_line *l = &f->line[f->nline++];
+      const char *sp = strchr(it->role, ' ');
+      l->name = sp ? sp + 1 : "";
       l->kind = k, l->id = id, l->loop = loop, l->width = it->width;
       l->nseg = fc_flatten(s, it, &l->seg);
       l->barb = k == FC_BOND && l->nseg > 1;
@@ -222,7 +244,7 @@ static double fc_line_box(const fc_line *l, const fc_box *b) {
 }
 
 static fc_box fc_shrink(const fc_box *b, double by) {
-  return (fc_box){b->kind, b->id, b->loop, b->x0 + by, b->y0 + by, b->x1 - by, b->y1 - by};
+  return (fc_box){b->name, b->kind, b->id, b->loop, b->x0 + by, b->y0 + by, b->x1 - by, b->y1 - by, b->elem};
 }
 
 static int fc_boxes_meet(const fc_box *a, const fc_box *b) {
@@ -309,7 +331,7 @@ static int fc_own_overlay(const fc_line *l, const fc_box *t) {
 /* Whether leader line l starts on (within 0.5 pt of) an overlay line of its tag. */
 static int fc_leader_on_own(const fc_scene *f, const fc_line *l) {
   for (int j = 0; j < f->nline; j++)
-    if (f->line[j].kind == FC_OVERLAY && fc_own_overlay(&f->line[j], &(fc_box){FC_TAG, l->id, l->loop, 0, 0, 0, 0}) &&
+    if (f->line[j].kind == FC_OVERLAY && fc_own_overlay(&f->line[j], &(fc_box){"", FC_TAG, l->id, l->loop, 0, 0, 0, 0, 0}) &&
         fc_line_pt(&f->line[j], l->seg[0].x0, l->seg[0].y0, 0) <= 0.5)
       return 1;
   return 0;
@@ -342,7 +364,7 @@ static int fc_tag_far(const fc_scene *f, const fc_box *t) {
  * the two would read as one ("L2: G = n 1"); texts over it count as over. */
 static int fc_crowded(const fc_scene *f, int i) {
   const fc_box *t = &f->box[i];
-  fc_box g = {t->kind, t->id, t->loop, t->x0 - 2, t->y0, t->x1 + 2, t->y1};
+  fc_box g = {t->name, t->kind, t->id, t->loop, t->x0 - 2, t->y0, t->x1 + 2, t->y1, 0};
   for (int j = 0; j < f->nbox; j++)
     if (j != i && fc_boxes_meet(&g, &f->box[j]) && !fc_boxes_meet(t, &f->box[j])) {
       if (fc_explain)
@@ -373,6 +395,199 @@ static int fc_through(const fc_scene *f, int kind) {
   return n;
 }
 
+/* ---------------------------------------------------------------- issue 31 */
+static double fc_seg_len(const fc_seg *a) { return hypot(a->x1 - a->x0, a->y1 - a->y0); }
+
+/* The segments of a line that are drawn as its body (a bond's half arrow left out). */
+static int fc_body(const fc_line *l) { return l->nseg - l->barb; }
+
+/* Signal l × bond b: whether they cross, and (*oblique) whether some
+ * crossing is more than 5 degrees off a right angle. */
+static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique) {
+  int n = 0;
+  for (int p = 0; p < l->nseg; p++)
+    for (int q = 0; q < fc_body(b); q++)
+      if (fc_cross(&l->seg[p], &b->seg[q])) {
+        const fc_seg *u = &l->seg[p], *v = &b->seg[q];
+        double c = ((u->x1 - u->x0) * (v->x1 - v->x0) + (u->y1 - u->y0) * (v->y1 - v->y0)) /
+                   (fc_seg_len(u) * fc_seg_len(v) + 1e-300);
+        if (fabs(c) > sin(5 * 3.14159265358979 / 180)) *oblique = 1;
+        n = 1;
+      }
+  return n;
+}
+
+/* Two segments on one line (parallel within 1 degree, < 1 pt apart) that
+ * share more than 2 pt: drawn on top of each other. */
+static int fc_seg_overlap(const fc_seg *a, const fc_seg *b) {
+  double la = fc_seg_len(a), lb = fc_seg_len(b);
+  if (la < 2 || lb < 2) return 0;
+  double ux = (a->x1 - a->x0) / la, uy = (a->y1 - a->y0) / la;
+  double vx = (b->x1 - b->x0) / lb, vy = (b->y1 - b->y0) / lb;
+  if (fabs(ux * vy - uy * vx) > 0.0175) return 0;
+  double d0 = fabs((b->x0 - a->x0) * uy - (b->y0 - a->y0) * ux);
+  double d1 = fabs((b->x1 - a->x0) * uy - (b->y1 - a->y0) * ux);
+  if (fmax(d0, d1) >= 1) return 0;
+  double t0 = (b->x0 - a->x0) * ux + (b->y0 - a->y0) * uy, t1 = (b->x1 - a->x0) * ux + (b->y1 - a->y0) * uy;
+  double lo = fmax(0, fmin(t0, t1)), hi = fmin(la, fmax(t0, t1));
+  return hi - lo > 2;
+}
+
+static int fc_lines_overlap(const fc_line *a, const fc_line *b) {
+  for (int p = 0; p < fc_body(a); p++)
+    for (int q = 0; q < fc_body(b); q++)
+      if (fc_seg_overlap(&a->seg[p], &b->seg[q])) return 1;
+  return 0;
+}
+
+/* Bond a's ends (the tail, the tip of its half arrow) that lie on bond b's
+ * line (within 1 pt) more than 3 pt from b's ends: a T-junction that is
+ * not there. */
+static int fc_false_tee(const fc_line *a, const fc_line *b) {
+  if (fc_body(a) < 1 || fc_body(b) < 1) return 0;
+  double end[2][2] = {{a->seg[0].x0, a->seg[0].y0}, {a->seg[fc_body(a) - 1].x1, a->seg[fc_body(a) - 1].y1}};
+  const fc_seg *b0 = &b->seg[0], *b1 = &b->seg[fc_body(b) - 1];
+  for (int k = 0; k < 2; k++) {
+    double x = end[k][0], y = end[k][1];
+    if (hypot(x - b0->x0, y - b0->y0) <= 3 || hypot(x - b1->x1, y - b1->y1) <= 3) continue;
+    for (int q = 0; q < fc_body(b); q++)
+      if (fc_pt_seg(x, y, &b->seg[q]) < 1) return 1;
+  }
+  return 0;
+}
+
+static int fc_tiny(const fc_line *l) {
+  if (!l->barb) return 0;
+  double body = 0;
+  for (int k = 0; k < fc_body(l); k++) body += fc_seg_len(&l->seg[k]);
+  return body < fc_seg_len(&l->seg[l->nseg - 1]);
+}
+
+/* A frame's rectangle from its segments. */
+static fc_box fc_frame_box(const fc_line *l) {
+  fc_box r = {l->name, FC_TEXT, 0, 0, 1e300, 1e300, -1e300, -1e300, 0};
+  for (int k = 0; k < l->nseg; k++) {
+    r.x0 = fmin(r.x0, fmin(l->seg[k].x0, l->seg[k].x1)), r.x1 = fmax(r.x1, fmax(l->seg[k].x0, l->seg[k].x1));
+    r.y0 = fmin(r.y0, fmin(l->seg[k].y0, l->seg[k].y1)), r.y1 = fmax(r.y1, fmax(l->seg[k].y0, l->seg[k].y1));
+  }
+  return r;
+}
+
+/* Two frames cross when neither holds the other and their areas meet. */
+static int fc_frames_cross(const fc_box *a, const fc_box *b) {
+  int a_in_b = a->x0 >= b->x0 && a->x1 <= b->x1 && a->y0 >= b->y0 && a->y1 <= b->y1;
+  int b_in_a = b->x0 >= a->x0 && b->x1 <= a->x1 && b->y0 >= a->y0 && b->y1 <= a->y1;
+  return !a_in_b && !b_in_a && fc_boxes_meet(a, b);
+}
+
+/* Whether element `name` belongs to instance `inst` (its name starts "inst."). */
+static int fc_member(const char *name, const char *inst) {
+  size_t n = strlen(inst);
+  return !strncmp(name, inst, n) && name[n] == '.';
+}
+
+/* The smallest size of any part of a text item: its size times the nested
+ * span sizes in per cent ("<span size=\"70%\">"). */
+static double fc_smallest_size(const bg_scene_item *it) {
+  double stack[16], cur = it->size, least = it->size;
+  int sp = 0;
+  for (const char *p = it->text; p && *p; p++) {
+    if (!strncmp(p, "<span", 5)) {
+      const char *e = strchr(p, '>'), *z = strstr(p, "size=\"");
+      double f = 1;
+      if (z && e && z < e && strchr(z + 6, '%') && strchr(z + 6, '%') < e) f = atof(z + 6) / 100;
+      if (sp < 16) stack[sp++] = cur;
+      cur *= f;
+      if (cur < least) least = cur;
+    } else if (!strncmp(p, "</span>", 7) && sp > 0) {
+      cur = stack[--sp];
+    }
+  }
+  return least;
+}
+
+/* Pairs of element labels placed in a different order (left/right or
+ * above/below, by more than 1 pt) in two drawings of the same model: the
+ * arrangement a style changed. Labels are matched by their role. */
+static inline int fc_arrangement(const bg_scene *a, const bg_scene *b) {
+  int n = 0, *match = calloc((size_t)a->nitem + 1, sizeof *match);
+  for (int i = 0; i < a->nitem; i++) {
+    match[i] = -1;
+    if (a->item[i].kind != BG_ITEM_TEXT || !fc_starts(a->item[i].role, "node")) continue;
+    for (int j = 0; j < b->nitem && match[i] < 0; j++)
+      if (b->item[j].kind == BG_ITEM_TEXT && !strcmp(a->item[i].role, b->item[j].role)) match[i] = j;
+  }
+  for (int i = 0; i < a->nitem; i++)
+    for (int k = i + 1; match[i] >= 0 && k < a->nitem; k++) {
+      if (match[k] < 0) continue;
+      const bg_scene_item *p = &a->item[i], *q = &a->item[k], *P = &b->item[match[i]], *Q = &b->item[match[k]];
+      double dx = q->x - p->x, dy = q->y - p->y, DX = Q->x - P->x, DY = Q->y - P->y;
+      int sx = dx > 1 ? 1 : dx < -1 ? -1 : 0, sy = dy > 1 ? 1 : dy < -1 ? -1 : 0;
+      int SX = DX > 1 ? 1 : DX < -1 ? -1 : 0, SY = DY > 1 ? 1 : DY < -1 ? -1 : 0;
+      if (sx != SX || sy != SY) {
+        n++;
+        if (fc_explain) printf("  arrangement: %s and %s\n", p->role, q->role);
+      }
+    }
+  free(match);
+  return n;
+}
+
+static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *l = &f->line[j];
+    if (l->kind == FC_BOND) st->tiny_bonds += fc_tiny(l);
+    for (int k = 0; k < f->nline; k++) {
+      const fc_line *m = &f->line[k];
+      if (l->kind == FC_SIGNAL && m->kind == FC_BOND) {
+        int ob = 0;
+        if (fc_sig_cross(l, m, &ob)) {
+          st->sig_cross++, st->sig_oblique += ob;
+          if (fc_explain) printf("  signal %s crosses bond %d%s\n", l->name, m->id, ob ? " obliquely" : "");
+        }
+      }
+      if (l->kind == FC_BOND && m->kind == FC_BOND && k != j && fc_false_tee(l, m)) {
+        st->false_tees++;
+        if (fc_explain) printf("  false T: bond %d ends on bond %d\n", l->id, m->id);
+      }
+      if (k > j && (l->kind == FC_BOND || l->kind == FC_SIGNAL) && (m->kind == FC_BOND || m->kind == FC_SIGNAL) &&
+          fc_lines_overlap(l, m)) {
+        st->overlaps++;
+        if (fc_explain) printf("  overlap: line kind %d id %d and kind %d id %d\n", l->kind, l->id, m->kind, m->id);
+      }
+    }
+    if (l->kind != FC_FRAME) continue;
+    st->frames++;
+    fc_box r = fc_frame_box(l);
+    for (int k = j + 1; k < f->nline; k++)
+      if (f->line[k].kind == FC_FRAME) {
+        fc_box q = fc_frame_box(&f->line[k]);
+        if (fc_frames_cross(&r, &q)) {
+          st->frame_cross++;
+          if (fc_explain) printf("  frames cross: %s and %s\n", l->name, f->line[k].name);
+        }
+      }
+    for (int i = 0; i < f->nbox; i++) {
+      const fc_box *b = &f->box[i];
+      double cx = (b->x0 + b->x1) / 2, cy = (b->y0 + b->y1) / 2;
+      if (!b->elem || !fc_in_box(cx, cy, &r) ||
+          fc_member(b->name, l->name))
+        continue;
+      st->foreign++;
+      if (fc_explain) printf("  foreign: %s inside the frame of %s\n", b->name, l->name);
+    }
+  }
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    if (it->kind != BG_ITEM_TEXT) continue;
+    st->texts++;
+    if (fc_smallest_size(it) < 6 - 1e-9) {
+      st->small_text++;
+      if (fc_explain) printf("  small text: %s '%s' %.2f pt\n", it->role, it->text, fc_smallest_size(it));
+    }
+  }
+}
+
 static inline void fc_count(const bg_scene *s, fc_stats *st) {
   fc_scene f;
   fc_read(s, &f);
@@ -394,6 +609,7 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
   }
   st->through += fc_through(&f, FC_OVERLAY) + fc_through(&f, FC_LEADER);
   st->lines_through += fc_through(&f, FC_BOND) + fc_through(&f, FC_SIGNAL);
+  fc_count_31(s, &f, st);
   fc_free(&f);
 }
 

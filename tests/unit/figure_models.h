@@ -1,0 +1,136 @@
+/* Models the figure tests generate (issue 31: measure on models nobody
+ * tuned the drawing to): chains, ladders, grids of RC cells, random trees,
+ * reaction networks with many modulating signals and three-level
+ * submodels, as .bg text, compiled and analysed like an example. Include
+ * after analysis_fixture.h. */
+#ifndef BG_TEST_FIGURE_MODELS_H
+#define BG_TEST_FIGURE_MODELS_H
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/strbuf.h"
+
+/* Compiles and analyses `text` as if it were examples/NAME.bg. */
+static int fm_load(fx *f, const char *name, const char *text) {
+  memset(f, 0, sizeof *f);
+  f->src = strdup(text);
+  size_t len = strlen(text);
+  bg_diags_init(&f->dg, name, f->src, len);
+  bg_ast *ast = bg_parse_string(name, f->src, len, &f->dg);
+  if (ast && !f->dg.nerrors) f->m = bg_model_compile(ast, NULL, 0, &f->dg);
+  if (ast) bg_ast_free(ast);
+  if (!f->m) { bg_diags_print(&f->dg, stderr); return -1; }
+  fx_init_analysis(&f->a, f->m);
+  bg_causality_assign(f->m, f->m->method, &f->a, &f->dg);
+  bg_analysis_run(f->m, &f->a, NULL);
+  return 0;
+}
+
+/* A source, then n elements, each on its own junction (1, 0, 1, ...): R, I,
+ * C in turn. */
+static void fm_chain(bg_strbuf *b, int n) {
+  static const char *kind[] = {"R r", "I m", "C c"};
+  bg_sb_printf(b, "model chain%d\nSe U = 1\n", n);
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "%d j%d\n%s%d = 1\n", i % 2 ? 0 : 1, i, kind[i % 3], i);
+  bg_sb_puts(b, "bond U -> j0\n");
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "bond j%d -> %c%d\n", i, kind[i % 3][2], i);
+    if (i + 1 < n) bg_sb_printf(b, "bond j%d -> j%d\n", i, i + 1);
+  }
+}
+
+/* An RC ladder of k sections (series R on a 1-junction, shunt C on a 0-junction) and a load. */
+static void fm_ladder(bg_strbuf *b, int k) {
+  bg_sb_printf(b, "model ladder%d\nSe U = 1\nR load = 10\n", k);
+  for (int i = 0; i < k; i++) bg_sb_printf(b, "1 s%d\nR R%d = 1\n0 n%d\nC C%d = 1\n", i, i, i, i);
+  bg_sb_puts(b, "bond U -> s0\n");
+  for (int i = 0; i < k; i++) {
+    bg_sb_printf(b, "bond s%d -> R%d\nbond s%d -> n%d\nbond n%d -> C%d\n", i, i, i, i, i, i);
+    if (i + 1 < k) bg_sb_printf(b, "bond n%d -> s%d\n", i, i + 1);
+  }
+  bg_sb_printf(b, "bond n%d -> load\n", k - 1);
+}
+
+/* r × c nodes (0-junctions with a C each), joined along rows and columns by
+ * resistors on 1-junctions; a source at the first node. */
+static void fm_grid(bg_strbuf *b, int r, int c) {
+  bg_sb_printf(b, "model grid%dx%d\nSe U = 1\n", r, c);
+  for (int i = 0; i < r; i++)
+    for (int j = 0; j < c; j++) {
+      bg_sb_printf(b, "0 n%d_%d\nC C%d_%d = 1\n", i, j, i, j);
+      if (j + 1 < c) bg_sb_printf(b, "1 h%d_%d\nR Rh%d_%d = 1\n", i, j, i, j);
+      if (i + 1 < r) bg_sb_printf(b, "1 v%d_%d\nR Rv%d_%d = 1\n", i, j, i, j);
+    }
+  bg_sb_puts(b, "bond U -> n0_0\n");
+  for (int i = 0; i < r; i++)
+    for (int j = 0; j < c; j++) {
+      bg_sb_printf(b, "bond n%d_%d -> C%d_%d\n", i, j, i, j);
+      if (j + 1 < c)
+        bg_sb_printf(b, "bond n%d_%d -> h%d_%d\nbond h%d_%d -> Rh%d_%d\nbond h%d_%d -> n%d_%d\n", i, j, i, j, i, j, i,
+                     j, i, j, i, j + 1);
+      if (i + 1 < r)
+        bg_sb_printf(b, "bond n%d_%d -> v%d_%d\nbond v%d_%d -> Rv%d_%d\nbond v%d_%d -> n%d_%d\n", i, j, i, j, i, j, i,
+                     j, i, j, i + 1, j);
+    }
+}
+
+static unsigned fm_rand(unsigned *s) { return *s = *s * 1103515245u + 12345u, (*s >> 16) & 0x7fff; }
+
+/* A random tree of n junctions (each joined to an earlier one, the kind
+ * opposite its parent's) with a one-port (R, I or C) on each junction that
+ * has fewer than three bonds, and a source at the root. */
+static void fm_tree(bg_strbuf *b, int n, unsigned seed) {
+  static const char *kind[] = {"R", "I", "C"};
+  int *parent = calloc((size_t)n, sizeof *parent), *deg = calloc((size_t)n, sizeof *deg), *type = calloc((size_t)n, sizeof *type);
+  bg_sb_printf(b, "model tree%u\nSe U = 1\n", seed);
+  deg[0] = 1;
+  for (int i = 1; i < n; i++) {
+    int p;
+    do p = (int)(fm_rand(&seed) % (unsigned)i);
+    while (deg[p] >= 4);
+    parent[i] = p, deg[p]++, deg[i]++, type[i] = !type[p];
+  }
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "%d j%d\n", type[i], i);
+    if (deg[i] < 3) bg_sb_printf(b, "%s w%d = 1\n", kind[fm_rand(&seed) % 3], i);
+  }
+  bg_sb_puts(b, "bond U -> j0\n");
+  for (int i = 1; i < n; i++) bg_sb_printf(b, "bond j%d -> j%d\n", parent[i], i);
+  for (int i = 0; i < n; i++)
+    if (deg[i] < 3) bg_sb_printf(b, "bond j%d -> w%d\n", i, i);
+  free(parent), free(deg), free(type);
+}
+
+/* n species (a C on a 0-junction each) in a ring of reactions (an R on a
+ * 1-junction between neighbours, every third reaction across the ring),
+ * each reaction's rate modulated by the concentration of another species:
+ * as many modulating signals as reactions. */
+static void fm_reactions(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model reactions%d\nSf feed = 1\n", n);
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "0 s%d\nC c%d = 1\n", i, i);
+  int nr = n + n / 3;
+  for (int k = 0; k < nr; k++) bg_sb_printf(b, "1 r%d\nR k%d : f = (1 + c%d.e) * e\n", k, k, (k * 7 + 3) % n);
+  bg_sb_puts(b, "bond feed -> s0\n");
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "bond s%d -> c%d\n", i, i);
+  for (int k = 0; k < nr; k++) {
+    int from = k < n ? k : (3 * (k - n)) % n, to = k < n ? (k + 1) % n : (from + n / 2) % n;
+    bg_sb_printf(b, "bond s%d -> r%d\nbond r%d -> k%d\nbond r%d -> s%d\n", from, k, k, k, k, to);
+  }
+}
+
+/* Three levels of submodels: Outer holds two Middles, each Middle two
+ * Inners (an R and a C); the model chains two Outers between a source and
+ * a load. */
+static void fm_nested(bg_strbuf *b) {
+  bg_sb_puts(b, "model nested\n"
+                "submodel Inner\n  port p, n\n  1 js\n  R r = 1\n  0 jc\n  C c = 1\n"
+                "  bond p -> js\n  bond js -> r\n  bond js -> jc\n  bond jc -> c\n  bond jc -> n\nend\n"
+                "submodel Middle\n  port p, n\n  Inner S1\n  Inner S2\n  0 jm\n  I m = 1\n"
+                "  bond p -> S1.p\n  bond S1.n -> jm\n  bond jm -> m\n  bond jm -> S2.p\n  bond S2.n -> n\nend\n"
+                "submodel Outer\n  port p, n\n  Middle M1\n  Middle M2\n"
+                "  bond p -> M1.p\n  bond M1.n -> M2.p\n  bond M2.n -> n\nend\n"
+                "Se U = 1\nOuter O1\nOuter O2\nR load = 1\n"
+                "bond U -> O1.p\nbond O1.n -> O2.p\nbond O2.n -> load\n");
+}
+#endif
