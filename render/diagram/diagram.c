@@ -36,24 +36,46 @@ static char *state_markup(bg_diagram_layout *d, int s) {
   return r;
 }
 
-static void measure_nodes(bg_diagram_layout *d) {
+/* Every node's box (label and padding) in style st. */
+static void node_boxes(const bg_diagram_layout *d, const bg_style *st, double *nw, double *nh) {
+  const bg_model *m = d->m;
+  for (int i = 0; i < d->nnode; i++) {
+    double w, h;
+    bg_text_measure(st->font, st->font_size, d->nlabel[i], &w, &h);
+    /* pango's logical height includes the line gap: trim it so vertical
+     * bonds come as close to the glyphs as horizontal ones */
+    nw[i] = w + 2 * st->node_pad;
+    nh[i] = 0.8 * h + 2 * st->node_pad;
+  }
+  /* a collapsed instance's box: room around its label for the bonds and
+   * their strokes on every side */
+  for (int k = 0; k < m->ninst; k++)
+    if (d->inst_box[k] >= 0) nw[d->inst_box[k]] += 16, nh[d->inst_box[k]] += 12;
+}
+
+static void label_nodes(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   for (int i = 0; i < d->nnode; i++) d->nlabel[i] = i < m->nelem ? elem_markup(d, i) : "Sf*";
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] >= 0) d->nlabel[d->state_node[s]] = state_markup(d, s);
   bg_parts_labels(d);
-  for (int i = 0; i < d->nnode; i++) {
-    double w, h;
-    bg_text_measure(d->st.font, d->st.font_size, d->nlabel[i], &w, &h);
-    /* pango's logical height includes the line gap: trim it so vertical
-     * bonds come as close to the glyphs as horizontal ones */
-    d->nw[i] = w + 2 * d->st.node_pad;
-    d->nh[i] = 0.8 * h + 2 * d->st.node_pad;
-  }
-  /* a collapsed instance's box: room around its label for the bonds and
-   * their strokes on every side */
-  for (int k = 0; k < m->ninst; k++)
-    if (d->inst_box[k] >= 0) d->nw[d->inst_box[k]] += 16, d->nh[d->inst_box[k]] += 12;
+}
+
+static void measure_nodes(bg_diagram_layout *d) {
+  label_nodes(d);
+  node_boxes(d, &d->st, d->nw, d->nh);
+}
+
+/* The boxes the labels would have in style ref (their markup made again
+ * for it: a subscript's rise follows the font size and changes the height). */
+static void reference_boxes(bg_diagram_layout *d, const bg_style *ref, double *w, double *h) {
+  bg_style own = d->st;
+  char **labels = d->nlabel;
+  d->st = *ref;
+  d->nlabel = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(char *));
+  label_nodes(d);
+  node_boxes(d, ref, w, h);
+  d->nlabel = labels, d->st = own;
 }
 
 /* ---------------------------------------------------------------- layout */
@@ -142,8 +164,24 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     weight[i] = i < m->nbond && !bg_elem_is_oneport(m->elem_kind[t]) &&
                         !bg_elem_is_oneport(m->elem_kind[h]) ? 4 : 1;
   }
-  bg_layout_in in = {d->nnode, d->nw, d->nh, pinned, px, py, ne, tail, head,
-                     choose_engine(d), m->layout.rankdir, d->st.node_sep, d->st.rank_sep,
+  /* Where the grid pass places the nodes, Graphviz only ranks and orders
+   * them, and it sees the labels measured in the built-in default style
+   * (font, size, padding, spacing): the order then depends on the graph and
+   * its words, not on the style, so a figure keeps its arrangement in every
+   * style (issue 31: print's serif font swapped nodes in 9 of 69 models);
+   * the grid pass spaces them with the style's own sizes. */
+  const char *engine = choose_engine(d), *rd = m->layout.rankdir;
+  int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")) && !d->rep;
+  bg_style ref;
+  bg_style_default(&ref);
+  const bg_style *lst = grid ? &ref : &d->st;
+  double *gw = d->nw, *gh = d->nh;
+  if (grid) {
+    gw = bg_xcalloc((size_t)d->nnode + 1, sizeof *gw), gh = bg_xcalloc((size_t)d->nnode + 1, sizeof *gh);
+    reference_boxes(d, &ref, gw, gh);
+  }
+  bg_layout_in in = {d->nnode, gw, gh, pinned, px, py, ne, tail, head,
+                     engine, rd, lst->node_sep, lst->rank_sep,
                      d->st.splines, root, weight, 0, NULL, NULL, NULL};
   /* submodel instances: one frame (cluster) each, around its elements */
   int *cluster = NULL;
@@ -157,7 +195,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     for (int k = 0; k < m->ndet; k++) /* a detector in the frame of the node it reads */
       if (d->det_draw[k] >= 0)
         cluster[d->det_draw[k]] = bg_detector_anchor(d, k) < m->nelem ? m->elem_inst[m->det_node[k]] : -1;
-    for (int k = 0; k < m->ninst; k++) label_h[k] = bg_frame_label_height(d);
+    for (int k = 0; k < m->ninst; k++) label_h[k] = bg_frame_label_height(lst);
     in.ncluster = m->ninst, in.cluster = cluster, in.cluster_parent = m->inst_parent;
     in.cluster_label_h = label_h;
   }
@@ -167,6 +205,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
                   "draw it without --collapse");
     free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
     free(cluster), free(label_h);
+    if (grid) free(gw), free(gh);
     return -1;
   }
   bg_fields_lay *fields = bg_fields_compact(d, &in);
@@ -175,14 +214,12 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h);
+  if (grid) free(gw), free(gh);
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
-  const char *rd = m->layout.rankdir;
   /* the grid pass places one node per element: not for fields (one node, several elements) */
-  if (!strcmp(in.engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")) &&
-      !d->rep)
-    bg_grid_place(d);
+  if (grid) bg_grid_place(d);
   bg_parts_spread(d);
   return 0;
 }

@@ -131,7 +131,7 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
 
 /* "e₃": a bond variable with its bond number as a subscript. */
 static void var_markup(bg_strbuf *t, char v, int num, double size) {
-  bg_sb_printf(t, "%c<span size=\"70%%\" rise=\"%.1fpt\">%d</span>", v, -0.27 * size, num);
+  bg_sb_printf(t, "%c<span size=\"%d%%\" rise=\"%.1fpt\">%d</span>", v, bg_sub_percent(size), -0.27 * size, num);
 }
 
 static void draw_number(bg_diagram *d, int b) {

@@ -13,7 +13,7 @@
 enum { FRAME_PAD = 6 };
 
 /* The frames' label height, which the layout keeps free above the nodes. */
-double bg_frame_label_height(const bg_diagram_layout *d) { return 1.3 * 0.85 * d->st.font_size; }
+double bg_frame_label_height(const bg_style *st) { return 1.3 * 0.85 * st->font_size; }
 
 typedef struct box { double x0, y0, x1, y1; } box;
 
@@ -36,7 +36,7 @@ static box *instance_boxes(const bg_diagram *d) {
     if (d->L->inst_box[i] >= 0) grow(&b[0], m->inst_parent[i], d, d->L->inst_box[i]);
   for (int i = 0; i < m->ndet; i++)
     if (d->L->det_draw[i] >= 0) grow(&b[0], m->elem_inst[m->det_node[i]], d, d->L->det_draw[i]);
-  double lh = bg_frame_label_height(d->L);
+  double lh = bg_frame_label_height(&d->st);
   for (int k = m->ninst - 1; k >= 0; k--) {
     if (!(b[k].x0 <= b[k].x1)) continue; /* no element at all */
     b[k].x0 -= FRAME_PAD, b[k].x1 += FRAME_PAD, b[k].y1 += FRAME_PAD;

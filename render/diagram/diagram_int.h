@@ -126,6 +126,8 @@ int bg_detector_anchor(const bg_diagram_layout *d, int k);
 int bg_fields_hidden(const bg_diagram_layout *d, int n);
 
 /* ---- words (diagram_words.c): calls nothing of the diagram */
+/* A subscript's size in per cent of size: 70, or more to keep it at 6 pt. */
+int bg_sub_percent(double size);
 /* A name as markup: its trailing digits (or what follows the
  * last '_') a subscript, as in element labels. */
 void bg_name_markup(bg_strbuf *b, const char *name, double font_size);
@@ -228,7 +230,7 @@ int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layou
 /* Boxes and detectors with their activated bonds. */
 void bg_draw_parts(bg_diagram *d);
 /* instance frames (diagram_frames.c): one labelled box per submodel instance */
-double bg_frame_label_height(const bg_diagram_layout *d);
+double bg_frame_label_height(const bg_style *st);
 void bg_draw_frames(bg_diagram *d);
 
 /* multiport fields (diagram_fields.c): one node per field, ports labelled */

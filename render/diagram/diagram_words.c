@@ -3,14 +3,44 @@
  * descriptions of paths and loops that the legend and the DOT output
  * share. */
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "diagram/diagram_int.h"
 
+/* The size of a subscript or a power, in per cent of the text's size: 70,
+ * or more where 70 % of size would be below 6 pt, the least size a figure
+ * is readable at (issue 31: bond-number subscripts were 5.77 pt, print's
+ * 5.25). */
+int bg_sub_percent(double size) {
+  int pct = (int)ceil(600 / size - 1e-9);
+  return pct > 70 ? pct : 70;
+}
+
+/* The Greek letter a name spells (alpha → α, Omega → Ω), or NULL: names
+ * are written in ASCII, a figure shows them as a book prints them. */
+static const char *greek(const char *name, size_t n) {
+  static const char *const word[] = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta",
+                                     "theta", "iota", "kappa", "lambda", "mu", "nu", "xi", "omicron",
+                                     "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega"};
+  static const char *const lower[] = {"α", "β", "γ", "δ", "ε", "ζ", "η", "θ", "ι", "κ", "λ", "μ",
+                                      "ν", "ξ", "ο", "π", "ρ", "σ", "τ", "υ", "φ", "χ", "ψ", "ω"};
+  static const char *const upper[] = {"Α", "Β", "Γ", "Δ", "Ε", "Ζ", "Η", "Θ", "Ι", "Κ", "Λ", "Μ",
+                                      "Ν", "Ξ", "Ο", "Π", "Ρ", "Σ", "Τ", "Υ", "Φ", "Χ", "Ψ", "Ω"};
+  for (size_t k = 0; k < sizeof word / sizeof word[0]; k++) {
+    if (strlen(word[k]) != n || tolower((unsigned char)name[0]) != word[k][0]) continue;
+    if (strncmp(name + 1, word[k] + 1, n - 1)) continue;
+    return isupper((unsigned char)name[0]) ? upper[k] : lower[k];
+  }
+  return NULL;
+}
+
 /* A name with its trailing digits (or the part after the last '_') set as a
- * subscript: a pango span, since <sub> mis-scales on scaled surfaces. */
+ * subscript: a pango span, since <sub> mis-scales on scaled surfaces. A
+ * Greek letter's name (the whole name, or the part before the subscript)
+ * is the letter: sigma1 → σ₁. */
 void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
   size_t n = strlen(name), k = n;
   while (k > 0 && isdigit((unsigned char)name[k - 1])) k--;
@@ -18,10 +48,14 @@ void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
   size_t base = k, sub = k;
   if (k == n || k == 0) base = sub = n;
   if (us && us > name && us[1]) base = (size_t)(us - name), sub = base + 1;
-  bg_markup_escapen(b, name, base);
+  const char *g = greek(name, base);
+  if (g) bg_sb_puts(b, g);
+  else bg_markup_escapen(b, name, base);
   if (sub < n) {
-    bg_sb_printf(b, "<span size=\"70%%\" rise=\"%.1fpt\">", -0.27 * font_size);
-    bg_markup_escapen(b, name + sub, n - sub);
+    bg_sb_printf(b, "<span size=\"%d%%\" rise=\"%.1fpt\">", bg_sub_percent(font_size), -0.27 * font_size);
+    const char *gs = greek(name + sub, n - sub);
+    if (gs) bg_sb_puts(b, gs);
+    else bg_markup_escapen(b, name + sub, n - sub);
     bg_sb_puts(b, "</span>");
   }
 }
@@ -62,7 +96,7 @@ void bg_gain_markup(const char *g, double size, bg_strbuf *out) {
     } else if (*p == '^' && p[1]) {
       const char *from, *to;
       p = exponent(p + 1, &from, &to);
-      bg_sb_printf(out, "<span size=\"70%%\" rise=\"%.1fpt\">", 0.42 * size);
+      bg_sb_printf(out, "<span size=\"%d%%\" rise=\"%.1fpt\">", bg_sub_percent(size), 0.42 * size);
       for (const char *q = from; q < to; q++) gain_char(out, *q);
       bg_sb_puts(out, "</span>");
     } else {
