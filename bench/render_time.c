@@ -1,9 +1,11 @@
 /* In-process timing of the diagram stages for one model: analysis, then
  * bg_diagram_build (pango measuring, Graphviz layout, scene) and each output
  * format, best of 3. Built and run by bench/render_bench.sh.
- * Usage: render_time MODEL.bg STYLE_DIR */
+ * Usage: render_time MODEL.bg STYLE_DIR [--build-only]   (--build-only: the
+ * default layers' bg_diagram_build alone, bench/layout_bench.sh) */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "causality/causality.h"
@@ -81,14 +83,15 @@ int main(int argc, char **argv) {
   static const struct { const char *name; unsigned show; } sets[] = {
       {"default layers", 0}, {"--show all", BG_SHOW_ALL}};
   static const char *const formats[] = {"svg", "pdf", "png", "dot"};
-  for (int s = 0; s < 2; s++) {
+  int build_only = argc > 3 && !strcmp(argv[3], "--build-only");
+  for (int s = 0; s < (build_only ? 1 : 2); s++) {
     bg_diagram *d = NULL;
     double tb = best_build(&b, sets[s].show, &d);
     double w, h;
     bg_diagram_size(d, &w, &h);
     printf("  %s: layout (%s) + scene %22.3f s  (page %.0f x %.0f pt)\n", sets[s].name,
            bg_diagram_engine(d), tb, w, h);
-    for (int f = 0; f < 4; f++) {
+    for (int f = 0; f < (build_only ? 0 : 4); f++) {
       size_t bytes = 0;
       double tr = best_render(d, formats[f], &dg, &bytes);
       printf("    %-32s %7.3f s  (%zu bytes)\n", formats[f], tr, bytes);

@@ -11,6 +11,13 @@
 
 /* ---------------------------------------------------------------- labels */
 
+/* The name an element's label shows: inside an instance's frame, which
+ * names the instance, its own name (R : r, not R : O1.M1.S1.r; issue 31). */
+static const char *frame_name(const bg_model *m, int e) {
+  const char *name = m->elem_name[e], *dot = strrchr(name, '.');
+  return m->ninst > 0 && m->elem_inst[e] >= 0 && dot && dot[1] ? dot + 1 : name;
+}
+
 static char *elem_markup(bg_diagram_layout *d, int e) {
   const bg_model *m = d->m;
   bg_strbuf b = {0};
@@ -19,7 +26,7 @@ static char *elem_markup(bg_diagram_layout *d, int e) {
   if (!bg_elem_is_junction(m->elem_kind[e]) && (d->show & BG_SHOW_LABELS)) {
     bg_sb_puts(&b, " : ");
     if (m->elem_label && m->elem_label[e]) bg_markup_escapen(&b, m->elem_label[e], strlen(m->elem_label[e]));
-    else bg_name_markup(&b, m->elem_name[e], d->st.font_size);
+    else bg_name_markup(&b, frame_name(m, e), d->st.font_size);
   }
   char *s = bg_arena_strdup(&d->arena, bg_sb_str(&b));
   bg_sb_free(&b);
@@ -352,7 +359,15 @@ static void drawing_fence(bg_diagram *d) {
 static void draw_all(bg_diagram *d) {
   unsigned show = d->show;
   int hk = d->o.highlight_kind;
+  int frames = d->scene.nitem;
   bg_draw_frames(d);
+  /* numbers and tags keep off the frames' lines and labels (issue 31) */
+  for (int i = frames; i < d->scene.nitem; i++) {
+    const bg_scene_item *it = &d->scene.item[i];
+    double b[4];
+    if (it->kind != BG_ITEM_TEXT) bg_obstacle_item(d, i);
+    else bg_scene_item_box(&d->scene, it, b), bg_obstacle_rect(d, b[0], b[1], b[2], b[3]);
+  }
   bg_obstacle_nodes(d);
   bg_layers_prepare(d);
   if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);

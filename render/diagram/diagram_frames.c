@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "diagram/diagram_int.h"
 
@@ -57,7 +58,9 @@ void bg_draw_frames(bg_diagram *d) {
   for (int k = 0; k < m->ninst; k++) {
     if (!(b[k].x0 <= b[k].x1)) continue; /* empty, or collapsed (drawn as a box) */
     bg_strbuf t = {0};
-    bg_markup_escape(&t, m->inst_name[k]);
+    /* inside its parent's frame, which names the parent: its own name */
+    const char *name = m->inst_name[k], *dot = strrchr(name, '.');
+    bg_markup_escape(&t, m->inst_parent[k] >= 0 && dot && dot[1] ? dot + 1 : name);
     bg_sb_puts(&t, " : ");
     bg_markup_escape(&t, m->inst_def[k]);
     double tw, th;

@@ -41,8 +41,33 @@ static const char *greek(const char *name, size_t n) {
  * subscript: a pango span, since <sub> mis-scales on scaled surfaces. A
  * Greek letter's name (the whole name, or the part before the subscript)
  * is the letter: sigma1 → σ₁. */
+static void simple_name_markup(bg_strbuf *b, const char *name, size_t n, double font_size);
+
+/* A qualified name (O1.M.S.C1, C1.e): the instance path as written and the
+ * subscript rule for the element's part only, so an instance's digit is no
+ * subscript (O1.M.S.C, not O₁.M.S.C); a variable after the element (.e,
+ * .f, .p, .q) stays as written (C₁.e). */
 void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
-  size_t n = strlen(name), k = n;
+  size_t n = strlen(name);
+  const char *end = name + n, *last = strrchr(name, '.');
+  if (last && last > name && last + 2 == end && strchr("efpq", last[1])) {
+    end = last; /* the element's part ends before the variable */
+    last = NULL;
+    for (const char *p = name; p < end; p++)
+      if (*p == '.') last = p;
+  }
+  const char *elem = last && last[1] && last > name ? last + 1 : name;
+  if (elem >= end) elem = name;
+  bg_markup_escapen(b, name, (size_t)(elem - name));
+  simple_name_markup(b, elem, (size_t)(end - elem), font_size);
+  bg_markup_escapen(b, end, strlen(end));
+}
+
+static void simple_name_markup(bg_strbuf *b, const char *whole, size_t n, double font_size) {
+  char small[256], *name = n < sizeof small ? small : bg_xmalloc(n + 1);
+  memcpy(name, whole, n);
+  name[n] = 0;
+  size_t k = n;
   while (k > 0 && isdigit((unsigned char)name[k - 1])) k--;
   const char *us = strrchr(name, '_');
   size_t base = k, sub = k;
@@ -58,6 +83,7 @@ void bg_name_markup(bg_strbuf *b, const char *name, double font_size) {
     else bg_markup_escapen(b, name + sub, n - sub);
     bg_sb_puts(b, "</span>");
   }
+  if (name != small) free(name);
 }
 
 /* The exponent after a '^' at p: a number, a name or a bracketed group
@@ -84,12 +110,67 @@ static void gain_char(bg_strbuf *out, char c) {
   else bg_markup_escapen(out, &c, 1);
 }
 
-void bg_gain_markup(const char *g, double size, bg_strbuf *out) {
-  char name[128];
+/* Whether c may stand next to a number without being part of it. */
+static int number_edge(char c) { return !c || !(isalnum((unsigned char)c) || c == '.' || c == '_' || c == '\''); }
+
+/* The length of the unsigned integer at p (not part of a name or a decimal), or 0. */
+static size_t integer_at(const char *g, const char *p) {
+  if (p > g && !number_edge(p[-1])) return 0;
+  size_t n = 0;
+  while (isdigit((unsigned char)p[n])) n++;
+  return n && p[n] != '.' ? n : 0;
+}
+
+/* One rewrite of a gain whose numbers were put in: an integer power of an
+ * integer evaluated (1^2 → 1, 2^2 → 4), a factor 1 dropped (1*s → s,
+ * x*1 → x), brackets round a single name or number dropped where they
+ * stand alone (/(s) → /s, not exp(s)). Returns whether it changed g. */
+static int simplify_once(char *g) {
+  for (char *p = g; *p; p++) {
+    size_t a = integer_at(g, p);
+    if (a && p[a] == '^') {
+      size_t b = integer_at(g, p + a + 1);
+      if (b && b < 3 && a < 6 && number_edge(p[a + 1 + b])) {
+        double v = pow(strtod(p, NULL), strtod(p + a + 1, NULL));
+        if (v < 1e9) {
+          char num[32];
+          int k = snprintf(num, sizeof num, "%.0f", v);
+          memmove(p + k, p + a + 1 + b, strlen(p + a + 1 + b) + 1);
+          memcpy(p, num, (size_t)k);
+          return 1;
+        }
+      }
+    }
+    if (p[0] == '1' && p[1] == '*' && integer_at(g, p) == 1 && (p == g || (p[-1] != '/' && p[-1] != '^'))) { /* 1*x → x */
+      memmove(p, p + 2, strlen(p + 2) + 1);
+      return 1;
+    }
+    if (p[0] == '*' && p[1] == '1' && integer_at(g, p + 1) == 1 && number_edge(p[2]) && p[2] != '^') { /* x*1 → x */
+      memmove(p, p + 2, strlen(p + 2) + 1);
+      return 1;
+    }
+    if (p[0] == '(' && (p == g || !(isalnum((unsigned char)p[-1]) || p[-1] == '_'))) {
+      char *q = p + 1;
+      while (isalnum((unsigned char)*q) || *q == '_' || *q == '.' || *q == '\'' || *q == '^') q++;
+      if (*q == ')' && q > p + 1) { /* (s) → s */
+        memmove(q, q + 1, strlen(q + 1) + 1);
+        memmove(p, p + 1, strlen(p + 1) + 1);
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+void bg_gain_markup(const char *gain, double size, bg_strbuf *out) {
+  char name[128], *g = bg_xmalloc(strlen(gain) + 1);
+  strcpy(g, gain);
+  for (int k = 0; k < 64 && simplify_once(g); k++) {
+  }
   for (const char *p = g; *p;) {
     if (isalpha((unsigned char)*p) || *p == '_') {
-      const char *e = p;
-      while (isalnum((unsigned char)*e) || *e == '_') e++;
+      const char *e = p; /* a name, qualified ones (O1.M.S.C) whole */
+      while (isalnum((unsigned char)*e) || *e == '_' || (*e == '.' && (isalpha((unsigned char)e[1]) || e[1] == '_'))) e++;
       snprintf(name, sizeof name, "%.*s", (int)(e - p), p);
       bg_name_markup(out, name, size);
       p = e;
@@ -103,6 +184,7 @@ void bg_gain_markup(const char *g, double size, bg_strbuf *out) {
       gain_char(out, *p++);
     }
   }
+  free(g);
 }
 
 /* ---------------------------------------------------------------- descriptions */

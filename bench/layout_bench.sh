@@ -1,0 +1,34 @@
+#!/bin/bash
+# Layout stays linear (issue 31): the diagram's layout and scene
+# (bg_diagram_build, default layers, default style) of a chain of 10 000
+# bonds and of a reaction network with 1 000 modulating signals, each beside
+# the same model at half the size; the exponent is log(t2/t1)/log 2 (1: linear).
+# In-process (bench/render_time.c --build-only, compiled against BGDRAW's
+# build directory), best of 3.
+# Usage: bash bench/layout_bench.sh BGDRAW [BONDS SIGNALS]   (use a Release build)
+set -eu
+BGDRAW=${1:?usage: layout_bench.sh PATH_TO_BGDRAW [BONDS SIGNALS]}
+NB=${2:-10000}
+NS=${3:-1000}
+here=$(cd "$(dirname "$0")" && pwd)
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+build=$(cd "$(dirname "$BGDRAW")" && pwd)
+libs=$(sed -e 's/.* -o test_render *//' "$build/CMakeFiles/test_render.dir/link.txt")
+(cd "$build" && cc -O2 -I"$here/../src" -I"$here/../render" "$here/render_time.c" $libs -o "$dir/render_time")
+
+time_of() { # KIND N -> seconds of bg_diagram_build
+  python3 "$here/gen_layout_models.py" "$1" "$2" "$dir/m.bg"
+  "$dir/render_time" "$dir/m.bg" "$here/../styles" --build-only | awk '/layout/ {print $(NF-6)}'
+}
+
+row() { # LABEL KIND N
+  local t1 t2
+  t1=$(time_of "$2" $(($3 / 2)))
+  t2=$(time_of "$2" "$3")
+  printf '%-34s %8.3f s %8.3f s   exponent %.2f\n' "$1" "$t1" "$t2" \
+    "$(echo "l($t2 / $t1) / l(2)" | bc -l)"
+}
+printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
+row "chain, $NB bonds" chain "$NB"
+row "reactions, $NS signals" reactions "$NS"
