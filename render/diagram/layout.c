@@ -212,27 +212,4 @@ void bg_layout_free(bg_layout *l) {
   memset(l, 0, sizeof *l);
 }
 
-static void *dup_array(const void *src, size_t n, size_t size) {
-  if (!src) return NULL;
-  void *p = bg_xmalloc(n * size);
-  memcpy(p, src, n * size);
-  return p;
-}
-
-void bg_layout_copy(const bg_layout *src, bg_layout *out) {
-  *out = *src;
-  size_t nn = (size_t)src->nnode + 1, ne = (size_t)src->nedge + 1, ns = (size_t)src->nspl;
-  out->x = dup_array(src->x, nn, sizeof *out->x);
-  out->y = dup_array(src->y, nn, sizeof *out->y);
-  out->spladr = dup_array(src->spladr, ne, sizeof *out->spladr);
-  out->spln = dup_array(src->spln, ne, sizeof *out->spln);
-  out->splx = ns ? dup_array(src->splx, ns, sizeof *out->splx) : NULL;
-  out->sply = ns ? dup_array(src->sply, ns, sizeof *out->sply) : NULL;
-  out->bendadr = dup_array(src->bendadr, ne, sizeof *out->bendadr);
-  out->bendn = dup_array(src->bendn, ne, sizeof *out->bendn);
-  size_t nk = (size_t)src->nbend + 1;
-  out->bendx = dup_array(src->bendx, nk, sizeof *out->bendx);
-  out->bendy = dup_array(src->bendy, nk, sizeof *out->bendy);
-}
-
 const char *bg_layout_graphviz_version(void) { return PACKAGE_VERSION; }

@@ -46,8 +46,6 @@ typedef struct bg_layout {
  * frees out with bg_layout_free. */
 int bg_layout_run(const bg_layout_in *in, bg_layout *out, char *err, size_t errn);
 void bg_layout_free(bg_layout *l);
-/* A deep copy of src into out (freed with bg_layout_free). */
-void bg_layout_copy(const bg_layout *src, bg_layout *out);
 /* Breadth-first distance of each node from in->root (nullable; a component
  * without a root starts from its first node);
  * order (nullable, nnode) gets the nodes in the order reached. Caller frees. */
