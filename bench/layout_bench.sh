@@ -4,7 +4,10 @@
 # bonds and of a reaction network with 1 000 modulating signals, each beside
 # the same model at half the size; the exponent is log(t2/t1)/log 2 (1: linear).
 # In-process (bench/render_time.c --build-only, compiled against BGDRAW's
-# build directory), best of 3.
+# build directory), best of 3, with the layout a model of that size gets
+# (rows above 2 000 nodes: both chains, the full reaction network) and, for
+# the reaction networks, rows at both sizes too (the half network has 1 750
+# nodes and would be laid out by dot, which is not linear).
 # Usage: bash bench/layout_bench.sh BGDRAW [BONDS SIGNALS]   (use a Release build)
 set -eu
 BGDRAW=${1:?usage: layout_bench.sh PATH_TO_BGDRAW [BONDS SIGNALS]}
@@ -17,18 +20,18 @@ build=$(cd "$(dirname "$BGDRAW")" && pwd)
 libs=$(sed -e 's/.* -o test_render *//' "$build/CMakeFiles/test_render.dir/link.txt")
 (cd "$build" && cc -O2 -I"$here/../src" -I"$here/../render" "$here/render_time.c" $libs -o "$dir/render_time")
 
-time_of() { # KIND N -> seconds of bg_diagram_build
+time_of() { # KIND N [ENGINE] -> seconds of bg_diagram_build
   python3 "$here/gen_layout_models.py" "$1" "$2" "$dir/m.bg"
-  "$dir/render_time" "$dir/m.bg" "$here/../styles" --build-only | awk '/layout/ {print $(NF-6)}'
+  "$dir/render_time" "$dir/m.bg" "$here/../styles" --build-only ${3:-} | awk '/layout/ {print $(NF-6)}'
 }
 
-row() { # LABEL KIND N
+row() { # LABEL KIND N [ENGINE]
   local t1 t2
-  t1=$(time_of "$2" $(($3 / 2)))
-  t2=$(time_of "$2" "$3")
+  t1=$(time_of "$2" $(($3 / 2)) ${4:-})
+  t2=$(time_of "$2" "$3" ${4:-})
   printf '%-34s %8.3f s %8.3f s   exponent %.2f\n' "$1" "$t1" "$t2" \
     "$(echo "l($t2 / $t1) / l(2)" | bc -l)"
 }
 printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
-row "reactions, $NS signals" reactions "$NS"
+row "reactions, $NS signals (rows)" reactions "$NS" rows

@@ -1,8 +1,9 @@
 /* In-process timing of the diagram stages for one model: analysis, then
  * bg_diagram_build (pango measuring, Graphviz layout, scene) and each output
  * format, best of 3. Built and run by bench/render_bench.sh.
- * Usage: render_time MODEL.bg STYLE_DIR [--build-only]   (--build-only: the
- * default layers' bg_diagram_build alone, bench/layout_bench.sh) */
+ * Usage: render_time MODEL.bg STYLE_DIR [--build-only [ENGINE]]   (--build-only:
+ * the default layers' bg_diagram_build alone, with ENGINE if given:
+ * bench/layout_bench.sh) */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,6 +85,7 @@ int main(int argc, char **argv) {
       {"default layers", 0}, {"--show all", BG_SHOW_ALL}};
   static const char *const formats[] = {"svg", "pdf", "png", "dot"};
   int build_only = argc > 3 && !strcmp(argv[3], "--build-only");
+  if (build_only && argc > 4) b.o.layout = argv[4];
   for (int s = 0; s < (build_only ? 1 : 2); s++) {
     bg_diagram *d = NULL;
     double tb = best_build(&b, sets[s].show, &d);
