@@ -329,6 +329,10 @@ def check(name, text):
     # bgdraw's additions
     if "reduced_form" in d:
         c.vocab("reduced_form", d["reduced_form"], {None, "ode", "dae"})
+    if "reduced_note" in d:  # only when the symbolic work budget ran out
+        c.typ("reduced_note", d["reduced_note"], str)
+        if d.get("reduced_form") is not None:
+            c.bad("reduced_note", "with reduced_form %r" % d["reduced_form"])
     if "rosenberg_andry" in d and c.keys("rosenberg_andry", d["rosenberg_andry"],
                                          ["disjoint", "satisfied"]):
         ra = d["rosenberg_andry"]

@@ -5,6 +5,7 @@
  * Drawn into a bg_scene; conventions in docs/plots.md. */
 #include "plot/plot.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -154,15 +155,15 @@ static double X(const plot *P, double t) {
   return map(t, P->t0, P->t1, P->left, P->right);
 }
 
-/* Value of x tick i: 1-2-5 steps, or decades on a log axis. */
+/* Value of x tick i: 1-2-5 steps, or every x.step-th decade on a log axis. */
 static double xtick(const plot *P, int i) {
-  return xlog(P) ? pow(10, P->x.k0 + i) : bg_plot_tick(&P->x, i);
+  return xlog(P) ? pow(10, P->x.k0 + i * P->x.step) : bg_plot_tick(&P->x, i);
 }
 
 /* Label of x tick i: the value, or 10 to the decade as markup. */
 static const char *xtick_label(const plot *P, int i, char *buf, size_t n) {
   if (!xlog(P)) return bg_plot_tick_label(&P->x, i, 0, buf, n);
-  int k = (int)P->x.k0 + i;
+  int k = (int)(P->x.k0 + i * P->x.step); /* |k| <= 324: x_axis_log keeps t0, t1 finite */
   if (k == 0 || k == 1) snprintf(buf, n, "%s", k ? "10" : "1");
   else /* a superscript in points: pango's <sup> scales from the default font, not the label's */
     snprintf(buf, n, "10<span size=\"%d\" rise=\"%d\">%s%d</span>", (int)(0.72 * P->fs_tick * 1024),
@@ -170,12 +171,18 @@ static const char *xtick_label(const plot *P, int i, char *buf, size_t n) {
   return buf;
 }
 
-/* Decade ticks between t0 and t1 (a log axis). */
+/* Decade ticks between t0 and t1 (a log axis), every decade up to 13 of
+ * them, else every 2nd, 3rd, ...: at most 13 labels. The range is made
+ * positive and finite first (frequencies that overflowed, a zero), so no
+ * infinite logarithm reaches an int. */
 static void x_axis_log(plot *P) {
+  if (!(P->t1 > 0) || !isfinite(P->t1)) P->t1 = DBL_MAX;
+  if (!(P->t0 > 0) || !isfinite(P->t0) || !(P->t0 < P->t1)) P->t0 = P->t1 / 10 > 0 ? P->t1 / 10 : DBL_MIN;
   double a = log10(P->t0), b = log10(P->t1);
-  P->x = (bg_plot_axis){P->t0, P->t1, 1, ceil(a - 1e-9), 0, BG_PLOT_NO_PREFIX, 0};
-  P->x.n = (int)(floor(b + 1e-9) - P->x.k0) + 1;
-  if (P->x.n < 0) P->x.n = 0;
+  double k0 = ceil(a - 1e-9), k1 = floor(b + 1e-9), step = 1;
+  if (k1 - k0 > 12) step = ceil((k1 - k0) / 12);
+  P->x = (bg_plot_axis){P->t0, P->t1, step, k0, 0, BG_PLOT_NO_PREFIX, 0};
+  P->x.n = k1 >= k0 ? (int)floor((k1 - k0) / step) + 1 : 0;
 }
 
 static double Y(const panel *q, double v) {
@@ -362,6 +369,7 @@ static void draw_minor_grid(plot *P, const panel *q, int k) {
   bg_scene_item *it = bg_scene_begin(P->s, BG_ITEM_STROKE, "grid minor %d", k + 1);
   it->color = mix(P->st->muted, P->st->background, 0.75);
   it->width = 0.35;
+  if (P->x.step != 1) return; /* decades too close together */
   for (double d = floor(log10(P->t0)); d <= log10(P->t1); d++)
     for (int m = 2; m <= 9; m++) {
       double v = m * pow(10, d);

@@ -321,6 +321,7 @@ void rp_sec_index(rp_ctx *c) {
   if (c->in->facts->reduced_form)
     bg_sb_printf(&b, "; after symbolic elimination: %s", c->in->facts->reduced_form);
   bg_sb_puts(&b, ".");
+  if (c->in->facts->reduced_note) bg_sb_printf(&b, " Symbolic elimination: %s.", c->in->facts->reduced_note);
   if (a->form_parameter_dependent)
     bg_sb_puts(&b, " The form depends on parameter values: an algebraic loop is linear and solvable "
                    "only while its gain differs from 1 (Equation 4.45).");

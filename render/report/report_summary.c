@@ -189,6 +189,7 @@ static void summary_table(const rp_ctx *c, rp_doc *d) {
   bg_sb_puts(&b, bg_form_name(a->form));
   if (c->in->facts->reduced_form)
     bg_sb_printf(&b, " (after elimination: %s)", c->in->facts->reduced_form);
+  else if (c->in->facts->reduced_note) bg_sb_puts(&b, " (symbolic elimination skipped: work budget)");
   row(&t, "Form", bg_sb_str(&b));
   bg_sb_clear(&b);
   if (a->index_predicted < 0) bg_sb_puts(&b, "unknown");

@@ -28,11 +28,18 @@
 #include "equations/eqsys_int.h"
 
 enum { BLOCK_MAX = 5, SIG_MAX = 4000 };
+/* Work the printed forms may take in all (bg_sym units, apart from the
+ * context's budget): past it the remaining rows print as they are. */
+#define PRINT_BUDGET BG_SYM_BUDGET
 
 struct bg_eqred {
   const bg_eqsys *s;
   bg_sym *S;
   int ode, changed;
+  int skipped;                         /* the symbolic work budget ran out: no form */
+  int printing;                        /* build the printed forms (not for the form alone) */
+  long print_left;                     /* PRINT_BUDGET not yet spent */
+  int print_cut;                       /* rows printed unsimplified: the budget ran out */
   char note[300];
   int nst, *st_u, *st_rhs, *st_print;  /* reduced states: unknown, x', x' for printing */
   int nsol, *sol_u, *sol_expr;         /* eliminated unknowns (z, and yp of dependent stores) */
@@ -320,14 +327,27 @@ static void drop_dependent(red *R) {
 
 /* The form to print: expanded, grouped by the variables with rational
  * coefficients in the params, over one denominator (bond_loop: Equation
- * 4.27). Falls back to a when that grows much larger. */
-static int print_form(bg_sym *S, int a) {
-  int n0 = bg_sym_size(S, a);
-  if (n0 > 3000) return a;
-  int c = bg_sym_collect(S, bg_sym_expand(S, a, 2000));
-  int e0 = bg_sym_together(S, c, 0), e1 = bg_sym_together(S, c, 1);
-  int n1 = bg_sym_size(S, e0), n2 = bg_sym_size(S, e1), e = n2 < n1 ? e1 : e0;
-  return (n2 < n1 ? n2 : n1) > 3 * n0 + 40 ? a : e;
+ * 4.27). Falls back to a when that grows much larger, or when the printed
+ * forms' own budget runs out (their work is not counted against the
+ * context's, so the form, ode or dae, never depends on printing). */
+static int print_form(bg_eqred *r, int a) {
+  bg_sym *S = r->S;
+  if (!r->printing || S->over) return a;
+  if (r->print_left <= 0) return r->print_cut++, a;
+  long work0 = S->work, budget0 = S->budget;
+  S->budget = work0 + r->print_left;
+  int n0 = bg_sym_size(S, a), e = a;
+  if (n0 <= 3000) {
+    int c = bg_sym_collect(S, bg_sym_expand(S, a, 2000));
+    int e0 = bg_sym_together(S, c, 0), e1 = bg_sym_together(S, c, 1);
+    int n1 = bg_sym_size(S, e0), n2 = bg_sym_size(S, e1);
+    e = n2 < n1 ? e1 : e0;
+    if ((n2 < n1 ? n2 : n1) > 3 * n0 + 40) e = a;
+  }
+  if (S->over) e = a, S->over = 0, r->print_cut++;
+  r->print_left -= S->work - work0;
+  S->work = work0, S->budget = budget0;
+  return e;
 }
 
 static void assemble(red *R) {
@@ -344,7 +364,7 @@ static void assemble(red *R) {
     if (dropped) continue;
     int e = s->row_kind[i] == 0 ? R->row[i] : bg_sym_leaf(S, SYM_YP, i);
     e = bg_sym_subst(S, e, sol_cb, R);
-    r->st_u[r->nst] = i, r->st_rhs[r->nst] = e, r->st_print[r->nst++] = print_form(S, e);
+    r->st_u[r->nst] = i, r->st_rhs[r->nst] = e, r->st_print[r->nst++] = print_form(r, e);
   }
   r->sol_u = bg_xmalloc((size_t)(R->nw + 1) * sizeof(int));
   r->sol_expr = bg_xmalloc((size_t)(R->nw + 1) * sizeof(int));
@@ -357,7 +377,7 @@ static void assemble(red *R) {
   for (int k = 0; k < R->nw; k++) {
     if (R->w_isyp[k]) continue;
     r->sol_u[r->nsol] = R->w_u[k];
-    r->sol_expr[r->nsol++] = print_form(S, bg_sym_subst(S, R->sol[k], sol_cb, R));
+    r->sol_expr[r->nsol++] = print_form(r, bg_sym_subst(S, R->sol[k], sol_cb, R));
   }
 }
 
@@ -401,10 +421,10 @@ static void mass_rows(red *R) {
       for (int j = s->nx; j < s->n; j++) { /* sum_j M_kj v_j', each M_kj printed whole */
         if (!R->lagv[j]) continue;
         int yp = bg_sym_leaf(S, SYM_YP, j), M = bg_sym_scale(S, sg, bg_sym_diff(S, E, yp));
-        if (S->node[M].kind != SYM_NUM || S->node[M].c != 0) t[nt++] = bg_sym_mul(S, print_form(S, M), yp);
+        if (S->node[M].kind != SYM_NUM || S->node[M].c != 0) t[nt++] = bg_sym_mul(S, print_form(r, M), yp);
       }
       r->mass_lhs[r->nmass] = bg_sym_sum(S, 0, nt, t, NULL);
-      r->mass_rhs[r->nmass++] = print_form(S, bg_sym_scale(S, sg, f));
+      r->mass_rhs[r->nmass++] = print_form(r, bg_sym_scale(S, sg, f));
       free(t);
     }
   }
@@ -428,6 +448,7 @@ static void describe(red *R) {
 static int collect_and_eliminate(red *R) {
   collect_w(R);
   R->sol = bg_xcalloc((size_t)R->nw + 1, sizeof(int));
+  if (bg_sym_over(R->S)) return -8;
   if (bg_sym_full(R->S)) {
     note(R->r, "the equations are too large for symbolic elimination");
     return -7;
@@ -435,7 +456,21 @@ static int collect_and_eliminate(red *R) {
   return eliminate(R);
 }
 
+/* The budget ran out: whatever was built is dropped, the form is unknown. */
+static void skip(bg_eqred *r) {
+  r->ode = r->changed = 0, r->skipped = 1;
+  r->nst = r->nsol = r->ndef = r->nw = r->nmass = 0;
+  note(r, BG_EQRED_SKIPPED);
+}
+
+static void reduce_budgeted(red *R);
+
 static void reduce(red *R) {
+  reduce_budgeted(R);
+  if (bg_sym_over(R->S)) skip(R->r);
+}
+
+static void reduce_budgeted(red *R) {
   bg_eqred *r = R->r;
   const bg_eqsys *s = R->s;
   substitute_all(R);
@@ -470,10 +505,12 @@ static void reduce(red *R) {
             "balances without accelerations differentiated once)");
 }
 
-static bg_eqred *build(const bg_eqsys *s, const unsigned char *keep) {
+static bg_eqred *build(const bg_eqsys *s, const unsigned char *keep, int printing) {
   bg_eqred *r = bg_xcalloc(1, sizeof *r);
   r->s = s;
   r->S = bg_sym_new(s->m);
+  r->S->budget = BG_SYM_BUDGET;
+  r->printing = printing, r->print_left = PRINT_BUDGET;
   r->y = bg_xcalloc((size_t)s->n + 1, sizeof *r->y);
   r->yp = bg_xcalloc((size_t)s->n + 1, sizeof *r->yp);
   r->inv = bg_xcalloc((size_t)s->n + 1, 1);
@@ -494,10 +531,10 @@ static bg_eqred *build(const bg_eqsys *s, const unsigned char *keep) {
   return r;
 }
 
-bg_eqred *bg_eqred_build(const bg_eqsys *s) { return build(s, NULL); }
+bg_eqred *bg_eqred_build(const bg_eqsys *s) { return build(s, NULL, 1); }
 
 bg_eqred *bg_eqred_build_keep(const bg_eqsys *s, const unsigned char *keep) {
-  return build(s, keep);
+  return build(s, keep, 1);
 }
 
 int bg_eqred_state_rhs(const bg_eqred *r, int k) { return r->ode ? r->st_rhs[k] : -1; }
@@ -513,6 +550,17 @@ static int reduced_cb(void *ctx, int kind, int ref) {
     if (r->w_u[k] == ref && r->w_isyp[k] == (kind == SYM_YP)) return r->w_sol[k];
   for (int k = 0; kind == SYM_YP && k < r->nst; k++)
     if (r->st_u[k] == ref) return r->st_rhs[k];
+  return -1;
+}
+
+int bg_eqred_unknown_expr(bg_eqred *r, int u) {
+  if (!r->ode) return -1;
+  for (int k = 0; k < r->nst; k++)
+    if (r->st_u[k] == u) return bg_sym_leaf(r->S, SYM_Y, u);
+  for (int k = 0; k < r->ndef; k++)
+    if (r->def_u[k] == u) return r->def_expr[k];
+  for (int k = 0; k < r->nw; k++)
+    if (r->w_u[k] == u && !r->w_isyp[k]) return r->w_sol[k];
   return -1;
 }
 
@@ -533,12 +581,15 @@ void bg_eqred_free(bg_eqred *r) {
   free(r);
 }
 
-const char *bg_eqred_form(const bg_eqsys *s) {
-  bg_eqred *r = bg_eqred_build(s);
-  const char *f = r->ode ? "ode" : "dae";
+const char *bg_eqred_form(const bg_eqsys *s, const char **why) {
+  bg_eqred *r = build(s, NULL, 0); /* the form only: no printed forms */
+  const char *f = r->skipped ? NULL : r->ode ? "ode" : "dae";
+  if (why) *why = r->skipped ? BG_EQRED_SKIPPED : NULL;
   bg_eqred_free(r);
   return f;
 }
+
+int bg_eqred_skipped(const bg_eqred *r) { return r->skipped; }
 
 int bg_eqred_is_ode(const bg_eqred *r) { return r->ode; }
 int bg_eqred_invariant(const bg_eqred *r, int i) { return i >= 0 && i < r->s->n && r->inv[i]; }
@@ -646,7 +697,11 @@ static void print_mass_lhs(bg_eqred *r, int lhs, int latex, bg_strbuf *out) {
 
 void bg_eqred_print(bg_eqred *r, int latex, bg_strbuf *out) {
   if (r->ode && !r->changed) return;
-  if (!latex) bg_sb_printf(out, "# reduced form: %s%s%s\n", r->ode ? "" : "DAE (", r->note, r->ode ? "" : ")");
+  if (!latex && r->skipped) bg_sb_printf(out, "# reduced form: %s\n", r->note);
+  else if (!latex) bg_sb_printf(out, "# reduced form: %s%s%s\n", r->ode ? "" : "DAE (", r->note, r->ode ? "" : ")");
+  if (!latex && r->print_cut)
+    bg_sb_printf(out, "# %d row%s printed unsimplified: printing exceeded its budget of " BG_SYM_BUDGET_WORDS " operations\n",
+                 r->print_cut, r->print_cut == 1 ? "" : "s");
   if (!r->ode) return;
   if (r->nmass && !latex) bg_sb_puts(out, "# Lagrange equations, mass-matrix form M(x) v' = f(x)\n");
   for (int k = 0; k < r->nmass; k++) {
@@ -680,7 +735,8 @@ static void json_row(bg_eqred *r, int u, int deriv, int e, const char *kind, int
 /* The rows the text prints, in its order: the eliminated unknowns, the
  * dependent stores that are no longer states (C1.q = 1), the state rows. */
 void bg_eqred_json(bg_eqred *r, bg_strbuf *out) {
-  bg_sb_printf(out, "\"reduced_form\": \"%s\", \"reduced_note\": ", r->ode ? "ode" : "dae");
+  if (r->skipped) bg_sb_puts(out, "\"reduced_form\": null, \"reduced_note\": ");
+  else bg_sb_printf(out, "\"reduced_form\": \"%s\", \"reduced_note\": ", r->ode ? "ode" : "dae");
   bg_sb_json_str(out, r->note);
   bg_sb_puts(out, ", \"reduced\": [");
   int first = 1;

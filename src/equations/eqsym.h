@@ -30,9 +30,16 @@ void bg_eqsym_json_defs(bg_sym *S, const bg_eqsys *s, bg_strbuf *seen, int *firs
 typedef struct bg_eqred bg_eqred;
 bg_eqred *bg_eqred_build(const bg_eqsys *s);
 void bg_eqred_free(bg_eqred *r);
-/* "ode" or "dae" (static strings): the reduced form of s, built and freed
- * (the analysis JSON's reduced_form). */
-const char *bg_eqred_form(const bg_eqsys *s);
+/* "ode" or "dae" (static strings): the reduced form of s, built (without
+ * the printed forms) and freed (the analysis JSON's reduced_form). NULL when
+ * the symbolic work budget ran out; then *why (if why is not NULL) is
+ * BG_EQRED_SKIPPED, else NULL. */
+const char *bg_eqred_form(const bg_eqsys *s, const char **why);
+#define BG_EQRED_SKIPPED                                                                  \
+  "skipped: the symbolic work exceeds its budget of " BG_SYM_BUDGET_WORDS " operations (the equations, " \
+  "the numeric index and the simulation do not need it)"
+/* 1 when the budget ran out (no form: is_ode 0, the note BG_EQRED_SKIPPED). */
+int bg_eqred_skipped(const bg_eqred *r);
 /* 1 when the equations became (or were) an explicit ODE x' = f(t, x). */
 int bg_eqred_is_ode(const bg_eqred *r);
 /* 1 when something was eliminated or combined (the reduced form differs). */
@@ -78,6 +85,10 @@ int bg_eqred_state_rhs(const bg_eqred *r, int k);
 /* Model expression xroot (an output) in the reduced states, t, params and
  * the kept leaves; -1 when not an ODE or not built with keep. */
 int bg_eqred_reduce_expr(bg_eqred *r, int xroot);
+/* Unknown u of s in the reduced variables: a reduced state's leaf, a
+ * dependent store's expression (no longer a state), an eliminated unknown's
+ * solution; -1 when u is none of them or the form is not an ODE. */
+int bg_eqred_unknown_expr(bg_eqred *r, int u);
 /* The symbols of the reduced form (its aliases and their derivatives). */
 bg_sym *bg_eqred_sym(bg_eqred *r);
 #endif

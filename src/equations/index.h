@@ -41,6 +41,8 @@ typedef struct bg_index_facts {
   const char *numeric_skipped;     /* why not computed (too many unknowns); nullable */
   const char *disagreement;        /* the prediction and the numeric index disagree: why */
   const char *reduced_form;        /* "ode" / "dae" after symbolic elimination; NULL: not done */
+  const char *reduced_note;        /* why reduced_form is NULL although the equations were
+                                      formed (the symbolic work budget ran out); else NULL */
   const struct bg_indexred *reduction; /* index reduction; NULL: not tried */
 } bg_index_facts;
 /* Algorithm 4.1 ran to a verdict (an index, or a singular pencil). */

@@ -194,6 +194,14 @@ static int differentiate_coloured(ir_work *W, colours *C, int nv0, int ne0) {
   return 0;
 }
 
+/* Why the symbolic work stopped: the node limit or the work budget. */
+static void too_large(ir_work *W) {
+  if (bg_sym_over(W->S))
+    snprintf(W->why, sizeof W->why, "the differentiated equations exceed the symbolic work budget "
+             "of " BG_SYM_BUDGET_WORDS " operations");
+  else snprintf(W->why, sizeof W->why, "the differentiated equations grow too large");
+}
+
 static int pantelides(ir_work *W) {
   int n0 = W->ne;
   for (int k = 0; k < n0; k++) {
@@ -206,7 +214,7 @@ static int pantelides(ir_work *W) {
       free(st), free(C.ce), free(C.cv);
       if (ok) break;
       if (rc || bg_sym_full(W->S)) {
-        if (!W->why[0]) snprintf(W->why, sizeof W->why, "the differentiated equations grow too large");
+        if (!W->why[0]) too_large(W);
         return -1;
       }
       i = W->e_der[i];
@@ -296,8 +304,12 @@ static double jac_entry(ir_work *W, int e, int v) {
 static int select_dummies(ir_work *W, const int *H, int nh, int *Z, int nz, int *sel) {
   bg_sort(Z, (size_t)nz, sizeof *Z, cmp_pref, W);
   double *G = bg_xcalloc((size_t)nh * nz + 1, sizeof(double)), *M = bg_xmalloc(((size_t)nh * nz + 1) * sizeof(double));
-  for (int c = 0; c < nz; c++)
+  for (int c = 0; c < nz && !bg_sym_full(W->S); c++)
     for (int r = 0; r < nh; r++) G[(size_t)c * nh + r] = jac_entry(W, H[r], Z[c]);
+  if (bg_sym_full(W->S)) {
+    free(G), free(M);
+    return -1;
+  }
   for (int r = 0; r < nh; r++) {
     double mx = 0;
     for (int c = 0; c < nz; c++) mx = fmax(mx, fabs(G[(size_t)c * nh + r]));
@@ -325,7 +337,8 @@ static int dummy_derivatives(ir_work *W) {
     if (W->v_der[v] < 0 && W->v_anti[v] >= 0) Z[nz++] = v;
   while (nh > 0 && rc == 0) {
     if (nz < nh || select_dummies(W, H, nh, Z, nz, sel)) {
-      snprintf(W->why, sizeof W->why, "no regular choice of dummy derivatives at the initial "
+      if (bg_sym_full(W->S)) too_large(W);
+      else snprintf(W->why, sizeof W->why, "no regular choice of dummy derivatives at the initial "
                "point: the differentiated constraints are singular there");
       rc = -1;
       break;
@@ -395,7 +408,9 @@ static int reduce(ir_work *W, bg_indexred *out) {
   }
   initial_values(W);
   if (dummy_derivatives(W)) return -1;
-  out->reduced = ir_build(W);
+  out->reduced = bg_sym_full(W->S) ? NULL : ir_build(W);
+  if (out->reduced && bg_sym_full(W->S)) bg_eqsys_free(out->reduced), out->reduced = NULL;
+  if (!out->reduced && bg_sym_full(W->S)) too_large(W);
   if (!out->reduced) return -1;
   out->index = reduced_index(out->reduced);
   if (out->index < 0 || out->index > 1) {
@@ -416,6 +431,7 @@ int bg_indexred_run(const bg_eqsys *s, bg_indexred *out) {
   W.s = s, W.n = s->n;
   W.S = bg_sym_new(s->m);
   W.S->max_nodes = IR_MAX_NODES;
+  W.S->budget = BG_SYM_BUDGET;
   if (reduce(&W, out)) {
     char buf[600];
     snprintf(buf, sizeof buf, "index reduction failed: %s", W.why[0] ? W.why : "unknown reason");

@@ -407,5 +407,10 @@ void bg_json_write_analysis(const bg_model *m, const bg_analysis *a, const bg_in
   /* set by the equations stage after symbolic elimination; null until then */
   key(o, "reduced_form");
   str_or_null(o, f ? f->reduced_form : NULL);
+  if (f && f->reduced_note) { /* only when the symbolic work budget ran out */
+    bg_sb_puts(o, ",\n");
+    key(o, "reduced_note");
+    bg_sb_json_str(o, f->reduced_note);
+  }
   bg_sb_puts(o, "\n}\n");
 }

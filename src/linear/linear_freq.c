@@ -202,9 +202,17 @@ int bg_linear_freqs(const bg_linear *l, const bg_model *m, int nw, double *w) {
     lo = small > 0 ? pow(10, floor(log10(small)) - 1) : hi * 1e-7;
   }
   if (hi / lo > 1e12) lo = hi * 1e-12; /* at most 12 decades */
-  if (m->linear.w_min > 0) lo = m->linear.w_min;
-  if (m->linear.w_max > 0) hi = m->linear.w_max;
+  const bg_linspec *ls = &m->linear; /* the model checked them: positive, finite, ordered */
+  if (ls->w_min > 0 && isfinite(ls->w_min)) lo = ls->w_min;
+  if (ls->w_max > 0 && isfinite(ls->w_max)) hi = ls->w_max;
   if (!(hi > lo)) hi = lo * 100;
+  /* one bound given, the other automatic: at most BG_LIN_MAX_DECADES between them */
+  if (hi / lo > BG_LIN_MAX_RANGE) {
+    if (ls->w_min > 0) hi = lo * BG_LIN_MAX_RANGE;
+    else lo = hi / BG_LIN_MAX_RANGE;
+  }
+  /* evenly spaced in log space; hi / lo <= 10^30 is finite (1e-200 .. 1e200,
+   * refused by the model, overflowed it and made every frequency inf) */
   for (int k = 0; k < nw; k++) w[k] = nw > 1 ? lo * pow(hi / lo, (double)k / (nw - 1)) : lo;
   return nw;
 }

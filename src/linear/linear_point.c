@@ -24,6 +24,8 @@ static double max_abs(const double *v, int n) {
 /* One Newton step dy solving Fy dy = -F; *singular set when the Jacobian has
  * rank below n (minimum-norm least-squares step then). */
 static int newton_step(double *Fy, const double *F, int n, double *dy, int *singular) {
+  *singular = 0;
+  if (n == 0) return 0; /* LAPACK refuses n = 0 (its leading dimension must be >= 1) */
   double *J = bg_xmalloc((size_t)n * n * sizeof *J), *rhs = bg_xmalloc((size_t)n * sizeof *rhs);
   lapack_int *piv = bg_xmalloc((size_t)n * sizeof *piv);
   memcpy(J, Fy, (size_t)n * n * sizeof *J);
@@ -117,7 +119,7 @@ static void check_unique(bg_eqsys *s, double t, const double *y, bg_strbuf *note
 int bg_lin_point(bg_eqsys *s, double t, int steady, double *y, bg_strbuf *note) {
   int n = bg_eqsys_n(s), sing = 0;
   bg_eqsys_initial(s, y);
-  if (!steady) return 0;
+  if (!steady || n == 0) return 0; /* no unknowns: the operating point is the inputs alone */
   int rc = newton(s, t, y, &sing);
   if (rc < 0) {
     bg_sb_printf(note, "no steady state found: %s", bg_eqsys_error(s) ? bg_eqsys_error(s)

@@ -157,7 +157,8 @@ static void print_text(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
   for (int k = 0; k < l->nu; k++) bg_sb_printf(o, "%s%s", k ? ", " : "", l->uname[k]);
   bg_sb_puts(o, l->nu ? "\noutputs: " : "none\noutputs: ");
   for (int k = 0; k < l->ny; k++) bg_sb_printf(o, "%s%s", k ? ", " : "", l->yname[k]);
-  bg_sb_puts(o, l->outputs_are_states ? " (the states: no output statement)\n" : "\n");
+  if (l->outputs_are_states && !l->ny) bg_sb_puts(o, "none (no output statement and no states)\n");
+  else bg_sb_puts(o, l->outputs_are_states ? " (the states: no output statement)\n" : "\n");
   if (l->reduced && l->n <= 40) {
     bg_sb_puts(o, l->n ? "states: " : "states: none");
     for (int i = 0; i < l->n; i++) bg_sb_printf(o, "%s%s", i ? ", " : "", l->uname_all[l->state[i]]);

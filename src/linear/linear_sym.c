@@ -60,14 +60,14 @@ static int state_rows(symctx *X, bg_eqred *r) {
 static int output_rows(symctx *X, bg_eqred *r) {
   int n = X->n, ny = X->ny;
   for (int i = 0; i < ny; i++) {
-    int h = X->l->outputs_are_states ? -1 : bg_eqred_reduce_expr(r, X->m->output_expr[i]);
-    if (!X->l->outputs_are_states && h < 0) return -1;
+    /* without an output statement output i is unknown i: a state, or a
+     * dependent store the reduction expressed through the others */
+    int h = X->l->outputs_are_states ? bg_eqred_unknown_expr(r, i) : bg_eqred_reduce_expr(r, X->m->output_expr[i]);
+    if (h < 0) return -1;
     for (int j = 0; j < n; j++)
-      X->C[(size_t)j * ny + i] = h < 0 ? bg_sym_num(X->S, X->l->state[j] == i)
-                                       : bg_sym_diff(X->S, h, bg_sym_leaf(X->S, SYM_Y, X->l->state[j]));
+      X->C[(size_t)j * ny + i] = bg_sym_diff(X->S, h, bg_sym_leaf(X->S, SYM_Y, X->l->state[j]));
     for (int j = 0; j < X->nu; j++)
-      X->D[(size_t)j * ny + i] = h < 0 ? bg_sym_num(X->S, 0)
-                                       : bg_sym_diff(X->S, h, bg_sym_leaf(X->S, SYM_SIG, X->own[j]));
+      X->D[(size_t)j * ny + i] = bg_sym_diff(X->S, h, bg_sym_leaf(X->S, SYM_SIG, X->own[j]));
   }
   return 0;
 }

@@ -208,6 +208,9 @@ typedef struct bg_linspec {
   double t_end;        /* step and impulse responses; 0: automatic */
   bg_srcloc loc;
 } bg_linspec;
+/* The widest frequency range: w_max / w_min at most 10^30 (docs/linear.md). */
+#define BG_LIN_MAX_DECADES 30
+#define BG_LIN_MAX_RANGE 1e30
 
 typedef struct bg_layoutspec {
   const char *engine;  /* "dot" (default), "neato", "fdp", "sfdp", "pinned" */

@@ -518,12 +518,16 @@ static void st_linearise(bg_build *b, const bg_ast_stmt *s) {
   static const char *const positive[] = {"w_min", "w_max", "t_end"};
   const double vals[] = {l->w_min, l->w_max, l->t_end};
   for (int i = 0; i < 3; i++)
-    if (find_opt(s, positive[i]) && !(vals[i] > 0))
-      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be positive, not %g",
-                    positive[i], vals[i]);
+    if (find_opt(s, positive[i]) && !(vals[i] > 0 && isfinite(vals[i])))
+      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be a positive finite "
+                    "number, not %g", positive[i], isnan(vals[i]) ? NAN : vals[i]); /* not -nan */
   if (l->w_min > 0 && l->w_max > 0 && !(l->w_max > l->w_min))
     bg_diag_error(b->dg, find_opt(s, "w_max")->value->loc, "w_max (%g) must be greater than "
                   "w_min (%g)", l->w_max, l->w_min);
+  else if (isfinite(l->w_min) && isfinite(l->w_max) && l->w_min > 0 && l->w_max / l->w_min > BG_LIN_MAX_RANGE)
+    bg_diag_error(b->dg, find_opt(s, "w_max")->value->loc, "w_max / w_min (%g / %g) spans more "
+                  "than %d decades, the limit of a frequency response", l->w_max, l->w_min,
+                  BG_LIN_MAX_DECADES);
   const bg_ast_option *in = find_opt(s, "inputs");
   if (!in) return;
   l->inputs_given = 1;

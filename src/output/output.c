@@ -73,6 +73,7 @@ static bg_output_status write_check(bg_output *w, const bg_output_kind *k, const
   bg_model_summary(r->model, sb);
   bg_sb_putc(sb, '\n');
   bg_analysis_summary(r->model, &r->analysis, sb);
+  if (r->facts.reduced_note) bg_sb_printf(sb, "reduced form: %s\n", r->facts.reduced_note);
   if (r->index_computed) {
     bg_sb_puts(sb, "numeric index: ");
     if (r->index.index >= 0) bg_sb_printf(sb, "%d", r->index.index);

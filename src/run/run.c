@@ -91,8 +91,10 @@ static void derive_equations(bg_run *r) {
   r->eqsys = bg_eqsys_build(r->model, &r->analysis, &eqd);
   if (!r->eqsys)
     r->eqsys_problem = strdup(eqd.n ? eqd.items[0].msg : "the equations could not be formed");
-  else /* what the equations become after symbolic elimination */
-    r->facts.reduced_form = bg_eqred_form(r->eqsys);
+  else { /* what the equations become after symbolic elimination */
+    r->facts.reduced_form = bg_eqred_form(r->eqsys, &r->facts.reduced_note);
+    if (r->facts.reduced_note) bg_logf(&r->o.log, BG_LOG_PROGRESS, "reduced form %s", r->facts.reduced_note);
+  }
   bg_diags_free(&eqd);
 }
 

@@ -28,7 +28,13 @@ void bg_sym_free(bg_sym *S) {
   free(S);
 }
 
-int bg_sym_full(const bg_sym *S) { return S->nnode > S->max_nodes; }
+int bg_sym_full(const bg_sym *S) { return S->over || S->nnode > S->max_nodes; }
+int bg_sym_over(const bg_sym *S) { return S->over; }
+
+void bg_sym_spend(bg_sym *S, long n) {
+  S->work += n;
+  if (S->budget > 0 && S->work > S->budget) S->over = 1;
+}
 
 static unsigned hash_mix(unsigned h, unsigned x) {
   h ^= x + 0x9e3779b9u + (h << 6) + (h >> 2);
@@ -80,6 +86,7 @@ static void rehash(bg_sym *S) {
 /* The unique node with these fields (w NULL: all weights 1). */
 static int intern(bg_sym *S, int kind, int ref, double c, int n, const int *args, const double *w) {
   if (c == 0) c = 0;
+  bg_sym_spend(S, 1 + n);
   unsigned h = node_hash(kind, ref, c, n, args, w);
   unsigned p = h & (unsigned)(S->captab - 1);
   for (; S->tab[p] >= 0; p = (p + 1) & (unsigned)(S->captab - 1))
@@ -129,8 +136,11 @@ void bg_sym_dalias_info(const bg_sym *S, int ref, int *alias, int *var) {
 int bg_sym_leaf(bg_sym *S, int kind, int ref) { return intern(S, kind, ref, 0, 0, NULL, NULL); }
 
 /* ------------------------------------------------------------ order */
-/* Structural order (the order of sorted terms); 0 only for equal ids. */
-static int sym_cmp(const bg_sym *S, int a, int b) {
+/* Structural order (the order of sorted terms); 0 only for equal ids. One
+ * step per node pair visited: different canonical nodes always differ, so
+ * the walk follows a single path down to the first difference. */
+static int cmp_rec(const bg_sym *S, int a, int b, long *steps) {
+  (*steps)++;
   if (a == b) return 0;
   const bg_symnode *x = &S->node[a], *y = &S->node[b];
   if (x->kind != y->kind) return x->kind < y->kind ? -1 : 1;
@@ -138,7 +148,7 @@ static int sym_cmp(const bg_sym *S, int a, int b) {
   if (x->ref != y->ref) return x->ref < y->ref ? -1 : 1;
   int n = x->n < y->n ? x->n : y->n;
   for (int k = 0; k < n; k++) {
-    int r = sym_cmp(S, S->arg[x->adr + k], S->arg[y->adr + k]);
+    int r = cmp_rec(S, S->arg[x->adr + k], S->arg[y->adr + k], steps);
     if (r) return r;
   }
   if (x->n != y->n) return x->n < y->n ? -1 : 1;
@@ -163,15 +173,32 @@ static void tv_push(tv *v, int t, double w) {
 }
 static void tv_free(tv *v) { free(v->t), free(v->w); }
 
-/* Insertion sort by structural order (terms and factors are few), stable. */
-static void tv_sort(const bg_sym *S, tv *v) {
-  for (int i = 1; i < v->n; i++) {
-    int t = v->t[i];
-    double w = v->w[i];
-    int j = i - 1;
-    while (j >= 0 && sym_cmp(S, v->t[j], t) > 0) v->t[j + 1] = v->t[j], v->w[j + 1] = v->w[j], j--;
-    v->t[j + 1] = t, v->w[j + 1] = w;
+/* Stable merge sort by structural order (a sum may have thousands of terms:
+ * insertion sort was quadratic); the comparisons' steps are work. */
+static void tv_merge(const bg_sym *S, tv *v, int lo, int hi, int *tt, double *tw, long *steps) {
+  if (hi - lo < 2) return;
+  int mid = lo + (hi - lo) / 2;
+  tv_merge(S, v, lo, mid, tt, tw, steps), tv_merge(S, v, mid, hi, tt, tw, steps);
+  if (cmp_rec(S, v->t[mid - 1], v->t[mid], steps) <= 0) return; /* already in order */
+  int i = lo, j = mid, k = lo;
+  while (i < mid && j < hi) {
+    if (cmp_rec(S, v->t[i], v->t[j], steps) <= 0) tt[k] = v->t[i], tw[k++] = v->w[i++];
+    else tt[k] = v->t[j], tw[k++] = v->w[j++];
   }
+  while (i < mid) tt[k] = v->t[i], tw[k++] = v->w[i++];
+  while (j < hi) tt[k] = v->t[j], tw[k++] = v->w[j++];
+  memcpy(v->t + lo, tt + lo, (size_t)(hi - lo) * sizeof *tt);
+  memcpy(v->w + lo, tw + lo, (size_t)(hi - lo) * sizeof *tw);
+}
+
+static void tv_sort(bg_sym *S, tv *v) {
+  if (v->n < 2) return;
+  int *tt = bg_xmalloc((size_t)v->n * sizeof *tt);
+  double *tw = bg_xmalloc((size_t)v->n * sizeof *tw);
+  long steps = 0;
+  tv_merge(S, v, 0, v->n, tt, tw, &steps);
+  bg_sym_spend(S, steps);
+  free(tt), free(tw);
 }
 
 /* a + b with the exact-cancellation rule; *mag collects |terms|. */
@@ -375,6 +402,36 @@ int bg_sym_table(bg_sym *S, int table, int x) {
 int bg_sym_dtable(bg_sym *S, int table, int x) { return intern(S, SYM_DTABLE, table, 0, 1, &x, NULL); }
 
 /* ------------------------------------------------------------ model expressions */
+/* A chain of products and quotients (q1*q2*...*q256, a field's gradient) as
+ * one product: built pairwise, each step copied and sorted all factors so
+ * far (cubic in the chain's length). Factors in the chain's order. */
+static int from_x_product(bg_sym *S, int root, const int *state_y, const int *store_y) {
+  const bg_model *m = S->m;
+  int cap = 16, n = 0, nst = 0, *b = bg_xmalloc((size_t)cap * sizeof *b), *st = bg_xmalloc((size_t)cap * sizeof *st);
+  double *e = bg_xmalloc((size_t)cap * sizeof *e), *se = bg_xmalloc((size_t)cap * sizeof *se);
+  st[nst] = root, se[nst++] = 1;
+  while (nst > 0) { /* right operands pushed first: factors come out left to right */
+    int x = st[--nst];
+    double ex = se[nst];
+    const bg_xnode *nd = &m->xnode[x];
+    if (nst + 2 > cap || n + 1 > cap) {
+      cap *= 2;
+      b = bg_xrealloc(b, (size_t)cap * sizeof *b), st = bg_xrealloc(st, (size_t)cap * sizeof *st);
+      e = bg_xrealloc(e, (size_t)cap * sizeof *e), se = bg_xrealloc(se, (size_t)cap * sizeof *se);
+    }
+    int folds = m->xnode[nd->arg[0]].op == BG_X_NUM && m->xnode[nd->arg[1]].op == BG_X_NUM;
+    if ((nd->op == BG_X_MUL || nd->op == BG_X_DIV) && !(folds && x != root)) { /* 2/3: folded as before */
+      st[nst] = nd->arg[1], se[nst++] = nd->op == BG_X_DIV ? -ex : ex;
+      st[nst] = nd->arg[0], se[nst++] = ex;
+    } else {
+      b[n] = bg_sym_from_x(S, x, state_y, store_y), e[n++] = ex;
+    }
+  }
+  int r = bg_sym_prod(S, 1, n, b, e);
+  free(b), free(st), free(e), free(se);
+  return r;
+}
+
 int bg_sym_from_x(bg_sym *S, int root, const int *state_y, const int *store_y) {
   const bg_model *m = S->m;
   const bg_xnode *n = &m->xnode[root];
@@ -392,6 +449,10 @@ int bg_sym_from_x(bg_sym *S, int root, const int *state_y, const int *store_y) {
     return bg_sym_leaf(S, SYM_Y, store_y[n->ref]);
   case BG_X_EFFORT: return bg_sym_leaf(S, SYM_SIG, 2 * n->ref);
   case BG_X_FLOW: return bg_sym_leaf(S, SYM_SIG, 2 * n->ref + 1);
+  case BG_X_MUL: case BG_X_DIV:
+    if (m->xnode[n->arg[0]].op != BG_X_NUM || m->xnode[n->arg[1]].op != BG_X_NUM)
+      return from_x_product(S, root, state_y, store_y);
+    break;
   default: break;
   }
   for (int k = 0; k < n->nargs && k < 3; k++) a[k] = bg_sym_from_x(S, n->arg[k], state_y, store_y);

@@ -70,6 +70,13 @@ typedef struct bg_sym {
   int capmemo;
   unsigned gen;
   int max_nodes; /* soft limit: constructors keep working, bg_sym_full() says so */
+  /* Work budget (deterministic, no clock): every node interned, every step
+   * of a structural comparison and every node an operation visits costs one
+   * unit. 0: unlimited. Past it `over` is set: the operations return at once
+   * with meaningless results and bg_sym_full() is 1, so the caller drops all
+   * it built (docs/equations.md "Work budget"). */
+  long work, budget;
+  int over;
   /* aliases: expression by ref (-1 none); partial derivatives (alias ref, leaf, expression) */
   int nalias, *alias_expr;
   int ndalias, *dalias_of, *dalias_var, *dalias_expr;
@@ -77,8 +84,19 @@ typedef struct bg_sym {
 
 bg_sym *bg_sym_new(const bg_model *m);
 void bg_sym_free(bg_sym *S);
-/* 1 when the context holds more than S->max_nodes nodes (callers give up). */
+/* 1 when the context holds more than S->max_nodes nodes or its work budget
+ * ran out (callers give up and drop every result of the context). */
 int bg_sym_full(const bg_sym *S);
+/* 1 when the work budget ran out (S->over). */
+int bg_sym_over(const bg_sym *S);
+/* The budget of a context whose results may be dropped: symbolic
+ * elimination, index reduction. About a twentieth of a second of work; the
+ * examples need at most 1 500 units, generated 2000-bond chains, ladders
+ * and grids 100 000 (docs/equations.md "Work budget"). */
+#define BG_SYM_BUDGET 2000000L
+#define BG_SYM_BUDGET_WORDS "2 million" /* the same, for messages */
+/* Counts n units of work against the budget. */
+void bg_sym_spend(bg_sym *S, long n);
 
 /* ---------------------------------------------------------------- building */
 int bg_sym_num(bg_sym *S, double c);

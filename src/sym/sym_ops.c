@@ -71,6 +71,8 @@ static int rebuild(bg_sym *S, const bg_symnode *nd, const int *t, const double *
 static int subst_rec(bg_sym *S, int a, bg_sym_substfn f, void *ctx, memo *M) {
   bg_symnode nd = S->node[a];
   double got;
+  if (S->over) return a;
+  bg_sym_spend(S, 1);
   if (nd.kind == SYM_NUM) return a;
   if (nd.n == 0) {
     int r = f(ctx, nd.kind, nd.ref);
@@ -197,6 +199,8 @@ static int dalias(bg_sym *S, int alias, int x) {
 }
 
 static int diff_rec(bg_sym *S, int a, int x, memo *M) {
+  if (S->over) return bg_sym_num(S, 0); /* dropped by the caller (bg_sym_full) */
+  bg_sym_spend(S, 1);
   if (a == x) return bg_sym_num(S, 1);
   bg_symnode nd = S->node[a];
   double got;
@@ -244,7 +248,7 @@ static int mul_out(bg_sym *S, int a, int b, int max) {
   int *ta, *tb;
   double *wa, *wb;
   int na = terms_of(S, a, &ta, &wa), nb = terms_of(S, b, &tb, &wb), r = -1;
-  if ((long)na * nb <= max) {
+  if ((long)na * nb <= max && !S->over) {
     int *t = bg_xmalloc((size_t)na * nb * sizeof *t);
     double *w = bg_xmalloc((size_t)na * nb * sizeof *w);
     for (int i = 0; i < na; i++)
@@ -260,6 +264,8 @@ static int expand_rec(bg_sym *S, int a, int max, memo *M) {
   bg_symnode nd = S->node[a];
   double got;
   if (nd.kind != SYM_ADD && nd.kind != SYM_MUL) return a;
+  if (S->over) return a;
+  bg_sym_spend(S, 1);
   if (memo_find(M, a, &got)) return (int)got;
   nargs A;
   args_get(S, a, &A);
@@ -307,7 +313,7 @@ static double gcd_d(double a, double b) {
 
 /* N = g * N2 with g the monomial (and integer content) common to every term. */
 static int content(bg_sym *S, int N) {
-  if (S->node[N].kind != SYM_ADD) return N;
+  if (S->node[N].kind != SYM_ADD || S->over) return N;
   int *t;
   double *w;
   int n = terms_of(S, N, &t, &w), nc = 0;
@@ -362,7 +368,7 @@ static int leaf_cb(void *ctx, int kind, int ref) {
  * most degree 8). Returns the quotient, or -1. */
 static int div_linear(bg_sym *S, int N, int d) {
   const bg_symnode *dn = &S->node[d];
-  if (dn->kind != SYM_ADD || bg_sym_size(S, N) > 400) return -1;
+  if (dn->kind != SYM_ADD || S->over || bg_sym_size(S, N) > 400) return -1;
   for (int k = 0; k < S->node[d].n; k++) {
     int term = S->arg[S->node[d].adr + k], x = -1;
     if (S->node[term].n == 0 && S->node[term].kind != SYM_NUM) x = term;
@@ -433,6 +439,7 @@ static double den_exp(const bg_sym *S, int t, int b) {
  * are cancelled. */
 static int over_one(bg_sym *S, int a, int mode) {
   int all = mode == 2;
+  if (S->over) return a;
   if (S->node[a].kind == SYM_MUL && !all) return rational_dens(S, a);
   if (S->node[a].kind != SYM_ADD && (S->node[a].kind != SYM_MUL || !all)) return a;
   int *t;
@@ -504,7 +511,8 @@ static int has_sum_den(const bg_sym *S, int a) {
 static int rational_rec(bg_sym *S, int a, memo *M) {
   bg_symnode nd = S->node[a];
   double got;
-  if (nd.n == 0 || nd.kind == SYM_NUM) return a;
+  if (nd.n == 0 || nd.kind == SYM_NUM || S->over) return a;
+  bg_sym_spend(S, 1);
   if (memo_find(M, a, &got)) return (int)got;
   nargs A;
   args_get(S, a, &A);
@@ -531,6 +539,7 @@ int bg_sym_rational(bg_sym *S, int a) {
 static int params_only(bg_sym *S, int a, memo *M) {
   const bg_symnode *x = &S->node[a];
   double got;
+  bg_sym_spend(S, 1);
   if (x->kind == SYM_NUM || x->kind == SYM_PARAM) return 1;
   if (x->n == 0) return 0;
   if (memo_find(M, a, &got)) return (int)got;
@@ -541,7 +550,7 @@ static int params_only(bg_sym *S, int a, memo *M) {
 }
 
 int bg_sym_collect(bg_sym *S, int a) {
-  if (S->node[a].kind != SYM_ADD) return a;
+  if (S->node[a].kind != SYM_ADD || S->over) return a;
   int *t;
   double *w;
   int n = terms_of(S, a, &t, &w), ng = 0;
@@ -601,6 +610,7 @@ static int is_piecewise(const bg_symnode *x) {
 static int dep_rec(bg_sym *S, int a, const unsigned char *mark, int nmark, int piecewise, memo *M) {
   const bg_symnode *x = &S->node[a];
   double got;
+  bg_sym_spend(S, 1);
   if (x->kind == SYM_ALIAS) return dep_rec(S, S->alias_expr[x->ref], mark, nmark, piecewise, M);
   if (x->kind == SYM_DALIAS) return dep_rec(S, S->dalias_expr[x->ref], mark, nmark, piecewise, M);
   if (x->n == 0) return !piecewise && a < nmark && mark[a];
@@ -636,6 +646,7 @@ static void leaves_rec(bg_sym *S, int a, const unsigned char *mark, int nmark, i
   const bg_symnode *x = &S->node[a];
   if (memo_find(M, a, &got)) return;
   memo_put(M, a, 1);
+  bg_sym_spend(S, 1);
   if (x->kind == SYM_ALIAS || x->kind == SYM_DALIAS) {
     int e = x->kind == SYM_ALIAS ? S->alias_expr[x->ref] : S->dalias_expr[x->ref];
     leaves_rec(S, e, mark, nmark, out, max, cnt, M);
@@ -663,6 +674,7 @@ static int size_rec(bg_sym *S, int a, memo *M) {
   double got;
   if (memo_find(M, a, &got)) return 0;
   memo_put(M, a, 1);
+  bg_sym_spend(S, 1);
   int r = 1;
   for (int k = 0; k < S->node[a].n; k++) r += size_rec(S, S->arg[S->node[a].adr + k], M);
   return r;

@@ -75,7 +75,7 @@ static inline bg_eqsys *fuzz_eqsys(fuzz_run *f, size_t size) {
   bg_diags_init(&eqd, "fuzz", f->src, size);
   bg_eqsys *s = bg_eqsys_build(f->model, &f->analysis, &eqd);
   bg_diags_free(&eqd);
-  if (s) f->facts.reduced_form = bg_eqred_form(s);
+  if (s) f->facts.reduced_form = bg_eqred_form(s, &f->facts.reduced_note);
   return s;
 }
 
