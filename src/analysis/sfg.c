@@ -621,17 +621,27 @@ static void dgraph_build(const bg_sfg *g, int skip_order, dgraph *d) {
   d->adr = bg_xcalloc((size_t)g->nnode + 1, sizeof(int));
   d->n = bg_xcalloc((size_t)g->nnode + 1, sizeof(int));
   d->out = bg_xcalloc((size_t)g->nedge + 1, sizeof(int));
+  /* per destination, the first edge from v to it (bg_sfg_find_edge's answer),
+   * stamped by v: a node with 10^5 out-edges once searched its list per edge */
+  int *stamp = bg_xmalloc((size_t)(g->nnode + 1) * sizeof(int)), *first = bg_xmalloc((size_t)(g->nnode + 1) * sizeof(int));
+  for (int v = 0; v <= g->nnode; v++) stamp[v] = -1;
   int pos = 0;
   for (int v = 0; v < g->nnode; v++) {
     d->adr[v] = pos;
     for (int i = 0; i < g->n[v]; i++) {
-      const bg_sfg_edge *x = &g->edge[g->out[g->adr[v] + i]];
+      int e = g->out[g->adr[v] + i], dst = g->edge[e].dst;
+      if (stamp[dst] != v) stamp[dst] = v, first[dst] = e;
+    }
+    for (int i = 0; i < g->n[v]; i++) {
+      int e = g->out[g->adr[v] + i];
+      const bg_sfg_edge *x = &g->edge[e];
       if (x->order == skip_order || (skip_order == 2 && x->order != 0)) continue;
-      if (bg_sfg_find_edge(g, v, x->dst) != g->out[g->adr[v] + i]) continue; /* parallel */
+      if (first[x->dst] != e) continue; /* parallel */
       d->out[pos++] = x->dst;
     }
     d->n[v] = pos - d->adr[v];
   }
+  free(stamp), free(first);
 }
 
 static void dgraph_free(dgraph *d) { free(d->adr); free(d->n); free(d->out); }

@@ -48,6 +48,7 @@ typedef struct bg_diags {
   int werror;        /* named warnings are errors (-Werror) */
   int dropping;    /* the last error was dropped (beyond the limit, or a repeat of an
                       earlier one), and so are its notes */
+  const struct bg_log *log; /* progress of long work on the input (flattening); nullable */
 } bg_diags;
 
 /* Named warnings, as compilers have them (docs/cli.md, "Warnings"): each

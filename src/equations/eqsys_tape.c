@@ -608,22 +608,65 @@ static void slot_sets(bg_eqsys *s, sets *S, int *mark) {
   }
 }
 
+/* A long row (a junction's balance over 10^5 stores) keeps the colours its
+ * columns took: visiting the whole row for each of its columns made the
+ * colouring quadratic in the row's length. */
+enum { DENSE_ROW = 64 };
+typedef struct dense_row { unsigned char *used; int cap, mex; } dense_row;
+
+static int dense_used(const dense_row *d, int c) { return c < d->cap && d->used[c]; }
+
+static void dense_take(dense_row *d, int c) {
+  if (c >= d->cap) {
+    int cap = d->cap ? d->cap : 64;
+    while (cap <= c) cap *= 2;
+    d->used = bg_xrealloc(d->used, (size_t)cap);
+    memset(d->used + d->cap, 0, (size_t)(cap - d->cap));
+    d->cap = cap;
+  }
+  d->used[c] = 1;
+  while (dense_used(d, d->mex)) d->mex++;
+}
+
+/* Greedy colouring of the columns: column j takes the smallest colour no
+ * column sharing a row with it has (the colours below a long row's mex are
+ * all taken, so its columns start there). Linear in the nonzeros for short
+ * rows, in the colours tried for long ones. */
 static void colour(bg_eqsys *s, const int *radr, const int *rcols) {
   int n = s->n, *forbid = bg_xmalloc((size_t)(n + 1) * sizeof(int));
+  dense_row *dr = bg_xcalloc((size_t)n + 1, sizeof *dr);
   s->color = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
   for (int j = 0; j <= n; j++) s->color[j] = -1, forbid[j] = -1;
   s->ncolor = 0;
   for (int j = 0; j < n; j++) {
+    int c = 0;
     for (int k = s->colptr[j]; k < s->colptr[j + 1]; k++) {
       int i = s->rowind[k];
+      if (radr[i + 1] - radr[i] > DENSE_ROW) {
+        if (dr[i].mex > c) c = dr[i].mex;
+        continue;
+      }
       for (int q = radr[i]; q < radr[i + 1]; q++)
         if (s->color[rcols[q]] >= 0) forbid[s->color[rcols[q]]] = j;
     }
-    int c = 0;
-    while (forbid[c] == j) c++;
+    for (;;) {
+      int taken = forbid[c] == j;
+      for (int k = s->colptr[j]; k < s->colptr[j + 1] && !taken; k++) {
+        int i = s->rowind[k];
+        taken = radr[i + 1] - radr[i] > DENSE_ROW && dense_used(&dr[i], c);
+      }
+      if (!taken) break;
+      c++;
+    }
     s->color[j] = c;
     if (c + 1 > s->ncolor) s->ncolor = c + 1;
+    for (int k = s->colptr[j]; k < s->colptr[j + 1]; k++) {
+      int i = s->rowind[k];
+      if (radr[i + 1] - radr[i] > DENSE_ROW) dense_take(&dr[i], c);
+    }
   }
+  for (int i = 0; i < n; i++) free(dr[i].used);
+  free(dr);
   s->color_adr = bg_arena_alloc(&s->arena, (size_t)(s->ncolor + 2) * sizeof(int));
   s->color_cols = bg_arena_alloc(&s->arena, (size_t)(n + 1) * sizeof(int));
   for (int j = 0; j < n; j++) s->color_adr[s->color[j] + 1]++;

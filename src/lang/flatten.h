@@ -38,6 +38,11 @@ typedef struct bg_flat {
   int nseg;
 } bg_flat;
 
+/* The largest flat model: statements (elements, junctions, bonds, params,
+ * the other statements) after every instance is expanded. The instance
+ * whose expansion would cross it is an error (docs/format.md "Submodels"). */
+#define BG_FLAT_MAX 1000000L
+
 /* Flattens `ast` (whose file is source ast->file of dg). Used files are read
  * relative to the file that uses them and added to dg's sources. Returns NULL
  * after errors (reported). */

@@ -54,16 +54,22 @@ static long span_of(fl_flattener *f, int di, bg_srcloc use, int depth) {
     return 0;
   }
   d->span_state = 1;
-  long total = d->maxnum;
+  long total = d->maxnum, size = d->head ? d->head->nitems : 0; /* its parameters */
   for (int k = 0; k < d->nstmt; k++) {
     const bg_ast_stmt *s = d->stmt[k];
-    if (s->kind != BG_ST_INSTANCE) continue;
+    if (s->kind != BG_ST_INSTANCE) {
+      size += s->kind != BG_ST_PORT;
+      continue;
+    }
     const sc_entry *n = bg_fl_lookup(&f->defnames, s->kindword);
     if (!n) { unknown_submodel(f, s); continue; }
     total += span_of(f, n->index, s->loc, depth + 1);
     if (total > MAX_NUMBER) total = MAX_NUMBER + 1L; /* reported once, at the model */
+    size += f->defs[n->index].size;
+    if (size > BG_FLAT_MAX) size = BG_FLAT_MAX + 1L; /* reported at the instance that crosses */
   }
   d->span = total;
+  d->size = size;
   d->span_state = 2;
   return total;
 }

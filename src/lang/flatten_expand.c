@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/log.h"
 #include "lang/flatten_int.h"
 
 enum { MAX_INSTANCE_DEPTH = 100 };
@@ -150,8 +151,13 @@ static bg_expr *rewrite(fl_scopectx *c, const bg_expr *e) {
 static int emit(fl_flattener *f, const bg_ast_stmt *s, int inst) {
   int k = f->nstmts;
   *FL_PUSH(f->stmts, f->nstmts) = *s;
-  f->stmt_inst = bg_xrealloc(f->stmt_inst, (size_t)f->nstmts * sizeof *f->stmt_inst);
+  if ((k & (k - 1)) == 0) /* grown with f->stmts: 0, 1, 2, 4, ... */
+    f->stmt_inst = bg_xrealloc(f->stmt_inst, (size_t)(k ? 2 * k : 1) * sizeof *f->stmt_inst);
   f->stmt_inst[k] = inst;
+  if (f->nstmts >= f->next_progress) {
+    bg_logf(f->dg->log, BG_LOG_PROGRESS, "flattening: %d statements, %d instances so far", f->nstmts, f->ninst);
+    f->next_progress += 100000;
+  }
   return k;
 }
 
@@ -256,6 +262,19 @@ static void expand_instance(fl_scopectx *c, int k) {
   const bg_ast_stmt *s = ctx_def(c)->stmt[k];
   int di = bg_fl_lookup(&f->defnames, s->kindword)->index; /* checked by bg_fl_span */
   fl_def *d = &f->defs[di];
+  if (f->capped) return;
+  if (f->nstmts + d->size > BG_FLAT_MAX) {
+    if (d->size > BG_FLAT_MAX)
+      bg_diag_error(f->dg, moved(c, s->name_loc), "instance %s of %s expands to more than %ld "
+                    "statements, the limit of a flat model (a submodel's size multiplies with "
+                    "each level of instances)", s->name, d->name, BG_FLAT_MAX);
+    else
+      bg_diag_error(f->dg, moved(c, s->name_loc), "instance %s of %s (%ld statements) would make "
+                    "the flat model larger than the limit of %ld statements (%d before it)",
+                    s->name, d->name, d->size, BG_FLAT_MAX, f->nstmts);
+    f->capped = 1;
+    return;
+  }
   if (s->nopts)
     bg_diag_error(f->dg, moved(c, s->opts[0].loc), "unknown option '%s' for instance %s (an "
                   "instance takes no options)", s->opts[0].key, s->name);
@@ -326,7 +345,7 @@ static void expand_scope(fl_scopectx *c) {
       emit(c->f, &x, c->inst);
     }
   }
-  for (int k = 0; k < d->nstmt; k++) {
+  for (int k = 0; k < d->nstmt && !c->f->capped; k++) { /* capped: the ends may be missing */
     int g = c->bond_seg[k];
     if (g < 0) continue;
     const bg_ast_stmt *s = d->stmt[k];
@@ -433,6 +452,7 @@ static fl_end resolve_end(fl_scopectx *c, const char *name, bg_srcloc loc, int s
 }
 
 void bg_fl_expand_model(fl_flattener *f, int root) {
+  f->next_progress = 100000;
   fl_scopectx c = {f, root, -1, "", f->files[0].ast->file, 0, f->defs[root].maxnum, NULL, NULL, 0, NULL};
   expand_scope(&c);
 }

@@ -43,6 +43,8 @@ typedef struct fl_def {
   int *bondnum; /* per BOND statement of the body, in order: its number in the scope */
   int nbonds, maxnum;
   long span;    /* bond numbers an instance takes: maxnum + its instances' spans */
+  long size;    /* flat statements an instance emits: its parameters, its body's
+                   statements and its instances' sizes (capped at BG_FLAT_MAX + 1) */
   int span_state; /* 0 not yet, 1 being computed (recursion), 2 done */
 } fl_def;
 
@@ -85,6 +87,8 @@ typedef struct fl_bondvar { bg_expr *node; int inst, num; } fl_bondvar;
 
 typedef struct fl_flattener {
   bg_diags *dg;
+  int capped;  /* an instance would have crossed BG_FLAT_MAX: expansion stopped */
+  long next_progress; /* statements at which -v says how far the expansion is */
   bg_ast *out; /* the flat AST being built */
   bg_ast_stmt *stmts;
   int *stmt_inst; /* per output statement: instance, -1 */

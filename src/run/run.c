@@ -41,6 +41,7 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
   r->name = strdup(name);
   r->src = text, r->srclen = len;
   bg_diags_init(&r->dg, r->name, r->src, r->srclen);
+  r->dg.log = &r->o.log; /* -v: the flattener's progress */
   r->dg.max_errors = r->o.max_errors;
   r->dg.warn_off = r->o.warn_off;
   r->dg.werror = r->o.werror;
