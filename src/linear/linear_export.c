@@ -60,6 +60,10 @@ static void m_vector(bg_strbuf *o, const char *name, const double *v, const int 
 
 void bg_linear_export_m(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
   header(l, m, "%", o);
+  if (!l->reduced) { /* the CLI refuses this; a library caller gets a comment, not NULL matrices */
+    bg_sb_printf(o, "%% no state space: %s\n", l->reduce_note ? l->reduce_note : "not reduced");
+    return;
+  }
   m_matrix(o, "A", l->A, l->n, l->n);
   m_matrix(o, "B", l->B, l->n, l->nu);
   m_matrix(o, "C", l->C, l->ny, l->n);
@@ -115,6 +119,10 @@ static void py_list(bg_strbuf *o, const char *var, const char *const *names, con
 void bg_linear_export_py(const bg_linear *l, const bg_model *m, bg_strbuf *o) {
   bg_sb_puts(o, "\"\"\"\n");
   header(l, m, "", o);
+  if (!l->reduced) { /* as bg_linear_export_m */
+    bg_sb_printf(o, " no state space: %s\n\"\"\"\n", l->reduce_note ? l->reduce_note : "not reduced");
+    return;
+  }
   bg_sb_puts(o, "\"\"\"\nimport numpy as np\n\n");
   py_list(o, "states", l->uname_all, NULL, l->state, l->n);
   py_list(o, "inputs", l->uname, NULL, NULL, l->nu);
