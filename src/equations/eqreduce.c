@@ -589,7 +589,6 @@ const char *bg_eqred_form(const bg_eqsys *s, const char **why) {
   return f;
 }
 
-int bg_eqred_skipped(const bg_eqred *r) { return r->skipped; }
 
 int bg_eqred_is_ode(const bg_eqred *r) { return r->ode; }
 int bg_eqred_invariant(const bg_eqred *r, int i) { return i >= 0 && i < r->s->n && r->inv[i]; }

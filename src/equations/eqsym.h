@@ -38,8 +38,6 @@ const char *bg_eqred_form(const bg_eqsys *s, const char **why);
 #define BG_EQRED_SKIPPED                                                                  \
   "skipped: the symbolic work exceeds its budget of " BG_SYM_BUDGET_WORDS " operations (the equations, " \
   "the numeric index and the simulation do not need it)"
-/* 1 when the budget ran out (no form: is_ode 0, the note BG_EQRED_SKIPPED). */
-int bg_eqred_skipped(const bg_eqred *r);
 /* 1 when the equations became (or were) an explicit ODE x' = f(t, x). */
 int bg_eqred_is_ode(const bg_eqred *r);
 /* 1 when something was eliminated or combined (the reduced form differs). */
