@@ -184,6 +184,7 @@ static int write_fmu(run *r, const char *path) {
   char prefix[80];
   if (r->opts.prefix) snprintf(prefix, sizeof prefix, "%s", r->opts.prefix);
   else bg_export_default_prefix(R->model, prefix, sizeof prefix);
+  cli_fmu_set_log(&R->o.log);
   int rc = cli_write_fmu(s, prefix, path);
   bg_eqsys_free(s);
   return rc;

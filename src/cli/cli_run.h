@@ -53,6 +53,9 @@ int cli_write_depfile(run *r);
  * build s, model identifier prefix; EXIT_MODEL for a DAE, EXIT_WRITE when the
  * compiler is missing or fails. */
 int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path);
+/* Where cli_write_fmu says (-v) what it compiles; NULL: silence. */
+struct bg_log;
+void cli_fmu_set_log(const struct bg_log *log);
 /* --linear/--bode/--nyquist/--step asked for; and nothing else (no default diagram). */
 int cli_linear_asked(const bg_cli_opts *o);
 int cli_linear_only(const bg_cli_opts *o);
