@@ -131,7 +131,7 @@ static void header(const cx *X, bg_strbuf *h) {
   bg_sb_printf(h, "#define %s_IS_ODE %d\n\n", U, ode);
   bg_sb_printf(h, "typedef struct %s_params {\n", P);
   for (int k = 0; k < s->m->nparam; k++)
-    if (!bg_eqsys_param_is_derived(s, k)) bg_sb_printf(h, "  double %s;\n", bg_export_param_ident(s, k, id, sizeof id));
+    if (!bg_eqsys_param_is_derived(s, k)) bg_sb_printf(h, "  double %s;\n", bg_export_param_ident(&bg_xlang_c, s, k, id, sizeof id));
   if (!bg_export_nparams(s)) bg_sb_puts(h, "  char unused; /* the model has no params */\n");
   bg_sb_printf(h, "} %s_params;\n\n/* the model's values */\nextern const %s_params %s_default_params;\n", P, P, P);
   bg_sb_printf(h, "extern const char *const %s_param_names[%s_NPARAM + 1];\n", P, U);
@@ -167,7 +167,7 @@ static void tables_of_names(const cx *X, bg_strbuf *c) {
   bg_sb_printf(c, "const %s_params %s_default_params = {", P, P);
   for (int k = 0; k < s->m->nparam; k++) {
     if (bg_eqsys_param_is_derived(s, k)) continue;
-    bg_sb_printf(c, "%s.%s = ", np ? ", " : "", bg_export_param_ident(s, k, id, sizeof id));
+    bg_sb_printf(c, "%s.%s = ", np ? ", " : "", bg_export_param_ident(&bg_xlang_c, s, k, id, sizeof id));
     bg_xl_num(&bg_xlang_c, c, s->m->param_value[k]);
     pn[np++] = s->m->param_name[k];
   }

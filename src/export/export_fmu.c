@@ -269,7 +269,7 @@ static void glue_model(const bg_eqsys *s, const char *P, const char *guid, bg_st
   int vr = 0;
   for (int k = 0; k < s->m->nparam; k++)
     if (!bg_eqsys_param_is_derived(s, k))
-      bg_sb_printf(c, "  case %d: return &p->%s;\n", vr++, bg_export_param_ident(s, k, id, sizeof id));
+      bg_sb_printf(c, "  case %d: return &p->%s;\n", vr++, bg_export_param_ident(&bg_xlang_c, s, k, id, sizeof id));
   bg_sb_puts(c, "  default: (void)p; return &bg_unused_param;\n  }\n}\n\n");
 }
 

@@ -19,7 +19,19 @@ typedef struct bg_xlang {
   const char *cmp;            /* comparison: %0 OP %1 as a number 0/1; %o is OP */
   const char *table;
   const char *eq, *ne;        /* spelling of == and != */
+  const char *const *reserved; /* names a parameter may not take (export_names.c) */
 } bg_xlang;
+
+/* ---- export_names.c: identifiers clear of each language's reserved names */
+extern const char *const bg_reserved_c[], *const bg_reserved_python[], *const bg_reserved_octave[],
+    *const bg_reserved_modelica[];
+/* 1 when id is in the NULL-terminated list. */
+int bg_export_reserved(const char *const *reserved, const char *id);
+/* bg_export_ident, then a trailing '_' when the result is reserved. */
+void bg_export_ident_in(const char *const *reserved, const char *name, char *buf, size_t n);
+/* 1 when some independent param's identifier in L differs from its name
+ * (the export then writes a table of the original names). */
+int bg_export_params_renamed(const bg_xlang *L, const bg_eqsys *s);
 
 extern const bg_xlang bg_xlang_c, bg_xlang_python, bg_xlang_octave;
 
@@ -35,10 +47,11 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 /* Statements for code [c0, c1). */
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o);
 
-/* Param k as an identifier of the exported record (its name with every
- * character outside [A-Za-z0-9_] made '_'; names are unique in a model, so
- * are these unless two differ only there: then "_<k>" is added). */
-const char *bg_export_param_ident(const bg_eqsys *s, int k, char *buf, size_t n);
+/* Param k as an identifier of the exported record in language L (its name
+ * with every character outside [A-Za-z0-9_] made '_', a trailing '_' when
+ * L reserves it; names are unique in a model, so are these unless two meet
+ * after that: then "_<k>" is added). */
+const char *bg_export_param_ident(const bg_xlang *L, const bg_eqsys *s, int k, char *buf, size_t n);
 /* Any name as an identifier, same rule. */
 void bg_export_ident(const char *name, char *buf, size_t n);
 /* Number of independent params (those the parameter record holds). */

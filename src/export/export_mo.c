@@ -10,25 +10,10 @@
 
 #include "export/export_int.h"
 
-static const char *const keywords[] = {
-    "algorithm", "and", "annotation", "block", "break", "class", "connect", "connector",
-    "constant", "constrainedby", "der", "discrete", "each", "else", "elseif", "elsewhen",
-    "encapsulated", "end", "enumeration", "equation", "expandable", "extends", "external",
-    "false", "final", "flow", "for", "function", "if", "import", "impure", "in", "initial",
-    "inner", "input", "loop", "model", "not", "operator", "or", "outer", "output", "package",
-    "parameter", "partial", "protected", "public", "pure", "record", "redeclare", "replaceable",
-    "return", "stream", "then", "true", "type", "when", "while", "within", "time", NULL};
-
 /* A name as a Modelica identifier: '.' and other characters made '_', a
- * keyword (or "time") gets a trailing '_'. */
-static void mo_ident(const char *name, char *buf, size_t n) {
-  bg_export_ident(name, buf, n);
-  for (int k = 0; keywords[k]; k++)
-    if (!strcmp(buf, keywords[k]) && strlen(buf) + 2 <= n) {
-      strcat(buf, "_");
-      break;
-    }
-}
+ * keyword, predefined type or built-in operator (time, der, Real, sin) gets
+ * a trailing '_' (export_names.c). */
+static void mo_ident(const char *name, char *buf, size_t n) { bg_export_ident_in(bg_reserved_modelica, name, buf, n); }
 
 typedef struct mo { const bg_eqsys *s; bg_strbuf *o; } mo;
 
@@ -182,6 +167,9 @@ static void declarations(mo *M, const double *y0) {
     bg_sb_puts(o, "  parameter Real "), put_ident(M, m->param_name[k]), bg_sb_puts(o, " = ");
     if (bg_eqsys_param_is_derived(s, k)) x_expr(M, m->param_expr[k]);
     else bg_sb_num(o, m->param_value[k]);
+    char id[300];
+    mo_ident(m->param_name[k], id, sizeof id);
+    if (strcmp(id, m->param_name[k])) bg_sb_printf(o, " \"bgdraw param %s\"", m->param_name[k]); /* renamed */
     bg_sb_puts(o, ";\n");
   }
   for (int t = 0; t < m->ntable; t++)

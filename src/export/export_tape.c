@@ -23,7 +23,7 @@ const bg_xlang bg_xlang_c = {
      [BG_FN_RAMP] = "(%0 < 0 ? 0.0 : %0)", [BG_FN_PULSE] = "(%0 >= 0 && %0 < %1 ? 1.0 : 0.0)",
      [BG_FN_SAT] = "(%0 < %1 ? %1 : %0 > %2 ? %2 : %0)"},
     "-%0", "(double)(%0 == 0)", "(double)(%0 != 0 && %1 != 0)", "(double)(%0 != 0 || %1 != 0)",
-    "pow(%0, %1)", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!="};
+    "pow(%0, %1)", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!=", bg_reserved_c};
 
 const bg_xlang bg_xlang_python = {
     0, "[", "]", "", "    ",
@@ -34,7 +34,7 @@ const bg_xlang bg_xlang_python = {
      [BG_FN_PULSE] = "(1.0 if %0 >= 0 and %0 < %1 else 0.0)",
      [BG_FN_SAT] = "(%1 if %0 < %1 else %2 if %0 > %2 else %0)"},
     "-%0", "float(%0 == 0)", "float(%0 != 0 and %1 != 0)", "float(%0 != 0 or %1 != 0)",
-    "_pow(%0, %1)", "float(%0 %o %1)", "_tab(%t, %0)", "==", "!="};
+    "_pow(%0, %1)", "float(%0 %o %1)", "_tab(%t, %0)", "==", "!=", bg_reserved_python};
 
 const bg_xlang bg_xlang_octave = {
     1, "(", ")", ";", "  ",
@@ -43,7 +43,7 @@ const bg_xlang bg_xlang_octave = {
      [BG_FN_STEP] = "double(%0 >= 0)", [BG_FN_RAMP] = "bg_if(%0 < 0, 0, %0)",
      [BG_FN_PULSE] = "double(%0 >= 0 && %0 < %1)", [BG_FN_SAT] = "bg_if(%0 < %1, %1, bg_if(%0 > %2, %2, %0))"},
     "-%0", "double(%0 == 0)", "double(%0 ~= 0 && %1 ~= 0)", "double(%0 ~= 0 || %1 ~= 0)",
-    "%0 ^ %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~="};
+    "%0 ^ %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~=", bg_reserved_octave};
 
 void bg_xl_slot(const bg_xlang *L, bg_strbuf *o, const char *arr, int k) {
   bg_sb_printf(o, "%s%s%d%s", arr, L->open, k + L->base, L->close);
@@ -125,7 +125,7 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
     }
   for (int k = 0; k < s->m->nparam; k++) {
     if (bg_eqsys_param_is_derived(s, k)) continue;
-    snprintf(ref, sizeof ref, pfmt, bg_export_param_ident(s, k, id, sizeof id));
+    snprintf(ref, sizeof ref, pfmt, bg_export_param_ident(L, s, k, id, sizeof id));
     bg_sb_puts(o, L->indent), bg_xl_slot(L, o, arr, s->slot_p + k);
     bg_sb_printf(o, " = %s%s\n", ref, L->stmt_end);
   }
@@ -133,35 +133,6 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o) {
   for (int k = c0; k < c1; k++) value_stmt(L, s, &s->code[k], arr, o);
-}
-
-void bg_export_ident(const char *name, char *buf, size_t n) {
-  size_t i = 0;
-  if (n == 0) return;
-  if (!((name[0] >= 'A' && name[0] <= 'Z') || (name[0] >= 'a' && name[0] <= 'z') || name[0] == '_'))
-    if (i + 1 < n) buf[i++] = '_';
-  for (const char *p = name; *p && i + 1 < n; p++) {
-    char c = *p;
-    int ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-    buf[i++] = ok ? c : '_';
-  }
-  buf[i] = 0;
-}
-
-const char *bg_export_param_ident(const bg_eqsys *s, int k, char *buf, size_t n) {
-  const bg_model *m = s->m;
-  bg_export_ident(m->param_name[k], buf, n);
-  char other[300];
-  for (int j = 0; j < m->nparam; j++) {
-    if (j == k) continue;
-    bg_export_ident(m->param_name[j], other, sizeof other);
-    if (strcmp(other, buf) == 0) {
-      size_t len = strlen(buf);
-      snprintf(buf + len, n - len, "_%d", k);
-      break;
-    }
-  }
-  return buf;
 }
 
 int bg_export_nparams(const bg_eqsys *s) {
