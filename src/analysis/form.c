@@ -431,12 +431,14 @@ static void sb_sep(bg_strbuf *sb) { if (sb->len) bg_sb_puts(sb, "; "); }
 static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
   int c1 = 0, c2 = 0;
   for (int p = 0; p < a->npath; p++) { c1 += a->path_class[p] == 1; c2 += a->path_class[p] == 2; }
-  if (c1) { sb_sep(sb); bg_sb_printf(sb, "%d class 1 causal path%s (dependent stores)", c1, c1 > 1 ? "s" : ""); }
-  if (c2) { sb_sep(sb); bg_sb_printf(sb, "%d class 2 causal path%s between resistors", c2, c2 > 1 ? "s" : ""); }
+  /* a capped listing (--max-list, the search budget) counts only what it kept */
+  const char *pmin = a->npath_omitted > 0 ? "at least " : "", *lmin = a->ncloop_omitted > 0 ? "at least " : "";
+  if (c1) { sb_sep(sb); bg_sb_printf(sb, "%s%d class 1 causal path%s (dependent stores)", pmin, c1, c1 > 1 ? "s" : ""); }
+  if (c2) { sb_sep(sb); bg_sb_printf(sb, "%s%d class 2 causal path%s between resistors", pmin, c2, c2 > 1 ? "s" : ""); }
   if (a->ncloop) {
     sb_sep(sb);
-    bg_sb_printf(sb, "%d causal loop%s, pairwise disjoint, gain other than +1 (Rosenberg-Andry)",
-                 a->ncloop, a->ncloop > 1 ? "s" : "");
+    bg_sb_printf(sb, "%s%d causal loop%s, pairwise disjoint, gain other than +1 (Rosenberg-Andry)",
+                 lmin, a->ncloop, a->ncloop > 1 ? "s" : "");
   }
   if (a->ndependent && !c1) { sb_sep(sb); bg_sb_puts(sb, "dependent stores"); }
   if (a->nlag) {

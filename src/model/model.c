@@ -3,6 +3,7 @@
  * model_stmt.c, expressions in model_expr.c, queries in model_query.c; the
  * growable arrays and the namespace every part uses in model_build.c. */
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -317,6 +318,11 @@ static void apply_overrides(bg_build *b, const bg_param_override *ov, int nov) {
   bg_srcloc none = {0};
   for (int i = 0; i < nov; i++) {
     const ns_entry *n = bg_build_lookup(b, ov[i].name);
+    if (n && n->kind == NS_PARAM && !isfinite(ov[i].value)) { /* nan, inf: every result would be */
+      bg_diag_error(b->dg, none, "--set %s=%g: a param takes a finite number", ov[i].name,
+                    isnan(ov[i].value) ? NAN : ov[i].value);
+      continue;
+    }
     if (n && n->kind == NS_PARAM) {
       m->param_value[b->param_id[n->id]] = ov[i].value;
       m->param_overridden[b->param_id[n->id]] = 1;
@@ -362,8 +368,16 @@ static void build_params(bg_build *b, int ndecl, const bg_param_override *ov, in
   b->what = "a param (params may use numbers, pi and other params)";
   for (int i = 0; i < ndecl; i++) m->param_expr[b->param_id[i]] = bg_build_expr(b, g.stmt[i]->expr);
   apply_overrides(b, ov, nov);
-  for (int id = 0; id < m->nparam; id++)
+  for (int id = 0; id < m->nparam; id++) {
     if (!m->param_overridden[id]) m->param_value[id] = bg_xeval(m, m->param_expr[id], NULL);
+    double v = m->param_value[id];
+    if (isnan(v)) /* 0/0, sqrt(-1), log(-1), inf - inf: it would surface later as another element's error */
+      bg_diag_error(b->dg, m->param_loc[id], "param '%s' is not a number (NaN): its value is "
+                    "undefined (0/0, the square root or logarithm of a negative, inf - inf)", m->param_name[id]);
+    else if (isinf(v))
+      bg_diag_warning(b->dg, m->param_loc[id], "param '%s' is %s", m->param_name[id],
+                      v > 0 ? "infinite (inf)" : "minus infinity (-inf)");
+  }
   for (int i = 0; i < ndecl; i++) free(g.dep[i]);
   free(g.dep);
   free(g.ndep);

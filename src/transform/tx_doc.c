@@ -106,19 +106,30 @@ void tx_insert_after(tx_doc *d, int line, const char *text) {
   bg_sb_putc(&d->after[end], '\n');
 }
 
+/* New text with the file's line ending: "\n" becomes "\r\n" in a CRLF file. */
+static void put_text(bg_strbuf *b, const char *s, int crlf) {
+  for (; *s; s++) {
+    if (*s == '\n' && crlf) bg_sb_putc(b, '\r');
+    bg_sb_putc(b, *s);
+  }
+}
+
 char *tx_doc_text(const tx_doc *d) {
   bg_strbuf b = {0};
-  bg_sb_puts(&b, bg_sb_str(&d->head));
-  bg_sb_puts(&b, bg_sb_str(&d->after[0]));
+  int ncr = 0;
+  for (int i = 1; i <= d->nline; i++) ncr += d->cr[i];
+  int crlf = 2 * ncr > d->nline; /* most lines end in CR LF: so do the new ones */
+  put_text(&b, bg_sb_str(&d->head), crlf);
+  put_text(&b, bg_sb_str(&d->after[0]), crlf);
   for (int i = 1; i <= d->nline; i++) {
     if (d->repl[i]) {
-      bg_sb_puts(&b, d->repl[i]);
-      bg_sb_putc(&b, '\n');
+      put_text(&b, d->repl[i], crlf);
+      bg_sb_puts(&b, crlf ? "\r\n" : "\n");
     } else if (!d->drop[i]) {
       bg_sb_putn(&b, d->line[i], (size_t)d->len[i]);
       bg_sb_puts(&b, d->cr[i] ? "\r\n" : "\n");
     }
-    bg_sb_puts(&b, bg_sb_str(&d->after[i]));
+    put_text(&b, bg_sb_str(&d->after[i]), crlf);
   }
   char *s = strdup(bg_sb_str(&b));
   bg_sb_free(&b);
