@@ -109,7 +109,7 @@ grep -qx '  parameter Real R0 = 10;' "$mo" && grep -qx '  Real C1_q(start = 0, f
 check "rlc.mo: parameters, states with start values, the junction balance, der() rows" $?
 printf 'model k2\nparam der = 2, initial = 3\nSe U = der*table(t, [0, 0; 1, 2])\n1 j\nR R1 = initial\nC C1 = 1 [q0 = der]\nbond U -> j\nbond j -> R1\nbond j -> C1\n' >"$tmp/k2.bg"
 "$BGDRAW" "$tmp/k2.bg" -q -o "$tmp/k2.mo" && python3 tests/export/check_modelica.py "$tmp/k2.mo" >/dev/null &&
-  grep -qx '  parameter Real der_ = 2;' "$tmp/k2.mo" && grep -q 'bg_table(time, tab1_x, tab1_y)' "$tmp/k2.mo" &&
+  grep -qx '  parameter Real der_ = 2 "bgdraw param der";' "$tmp/k2.mo" && grep -q 'bg_table(time, tab1_x, tab1_y)' "$tmp/k2.mo" &&
   grep -qx '  parameter Real tab1_y\[2\] = {0, 2};' "$tmp/k2.mo"
 check "Modelica keywords renamed (der_), tables as parameter arrays and a function" $?
 
