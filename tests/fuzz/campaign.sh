@@ -44,7 +44,7 @@ for t in "${targets[@]}"; do
   # fork mode: the parent's last status line "#N: cov: ... exec/s: S oom/timeout/crash: a/b/c"
   last=$(grep -E '^#[0-9]+: cov:' "$dir/log" | tail -1)
   execs=$(echo "$last" | sed -n 's/^#\([0-9]*\):.*/\1/p')
-  speed=$(echo "$last" | sed -n 's/.*exec\/s: *\([0-9]*\).*/\1/p')
+  speed=$(echo "$last" | sed -n 's/.*exec\/s:\{0,1\} *\([0-9]*\).*/\1/p')
   otc=$(echo "$last" | sed -n 's/.*oom\/timeout\/crash: *\([0-9\/]*\).*/\1/p')
   echo "fuzz_$t: ${execs:-?} executions in ${secs} s (${speed:-?}/s), corpus $(ls "$dir/corpus" | wc -l)," \
        "oom/timeout/crash ${otc:-?}, findings $(ls "$dir/found" | wc -l) (in $dir/found)"
