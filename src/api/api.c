@@ -34,6 +34,7 @@ struct bgd_model {
   int ndiag;
   double **columns;      /* the simulation's columns, made on request */
   char *last_error;
+  char style_dir[4200];  /* where named styles are, for this handle's drawings */
 };
 
 void bgd_options_init(bgd_options *o) {
@@ -124,8 +125,7 @@ static bgd_model *open_run(const char *name, const char *text, const char *path,
   bg_run_opts ro;
   bg_render_opts rd;
   bg_param_override *sets = calloc((size_t)(m->opts.nparams > 0 ? m->opts.nparams : 1), sizeof *sets);
-  static char style_dir[4200]; /* the same for every handle of the process */
-  configure(m, &m->opts, &ro, &rd, sets, style_dir, sizeof style_dir);
+  configure(m, &m->opts, &ro, &rd, sets, m->style_dir, sizeof m->style_dir);
   m->run = bg_run_new(&ro); /* copies the overrides */
   free(sets);
   int rc = path ? bg_run_load_file(m->run, path) : bg_run_load_string(m->run, name, text);

@@ -220,9 +220,9 @@ done:
 
 int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path) {
   if (!bg_eqsys_is_ode(s)) {
-    fprintf(stderr, "bgdraw: error: cannot write '%s': the model is a DAE (it has algebraic "
+    fprintf(stderr, "bgdraw: export refused: '%s': the model is a DAE (it has algebraic "
             "unknowns); FMI 2.0 Model Exchange takes ODE models only (docs/export.md)\n", path);
-    return EXIT_MODEL;
+    return EXIT_SIM; /* a refusal, as the docs give refusals: status 3 */
   }
   fmu_build b = {0};
   const char *tmp = getenv("TMPDIR");

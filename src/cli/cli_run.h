@@ -50,7 +50,7 @@ int cli_write_outputs(run *r);
 /* -M/--depfile: the make rule of the files this run read (cli_depfile.c). */
 int cli_write_depfile(run *r);
 /* -o NAME.fmu (cli_fmu.c): the FMI 2.0 Model Exchange archive of the export
- * build s, model identifier prefix; EXIT_MODEL for a DAE, EXIT_WRITE when the
+ * build s, model identifier prefix; EXIT_SIM (refused) for a DAE, EXIT_WRITE when the
  * compiler is missing or fails. */
 int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path);
 /* Where cli_write_fmu says (-v) what it compiles; NULL: silence. */
