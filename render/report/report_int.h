@@ -75,7 +75,8 @@ void rp_esc(bg_strbuf *b, const char *s);
 void rp_eq_markup(const char *plain, double size, bg_strbuf *out);
 /* A number for tables: %.4g, with a minus sign. */
 void rp_num(bg_strbuf *b, double v);
-/* "one", "two", ... "twelve", else the digits (into a static buffer for n > 12). */
+/* "one", "two", ... "twelve", else the digits (n > 12: in a buffer of the
+ * calling thread, valid until its next call). */
 const char *rp_count_word(int n);
 /* "1 causal path" / "2 causal paths" (plural by appending s). */
 void rp_count(bg_strbuf *b, int n, const char *noun);

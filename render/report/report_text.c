@@ -222,7 +222,7 @@ void rp_num(bg_strbuf *b, double v) {
 const char *rp_count_word(int n) {
   static const char *words[] = {"no", "one", "two", "three", "four", "five", "six",
                                 "seven", "eight", "nine", "ten", "eleven", "twelve"};
-  static char buf[32];
+  static _Thread_local char buf[32]; /* reports on two threads: one each */
   if (n >= 0 && n <= 12) return words[n];
   snprintf(buf, sizeof buf, "%d", n);
   return buf;
