@@ -73,13 +73,11 @@ static void replay_text(cairo_t *cr, PangoContext *ctx, const bg_scene *s,
   g_object_unref(lay);
 }
 
-/* Holds the text lock throughout: pango's objects are not for two threads
- * at once (text.c). */
+/* The caller holds the text lock (text_int.h). */
 static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
   cairo_font_options_t *fo = bg_text_font_options();
   cairo_set_font_options(cr, fo);
   cairo_font_options_destroy(fo);
-  bg_text_lock();
   bg_text_font_map(); /* pango_cairo_create_context takes the default map */
   PangoContext *ctx = pango_cairo_create_context(cr);
   bg_text_setup_context(ctx);
@@ -96,7 +94,6 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
     else replay_shape(cr, s, it);
   }
   g_object_unref(ctx);
-  bg_text_unlock();
 }
 
 const char *bg_surface_cairo_version(void) { return CAIRO_VERSION_STRING; }

@@ -6,7 +6,8 @@
 #include "scene/scene.h"
 #include "base/strbuf.h"
 
-/* Draws every item of s on cr (background first). Sets font options that
+/* Draws every item of s on cr (background first), the caller holding the
+ * text lock (scene/text_int.h). Sets font options that
  * make text metrics identical on every surface. */
 void bg_surface_replay(cairo_t *cr, const bg_scene *s);
 /* The same, but only the items whose box (bg_scene_item_box) meets the

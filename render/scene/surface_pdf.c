@@ -8,6 +8,7 @@
 
 #include "scene/surface.h"
 #include "scene/surface_cairo.h"
+#include "scene/text_int.h"
 
 /* ISO 8601 date for the PDF metadata. */
 static void creation_date(char *buf, size_t n) {
@@ -33,10 +34,13 @@ static cairo_surface_t *pdf_open(bg_strbuf *out, double w, double h, const char 
 }
 
 int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
+  bg_text_lock();
   cairo_surface_t *sf = pdf_open(out, s->width, s->height, s->title);
   cairo_t *cr = cairo_create(sf);
   bg_surface_replay(cr, s);
-  return bg_surface_close(cr, sf);
+  int rc = bg_surface_close(cr, sf);
+  bg_text_unlock();
+  return rc;
 }
 
 /* ---------------------------------------------------------------- multi-page */
@@ -71,6 +75,7 @@ static void add_outlines(cairo_surface_t *sf, const bg_surface_outline *ol, int 
 int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surface_outline *ol,
                          int nol, const char *title, bg_strbuf *out) {
   if (npage < 1) return -1;
+  bg_text_lock();
   const bg_scene *first = pages[0].scene;
   cairo_surface_t *sf = pdf_open(out, first->width, first->height, title);
   cairo_t *cr = cairo_create(sf);
@@ -81,5 +86,7 @@ int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surfa
     cairo_show_page(cr);
   }
   add_outlines(sf, ol, nol);
-  return bg_surface_close(cr, sf);
+  int rc = bg_surface_close(cr, sf);
+  bg_text_unlock();
+  return rc;
 }

@@ -4,6 +4,7 @@
 
 #include "scene/surface.h"
 #include "scene/surface_cairo.h"
+#include "scene/text_int.h"
 
 int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out) {
   if (!(scale > 0)) scale = 1;
@@ -14,6 +15,7 @@ int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out) {
   double pixels = 40e6; /* and to about 160 MB of image memory */
   if (s->width * s->height * scale * scale > pixels) scale = sqrt(pixels / (s->width * s->height));
   int w = (int)ceil(s->width * scale), h = (int)ceil(s->height * scale);
+  bg_text_lock();
   cairo_surface_t *sf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
   cairo_t *cr = cairo_create(sf);
   cairo_scale(cr, scale, scale);
@@ -22,5 +24,6 @@ int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out) {
   cairo_destroy(cr);
   if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_write_to_png_stream(sf, bg_surface_sink, out);
   cairo_surface_destroy(sf);
+  bg_text_unlock();
   return st == CAIRO_STATUS_SUCCESS ? 0 : -1;
 }

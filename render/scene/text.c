@@ -4,10 +4,11 @@
  * PDF and PNG agree with the layout's idea of every label's size. Scene code
  * measures through here and never calls into the surfaces.
  *
- * Thread safety: pango objects may not be used by two threads at once, and
- * the measurements are remembered for the process. One lock (text_lock)
- * guards the font map, the measuring context and the memo, and the surfaces
- * hold it while they replay a scene with pango (bg_text_lock). */
+ * Thread safety: pango objects may not be used by two threads at once, cairo
+ * shares its fonts' caches between surfaces, and the measurements are
+ * remembered for the process. One lock (text_lock) guards the font map, the
+ * measuring context and the memo, and the surfaces hold it from creating a
+ * cairo surface to finishing it (bg_text_lock). */
 #include "scene/text_int.h"
 
 #include <fontconfig/fontconfig.h>

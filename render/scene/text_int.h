@@ -5,7 +5,10 @@
 #define BG_TEXT_INT_H
 #include <pango/pangocairo.h>
 
-/* text_lock: held by every use of pango (measuring, replaying a scene). */
+/* text_lock: held by every use of pango and of cairo's fonts: measuring
+ * (text.c), and a cairo surface from its creation to its end (surface_pdf.c,
+ * surface_png.c, surface_svg.c: a PDF embeds its fonts when it finishes,
+ * reading the font caches cairo shares between surfaces). */
 void bg_text_lock(void);
 void bg_text_unlock(void);
 /* The font map (fontconfig's configuration loaded first when the program owns
