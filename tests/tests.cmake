@@ -65,8 +65,10 @@ include(${CMAKE_SOURCE_DIR}/tests/fuzz/fuzz.cmake)
 # The property campaign (docs/property.md): a short deterministic run of
 # generated models against the physics and each other, and the shrinker's
 # self-test.
+add_executable(prop_libjson ${CMAKE_SOURCE_DIR}/tests/property/libjson.c)
+target_link_libraries(prop_libjson PRIVATE libbgdraw)
 add_test(NAME property_short COMMAND bash ${CMAKE_SOURCE_DIR}/tests/property/short.sh
-         $<TARGET_FILE:bgdraw>)
+         $<TARGET_FILE:bgdraw> $<TARGET_FILE:prop_libjson>)
 add_test(NAME property_shrink COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/property/prop.py --self-test)
 set_tests_properties(property_short property_shrink PROPERTIES TIMEOUT 900
                      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})

@@ -6,7 +6,9 @@
 # Exit status 0 when no check failed (reorder_strokes is a known finding,
 # counted but not failing: docs/property.md).
 #     bash tests/property/campaign.sh BGDRAW [N] [SEED] [FOUND]
-# Environment: JOBS (parallel models, default 1), MAX_ELEMS (default 100).
+# Environment: JOBS (parallel models, default 1), MAX_ELEMS (default 100),
+# LIBJSON (the built tests/property/libjson.c, build/prop_libjson: the check
+# `library` compares its bytes with the command line's; skipped without it).
 # Under the sanitizers: cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Asan,
 # build, then pass build-asan/bgdraw (a sanitizer report makes bgdraw exit
 # with a status outside the documented set: the check `robust` fails).
@@ -18,4 +20,4 @@ found=${4:-out/property/found}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-exitcode=86:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:exitcode=87:print_stacktrace=1}
 exec python3 "$(dirname "$0")/prop.py" "$bgdraw" --count "$n" --seed "$seed" --found "$found" \
-  --jobs "${JOBS:-1}" --max-elems "${MAX_ELEMS:-100}" --known reorder_strokes
+  --jobs "${JOBS:-1}" --max-elems "${MAX_ELEMS:-100}" --known reorder_strokes ${LIBJSON:+--lib "$LIBJSON"}

@@ -16,7 +16,7 @@ TIME_LIMIT = 30          # seconds per bgdraw run; beyond it: a hang
 DOCUMENTED_EXITS = {0, 1, 2, 3, 4}
 
 CHECKS = ["robust", "accepted", "junction_power", "twoport_power", "energy_lossless",
-          "energy_passive", "rename", "reorder", "reorder_strokes", "renumber", "methods_agree", "index_agree"]
+          "energy_passive", "library", "rename", "reorder", "reorder_strokes", "renumber", "methods_agree", "index_agree"]
 
 
 class Run:
@@ -66,7 +66,7 @@ def close(a, b, scale, rel=1e-6, abs_=1e-9):
     return abs(a - b) <= rel * scale + abs_
 
 
-def check(bgdraw, m, workdir, seed=0):
+def check(bgdraw, m, workdir, seed=0, lib=None):
     res = {}
     text = m.text()
     base = run(bgdraw, text, workdir, "m", ["--simulate"], ["json", "csv"])
@@ -90,6 +90,7 @@ def check(bgdraw, m, workdir, seed=0):
     if sim_ok:
         cols, rows = read_csv(base.files["csv"])
     _physics(res, m, cols, rows, an)
+    _library(res, lib, base, workdir)
     _methods(res, bgdraw, m, text, workdir, an)
     _invariance(res, bgdraw, m, workdir, seed, an, rows)
     return res
@@ -162,6 +163,37 @@ def _physics(res, m, cols, rows, an):
                     energy[k - 1], energy[k], rows[k][0]))
                 return
         res["energy_passive"] = ("pass", "")
+
+
+def _library(res, lib, base, workdir):
+    """libbgdraw gives the command line's bytes: the analysis JSON (with the
+    simulation) and the CSV (tests/property/libjson.c)."""
+    if not lib:
+        res["library"] = ("skip", "no library program")
+        return
+    path = os.path.join(workdir, "m.bg")
+    lj, lc = os.path.join(workdir, "lib.json"), os.path.join(workdir, "lib.csv")
+    for p in (lj, lc):
+        if os.path.exists(p):
+            os.remove(p)
+    try:
+        p = subprocess.run([lib, path, lj, lc], capture_output=True, timeout=TIME_LIMIT)
+    except subprocess.TimeoutExpired:
+        res["robust"] = ("fail", "library: no answer within %d s" % TIME_LIMIT)
+        res["library"] = ("fail", "hung")
+        return
+    if p.returncode != base.status:
+        res["library"] = ("fail", "status %d, the command line's %d\n%s" % (
+            p.returncode, base.status, p.stderr.decode("utf-8", "replace")[-1000:]))
+        return
+    for mine, theirs, what in ((lj, base.files["json"], "JSON"), (lc, base.files["csv"], "CSV")):
+        a = open(mine, "rb").read() if os.path.exists(mine) else None
+        b = open(theirs, "rb").read() if os.path.exists(theirs) else None
+        if a != b:
+            res["library"] = ("fail", "%s differs from the command line's (%s and %s bytes)" % (
+                what, None if a is None else len(a), None if b is None else len(b)))
+            return
+    res["library"] = ("pass", "")
 
 
 def _summary(an):

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The property campaign's driver (docs/property.md).
 
-    prop.py BGDRAW [--count N] [--seed S] [--max-elems K] [--found DIR] [--jobs J]
+    prop.py BGDRAW [--count N] [--seed S] [--max-elems K] [--found DIR] [--jobs J] [--lib PROP_LIBJSON]
     prop.py --self-test          the shrinker shrinks (a synthetic predicate)
 
 Generates models seed S, S+1, ..., S+N-1 (tests/property/gen.py), checks each
@@ -59,28 +59,28 @@ def submodel(m, keep):
     return s
 
 
-def shrink(bgdraw, m, name, workdir, seed):
+def shrink(bgdraw, m, name, workdir, seed, lib=None):
     """Shrinks m to a small model that still fails check `name`."""
     def fails(keep):
         s = submodel(m, set(keep))
         if not s.bonds:
             return False
-        r = check.check(bgdraw, s, workdir, seed)
+        r = check.check(bgdraw, s, workdir, seed, lib)
         return r.get(name, ("skip",))[0] == "fail"
     items = [("e", x.name) for x in m.elems] + [("b", b[0]) for b in m.bonds]
     return submodel(m, set(ddmin(items, fails)))
 
 
 def one(args):
-    bgdraw, seed, max_elems, found, known = args
+    bgdraw, seed, max_elems, found, known, lib = args
     m = gen.generate(seed, max_elems)
     with tempfile.TemporaryDirectory() as wd:
-        res = check.check(bgdraw, m, wd, seed)
+        res = check.check(bgdraw, m, wd, seed, lib)
         failed = [k for k, v in res.items() if v[0] == "fail" and k not in known]
         shrunk = []
         for name in failed[:1]:  # the first failing check of the model
-            small = shrink(bgdraw, m, name, wd, seed)
-            again = check.check(bgdraw, small, wd, seed)[name]
+            small = shrink(bgdraw, m, name, wd, seed, lib)
+            again = check.check(bgdraw, small, wd, seed, lib)[name]
             if found:
                 os.makedirs(found, exist_ok=True)
                 base = os.path.join(found, "seed%d_%s" % (seed, name))
@@ -122,6 +122,15 @@ def self_test():
     print("self-test passed")
 
 
+def print_table(table, out):
+    print("| check | ran | passed | failed | skipped |", file=out)
+    print("|---|---|---|---|---|", file=out)
+    for c in check.CHECKS:
+        t = table[c]
+        print("| %s | %d | %d | %d | %d |" % (c, t["pass"] + t["fail"], t["pass"], t["fail"], t["skip"]),
+              file=out, flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("bgdraw", nargs="?")
@@ -130,6 +139,7 @@ def main():
     ap.add_argument("--max-elems", type=int, default=100)
     ap.add_argument("--found", default=None)
     ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--lib", default=None, help="tests/property/libjson.c built (prop_libjson)")
     ap.add_argument("--known", action="append",
                     help="a check whose failures are counted but do not fail the run (docs/property.md)")
     ap.add_argument("--self-test", action="store_true")
@@ -143,7 +153,8 @@ def main():
     nfail = 0
     known = set(a.known or [])
     nknown = 0
-    jobs = [(bgdraw, s, a.max_elems, a.found, known) for s in range(a.seed, a.seed + a.count)]
+    lib = os.path.abspath(a.lib) if a.lib else None
+    jobs = [(bgdraw, s, a.max_elems, a.found, known, lib) for s in range(a.seed, a.seed + a.count)]
     with ProcessPoolExecutor(max_workers=a.jobs) as ex:
         for k, (seed, size, res, why, shrunk) in enumerate(ex.map(one, jobs, chunksize=4)):
             sizes.append(size)
@@ -161,7 +172,8 @@ def main():
                 for name, ne, nb, d in shrunk:
                     print("  shrunk to %d elements, %d bonds: %s" % (ne, nb, d.splitlines()[0] if d else ""))
             if (k + 1) % 500 == 0:
-                print("... %d models" % (k + 1), file=sys.stderr, flush=True)
+                print("... %d models, %d with a failure" % (k + 1, nfail), file=sys.stderr, flush=True)
+                print_table(table, sys.stderr)
     print("%d models (seeds %d..%d), %d to %d elements (mean %.1f), %d with a failure" % (
         a.count, a.seed, a.seed + a.count - 1, min(sizes), max(sizes), sum(sizes) / len(sizes), nfail))
     print("%d models not simulated (exit status 3, the reason stated):" % sum(refused.values()))
@@ -169,11 +181,7 @@ def main():
         print("  %5d  %s" % (v, k))
     if known:
         print("%d models failed only known checks (%s): counted, not shrunk" % (nknown, ", ".join(sorted(known))))
-    print("| check | ran | passed | failed | skipped |")
-    print("|---|---|---|---|---|")
-    for c in check.CHECKS:
-        t = table[c]
-        print("| %s | %d | %d | %d | %d |" % (c, t["pass"] + t["fail"], t["pass"], t["fail"], t["skip"]))
+    print_table(table, sys.stdout)
     return 1 if nfail else 0
 
 
