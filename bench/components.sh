@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Flattening cost: N instances of a 10-element submodel against the same model
 # written flat, through parse, flatten, compile and the whole causal analysis
 # (--check) and with the JSON written, and drawn: the composed model with every

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Benchmark (not a test): every seed example (examples/*.bg) end to end:
 # parse, causality, analysis, equations, numeric index, diagram (SVG),
 # analysis JSON and simulation (CSV) in one run, as

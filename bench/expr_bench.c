@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Benchmark (not a test): nanoseconds per linear term of a right-hand side,
  * tree walking (bg_xeval) against the bytecode VM (bg_prog_eval).
  *

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds bench/expr_bench.c with the evaluator sources at release optimisation
 # and runs it: ns per linear term, tree walker vs bytecode VM, and the ratio.
 #   bench/expr_bench.sh [N...]     (default: 100 1000 10000)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes a chain of N instances of a 10-element submodel, composed (one
 `submodel Cell` used N times) and the same model written flat by hand, for
 bench/components.sh.  Usage: gen_components.py N COMPOSED.bg FLAT.bg"""

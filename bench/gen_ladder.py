@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes an RC ladder of N sections as a .bg model (4 bonds a section).
 
 usage: gen_ladder.py N [OUT.bg]   (stdout without OUT)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Models for bench/layout_bench.sh: a chain of N bonds (alternating 1- and
 0-junctions with an R, I or C each) and a reaction network with S modulating
 signals (species: a C on a 0-junction; reactions: an R on a 1-junction between

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes one of three scalable bond graph models with about BONDS bonds.
 
 usage: gen_models.py chain|ladder|grid BONDS [T_END]   (the model on stdout)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Memory per input byte (issue 22): peak resident memory of bgdraw on RC
 # ladders of growing size and on a file of comments, and the slope between
 # the sizes (the fixed cost of the libraries cancels out).

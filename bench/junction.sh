@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --check on N stores sharing one 0-junction (one integral store, N - 1
 # dependent ones): the Jacobian pattern's colouring and the signal flow
 # graph's parallel-edge test, both once quadratic in N (issue 28).

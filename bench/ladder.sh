@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Benchmark (not a test): analysis time of RC ladders of 1000, 10000 and
 # 100000 bonds. usage: bench/ladder.sh [BGDRAW]  (default build/bgdraw)
 # Prints seconds for `--check` and for `-o x.json` per size, and the ratio

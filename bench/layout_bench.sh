@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Layout stays linear (issue 31): the diagram's layout and scene
 # (bg_diagram_build, default layers, default style) of a chain of 10 000
 # bonds and of a reaction network with 1 000 modulating signals, each beside

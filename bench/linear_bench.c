@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Linear analysis benchmark (not a test): an RC ladder of N sections (N
  * states) read, analysed, linearised (exact Jacobians, operating point,
  * state space, poles up to 500 states) and its frequency response at 200

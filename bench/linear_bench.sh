@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Linear analysis benchmark (not a test): an RC ladder of N sections (default
 # 1000 states) with `linearise` and the last capacitor's voltage as output,
 # through bench/linear_bench.c (linearisation + 200-frequency Bode data) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Hand-written reference for bench/sim_bench.sh: the RC ladder of
  * bench/sim_bench.sh (Se U = 1 into N stages of series R and shunt C) with a
  * hand-coded right-hand side and sparse Jacobian, integrated with the same

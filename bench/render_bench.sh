@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Times layout + rendering through the CLI for two generated models of about
 # N elements (default 1000): a chain of alternating 0/1 junctions with a C, I
 # or R on each, and an RC ladder (bench/gen_ladder.py, N/4 sections: one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* In-process timing of the diagram stages for one model: analysis, then
  * bg_diagram_build (pango measuring, Graphviz layout, scene) and each output
  * format, best of 3. Built and run by bench/render_bench.sh.

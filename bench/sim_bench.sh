@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Benchmark (not a test): a 10 000-state RC ladder through `bgdraw --simulate`
 # and through bench/rc_ladder_hand.c (hand-written right-hand side and sparse
 # Jacobian, same CVODE BDF + KLU settings, the same rtol 1e-6 and atol 1e-9:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* In-process time of every stage for one model, as the CLI runs them:
  * parse, compile, causality, analysis (paths, loops, form), equations, the
  * reduced form, each equation printer, the analysis JSON, the simulation

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Benchmark (not a test): a doubling sweep over model size, per stage.
 # For each shape (bench/gen_models.py: chain, ladder, grid) and each size in
 # bonds (FROM, 2·FROM, ... up to TO), runs bench/stage_time.c in a fresh

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* libbgdraw: the bgdraw engine as a C library (docs/library.md).
  *
  *   bgd_model *m = bgd_open_file("rlc.bg", NULL);      // read, parse, check

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs bgdraw on every malformed model in tests/bad/ (and a few generated
 # ones) and checks: exit status 1, each "# expect: LINE:COL: MESSAGE" line of
 # the file appears in stderr as "FILE:LINE:COL: error: MESSAGE...", a caret

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Large inputs stay cheap or are refused early (issue 28):
 # - 10^5 stores on one 0-junction (one integral store, 99 999 dependent
 #   ones): --check finishes within 10 s of CPU (the Jacobian pattern's

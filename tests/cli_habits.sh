@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The command line in the habits of documentation builds (docs/cli.md):
 # pipes (model from stdin, diagram to stdout), GNU option forms, --version,
 # options that would be ignored are errors, --show overlays, make depfiles,

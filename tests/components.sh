@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Submodels end to end: the JSON says which instance bonds each flat bond
 # joins and which instance each element belongs to (and passes the schema
 # checker), the report lists instances and bond origins, CSV headers carry

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The documentation-build integrations in contrib/ (docs/integrations.md), each
 # run with its tool (tools/deps.sh installs python3-sphinx and pandoc): the
 # Sphinx directive (file and inline models, options, a bad model is a warning),

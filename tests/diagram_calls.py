@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The call rule inside render/diagram (docs/developer.md): every file calls
 only files of a lower level, never a sibling of its own level or the driver.
 A file's functions are its non-static definitions at column 0; a call is the

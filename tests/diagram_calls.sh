@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The call rule inside render/diagram (tests/diagram_calls.py) holds on the
 # tree, and the checker catches violations planted in a copy: a pass calling
 # a sibling pass, a helper calling the driver, and a file with no level.

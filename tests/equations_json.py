@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Checks that an equations JSON document (bgdraw --equations json) is
 self-contained (docs/json.md, "The equations document"): every name an
 expression uses is defined in the same document (parameters with values,

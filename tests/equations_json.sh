@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --equations json is self-contained (docs/json.md, "The equations
 # document"; tests/equations_json.py): every example under its own and
 # other causality methods, a model with a named input and a table; the

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """What docs/examples.md says bgdraw finds in each example about causality,
 causal paths, causal loops, conflicts, gains, classes, topological loops,
 form, index, estimates and Lagrange coordinates, checked on the analysis JSON that

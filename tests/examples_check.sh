@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Every examples/*.bg must pass `bgdraw FILE --check` with status 0 and no error.
 # Usage: bash tests/examples_check.sh PATH_TO_BGDRAW   (from the project root)
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Model exports (docs/export.md) from the command line, each run by the tool
 # it is for and compared with bgdraw's own simulation:
 # - -o NAME.c writes NAME.c and NAME.h; two exported models (an ODE and a DAE,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Exports that compile whatever the names (issue 28): every example gets
 # params named after each keyword of C (C11, C23 and the object-like macros
 # of the headers the export includes), Python (keyword.kwlist, read from

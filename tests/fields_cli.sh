@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Multiport fields end to end (docs/format.md, "Multiport fields"; docs/drawing.md):
 # the --check summary reports each field's port causalities (mixed causality
 # said); the diagram draws a field as one node "C : K" with its ports' names

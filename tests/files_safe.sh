@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Outputs never damage what they point at, and inputs are read safely
 # (docs/cli.md "Output files" and "Input files"; issues 13 and 22):
 # - an output that is an input (the model, a table CSV, a style file; by

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # -o NAME.fmu (docs/export.md, FMU): an FMI 2.0 Model Exchange archive.
 # - rlc.bg (an ODE) exports; the archive's CRCs check (python3 zipfile) and it
 #   holds exactly modelDescription.xml, sources/rlc.{h,c}, sources/rlc_fmi2.c

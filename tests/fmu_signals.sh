@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # An interrupted FMU build leaves nothing behind (issue 28): with a stand-in
 # compiler ($CC, a script that records its pid and its child's and waits) the
 # build is stopped by SIGINT, SIGTERM and SIGHUP while it compiles; bgdraw

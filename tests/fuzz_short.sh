@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # A short deterministic fuzz run (tests/fuzz/README.md): each fuzz target of
 # the build (parse, equations, simulate, render, linear; the fixed-seed driver) runs
 # every seed (examples/, tests/bad/, the regression inputs tests/fuzz/corpus/)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Hostile input is refused quickly and with a reason (issues 20 and 22):
 # - an error flood stops at the limit (100, or --max-errors N; 0: all) with
 #   a note, in well under a second; a 1 MB binary file is one "not a text

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The dependency rule of docs/architecture.md: a file in a stage folder includes
 only headers of its own stage and of the stages below it.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The stage dependency rule (tests/include_rule.py) holds on the tree, and the
 # checker catches violations planted in a copy: an include of a higher stage, a
 # bare include of another folder's header, another stage's internal header

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Predicted and numeric index (issue 12, defect 8; docs/analysis.md): for
 # every example under every causality method the two agree (both above 1
 # counts as agreeing), or the JSON states the disagreement with its reason

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake --install into a temporary prefix (docs/install.md): the installed
 # bgdraw runs with the source and build trees out of sight (a private mount
 # namespace puts empty folders over them) and the prefix moved elsewhere, finds

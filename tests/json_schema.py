@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Checks analysis JSON files against the schema of docs/json.md (format
 "bgdraw-analysis", version 1): required keys (top level in the schema's
 order, and inside every list item), value types and vocabularies,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The analysis JSON of every example, with every causality method and the
 # variants of docs/examples.md, against the schema of docs/json.md
 # (tests/json_schema.py: required keys, vocabularies, references); each run

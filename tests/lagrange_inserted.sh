@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Lagrange causality with a 1-junction inserted into a bond (docs/equations.md,
 # "Lagrange causality"): each model below gets an inserted junction under
 # --causality lagrange; its simulation must agree with the same model's SCAP

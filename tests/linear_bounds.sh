@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The linear analysis on its edges (issue 28):
 # - a frequency range beyond the limit (w_min = 1e-200, w_max = 1e200 once
 #   made every frequency inf and the Bode plot loop) is refused at --check

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The linear analysis on the command line (docs/linear.md): --linear text,
 # latex and json with the hand-derived transfer functions of an RLC circuit,
 # the "linear" key of the analysis JSON, refusals (exit 3), examples without

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Messages that name the cause (issue 28):
 # - --set a=inf and --set a=nan are errors naming the param; a param that
 #   is infinite in the file is a warning at the param (a NaN param is an

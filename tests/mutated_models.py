@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Robustness: bgdraw never crashes on damaged input.
 
 Takes every model in examples/, damages it in deterministic random ways

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Where outputs go (issue 28, "Outputs"; docs/cli.md, "Output files"): two
 # outputs on one file are refused before anything is computed (status 2, no
 # file written); /dev/stdout into a pipe gets the bytes and with `>> file`

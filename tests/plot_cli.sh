@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The CLI's simulation plots end to end (docs/cli.md, docs/plots.md): `--plot
 # FILE.svg|pdf|png` for every example with a simulate block that simulates,
 # well-formed SVG (xmllint), file signatures, byte-identical reruns, the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Exact solutions of piecewise affine systems, for the simulation tests.
 
 A model whose every mode is linear with inputs that are themselves solutions

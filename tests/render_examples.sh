@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Every examples/*.bg renders to SVG, PDF, PNG and DOT under every style
 # through the bgdraw CLI; the SVG is well-formed XML (xmllint); a second run
 # gives byte-identical files; the DOT output agrees with the analysis JSON

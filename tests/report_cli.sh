@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --report FILE.pdf end to end (docs/report.md): every example gives a
 # report whose text (pdftotext) has every section title and whose page
 # count is sensible; the key numbers are the analysis' own (read from the

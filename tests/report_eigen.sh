@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The report's eigenvalue table (docs/report.md): a complex pair is one
 # "re ± im" row however many rows precede it (two pairs and a real
 # eigenvalue give three rows, not five), and a conserved quantity's

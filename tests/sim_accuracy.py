@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Accuracy through many state events (docs/simulation.md, "Accuracy through
 events"): a load driven through a gear backlash (a dead-zone spring) at the
 default tolerances, against its exact piecewise solution (tests/pwaffine.py).

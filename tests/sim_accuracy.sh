@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Accuracy through many state events at the default tolerances
 # (docs/simulation.md, "Accuracy through events"): a gear backlash (a
 # dead-zone spring) with 25 to 50 switchings, six parameter sets (one fixed,

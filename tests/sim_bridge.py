@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A diode bridge started on its switching point (docs/simulation.md,
 "Starting on a switching point"): four diodes f = if(e > 0, e/Ron, e/Roff),
 a sine source, a load RL || CL. At t = 0 every diode sits at its threshold.

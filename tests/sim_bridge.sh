@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Starting on a switching point (docs/simulation.md, "Starting on a switching
 # point"): the diode bridge of tests/data/diode_bridge.bg (four if-law diodes,
 # a sine source, every diode at its threshold at t = 0) runs from t = 0 at the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # State events in the outputs (issue 12; docs/simulation.md "State events"):
 # the bouncing ball of tests/data/bouncing_ball.bg through the CLI: -v prints
 # each event (the first contact at t = sqrt(2 h / g) = 0.4515236410), the JSON

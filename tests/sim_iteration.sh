@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The nonlinear iteration of large Adams runs (docs/simulation.md, "Nonlinear
 # iteration"): above 200 unknowns CVODE's Adams method iterates by fixed point
 # (no Jacobian, no sparse LU), and a run that needs more than 2 000 steps in an

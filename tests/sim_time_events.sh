@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # A condition of t that no input breakpoint covers is a state event
 # (docs/simulation.md, "State events"): a square wave step(sin(w t)) charging
 # an RC (tau 0.05 s, period 0.2 s) against its closed form, piece by piece;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The CLI's simulation end to end (docs/cli.md, docs/simulation.md):
 # `--simulate -o X.csv` writes the CSV (header, one row per output time,
 # last time = t_end), reruns are

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Start-up (issue 19): a run that draws nothing loads none of the render
 # libraries (Graphviz, cairo, pango) and not the render module; a run that
 # draws loads the module once and gives the same diagram; a missing module

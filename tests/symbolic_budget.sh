@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The symbolic layer's work budget (issue 28): three small valid models whose
 # symbolic reduced form once ran for minutes finish within a few seconds of
 # CPU each and say why a result is missing:

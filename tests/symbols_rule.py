@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Two hygiene rules of docs/architecture.md, checked on the sources:
 
 1. Every function a file of src/ or render/ defines without `static` is called

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Every extern function of src/ and render/ is called from another file, and
 # docs/architecture.md names every source file (tests/symbols_rule.py); the
 # checker catches violations planted in a copy: a function nothing calls, a

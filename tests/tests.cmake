@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Labels: `quick` for the tests that together run in under a minute on an
 # idle machine (tools/test.sh --quick, the developer's loop), `slow` for the
 # rest; CI and tools/test.sh run both.

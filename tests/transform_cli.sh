@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Model transformations (docs/transform.md): --transform NAME -o NEW.bg.
 # Each transformed model re-parses, keeps the rest of the model (params,
 # simulate, plot, options, comments), has the equations the chapter derives,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # bgdraw's own memory on every output kind (issue 20): one run writes every
 # -o format (svg pdf png dot json tex c csv), the plot and the report of the
 # RLC example; --check and --equations text run too; then the exports, the

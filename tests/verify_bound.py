@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """--verify's error bound against the true error (docs/simulation.md,
 "Verification"): on every model of the test suite with an exact answer, at
 the default tolerances and at looser ones, the bound --verify states (JSON

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --verify states an error bound (docs/simulation.md, "Verification"): twice
 # the largest deviation of any output or state from a run 100 times tighter.
 # tests/verify_bound.py holds it against the true error on every model of the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --verify (issue 12; docs/simulation.md "Verification"): the run again at
 # tolerances 100 times tighter, the largest deviation of each output
 # relative to its range. rlc at its own tolerances: a small deviation that

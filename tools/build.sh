@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs missing packages, configures (once) and builds bgdraw into build/.
 #   bash tools/build.sh           what bgdraw needs (the main job)
 #   bash tools/build.sh --tests   and what the tests need (tools/test.sh)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian 12 packages bgdraw needs, only if some are missing:
 #   bash tools/deps.sh          what building and running bgdraw needs (the main job)
 #   bash tools/deps.sh --tests  that and what the test suite needs

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: set up, build, and render an example into out/: its annotated
 # diagram (SVG and PNG), its analysis (JSON) and its multi-page report (PDF).
 # usage: bash tools/run.sh [MODEL.bg]   (default examples/hydraulic_bridge.bg)

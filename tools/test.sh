@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The test suite: set up (with the tests' packages), build, run ctest.
 #   bash tools/test.sh          every test (CI: .ci/run)
 #   bash tools/test.sh --quick  the tests labelled quick: under a minute on an

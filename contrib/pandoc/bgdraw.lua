@@ -1,3 +1,4 @@
+-- SPDX-License-Identifier: BSD-3-Clause
 --[[ pandoc Lua filter: ```bgdraw code blocks become bond graph diagrams.
 
     pandoc doc.md --lua-filter contrib/pandoc/bgdraw.lua -o doc.html

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Sphinx extension: bond graph diagrams drawn by bgdraw.
 
     extensions = ["bgdraw_sphinx"]      # with contrib/sphinx on sys.path

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The driver. Model + analysis → a layout result (labels measured with
  * pango, positions from Graphviz and the grid pass, where the bonds run),
  * then a scene drawn from it by the passes, in drawing order. */

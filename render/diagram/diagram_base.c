@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The diagram's shared helpers, called by every pass and calling none:
  * vector maths, ink (the highlight's muting), layer colours and dashes,
  * and questions about the model and the layout result (which nodes are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The bonds pass: bond lines with their half arrows, causal strokes, bond
  * numbers (or variables) and labels placed beside their bonds, element
  * labels, and the Lagrange causality's artificial flow sources. */

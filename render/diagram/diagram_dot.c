@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The annotated graph in Graphviz DOT with the computed positions (points,
  * y up, as Graphviz writes them): `neato -n2 -Tsvg x.dot` redraws it. Written
  * by hand from the layout so the text is deterministic. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Multiport fields in the diagram (docs/drawing.md): a field is one node
  * ("C : K") with one bond per port, each labelled with its port's name at
  * the field's end. The model keeps one element per port; here the first

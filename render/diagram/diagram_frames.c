@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Instance frames: with submodels, each instance is drawn inside a labelled
  * frame ("M1 : DCMotor") around its elements and its own instances' frames,
  * measured on the final node positions (after dot and the grid placement).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Page geometry of the diagram: vectors, where bonds run, barbs, arrowheads. */
 #include <math.h>
 

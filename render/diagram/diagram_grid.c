@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The grid placement pass (docs/drawing.md, "Layout"): Graphviz's dot ranks
  * and orders the nodes; this pass puts the junction structure on a grid and
  * draws the bonds horizontal and vertical, the way textbooks draw bond graphs.

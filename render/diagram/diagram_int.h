@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of the diagram builder, shared by diagram*.c and render.c. */
 #ifndef BG_DIAGRAM_INT_H
 #define BG_DIAGRAM_INT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Analysis layers: causal paths and topological loops as offset dashed
  * polylines with direction arrows, conflicts as lightning flashes. A layer
  * always runs on the left of its direction of travel, so a flat loop (out

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Conflict flashes and the legend. */
 #include <math.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Detectors and collapsed instances (docs/drawing.md, "Detectors" and
  * "Collapsed instances").
  * - A detector (De, Df) is drawn as its own node `De : vC` beside the node it

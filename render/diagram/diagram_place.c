@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Free-floating text placement: bond numbers, path tags, loop gains. Every
  * drawn node box, label box and line (bonds, signals, path and loop
  * polylines) is an obstacle kept in a hashed grid; a label goes to the first

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Modulating signals: thin lines with a filled arrowhead at the modulated
  * element. A signal starts at the element whose variable it carries, at the
  * middle of a bond for a bond variable (e7, f7), or at the integrator node of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Tooltips of the SVG diagram (<title>): for a bond its number, power
  * direction, effort and flow and which end computes each (from the causal
  * stroke), for an element its kind, constitutive law and causality. Found

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The diagram's words, a leaf like diagram_base.c: names and gains as
  * pango markup (subscripts, raised powers, minus signs) and the one-line
  * descriptions of paths and loops that the legend and the DOT output

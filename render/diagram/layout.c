@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Graphviz layout through libgvc/libcgraph (never the dot program): fixed
  * size, unlabelled box nodes whose sizes come from pango measurements, so the
  * positions fit the labels bgdraw draws. Graphviz's y axis points up: we flip. */

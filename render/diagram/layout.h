@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Layout: node positions (and optionally edge splines) from Graphviz. The
  * only interface to Graphviz; everything is drawn by bgdraw itself. */
 #ifndef BG_LAYOUT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Breadth-first ranks for the layouts: a leaf under layout.c (dot's ranks)
  * and layout_rows.c (its columns), so neither calls the other's helpers. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "rows" layout: bgdraw's own, linear in nodes and edges, for graphs
  * too large for Graphviz to lay out quickly (dot and sfdp take tens of
  * seconds at 10 000 nodes). Nodes are ranked by breadth-first distance from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The public rendering API: option parsing, one layout per diagram, output
  * in any number of formats, written atomically. */
 #include <errno.h>

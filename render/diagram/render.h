@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Annotated bond graph diagrams: the public API for the CLI.
  *
  *   bg_diagram *d = bg_diagram_build(m, a, &opts, dg);   // layout once

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The versions of the rendering libraries, for bgdraw --version. */
 #include "diagram/layout.h"
 #include "diagram/render.h"

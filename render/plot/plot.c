@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation plots: one panel per `plot` statement (or one panel of every
  * output when there is none) stacked over a shared time axis, with 1-2-5
  * ticks, SI prefixes, a light grid, a legend per panel, curves that differ

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation plots: one panel per `plot` statement of the model (or one
  * panel of the states when there is none), stacked over a shared time axis,
  * drawn into a bg_scene so the same surfaces (SVG, PDF, PNG) replay them and

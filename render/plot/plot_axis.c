@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Axis maths of the simulation plots: 1-2-5 tick steps, axis limits that
  * survive zero-width, non-finite, tiny and huge ranges, and tick labels with
  * SI prefixes. Pure functions (no text measurement), tested directly. */

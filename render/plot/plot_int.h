@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Axis maths of the simulation plots (render/plot_axis.c), shared by
  * plot.c and the unit tests: "nice" tick steps (1, 2, 5 x 10^k), axis
  * limits and tick labels with SI prefixes. Conventions: docs/plots.md. */

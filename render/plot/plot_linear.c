@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Plots of the linear analysis in the simulation plots' look
  * (docs/linear.md#plots): Bode magnitude (dB) and phase (degrees,
  * unwrapped) over a log frequency axis with decade ticks, step and impulse

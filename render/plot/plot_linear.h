@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Plots of the linear analysis (docs/linear.md#plots): Bode, Nyquist, step
  * and impulse responses, in the simulation plots' look (docs/plots.md). */
 #ifndef BG_PLOT_LINEAR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* --report FILE.pdf: the multi-page A4 analysis report. The body (sections
  * 2 to 9) is laid out first, then the title page with the summary and the
  * contents, whose page numbers are known by then; pages get their running

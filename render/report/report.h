@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The multi-page A4 PDF analysis report (--report FILE.pdf): title page
  * with a verdict, the diagram with all layers, highlighted diagrams per
  * path, loop and conflict, the causality trace, tables of paths, loops and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report sections 4, 5, 6 and 8: the causality trace, the tables of causal
  * paths, causal loops, topological loops and conflicts, the model form and
  * index with the rank history, the estimates beside the eigenvalues. */

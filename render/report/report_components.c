@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section for a model built from submodels (language version 2): the
  * instances with their blocks of flat bond numbers, and for every flat bond
  * the bonds as written it came from ("bond 2 of the model + bond 1 of M1").

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report sections 2 and 3: the diagram with every layer, and one
  * highlighted diagram per path, loop and conflict worth showing. A diagram
  * is scaled to fit its space, but never so far that its smallest text falls

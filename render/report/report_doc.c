@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The report's document: A4 pages, each a bg_scene with other scenes
  * placed on it, a flowing cursor, headings recorded for the outline and the
  * contents, running header and footer, the multi-page PDF. */

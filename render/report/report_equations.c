@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section 7: the equations typeset from the text printer's lines
  * (eqprint.h): bond variables with subscripts, derivatives with a dot,
  * aligned on "=", long right-hand sides wrapped. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section for a model with multiport fields (docs/format.md,
  * "Multiport fields"): per field its ports, the element and bond of each,
  * the port's causality (mixed causality said) and its law as compiled. A

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of the report (render/report*.c): a document of A4 pages built
  * on bg_scene (report_doc.c), wrapped text (report_text.c), tables split
  * across pages (report_table.c) and the sections (report.c,

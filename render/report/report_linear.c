@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section 10: the linear analysis (docs/linear.md): the operating
  * point, the state space, the poles each beside the nearest time constant
  * or natural frequency the chapter estimates from causal paths (and how far

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section 9: the simulation plots and the solver's statistics, or
  * the reason there is no simulation. */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section 1: the title page with the verdict and the summary, then
  * the contents with page numbers (filled in once the front pages are
  * counted). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report tables: cells of markup, column widths from pango metrics, wrapped
  * cells, split across pages with the header row repeated. */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report text: markup pieces, greedy line breaking, wrapping with pango
  * metrics, equations typeset as markup, number and count wording. */
 #include <ctype.h>

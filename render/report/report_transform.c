@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Report section 11 (with --transform): what the transformation changed and
  * why (the new file's header comment), the analysis before and after side by
  * side, and the bond graph before and after, each drawn with the default

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The display list: items with path operations, text and role tags. */
 #include "scene/scene.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_scene: a backend-neutral display list. diagram.c fills it from the model
  * and the analysis; each surface (SVG, PDF, PNG) replays it unchanged, so all
  * formats show the same picture. Coordinates are points, y pointing down,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Style files: `key = value` lines, `#` comments, applied over the default. */
 #include "scene/style.h"
 

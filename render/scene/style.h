@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Styles: the surface-independent look of a diagram (fonts, line widths,
  * colours, spacing), read from `key = value` files in styles/. The keys are
  * documented in docs/drawing.md; unknown keys and bad values are errors. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Surfaces: replay a bg_scene with cairo into SVG, PDF or PNG bytes.
  * surface_cairo.c holds the replay shared by the three format files, text.c
  * the pango text set-up and measurement; only these five files include cairo

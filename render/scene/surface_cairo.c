@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Scene replay with cairo, text drawn with pango (through pangocairo) with
  * the settings text.c measures with, so SVG, PDF and PNG agree with the
  * layout's idea of every label's size. */

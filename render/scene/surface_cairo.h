@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the cairo surface files: scene replay and a byte sink. */
 #ifndef BG_SURFACE_CAIRO_H
 #define BG_SURFACE_CAIRO_H

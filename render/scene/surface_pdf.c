@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* PDF output through cairo's PDF surface. cairo 1.16 stamps the creation
  * date from the clock and ignores SOURCE_DATE_EPOCH, so we set it ourselves
  * (from SOURCE_DATE_EPOCH when set, else a fixed date) for reproducible files. */

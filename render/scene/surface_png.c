@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* PNG output: an ARGB image surface scaled by `scale` pixels per point. */
 #include <cairo.h>
 #include <math.h>

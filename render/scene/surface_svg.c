@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* cairo's SVG of a scene (version 1.1, points; text as glyph outlines): kept
  * as the reference for the SVG writer (svg_writer.c). */
 #include <cairo-svg.h>

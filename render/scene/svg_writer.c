@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* SVG for the web, written from the scene: paths as <path>, text as <text>
  * (so it can be searched, selected and restyled), the font with a fallback
  * list, a CSS class per role, <title> tooltips, a viewBox and no fixed size.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Text metrics with pango (through pangocairo), and the pango set-up the
  * cairo surfaces share: text is measured and drawn with the same settings
  * (no hint metrics, no glyph position rounding, 72 units per inch), so SVG,

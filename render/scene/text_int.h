@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The pango set-up that text.c measures with and the cairo surfaces draw
  * with (surface_cairo.c), and the lock they share. Internal to render/scene;
  * only text.c and the surface files include pango. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The analysis stage's front door: what the causal pattern says, after
  * causality assignment (docs/analysis.md). bg_analysis_run (form.c) fills
  * the causal paths and loops, the signal flow graph's algebraic loops, the

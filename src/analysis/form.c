@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_analysis_run: what the causal pattern says. Causal paths and loops
  * (paths.c), their topological loops in the signal flow graph (sfg.c),
  * gains, classes, the states, the form of the model, the predicted index

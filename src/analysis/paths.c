@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Causal paths and causal loops: depth-first searches over the junction
  * structure with explicit stacks. A search moves from bond to bond through a
  * node only where the two bonds have opposite causal orientation with

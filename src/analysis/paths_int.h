@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Causal paths and causal loops of a causal bond graph (docs/analysis.md):
  * paths.c's functions that form.c and sfg.c call. Not a public interface:
  * other stages include analysis/analysis.h. */

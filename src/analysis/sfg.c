@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Signal flow graph: construction from the strokes, gains of edge chains,
  * algebraic cycles (Johnson) and algebraic blocks (Tarjan). All graph
  * searches use explicit stacks: model size never grows the C stack. */

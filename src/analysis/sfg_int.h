@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The signal flow graph of a causal bond graph (docs/analysis.md).
  * Nodes are the bond signals (BG_SIG_EFFORT(b), BG_SIG_FLOW(b)) followed by
  * one node per user state (2*nbond + state id). Every constitutive relation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* libbgdraw: the public C API (include/bgdraw.h). A handle is a run
  * (src/run) with the output writers over it (src/output): the same stages,
  * in the same order, and the same writers as the command line, so every

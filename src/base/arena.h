@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Arena: a bump allocator, for data that lives as long as
  * one stage (the AST, a compiled model, an analysis). */
 #ifndef BG_ARENA_H

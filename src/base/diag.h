@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Diagnostics: user-facing errors and warnings with source positions,
  * printed like a C compiler's ("file:line:col: error: msg", the line, a caret). */
 #ifndef BG_DIAG_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Output files that never damage what they point at (fileio.h): regular
  * files are replaced atomically through a mkstemp file beside them, devices,
  * FIFOs and sockets are written in place, symlinks are followed, inputs and

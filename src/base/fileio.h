@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Files: bounded reads of the inputs (remembered by device and inode, so no
  * output can replace one), and outputs that never damage what they point at
  * (docs/cli.md, "Output files").

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Bounded reads of regular files and streams, and the set of files a run
  * read (by device and inode), which no output may replace (fileio.h). */
 #include "base/fileio.h"

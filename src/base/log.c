@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The message sink (log.h): formatting once, only when someone listens. */
 #include "base/log.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The engine's messages to whoever runs it: progress under -v, notes and
  * warnings about results. The engine never writes to stderr itself: a front
  * end (the command line, the library's caller) gives a sink; a NULL sink or a

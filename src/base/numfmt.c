@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_num_format (strbuf.h): the shortest "%.Ng", N from min_digits to 17,
  * that reads back as the same double. The reference definition is the loop
  * of snprintf and strtod in num_format_slow; it costs about 9 000

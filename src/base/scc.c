@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Tarjan's strongly connected components with an explicit stack of (vertex,
  * next edge) frames instead of recursion. */
 #include "base/scc.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Strongly connected components of a directed graph (Tarjan, iterative: no
  * recursion on the graph's depth). The one copy used by the signal flow graph
  * (algebraic blocks, Johnson's cycle search) and the equation ordering. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* glibc's qsort_r behind a portable name (see sort.h). */
 #define _GNU_SOURCE
 #include <stdlib.h>

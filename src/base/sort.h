@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_sort: qsort with a context argument for the comparison, so that no
  * sort in the engine keeps its context in a global (two runs on two threads
  * must not share one). It is glibc's qsort_r: the same algorithm as qsort,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* strbuf: a growable NUL-terminated string. */
 #ifndef BG_STRBUF_H
 #define BG_STRBUF_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* String-to-index hash table (strindex.h). */
 #include "base/strindex.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A hash table from strings to indices into the caller's own array of
  * entries (open addressing, linear probing, a power-of-two size at most half
  * full). The table holds only indices; the keys stay where the caller keeps

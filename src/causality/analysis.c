@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_analysis life cycle: every array lives in a->arena. */
 #include <string.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_analysis: what causality assignment and causal analysis found in a model.
  * Written by bg_causality_assign and bg_analysis_run, read by the equations,
  * the renderers and the JSON writer. Never modifies the model. Lists are

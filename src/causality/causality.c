@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_causality_assign: the stage's entry point. It runs one procedure
  * (causality_scap.c, causality_vandijk.c, causality_lagrange.c) on the engine
  * (causality_engine.c) and writes the result (causality_result.c). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Causality assignment: SCAP, relaxed causality (Joseph–Martens), van Dijk's
  * modification and Lagrange causality (docs/causality.md).
  *

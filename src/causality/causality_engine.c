@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The causality engine the procedures share (causality_int.h): strokes with
  * per-node counters, worklist propagation, trial assignment with roll-back,
  * the trace, and the names of causalities and reasons.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The causality engine shared by the causality_*.c files (not a public
  * interface: other stages include causality/causality.h): a stroke store
  * with per-node counters, a worklist propagation that is linear in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Lagrange causality (Karnopp, Section 4.10.1): sources, then artificial
  * flow sources at undetermined 1-junctions (file order), then, when bonds
  * are still open and no 1-junction is undetermined, a 1-junction inserted

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* From the engine's strokes to the analysis: element causalities, inverted
  * laws, conflict records (Definitions 4.18, 4.19), completeness, the trace
  * and the Lagrange lists, all allocated in a->arena. */

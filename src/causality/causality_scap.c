@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* SCAP (Karnopp–Rosenberg) and relaxed causality (Joseph–Martens) on the
  * engine of causality.c. Ties go in file order everywhere: fixed strokes by
  * bond order, then sources, stores and resistors by element order, then

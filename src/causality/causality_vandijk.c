@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Van Dijk's modification of SCAP (Sections 4.7, 4.11). SCAP runs; when a
  * choice of step 4 closed a causal loop of gain +1, or SCAP ended with a
  * conflict, the junction structure imposes a constraint among stores (a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* -M/--depfile FILE: a make rule "OUTPUTS: MODEL STYLE TABLES" naming every
  * file the run read, plus an empty rule per input (as gcc -MP writes), so
  * make rebuilds a figure when an input changes and does not fail when one

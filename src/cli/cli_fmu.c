@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* -o NAME.fmu (docs/export.md): an FMI 2.0 Model Exchange FMU. The C export
  * and the fmi2 glue are written to a private temporary folder (mkdtemp),
  * compiled there into a shared library by $CC (or cc), and zipped with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Command-line parsing for bgdraw with glibc's getopt_long, so the usual GNU
  * habits work (--opt=value, --, attached short values, bundled flags,
  * unambiguous prefixes of long options). Usage errors name the fix; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Command-line options of bgdraw (docs/cli.md). Parsing only; main.c acts on them. */
 #ifndef BG_CLI_OPTS_H
 #define BG_CLI_OPTS_H

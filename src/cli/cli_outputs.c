@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Where the outputs go: every output's bytes come from src/output's table;
  * here they are written atomically to their files, or in place to standard
  * output, and their statuses become exit codes (docs/cli.md). */

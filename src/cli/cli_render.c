@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The render functions the command line calls, loading the render module on
  * first use (cli_render.h): a run that draws nothing starts without mapping
  * Graphviz, cairo, pango and their dependencies. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The renderers (Graphviz, cairo, pango: two thirds of the shared libraries
  * bgdraw maps) live in a module, bgdraw_render.so, that the command line
  * loads only when a run draws: a diagram, a plot, the report, --version, or a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The one table of the render module bgdraw_render.so (cli_render.h). It is
  * the module's only object file: linking it pulls in exactly the renderers
  * it names. */

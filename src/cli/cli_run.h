@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* One invocation of the bgdraw command line: its options, the engine's run
  * (src/run) and the output writers over it (src/output). main.c decides the
  * outputs and asks for them; cli_outputs.c puts their bytes into files or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Diagram options from the command line: --show with overlays added to the
  * default layers, --highlight, --max-list, and where the named styles are
  * (beside the executable, never a path compiled in from the source tree). */

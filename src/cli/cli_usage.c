@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Checks of option values and combinations. A run never silently ignores
  * an option: -T that contradicts an -o extension, --simulate with nowhere to
  * show the simulation and --check with outputs are refused with the fix. */

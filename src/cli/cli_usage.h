@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* How command-line options combine: an option that would be ignored, or two
  * outputs that both want stdout, is a usage error with a hint (docs/cli.md). */
 #ifndef BG_CLI_USAGE_H

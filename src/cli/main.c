@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bgdraw: the command line. Runs the stages a request needs (load, analyse,
  * equations, numeric index, simulation); cli_outputs.c writes the outputs.
  * Only the cli files touch argv, output paths and exit codes. */

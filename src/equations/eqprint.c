@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Printers of the equation system: text, LaTeX and JSON from the equation
  * trees through the symbolic layer (sym.h: simplified, bond-numbered
  * variables), with the reduced form (eqsym.h) after them. (C, like the

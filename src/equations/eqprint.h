@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Printers of the equation system (--equations text|latex|c|json): the
  * sorted equations in computational order with bond-numbered variables, the
  * algebraic residuals and the ODE/DAE form. Each appends to out. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The reduced form of the equations (eqsym.h): explicit ODE wherever the
  * algebraic part is linear and regular.
  *

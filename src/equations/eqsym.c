@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Equation trees of bg_eqsys (eqsys_int.h) as bg_sym expressions, and the
  * names of their leaves (eqsym.h). */
 #include <ctype.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The equations of a bg_eqsys as bg_sym expressions (for the printers and
  * symbolic elimination), the names of their leaves in text and LaTeX, and
  * the reduced form: linear algebraic blocks eliminated symbolically

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_eqsys: derivation of one equation per bond variable from the causal
  * strokes (docs/equations.md), the unknowns, and the public accessors.
  * Sorting and tearing are in eqsys_order.c, evaluation in eqsys_tape.c. */

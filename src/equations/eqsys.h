@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_eqsys: the model's equations in computational order, ready to evaluate
  * numerically (simulation, linearisation, index). Built from a causal bond
  * graph (bg_model + bg_analysis); never modifies either.

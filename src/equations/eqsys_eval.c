@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_eqsys evaluation entry points: initial values, right-hand side,
  * residual, exact Jacobians, linearisation, outputs, breakpoints. */
 #include <lapacke.h>

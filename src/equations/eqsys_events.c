@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* State events (docs/simulation.md, "State events"): the instructions of the
  * main tape whose switching condition reads an unknown (a comparison, abs,
  * sign, step, ramp, pulse, min, max, sat, floor, ceil, a table segment),

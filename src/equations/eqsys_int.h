@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of bg_eqsys shared by eqsys.c (derivation of the equations),
  * eqsys_order.c (sorting and tearing), eqsys_tape.c (evaluation and exact
  * Jacobians), eqprint.c, index.c and the index reduction. Not a public

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Consistent initial values under Lagrange causality. The model's initial
  * state is what its stores hold (q0, p0), dependent stores included: under
  * Lagrange causality a store in derivative causality is fed by the

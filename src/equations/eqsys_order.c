@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Computational order of the bond variables (Tarjan's strongly connected
  * components, base/scc.h, on "signal reads signal") and tearing of algebraic
  * blocks: each cyclic block gives up algebraic unknowns (the analysis'

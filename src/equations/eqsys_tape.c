@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The equations compiled to one straight-line tape over a slot array
  * [t | y | yp | constants and intermediate values], evaluated with no
  * allocation, and differentiated exactly by forward-mode automatic

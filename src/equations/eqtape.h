@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The layout of bg_eqsys: its equation trees and its evaluation tape.
  * Part of the equations stage's front door (equations/equations.h) because
  * the exporters (src/export) write the same tape the engine evaluates, in

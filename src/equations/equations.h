@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The equations stage's front door (docs/equations.md): the equation system
  * (eqsys.h) and its layout for the exporters (eqtape.h), its printers
  * (eqprint.h), its symbols and reduced form (eqsym.h), the numeric index

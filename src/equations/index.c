@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Numeric index (Algorithm 4.1, the shuffle algorithm) and eigenvalues of
  * the linearised model A x' + B x = f. See index.h and docs/equations.md. */
 #include <float.h>

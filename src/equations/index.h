@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Numeric index of the equations linearised at the initial point (Algorithm 4.1
  * of the reference, docs/equations.md): regularity of the pencil first, then
  * the shuffle algorithm with rank decisions by SVD on equilibrated matrices;

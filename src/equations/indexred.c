@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Index reduction: Pantelides' algorithm on the structure of the equations,
  * then the dummy derivatives of Mattsson and Soederlind (indexred.h,
  * docs/equations.md "Index reduction"). The reduced system is built in

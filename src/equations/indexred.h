@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Index reduction (docs/equations.md, "Index reduction"): Pantelides'
  * algorithm on the structure of the equations (every explicit bond
  * variable substituted, params at their values, so a loop of gain +1

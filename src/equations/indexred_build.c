@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The reduced system of the index reduction as a bg_eqsys: unknowns, rows,
  * the tape. Per original unknown j with variables (j, 0..h): when some
  * derivative (j, d) is a dummy, (j, 0..d-1) are unknowns of their own,

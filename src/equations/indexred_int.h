@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of the index reduction shared by indexred.c (Pantelides, dummy
  * derivatives), indexred_build.c (the reduced bg_eqsys), indexred_tape.c
  * (symbolic expressions compiled to the tape) and indexred_words.c (what was

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Symbolic expressions (sym.h) compiled to the tape of a bg_eqsys, so the
  * reduced system's differentiated equations evaluate, and are
  * differentiated exactly, like every other equation (eqsys_tape.c). Sums

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* What the index reduction did, in bond-graph terms: which constraint was
  * differentiated (a dependent store's constraint and the causal paths that
  * end at it, the residual of a causal loop or of a conflict, a store's

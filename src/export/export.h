@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Model exports (docs/export.md): the equation system of an export build
  * (bg_eqsys_build_export: params stay variables) written as code other tools
  * run. Every exporter appends text to strbufs and touches no file. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Reusable C (docs/export.md): a header and a source with a symbol prefix,
  * a parameter record with the model's values as defaults, initial values,
  * names, the differential/algebraic id vector, right-hand side or residual,

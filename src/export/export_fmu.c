@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* FMI 2.0 Model Exchange (docs/export.md): modelDescription.xml and a glue
  * source that implements the fmi2 functions on top of the reusable C export
  * (bg_export_c). The fmi2 types are declared here from the standard's text,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the exporters: the evaluation tape of an export build written in
  * a target language from per-language templates, and identifiers. */
 #ifndef BG_EXPORT_INT_H

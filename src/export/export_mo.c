@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Modelica export (docs/export.md): one model per file with the params as
  * parameters, the stores' states with start values, every bond variable as a
  * Real, and the bond graph's equations unsorted (each element's relation as

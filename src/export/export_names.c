@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Identifiers of the exported code (export_int.h): a model's names made
  * identifiers of the target language, keeping clear of its keywords and of
  * the names its generated code or standard headers already mean (issue 28:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Python and Octave/MATLAB exports (docs/export.md): the export build's tape
  * in each language's syntax (export_tape.c), with the parameters as a dict
  * or struct, initial values, the right-hand side or residual, the outputs,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The evaluation tape of an export build in C, Python or Octave syntax: one
  * assignment per instruction over a value array, from per-language
  * templates, so every exporter computes exactly what bgdraw computes. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A minimal zip archive writer (docs/export.md, FMU): entries stored
  * uncompressed, CRC-32 from zlib, a fixed time stamp (1980-01-01) so the same
  * files give the same bytes. An FMU is a few tens of kilobytes; deflate would

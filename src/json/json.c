@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The analysis JSON writer. Bond references are bond numbers, element
  * references names; lists keep the analysis's (deterministic) order. */
 #include "json/json.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The analysis JSON of docs/json.md (format "bgdraw-analysis", version 1):
  * every required key in the schema's order, 2-space indentation, one list
  * item per line, deterministic (same model and analysis, same bytes). The

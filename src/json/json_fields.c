@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The `fields` list of the analysis JSON (docs/json.md): each multiport C or
  * R field with its ports, their elements, bonds and causalities, and whether
  * the causality is mixed. Written only for a model that has fields. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "linear" key of the analysis JSON (docs/json.md#linear): operating
  * point, descriptor and state-space matrices (rows as lists), poles with
  * natural frequency and damping, transfer functions per input/output pair. */

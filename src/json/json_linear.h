@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "linear" key of the analysis JSON (docs/json.md#linear), written when
  * the run made a linear analysis (docs/linear.md). Deterministic. */
 #ifndef BG_JSON_LINEAR_H

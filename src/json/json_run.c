@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The analysis document of a run (json.h, bg_json_write_run): the one
  * writer the command line, the library and the report's callers share. */
 #include "json/json.h"

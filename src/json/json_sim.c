@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "simulation" key of the analysis JSON (docs/cli.md): how a simulation
  * that ran with the analysis went (status, solver and why, tolerances,
  * statistics, consistent initial values). Kept apart from src/json.c, which

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "simulation" key of the analysis JSON (docs/cli.md), written when the
  * run simulated: status, solver and why, linear solver, tolerances, times,
  * rows, solver statistics, consistent initial values. Deterministic (no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_ast: the syntax of a .bg file as written (mutable, with source spans).
  * Produced by bg_parse_*, consumed by bg_model_compile, then freed. */
 #ifndef BG_AST_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The flattener, part 1: the driver, used files and submodel definitions
  * (their names, bond numbers and bond spans). Instances and expressions are
  * in flatten_expand.c, ports and flat bonds in flatten_bonds.c, the name

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Flattening (language version 2): a model with submodels, `use`d files and
  * instances becomes one flat version 1 AST with qualified names (M1.Ra) and
  * explicit bond numbers, plus the record of where each flat object came from.

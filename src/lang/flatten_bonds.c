@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The flattener, part 3: bond numbers and ports. A port is one bond end:
  * the bond inside the submodel and the bond outside it become one flat bond,
  * whose direction both must agree on. Every bond written in some scope is a

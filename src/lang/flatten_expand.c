@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The flattener, part 2: expanding instances. Each statement of a scope is
  * copied into the flat AST with its names qualified by the instance path
  * (Ra in instance M1 becomes M1.Ra) and its positions moved into the

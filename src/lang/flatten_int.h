@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internal to the flattener (flatten*.c): the state of one flattening. */
 #ifndef BG_FLATTEN_INT_H
 #define BG_FLATTEN_INT_H

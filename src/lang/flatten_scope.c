@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The flattener's shared helpers (flatten_int.h), under the driver
  * (flatten.c) and the parts (flatten_expand.c, flatten_bonds.c): growable
  * arrays, strings in the flat AST's arena, and scopes, the name tables of

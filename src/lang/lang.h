@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The lang stage's front door (docs/format.md): the syntax tree (ast.h),
  * the parser (parse.h) and flattening of submodels (flatten.h). Other
  * stages include this header only; the lexer (lex_int.h) and flattening's

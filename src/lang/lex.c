@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The .bg lexer: bytes -> tokens with 1-based line and byte-column positions. */
 #include "lang/lex_int.h"
 

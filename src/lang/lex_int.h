@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Lexer for .bg files: the whole source becomes one token array, with a
  * BG_TK_EOL token at the end of every logical line (a line ending in `\`
  * continues on the next). Lexical errors go to the diagnostics and leave a

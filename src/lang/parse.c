@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The .bg parser: tokens -> bg_ast. One statement per logical line; after a
  * syntax error the parser reports it, skips to the next line and goes on, so
  * one run reports every error. Expressions are parsed by recursive descent

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Lexer and parser: .bg source text -> bg_ast, with diagnostics. */
 #ifndef BG_PARSE_H
 #define BG_PARSE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Linear analysis driver: inputs, the equation system with perturbable
  * inputs, the operating point, the descriptor form from the exact Jacobians,
  * then reduction, poles and transfer functions (docs/linear.md). */

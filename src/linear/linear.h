@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Linear analysis (docs/linear.md): an operating point, the linearisation
  * there as a descriptor system E x' = A x + B u, y = C x + Cp x' + D u over
  * every unknown of the equations, the state space A, B, C, D after

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The state space of a descriptor system with dependent stores
  * (docs/linear.md#matrices): E is rank deficient on the differential
  * unknowns, so some stores' states are fixed by constraints (derivative

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The state space for a control engineer's next tool: an Octave/MATLAB
  * script (matrices, names, operating point; `ss` when the control package
  * is there) and a Python module (numpy arrays with names; `ss()` builds a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Frequency responses H(jw) = C (jwI - A)^-1 B + D. A is brought to upper
  * Hessenberg form once (A = Q H Q^T, dgehrd; skipped when A already is
  * Hessenberg, as the states of a chain of stores usually are), B and C are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of the linear analysis shared by its files. Not a public interface. */
 #ifndef BG_LINEAR_INT_H
 #define BG_LINEAR_INT_H

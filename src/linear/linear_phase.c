@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The phase of a frequency response, continuous along the frequencies.
  * Unwrapping the sampled angles (taking every step above 180 degrees as a
  * wrap) fails where the true phase moves by more than 180 degrees between

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The operating point of the linear analysis: the initial point (consistent
  * initial values) or a steady state, Newton on F(t, y, 0) = 0 with the
  * inputs held at their values at t and the exact Jacobian dF/dy. A singular

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The linear analysis as text (--linear text) and LaTeX (--linear latex):
  * the operating point, the matrices, poles with natural frequency and
  * damping, and each transfer function with its poles, zeros and DC gain.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* From the descriptor form to a state space A, B, C, D: an ODE's E is the
  * identity (taken as it is, so junction coefficients stay exact); a
  * semi-explicit index-1 DAE (the derivatives' columns of E have full rank)

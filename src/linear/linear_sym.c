@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The state space and transfer functions of a linear model in its params
  * (docs/linear.md#symbolic): the reduced form (src/equations/eqreduce.c)
  * with the sources' own variables kept as leaves, A = d x'/d x and

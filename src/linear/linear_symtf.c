@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Symbolic transfer functions of a state space whose entries are symbols
  * (docs/linear.md#symbolic-form): den = det(sI - A) and, per pair, the
  * numerator det [sI - A, -b; c, d] (= det(sI - A) H(s), the Schur

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Poles and transfer functions. Poles are the eigenvalues of A (reduced) or
  * the finite generalised eigenvalues of (A, E) (descriptor). The zeros of
  * pair (y_i, u_j) are the finite generalised eigenvalues of the system

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Step and impulse responses of the state space, exact at the sample
  * times: with h = t_end / (nt - 1), exp([A B; 0 0] h) = [Phi Gamma; 0 I]
  * (scaling and squaring with a degree-6 Pade approximant), then

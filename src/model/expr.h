@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Evaluation of model expressions (bg_xnode trees).
  * Two evaluators share one definition of every operator and function:
  *  - bg_xeval: a direct tree walk, for one-off values (params, initial values,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler, part 1: the driver, declarations, bonds, params,
  * inputs and states. Elements and the other statements are in
  * model_stmt.c, expressions in model_expr.c, queries in model_query.c; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_model: a compiled bond graph model — flat, immutable after
  * bg_model_compile, structure of arrays indexed by integer ids, every object
  * with its source position. Every later stage takes `const bg_model *`. */

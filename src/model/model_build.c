@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler's shared state (model_int.h), under the driver
  * (model.c) and its parts (model_stmt.c, model_expr.c, model_field.c,
  * model_detect.c): the model's growable arrays, strings in its arena, the

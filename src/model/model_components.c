@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler's entry point: a model with submodels is flattened
  * first (lang/flatten.h) and its flat AST compiled like a version 1 file;
  * where each element and bond came from is then recorded in the model. */

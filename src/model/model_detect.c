@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Effort and flow detectors (docs/format.md, "Detectors"): `De NAME = NODE`
  * names the effort of a 0-junction or a one-port, `Df NAME = NODE` the flow of
  * a 1-junction or a one-port. A detector has no bond and carries no power: it

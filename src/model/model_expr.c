@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler, part 2: expressions. Resolves names to ids and emits
  * bg_xnode trees (children before parents), records modulating signals,
  * loads table() data, and checks laws for linearity. Recursion follows the

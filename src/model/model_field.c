@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler, part 4: multiport C and R fields (docs/format.md,
  * Multiport fields). A field of n ports becomes n consecutive one-port
  * elements of its kind, one per port ("K.el", "K.2"), each with its port's

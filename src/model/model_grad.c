@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler, part 5: the gradient of a C field's energy, as model
  * expressions (each port's effort e_k = dW/dq_k).
  *

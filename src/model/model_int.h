@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internal to the model compiler (model*.c): the state of one compile.
  * Arrays of the model grow with malloc while compiling and are moved into
  * the model's arena at the end. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Read-only queries on a compiled model, and its one-line summary. */
 #include <string.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model compiler, part 3: elements (bond counts, values and laws,
  * modulation, linearity, options) and the statements model, causality,
  * simulate, layout, plot, and the options of bonds and states. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The model's named warnings (base/diag.h, docs/cli.md "Warnings"): what
  * compiles but is likely not what the author meant. Read-only over the
  * compiled model: a param no expression reads, a model without elements,

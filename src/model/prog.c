@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Register bytecode for model expressions: a compiler from bg_xnode trees
  * and a small VM. Every operator and function goes through the same
  * definitions as the tree evaluator (bg_xop_apply, bg_func_apply,

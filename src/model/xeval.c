@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Tree-walking evaluation of model expressions and the one definition of
  * every built-in function (the bytecode VM calls the same bg_func_apply). */
 #include <math.h>

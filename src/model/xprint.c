@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Printing model expressions as readable text with minimal parentheses.
  * The text re-parses to the same tree: parentheses are dropped only where
  * precedence and associativity make them redundant, so floating-point

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The output table (output.h) and the writers of the analysis, the
  * diagram, the equations, the simulation and the report. Exports are in
  * output_export.c, the linear analysis' outputs in output_linear.c. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Every output of a run, from one table (output.c): its name, the stages it
  * needs, whether it draws, and its writer, which produces the output's
  * bytes into a buffer. The command line writes the buffers to files (or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Export outputs (docs/export.md): the equation system built again in
  * export form (params stay variables, bg_eqsys_build_export), once per
  * output, and written by src/export: C (header and source), Python,

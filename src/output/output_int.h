@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the output stage's files (output.h is the front door). */
 #ifndef BG_OUTPUT_INT_H
 #define BG_OUTPUT_INT_H

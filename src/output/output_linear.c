@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The linear analysis' outputs (docs/linear.md): --linear FORM (text,
  * latex, json; the state space as an Octave script or a Python module) and
  * the Bode, Nyquist and step plots. A refused analysis is BG_OUT_REFUSED

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* --show lists, for the command line and the library alike: overlays add to
  * the default layers, a base layer (strokes, numbers, labels, all, none)
  * makes the list the whole set; +LAYER always adds. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The run (run.h): each stage once, on demand, after what it needs. The
  * order and the conditions are the command line's of old, so every output
  * is what it was; the command line and the library now share them. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The run: one model's way through the pipeline, the front door every front
  * end uses (the command line, libbgdraw, the transformations' second model,
  * the tests). It holds the source and its diagnostics, the model, the

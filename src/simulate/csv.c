@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation results as CSV (docs/simulation.md): header "t,<names>", one row per output
  * time, numbers in the shortest form that reads back exactly (bg_sb_num),
  * identical on every run.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_simulate: decides whether and how to simulate (refusal, solver choice
  * and why, tolerances, output grid, input breakpoints), then hands the plan
  * to the SUNDIALS driver (simulate_run.c). */

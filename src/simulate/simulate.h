@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation: integrates a model's equation system (bg_eqsys) over its
  * `simulate` block with SUNDIALS (CVODE BDF or Adams for ODEs, IDA for
  * index-1 DAEs). Refuses, without calling a solver, models whose index is

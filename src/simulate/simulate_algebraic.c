@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A purely algebraic model (no states, no algebraic unknowns) has nothing
  * to integrate: its outputs are functions of t alone. They are evaluated at
  * each output time, and no solver or LAPACK routine sees an empty system. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Two runs of one model compared row by row: every output, every state (when
  * both kept them) and the state events' times. --verify and the accuracy
  * control of switching models (docs/simulation.md) both measure a run by its

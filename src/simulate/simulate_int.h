@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internal to src/simulate*.c: the plan bg_simulate makes (solver, tolerances,
  * output grid, input breakpoints) and the SUNDIALS driver that carries it out. */
 #ifndef BG_SIMULATE_INT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Why a model must not be handed to a solver (docs/simulation.md): index
  * above 1, a causal loop of gain +1, an algebraic loop that is singular at
  * the current parameter values, incomplete causality. The message names the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The SUNDIALS driver: CVODE (BDF/Adams) or IDA over a bg_eqsys, dense or
  * KLU linear algebra with the eqsys' exact Jacobian, output on a fixed grid,
  * never stepping over an input discontinuity (stop just before each

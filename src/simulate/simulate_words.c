@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Solver failure flags in plain words: what each usually means for a bond
  * graph model and what to try (docs/simulation.md). IDA fails on index-2 and
  * singular systems with generic flags, so the words for those name the

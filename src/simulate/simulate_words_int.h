@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internal to src/simulate*.c: solver failure flags in plain words. */
 #ifndef BG_SIMULATE_WORDS_H
 #define BG_SIMULATE_WORDS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_sym core: hash-consed nodes and the canonical constructors (sym.h).
  * Differentiation, substitution, expansion and evaluation are in
  * sym_ops.c, printing in sym_print.c. */

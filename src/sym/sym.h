@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_sym: a small symbolic expression layer for printing, symbolic
  * elimination and differentiation (not for simulation: that evaluates the
  * tape of eqsys_tape.c).

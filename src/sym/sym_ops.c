@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_sym operations: substitution, differentiation, expansion, common
  * denominators, dependency tests and evaluation (sym.h). Each walk keeps
  * its own memo (a small hash map from node id to result), so shared

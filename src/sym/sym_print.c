@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_sym printing, text and LaTeX (sym.h): sums start with a positive term
  * (n - 1, not -1 + n), products print as numerator / denominator, and a
  * negative product with a sum among its factors flips that sum instead of

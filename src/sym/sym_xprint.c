@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A model expression printed simplified (the laws of a field's ports in the
  * JSON and the report: an energy's gradient as compiled reads
  * 2*K.el.q*K.mech.q/(2*eps*A), simplified K.el.q*K.mech.q/(eps*A)). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The transformations' driver: the names, the header of the new text, and
  * the check of the new model (parsed, compiled, given causality and
  * analysed) before it is handed back; docs/transform.md. The look-ups and

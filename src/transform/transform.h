@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Model transformations of the reference chapter (docs/transform.md): a
  * model whose causal analysis shows a problem is rewritten as a new .bg
  * model in which the problem is gone, with a comment saying what changed

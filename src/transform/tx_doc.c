@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The text editor of the transformations: the model's source as physical
  * lines, edited statement by statement, so that everything a transformation
  * does not touch (comments, blank lines, layout, continuation lines) is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* What the transformations (tx_merge.c, tx_parasitic.c, tx_relax.c,
  * tx_virtual.c) share, under the driver (transform.c): the statements of
  * elements and bonds, constant expressions, fresh names, bond edits, and a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Internals of the transformations: the text editor over the model's
  * source lines, the statement printer, and what the transformations share. */
 #ifndef BG_TX_INT_H

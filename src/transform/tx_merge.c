@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* merge-stores (chapter Section 4.4 and Conclusion): an independent and a
  * dependent linear store of the same type, joined by a class 1 causal path
  * through junctions that share the stores' variable and constant

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* parasitic (chapter Figure 4.5, Sections 4.3 and 4.9): a small C at a
  * 0-junction (I at a 1-junction) takes the junction's common variable as a
  * state, which breaks an algebraic loop between resistors through it

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The statement printer of the transformations: elements and bonds written
  * back from their syntax, expressions by their source text. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* relax-junction (chapter Section 4.9, Figure 4.26): a source whose fixed
  * causality reaches a resistor directly (or through two-ports) forces it
  * against its law, which then has to be solved implicitly. An extra

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* merge-stores through a modulated transformer (chapter Section 4.10,
  * "Virtual Inertia and its Companion Gyristor", Figure 4.30): an inertia D
  * tied to an independent inertia A by a class 1 causal path through an MTF

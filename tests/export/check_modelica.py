@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Structural check of a Modelica file written by bgdraw (no Modelica tool is
 packaged in Debian 12): one model, declarations before `equation`, the model
 balanced (as many equations as non-parameter variables), every identifier in

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Compares two simulation CSVs (same header, same times): for every column
 the largest deviation relative to that column's range in the first file.
 usage: compare_csv.py A.csv B.csv TOL [LABEL]; exit 1 when a column deviates

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Test driver for exported C (tests/export_cli.sh): links two exported models
  * into one program, integrates the ODE one with CVODE and the DAE one with
  * IDA using the exported right-hand side, residual, sparse Jacobian and

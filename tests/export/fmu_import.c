@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A small FMI 2.0 Model Exchange importer for tests/fmu_cli.sh: loads an
  * FMU's shared library with dlopen, calls the fmi2 functions in the order the
  * standard prescribes (instantiate, setup, set a parameter, initialise, event

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Sourced by the export tests (export_cli.sh, fmu_cli.sh): a temporary folder
 # removed on exit, check NAME STATUS counting failures in $fail, cmp_csv, and
 # rlc with tight tolerances in $tmp/rlc.bg (so comparisons see the equations,

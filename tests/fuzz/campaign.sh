@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # A long coverage-guided fuzz campaign with libFuzzer (clang, ASan + UBSan),
 # one target after another, niced, each bounded in time and memory.
 #

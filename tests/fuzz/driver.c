@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A deterministic stand-in for libFuzzer's main, for builds without clang's
  * -fsanitize=fuzzer (the test suite; any compiler). It runs every input of
  * the corpus once, then -runs N mutants made with a fixed-seed generator:

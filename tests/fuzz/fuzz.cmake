@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Fuzz targets (tests/fuzz/README.md). Every build makes fuzz_<target> with
 # the deterministic driver (driver.c), which tests/fuzz_short.sh runs; with
 # clang and -DBG_LIBFUZZER=ON (tests/fuzz/campaign.sh) they link libFuzzer

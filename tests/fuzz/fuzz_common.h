@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the fuzz targets (tests/fuzz/README.md): the input bytes are a
  * model file; each target runs one part of bgdraw's pipeline on it as the
  * CLI does, and must never crash, hang, leak its own memory or trip a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: the equations (every printed form, the reduced form), the
  * numeric index of small systems, the analysis JSON, the model exports (C,
  * Python, Octave, Modelica, the FMU's description and glue) and the three

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: the linear analysis of a model (at its operating point, or
  * the steady state when the input's size is odd) in every printed form, its
  * JSON object and Octave/Python exports, the frequency and time responses,

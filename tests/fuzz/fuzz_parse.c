@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: parse + compile + causality + analysis (fuzz_common.h). */
 #include "fuzz_common.h"
 

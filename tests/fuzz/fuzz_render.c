@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: layout and drawing (Graphviz, cairo, pango): the diagram as
  * SVG and DOT with every layer, and redrawn with the first path highlighted
  * (fuzz_common.h). */

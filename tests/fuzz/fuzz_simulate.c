@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: a short simulation (at most 50 output rows, 500 steps per
  * interval), its CSV and its JSON (fuzz_common.h). */
 #include "equations/equations.h"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Planted violations for the tree checkers (include_rule.sh, symbols_rule.sh),
 # sourced after `set -u`:
 #     . "$(dirname "$0")/lib/planted.sh" CHECKER.py DIR...

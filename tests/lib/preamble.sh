@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The preamble the shell tests share (tests/*.sh), sourced right after `set -u`:
 #     . "$(dirname "$0")/lib/preamble.sh" "$@"
 # ctest runs every script from the project root with bgdraw's path as its

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The property campaign (docs/property.md): N generated models (default
 # 10 000) from seed SEED (default 1) checked against the physics and against
 # each other; prints the table of checks (ran, passed, failed, skipped) and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What must hold for every generated model (docs/property.md).
 
 check(bgdraw, model, workdir, rng) runs bgdraw on the model and on variants

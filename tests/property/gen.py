@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Random valid bond graphs for the property campaign (docs/property.md).
 
 A model is kept as data (elements, bonds) so that the checker can rename,

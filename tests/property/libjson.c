@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* prop_libjson MODEL.bg OUT.json OUT.csv: the property campaign's library route
  * (docs/property.md). Opens the model with libbgdraw, simulates it and writes
  * the analysis JSON and the CSV as the library gives them, so check.py can

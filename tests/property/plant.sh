@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The planted-bug demonstration (docs/property.md): copies the engine to a
 # temporary folder, plants a sign error in the transformer's equations there
 # (f1 = -n f2 where the TF's side 1 receives the effort; nothing in the

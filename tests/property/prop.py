@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The property campaign's driver (docs/property.md).
 
     prop.py BGDRAW [--count N] [--seed S] [--max-elems K] [--found DIR] [--jobs J] [--lib PROP_LIBJSON]

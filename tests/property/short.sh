@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The property campaign's short run in the test suite (docs/property.md): 300
 # generated models of 2 to 30 elements, seeds 1..300, every check; shrunk
 # failures go to a private folder and are printed.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the analysis tests (test_paths.c, test_sfg.c, test_form.c):
  * load an example, assign causality, run the analysis, and print or list
  * what was found. Include after harness.h. */

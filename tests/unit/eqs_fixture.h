@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by test_eqsys.c, test_index.c, test_eqprint.c: loads an example
  * (or inline source), runs causality and analysis, builds the equations. */
 #ifndef BG_EQS_FIXTURE_H

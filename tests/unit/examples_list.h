@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The example models (the .bg files in examples/) in a fixed order: the file names, each
  * malloc'd. Shared by the tests that run over every example. */
 #ifndef BG_TEST_EXAMPLES_LIST_H

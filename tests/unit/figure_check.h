@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A geometry checker for diagrams: reads a scene (every item has a role,
  * render/scene/scene.h) and counts what a textbook figure must not have:
  * slanted bonds, causal strokes touching a neighbouring bond, labels over

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Models the figure tests generate (issue 31: measure on models nobody
  * tuned the drawing to): chains, ladders, grids of RC cells, random trees,
  * reaction networks with many modulating signals and three-level

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Minimal test harness: OK, INT_EQ, STR_EQ, DBL_NEAR; a test binary returns
  * non-zero when any check failed and prints "N passed, N failed". */
 #ifndef BG_TEST_HARNESS_H

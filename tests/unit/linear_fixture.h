@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by the linear analysis tests: one model and its linearisation at a
  * time (inline text, causality and equations by eqs_fixture.h). */
 #ifndef BG_LINEAR_FIXTURE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The one way the unit tests load a model: a run (src/run), as the command
  * line and the library load theirs, from an example (examples/NAME.bg) or
  * from inline text, with an optional text edit (a variant of the example)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Shared by test_simulate.c and test_simtrust.c: parse, compile, analyse,
  * build the equations and simulate a model (an example, an edited example or
  * inline text); columns of the result by name. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* libbgdraw as its users see it (include/bgdraw.h only, linked against the
  * shared library): every output of every example and test model is byte
  * for byte what the command line writes, with the same status; the results

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Causality assignment: SCAP, relaxed, van Dijk, Lagrange on the reference
  * examples (docs/examples.md) and on small hand-made graphs. */
 #include <stdlib.h>

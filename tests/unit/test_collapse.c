@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Collapsed instances (--collapse) and detectors in the diagram, measured on
  * the scene (docs/drawing.md, "Collapsed instances", "Detectors"): one box per
  * collapsed instance, the bonds through its ports ending on the box with their

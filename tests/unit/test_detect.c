@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Effort and flow detectors (De, Df): a detector changes no causality and no
  * equation (the model with and without detectors gives the same strokes and
  * the same equations), its name reads its node's effort or flow in any

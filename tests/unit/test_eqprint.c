@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Printers: text and LaTeX of rlc and bond_loop, JSON shape. (The C export
  * is tested in test_export_c.c.) */
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Equations from the causal bond graph: the reference's equations written
  * by hand (rlc, Eq. 4.1, 4.27, 4.31, 4.44 physics) against bg_eqsys at
  * deterministic pseudo-random points; exact Jacobians against central

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The reusable C export (src/export/export_c.c): every example's export
  * compiles with -std=c11 -Wall -Wextra -Werror, and for an ODE, a DAE, a model
  * with a table and one with a param defined by another, the shared object

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Expressions: the tree evaluator, the bytecode VM (which must agree with it
  * bit for bit) and printing. Models are built by hand, without the parser. */
 #include <stdint.h>

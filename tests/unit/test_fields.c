@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Multiport C and R fields (docs/format.md, Multiport fields): the ports as
  * one-port elements, the energy's gradient (checked against src/sym's
  * bg_sym_diff), and the two reference models of tests/data/fields/ against

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Figure geometry, measured from the scene (figure_check.h): the checker on
  * a hand-made scene with one of each fault, then every example in every
  * shipped style, with the default layers and with --show all, against the

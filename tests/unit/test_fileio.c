@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* fileio: the temporary file of an atomic write lives in the target's
  * folder under an unpredictable mkstemp name, and SIGINT/SIGTERM/SIGHUP
  * between writing it and renaming it remove it (the process still dies of

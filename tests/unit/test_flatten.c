@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Submodels (language version 2): flattening into the flat model, qualified
  * names, flat bond numbers and the instance bonds they came from, parameters,
  * nesting, ports passed through, bond variables inside submodels, and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The font configuration the renderers set up before pango's first use
  * when the program owns fontconfig (bg_fonts_own, surface_cairo.c) is the one FcInit would load, without the step FcInit
  * adds: the configuration files in effect are those of a configuration

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* States, form, predicted index, algebraic variables and estimates of the
  * reference examples (docs/examples.md), plus the incomplete case. */
 #include "harness.h"

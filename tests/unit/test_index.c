@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Numeric index (Algorithm 4.1) of every example, badly scaled circuits,
  * and the eigenvalues of rlc against the roots of L C s^2 + R C s + 1. */
 #include <complex.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Index reduction (issue 17; src/equations/indexred.h, docs/equations.md
  * "Index reduction"): Pantelides' algorithm and dummy derivatives on the
  * index-2 examples. Each reduced system has numeric index 1, its consistent

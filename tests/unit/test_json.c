@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The analysis JSON (docs/json.md): keys in the schema's order, values of a small
  * model, the generic writers of the lists other stages fill, determinism. */
 #include <stdlib.h>

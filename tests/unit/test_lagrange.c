@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Lagrange causality with a 1-junction inserted into a bond (Section 4.10.1,
  * step 2): the inserted junction's flow is a generalised velocity, its
  * effort balance (the two efforts of the split bond agree) is its equation.

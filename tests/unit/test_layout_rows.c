@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The "rows" layout (render/diagram/layout_rows.c): every node placed once,
  * no two boxes overlapping, everything inside the reported box, columns by
  * breadth-first rank, long chains folded into a page of sensible shape, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Lexer: tokens, numbers, strings, continuation lines, CRLF, tabs, comments,
  * positions and lexical errors. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The component library lib/ (*.bg files): every component in a small driver model,
  * its state derivatives evaluated at a chosen state against the equations
  * derived by hand from the component's header comment. */

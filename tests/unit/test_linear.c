@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Linear analysis (docs/linear.md): operating points, A, B, C, D against
  * matrices derived by hand, transfer functions with exact polynomial
  * coefficients, poles and zeros, DC gains, frequency responses against

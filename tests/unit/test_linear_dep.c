@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* State space of DAEs with dependent stores (docs/linear.md#matrices): two
  * inertias rigidly coupled through a TF reduce to one state with the merged
  * inertia J1 + n^2 J2 (exact coefficients derived by hand), and the reduced

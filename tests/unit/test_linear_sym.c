@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Symbolic transfer functions above 4 states (docs/linear.md#symbolic-form):
  * a 6-state mass chain against coefficients derived by hand, and every
  * printed coefficient, read back by the model compiler at other param

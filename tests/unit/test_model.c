@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Model compiler: the examples' arrays in detail, bond numbering, params with
  * overrides and dependency order, signals, modulation, linearity, queries. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_num_format against its definition, written out here independently: the
  * shortest "%.Ng" (N from min_digits to 17) that strtod reads back as the
  * same double. The fast integer path (src/base/numfmt.c) must give the same

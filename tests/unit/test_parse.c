@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Parser: every statement form, the expression grammar (checked by value
  * through bg_model_compile + bg_xeval), functions, tables, error recovery. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Causal paths and causal loops: a hand-built model, then the reference
  * examples (docs/examples.md), comparing whole lists. */
 #include "harness.h"

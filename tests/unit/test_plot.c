@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation plots (issue 7): the 1-2-5 tick maths on many ranges (tiny,
  * huge, negative, zero-width, non-finite), SI-prefixed labels, and scenes
  * of real simulations (rlc, a model with two plot statements, one without

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Plots of the linear analysis (docs/linear.md#plots): the Bode diagram's
  * log axis with decade ticks and both panels, the phase unwrapped and equal
  * to the angle of the hand-derived H(jw), the Nyquist diagram with the

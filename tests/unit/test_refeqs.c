@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The reference's equations, written here by hand from the chapter
  * (Equations 4.1, 4.26/4.27, 4.31, 4.33, 4.35, 4.44, 4.49-4.51), against the engine's
  * residuals and right-hand sides at deterministic pseudo-random points.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Rendering: options, styles, scene contents (counted from the scene dump),
  * byte-identical output across runs, and every example in every format. */
 #include <dirent.h>

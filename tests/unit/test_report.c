@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The report's machinery (render/report/report_int.h): markup pieces, greedy line
  * breaking, equations as markup, table column widths and page breaks, two
  * balanced columns, headings and pages of a document; then whole reports

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The lookups that keep large models linear give the same answers as the
  * scans they replace: element names and bond numbers through the
  * compile-time hashes (and linearly in a hand-built model), remembered text measurements, the label

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Signal flow graph: Johnson and Tarjan on hand-built graphs, then the
  * topological loops of the reference examples (docs/examples.md). */
 #include "harness.h"

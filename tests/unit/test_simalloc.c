@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Issue 5, speed: "RHS evaluation allocates nothing". The engine is linked
  * with -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc (tests/tests.cmake),
  * so every allocation it makes passes through the counters below; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* State events (issue 12, docs/simulation.md "State events"): switching
  * conditions that read states or bond variables are found by CVODE's and
  * IDA's root finding, the run stops at each and restarts in the new mode.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Default tolerances (issue 19): the relative tolerance shrinks with the
  * number of unknowns (bg_sim_default_rtol), so a mass-spring-damper chain
  * simulated at the defaults stays within 2e-6 of the largest value of each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Results you can trust (issue 12, docs/simulation.md): a stiff diode that
  * switches on between two solver steps is not stepped over (against an
  * independent integration of the circuit as one scalar ODE); every output

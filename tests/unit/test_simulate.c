@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Simulation (issue 5): analytic comparisons (docs/examples.md), the slider
  * crank's DAE against its Lagrange equation integrated here with CVODE,
  * consistent initial values of the hydraulic bridge, refusals with their

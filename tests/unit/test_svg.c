@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The SVG writer (render/scene/svg_writer.c): searchable <text> in the chosen
  * font with a fallback list, <title> tooltips on every bond and element, CSS
  * classes per role, a viewBox and no fixed size; and the picture is the one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The symbolic layer (sym.h) and the reduced form (eqsym.h):
  * - canonical forms: shared nodes, constant folding, neutral elements,
  *   signs, like terms, exact cancellation; printing;

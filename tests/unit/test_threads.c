@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Two runs on two threads do not interfere: each thread takes a run
  * (src/run: parse, compile, causality, analysis, equations, numeric index,
  * index reduction, simulation, linear analysis) of different example models

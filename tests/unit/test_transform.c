@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The transformations' text editor (src/transform/tx_doc.c): statements
  * spanning continuation lines, comments kept, CRLF and a byte-order mark;
  * and the merged store through the library call, its parameter evaluated. */
