@@ -44,12 +44,7 @@ static int fx_load(fx *f, const char *name, int method, const char *set_name, do
   bg_t_model mm = {name, NULL, NULL, from, to, method, set_name, set_value};
   f->run = bg_t_run(&mm, BG_STAGE_ANALYSIS);
   if (!f->run) return -1;
-  f->src = strdup(f->run->src ? f->run->src : "");
-  bg_diags_init(&f->dg, f->run->name, f->src, strlen(f->src));
-  if (!f->run->model) return -1;
-  f->m = f->run->model;
-  f->a = f->run->analysis;
-  return 0;
+  return bg_t_view(f->run, &f->src, &f->dg, &f->m, &f->a);
 }
 
 static void fx_free(fx *f) {

@@ -28,11 +28,7 @@ static inline int efx_load(efx *f, const char *name, const char *text, int metho
   bg_t_model mm = {name, text, NULL, NULL, NULL, method, set_name, set_value};
   f->run = bg_t_run(&mm, BG_STAGE_EQUATIONS);
   if (!f->run) return -1;
-  f->src = strdup(f->run->src ? f->run->src : "");
-  bg_diags_init(&f->dg, f->run->name, f->src, strlen(f->src));
-  if (!f->run->model) return -1;
-  f->m = f->run->model;
-  f->a = f->run->analysis;
+  if (bg_t_view(f->run, &f->src, &f->dg, &f->m, &f->a)) return -1;
   f->s = f->run->eqsys;
   if (!f->s) fprintf(stderr, "%s: %s\n", f->run->name, f->run->eqsys_problem);
   return f->s ? 0 : -1;

@@ -60,4 +60,16 @@ static inline bg_run *bg_t_run(const bg_t_model *mm, bg_stage upto) {
   bg_run_need(r, upto);
   return r;
 }
+/* What a fixture keeps beside its run: a copy of the source with its own
+ * diagnostics over it (the test's sink), and views of the model and its
+ * analysis (freed with the run). 0 when the model loaded. */
+static inline int bg_t_view(const bg_run *r, char **src, bg_diags *dg, bg_model **m,
+                            bg_analysis *a) {
+  *src = strdup(r->src ? r->src : "");
+  bg_diags_init(dg, r->name, *src, strlen(*src));
+  if (!r->model) return -1;
+  *m = r->model;
+  *a = r->analysis;
+  return 0;
+}
 #endif
