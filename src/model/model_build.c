@@ -2,11 +2,12 @@
 /* The model compiler's shared state (model_int.h), under the driver
  * (model.c) and its parts (model_stmt.c, model_expr.c, model_field.c,
  * model_detect.c): the model's growable arrays, strings in its arena, the
- * namespace (declarations, look-ups, "did you mean" suggestions) and new
- * elements. */
+ * namespace (declarations, look-ups, "did you mean" suggestions), new
+ * elements and the constructors of expression nodes. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "model/expr.h"
 #include "model/model_int.h"
 
 /* ---------------------------------------------------------------- arrays */
@@ -117,4 +118,35 @@ int bg_build_new_elem(bg_build *b, const bg_ast_stmt *s, int kind, const char *n
   }
   b->elem_stmt[e] = s;
   return e;
+}
+
+/* ---------------------------------------------------------------- expression nodes */
+int bg_build_node(bg_build *b, int op, bg_srcloc loc) {
+  int k = bg_build_new(b, &b->m->nxnode);
+  bg_xnode *x = &b->m->xnode[k];
+  x->op = (unsigned char)op;
+  x->loc = loc;
+  return k;
+}
+
+int bg_build_num(bg_build *b, double v, bg_srcloc loc) {
+  int k = bg_build_node(b, BG_X_NUM, loc);
+  b->m->xnode[k].num = v;
+  return k;
+}
+
+int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc) {
+  int k = bg_build_node(b, op, loc);
+  b->m->xnode[k].ref = ref;
+  return k;
+}
+
+/* A unary (c < 0) or binary operator node over existing nodes. */
+int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc) {
+  int k = bg_build_node(b, op, loc);
+  bg_xnode *x = &b->m->xnode[k];
+  x->nargs = c < 0 ? 1 : 2;
+  x->arg[0] = a;
+  x->arg[1] = c < 0 ? 0 : c;
+  return k;
 }

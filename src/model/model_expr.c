@@ -16,41 +16,8 @@
 
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-static int node(bg_build *b, int op, bg_srcloc loc) {
-  int k = bg_build_new(b, &b->m->nxnode);
-  bg_xnode *x = &b->m->xnode[k];
-  x->op = (unsigned char)op;
-  x->loc = loc;
-  return k;
-}
-
-static int num_node(bg_build *b, double v, bg_srcloc loc) {
-  int k = node(b, BG_X_NUM, loc);
-  b->m->xnode[k].num = v;
-  return k;
-}
-
-static int ref_node(bg_build *b, int op, int ref, bg_srcloc loc) {
-  int k = node(b, op, loc);
-  b->m->xnode[k].ref = ref;
-  return k;
-}
-
-int bg_build_num(bg_build *b, double v, bg_srcloc loc) { return num_node(b, v, loc); }
-int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc) { return ref_node(b, op, ref, loc); }
-
-/* A unary (c < 0) or binary operator node over existing nodes. */
-int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc) {
-  int k = node(b, op, loc);
-  bg_xnode *x = &b->m->xnode[k];
-  x->nargs = c < 0 ? 1 : 2;
-  x->arg[0] = a;
-  x->arg[1] = c < 0 ? 0 : c;
-  return k;
-}
-
 /* A placeholder after an error (the compile fails anyway). */
-static int bad(bg_build *b, bg_srcloc loc) { return num_node(b, NAN, loc); }
+static int bad(bg_build *b, bg_srcloc loc) { return bg_build_num(b, NAN, loc); }
 
 /* ---------------------------------------------------------------- signals */
 /* Records a read of a model variable by the element being compiled: a
@@ -96,14 +63,14 @@ static int own_var(bg_build *b, char v, const bg_expr *e) {
                   bg_elem_kind_article(kind), forms[kind], v);
     return bad(b, e->loc);
   }
-  if (v == 'q' || v == 'p') return ref_node(b, BG_X_STORE, el, e->loc);
+  if (v == 'q' || v == 'p') return bg_build_ref(b, BG_X_STORE, el, e->loc);
   int bond = bg_elem_port_bond(m, el);
   if (bond < 0) return bad(b, e->loc); /* its bond count is reported elsewhere */
-  int k = ref_node(b, v == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
+  int k = bg_build_ref(b, v == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
   if (v == 'e' || m->bond_head[bond] == el) return k;
   /* The bond points out of the R: the element's own flow (power into it
    * positive) is the bond's flow negated, as in the value form e = -R f. */
-  int neg = node(b, BG_X_NEG, e->loc);
+  int neg = bg_build_node(b, BG_X_NEG, e->loc);
   m->xnode[neg].nargs = 1;
   m->xnode[neg].arg[0] = k;
   return neg;
@@ -122,7 +89,7 @@ static int bond_var(bg_build *b, const bg_expr *e) {
   }
   if (!check_allowed(b, ALLOW_MODEL, e)) return bad(b, e->loc);
   use_model_var(b, -1, e);
-  return ref_node(b, e->str[0] == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
+  return bg_build_ref(b, e->str[0] == 'e' ? BG_X_EFFORT : BG_X_FLOW, bond, e->loc);
 }
 
 static int is_bond_var(const char *s) {
@@ -174,14 +141,14 @@ static int compile_name(bg_build *b, const bg_expr *e) {
     int k = own_var(b, e->str[0], e);
     if (k >= 0) return k;
   }
-  if (strcmp(e->str, "pi") == 0) return num_node(b, 3.14159265358979323846, e->loc);
+  if (strcmp(e->str, "pi") == 0) return bg_build_num(b, 3.14159265358979323846, e->loc);
   if (strcmp(e->str, "t") == 0)
-    return check_allowed(b, ALLOW_TIME, e) ? node(b, BG_X_TIME, e->loc) : bad(b, e->loc);
+    return check_allowed(b, ALLOW_TIME, e) ? bg_build_node(b, BG_X_TIME, e->loc) : bad(b, e->loc);
   const ns_entry *n = bg_build_lookup(b, e->str); /* a declared f0 is not a bond variable */
   if (!n && is_bond_var(e->str)) return bond_var(b, e);
   if (!n) return undefined(b, e);
   switch (n->kind) {
-  case NS_PARAM: return ref_node(b, BG_X_PARAM, b->param_id[n->id], e->loc);
+  case NS_PARAM: return bg_build_ref(b, BG_X_PARAM, b->param_id[n->id], e->loc);
   case NS_INPUT:
     if (!check_allowed(b, ALLOW_INPUT, e)) return bad(b, e->loc);
     if (!(b->allow & ALLOW_MODEL) && n->id >= b->input_limit) {
@@ -189,11 +156,11 @@ static int compile_name(bg_build *b, const bg_expr *e) {
                     e->str, n->loc.line);
       return bad(b, e->loc);
     }
-    return ref_node(b, BG_X_INPUT, n->id, e->loc);
+    return bg_build_ref(b, BG_X_INPUT, n->id, e->loc);
   case NS_STATE:
     if (!check_allowed(b, ALLOW_MODEL, e)) return bad(b, e->loc);
     use_model_var(b, -1, e);
-    return ref_node(b, BG_X_STATE, n->id, e->loc);
+    return bg_build_ref(b, BG_X_STATE, n->id, e->loc);
   case NS_DETECTOR: { /* its node's effort or flow (docs/format.md, "Detectors") */
     int el = b->m->det_node[n->id];
     if (el < 0) return bad(b, e->loc); /* reported with the detector */
@@ -228,7 +195,7 @@ static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc) {
   int kind = m->elem_kind[el], bond = -1, op = f[0] == 'e' ? BG_X_EFFORT : BG_X_FLOW;
   if (bg_elem_is_oneport(kind) && (!strcmp(f, "e") || !strcmp(f, "f"))) bond = bg_elem_port_bond(m, el);
   else if ((kind == BG_ELEM_C && !strcmp(f, "q")) || (kind == BG_ELEM_I && !strcmp(f, "p")))
-    return ref_node(b, BG_X_STORE, el, loc);
+    return bg_build_ref(b, BG_X_STORE, el, loc);
   else if (bg_elem_is_twoport(kind) && (!strcmp(f, "e1") || !strcmp(f, "f1")))
     bond = bg_elem_in_bond(m, el);
   else if (bg_elem_is_twoport(kind) && (!strcmp(f, "e2") || !strcmp(f, "f2")))
@@ -237,7 +204,7 @@ static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc) {
     bond = m->elem_nbond[el] ? m->elem_bonds[m->elem_bondadr[el]] : -1;
   else return -2;
   if (bond < 0) return bad(b, loc); /* a wrong bond count is reported with the element */
-  return ref_node(b, op, bond, loc);
+  return bg_build_ref(b, op, bond, loc);
 }
 
 /* field: X.e | X.f | X.q | X.p | X.e1 ... | J.e | J.f */
@@ -414,7 +381,7 @@ static int compile_table(bg_build *b, const bg_expr *e) {
   else if (data->kind == BG_EX_MATRIX) t = inline_table(b, data);
   else bg_diag_error(b->dg, data->loc, "table() data must be a file name \"file.csv\" or a matrix [x0, y0; x1, y1; ...]");
   if (t < 0) return bad(b, e->loc);
-  int k = ref_node(b, BG_X_TABLE, t, e->loc);
+  int k = bg_build_ref(b, BG_X_TABLE, t, e->loc);
   b->m->xnode[k].nargs = 1;
   b->m->xnode[k].arg[0] = x;
   return k;
@@ -442,7 +409,7 @@ static int compile_call(bg_build *b, const bg_expr *e) {
   }
   int args[3];
   for (int i = 0; i < e->nargs; i++) args[i] = bg_build_expr(b, e->args[i]);
-  int k = ref_node(b, BG_X_CALL, fn, e->loc);
+  int k = bg_build_ref(b, BG_X_CALL, fn, e->loc);
   b->m->xnode[k].nargs = (unsigned char)e->nargs;
   for (int i = 0; i < e->nargs; i++) b->m->xnode[k].arg[i] = args[i];
   return k;
@@ -461,7 +428,7 @@ static int xop_of(int op) {
 static int compile_op(bg_build *b, const bg_expr *e) {
   int args[2] = {0, 0};
   for (int i = 0; i < e->nargs && i < 2; i++) args[i] = bg_build_expr(b, e->args[i]);
-  int k = node(b, xop_of(e->op), e->loc);
+  int k = bg_build_node(b, xop_of(e->op), e->loc);
   b->m->xnode[k].nargs = (unsigned char)e->nargs;
   b->m->xnode[k].arg[0] = args[0];
   b->m->xnode[k].arg[1] = args[1];
@@ -470,7 +437,7 @@ static int compile_op(bg_build *b, const bg_expr *e) {
 
 int bg_build_expr(bg_build *b, const bg_expr *e) {
   switch (e->kind) {
-  case BG_EX_NUM: return num_node(b, e->num, e->loc);
+  case BG_EX_NUM: return bg_build_num(b, e->num, e->loc);
   case BG_EX_NAME: return compile_name(b, e);
   case BG_EX_FIELD: return compile_field(b, e);
   case BG_EX_CALL: return compile_call(b, e);

@@ -40,54 +40,6 @@ void bg_build_declare_field(bg_build *b, const bg_ast_stmt *s) {
   }
 }
 
-/* ---------------------------------------------------------------- port variables */
-/* The element of port `port` (a name) or number `num` of field f; -1. */
-static int port_elem(const bg_model *m, int f, const char *port, int num) {
-  for (int k = 0; k < m->field_nport[f]; k++) {
-    int e = m->field_elemadr[f] + k;
-    if (port ? strcmp(bg_elem_port_name(m, e), port) == 0 : m->elem_fport[e] == num) return e;
-  }
-  return -1;
-}
-
-/* Port `pe`'s own flow: the bond's, negated when the bond points out. */
-static int own_flow(bg_build *b, int pe, int bond, bg_srcloc loc) {
-  int k = bg_build_ref(b, BG_X_FLOW, bond, loc);
-  if (b->m->bond_head[bond] == pe) return k;
-  return bg_build_op(b, BG_X_NEG, k, -1, loc);
-}
-
-int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_expr *e) {
-  bg_model *m = b->m;
-  int f = b->field, pe = port_elem(m, f, port, num);
-  if (pe < 0) {
-    if (port) return -1; /* not a port's name: an ordinary name */
-    bg_diag_error(b->dg, e->loc, "'%s' names no port of field %s: it has ports 1 to %d", e->text,
-                  m->field_name[f], m->field_nport[f]);
-    return bg_build_num(b, 0, e->loc);
-  }
-  int kind = m->field_kind[f];
-  if (kind == BG_ELEM_C && v != 'q') {
-    bg_diag_error(b->dg, e->loc, "a C field's %s reads the ports' displacements q only, not '%s'",
-                  b->law_elem < 0 ? "energy" : "laws", e->text);
-    return bg_build_num(b, 0, e->loc);
-  }
-  if (kind == BG_ELEM_R && v == 'q') {
-    bg_diag_error(b->dg, e->loc, "an R field's ports have no displacement: '%s'", e->text);
-    return bg_build_num(b, 0, e->loc);
-  }
-  if (pe == b->law_elem && v == b->law_lhs) {
-    bg_diag_error(b->dg, e->loc, "the right-hand side of %s's law cannot use its left-hand side "
-                  "'%s'", m->elem_name[pe], e->text);
-    return bg_build_num(b, 0, e->loc);
-  }
-  if (v == 'q') return bg_build_ref(b, BG_X_STORE, pe, e->loc);
-  int bond = bg_elem_port_bond(m, pe);
-  if (bond < 0) return bg_build_num(b, 0, e->loc); /* its bond count is reported */
-  if (v == 'e') return bg_build_ref(b, BG_X_EFFORT, bond, e->loc);
-  return own_flow(b, pe, bond, e->loc);
-}
-
 /* ---------------------------------------------------------------- laws */
 /* The port a law's left-hand side names ("e2", "el.f"), its letter in *v;
  * -1 if none (reported). "energy" is handled by the caller. */
@@ -99,10 +51,10 @@ static int law_port(bg_build *b, int f, const bg_ast_item *law, char *v) {
     char port[256];
     snprintf(port, sizeof port, "%.*s", (int)(dot - lhs), lhs);
     *v = dot[1] && !dot[2] ? dot[1] : 0;
-    pe = port_elem(m, f, port, 0);
+    pe = bg_build_port_elem(m, f, port, 0);
   } else if (strchr("efq", lhs[0]) && lhs[1] && strspn(lhs + 1, "0123456789") == strlen(lhs + 1)) {
     *v = lhs[0]; /* more digits than any port number has: no port */
-    pe = strlen(lhs + 1) > 7 ? -1 : port_elem(m, f, NULL, atoi(lhs + 1));
+    pe = strlen(lhs + 1) > 7 ? -1 : bg_build_port_elem(m, f, NULL, atoi(lhs + 1));
   } else {
     *v = 0;
   }

@@ -108,27 +108,44 @@ int bg_build_declare(bg_build *b, const char *name, bg_srcloc loc, ns_kind kind,
 int bg_build_new_elem(bg_build *b, const bg_ast_stmt *s, int kind, const char *name, bg_srcloc loc);
 /* Compiles the laws (or energy) of field f into its port elements. */
 void bg_build_field_laws(bg_build *b, int f);
-/* A port variable named inside field f's laws: `v` of port `port` (its name,
- * or NULL with its number in `num`); -1 when it names no port of f. */
-int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_expr *e);
 /* The options of a field (label, color, at, q0, causality, per port). */
 void bg_build_field_options(bg_build *b, int f);
 /* d root / d (state of C element `store`), as new xnodes; -1 is the number 0;
  * -2 when root holds a table (no smooth derivative). */
 int bg_build_diff(bg_build *b, int root, int store);
-/* Node constructors shared by the compiler's files. */
+/* ---- model_build.c: node constructors shared by the compiler's files. */
+int bg_build_node(bg_build *b, int op, bg_srcloc loc);
 int bg_build_num(bg_build *b, double v, bg_srcloc loc);
 int bg_build_ref(bg_build *b, int op, int ref, bg_srcloc loc);
 int bg_build_op(bg_build *b, int op, int a, int c, bg_srcloc loc);
 
-/* ---- model_stmt.c */
-/* The options' helpers (model_stmt.c), for the fields' options. */
-const bg_ast_option *bg_build_find_opt(const bg_ast_stmt *s, const char *key);
+/* ---- model_ports.c */
+/* The element of port `port` (a name) or number `num` of field f; -1. */
+int bg_build_port_elem(const bg_model *m, int f, const char *port, int num);
+/* A port variable named inside field f's laws: `v` of port `port` (its name,
+ * or NULL with its number in `num`); -1 when it names no port of f. */
+int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_expr *e);
+
+/* ---- model_opts.c: statement options */
+/* Reports unknown and repeated option keys; `valid` is "a, b, c". */
 void bg_build_check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose);
+const bg_ast_option *bg_build_find_opt(const bg_ast_stmt *s, const char *key);
+/* A string option ("..."); NULL if absent or wrong (reported). */
 const char *bg_build_string_opt(bg_build *b, const bg_ast_stmt *s, const char *key);
+/* color = "#rrggbb"; NULL if absent or wrong (reported). */
 const char *bg_build_color_opt(bg_build *b, const bg_ast_stmt *s);
-void bg_build_at_opt(bg_build *b, int e, const bg_ast_stmt *s);
+/* A word option (a name or a string) that must be one of `valid` ("a, b"). */
+const char *bg_build_word_opt(bg_build *b, const bg_ast_stmt *s, const char *key, const char *valid);
+/* A numeric option: a constant expression of params; `def` when absent. */
+double bg_build_num_opt(bg_build *b, const bg_ast_stmt *s, const char *key, double def);
+/* An initial value option (q0, p0, init): its root xnode, -1 if absent. */
+int bg_build_init_opt(bg_build *b, const bg_ast_stmt *s, const char *key);
+/* A constant expression of params (an initial value) as xnodes. */
 int bg_build_init_expr(bg_build *b, const bg_expr *x);
+/* at = (X, Y) of element e: finite positions within BG_POSITION_MAX. */
+void bg_build_at_opt(bg_build *b, int e, const bg_ast_stmt *s);
+
+/* ---- model_stmt.c */
 void bg_build_elements(bg_build *b);
 void bg_build_statements(bg_build *b);
 #endif

@@ -9,124 +9,6 @@
 #include "model/expr.h"
 #include "model/model_int.h"
 
-/* ---------------------------------------------------------------- options */
-/* Reports unknown and repeated option keys; `valid` is "a, b, c". */
-static void check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose) {
-  for (int i = 0; i < s->nopts; i++) {
-    const char *key = s->opts[i].key;
-    size_t n = strlen(key);
-    const char *p = valid;
-    int found = 0;
-    while ((p = strstr(p, key)) != NULL && !found) {
-      found = (p == valid || p[-1] == ' ') && (p[n] == ',' || p[n] == '\0');
-      p += n;
-    }
-    if (!found) {
-      char best[32] = "";
-      int bestd = 3;
-      for (const char *q = valid; *q;) { /* the nearest valid option: tend -> t_end */
-        size_t len = strcspn(q, ",");
-        char cand[32];
-        snprintf(cand, sizeof cand, "%.*s", (int)len, q);
-        int d = bg_edit_distance(key, cand);
-        if (d < bestd) bestd = d, snprintf(best, sizeof best, "%s", cand);
-        q += len;
-        while (*q == ',' || *q == ' ') q++;
-      }
-      if (best[0])
-        bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (did you mean '%s'? "
-                      "valid: %s)", key, whose, best, valid);
-      else
-        bg_diag_error(b->dg, s->opts[i].loc, "unknown option '%s' for %s (valid: %s)", key, whose,
-                      valid);
-      continue;
-    }
-    for (int j = 0; j < i; j++)
-      if (strcmp(s->opts[j].key, key) == 0) {
-        bg_diag_error(b->dg, s->opts[i].loc, "option '%s' given twice (first at column %d)", key,
-                      s->opts[j].loc.col);
-        break;
-      }
-  }
-}
-
-static const bg_ast_option *find_opt(const bg_ast_stmt *s, const char *key) {
-  for (int i = 0; i < s->nopts; i++)
-    if (strcmp(s->opts[i].key, key) == 0) return &s->opts[i];
-  return NULL;
-}
-
-/* A string option ("..."); NULL if absent or wrong (reported). */
-static const char *string_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
-  const bg_ast_option *o = find_opt(s, key);
-  if (!o) return NULL;
-  if (o->value->kind != BG_EX_STR) {
-    bg_diag_error(b->dg, o->value->loc, "option '%s' needs a string in quotes, e.g. %s = \"...\"",
-                  key, key);
-    return NULL;
-  }
-  return bg_build_strdup(b, o->value->str);
-}
-
-static int is_hex(char c) {
-  return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-}
-
-static const char *color_opt(bg_build *b, const bg_ast_stmt *s) {
-  const char *c = string_opt(b, s, "color");
-  if (!c) return NULL;
-  int ok = strlen(c) == 7 && c[0] == '#';
-  for (int i = 1; ok && i < 7; i++) ok = is_hex(c[i]);
-  if (!ok) {
-    bg_diag_error(b->dg, find_opt(s, "color")->value->loc,
-                  "color must be \"#rrggbb\" (6 hex digits), not \"%s\"", c);
-    return NULL;
-  }
-  return c;
-}
-
-/* A word option (a name or a string) that must be one of `valid` ("a, b"). */
-static const char *word_opt(bg_build *b, const bg_ast_stmt *s, const char *key, const char *valid) {
-  const bg_ast_option *o = find_opt(s, key);
-  if (!o) return NULL;
-  const bg_expr *v = o->value;
-  if (v->kind == BG_EX_NAME || v->kind == BG_EX_STR) {
-    const char *p = valid;
-    size_t n = strlen(v->str);
-    while (n && (p = strstr(p, v->str)) != NULL) {
-      if ((p == valid || p[-1] == ' ') && (p[n] == ',' || p[n] == '\0'))
-        return bg_build_strdup(b, v->str);
-      p += n;
-    }
-  }
-  bg_diag_error(b->dg, v->loc, "invalid %s '%s' (valid: %s)", key, v->text, valid);
-  return NULL;
-}
-
-/* A numeric option: a constant expression of params; `def` when absent. */
-static double num_opt(bg_build *b, const bg_ast_stmt *s, const char *key, double def) {
-  const bg_ast_option *o = find_opt(s, key);
-  if (!o) return def;
-  char what[96];
-  snprintf(what, sizeof what, "option '%s' (use numbers, pi and params)", key);
-  return bg_build_const(b, o->value, what);
-}
-
-/* An initial value (q0, p0, init): root xnode of a constant expression, -1 if absent. */
-static int init_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
-  const bg_ast_option *o = find_opt(s, key);
-  if (!o) return -1;
-  int allow = b->allow, elem = b->elem, law = b->law_elem;
-  b->allow = 0;
-  b->elem = b->law_elem = -1;
-  b->what = "an initial value (use numbers, pi and params)";
-  int root = bg_build_expr(b, o->value);
-  b->allow = allow;
-  b->elem = elem;
-  b->law_elem = law;
-  return root;
-}
-
 /* ---------------------------------------------------------------- elements */
 static void check_bond_count(bg_build *b, int e) {
   const bg_model *m = b->m;
@@ -254,39 +136,12 @@ static void compile_element_expr(bg_build *b, int e, const bg_ast_stmt *s) {
 static int caus_opt(bg_build *b, int e, const bg_ast_stmt *s) {
   int kind = b->m->elem_kind[e];
   const char *valid = bg_elem_is_store(kind) ? "integral, derivative" : "resistance, conductance";
-  const char *w = word_opt(b, s, "causality", valid);
+  const char *w = bg_build_word_opt(b, s, "causality", valid);
   if (!w) return BG_CAUS_OPT_NONE;
   if (!strcmp(w, "integral")) return BG_CAUS_OPT_INTEGRAL;
   if (!strcmp(w, "derivative")) return BG_CAUS_OPT_DERIVATIVE;
   if (!strcmp(w, "resistance")) return BG_CAUS_OPT_RESISTANCE;
   return BG_CAUS_OPT_CONDUCTANCE;
-}
-
-/* One coordinate of `at`: finite and within BG_POSITION_MAX points, so the
- * layout and the drawing never see NaN, infinities or absurd sizes. */
-static double position(bg_build *b, const bg_expr *x) {
-  int nerr = b->dg->nerrors;
-  double v = bg_build_const(b, x, "a position (use numbers and params)");
-  if (b->dg->nerrors == nerr && !(fabs(v) <= BG_POSITION_MAX)) {
-    char val[32];
-    snprintf(val, sizeof val, isnan(v) ? "NaN" : "%g", v);
-    bg_diag_error(b->dg, x->loc, "a position must be a finite number of points from -%.0f to "
-                  "%.0f, not %s", BG_POSITION_MAX, BG_POSITION_MAX, val);
-    return 0;
-  }
-  return v;
-}
-
-static void at_opt(bg_build *b, int e, const bg_ast_stmt *s) {
-  const bg_ast_option *o = find_opt(s, "at");
-  if (!o) return;
-  if (o->value->kind != BG_EX_TUPLE || o->value->nargs != 2) {
-    bg_diag_error(b->dg, o->value->loc, "option 'at' needs a position (X, Y)");
-    return;
-  }
-  b->m->elem_has_at[e] = 1;
-  b->m->elem_at_x[e] = position(b, o->value->args[0]);
-  b->m->elem_at_y[e] = position(b, o->value->args[1]);
 }
 
 static void element_options(bg_build *b, int e, const bg_ast_stmt *s) {
@@ -298,13 +153,13 @@ static void element_options(bg_build *b, int e, const bg_ast_stmt *s) {
                                           : "label, color, at";
   char whose[160];
   snprintf(whose, sizeof whose, "%s '%s'", bg_elem_kind_name(kind), s->name);
-  check_options(b, s, valid, whose);
-  m->elem_label[e] = string_opt(b, s, "label");
-  m->elem_color[e] = color_opt(b, s);
-  at_opt(b, e, s);
+  bg_build_check_options(b, s, valid, whose);
+  m->elem_label[e] = bg_build_string_opt(b, s, "label");
+  m->elem_color[e] = bg_build_color_opt(b, s);
+  bg_build_at_opt(b, e, s);
   if (kind == BG_ELEM_C || kind == BG_ELEM_I || kind == BG_ELEM_R) m->elem_causopt[e] = caus_opt(b, e, s);
-  if (kind == BG_ELEM_C) m->elem_init[e] = init_opt(b, s, "q0");
-  if (kind == BG_ELEM_I) m->elem_init[e] = init_opt(b, s, "p0");
+  if (kind == BG_ELEM_C) m->elem_init[e] = bg_build_init_opt(b, s, "q0");
+  if (kind == BG_ELEM_I) m->elem_init[e] = bg_build_init_opt(b, s, "p0");
 }
 
 void bg_build_elements(bg_build *b) {
@@ -322,32 +177,6 @@ void bg_build_elements(bg_build *b) {
     compile_element_expr(b, e, b->elem_stmt[e]);
     element_options(b, e, b->elem_stmt[e]);
   }
-}
-
-/* ---------------------------------------------------------------- shared helpers */
-const bg_ast_option *bg_build_find_opt(const bg_ast_stmt *s, const char *key) {
-  return find_opt(s, key);
-}
-void bg_build_check_options(bg_build *b, const bg_ast_stmt *s, const char *valid, const char *whose) {
-  check_options(b, s, valid, whose);
-}
-const char *bg_build_string_opt(bg_build *b, const bg_ast_stmt *s, const char *key) {
-  return string_opt(b, s, key);
-}
-const char *bg_build_color_opt(bg_build *b, const bg_ast_stmt *s) { return color_opt(b, s); }
-void bg_build_at_opt(bg_build *b, int e, const bg_ast_stmt *s) { at_opt(b, e, s); }
-
-/* A constant expression of params (an initial value) as xnodes. */
-int bg_build_init_expr(bg_build *b, const bg_expr *x) {
-  int allow = b->allow, elem = b->elem, law = b->law_elem;
-  b->allow = 0;
-  b->elem = b->law_elem = -1;
-  b->what = "an initial value (use numbers, pi and params)";
-  int root = bg_build_expr(b, x);
-  b->allow = allow;
-  b->elem = elem;
-  b->law_elem = law;
-  return root;
 }
 
 /* ---------------------------------------------------------------- statements */
@@ -378,18 +207,18 @@ static void st_causality(bg_build *b, const bg_ast_stmt *s) {
 
 static void st_simulate(bg_build *b, const bg_ast_stmt *s) {
   bg_simspec *sim = &b->m->sim;
-  check_options(b, s, "t_end, t0, dt, solver, rtol, atol, max_step", "simulate");
+  bg_build_check_options(b, s, "t_end, t0, dt, solver, rtol, atol, max_step", "simulate");
   sim->present = 1;
   sim->loc = s->loc;
-  sim->t0 = num_opt(b, s, "t0", 0);
-  sim->t_end = num_opt(b, s, "t_end", 0);
-  sim->dt = num_opt(b, s, "dt", 0);
-  sim->rtol = num_opt(b, s, "rtol", 0);
-  sim->atol = num_opt(b, s, "atol", 0);
-  sim->max_step = num_opt(b, s, "max_step", 0);
-  const char *solver = word_opt(b, s, "solver", "auto, cvode_bdf, cvode_adams, ida");
+  sim->t0 = bg_build_num_opt(b, s, "t0", 0);
+  sim->t_end = bg_build_num_opt(b, s, "t_end", 0);
+  sim->dt = bg_build_num_opt(b, s, "dt", 0);
+  sim->rtol = bg_build_num_opt(b, s, "rtol", 0);
+  sim->atol = bg_build_num_opt(b, s, "atol", 0);
+  sim->max_step = bg_build_num_opt(b, s, "max_step", 0);
+  const char *solver = bg_build_word_opt(b, s, "solver", "auto, cvode_bdf, cvode_adams, ida");
   if (solver) sim->solver = solver;
-  if (!find_opt(s, "t_end")) {
+  if (!bg_build_find_opt(s, "t_end")) {
     /* an unknown option reported above may be the misspelt t_end: no second error */
     int unknown = 0;
     for (int i = 0; i < s->nopts; i++)
@@ -398,33 +227,33 @@ static void st_simulate(bg_build *b, const bg_ast_stmt *s) {
     return;
   }
   if (!(sim->t_end > sim->t0))
-    bg_diag_error(b->dg, find_opt(s, "t_end")->value->loc, "t_end (%g) must be greater than t0 (%g)",
+    bg_diag_error(b->dg, bg_build_find_opt(s, "t_end")->value->loc, "t_end (%g) must be greater than t0 (%g)",
                   sim->t_end, sim->t0);
   static const char *const positive[] = {"dt", "rtol", "atol", "max_step"};
   const double vals[] = {sim->dt, sim->rtol, sim->atol, sim->max_step};
   for (int i = 0; i < 4; i++)
-    if (find_opt(s, positive[i]) && !(vals[i] > 0))
-      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be positive, not %g",
+    if (bg_build_find_opt(s, positive[i]) && !(vals[i] > 0))
+      bg_diag_error(b->dg, bg_build_find_opt(s, positive[i])->value->loc, "%s must be positive, not %g",
                     positive[i], vals[i]);
 }
 
 static void st_layout(bg_build *b, const bg_ast_stmt *s) {
-  check_options(b, s, "engine, rankdir", "layout");
-  const char *engine = word_opt(b, s, "engine", "dot, neato, fdp, sfdp, pinned, rows");
-  const char *rankdir = word_opt(b, s, "rankdir", "LR, TB, RL, BT");
+  bg_build_check_options(b, s, "engine, rankdir", "layout");
+  const char *engine = bg_build_word_opt(b, s, "engine", "dot, neato, fdp, sfdp, pinned, rows");
+  const char *rankdir = bg_build_word_opt(b, s, "rankdir", "LR, TB, RL, BT");
   if (engine) b->m->layout.engine = engine;
   if (rankdir) b->m->layout.rankdir = rankdir;
 }
 
 static void st_plot(bg_build *b, const bg_ast_stmt *s) {
   bg_model *m = b->m;
-  check_options(b, s, "title, ylabel, xlabel", "plot");
+  bg_build_check_options(b, s, "title, ylabel, xlabel", "plot");
   int p = bg_build_new(b, &m->nplot);
   m->plot_expradr[p] = m->nplotexpr;
   m->plot_nexpr[p] = s->nexprs;
-  m->plot_title[p] = string_opt(b, s, "title");
-  m->plot_ylabel[p] = string_opt(b, s, "ylabel");
-  m->plot_xlabel[p] = string_opt(b, s, "xlabel");
+  m->plot_title[p] = bg_build_string_opt(b, s, "title");
+  m->plot_ylabel[p] = bg_build_string_opt(b, s, "ylabel");
+  m->plot_xlabel[p] = bg_build_string_opt(b, s, "xlabel");
   if (!m->plot_ylabel[p]) m->plot_ylabel[p] = "";
   if (!m->plot_xlabel[p]) m->plot_xlabel[p] = "t";
   b->allow = ALLOW_TIME | ALLOW_INPUT | ALLOW_MODEL;
@@ -440,15 +269,15 @@ static void st_plot(bg_build *b, const bg_ast_stmt *s) {
 
 static void st_state(bg_build *b, const bg_ast_stmt *s) {
   const ns_entry *n = bg_build_lookup(b, s->name);
-  check_options(b, s, "init", "a state");
+  bg_build_check_options(b, s, "init", "a state");
   if (!n || n->kind != NS_STATE || n->loc.line != s->name_loc.line) return;
-  b->m->state_init[n->id] = init_opt(b, s, "init");
+  b->m->state_init[n->id] = bg_build_init_opt(b, s, "init");
 }
 
 static void st_bond(bg_build *b, const bg_ast_stmt *s, int bond) {
-  check_options(b, s, "label, color", "a bond");
-  b->m->bond_label[bond] = string_opt(b, s, "label");
-  b->m->bond_color[bond] = color_opt(b, s);
+  bg_build_check_options(b, s, "label, color", "a bond");
+  b->m->bond_label[bond] = bg_build_string_opt(b, s, "label");
+  b->m->bond_color[bond] = bg_build_color_opt(b, s);
 }
 
 static void st_model(bg_build *b, const bg_ast_stmt *s) {
@@ -506,30 +335,30 @@ static void lin_input(bg_build *b, const bg_expr *e) {
 /* linearise [at = initial | steady, inputs = (U, ...), t = T, w_min, w_max, t_end] */
 static void st_linearise(bg_build *b, const bg_ast_stmt *s) {
   bg_linspec *l = &b->m->linear;
-  check_options(b, s, "at, inputs, t, w_min, w_max, t_end", "linearise");
+  bg_build_check_options(b, s, "at, inputs, t, w_min, w_max, t_end", "linearise");
   l->present = 1;
   l->loc = s->loc;
-  const char *at = word_opt(b, s, "at", "initial, steady");
+  const char *at = bg_build_word_opt(b, s, "at", "initial, steady");
   l->steady = at && strcmp(at, "steady") == 0;
-  l->t_given = find_opt(s, "t") != NULL;
-  l->t = num_opt(b, s, "t", 0);
-  l->w_min = num_opt(b, s, "w_min", 0);
-  l->w_max = num_opt(b, s, "w_max", 0);
-  l->t_end = num_opt(b, s, "t_end", 0);
+  l->t_given = bg_build_find_opt(s, "t") != NULL;
+  l->t = bg_build_num_opt(b, s, "t", 0);
+  l->w_min = bg_build_num_opt(b, s, "w_min", 0);
+  l->w_max = bg_build_num_opt(b, s, "w_max", 0);
+  l->t_end = bg_build_num_opt(b, s, "t_end", 0);
   static const char *const positive[] = {"w_min", "w_max", "t_end"};
   const double vals[] = {l->w_min, l->w_max, l->t_end};
   for (int i = 0; i < 3; i++)
-    if (find_opt(s, positive[i]) && !(vals[i] > 0 && isfinite(vals[i])))
-      bg_diag_error(b->dg, find_opt(s, positive[i])->value->loc, "%s must be a positive finite "
+    if (bg_build_find_opt(s, positive[i]) && !(vals[i] > 0 && isfinite(vals[i])))
+      bg_diag_error(b->dg, bg_build_find_opt(s, positive[i])->value->loc, "%s must be a positive finite "
                     "number, not %g", positive[i], isnan(vals[i]) ? NAN : vals[i]); /* not -nan */
   if (l->w_min > 0 && l->w_max > 0 && !(l->w_max > l->w_min))
-    bg_diag_error(b->dg, find_opt(s, "w_max")->value->loc, "w_max (%g) must be greater than "
+    bg_diag_error(b->dg, bg_build_find_opt(s, "w_max")->value->loc, "w_max (%g) must be greater than "
                   "w_min (%g)", l->w_max, l->w_min);
   else if (isfinite(l->w_min) && isfinite(l->w_max) && l->w_min > 0 && l->w_max / l->w_min > BG_LIN_MAX_RANGE)
-    bg_diag_error(b->dg, find_opt(s, "w_max")->value->loc, "w_max / w_min (%g / %g) spans more "
+    bg_diag_error(b->dg, bg_build_find_opt(s, "w_max")->value->loc, "w_max / w_min (%g / %g) spans more "
                   "than %d decades, the limit of a frequency response", l->w_max, l->w_min,
                   BG_LIN_MAX_DECADES);
-  const bg_ast_option *in = find_opt(s, "inputs");
+  const bg_ast_option *in = bg_build_find_opt(s, "inputs");
   if (!in) return;
   l->inputs_given = 1;
   if (in->value->kind == BG_EX_TUPLE)
