@@ -228,8 +228,16 @@ int bgd_output(bgd_model *m, const char *kind, const char *form, char **data, si
  * format names after its file (the C header a source includes, an Octave
  * function). */
 int bgd_write(bgd_model *m, const char *kind, const char *form, const char *path);
-/* The message of the last failed bgd_output/bgd_write (borrowed), or NULL. */
+/* The message of the last failed bgd_output/bgd_write/bgd_set_drawing
+ * (borrowed), or NULL. */
 const char *bgd_last_error(const bgd_model *m);
+/* Changes how the outputs after it draw: o's style, show, highlight and
+ * layout (NULL fields: the defaults; o NULL: every one the default), as if
+ * the handle had been opened with them; the other fields of o are not read.
+ * The model's results stay; the diagram is laid out again. BGD_USAGE (and
+ * the handle's drawing options unchanged) for a wrong layer or highlight,
+ * with the reason in bgd_last_error. */
+int bgd_set_drawing(bgd_model *m, const bgd_options *o);
 
 /* The library's version ("0.2.0") and API version (BGDRAW_API_VERSION of
  * the build). */

@@ -80,6 +80,21 @@ static void option_error(bgd_model *m, const char *what) {
   m->status = BGD_USAGE;
 }
 
+/* The diagrams' options (layers, highlight, style, layout) from the
+ * caller's: -1 with the reason in err for a wrong layer or highlight. */
+static int drawing(const bgd_options *o, bg_render_opts *rd, bg_strbuf *err) {
+  memset(rd, 0, sizeof *rd);
+  rd->show = BG_SHOW_DEFAULT;
+  if (o->show && bg_output_parse_show(o->show, &rd->show, err) != 0) return -1;
+  if (o->highlight && bg_highlight_parse(o->highlight, &rd->highlight_kind, &rd->highlight_index)) {
+    bg_sb_puts(err, "a highlight is path:K, loop:K or conflict:K");
+    return -1;
+  }
+  rd->style = o->style;
+  rd->layout = o->layout;
+  return 0;
+}
+
 /* The run's and the diagrams' options from the caller's. */
 static void configure(bgd_model *m, const bgd_options *o, bg_run_opts *ro, bg_render_opts *rd,
                       bg_param_override *sets, char *style_dir, size_t n) {
@@ -105,16 +120,10 @@ static void configure(bgd_model *m, const bgd_options *o, bg_run_opts *ro, bg_re
     w += len + (w[len] == ',');
   }
   if (o->log) ro->log = (bg_log){to_caller, m, o->verbose};
-  memset(rd, 0, sizeof *rd);
-  rd->show = BG_SHOW_DEFAULT;
   bg_strbuf err = {0};
-  if (o->show && bg_output_parse_show(o->show, &rd->show, &err) != 0) option_error(m, bg_sb_str(&err));
+  if (drawing(o, rd, &err) != 0) option_error(m, bg_sb_str(&err));
   bg_sb_free(&err);
-  if (o->highlight && bg_highlight_parse(o->highlight, &rd->highlight_kind, &rd->highlight_index))
-    option_error(m, "a highlight is path:K, loop:K or conflict:K");
-  rd->style = o->style;
   rd->style_dir = library_style_dir(style_dir, n);
-  rd->layout = o->layout;
 }
 
 static bgd_model *open_run(const char *name, const char *text, const char *path,
@@ -509,6 +518,30 @@ int bgd_write(bgd_model *m, const char *kind, const char *form, const char *path
 }
 
 const char *bgd_last_error(const bgd_model *m) { return m ? m->last_error : NULL; }
+
+static const char *kept(bgd_model *m, const char *s) { return s ? bg_arena_strdup(&m->arena, s) : NULL; }
+
+int bgd_set_drawing(bgd_model *m, const bgd_options *o) {
+  bgd_options d;
+  if (!o) bgd_options_init(&d), o = &d;
+  bg_render_opts rd;
+  bg_strbuf err = {0};
+  free(m->last_error);
+  m->last_error = NULL;
+  if (drawing(o, &rd, &err) != 0) { /* the handle keeps its drawing options */
+    bg_strbuf msg = {0};
+    bg_sb_printf(&msg, "bgdraw: error: %s\n", bg_sb_str(&err));
+    m->last_error = msg.s;
+    bg_sb_free(&err);
+    return BGD_USAGE;
+  }
+  bg_render_opts *ro = &m->out.o.render;
+  /* the strings outlive the caller's: copies in the handle (a few bytes a call) */
+  ro->show = rd.show, ro->highlight_kind = rd.highlight_kind, ro->highlight_index = rd.highlight_index;
+  ro->style = kept(m, rd.style), ro->layout = kept(m, rd.layout);
+  if (m->out.diagram) bg_diagram_free(m->out.diagram), m->out.diagram = NULL; /* laid out anew */
+  return BGD_OK;
+}
 
 /* ------------------------------------------------------ the first API */
 static void give_text(char **errors, char *text) {

@@ -418,6 +418,43 @@ static void test_options(void) {
   STR_EQ(bgd_version(), BGDRAW_VERSION_STRING);
 }
 
+/* Drawing options changed on an open handle: the bytes of the command line
+ * with the same options, back to the defaults, and a wrong layer refused
+ * with the handle's options unchanged. */
+static void test_set_drawing(void) {
+  const char *model = "examples/class12_paths.bg";
+  bgd_model *m = bgd_open_file(model, NULL);
+  INT_EQ(bgd_status(m), BGD_OK);
+  compare_file(m, model, "svg", NULL, "d0.svg", "-o '%s'");
+  char style[16], show[16];
+  snprintf(style, sizeof style, "print"), snprintf(show, sizeof show, "paths");
+  bgd_options o;
+  bgd_options_init(&o);
+  o.style = style, o.show = show, o.highlight = "path:1", o.layout = "neato";
+  INT_EQ(bgd_set_drawing(m, &o), BGD_OK);
+  memset(style, 'x', sizeof style - 1), memset(show, 'x', sizeof show - 1); /* copied, not kept */
+  compare_file(m, model, "svg", NULL, "d1.svg",
+               "--style print --show paths --highlight path:1 --layout neato -o '%s'");
+  compare_file(m, model, "pdf", NULL, "d1.pdf",
+               "--style print --show paths --highlight path:1 --layout neato -o '%s'");
+  o.style = NULL, o.show = "loops", o.highlight = NULL, o.layout = NULL;
+  INT_EQ(bgd_set_drawing(m, &o), BGD_OK);
+  compare_file(m, model, "svg", NULL, "d2.svg", "--show loops -o '%s'");
+  o.show = "strokes,wings";
+  INT_EQ(bgd_set_drawing(m, &o), BGD_USAGE);
+  OK(bgd_last_error(m) && strstr(bgd_last_error(m), "wings"));
+  compare_file(m, model, "svg", NULL, "d3.svg", "--show loops -o '%s'"); /* unchanged */
+  o.show = NULL, o.highlight = "path:0x";
+  INT_EQ(bgd_set_drawing(m, &o), BGD_USAGE);
+  INT_EQ(bgd_set_drawing(m, NULL), BGD_OK);
+  compare_file(m, model, "svg", NULL, "d4.svg", "-o '%s'");
+  char *a = NULL, *b = NULL;
+  OK(bgd_output(m, "svg", NULL, &a, NULL) == BGD_OK && bgd_set_drawing(m, NULL) == BGD_OK &&
+     bgd_output(m, "svg", NULL, &b, NULL) == BGD_OK && !strcmp(a, b));
+  free(a), free(b);
+  bgd_free(m);
+}
+
 /* The log: progress only when verbose, every message through the function. */
 static void count_log(void *ctx, int level, const char *msg) {
   (void)msg;
@@ -502,6 +539,7 @@ int main(int argc, char **argv) {
   test_linear();
   test_diagnostics();
   test_options();
+  test_set_drawing();
   test_log();
   test_threads();
   if (!quick) test_every_output();
