@@ -133,10 +133,12 @@ typedef struct bgd_path {
   const char *from, *to; /* the one-port elements at its ends */
   const char *kind;      /* "R-R", "C-I", ... */
   int cls;               /* van Dijk's class 1 or 2; 0: none */
-  int order;             /* integrations in the loop it closes */
+  int order;             /* integrations in the loop it closes; BGD_NO_ORDER: none (a
+                            path from a source closes no loop) */
   int nbonds;
   const int *bonds;      /* bond numbers, from end to end */
 } bgd_path;
+#define BGD_NO_ORDER (-1000000)
 int bgd_causal_path_at(bgd_model *m, int i, bgd_path *out);
 
 typedef struct bgd_loop {

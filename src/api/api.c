@@ -314,7 +314,7 @@ int bgd_causal_path_at(bgd_model *m, int i, bgd_path *out) {
   out->to = r->model->elem_name[a->path_end1[i]];
   out->kind = a->path_kind[i];
   out->cls = a->path_class[i];
-  out->order = a->path_order[i];
+  out->order = a->path_order[i] == BG_PATH_ORDER_NONE ? BGD_NO_ORDER : a->path_order[i];
   out->nbonds = a->path_n[i];
   out->bonds = numbers(m, a->path_bonds + a->path_adr[i], a->path_n[i]);
   return BGD_OK;

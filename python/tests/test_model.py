@@ -1,0 +1,253 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""bgdraw.Model against independent results: the series RLC circuit's
+closed forms (eigenvalues, step response, state space, transfer functions),
+the command line's JSON document for every example, the command line's bytes
+for the same outputs, and its diagnostics."""
+import glob
+import json
+import os
+
+import numpy as np
+import pytest
+
+import bgdraw
+from conftest import ROOT, cli, example
+
+# examples/rlc.bg: V = 1, R0 = 10, L0 = 1e-3, C0 = 1e-6
+V, R, L, C = 1.0, 10.0, 1e-3, 1e-6
+ALPHA = R / (2 * L)
+WD = np.sqrt(1 / (L * C) - ALPHA ** 2)
+
+
+def test_rlc_strokes_and_index(rlc):
+    a = rlc.analysis
+    assert rlc.name == "rlc"
+    assert [(b.number, b.from_, b.to, b.stroke) for b in a.bonds] == [
+        (1, "U", "j", "to"), (2, "j", "R1", "from"), (3, "j", "L1", "to"), (4, "j", "C1", "from")]
+    assert a.element("C1").causality == "integral" and a.element("L1").causality == "integral"
+    assert a.element("R1").causality == "resistance"
+    assert (a.form, a.index.predicted, a.index.numeric, a.states) == ("ode", 0, 0, 2)
+    assert a.bond(3).to == "L1"
+
+
+def test_rlc_eigenvalues_closed_form(rlc):
+    eig = sorted(rlc.analysis.eigenvalues, key=lambda z: z.imag)
+    assert np.allclose(eig, [-ALPHA - 1j * WD, -ALPHA + 1j * WD], rtol=1e-9)
+
+
+def test_rlc_step_response_closed_form(rlc):
+    sim = rlc.simulate()
+    t = sim.time
+    assert sim.names == ["C1.e", "L1.f"] and len(t) == 2001 and t[-1] == pytest.approx(2e-3)
+    vc = V * (1 - np.exp(-ALPHA * t) * (np.cos(WD * t) + ALPHA / WD * np.sin(WD * t)))
+    i = V / (L * WD) * np.exp(-ALPHA * t) * np.sin(WD * t)
+    assert np.max(np.abs(sim["C1.e"] - vc)) < 1e-5  # of a 1 V step
+    assert np.max(np.abs(sim["L1.f"] - i)) < 1e-6  # of a 25 mA peak
+    assert sim["t"] is sim.time and list(sim.as_dict()) == ["t", "C1.e", "L1.f"]
+    assert rlc.simulate() is sim  # run once
+
+
+def test_rlc_simulation_is_the_csv(rlc):
+    _, csv, _ = cli(example("rlc.bg"), "--simulate", "-T", "csv")
+    rows = np.loadtxt(csv.decode().splitlines()[1:], delimiter=",")
+    sim = rlc.simulate()
+    assert np.array_equal(rows[:, 0], sim.time)
+    assert np.array_equal(rows[:, 1], sim["C1.e"]) and np.array_equal(rows[:, 2], sim["L1.f"])
+
+
+def test_rlc_linear_closed_form(rlc):
+    lin = rlc.linear()
+    assert lin.inputs == ["U"] and lin.outputs == ["L1.p", "C1.q"] and lin.reduced
+    assert np.allclose(lin.A, [[-R / L, -1 / C], [1 / L, 0]])
+    assert np.allclose(lin.B, [[1], [0]]) and np.allclose(lin.C, np.eye(2))
+    assert np.allclose(lin.D, [[0], [0]])
+    assert np.allclose(sorted(lin.poles, key=lambda z: z.imag), [-ALPHA - 1j * WD, -ALPHA + 1j * WD])
+    q = lin.transfer_function("C1.q", "U")  # q/U = (1/L) / (s^2 + R/L s + 1/(LC))
+    assert q.dc_gain == pytest.approx(C)
+    assert np.allclose(q.num, [1 / L]) and np.allclose(q.den, [1, R / L, 1 / (L * C)])
+    assert len(q.zeros) == 0
+    # each transfer function is C (sI - A)^-1 B + D at a few frequencies
+    for s in (1j * 1e3, 1j * 3e4, 2e4 + 5e3j):
+        H = lin.C @ np.linalg.solve(s * np.eye(2) - lin.A, lin.B) + lin.D
+        for t in lin.transfer_functions:
+            k, j = lin.outputs.index(t.output), lin.inputs.index(t.input)
+            assert t(s) == pytest.approx(H[k, j], rel=1e-9)
+    assert str(q) == "C1.q/U = (1000) / (s^2 + 10000*s + 1e+09)"
+    with pytest.raises(ValueError):
+        lin.transfer_function()  # two outputs: name one
+
+
+def test_linear_to_control(rlc):
+    lin = rlc.linear()
+    try:
+        import control  # noqa: F401  (not a Debian 12 package)
+    except ImportError:
+        with pytest.raises(ImportError, match="python-control"):
+            lin.to_control()
+    else:
+        sys = lin.to_control()
+        assert np.allclose(sorted(sys.poles(), key=lambda z: z.imag), sorted(lin.poles, key=lambda z: z.imag))
+
+
+def test_params_and_causality():
+    m = bgdraw.Model.from_file(example("rlc.bg"), params={"C0": 1e-5, "R0": 20})
+    a, wd = 20 / (2 * L), np.sqrt(1 / (L * 1e-5) - (20 / (2 * L)) ** 2)
+    assert np.allclose(sorted(m.analysis.eigenvalues, key=lambda z: z.imag), [-a - 1j * wd, -a + 1j * wd])
+    assert m.linear().transfer_function("C1.q").dc_gain == pytest.approx(1e-5)
+    d = bgdraw.Model.from_file(example("delta.bg"), causality="vandijk")
+    assert d.json()["method"] == "vandijk"
+
+
+def _json_view(doc):
+    """The command line's JSON document in the record API's terms."""
+    return {
+        "bonds": [(b["id"], b["from"], b["to"], b["stroke"]) for b in doc["bonds"]],
+        # the JSON writes "none" where the library says "transfer" (junctions, TF, GY)
+        "elements": [(e["name"], e["kind"], e["causality"] if e["causality"] != "none" else
+                      "transfer" if e["kind"] in ("0", "1", "TF", "GY", "MTF", "MGY") else None)
+                     for e in doc["elements"]],
+        "paths": [(p["ends"][0], p["ends"][1], p["kind"], p["class"], p["order"], tuple(p["bonds"]))
+                  for p in doc["causal_paths"]],
+        "cloops": [(tuple(c["bonds"]), c["gain"]) for c in doc["causal_loops"]],
+        "tloops": [(t["kind"], t["order"], tuple(t["bonds"]), t["gain"], t["gain_value"], t["algebraic"])
+                   for t in doc["topological_loops"]],
+        "conflicts": [(c["node"], c["type"], c["degree"], tuple(c["bonds"])) for c in doc["conflicts"]],
+        "index": (doc["form"], doc["index"]["predicted"], doc["index"]["numeric"],
+                  doc.get("reduced_form")),
+        "states": len(doc["states"]),
+    }
+
+
+def _record_view(a):
+    return {
+        "bonds": [(b.number, b.from_, b.to, b.stroke) for b in a.bonds],
+        "elements": [(e.name, e.kind, e.causality) for e in a.elements],
+        "paths": [(p.from_, p.to, p.kind, p.class_, p.order, p.bonds) for p in a.causal_paths],
+        "cloops": [(c.bonds, c.gain) for c in a.causal_loops],
+        "tloops": [(t.kind, t.order, t.bonds, t.gain, t.gain_value, t.algebraic)
+                   for t in a.topological_loops],
+        "conflicts": [(c.element, c.type, c.degree, c.bonds) for c in a.conflicts],
+        "index": (a.form, a.index.predicted, a.index.numeric, a.index.reduced_form),
+        "states": a.states,
+    }
+
+
+EXAMPLES = sorted(glob.glob(os.path.join(ROOT, "examples", "*.bg")))
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=os.path.basename)
+def test_analysis_is_the_command_lines(path):
+    _, out, _ = cli(path, "-T", "json")
+    m = bgdraw.Model.from_file(path)
+    assert _record_view(m.analysis) == _json_view(json.loads(out))
+    plain = m.analysis.as_dict()
+    assert json.loads(json.dumps(plain)) == plain  # plain data all the way down
+    assert plain["bonds"][0]["from"] == m.analysis.bonds[0].from_
+
+
+def test_conflicts_and_loops_as_records():
+    m = bgdraw.Model.from_file(example("series_conductances.bg"))
+    (c,) = m.analysis.conflicts
+    assert (c.element, c.type, c.degree, c.bonds) == ("j", 2, 2, (2, 3, 4))
+    assert m.analysis.as_dict()["conflicts"][0]["element"] == c.element
+    loop = bgdraw.Model.from_file(example("bond_loop.bg")).analysis.causal_loops[0]
+    assert loop.kind == "causal" and loop.class_ in (4, 5)
+
+
+@pytest.mark.parametrize("kwargs,args", [
+    ({}, []),
+    ({"show": "paths"}, ["--show", "paths"]),
+    ({"show": ["strokes", "numbers"], "style": "print"}, ["--show", "strokes,numbers", "--style", "print"]),
+    ({"highlight": "path:3", "layout": "neato"}, ["--highlight", "path:3", "--layout", "neato"]),
+])
+def test_svg_is_the_command_lines(kwargs, args):
+    path = example("class12_paths.bg")
+    _, want, _ = cli(path, *args, "-T", "svg")
+    m = bgdraw.Model.from_file(path)
+    assert m.svg(**kwargs) == want.decode()
+    assert m.svg() == cli(path, "-T", "svg")[1].decode()  # the call's options were for it only
+    opened = bgdraw.Model.from_file(path, **kwargs)  # or the model's own
+    assert opened.svg() == want.decode() and opened._repr_svg_() == want.decode()
+    assert opened._repr_mimebundle_()["image/svg+xml"] == want.decode()
+
+
+def test_save_report_equations(tmp_path, rlc):
+    (tmp_path / "py").mkdir(), (tmp_path / "cli").mkdir()
+    for ext in ("svg", "pdf", "png", "dot", "json", "tex", "py", "m", "mo", "csv"):
+        rlc.save(tmp_path / "py" / f"rlc.{ext}")  # the same name: an Octave function is named after it
+        cli(example("rlc.bg"), "-o", str(tmp_path / "cli" / f"rlc.{ext}"))
+        assert (tmp_path / "py" / f"rlc.{ext}").read_bytes() == \
+            (tmp_path / "cli" / f"rlc.{ext}").read_bytes(), ext
+    rlc.save(tmp_path / "rlc.c")
+    assert '#include "rlc.h"' in (tmp_path / "rlc.c").read_text() and (tmp_path / "rlc.h").exists()
+    rlc.report(tmp_path / "r.pdf")
+    assert (tmp_path / "r.pdf").read_bytes()[:5] == b"%PDF-"
+    latex = rlc.equations("latex")
+    assert latex == cli(example("rlc.bg"), "--equations", "latex")[1].decode()
+    assert latex._repr_latex_().startswith("$$\\begin{align*}")
+    assert rlc.equations("text")._repr_latex_() is None
+    eqs = rlc.equations("json")
+    assert eqs["format"] and isinstance(eqs["equations"], list)
+    assert rlc.check() == cli(example("rlc.bg"), "--check")[1].decode()
+    assert rlc.plot(format="svg").startswith("<?xml") or "<svg" in rlc.plot(format="svg")
+    with pytest.raises(bgdraw.UsageError, match="extension"):
+        rlc.save(tmp_path / "rlc.gif")
+
+
+BAD = "model pump\nSe U = 1\n1 j\nQ C1 = 1\nbond U -> j\nbond j -> C1\n"
+
+
+def test_model_error_carries_diagnostics(tmp_path):
+    with pytest.raises(bgdraw.ModelError) as e:
+        bgdraw.Model.from_string(BAD, name="pump.bg")
+    (d,) = e.value.errors
+    assert (d.file, d.line, d.column, d.severity) == ("pump.bg", 4, 1, "error")
+    assert "unknown element kind 'Q'" in d.message
+    assert str(d) == f"pump.bg:4:1: error: {d.message}"
+    # printed as the command line prints them
+    (tmp_path / "pump.bg").write_text(BAD)
+    status, _, err = cli(str(tmp_path / "pump.bg"), "--check", check=False)
+    with pytest.raises(bgdraw.ModelError) as f:
+        bgdraw.Model.from_file(tmp_path / "pump.bg")
+    assert status == 1 and str(f.value) == err.rstrip("\n")
+    assert "    4 | Q C1 = 1" in str(f.value)  # the line and a caret
+    assert e.value._render_traceback_()[0] == str(d)
+
+
+def test_usage_and_refusals(rlc):
+    with pytest.raises(bgdraw.UsageError, match="causality"):
+        bgdraw.Model.from_file(example("rlc.bg"), causality="nonsense")
+    with pytest.raises(bgdraw.UsageError, match="wings"):
+        rlc.svg(show="wings")
+    assert "<svg" in rlc.svg()  # the model is as it was
+    with pytest.raises(bgdraw.UsageError):
+        rlc.output("gif")
+    with pytest.raises(TypeError, match="causalty"):
+        bgdraw.Model.from_file(example("rlc.bg"), causalty="scap")
+    static = bgdraw.Model.from_string("Se U = 1\n1 j\nR R1 = 2\nbond U -> j\nbond j -> R1\n",
+                                      name="static.bg")
+    with pytest.raises(bgdraw.RefusedError, match="no simulate block"):
+        static.simulate()
+    with pytest.raises(bgdraw.WriteError):
+        rlc.save("/nonexistent-folder/x.svg")
+
+
+def test_warnings_and_log():
+    src = "param a = 1, unused = 3\nSe U = a\n1 j\nC C1 = 0\nbond U -> j\nbond j -> C1\n"
+    m = bgdraw.Model.from_string(src, name="w.bg")
+    assert len(m.warnings) == 2 and all(w.severity == "warning" for w in m.warnings)
+    with pytest.raises(bgdraw.ModelError, match="Werror"):
+        bgdraw.Model.from_string(src, name="w.bg", warnings="no-unused-param,error")
+    seen = []
+    r = bgdraw.Model.from_file(example("rlc.bg"), log=lambda level, msg: seen.append(level),
+                               verbose=True)
+    r.simulate()
+    assert seen.count(0) >= 4
+
+
+def test_closed_model():
+    m = bgdraw.Model.from_file(example("rlc.bg"))
+    m.close()
+    with pytest.raises(ValueError, match="closed"):
+        m.svg()
+    assert repr(m) == "<bgdraw.Model (closed)>"
