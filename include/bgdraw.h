@@ -220,7 +220,9 @@ int bgd_transfer_function_at(bgd_model *m, int k, bgd_transfer *out);
 /* Output kind `kind` as bgdraw writes it (a CSV or a plot of a simulation
  * without rows: BGD_REFUSED, where bgdraw writes no file): "svg", "pdf", "png", "dot",
  * "json", "check", "equations" (form "text", "latex", "json", "c"), "tex",
- * "c", "h", "py", "m", "mo", "csv", "plot" (form "svg", "pdf", "png"),
+ * "c", "h", "py", "m", "mo", "fmu" (an FMI 2.0 Model Exchange archive,
+ * compiled by $CC or cc, whose messages go to the process's stderr; the
+ * program's signal handlers are left alone), "csv", "plot" (form "svg", "pdf", "png"),
  * "report", "linear" (form "text", "latex", "json", "octave", "python"),
  * "bode", "nyquist", "step" (form a format). 0 with *data (len bytes,
  * NUL-terminated, malloc'd) or a status with the reason in the diagnostics

@@ -140,7 +140,7 @@ static bgd_model *open_run(const char *name, const char *text, const char *path,
   free(sets);
   int rc = path ? bg_run_load_file(m->run, path) : bg_run_load_string(m->run, name, text);
   if (rc && !m->status) m->status = BGD_MODEL;
-  bg_output_opts oo = {rd, m->opts.prefix, NULL, NULL};
+  bg_output_opts oo = {rd, m->opts.prefix, NULL, NULL, 0}; /* the program's signals are its own */
   oo.render.log = &m->run->o.log;
   bg_output_init(&m->out, m->run, &oo);
   return m;

@@ -88,7 +88,7 @@ static const struct {
     {'K', offsetof(bg_cli_opts, layout)}, /* dot's -K ENGINE */
 };
 
-int bg_cli_is_stdout(const char *path) { return path && strcmp(path, BG_CLI_STDOUT) == 0; }
+
 
 /* The closest option name to what the user typed (without "=value"). */
 static const char *closest_option(const char *arg, char *buf, size_t n) {

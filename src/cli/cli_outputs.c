@@ -119,20 +119,6 @@ void cli_default_output(run *r, char *buf, size_t n) {
   r->opts.nout = 1;
 }
 
-/* Text to stdout, flushed; EXIT_WRITE (with a message) on a write error. */
-static int write_stdout(const bg_strbuf *sb) {
-  if (bg_write_stream(stdout, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write to stdout: %s\n", bg_file_strerror(errno));
-  return EXIT_WRITE;
-}
-
-int cli_write_text(const char *path, const bg_strbuf *sb) {
-  if (bg_cli_is_stdout(path)) return write_stdout(sb); /* in place, never renamed */
-  if (bg_write_file_atomic(path, bg_sb_str(sb), sb->len) == 0) return EXIT_OK;
-  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
-  return EXIT_WRITE;
-}
-
 
 /* The writers' messages: errors as diagnostics, a refusal in words. */
 static void say(run *r) {
@@ -157,37 +143,6 @@ int cli_write_output(run *r, const char *kind, const char *form, const char *pat
   if (rc == EXIT_OK && !to_stdout)
     bg_logf(&r->R->o.log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, sb.len);
   bg_sb_free(&sb);
-  return rc;
-}
-
-/* -o NAME.fmu: the export build compiled by cli_fmu.c. */
-static int write_fmu(run *r, const char *path) {
-  bg_run *R = r->R;
-  bg_output_need(&r->out, bg_output_find("fmu"));
-  if (r->opts.prefix && !bg_export_prefix_ok(r->opts.prefix)) {
-    fprintf(stderr, "bgdraw: error: --prefix '%s' is not a C identifier (letters, digits, '_')\n",
-            r->opts.prefix);
-    return EXIT_USAGE;
-  }
-  if (!R->eqsys) {
-    fprintf(stderr, "bgdraw: error: no equations for '%s': %s\n", path,
-            R->eqsys_problem ? R->eqsys_problem : "unknown reason");
-    return EXIT_MODEL;
-  }
-  bg_diags dg;
-  bg_diags_init(&dg, R->name, R->src, R->srclen);
-  bg_eqsys *s = bg_eqsys_build_export(R->model, &R->analysis, &dg);
-  bg_diags_free(&dg);
-  if (!s) {
-    fprintf(stderr, "bgdraw: error: no equations for '%s'\n", path);
-    return EXIT_MODEL;
-  }
-  char prefix[80];
-  if (r->opts.prefix) snprintf(prefix, sizeof prefix, "%s", r->opts.prefix);
-  else bg_export_default_prefix(R->model, prefix, sizeof prefix);
-  cli_fmu_set_log(&R->o.log);
-  int rc = cli_write_fmu(s, prefix, path);
-  bg_eqsys_free(s);
   return rc;
 }
 
@@ -216,8 +171,7 @@ int cli_write_outputs(run *r) {
     bg_logf(&r->R->o.log, BG_LOG_PROGRESS, "writing %s",
             bg_cli_is_stdout(out->path) ? "stdout" : out->path);
     int rc;
-    if (!strcmp(out->format, "fmu")) rc = write_fmu(r, bg_cli_is_stdout(out->path) ? BG_CLI_STDOUT : out->path);
-    else if (!strcmp(out->format, "c")) rc = write_c(r, out->path);
+    if (!strcmp(out->format, "c")) rc = write_c(r, out->path);
     else rc = cli_write_output(r, out->format, NULL, out->path);
     if (rc) return rc;
   }

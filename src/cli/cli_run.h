@@ -50,13 +50,6 @@ int cli_write_output(run *r, const char *kind, const char *form, const char *pat
 int cli_write_outputs(run *r);
 /* -M/--depfile: the make rule of the files this run read (cli_depfile.c). */
 int cli_write_depfile(run *r);
-/* -o NAME.fmu (cli_fmu.c): the FMI 2.0 Model Exchange archive of the export
- * build s, model identifier prefix; EXIT_SIM (refused) for a DAE, EXIT_WRITE when the
- * compiler is missing or fails. */
-int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path);
-/* Where cli_write_fmu says (-v) what it compiles; NULL: silence. */
-struct bg_log;
-void cli_fmu_set_log(const struct bg_log *log);
 /* --linear/--bode/--nyquist/--step asked for; and nothing else (no default diagram). */
 int cli_linear_asked(const bg_cli_opts *o);
 int cli_linear_only(const bg_cli_opts *o);

@@ -23,18 +23,6 @@ static int parse_show(const char *list, unsigned *bits) {
 /* DIR/../share/bgdraw/styles of the running executable (installed), else
  * DIR/share/bgdraw/styles (the build tree, where CMake copies them); NULL
  * when neither exists (style.c then tries $BGDRAW_STYLE_DIR and ./styles). */
-int cli_exe_dir(char *buf, size_t n) {
-  char exe[4096];
-  ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (len <= 0) return -1;
-  exe[len] = '\0';
-  char *slash = strrchr(exe, '/');
-  if (!slash) return -1;
-  *slash = '\0';
-  snprintf(buf, n, "%s", exe);
-  return 0;
-}
-
 static const char *installed_style_dir(void) {
   static char dir[4200];
   char exe[4096]; /* the executable's folder */

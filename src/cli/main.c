@@ -58,7 +58,7 @@ static int load_model(run *r) {
     char *text = bg_read_stream(stdin, &len);
     rc = bg_run_load(r->R, "<stdin>", text, len);
   }
-  bg_output_opts oo = {r->ropts, o->prefix, o->transform, NULL};
+  bg_output_opts oo = {r->ropts, o->prefix, o->transform, NULL, 1}; /* the FMU cleans up on ^C */
   oo.render.log = &r->R->o.log;
   bg_output_init(&r->out, r->R, &oo);
   return rc;

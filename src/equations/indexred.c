@@ -38,8 +38,6 @@ static int new_var(ir_work *W, int unk, int ord, int anti) {
   return v;
 }
 
-int ir_var_leaf(ir_work *W, int v) { return bg_sym_leaf(W->S, SYM_Y, v); }
-
 static int new_eq(ir_work *W, int expr, int row, int ord, int anti) {
   if (W->ne == W->cape) {
     W->cape = W->cape ? 2 * W->cape : 64;
@@ -50,19 +48,6 @@ static int new_eq(ir_work *W, int expr, int row, int ord, int anti) {
   W->e_expr[e] = expr, W->e_der[e] = -1, W->e_anti[e] = anti, W->e_row[e] = row, W->e_ord[e] = ord;
   if (anti >= 0) W->e_der[anti] = e;
   return e;
-}
-
-void ir_expr_vars(ir_work *W, int e, bg_ivec *out) {
-  bg_sym *S = W->S;
-  int nn = S->nnode;
-  unsigned char *mark = bg_xcalloc((size_t)nn + 1, 1);
-  for (int id = 0; id < nn; id++)
-    mark[id] = S->node[id].kind == SYM_Y && S->node[id].n == 0 && S->node[id].ref < W->nv;
-  int cnt = bg_sym_leaves(S, e, mark, nn, NULL, 0);
-  int *ids = bg_xmalloc((size_t)(cnt + 1) * sizeof(int));
-  bg_sym_leaves(S, e, mark, nn, ids, cnt);
-  for (int k = 0; k < cnt; k++) bg_ivec_push(out, S->node[ids[k]].ref);
-  free(ids), free(mark);
 }
 
 /* Incidence of a new equation: its variables (original equations), or

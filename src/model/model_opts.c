@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Statement options (model_int.h), shared by elements and statements
  * (model_stmt.c) and fields (model_field.c): unknown and repeated keys,
  * strings, colours, words from a list, numbers, initial values, positions. */

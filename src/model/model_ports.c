@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The variables of a field's ports inside its laws (model_int.h): which
  * element a port is, and e, f or q of a port as expression nodes. Called
  * by the expression compiler (model_expr.c) and the fields (model_field.c). */

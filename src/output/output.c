@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The output table (output.h) and the writers of the analysis, the
  * diagram, the equations, the simulation and the report. Exports are in
- * output_export.c, the linear analysis' outputs in output_linear.c. */
+ * output_export.c (the FMU in output_fmu.c), the linear analysis' outputs
+ * in output_linear.c. */
 #include "output/output.h"
 
 #include <stdlib.h>
@@ -39,20 +40,6 @@ void bg_output_clear_messages(bg_output *w) {
   bg_diags_init(&w->dg_model, w->run->name ? w->run->name : "bgdraw", w->run->src, w->run->srclen);
   free(w->refusal);
   w->refusal = NULL;
-}
-
-bg_output_status bg_out_refuse(bg_output *w, const char *what, const char *why) {
-  bg_strbuf sb = {0};
-  bg_sb_printf(&sb, "%s%s", what, why);
-  free(w->refusal);
-  w->refusal = sb.s;
-  return BG_OUT_REFUSED;
-}
-
-bg_output_status bg_out_error(bg_output *w, bg_output_status st, const char *fmt, const char *a,
-                              const char *b) {
-  bg_diag_error(&w->dg, (bg_srcloc){0}, fmt, a, b);
-  return st;
 }
 
 /* BG_RENDER_* as a status. */
@@ -103,11 +90,6 @@ static bg_output_status write_diagram(bg_output *w, const bg_output_kind *k, con
 }
 
 /* ----------------------------------------------------------- the equations */
-bg_output_status bg_out_no_equations(bg_output *w, const char *path) {
-  return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s': %s", path ? path : "stdout",
-                      w->run->eqsys_problem ? w->run->eqsys_problem : "unknown reason");
-}
-
 static bg_output_status write_equations(bg_output *w, const bg_output_kind *k, const char *form,
                                         const char *path, bg_strbuf *out) {
   (void)k;
@@ -171,7 +153,7 @@ const bg_output_kind bg_output_kinds[] = {
     {"m", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Octave/MATLAB (export.md)"},
     {"py", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Python/SciPy"},
     {"mo", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Modelica"},
-    {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_EXT | BG_OUTK_FILE_ONLY, NULL,
+    {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_fmu,
      "FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)"},
     {"bg", BG_STAGE_ANALYSIS, BG_OUTK_EXT, write_transformed, "the model rewritten by --transform"},
     /* chosen by options of their own */

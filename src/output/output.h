@@ -26,7 +26,6 @@ enum {
   BG_OUTK_DRAWS = 1,      /* needs the renderers (Graphviz, cairo, pango) */
   BG_OUTK_MODEL_SIM = 2,  /* and the simulation when the model has a simulate block */
   BG_OUTK_MODEL_LIN = 4,  /* and the linear analysis when the model has a linearise statement */
-  BG_OUTK_FILE_ONLY = 8,  /* only into a named file (the FMU: the command line builds it) */
   BG_OUTK_EXT = 16        /* chosen by a file's extension (-o FILE.EXT) or -T */
 };
 
@@ -50,6 +49,8 @@ typedef struct bg_output_opts {
   const char *prefix;          /* exported C symbols' prefix; NULL: from the model */
   const char *transform;       /* --transform NAME: tx is its result ("bg", the report) */
   const bg_transform_result *tx;
+  int catch_signals;           /* the FMU build may take stop signals to clean up (the
+                                  command line; a library leaves a program's signals alone) */
 } bg_output_opts;
 
 struct bg_output {

@@ -2,8 +2,8 @@
 /* Export outputs (docs/export.md): the equation system built again in
  * export form (params stay variables, bg_eqsys_build_export), once per
  * output, and written by src/export: C (header and source), Python,
- * Octave/MATLAB, Modelica. The FMU is built by the command line (it runs a
- * compiler), from the same export build. */
+ * Octave/MATLAB, Modelica. The FMU (output_fmu.c) is compiled from the
+ * same export build. */
 #include <stdio.h>
 #include <string.h>
 
@@ -24,7 +24,9 @@ static void base_name(const char *path, char *buf, size_t n) {
   if (dot) *dot = 0;
 }
 
-bg_output_status bg_out_export(bg_output *w, const char *format, const char *path, bg_strbuf *out) {
+bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys **s, char *prefix,
+                                      size_t n) {
+  *s = NULL;
   if (w->o.prefix && !bg_export_prefix_ok(w->o.prefix))
     return bg_out_error(w, BG_OUT_USAGE, "--prefix '%s' is not a C identifier (letters, digits, '_')%s",
                         w->o.prefix, "");
@@ -32,11 +34,18 @@ bg_output_status bg_out_export(bg_output *w, const char *format, const char *pat
   if (!r->eqsys) return bg_out_no_equations(w, path);
   bg_diags dg;
   bg_diags_init(&dg, r->name, r->src, r->srclen);
-  bg_eqsys *s = bg_eqsys_build_export(r->model, &r->analysis, &dg);
+  *s = bg_eqsys_build_export(r->model, &r->analysis, &dg);
   bg_diags_free(&dg);
-  if (!s) return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s'%s", path ? path : "stdout", "");
+  if (!*s) return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s'%s", path ? path : "stdout", "");
+  prefix_of(w, prefix, n);
+  return BG_OUT_OK;
+}
+
+bg_output_status bg_out_export(bg_output *w, const char *format, const char *path, bg_strbuf *out) {
+  bg_eqsys *s;
   char prefix[80], name[300];
-  prefix_of(w, prefix, sizeof prefix);
+  bg_output_status st = bg_out_export_system(w, path, &s, prefix, sizeof prefix);
+  if (st != BG_OUT_OK) return st;
   if (!strcmp(format, "c") || !strcmp(format, "h")) {
     bg_strbuf h = {0}, c = {0};
     if (path) { /* NAME.c includes NAME.h */

@@ -9,6 +9,7 @@
 #include <dirent.h>
 #include <math.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -529,6 +530,48 @@ static void test_threads(void) {
   for (int i = 0; i < 4; i++) free(alone[i].json), free(alone[i].csv), free(alone[i].eq), free(alone[i].svg);
 }
 
+/* The FMU through the library: the command line's archive, byte for byte
+ * (the compiler is deterministic on the same sources); a DAE refused as the
+ * command line refuses it; a missing compiler a message, not a stderr line;
+ * the program's signal handlers untouched (a library must not take them). */
+static int holds(const char *buf, size_t n, const char *s) {
+  size_t k = strlen(s);
+  for (size_t i = 0; buf && i + k <= n; i++)
+    if (!memcmp(buf + i, s, k)) return 1;
+  return 0;
+}
+
+static void test_fmu(void) {
+  struct sigaction mine = {0}, after;
+  mine.sa_handler = SIG_IGN;
+  struct sigaction before;
+  sigaction(SIGINT, &mine, &before);
+  bgd_model *m = bgd_open_file(BG_SOURCE_DIR "/examples/rlc.bg", NULL);
+  compare_file(m, BG_SOURCE_DIR "/examples/rlc.bg", "fmu", NULL, "x.fmu", "-o '%s'");
+  char *zip = NULL;
+  size_t n = 0;
+  OK(bgd_output(m, "fmu", NULL, &zip, &n) == BGD_OK);
+  OK(zip && n > 1000 && !memcmp(zip, "PK\3\4", 4));
+  OK(holds(zip, n, "binaries/linux64/rlc.so") && holds(zip, n, "modelDescription.xml"));
+  free(zip);
+  const char *cc = getenv("CC");
+  char *saved = cc ? strdup(cc) : NULL;
+  setenv("CC", "/nonexistent/cc", 1);
+  OK(bgd_output(m, "fmu", NULL, &zip, &n) == BGD_WRITE);
+  OK(bgd_last_error(m) && strstr(bgd_last_error(m), "cannot run the C compiler '/nonexistent/cc'"));
+  if (saved) setenv("CC", saved, 1);
+  else unsetenv("CC");
+  free(saved);
+  bgd_free(m);
+  m = bgd_open_file(BG_SOURCE_DIR "/examples/hydraulic_bridge.bg", NULL);
+  OK(bgd_output(m, "fmu", NULL, &zip, &n) == BGD_REFUSED);
+  OK(bgd_last_error(m) && strstr(bgd_last_error(m), "export refused: 'stdout': the model is a DAE"));
+  compare_file(m, BG_SOURCE_DIR "/examples/hydraulic_bridge.bg", "fmu", NULL, "hb.fmu", "-o '%s'");
+  bgd_free(m);
+  sigaction(SIGINT, &before, &after);
+  OK(after.sa_handler == SIG_IGN); /* still the program's own */
+}
+
 int main(int argc, char **argv) {
   snprintf(tmp, sizeof tmp, "%s/test_api_XXXXXX", BG_BINARY_DIR);
   if (!mkdtemp(tmp)) return 1;
@@ -546,6 +589,7 @@ int main(int argc, char **argv) {
   test_set_drawing();
   test_log();
   test_threads();
+  test_fmu();
   if (!quick) test_every_output();
   char cmd[400];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

@@ -1,21 +1,27 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* -o NAME.fmu (docs/export.md): an FMI 2.0 Model Exchange FMU. The C export
- * and the fmi2 glue are written to a private temporary folder (mkdtemp),
- * compiled there into a shared library by $CC (or cc), and zipped with
- * modelDescription.xml and the sources; the archive is written atomically and
- * the folder removed. The compiler runs in that folder on relative names so
- * no path of this machine enters the library.
+/* The "fmu" output (docs/export.md): an FMI 2.0 Model Exchange FMU. The C
+ * export and the fmi2 glue are written to a private temporary folder
+ * (mkdtemp), compiled there into a shared library by $CC (or cc), and zipped
+ * with modelDescription.xml and the sources into the output buffer; the
+ * folder is removed. The compiler runs in that folder on relative names so
+ * no path of this machine enters the library. The command line and
+ * libbgdraw both build it here; the compiler's own messages go to the
+ * process's standard error, ours into the output's diagnostics.
  *
- * Interrupted builds leave nothing behind: while the folder exists, SIGINT,
- * SIGTERM, SIGHUP and SIGQUIT only set a flag (and pass SIGTERM to the
- * compiler, which runs in its own process group with TMPDIR in the folder,
- * so its own temporary files are ours to remove); the build stops at the
- * next step, kills what is left of the compiler's group, removes the folder
- * and then dies of the same signal. SIGPIPE is ignored meanwhile (a closed
- * stderr while the compiler's errors are relayed is a failed write, not a
- * death), and the compiler gets its default disposition back. */
+ * With bg_output_opts.catch_signals (the command line; a library must not
+ * take a program's signals) an interrupted build leaves nothing behind:
+ * while the folder exists, SIGINT, SIGTERM, SIGHUP and SIGQUIT only set a
+ * flag (and pass SIGTERM to the compiler, which runs in its own process
+ * group with TMPDIR in the folder, so its own temporary files are ours to
+ * remove); the build stops at the next step, kills what is left of the
+ * compiler's group, removes the folder and then dies of the same signal.
+ * SIGPIPE is ignored meanwhile (a closed stderr while the compiler's errors
+ * are relayed is a failed write, not a death), and the compiler gets its
+ * default disposition back. The two flags below are the process's, like
+ * its signal handlers: only a build that catches signals writes them. */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,19 +33,19 @@
 
 #include "base/fileio.h"
 #include "base/log.h"
-#include "cli/cli_run.h"
 #include "export/export.h"
+#include "output/output_int.h"
 
 enum { FMU_FILES = 4 }; /* P.h, P.c, P_fmi2.c, P.so in the temporary folder */
 
 typedef struct fmu_build {
+  bg_output *w;     /* where errors go */
+  const bg_log *log; /* -v: what is being compiled; nullable */
+  int signals;      /* stop signals caught (the command line) */
   char dir[4096];
   char name[FMU_FILES][200]; /* file names inside dir */
   bg_strbuf text[FMU_FILES - 1];
 } fmu_build;
-
-static const bg_log *fmu_log; /* -v: what is being compiled */
-void cli_fmu_set_log(const bg_log *log) { fmu_log = log; }
 
 /* ------------------------------------------------------------ signals */
 static const int stop_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
@@ -85,14 +91,20 @@ static int write_in(const fmu_build *b, int k, const void *data, size_t len) {
   char path[4400];
   snprintf(path, sizeof path, "%s/%s", b->dir, b->name[k]);
   if (bg_write_file_atomic(path, data, len) == 0) return 0;
-  fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
+  bg_out_error(b->w, BG_OUT_WRITE, "cannot write '%s': %s", path, bg_file_strerror(errno));
   return -1;
 }
 
 /* ------------------------------------------------------------ the compiler */
+static int stopped(const fmu_build *b) { return b->signals && stop_signal; }
+
+static void set_group(const fmu_build *b, pid_t pgid) {
+  if (b->signals) compiler_pgid = pgid; /* only for on_stop, only when it is installed */
+}
+
 /* Ends the compiler's process group: SIGTERM, up to 2 s for it to go, then
  * SIGKILL; reaps the compiler. */
-static void end_compiler(pid_t pid) {
+static void end_compiler(const fmu_build *b, pid_t pid) {
   kill(-pid, SIGTERM);
   for (int i = 0; i < 200; i++) {
     if (waitpid(pid, NULL, WNOHANG) == pid) break;
@@ -100,7 +112,33 @@ static void end_compiler(pid_t pid) {
   }
   kill(-pid, SIGKILL); /* what is left of the group (cc1, as, ld) */
   while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {}
-  compiler_pgid = 0;
+  set_group(b, 0);
+}
+
+static void log_command(const fmu_build *b, char *const argv[]) {
+  if (!bg_log_on(b->log, BG_LOG_PROGRESS)) return;
+  char line[2048];
+  size_t len = 0;
+  for (int i = 0; argv[i] && len < sizeof line - 1; i++)
+    len += (size_t)snprintf(line + len, sizeof line - len, "%s%s", i ? " " : "", argv[i]);
+  bg_logf(b->log, BG_LOG_PROGRESS, "compiling the FMU's library (%zu bytes of C) in %s: %s",
+          b->text[1].len + b->text[2].len + b->text[0].len, b->dir, line);
+}
+
+/* The child: its own group, default signals, our folder; on a failed exec
+ * its errno goes up the close-on-exec pipe (so the message is the parent's,
+ * in the output's diagnostics). */
+static void run_child(const fmu_build *b, char *const argv[], int report_fd) {
+  setpgid(0, 0);
+  if (b->signals) {
+    for (int i = 0; i < NSTOP; i++) signal(stop_signals[i], SIG_DFL);
+    signal(SIGPIPE, SIG_DFL);
+  }
+  setenv("TMPDIR", b->dir, 1); /* the compiler's temporaries in our folder */
+  if (chdir(b->dir) == 0) execvp(argv[0], argv);
+  int e = errno;
+  if (write(report_fd, &e, sizeof e) < 0) {} /* nothing more to do if even this fails */
+  _exit(127);
 }
 
 /* $CC split at blanks ("ccache gcc" works), then the flags and files. */
@@ -110,48 +148,52 @@ static int compile(const fmu_build *b) {
   char ccbuf[1024], *argv[64];
   int n = 0;
   snprintf(ccbuf, sizeof ccbuf, "%s", cc);
-  for (char *tok = strtok(ccbuf, " \t"); tok && n < 40; tok = strtok(NULL, " \t")) argv[n++] = tok;
+  char *save = NULL;
+  for (char *tok = strtok_r(ccbuf, " \t", &save); tok && n < 40; tok = strtok_r(NULL, " \t", &save))
+    argv[n++] = tok;
   const char *tail[] = {"-shared", "-fPIC", "-O2", "-o", b->name[3], b->name[1], b->name[2], "-lm", NULL};
   for (int i = 0; tail[i]; i++) argv[n++] = (char *)tail[i];
   argv[n] = NULL;
-  if (bg_log_on(fmu_log, BG_LOG_PROGRESS)) {
-    char line[2048];
-    size_t len = 0;
-    for (int i = 0; argv[i] && len < sizeof line - 1; i++)
-      len += (size_t)snprintf(line + len, sizeof line - len, "%s%s", i ? " " : "", argv[i]);
-    bg_logf(fmu_log, BG_LOG_PROGRESS, "compiling the FMU's library (%zu bytes of C) in %s: %s",
-            b->text[1].len + b->text[2].len + b->text[0].len, b->dir, line);
-  }
+  log_command(b, argv);
   fflush(NULL);
-  if (stop_signal) return -1;
+  if (stopped(b)) return -1;
+  int fds[2];
+  if (pipe(fds) < 0)
+    return bg_out_error(b->w, BG_OUT_WRITE, "cannot start the C compiler: %s%s", strerror(errno), ""), -1;
+  fcntl(fds[0], F_SETFD, FD_CLOEXEC), fcntl(fds[1], F_SETFD, FD_CLOEXEC); /* cannot fail on new fds */
   pid_t pid = fork();
-  if (pid < 0) return fprintf(stderr, "bgdraw: error: cannot start the C compiler: %s\n", strerror(errno)), -1;
-  if (pid == 0) {
-    setpgid(0, 0);
-    for (int i = 0; i < NSTOP; i++) signal(stop_signals[i], SIG_DFL);
-    signal(SIGPIPE, SIG_DFL);
-    setenv("TMPDIR", b->dir, 1); /* the compiler's temporaries in our folder */
-    if (chdir(b->dir) == 0) execvp(argv[0], argv);
-    fprintf(stderr, "bgdraw: error: cannot run the C compiler '%s' (set CC to one): %s\n", argv[0], strerror(errno));
-    _exit(127);
+  if (pid < 0) {
+    close(fds[0]), close(fds[1]);
+    return bg_out_error(b->w, BG_OUT_WRITE, "cannot start the C compiler: %s%s", strerror(errno), ""), -1;
   }
+  if (pid == 0) run_child(b, argv, fds[1]);
+  close(fds[1]);
   setpgid(pid, pid); /* both sides: no race with the first signal */
-  compiler_pgid = pid;
-  if (stop_signal) kill(-pid, SIGTERM); /* arrived between fork and here */
+  set_group(b, pid);
+  if (stopped(b)) kill(-pid, SIGTERM); /* arrived between fork and here */
+  int exec_errno = 0;
+  ssize_t got;
+  while ((got = read(fds[0], &exec_errno, sizeof exec_errno)) < 0 && errno == EINTR && !stopped(b)) {}
+  close(fds[0]);
   int st = 0;
   pid_t w;
-  while ((w = waitpid(pid, &st, 0)) < 0 && errno == EINTR && !stop_signal) {}
-  if (stop_signal || w < 0) {
-    if (w != pid) end_compiler(pid);
+  while ((w = waitpid(pid, &st, 0)) < 0 && errno == EINTR && !stopped(b)) {}
+  if (stopped(b) || w < 0) {
+    if (w != pid) end_compiler(b, pid);
     else kill(-pid, SIGKILL); /* the compiler is gone; its helpers too */
-    compiler_pgid = 0;
+    set_group(b, 0);
     return -1;
   }
   kill(-pid, SIGKILL); /* a helper the compiler left running, if any */
-  compiler_pgid = 0;
+  set_group(b, 0);
+  if (got == (ssize_t)sizeof exec_errno) {
+    bg_out_error(b->w, BG_OUT_WRITE, "cannot run the C compiler '%s' (set CC to one): %s", argv[0],
+                 strerror(exec_errno));
+    return -1;
+  }
   if (WIFEXITED(st) && WEXITSTATUS(st) == 0) return 0;
-  if (!(WIFEXITED(st) && WEXITSTATUS(st) == 127))
-    fprintf(stderr, "bgdraw: error: the C compiler '%s' failed to build the FMU's shared library\n", argv[0]);
+  bg_out_error(b->w, BG_OUT_WRITE, "the C compiler '%s' failed to build the FMU's shared library%s",
+               argv[0], "");
   return -1;
 }
 
@@ -188,8 +230,8 @@ static void cleanup(fmu_build *b) {
   for (int k = 0; k < FMU_FILES - 1; k++) bg_sb_free(&b->text[k]);
 }
 
-/* Sources, library, archive into zip; EXIT_OK or EXIT_WRITE after a message. */
-static int build(fmu_build *b, const bg_eqsys *s, const char *P, bg_strbuf *zip) {
+/* Sources, library, archive into zip; BG_OUT_OK, or BG_OUT_WRITE after a message. */
+static bg_output_status build(fmu_build *b, const bg_eqsys *s, const char *P, bg_strbuf *zip) {
   char guid[64];
   bg_export_c(s, P, b->name[0], &b->text[0], &b->text[1]);
   bg_strbuf all = {0}, xml = {0};
@@ -199,51 +241,58 @@ static int build(fmu_build *b, const bg_eqsys *s, const char *P, bg_strbuf *zip)
   bg_sb_free(&all);
   bg_export_fmu_glue(s, P, b->name[0], guid, &b->text[2]);
   bg_export_fmu_description(s, P, guid, &xml);
-  int rc = EXIT_WRITE;
+  bg_output_status rc = BG_OUT_WRITE;
   for (int k = 0; k < FMU_FILES - 1; k++)
-    if (stop_signal || write_in(b, k, bg_sb_str(&b->text[k]), b->text[k].len)) goto done;
-  if (compile(b) || stop_signal) goto done;
+    if (stopped(b) || write_in(b, k, bg_sb_str(&b->text[k]), b->text[k].len)) goto done;
+  if (compile(b) || stopped(b)) goto done;
   char path[4400];
   snprintf(path, sizeof path, "%s/%s", b->dir, b->name[3]);
   size_t solen = 0;
   char *so = bg_read_file(path, &solen);
   if (!so) {
-    fprintf(stderr, "bgdraw: error: cannot read the compiled '%s': %s\n", path, bg_file_strerror(errno));
+    bg_out_error(b->w, BG_OUT_WRITE, "cannot read the compiled '%s': %s", path, bg_file_strerror(errno));
     goto done;
   }
   archive(b, P, &xml, so, solen, zip);
   free(so);
-  rc = EXIT_OK;
+  rc = BG_OUT_OK;
 done:
   bg_sb_free(&xml);
   return rc;
 }
 
-int cli_write_fmu(const bg_eqsys *s, const char *prefix, const char *path) {
+bg_output_status bg_out_fmu(bg_output *w, const bg_output_kind *k, const char *form, const char *path,
+                            bg_strbuf *out) {
+  (void)k, (void)form;
+  char prefix[80];
+  bg_eqsys *s = NULL;
+  bg_output_status st = bg_out_export_system(w, path, &s, prefix, sizeof prefix);
+  if (st != BG_OUT_OK) return st;
   if (!bg_eqsys_is_ode(s)) {
-    fprintf(stderr, "bgdraw: export refused: '%s': the model is a DAE (it has algebraic "
-            "unknowns); FMI 2.0 Model Exchange takes ODE models only (docs/export.md)\n", path);
-    return EXIT_SIM; /* a refusal, as the docs give refusals: status 3 */
+    bg_eqsys_free(s);
+    char what[4200];
+    snprintf(what, sizeof what, "export refused: '%s': ", path ? path : "stdout");
+    return bg_out_refuse(w, what, "the model is a DAE (it has algebraic unknowns); FMI 2.0 Model "
+                         "Exchange takes ODE models only (docs/export.md)");
   }
-  fmu_build b = {0};
+  fmu_build b = {.w = w, .log = w->o.render.log, .signals = w->o.catch_signals};
   const char *tmp = getenv("TMPDIR");
   snprintf(b.dir, sizeof b.dir, "%s/bgdraw-fmu-XXXXXX", tmp && *tmp ? tmp : "/tmp");
   saved_signals sv;
-  catch_signals(&sv); /* before the folder exists: no moment without a handler */
+  if (b.signals) catch_signals(&sv); /* before the folder exists: no moment without a handler */
   if (!mkdtemp(b.dir)) {
-    fprintf(stderr, "bgdraw: error: cannot make a temporary folder '%s': %s\n", b.dir, bg_file_strerror(errno));
-    restore_signals(&sv);
-    return EXIT_WRITE;
+    bg_out_error(w, BG_OUT_WRITE, "cannot make a temporary folder '%s': %s", b.dir, bg_file_strerror(errno));
+    if (b.signals) restore_signals(&sv);
+    bg_eqsys_free(s);
+    return BG_OUT_WRITE;
   }
   snprintf(b.name[0], sizeof b.name[0], "%s.h", prefix);
   snprintf(b.name[1], sizeof b.name[1], "%s.c", prefix);
   snprintf(b.name[2], sizeof b.name[2], "%s_fmi2.c", prefix);
   snprintf(b.name[3], sizeof b.name[3], "%s.so", prefix);
-  bg_strbuf zip = {0};
-  int rc = build(&b, s, prefix, &zip);
+  st = build(&b, s, prefix, out);
   cleanup(&b);
-  die_of_stop_signal(&sv); /* returns (handlers restored) unless a stop signal came */
-  if (rc == EXIT_OK) rc = cli_write_text(path, &zip);
-  bg_sb_free(&zip);
-  return rc;
+  bg_eqsys_free(s);
+  if (b.signals) die_of_stop_signal(&sv); /* returns (handlers restored) unless a stop signal came */
+  return st;
 }
