@@ -14,7 +14,8 @@ if [ "${1:-}" = "--tests" ]; then
          librsvg2-bin pandoc python3-sphinx   # SVG rasterisation check; contrib/ integrations
          valgrind                             # tests/valgrind_outputs.sh
          python3-pytest jupyter-nbconvert     # the Python package's tests (python/tests),
-         python3-ipykernel python3-nbformat)  # a notebook executed headless
+         python3-ipykernel python3-nbformat   # a notebook executed headless
+         dpkg-dev lintian)                    # tests/deb.sh: the Debian packages
 fi
 missing=()
 for p in "${PKGS[@]}"; do

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The Debian packages (tools/deb.sh, tools/packaging.cmake; docs/install.md):
+# built into a temporary folder, then
+# - lintian finds no error and no warning (info-level notes are allowed);
+# - each package has Debian's copyright file and changelog.Debian.gz, the man
+#   page is compressed (gzip -9n: the same bytes each build), the binaries are
+#   stripped, libbgdraw0 has its shlibs line and the ldconfig trigger, and
+#   libbgdraw-dev depends on exactly this libbgdraw0;
+# - unpacked (dpkg -x), the packaged bgdraw gives the build tree's --check and
+#   SVG bytes, and docs/library.md's program, built with pkg-config against the
+#   unpacked libbgdraw-dev, prints what it prints against the build tree's library.
+# Usage: bash tests/deb.sh PATH_TO_BGDRAW   (from the project root)
+set -u
+. "$(dirname "$0")/lib/preamble.sh" "$@"
+BUILD=$(dirname "$BGDRAW")
+DEB_BUILD_DIR="$tmp/build-deb" bash tools/deb.sh "$tmp/deb" >"$tmp/deb.log" 2>&1; st=$?
+check "tools/deb.sh builds the packages (got $st)" $st
+[ $st -eq 0 ] || tail -20 "$tmp/deb.log"
+v=$(sed -n 's/^project(bgdraw VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
+for p in bgdraw libbgdraw0 libbgdraw-dev; do
+  [ -f "$tmp/deb/${p}_${v}-1_amd64.deb" ]; check "$p ${v}-1 built" $?
+done
+lintian --tag-display-limit 0 "$tmp"/deb/*.deb >"$tmp/lintian.out" 2>&1
+! grep -E '^[EW]: ' "$tmp/lintian.out"; check "lintian: no error or warning" $?
+for p in bgdraw libbgdraw0 libbgdraw-dev; do
+  d="$tmp/x/$p"; mkdir -p "$d"; dpkg-deb -x "$tmp/deb/${p}_${v}-1_amd64.deb" "$d"
+  grep -q '^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/' \
+    "$d/usr/share/doc/$p/copyright" && grep -q '^License: BSD-3-Clause' "$d/usr/share/doc/$p/copyright"
+  check "$p: a machine-readable copyright file naming BSD-3-Clause" $?
+  zcat "$d/usr/share/doc/$p/changelog.Debian.gz" | head -1 | grep -q "^bgdraw (${v}-1) "
+  check "$p: changelog.Debian.gz of ${v}-1" $?
+done
+x=$tmp/x/bgdraw
+gzip -t "$x/usr/share/man/man1/bgdraw.1.gz" && zcat "$x/usr/share/man/man1/bgdraw.1.gz" | grep -q "^\.TH BGDRAW 1"
+check "the man page is compressed" $?
+[ ! -e "$x/usr/share/man/man1/bgdraw.1" ]; check "and not also plain" $?
+for f in "$x/usr/bin/bgdraw" "$x"/usr/lib/*/bgdraw/bgdraw_render.so "$tmp"/x/libbgdraw0/usr/lib/*/libbgdraw.so.$v; do
+  ! readelf -S "$f" | grep -qE '\.(symtab|debug_info)'; check "stripped: ${f#$tmp/x/}" $?
+done
+dpkg-deb -e "$tmp/deb/libbgdraw0_${v}-1_amd64.deb" "$tmp/ctl"
+grep -qx "libbgdraw 0 libbgdraw0 (>= $v)" "$tmp/ctl/shlibs"; check "libbgdraw0: shlibs" $?
+grep -qx "activate-noawait ldconfig" "$tmp/ctl/triggers"; check "libbgdraw0: the ldconfig trigger" $?
+dpkg-deb -f "$tmp/deb/libbgdraw-dev_${v}-1_amd64.deb" Depends | grep -q "libbgdraw0 (= ${v}-1)"
+check "libbgdraw-dev depends on libbgdraw0 (= ${v}-1)" $?
+dpkg-deb -f "$tmp/deb/bgdraw_${v}-1_amd64.deb" Depends | grep -q "libsundials-ida"
+check "bgdraw's Depends computed by dpkg-shlibdeps (SUNDIALS among them)" $?
+# the packaged program against the build tree's
+cp examples/rlc.bg "$tmp/rlc.bg"
+(cd "$tmp" && "$x/usr/bin/bgdraw" rlc.bg --check >pkg.check && "$x/usr/bin/bgdraw" rlc.bg -o pkg.svg) 2>"$tmp/err"
+check "the unpacked bgdraw runs (module and styles found beside it)" $?
+(cd "$tmp" && "$BGDRAW" rlc.bg --check >tree.check && "$BGDRAW" rlc.bg -o tree.svg)
+cmp -s "$tmp/pkg.check" "$tmp/tree.check" && cmp -s "$tmp/pkg.svg" "$tmp/tree.svg"
+check "its --check and SVG are the build tree's" $?
+# docs/library.md's program against the unpacked -dev and library
+mkdir -p "$tmp/all"
+for p in bgdraw libbgdraw0 libbgdraw-dev; do cp -a "$tmp/x/$p/." "$tmp/all/"; done
+pcdir=$(dirname "$(find "$tmp/all" -name bgdraw.pc | head -1)")
+awk '/^```c$/{on=1; next} /^```$/{if (on) exit} on' docs/library.md >"$tmp/rlcinfo.c"
+cc -std=c11 -Wall -Wextra -Werror -o "$tmp/pkg_rlcinfo" "$tmp/rlcinfo.c" \
+  $(PKG_CONFIG_PATH=$pcdir pkg-config --cflags --libs bgdraw) 2>"$tmp/cc.err"
+check "docs/library.md's program builds against libbgdraw-dev with pkg-config" $?
+cc -std=c11 -o "$tmp/tree_rlcinfo" "$tmp/rlcinfo.c" -Iinclude -I"$BUILD/include" -L"$BUILD" -lbgdraw
+(cd "$tmp" && LD_LIBRARY_PATH="$(dirname "$(find "$tmp/all" -name 'libbgdraw.so.0' | head -1)")" \
+  ./pkg_rlcinfo rlc.bg a.svg >pkg.out && LD_LIBRARY_PATH="$BUILD" ./tree_rlcinfo rlc.bg b.svg >tree.out)
+cmp -s "$tmp/pkg.out" "$tmp/tree.out" && grep -q "bonds" "$tmp/pkg.out" && cmp -s "$tmp/a.svg" "$tmp/b.svg"
+check "and prints and draws what it does against the build tree's library" $?
+finish
