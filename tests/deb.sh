@@ -7,9 +7,13 @@
 #   page is compressed (gzip -9n: the same bytes each build), the binaries are
 #   stripped, libbgdraw0 has its shlibs line and the ldconfig trigger, and
 #   libbgdraw-dev depends on exactly this libbgdraw0;
-# - unpacked (dpkg -x), the packaged bgdraw gives the build tree's --check and
-#   SVG bytes, and docs/library.md's program, built with pkg-config against the
-#   unpacked libbgdraw-dev, prints what it prints against the build tree's library.
+# - apt would install them on this system (their Depends resolve: apt-get -s);
+# - installed with dpkg into a scratch root (its own package database; as
+#   root, since dpkg --root needs it; else unpacked with dpkg-deb -x), the
+#   packaged bgdraw gives the build tree's --check and SVG bytes, and
+#   docs/library.md's program, built with pkg-config against the installed
+#   libbgdraw-dev, prints what it prints against the build tree's library;
+#   purging the three packages leaves no file behind.
 # Usage: bash tests/deb.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
@@ -45,24 +49,44 @@ dpkg-deb -f "$tmp/deb/libbgdraw-dev_${v}-1_amd64.deb" Depends | grep -q "libbgdr
 check "libbgdraw-dev depends on libbgdraw0 (= ${v}-1)" $?
 dpkg-deb -f "$tmp/deb/bgdraw_${v}-1_amd64.deb" Depends | grep -q "libsundials-ida"
 check "bgdraw's Depends computed by dpkg-shlibdeps (SUNDIALS among them)" $?
-# the packaged program against the build tree's
 cp examples/rlc.bg "$tmp/rlc.bg"
-(cd "$tmp" && "$x/usr/bin/bgdraw" rlc.bg --check >pkg.check && "$x/usr/bin/bgdraw" rlc.bg -o pkg.svg) 2>"$tmp/err"
-check "the unpacked bgdraw runs (module and styles found beside it)" $?
 (cd "$tmp" && "$BGDRAW" rlc.bg --check >tree.check && "$BGDRAW" rlc.bg -o tree.svg)
-cmp -s "$tmp/pkg.check" "$tmp/tree.check" && cmp -s "$tmp/pkg.svg" "$tmp/tree.svg"
-check "its --check and SVG are the build tree's" $?
-# docs/library.md's program against the unpacked -dev and library
-mkdir -p "$tmp/all"
-for p in bgdraw libbgdraw0 libbgdraw-dev; do cp -a "$tmp/x/$p/." "$tmp/all/"; done
-pcdir=$(dirname "$(find "$tmp/all" -name bgdraw.pc | head -1)")
+# apt's view: every dependency resolvable on this system
+apt-get install -s "$tmp"/deb/*.deb >"$tmp/apt.out" 2>&1
+grep -q "^Inst bgdraw " "$tmp/apt.out" && grep -q "^Inst libbgdraw0 " "$tmp/apt.out" &&
+  grep -q "^Inst libbgdraw-dev " "$tmp/apt.out"
+check "apt-get -s would install the three packages" $?
+# the scratch root: dpkg's own installation where root may, else the unpacked trees
+all=$tmp/root
+mkdir -p "$all/var/lib/dpkg/info" "$all/var/lib/dpkg/updates" "$all/var/lib/dpkg/triggers"
+touch "$all/var/lib/dpkg/status" "$all/var/lib/dpkg/available"
+if [ "$(id -u)" = 0 ]; then
+  # --force-depends: the scratch root has no other package; the system's libraries serve
+  dpkg --root="$all" --log=/dev/null --force-depends --force-script-chrootless -i "$tmp"/deb/*.deb \
+    >"$tmp/dpkg.out" 2>&1
+  check "dpkg installs the three packages into a scratch root" $?
+  [ "$(dpkg --root="$all" -l | grep -c '^ii  \(bgdraw\|libbgdraw0\|libbgdraw-dev\) ')" = 3 ]
+  check "dpkg's database there lists them installed" $?
+else
+  for p in bgdraw libbgdraw0 libbgdraw-dev; do cp -a "$tmp/x/$p/." "$all/"; done
+fi
+(cd "$tmp" && "$all/usr/bin/bgdraw" rlc.bg --check >inst.check && "$all/usr/bin/bgdraw" rlc.bg -o inst.svg) 2>>"$tmp/err"
+cmp -s "$tmp/inst.check" "$tmp/tree.check" && cmp -s "$tmp/inst.svg" "$tmp/tree.svg"
+check "the installed bgdraw gives the build tree's --check and SVG" $?
+pcdir=$(dirname "$(find "$all" -name bgdraw.pc | head -1)")
 awk '/^```c$/{on=1; next} /^```$/{if (on) exit} on' docs/library.md >"$tmp/rlcinfo.c"
 cc -std=c11 -Wall -Wextra -Werror -o "$tmp/pkg_rlcinfo" "$tmp/rlcinfo.c" \
   $(PKG_CONFIG_PATH=$pcdir pkg-config --cflags --libs bgdraw) 2>"$tmp/cc.err"
 check "docs/library.md's program builds against libbgdraw-dev with pkg-config" $?
 cc -std=c11 -o "$tmp/tree_rlcinfo" "$tmp/rlcinfo.c" -Iinclude -I"$BUILD/include" -L"$BUILD" -lbgdraw
-(cd "$tmp" && LD_LIBRARY_PATH="$(dirname "$(find "$tmp/all" -name 'libbgdraw.so.0' | head -1)")" \
+(cd "$tmp" && LD_LIBRARY_PATH="$(dirname "$(find "$all" -name 'libbgdraw.so.0' | head -1)")" \
   ./pkg_rlcinfo rlc.bg a.svg >pkg.out && LD_LIBRARY_PATH="$BUILD" ./tree_rlcinfo rlc.bg b.svg >tree.out)
 cmp -s "$tmp/pkg.out" "$tmp/tree.out" && grep -q "bonds" "$tmp/pkg.out" && cmp -s "$tmp/a.svg" "$tmp/b.svg"
 check "and prints and draws what it does against the build tree's library" $?
+if [ "$(id -u)" = 0 ]; then
+  dpkg --root="$all" --log=/dev/null --force-script-chrootless -P bgdraw libbgdraw-dev libbgdraw0 \
+    >>"$tmp/dpkg.out" 2>&1
+  check "dpkg purges them" $?
+  [ -z "$(find "$all/usr" -type f 2>/dev/null)" ]; check "purging leaves no file in /usr" $?
+fi
 finish
