@@ -39,7 +39,7 @@ if(BG_PYTHON)
     set(PROJECT_VERSION \"${PROJECT_VERSION}\")
     set(PROJECT_VERSION_MAJOR \"${PROJECT_VERSION_MAJOR}\")
     set(BG_API_VERSION \"${BG_API_VERSION}\")
-    include(\"${CMAKE_SOURCE_DIR}/python/install.cmake\")")
+    include(\"${CMAKE_SOURCE_DIR}/python/install.cmake\")" COMPONENT python3-bgdraw)
 endif()
 
 # The package's tests (python/tests, pytest) against the build tree's

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# The Debian packages (tools/deb.sh, tools/packaging.cmake; docs/install.md):
+# The Debian packages (tools/deb.sh, tools/packaging.cmake; docs/install.md),
+# bgdraw, libbgdraw0, libbgdraw-dev and python3-bgdraw:
 # built into a temporary folder, then
 # - lintian finds no error and no warning (info-level notes are allowed);
 # - each package has Debian's copyright file and changelog.Debian.gz, the man
@@ -22,12 +23,12 @@ DEB_BUILD_DIR="$tmp/build-deb" bash tools/deb.sh "$tmp/deb" >"$tmp/deb.log" 2>&1
 check "tools/deb.sh builds the packages (got $st)" $st
 [ $st -eq 0 ] || tail -20 "$tmp/deb.log"
 v=$(sed -n 's/^project(bgdraw VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
-for p in bgdraw libbgdraw0 libbgdraw-dev; do
+for p in bgdraw libbgdraw0 libbgdraw-dev python3-bgdraw; do
   [ -f "$tmp/deb/${p}_${v}-1_amd64.deb" ]; check "$p ${v}-1 built" $?
 done
 lintian --tag-display-limit 0 "$tmp"/deb/*.deb >"$tmp/lintian.out" 2>&1
 ! grep -E '^[EW]: ' "$tmp/lintian.out"; check "lintian: no error or warning" $?
-for p in bgdraw libbgdraw0 libbgdraw-dev; do
+for p in bgdraw libbgdraw0 libbgdraw-dev python3-bgdraw; do
   d="$tmp/x/$p"; mkdir -p "$d"; dpkg-deb -x "$tmp/deb/${p}_${v}-1_amd64.deb" "$d"
   grep -q '^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/' \
     "$d/usr/share/doc/$p/copyright" && grep -q '^License: BSD-3-Clause' "$d/usr/share/doc/$p/copyright"
@@ -54,8 +55,8 @@ cp examples/rlc.bg "$tmp/rlc.bg"
 # apt's view: every dependency resolvable on this system
 apt-get install -s "$tmp"/deb/*.deb >"$tmp/apt.out" 2>&1
 grep -q "^Inst bgdraw " "$tmp/apt.out" && grep -q "^Inst libbgdraw0 " "$tmp/apt.out" &&
-  grep -q "^Inst libbgdraw-dev " "$tmp/apt.out"
-check "apt-get -s would install the three packages" $?
+  grep -q "^Inst libbgdraw-dev " "$tmp/apt.out" && grep -q "^Inst python3-bgdraw " "$tmp/apt.out"
+check "apt-get -s would install the four packages" $?
 # the scratch root: dpkg's own installation where root may, else the unpacked trees
 all=$tmp/root
 mkdir -p "$all/var/lib/dpkg/info" "$all/var/lib/dpkg/updates" "$all/var/lib/dpkg/triggers"
@@ -64,11 +65,11 @@ if [ "$(id -u)" = 0 ]; then
   # --force-depends: the scratch root has no other package; the system's libraries serve
   dpkg --root="$all" --log=/dev/null --force-depends --force-script-chrootless -i "$tmp"/deb/*.deb \
     >"$tmp/dpkg.out" 2>&1
-  check "dpkg installs the three packages into a scratch root" $?
-  [ "$(dpkg --root="$all" -l | grep -c '^ii  \(bgdraw\|libbgdraw0\|libbgdraw-dev\) ')" = 3 ]
+  check "dpkg installs the four packages into a scratch root" $?
+  [ "$(dpkg --root="$all" -l | grep -c '^ii  \(bgdraw\|libbgdraw0\|libbgdraw-dev\|python3-bgdraw\) ')" = 4 ]
   check "dpkg's database there lists them installed" $?
 else
-  for p in bgdraw libbgdraw0 libbgdraw-dev; do cp -a "$tmp/x/$p/." "$all/"; done
+  for p in bgdraw libbgdraw0 libbgdraw-dev python3-bgdraw; do cp -a "$tmp/x/$p/." "$all/"; done
 fi
 (cd "$tmp" && "$all/usr/bin/bgdraw" rlc.bg --check >inst.check && "$all/usr/bin/bgdraw" rlc.bg -o inst.svg) 2>>"$tmp/err"
 cmp -s "$tmp/inst.check" "$tmp/tree.check" && cmp -s "$tmp/inst.svg" "$tmp/tree.svg"
@@ -83,8 +84,16 @@ cc -std=c11 -o "$tmp/tree_rlcinfo" "$tmp/rlcinfo.c" -Iinclude -I"$BUILD/include"
   ./pkg_rlcinfo rlc.bg a.svg >pkg.out && LD_LIBRARY_PATH="$BUILD" ./tree_rlcinfo rlc.bg b.svg >tree.out)
 cmp -s "$tmp/pkg.out" "$tmp/tree.out" && grep -q "bonds" "$tmp/pkg.out" && cmp -s "$tmp/a.svg" "$tmp/b.svg"
 check "and prints and draws what it does against the build tree's library" $?
+# the Python package finds the packaged library beside it (relative to itself)
+(cd "$tmp" && PYTHONPATH="$all/usr/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+import bgdraw, sys
+m = bgdraw.Model.from_file("rlc.bg")
+print(bgdraw.__version__, bgdraw.__file__.startswith(sys.argv[1]), len(m.analysis.bonds))
+open("py.svg", "w").write(m.svg())' "$all" >py.out 2>>"$tmp/err")
+[ "$(cat "$tmp/py.out")" = "$v True 4" ] && cmp -s "$tmp/py.svg" "$tmp/tree.svg"
+check "python3-bgdraw imports from the scratch root and draws the build tree's SVG" $?
 if [ "$(id -u)" = 0 ]; then
-  dpkg --root="$all" --log=/dev/null --force-script-chrootless -P bgdraw libbgdraw-dev libbgdraw0 \
+  dpkg --root="$all" --log=/dev/null --force-script-chrootless -P python3-bgdraw bgdraw libbgdraw-dev libbgdraw0 \
     >>"$tmp/dpkg.out" 2>&1
   check "dpkg purges them" $?
   [ -z "$(find "$all/usr" -type f 2>/dev/null)" ]; check "purging leaves no file in /usr" $?

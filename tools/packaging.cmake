@@ -8,6 +8,9 @@
 # gets the Debian copyright file and changelog, and the man page is installed
 # compressed; a plain `cmake --install` stays as it was.
 set(BG_DEB_PACKAGES bgdraw libbgdraw0 libbgdraw-dev)
+if(BG_PYTHON)
+  list(APPEND BG_DEB_PACKAGES python3-bgdraw) # python/python.cmake's install
+endif()
 
 if(BG_DEBIAN_FILES)
   find_program(BG_GZIP gzip REQUIRED)
@@ -92,4 +95,13 @@ analysis and every output format of bgdraw, into memory or a file.
 .
 This package contains the header, the pkg-config file and the CMake package
 (find_package(bgdraw)).")
+set(CPACK_DEBIAN_PYTHON3-BGDRAW_PACKAGE_NAME python3-bgdraw)
+set(CPACK_DEBIAN_PYTHON3-BGDRAW_PACKAGE_SECTION python)
+set(CPACK_DEBIAN_PYTHON3-BGDRAW_PACKAGE_DEPENDS
+    "python3, python3-numpy, libbgdraw0 (= ${PROJECT_VERSION}-${CPACK_DEBIAN_PACKAGE_RELEASE})")
+set(CPACK_DEBIAN_PYTHON3-BGDRAW_DESCRIPTION "causal bond graphs: analysis, diagrams and simulation (Python 3)
+import bgdraw: a bond graph model's causality and analysis as Python objects,
+its diagram as SVG (shown inline in Jupyter, with a %%bgdraw cell magic), its
+equations in LaTeX, simulation columns and state-space matrices as NumPy
+arrays, and every output of the bgdraw command line, through libbgdraw.")
 include(CPack)
