@@ -8,6 +8,9 @@
 #include "base/arena.h"
 #include "base/strbuf.h"
 
+static char *dup_str(const char *s, size_t n);
+static int unsure_name(const bg_diags *d, const char *name);
+
 void bg_diags_init(bg_diags *d, const char *file, const char *src, size_t srclen) {
   memset(d, 0, sizeof *d);
   d->file = file;
@@ -31,7 +34,57 @@ void bg_diags_free(bg_diags *d) {
   free(d->sources);
   d->sources = NULL;
   d->nsources = d->srccap = 0;
+  for (int i = 0; i < d->nunsure; i++) free(d->unsure[i]);
+  free(d->unsure);
+  d->unsure = NULL;
+  d->nunsure = d->unsure_cap = 0;
+  bg_strindex_free(&d->unsure_index);
 }
+
+/* ---------------------------------------------------------------- dropped statements */
+void bg_diags_skipped(bg_diags *d, const char *const *names, int n, int bond_unnamed) {
+  d->nskipped++;
+  d->unsure_bonds |= bond_unnamed;
+  for (int i = 0; i < n; i++) {
+    if (unsure_name(d, names[i])) continue;
+    if (d->nunsure == d->unsure_cap) {
+      d->unsure_cap = d->unsure_cap ? 2 * d->unsure_cap : 16;
+      d->unsure = bg_xrealloc(d->unsure, (size_t)d->unsure_cap * sizeof *d->unsure);
+    }
+    d->unsure[d->nunsure++] = dup_str(names[i], strlen(names[i]));
+    bg_strindex_add(&d->unsure_index, BG_STRKEYS_ARRAY(d->unsure), d->nunsure);
+  }
+}
+
+/* The look-up of bg_diags_unsure, without counting. */
+static int unsure_name(const bg_diags *d, const char *name) {
+  if (!name || !d->nunsure) return 0;
+  bg_strkeys keys = BG_STRKEYS_ARRAY(d->unsure);
+  if (bg_strindex_lookup(&d->unsure_index, keys, name) >= 0) return 1;
+  const char *dot = strchr(name, '.');
+  if (!dot) return 0;
+  if (bg_strindex_lookup(&d->unsure_index, keys, strrchr(name, '.') + 1) >= 0) return 1;
+  char head[256]; /* M1 of M1.a; the last part is R1 of M1.R1, an instance's element */
+  size_t n = (size_t)(dot - name);
+  if (n >= sizeof head) return 0;
+  memcpy(head, name, n);
+  head[n] = '\0';
+  return bg_strindex_lookup(&d->unsure_index, keys, head) >= 0;
+}
+
+int bg_diags_unsure(bg_diags *d, const char *name) {
+  int u = unsure_name(d, name);
+  d->unsaid += u;
+  return u;
+}
+
+int bg_diags_unsure_bonds(bg_diags *d, const char *name) {
+  int u = d->unsure_bonds || unsure_name(d, name);
+  d->unsaid += u;
+  return u;
+}
+
+int bg_diags_failures(const bg_diags *d) { return d->nerrors + d->unsaid; }
 
 /* ---------------------------------------------------------------- sources */
 static char *dup_str(const char *s, size_t n) {
@@ -163,6 +216,7 @@ const char *bg_warning_name(bg_warning w) { return w < BG_W_COUNT ? warning_name
 
 void bg_diag_warn(bg_diags *d, bg_warning w, bg_srcloc loc, const char *fmt, ...) {
   if (w >= BG_W_COUNT || (d->warn_off >> w & 1u)) return;
+  if (d->nskipped) return; /* a dropped statement may be what the warning misses */
   char msg[1024];
   va_list ap;
   va_start(ap, fmt);

@@ -5,6 +5,8 @@
 #define BG_DIAG_H
 #include <stdio.h>
 
+#include "base/strindex.h"
+
 /* A position in a source; line and col count from 1 (col in bytes). `file`
  * indexes the sources of the bg_diags (0: the model file given on the command
  * line), so every position written {line, col} is in the model file. */
@@ -50,6 +52,15 @@ typedef struct bg_diags {
   int dropping;    /* the last error was dropped (beyond the limit, or a repeat of an
                       earlier one), and so are its notes */
   const struct bg_log *log; /* progress of long work on the input (flattening); nullable */
+  /* Statements the parser dropped after a syntax error (docs/format.md,
+   * "Errors"): the stages after it still check every statement that parsed,
+   * but say nothing that may only follow from a dropped one. */
+  int nskipped;        /* statements dropped */
+  char **unsure;       /* the names written on their lines; owned */
+  int nunsure, unsure_cap;
+  bg_strindex unsure_index;
+  int unsure_bonds;    /* a dropped bond line did not name both its ends */
+  int unsaid;          /* errors not reported for that reason: a stage stops as on an error */
 } bg_diags;
 
 /* Named warnings, as compilers have them (docs/cli.md, "Warnings"): each
@@ -86,6 +97,20 @@ void bg_diag_note(bg_diags *d, bg_srcloc loc, const char *fmt, ...)
  * message ends with its name, " [-Wunused-param]". */
 void bg_diag_warn(bg_diags *d, bg_warning w, bg_srcloc loc, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
+/* The parser dropped a statement: the names written on its line (names[n])
+ * and whether it was a bond that did not name both its ends. */
+void bg_diags_skipped(bg_diags *d, const char *const *names, int n, int bond_unnamed);
+/* 1 when an error about `name` may only follow from a dropped statement: the
+ * name, its first part (M1 of M1.a) or its last (R1 of M1.R1) was written
+ * on a dropped line. Name and structure errors call it before they report. */
+int bg_diags_unsure(bg_diags *d, const char *name);
+/* 1 when a wrong bond count of element `name` may follow from a dropped
+ * statement (the name was on a dropped line, or a dropped bond named fewer
+ * than two ends). */
+int bg_diags_unsure_bonds(bg_diags *d, const char *name);
+/* Errors so far, said or not (bg_diags_unsure): a stage that stops on an
+ * error compares this count before and after. */
+int bg_diags_failures(const bg_diags *d);
 /* 1 when the error limit is reached: the stages may stop looking for more. */
 int bg_diags_full(const bg_diags *d);
 /* Prints every diagnostic in source order (stable for equal positions):

@@ -277,7 +277,7 @@ bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
   fl_flattener f;
   memset(&f, 0, sizeof f);
   f.dg = dg;
-  int errors0 = dg->nerrors;
+  int errors0 = bg_diags_failures(dg);
   f.out = bg_xcalloc(1, sizeof *f.out);
   f.out->path = bg_arena_strdup(&f.out->arena, ast->path ? ast->path : "");
   f.out->file = ast->file;
@@ -290,11 +290,11 @@ bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
   model->name = "the model";
   load_file(&f, 0, 0);
   for (int i = 0; i < f.ndefs; i++) def_names(&f, i);
-  for (int i = 1; i < f.ndefs && dg->nerrors == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
-  if (dg->nerrors == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});
-  if (dg->nerrors == errors0) bg_fl_expand_model(&f, 0);
-  if (dg->nerrors == errors0) bg_fl_chain_bonds(&f);
-  bg_flat *r = dg->nerrors == errors0 ? make_result(&f) : NULL;
+  for (int i = 1; i < f.ndefs && bg_diags_failures(dg) == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
+  if (bg_diags_failures(dg) == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});
+  if (bg_diags_failures(dg) == errors0) bg_fl_expand_model(&f, 0);
+  if (bg_diags_failures(dg) == errors0) bg_fl_chain_bonds(&f);
+  bg_flat *r = bg_diags_failures(dg) == errors0 ? make_result(&f) : NULL;
   flattener_free(&f);
   return r;
 }

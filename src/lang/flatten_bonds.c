@@ -20,6 +20,7 @@ static const char *const element_kinds[] = {"Se", "Sf", "MSe", "MSf", "C", "I", 
 
 /* ---------------------------------------------------------------- spans */
 static void unknown_submodel(fl_flattener *f, const bg_ast_stmt *s) {
+  if (bg_diags_unsure(f->dg, s->kindword)) return; /* its header had a syntax error? */
   if (!strcmp(s->kindword, "port") || !strcmp(s->kindword, "end")) {
     bg_diag_error(f->dg, s->loc, "'%s' belongs inside a submodel (submodel NAME ... end)",
                   s->kindword);
@@ -98,6 +99,7 @@ static void check_ports(fl_flattener *f) {
       const char *name = port_name(f, in, p);
       bg_srcloc decl = d->port_stmt[p]->items[d->port_item[p]].loc;
       decl.file = in->src;
+      if ((pt->ninner == 0 || pt->nouter == 0) && bg_diags_unsure_bonds(f->dg, name)) continue;
       if (pt->ninner == 0)
         bg_diag_error(f->dg, decl, "port '%s' of %s has no bond inside the submodel", name,
                       d->name);
@@ -221,9 +223,9 @@ static void resolve_qualified_fields(fl_flattener *f) {
 }
 
 void bg_fl_chain_bonds(fl_flattener *f) {
-  int errors0 = f->dg->nerrors;
+  int errors0 = bg_diags_failures(f->dg);
   check_ports(f);
-  if (f->dg->nerrors > errors0) return;
+  if (bg_diags_failures(f->dg) > errors0) return;
   /* the statements are copied when chains fill their slots: keep the originals */
   bg_ast_stmt *orig = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *orig);
   if (f->nstmts) memcpy(orig, f->stmts, (size_t)f->nstmts * sizeof *orig); /* stmts is NULL when empty */

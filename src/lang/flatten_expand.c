@@ -83,6 +83,7 @@ static void rewrite_name(fl_scopectx *c, bg_expr *x) {
     return;
   }
   if (!n) {
+    if (bg_diags_unsure(f->dg, x->str)) return; /* declared on a dropped line? */
     const char *s = bg_fl_suggest(&ctx_def(c)->names, x->str, ~(1u << SC_PORT));
     bg_diag_error(f->dg, x->loc, "undefined name '%s' in submodel %s%s%s%s", x->str,
                   ctx_def(c)->name, s ? " (did you mean '" : "", s ? s : "", s ? "'?)" : "");
@@ -110,6 +111,7 @@ static void rewrite_field(fl_scopectx *c, bg_expr *x) {
   if (n && n->kind == SC_INST) *FL_PUSH(f->fields, f->nfields) = x;
   if (in_model(c)) return;
   if (!n) {
+    if (bg_diags_unsure(f->dg, x->str)) return;
     const char *s = bg_fl_suggest(&ctx_def(c)->names, x->str, 1u << SC_ELEM | 1u << SC_INST);
     bg_diag_error(f->dg, x->loc, "undefined name '%s' in submodel %s%s%s%s", x->str,
                   ctx_def(c)->name, s ? " (did you mean '" : "", s ? s : "", s ? "'?)" : "");
@@ -229,6 +231,7 @@ static void emit_parameters(fl_scopectx *parent, fl_scopectx *child, const bg_as
   const bg_ast_item **given = bg_xcalloc((size_t)head->nitems + 1, sizeof *given);
   for (int i = 0; i < s->nitems; i++) {
     const sc_entry *n = bg_fl_lookup(&d->names, s->items[i].name);
+    if ((!n || n->kind != SC_ARG) && bg_diags_unsure(f->dg, s->items[i].name)) continue;
     if (!n || n->kind != SC_ARG) {
       const char *sug = bg_fl_suggest(&d->names, s->items[i].name, 1u << SC_ARG);
       bg_diag_error(f->dg, moved(parent, s->items[i].loc), "submodel %s has no parameter '%s'%s%s%s",
@@ -402,6 +405,7 @@ static fl_end resolve_port(fl_scopectx *c, const char *name, bg_srcloc loc, int 
     return end;
   }
   const sc_entry *p = bg_fl_lookup(&d->names, pname);
+  if ((!p || p->kind != SC_PORT) && bg_diags_unsure(f->dg, pname)) return end;
   if (!p || p->kind != SC_PORT) {
     const char *s = bg_fl_suggest(&d->names, pname, 1u << SC_PORT);
     bg_diag_error(f->dg, loc, "unknown port '%s' of %s (%s)%s%s%s", pname, f->inst[ii].pub.name,
@@ -441,7 +445,7 @@ static fl_end resolve_end(fl_scopectx *c, const char *name, bg_srcloc loc, int s
     if (n)
       bg_diag_error(f->dg, loc, "'%s' is %s (line %d); a bond joins elements, junctions and ports",
                     name, kind_words[n->kind], n->loc.line);
-    else {
+    else if (!bg_diags_unsure(f->dg, name)) {
       const char *s = bg_fl_suggest(&ctx_def(c)->names, name, 1u << SC_ELEM | 1u << SC_PORT);
       bg_diag_error(f->dg, loc, "undefined name '%s' in submodel %s%s%s%s", name,
                     ctx_def(c)->name, s ? " (did you mean '" : "", s ? s : "", s ? "'?)" : "");

@@ -840,11 +840,31 @@ static void parse_statement(parser *p) {
   }
 }
 
+/* A dropped line's names, for the checks after the parser: an undefined
+ * name or a bond count that may follow from the dropped statement is not
+ * reported (bg_diags_unsure). A bond line that does not name both ends may
+ * have been the missing bond of any element. */
+static void note_skipped(parser *p, int start) {
+  const char *names[64];
+  int n = 0, bond = 0, ends = 0;
+  for (int i = start; p->toks.tok[i].kind != BG_TK_EOL && p->toks.tok[i].kind != BG_TK_EOF; i++) {
+    const bg_token *t = &p->toks.tok[i];
+    if (t->kind == BG_TK_ARROW || t->kind == BG_TK_ARROW_HEAD || t->kind == BG_TK_ARROW_TAIL ||
+        (i == start && t->kind == BG_TK_NAME && !strcmp(t->text, "bond")))
+      bond = 1;
+    else if (t->kind == BG_TK_NAME || t->kind == BG_TK_NUMBER) /* 0 and 1 name junctions */
+      names[n++] = t->text, ends += t->kind == BG_TK_NAME && (i == start || t[-1].kind != BG_TK_DOT);
+    if (n == COUNT(names)) bg_diags_skipped(p->dg, names, n, 0), n = 0;
+  }
+  bg_diags_skipped(p->dg, names, n, bond && ends < 2);
+}
+
 /* Parses one logical line; on a syntax error drops what the statement added. */
 static void parse_line(parser *p) {
-  int nstmts = p->nstmts;
+  int nstmts = p->nstmts, start = p->pos;
   p->depth = 0;
   if (setjmp(p->on_error)) {
+    note_skipped(p, start);
     if (p->open_def >= nstmts) { /* a bad submodel header: keep the body's block open */
       p->stmts[nstmts] = p->stmts[p->open_def];
       p->open_def = nstmts++;

@@ -118,6 +118,7 @@ static int bond_end(bg_build *b, const char *name, bg_srcloc loc) {
   const ns_entry *guess = s ? bg_build_lookup(b, s) : NULL;
   if (guess && guess->kind == NS_ELEM) b->elem_guessed[guess->id] = 1; /* see check_bond_count */
   if (unknown_port(b, name, loc)) return -1;
+  if (bg_diags_unsure(b->dg, name)) return -1; /* declared on a line with a syntax error? */
   if (s) bg_diag_error(b->dg, loc, "undefined name '%s' (did you mean '%s'?)", name, s);
   else bg_diag_error(b->dg, loc, "undefined name '%s' (no element or junction has this name)", name);
   return -1;
@@ -329,6 +330,7 @@ static void apply_overrides(bg_build *b, const bg_param_override *ov, int nov) {
       m->param_overridden[b->param_id[n->id]] = 1;
       continue;
     }
+    if (bg_diags_unsure(b->dg, ov[i].name)) continue;
     const char *s = bg_build_suggest(b, ov[i].name, NULL, 0);
     const ns_entry *sn = s ? bg_build_lookup(b, s) : NULL;
     if (sn && sn->kind == NS_PARAM)
@@ -445,7 +447,7 @@ bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, 
   b.ast = ast;
   b.dg = dg;
   b.elem = b.law_elem = b.field = -1;
-  int errors0 = dg->nerrors, ndecl = 0;
+  int errors0 = bg_diags_failures(dg), ndecl = 0;
   const char *path = ast->path ? ast->path : "";
   m->path = bg_arena_strdup(&m->arena, path);
   m->name = file_stem(&b, path);
@@ -461,7 +463,7 @@ bg_model *bg_model_compile_flat(const bg_ast *ast, const bg_param_override *ov, 
   bg_build_elements(&b);
   bg_build_statements(&b);
   build_free(&b);
-  if (dg->nerrors > errors0) {
+  if (bg_diags_failures(dg) > errors0) {
     free_arrays(m);
     bg_arena_free(&m->arena);
     free(m);

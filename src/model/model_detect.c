@@ -48,6 +48,7 @@ static void resolve(bg_build *b, const bg_ast_stmt *s, int k) {
   const ns_entry *n = name ? bg_build_lookup(b, name) : NULL;
   const char *guess = name && !n ? bg_build_suggest(b, name, NULL, 0) : NULL;
   const ns_entry *g = guess ? bg_build_lookup(b, guess) : NULL;
+  if (!n && bg_diags_unsure(b->dg, name)) return; /* declared on a dropped line? */
   if (g && g->kind == NS_ELEM) {
     bg_diag_error(b->dg, s->expr->loc, "undefined name '%s' (did you mean '%s'?)", name, guess);
     return;

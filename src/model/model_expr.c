@@ -101,6 +101,7 @@ static int is_bond_var(const char *s) {
 
 static int undefined(bg_build *b, const bg_expr *e) {
   static const char *const extra[] = {"t", "pi"};
+  if (bg_diags_unsure(b->dg, e->str)) return bad(b, e->loc); /* on a dropped line? */
   const char *s = bg_build_suggest(b, e->str, extra, COUNT(extra));
   if (s) bg_diag_error(b->dg, e->loc, "undefined name '%s' (did you mean '%s'?)", e->str, s);
   else bg_diag_error(b->dg, e->loc, "undefined name '%s'", e->str);

@@ -15,6 +15,7 @@ static void check_bond_count(bg_build *b, int e) {
   int kind = m->elem_kind[e], n = m->elem_nbond[e];
   const char *name = m->elem_name[e], *kn = bg_elem_kind_name(kind);
   if (b->elem_guessed[e]) return; /* the misspelled bond end is reported instead */
+  if (bg_diags_unsure_bonds(b->dg, name)) return; /* its bond may be on a dropped line */
   if (m->elem_field[e] >= 0 && n != 1) { /* a port of a field */
     int f = m->elem_field[e];
     if (n == 0)

@@ -51,7 +51,13 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
     return -1;
   }
   bg_ast *ast = bg_parse_string(r->name, r->src, r->srclen, &r->dg);
-  if (ast && !r->dg.nerrors) r->model = bg_model_compile(ast, r->o.sets, r->o.nsets, &r->dg);
+  /* After syntax errors the statements that parsed are still compiled, so
+   * their name and structure errors come in the same run (what may follow
+   * from a dropped statement is not said: bg_diags_unsure); the model is
+   * then dropped. A file refused whole (not text, another tool's format)
+   * and a run at the error limit stop here. */
+  if (ast && (!r->dg.nerrors || (r->dg.nskipped && !bg_diags_full(&r->dg))))
+    r->model = bg_model_compile(ast, r->o.sets, r->o.nsets, &r->dg);
   if (r->o.keep_ast) r->ast = ast; /* the transformations edit the syntax */
   else bg_ast_free(ast);
   if (r->model && r->dg.nerrors) bg_model_free(r->model), r->model = NULL;
