@@ -294,6 +294,37 @@ static int roots_finite(bg_eqsys *s, double *g) {
   return 1;
 }
 
+/* The file line of the law or equation instruction I belongs to, or 0. */
+static int line_of(const bg_eqsys *s, const tinstr *I) {
+  const bg_model *m = s->m;
+  if (I->eq >= 0) return m->elem_loc[s->sig_elem[I->eq]].line;
+  if (I->eq <= -1000000) return 0;
+  char name[256]; /* an unknown R1.f: element R1 */
+  snprintf(name, sizeof name, "%s", s->uname[-1 - I->eq]);
+  char *dot = strrchr(name, '.');
+  if (dot) *dot = '\0';
+  int e = bg_model_find_elem(m, name);
+  return e >= 0 ? m->elem_loc[e].line : 0;
+}
+
+/* A root function that is not a number: which condition, where in the
+ * file, and why (the operation that left its domain), in s->err. */
+static void explain_roots(bg_eqsys *s, const double *g, double t) {
+  int i = 0;
+  while (i < s->nroot - 1 && isfinite(g[i])) i++;
+  const tinstr *I = &s->code[s->ev_code[s->root_ev[i]]];
+  int slot = -1;
+  for (int q = 0; q < I->na && q < 3 && slot < 0; q++)
+    if (!isfinite(s->v[I->a[q]])) slot = I->a[q];
+  const char *what = slot >= 0 ? bg_eqs_why_not_finite(s, slot) : "a value that is not a finite number";
+  int line = line_of(s, I);
+  char at[32] = "";
+  if (line > 0) snprintf(at, sizeof at, " (line %d)", line);
+  snprintf(s->err, sizeof s->err, "%s in the switching condition '%.150s'%s at t = %g", what,
+           s->root_text[i], at, t);
+  s->has_err = 1;
+}
+
 int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, double *g) {
   bg_eqs_eval_raw(s, t, y, yp);
   if (roots_finite(s, g)) return 0;
@@ -301,7 +332,9 @@ int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, dou
   s->ev_frozen = 0;
   bg_eqs_eval_raw(s, t, y, yp);
   s->ev_frozen = was;
-  return roots_finite(s, g) ? 0 : -1;
+  if (roots_finite(s, g)) return 0;
+  explain_roots(s, g, t);
+  return -1;
 }
 
 /* One pass over the main tape that sets the modes of the events (all, or

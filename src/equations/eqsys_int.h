@@ -50,4 +50,8 @@ double bg_eqs_ev_der(const bg_eqsys *s, int e, const double *v, const double *dv
 double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v);
 /* eqsys_tape.c: values of the main tape at (t, y, yp) without any check. */
 void bg_eqs_eval_raw(bg_eqsys *s, double t, const double *y, const double *yp);
+/* Why the main tape's slot is not a finite number (values current): what the
+ * first instruction on its way whose own arguments are finite did, in words
+ * ("sqrt of a negative number"). */
+const char *bg_eqs_why_not_finite(const bg_eqsys *s, int slot);
 #endif

@@ -383,8 +383,9 @@ static double ins_der(const bg_eqsys *s, const tinstr *I, const double *v, const
 }
 
 /* ------------------------------------------------------------ evaluation */
-static void describe(bg_eqsys *s, const tinstr *I, double t) {
-  const bg_model *m = s->m;
+/* What went wrong in instruction I, whose arguments are finite and whose
+ * value is not. */
+static const char *what_failed(const bg_eqsys *s, const tinstr *I) {
   double x0 = s->v[I->a[0]];
   const char *what = "a value that is not a finite number";
   if (I->op == BG_X_DIV) what = "a division by zero";
@@ -393,6 +394,12 @@ static void describe(bg_eqsys *s, const tinstr *I, double t) {
   else if (I->op == BG_X_CALL && (I->ref == BG_FN_LOG || I->ref == BG_FN_LOG10) && x0 <= 0) what = "log of a non-positive number";
   else if (I->op == BG_X_CALL && (I->ref == BG_FN_ASIN || I->ref == BG_FN_ACOS)) what = "asin/acos of a number outside [-1, 1]";
   else if (I->op == BG_X_CALL) what = "an overflow in a function";
+  return what;
+}
+
+static void describe(bg_eqsys *s, const tinstr *I, double t) {
+  const bg_model *m = s->m;
+  const char *what = what_failed(s, I);
   char where[160];
   if (I->eq >= 0) {
     int e = s->sig_elem[I->eq];
@@ -409,6 +416,28 @@ static void describe(bg_eqsys *s, const tinstr *I, double t) {
     snprintf(where, sizeof where, "plot expression %s", m->plotexpr_text[-1000000 - I->eq]);
   }
   snprintf(s->err, sizeof s->err, "%s in %s at t = %g", what, where, t);
+}
+
+
+/* The first argument slot of I that is not finite, or -1. */
+static int bad_arg(const bg_eqsys *s, const tinstr *I) {
+  int n = I->op == T_LIN ? I->a[0] : I->na;
+  for (int q = 0; q < n && (I->op == T_LIN || q < 3); q++) {
+    int slot = I->op == T_LIN ? s->tl_slot[I->ref + q] : I->a[q];
+    if (!isfinite(s->v[slot])) return slot;
+  }
+  return -1;
+}
+
+const char *bg_eqs_why_not_finite(const bg_eqsys *s, int slot) {
+  /* arguments are computed before their readers: the walk only goes back */
+  for (int k = s->nmain - 1; k >= 0; k--) {
+    if (s->code[k].out != slot) continue;
+    int next = bad_arg(s, &s->code[k]);
+    if (next < 0) return what_failed(s, &s->code[k]);
+    slot = next;
+  }
+  return "a value that is not a finite number"; /* an unknown itself */
 }
 
 static int diagnose(bg_eqsys *s, int c0, int c1, double t) {

@@ -3,6 +3,7 @@
  * and why, tolerances, output grid, input breakpoints), then hands the plan
  * to the SUNDIALS driver (simulate_run.c). */
 #include <lapacke.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -342,9 +343,14 @@ static int refuse(bg_simresult *r, char *msg) {
 }
 
 static int check_spec(const bg_simspec *sp, bg_simresult *r) {
+  char buf[240];
+  if (sp->t_end > sp->t0 && isfinite(sp->t_end) && isfinite(sp->t0) && !isfinite(sp->t_end - sp->t0)) {
+    snprintf(buf, sizeof buf, "the span from t0 = %g to t_end = %g is larger than the largest "
+             "number (%g): no time axis holds it", sp->t0, sp->t_end, DBL_MAX);
+    return refuse(r, strdup(buf));
+  }
   if (sp->t_end > sp->t0 && isfinite(sp->t_end) && isfinite(sp->t0)) return 0;
   if (!sp->present) return refuse(r, strdup("the model has no simulate block (simulate t_end = ...)"));
-  char buf[160];
   snprintf(buf, sizeof buf, "nothing to simulate: t_end (%g) must be greater than t0 (%g)",
            sp->t_end, sp->t0);
   return refuse(r, strdup(buf));

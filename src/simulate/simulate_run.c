@@ -144,15 +144,21 @@ static int ida_jac(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vec
   return fill_jac(ud, t, y, yp, cj, J);
 }
 
-/* Root functions of the state events (docs/simulation.md, "State events"). */
+/* Root functions of the state events (docs/simulation.md, "State events").
+ * One that is not a number stops the solver (SUNDIALS does not recover from
+ * it): its cause, in the user's terms, is kept for the message. */
 static int cv_g(sunrealtype t, N_Vector y, sunrealtype *g, void *ud) {
   simrun *R = ud;
-  return bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), NULL, g) ? -1 : 0;
+  if (!bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), NULL, g)) return 0;
+  keep_error(R);
+  return -1;
 }
 
 static int ida_g(sunrealtype t, N_Vector y, N_Vector yp, sunrealtype *g, void *ud) {
   simrun *R = ud;
-  return bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), g) ? -1 : 0;
+  if (!bg_eqsys_roots(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), g)) return 0;
+  keep_error(R);
+  return -1;
 }
 
 /* SUNDIALS would print to stderr; keep the text for our own message. */
@@ -621,6 +627,32 @@ static void at_switch_words(const simrun *R, const bg_simresult *r, double t, bg
                    "smaller or larger rtol than %g, or a law with a smooth transition at the switch", R->p->rtol);
 }
 
+/* A failure whose step is below the spacing of the time values at t (t + h
+ * == t: times this large cannot resolve the model's time scale), or whose
+ * first step, guessed from a vast output interval, never came down to the
+ * model's time scale: the real cause, instead of the flag's usual words.
+ * 1 when it was one of them. */
+static int time_axis_words(simrun *R, double t, bg_strbuf *sb) {
+  int ida = R->p->kind == BG_SIM_IDA;
+  sunrealtype h = 0;
+  long steps = 0;
+  if (ida) IDAGetCurrentStep(R->mem, &h), IDAGetNumSteps(R->mem, &steps);
+  else CVodeGetCurrentStep(R->mem, &h), CVodeGetNumSteps(R->mem, &steps);
+  double gap = nextafter(fabs(t), INFINITY) - fabs(t), span = R->p->t_end - R->p->t0;
+  if (!(h > 0) || !isfinite(gap)) return 0;
+  if (h <= 4 * gap)
+    bg_sb_printf(sb, "the time step (%.3g) is below the spacing of the time values at t = %.9g "
+                 "(adjacent doubles there are %.3g apart, so t + h == t): a time axis this far "
+                 "from 0 cannot resolve the model's time scale; start it nearer 0 (t0 = 0, "
+                 "t_end = %.6g)", h, t, gap, span);
+  else if (steps == 0 && h < 1e-20 * span)
+    bg_sb_printf(sb, "the first step, guessed from the span (%.3g), failed again and again down to "
+                 "h = %.3g: the model's time scale is far shorter than a span this long; simulate "
+                 "a shorter span (or give max_step)", span, h);
+  else return 0;
+  return 1;
+}
+
 static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
   if (flag == SIM_CHATTER || flag == SIM_UNSETTLED) { fail_events(R, r, flag); return; }
   bg_strbuf sb = {0};
@@ -628,9 +660,11 @@ static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
   char *fname = ida ? IDAGetReturnFlagName(flag) : CVodeGetReturnFlagName(flag);
   double t = R->tcur > r->t_reached ? R->tcur : r->t_reached;
   bg_sb_printf(&sb, "simulation failed at t = %.9g%s: ", t, during);
-  bg_sim_explain(ida, flag, R->nfunc_err ? R->err : NULL, &sb);
+  if (R->nfunc_err || !time_axis_words(R, t, &sb))
+    bg_sim_explain(ida, flag, R->nfunc_err ? R->err : NULL, &sb);
   bg_sb_printf(&sb, " (%s %s", ida ? "IDA" : "CVODE", fname ? fname : "?");
-  if (R->sunmsg[0]) bg_sb_printf(&sb, ": %s", R->sunmsg);
+  int rtfunc = flag == (ida ? IDA_RTFUNC_FAIL : CV_RTFUNC_FAIL); /* its text says no more */
+  if (R->sunmsg[0] && !rtfunc) bg_sb_printf(&sb, ": %s", R->sunmsg);
   bg_sb_puts(&sb, ")");
   at_switch_words(R, r, t, &sb);
   free(fname); /* allocated by SUNDIALS */

@@ -33,6 +33,7 @@ static const flagword CV_WORDS[] = {
     {CV_REPTD_RHSFUNC_ERR, "the equations could not be evaluated, even with ever smaller "
                            "steps"},
     {CV_UNREC_RHSFUNC_ERR, "the equations could not be evaluated"},
+    {CV_RTFUNC_FAIL, "the search for state events stopped"},
     {CV_TOO_CLOSE, "t_end is too close to t0"},
     {CV_ILL_INPUT, "the solver rejected an input (a tolerance, time or option out of range)"},
     {CV_MEM_FAIL, "out of memory"},
@@ -59,6 +60,7 @@ static const flagword IDA_WORDS[] = {
     {IDA_RES_FAIL, "the equations could not be evaluated"},
     {IDA_REP_RES_ERR, "the equations could not be evaluated, even with ever smaller steps"},
     {IDA_FIRST_RES_FAIL, "the equations could not be evaluated at the initial values"},
+    {IDA_RTFUNC_FAIL, "the search for state events stopped"},
     {IDA_CONSTR_FAIL, "a constraint on the unknowns could not be met"},
     {IDA_LINESEARCH_FAIL, "no consistent initial values were found: the line search failed "
                           "(the algebraic equations may have no solution for the given "
@@ -83,8 +85,10 @@ void bg_sim_explain(int ida, int flag, const char *evalerr, bg_strbuf *sb) {
                       : lookup(CV_WORDS, (int)(sizeof CV_WORDS / sizeof *CV_WORDS), flag);
   bg_sb_puts(sb, w);
   if (!evalerr) return;
-  int evalflag = ida ? flag == IDA_RES_FAIL || flag == IDA_REP_RES_ERR || flag == IDA_FIRST_RES_FAIL
+  int evalflag = ida ? flag == IDA_RES_FAIL || flag == IDA_REP_RES_ERR || flag == IDA_FIRST_RES_FAIL ||
+                           flag == IDA_RTFUNC_FAIL
                      : flag == CV_RHSFUNC_FAIL || flag == CV_FIRST_RHSFUNC_ERR ||
-                           flag == CV_REPTD_RHSFUNC_ERR || flag == CV_UNREC_RHSFUNC_ERR;
+                           flag == CV_REPTD_RHSFUNC_ERR || flag == CV_UNREC_RHSFUNC_ERR ||
+                           flag == CV_RTFUNC_FAIL;
   bg_sb_printf(sb, evalflag ? ": %s" : "; the equations also failed to evaluate nearby: %s", evalerr);
 }
