@@ -292,8 +292,10 @@ bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
   for (int i = 0; i < f.ndefs; i++) def_names(&f, i);
   for (int i = 1; i < f.ndefs && bg_diags_failures(dg) == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
   if (bg_diags_failures(dg) == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});
-  if (bg_diags_failures(dg) == errors0) bg_fl_expand_model(&f, 0);
+  int spans_ok = bg_diags_failures(dg) == errors0;
+  if (spans_ok) bg_fl_expand_model(&f, 0);
   if (bg_diags_failures(dg) == errors0) bg_fl_chain_bonds(&f);
+  if (spans_ok && !f.capped) bg_fl_check_unused(&f); /* their errors in the same run */
   bg_flat *r = bg_diags_failures(dg) == errors0 ? make_result(&f) : NULL;
   flattener_free(&f);
   return r;

@@ -267,7 +267,7 @@ static void expand_instance(fl_scopectx *c, int k) {
   int di = bg_fl_lookup(&f->defnames, s->kindword)->index; /* checked by bg_fl_span */
   fl_def *d = &f->defs[di];
   if (f->capped) return;
-  if (f->nstmts + d->size > BG_FLAT_MAX) {
+  if (!f->dry && f->nstmts + d->size > BG_FLAT_MAX) {
     if (d->size > BG_FLAT_MAX)
       bg_diag_error(f->dg, moved(c, s->name_loc), "instance %s of %s expands to more than %ld "
                     "statements, the limit of a flat model (a submodel's size multiplies with "
@@ -309,7 +309,7 @@ static void expand_instance(fl_scopectx *c, int k) {
     return;
   }
   emit_parameters(c, &child, s);
-  expand_scope(&child);
+  if (!f->dry) expand_scope(&child);
 }
 
 /* A bond statement: a segment with a placeholder slot in the output; its
@@ -454,6 +454,60 @@ static fl_end resolve_end(fl_scopectx *c, const char *name, bg_srcloc loc, int s
   }
   end.node = bg_fl_join(f, c->prefix, name); /* in the model: the compiler checks it */
   return end;
+}
+
+/* The ports of a submodel checked on its own: each joined inside (once:
+ * note_inner reports a second bond); nothing outside is asked for. */
+static void check_inner_ports(fl_flattener *f, const fl_inst *in) {
+  const fl_def *d = &f->defs[in->def];
+  for (int p = 0; p < d->nports; p++) {
+    const bg_ast_item *it = &d->port_stmt[p]->items[d->port_item[p]];
+    if (f->ports[in->port_adr + p].ninner || bg_diags_unsure_bonds(f->dg, it->name)) continue;
+    bg_srcloc decl = it->loc;
+    decl.file = in->src;
+    bg_diag_error(f->dg, decl, "port '%s' of %s has no bond inside the submodel", it->name, d->name);
+  }
+}
+
+/* Submodel di alone: a stand-in instance whose positions are the
+ * submodel's own (no instance chain in its messages); the parameters'
+ * defaults are read in its scope, a parameter without one stands for
+ * itself. */
+static void check_def(fl_flattener *f, int di) {
+  fl_def *d = &f->defs[di];
+  int ii = f->ninst;
+  fl_inst *in = FL_PUSH(f->inst, f->ninst);
+  in->pub.name = d->name;
+  in->pub.def = d->name;
+  in->pub.parent = -1;
+  in->pub.loc = d->head->name_loc;
+  in->def = di;
+  in->src = f->files[d->file].ast->file;
+  in->port_adr = f->nports;
+  for (int p = 0; p < d->nports; p++) {
+    fl_port *pt = FL_PUSH(f->ports, f->nports);
+    pt->inner = pt->outer = -1;
+  }
+  fl_scopectx c = {f, di, ii, "", in->src, 1, d->maxnum, NULL, NULL, 0, NULL}; /* names as written */
+  for (int i = 0; i < d->head->nitems; i++) rewrite(&c, d->head->items[i].value);
+  expand_scope(&c);
+  check_inner_ports(f, &f->inst[ii]);
+}
+
+void bg_fl_check_unused(fl_flattener *f) {
+  unsigned char *used = bg_xcalloc((size_t)f->ndefs + 1, 1);
+  for (int i = 0; i < f->ninst; i++) used[f->inst[i].def] = 1;
+  int nstmts = f->nstmts, ninst = f->ninst, nports = f->nports, nsegs = f->nsegs,
+      nbondvars = f->nbondvars, nfields = f->nfields;
+  f->dry = 1;
+  for (int di = 1; di < f->ndefs; di++) {
+    if (used[di]) continue;
+    check_def(f, di);
+    f->nstmts = nstmts, f->ninst = ninst, f->nports = nports, f->nsegs = nsegs;
+    f->nbondvars = nbondvars, f->nfields = nfields;
+  }
+  f->dry = 0;
+  free(used);
 }
 
 void bg_fl_expand_model(fl_flattener *f, int root) {

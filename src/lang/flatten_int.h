@@ -89,6 +89,8 @@ typedef struct fl_bondvar { bg_expr *node; int inst, num; } fl_bondvar;
 typedef struct fl_flattener {
   bg_diags *dg;
   int capped;  /* an instance would have crossed BG_FLAT_MAX: expansion stopped */
+  int dry;     /* checking a submodel no instance uses: nested instances are not
+                  expanded (each submodel is checked once, on its own) */
   long next_progress; /* statements at which -v says how far the expansion is */
   bg_ast *out; /* the flat AST being built */
   bg_ast_stmt *stmts;
@@ -134,6 +136,9 @@ const char *bg_fl_join(fl_flattener *f, const char *prefix, const char *name);
 
 /* ---- flatten_expand.c: instances, statements, expressions */
 void bg_fl_expand_model(fl_flattener *f, int root);
+/* Checks every submodel that no instance of the flat model uses, as a
+ * compiler checks a function nobody calls; what it emits is dropped. */
+void bg_fl_check_unused(fl_flattener *f);
 
 /* ---- flatten_bonds.c: ports, chains of segments, numbers */
 void bg_fl_chain_bonds(fl_flattener *f);
