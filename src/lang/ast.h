@@ -117,6 +117,8 @@ typedef struct bg_ast {
   bg_arena arena;     /* owns every node and string */
   bg_ast_stmt *stmts; /* in file order */
   int nstmts;
+  bg_ast_stmt *heap_stmts; /* stmts when malloc'd (the flat AST takes the flattener's
+                              array instead of a copy), freed with the AST; else NULL */
   const char *path;   /* the model file's path as given */
   int file;           /* its diagnostics source index (0: the model file) */
   int has_components; /* a SUBMODEL, USE or INSTANCE statement: needs flattening */

@@ -217,21 +217,25 @@ static bg_flat *make_result(fl_flattener *f) {
   bg_flat *r = bg_xcalloc(1, sizeof *r);
   r->ast = f->out;
   f->out = NULL;
-  r->ast->stmts = bg_arena_alloc(&r->ast->arena, (size_t)(f->nstmts ? f->nstmts : 1) *
-                                                      sizeof *r->ast->stmts);
+  /* the statements stay where they are (compacted below, in order): a copy
+   * would double the flattening's largest array (issue 28, bounded_size.sh) */
+  r->ast->stmts = r->ast->heap_stmts = f->stmts ? f->stmts : bg_xmalloc(sizeof *r->ast->stmts);
+  f->stmts = NULL;
   r->inst = bg_xmalloc((size_t)(f->ninst ? f->ninst : 1) * sizeof *r->inst);
   for (int i = 0; i < f->ninst; i++) r->inst[i] = f->inst[i].pub;
   r->ninst = f->ninst;
   size_t nel = 1; /* a multiport field's statement makes one element per port */
-  for (int i = 0; i < f->nstmts; i++) nel += f->stmts[i].is_field ? (size_t)f->stmts[i].nitems : 1;
+  for (int i = 0; i < f->nstmts; i++)
+    nel += r->ast->stmts[i].is_field ? (size_t)r->ast->stmts[i].nitems : 1;
   r->elem_inst = bg_xmalloc(nel * sizeof *r->elem_inst);
   r->bond_segadr = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_segadr);
   r->bond_nseg = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *r->bond_nseg);
   r->seg = bg_xmalloc((size_t)(f->nsegs + 1) * sizeof *r->seg);
   for (int i = 0; i < f->nstmts; i++) {
-    const bg_ast_stmt *s = &f->stmts[i];
+    const bg_ast_stmt *s = &r->ast->stmts[i];
     if ((int)s->kind < 0) continue; /* a bond segment joined into another statement */
-    r->ast->stmts[r->ast->nstmts++] = *s;
+    if (r->ast->nstmts < i) r->ast->stmts[r->ast->nstmts] = *s;
+    s = &r->ast->stmts[r->ast->nstmts++];
     for (int k = 0; s->kind == BG_ST_ELEMENT && !bg_ast_is_detector(s) &&
                     k < (s->is_field ? s->nitems : 1); k++) /* a detector is no element */
       r->elem_inst[r->nelem++] = f->stmt_inst[i];

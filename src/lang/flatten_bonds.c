@@ -226,10 +226,10 @@ void bg_fl_chain_bonds(fl_flattener *f) {
   int errors0 = bg_diags_failures(f->dg);
   check_ports(f);
   if (bg_diags_failures(f->dg) > errors0) return;
-  /* the statements are copied when chains fill their slots: keep the originals */
-  bg_ast_stmt *orig = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *orig);
-  if (f->nstmts) memcpy(orig, f->stmts, (size_t)f->nstmts * sizeof *orig); /* stmts is NULL when empty */
-  for (int g = 0; g < f->nsegs; g++) f->segs[g].stmt = &orig[f->segs[g].slot];
+  /* the bond statements are copied when chains fill their slots: keep the
+   * originals (of the bonds only: the other statements are most of the model) */
+  bg_ast_stmt *orig = bg_xmalloc((size_t)(f->nsegs + 1) * sizeof *orig);
+  for (int g = 0; g < f->nsegs; g++) orig[g] = f->stmts[f->segs[g].slot], f->segs[g].stmt = &orig[g];
   f->slot_chain = bg_xmalloc((size_t)(f->nstmts + 1) * sizeof *f->slot_chain);
   for (int i = 0; i < f->nstmts; i++) f->slot_chain[i] = -1;
   int *list = NULL, n = 0;

@@ -968,6 +968,7 @@ bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file,
 
 void bg_ast_free(bg_ast *ast) {
   if (!ast) return;
+  free(ast->heap_stmts);
   bg_arena_free(&ast->arena);
   free(ast);
 }

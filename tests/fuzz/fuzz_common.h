@@ -46,7 +46,9 @@ static inline int fuzz_load(fuzz_run *f, const uint8_t *data, size_t size) {
   const char *path = "/nonexistent-bgdraw-fuzz/model.bg";
   bg_diags_init(&f->dg, path, f->src, size);
   bg_ast *ast = bg_parse_string(path, f->src, size, &f->dg);
-  if (ast && !f->dg.nerrors) f->model = bg_model_compile(ast, NULL, 0, &f->dg);
+  /* as bg_run_load: after syntax errors the statements that parsed are compiled too */
+  if (ast && (!f->dg.nerrors || (f->dg.nskipped && !bg_diags_full(&f->dg))))
+    f->model = bg_model_compile(ast, NULL, 0, &f->dg);
   f->ast = ast;
   char *text = NULL;
   size_t len = 0;
