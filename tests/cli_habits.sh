@@ -231,7 +231,7 @@ check "warnings: unused param and a zero capacitance, status 0 (got $st)" $?
 [ $st -eq 1 ] && ! grep -q unused "$tmp/w.err" && grep -q "error: .*\[-Werror=degenerate-value\]" "$tmp/w.err"
 check "-Wno-unused-param -Werror: the other warning an error, status 1 (got $st)" $?
 usage "-W with an unknown name" "unknown warning '-Wfoo'" "$M" -Wfoo
-printf 'submodel S(p)\n  R r = 1\n  bond p -> r\nend\n' >"$tmp/only_sub.bg"
+printf 'submodel S\n  port p\n  R r = 1\n  bond p -> r\nend\n' >"$tmp/only_sub.bg" # a valid submodel: an unused one is checked
 "$BGDRAW" "$tmp/only_sub.bg" --check >/dev/null 2>"$tmp/w.err"
 grep -q "defines 1 submodel but no model uses them.*\[-Wempty-model\]" "$tmp/w.err"
 check "a file of submodels only: -Wempty-model" $?
