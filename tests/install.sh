@@ -34,6 +34,7 @@ check "no path of the source tree in the installed code (debug info aside)" $?
 mv "$tmp/p" "$tmp/q"
 pc=${pc/$tmp\/p/$tmp/q}; lib=${lib/$tmp\/p/$tmp/q}
 cp examples/rlc.bg "$tmp/rlc.bg"
+sed 's#use "../../lib/mechanical.bg"#use "mechanical.bg"#' examples/components/motor_drive_lib.bg >"$tmp/drive.bg"
 "$BGDRAW" "$tmp/rlc.bg" --style print -o "$tmp/want.svg"
 "$BGDRAW" "$tmp/rlc.bg" -o "$tmp/default.svg"
 
@@ -85,6 +86,9 @@ cd '$tmp'
 unset BGDRAW_STYLE_DIR
 '$tmp/q/bin/bgdraw' rlc.bg --style print -o got.svg
 LD_LIBRARY_PATH='$(dirname "$lib")' ./prog rlc.bg lib.svg > prog.out
+unset BGDRAW_PATH
+'$tmp/q/bin/bgdraw' drive.bg -q -o drive.svg -M drive.d
+LD_LIBRARY_PATH='$(dirname "$lib")' ./prog drive.bg drive_lib.svg > prog_drive.out
 LD_LIBRARY_PATH='$(dirname "$lib")' ./rlcinfo rlc.bg info.svg > info.out
 LD_LIBRARY_PATH='$(dirname "$lib")' ./rlcinfo_cmake rlc.bg info_cmake.svg > info_cmake.out
 EOF
@@ -101,6 +105,11 @@ cmp -s "$tmp/want.svg" "$tmp/got.svg"; check "installed bgdraw --style print = t
 [ "$(cat "$tmp/prog.out" 2>/dev/null)" = "rlc 4 2 1 1" ]
 check "the C program: name rlc, 4 bonds, 2 states, an SVG (got '$(cat "$tmp/prog.out" 2>/dev/null)')" $?
 cmp -s "$tmp/want.svg" "$tmp/lib.svg"; check "libbgdraw's print-style SVG = bgdraw's" $?
+# use "mechanical.bg": the installed component library, for bgdraw and libbgdraw
+grep -q "^drive.svg: drive.bg $tmp/q/share/bgdraw/lib/mechanical.bg " "$tmp/drive.d"
+check "installed bgdraw finds use \"mechanical.bg\" in PREFIX/share/bgdraw/lib ($(head -1 "$tmp/drive.d" 2>/dev/null))" $?
+[ "$(cut -d' ' -f1,2 "$tmp/prog_drive.out" 2>/dev/null)" = "motor_drive_lib 22" ]
+check "libbgdraw finds it too (got '$(cat "$tmp/prog_drive.out" 2>/dev/null)')" $?
 # what docs/library.md's program prints of rlc: the strokes, the index, the
 # last row (a series RLC after 2 ms: the capacitor charged to 1 V), and the
 # same SVG as bgdraw --style print

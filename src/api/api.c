@@ -36,6 +36,7 @@ struct bgd_model {
   double **columns;      /* the simulation's columns, made on request */
   char *last_error;
   char style_dir[4200];  /* where named styles are, for this handle's drawings */
+  char lib_dir[4200];    /* the component library `use "NAME.bg"` finds */
 };
 
 void bgd_options_init(bgd_options *o) {
@@ -46,11 +47,11 @@ void bgd_options_init(bgd_options *o) {
 const char *bgd_version(void) { return BGDRAW_VERSION_STRING; }
 int bgd_api_version(void) { return BGDRAW_API_VERSION; }
 
-/* Named styles: $BGDRAW_STYLE_DIR (style.c), else share/bgdraw/styles
- * relative to this library's file (installed: LIBDIR/../share/bgdraw/styles). */
-static const char *library_style_dir(char *dir, size_t n) {
-  const char *env = getenv("BGDRAW_STYLE_DIR");
-  if (env && *env) return NULL;
+/* A folder relative to this library's file: `installed` (LIBDIR/../share/
+ * bgdraw/...) or `build` (the build tree's share/bgdraw/...); NULL when
+ * neither is a folder. */
+static const char *library_share_dir(const char *installed, const char *build, char *dir,
+                                     size_t n) {
   Dl_info info;
   if (!dladdr((void *)bgd_version, &info) || !info.dli_fname) return NULL;
   char lib[4096];
@@ -58,13 +59,21 @@ static const char *library_style_dir(char *dir, size_t n) {
   char *slash = strrchr(lib, '/');
   if (!slash) return NULL;
   *slash = '\0';
-  const char *rel[] = {BG_LIB_TO_STYLES, "share/bgdraw/styles"};
+  const char *rel[] = {installed, build};
   for (int i = 0; i < 2; i++) {
     struct stat st;
     snprintf(dir, n, "%s/%s", lib, rel[i]);
     if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode)) return dir;
   }
   return NULL;
+}
+
+/* Named styles: $BGDRAW_STYLE_DIR (style.c), else share/bgdraw/styles
+ * relative to this library's file (installed: LIBDIR/../share/bgdraw/styles). */
+static const char *library_style_dir(char *dir, size_t n) {
+  const char *env = getenv("BGDRAW_STYLE_DIR");
+  if (env && *env) return NULL;
+  return library_share_dir(BG_LIB_TO_STYLES, "share/bgdraw/styles", dir, n);
 }
 
 /* The run's messages to the caller's function. */
@@ -136,6 +145,8 @@ static bgd_model *open_run(const char *name, const char *text, const char *path,
   bg_render_opts rd;
   bg_param_override *sets = calloc((size_t)(m->opts.nparams > 0 ? m->opts.nparams : 1), sizeof *sets);
   configure(m, &m->opts, &ro, &rd, sets, m->style_dir, sizeof m->style_dir);
+  ro.lib_dir = library_share_dir(BG_LIB_TO_COMPONENTS, "share/bgdraw/lib", m->lib_dir,
+                                 sizeof m->lib_dir); /* docs/format.md, "Files" */
   m->run = bg_run_new(&ro); /* copies the overrides */
   free(sets);
   int rc = path ? bg_run_load_file(m->run, path) : bg_run_load_string(m->run, name, text);

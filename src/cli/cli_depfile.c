@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* -M/--depfile FILE: a make rule "OUTPUTS: MODEL STYLE TABLES" naming every
- * file the run read, plus an empty rule per input (as gcc -MP writes), so
+/* -M/--depfile FILE: a make rule "OUTPUTS: MODEL USED STYLE TABLES" naming
+ * every file the run read (the files `use`d, directly or through others), plus an empty rule per input (as gcc -MP writes), so
  * make rebuilds a figure when an input changes and does not fail when one
  * is deleted. */
 #include <string.h>
@@ -25,11 +25,17 @@ static void add_unique(const char **list, int *n, int cap, const char *path) {
   if (*n < cap) list[(*n)++] = path;
 }
 
-/* The inputs read: the model, the style file (when something was drawn)
- * and every table CSV. style_buf holds the style's path. */
+/* The inputs read: the model, the files it uses (every source of the
+ * diagnostics that is a file read, not an instance's view of one), the
+ * style file (when something was drawn) and every table CSV. style_buf
+ * holds the style's path. */
 static int collect_inputs(const run *r, const char **in, int cap, char *style_buf, size_t n) {
   int k = 0;
   if (!bg_cli_is_stdout(r->opts.model_path)) add_unique(in, &k, cap, r->opts.model_path);
+  const bg_diags *dg = &r->R->dg;
+  for (int i = 1; i < dg->nsources; i++)
+    if (dg->sources[i].context.line == 0 && dg->sources[i].path)
+      add_unique(in, &k, cap, dg->sources[i].path);
   if (r->out.diagram || r->opts.plot || r->opts.report || r->opts.bode || r->opts.nyquist ||
       r->opts.step) {
     bg_style_path(r->ropts.style ? r->ropts.style : "default", r->ropts.style_dir, style_buf, n);

@@ -21,7 +21,7 @@
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
-  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE
+  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME
 };
 
 static const char short_opts[] = ":o:T:M:K:W:qvhV";
@@ -50,6 +50,7 @@ static const struct option long_opts[] = {
     {"prefix", required_argument, NULL, OPT_PREFIX},
     {"transform", required_argument, NULL, OPT_TRANSFORM},
     {"collapse", required_argument, NULL, OPT_COLLAPSE},
+    {"stdin-name", required_argument, NULL, OPT_STDIN_NAME},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
@@ -83,6 +84,7 @@ static const struct {
     {OPT_COLOR, offsetof(bg_cli_opts, color)},
     {OPT_PREFIX, offsetof(bg_cli_opts, prefix)},
     {OPT_TRANSFORM, offsetof(bg_cli_opts, transform)},
+    {OPT_STDIN_NAME, offsetof(bg_cli_opts, stdin_name)},
     {'T', offsetof(bg_cli_opts, force_format)},
     {'M', offsetof(bg_cli_opts, depfile)},
     {'K', offsetof(bg_cli_opts, layout)}, /* dot's -K ENGINE */
@@ -268,8 +270,8 @@ void bg_cli_print_help(FILE *out) {
   fputs(
       "  -T, --format FMT    the format of -o FILE without an extension, or of\n"
       "                      -o - (stdout); -T alone writes to stdout\n"
-      "  -M, --depfile FILE  make rule: the outputs depend on the model, style\n"
-      "                      and table files read\n"
+      "  -M, --depfile FILE  make rule: the outputs depend on every file read (the\n"
+      "                      model, the files it uses, style, table files)\n"
       "\n"
       "options:\n"
       "  --causality METHOD  scap (default) | relaxed | vandijk | lagrange\n"
@@ -298,6 +300,8 @@ void bg_cli_print_help(FILE *out) {
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"
       "  --prefix NAME       symbol prefix of exported C (-o NAME.c; default: the model name)\n"
+      "  --stdin-name FILE   standard input's name in messages; its folder is where\n"
+      "                      its used files and tables are found (as if read from FILE)\n"
       "  --diagnostics-format FMT  text (default) | json (one object a line)\n"
       "  --color WHEN        auto (default: on a terminal, unless NO_COLOR) | always | never\n"
       "  -W NAME, -Wno-NAME  turn a named warning on or off: unused-param, empty-model,\n"

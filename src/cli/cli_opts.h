@@ -38,6 +38,7 @@ typedef struct bg_cli_opts {
   const char *color;        /* --color: "auto" (default), "always", "never" */
   const char *prefix;       /* --prefix NAME: symbol prefix of exported C */
   const char *transform;    /* --transform NAME: the model rewritten (docs/transform.md) */
+  const char *stdin_name;   /* --stdin-name FILE: standard input's name (docs/cli.md) */
   int simulate, verify, check, quiet, verbose, help, version;
   unsigned warn_off;        /* -Wno-NAME: bit per bg_warning */
   int werror;               /* -Werror */

@@ -32,6 +32,9 @@ typedef struct run {
 /* The running executable's folder (from /proc/self/exe) into buf; -1 when
  * unknown. Styles and the render module are found relative to it. */
 int cli_exe_dir(char *buf, size_t n);
+/* The installed component library's folder (share/bgdraw/lib beside the
+ * executable, or in the build tree); NULL when there is none. */
+const char *cli_lib_dir(void);
 /* Diagram options from the command line (and --max-list); -1 after a
  * usage message. */
 int cli_render_options(run *r);

@@ -20,20 +20,32 @@ static int parse_show(const char *list, unsigned *bits) {
   return rc;
 }
 
-/* DIR/../share/bgdraw/styles of the running executable (installed), else
- * DIR/share/bgdraw/styles (the build tree, where CMake copies them); NULL
- * when neither exists (style.c then tries $BGDRAW_STYLE_DIR and ./styles). */
-static const char *installed_style_dir(void) {
-  static char dir[4200];
+/* EXE/../share/bgdraw/WHAT (installed), else EXE/share/bgdraw/WHAT (the
+ * build tree, where CMake copies styles and the component library) into
+ * dir; NULL when neither is a folder. */
+static const char *installed_share_dir(const char *what, char *dir, size_t n) {
   char exe[4096]; /* the executable's folder */
   if (cli_exe_dir(exe, sizeof exe) != 0) return NULL;
-  static const char *const rel[] = {"/../share/bgdraw/styles", "/share/bgdraw/styles"};
+  static const char *const rel[] = {"/../share/bgdraw/", "/share/bgdraw/"};
   for (int i = 0; i < 2; i++) {
     struct stat st;
-    snprintf(dir, sizeof dir, "%s%s", exe, rel[i]);
+    snprintf(dir, n, "%s%s%s", exe, rel[i], what);
     if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode)) return dir;
   }
   return NULL;
+}
+
+/* The named styles' folder; NULL when there is none (style.c then tries
+ * $BGDRAW_STYLE_DIR and ./styles). */
+static const char *installed_style_dir(void) {
+  static char dir[4200];
+  return installed_share_dir("styles", dir, sizeof dir);
+}
+
+/* The component library `use "NAME.bg"` finds (docs/format.md, "Files"). */
+const char *cli_lib_dir(void) {
+  static char dir[4200];
+  return installed_share_dir("lib", dir, sizeof dir);
 }
 
 static int parse_max_list(run *r, const char *s) {

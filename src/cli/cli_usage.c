@@ -193,5 +193,10 @@ int bg_cli_check_usage(bg_cli_opts *o) {
   /* as dot does: no model file and input from a pipe or file reads it */
   if (!o->model_path && !isatty(fileno(stdin))) o->model_path = BG_CLI_STDOUT;
   if (!o->model_path) return bg_cli_usage_error("no model file given (- reads stdin)%s%s", "", "");
+  if (o->stdin_name && !bg_cli_is_stdout(o->model_path))
+    return bg_cli_usage_error("--stdin-name names standard input, and the model is read from "
+                              "'%s'%s", o->model_path, ": give '-' as the model");
+  if (o->stdin_name && !*o->stdin_name)
+    return bg_cli_usage_error("--stdin-name takes a file name%s%s", "", "");
   return 0;
 }

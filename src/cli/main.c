@@ -36,7 +36,8 @@ static void run_free(run *r) {
 }
 
 /* Reads, parses and compiles the model into the run; diagnostics stay in
- * its dg. The model from stdin is called <stdin> in messages. */
+ * its dg. The model from stdin is called <stdin> in messages, or what
+ * --stdin-name says (then its used files and tables are found from there). */
 static int load_model(run *r) {
   const bg_cli_opts *o = &r->opts;
   bg_run_opts ro;
@@ -48,6 +49,7 @@ static int load_model(run *r) {
   ro.verify = o->verify;
   ro.warn_off = o->warn_off, ro.werror = o->werror;
   ro.keep_ast = o->transform != NULL; /* the transformations edit the syntax */
+  ro.lib_dir = cli_lib_dir();
   ro.log = (bg_log){log_stderr, &r->opts, o->verbose};
   r->R = bg_run_new(&ro);
   int rc;
@@ -56,7 +58,7 @@ static int load_model(run *r) {
   } else {
     size_t len = 0;
     char *text = bg_read_stream(stdin, &len);
-    rc = bg_run_load(r->R, "<stdin>", text, len);
+    rc = bg_run_load(r->R, o->stdin_name ? o->stdin_name : "<stdin>", text, len);
   }
   bg_output_opts oo = {r->ropts, o->prefix, o->transform, NULL, 1}; /* the FMU cleans up on ^C */
   oo.render.log = &r->R->o.log;

@@ -122,5 +122,11 @@ typedef struct bg_ast {
   const char *path;   /* the model file's path as given */
   int file;           /* its diagnostics source index (0: the model file) */
   int has_components; /* a SUBMODEL, USE or INSTANCE statement: needs flattening */
+  /* Where `use "NAME"` looks after the using file's folder (docs/format.md,
+   * "Files"): the folders of BGDRAW_PATH (NULL-terminated), then the
+   * installed component library. Set by the caller before compiling;
+   * borrowed; both nullable. */
+  const char *const *use_path;
+  const char *use_lib;
 } bg_ast;
 #endif

@@ -9,6 +9,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "base/fileio.h"
 #include "base/strbuf.h"
@@ -139,9 +140,51 @@ static void report_use_cycle(fl_flattener *f, int from, int to, bg_srcloc loc) {
   bg_sb_free(&sb);
 }
 
-/* A `use` statement of file fi: reads, parses and loads the file once. */
+static int exists(const char *path) { return access(path, F_OK) == 0; }
+
+/* The "not found" error of `use "NAME"`: every folder looked in, and why. */
+static void report_not_found(fl_flattener *f, const bg_ast_stmt *s, const char *own) {
+  const bg_ast *root = f->files[0].ast;
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "'%s' (the using file's folder)", own);
+  int npath = 0;
+  for (const char *const *d = root->use_path; d && *d; d++, npath++)
+    bg_sb_printf(&sb, ", '%s'%s", *d, d[1] ? "" : " (BGDRAW_PATH)");
+  if (root->use_lib) bg_sb_printf(&sb, ", '%s' (the installed component library)", root->use_lib);
+  bg_diag_error(f->dg, s->name_loc, "cannot find used file '%s'; looked in %s%s", s->text,
+                bg_sb_str(&sb), npath ? "" : "; BGDRAW_PATH is not set");
+  bg_sb_free(&sb);
+}
+
+/* The file `use "NAME"` of file fi reads: an absolute NAME as it is; a
+ * relative one in the using file's folder, then in the folders of
+ * BGDRAW_PATH, then in the installed component library, the first where it
+ * exists. A file found on the search path gets its canonical (absolute)
+ * path, so its tables are found beside it. NULL after the error. */
+static const char *find_used(fl_flattener *f, int fi, const bg_ast_stmt *s, int *searched) {
+  const char *own = dir_part(f, f->files[fi].path);
+  const char *path = path_in(f, own, s->text);
+  *searched = 0;
+  if (s->text[0] == '/' || exists(path)) return path;
+  const bg_ast *root = f->files[0].ast;
+  *searched = 1;
+  for (const char *const *d = root->use_path; d && *d; d++) {
+    const char *p = path_in(f, *d, s->text);
+    if (exists(p)) return canonical(f, p);
+  }
+  if (root->use_lib) {
+    const char *p = path_in(f, root->use_lib, s->text);
+    if (exists(p)) return canonical(f, p);
+  }
+  report_not_found(f, s, own);
+  return NULL;
+}
+
+/* A `use` statement of file fi: finds, reads, parses and loads the file once. */
 static void use_file(fl_flattener *f, int fi, const bg_ast_stmt *s, int depth) {
-  const char *path = path_in(f, dir_part(f, f->files[fi].path), s->text);
+  int searched;
+  const char *path = find_used(f, fi, s, &searched);
+  if (!path) return;
   const char *key = canonical(f, path);
   for (int i = 0; i < f->nfiles; i++) {
     if (strcmp(f->files[i].key, key) != 0) continue;
@@ -166,7 +209,8 @@ static void use_file(fl_flattener *f, int fi, const bg_ast_stmt *s, int depth) {
   nf->path = path;
   nf->key = key;
   const char *sub = dir_part(f, s->text);
-  nf->dir_rel = strcmp(sub, ".") == 0 ? f->files[fi].dir_rel : path_in(f, f->files[fi].dir_rel, sub);
+  if (searched) nf->dir_rel = dir_part(f, path); /* absolute */
+  else nf->dir_rel = strcmp(sub, ".") == 0 ? f->files[fi].dir_rel : path_in(f, f->files[fi].dir_rel, sub);
   nf->ast = ast;
   load_file(f, f->nfiles - 1, depth + 1);
 }

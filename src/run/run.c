@@ -36,6 +36,32 @@ bg_run *bg_run_new(const bg_run_opts *o) {
 
 int bg_run_has(const bg_run *r, bg_stage s) { return r && s >= 0 && s < BG_STAGE_COUNT && r->done[s]; }
 
+/* The folders of $BGDRAW_PATH (':' between them, empty ones skipped) into
+ * dirs (NULL-terminated; the strings point into buf). */
+static void split_use_path(char *buf, const char **dirs, int cap) {
+  int n = 0;
+  for (char *save = NULL, *d = strtok_r(buf, ":", &save); d && n < cap - 1;
+       d = strtok_r(NULL, ":", &save))
+    dirs[n++] = d;
+  dirs[n] = NULL;
+}
+
+/* Compiles the syntax with the folders `use` searches. */
+static bg_model *compile(bg_run *r, bg_ast *ast) {
+  enum { MAX_DIRS = 64 };
+  const char *env = getenv("BGDRAW_PATH");
+  char *buf = strdup(env ? env : "");
+  if (!buf) BG_FATAL("out of memory");
+  const char *dirs[MAX_DIRS];
+  split_use_path(buf, dirs, MAX_DIRS);
+  ast->use_path = dirs;
+  ast->use_lib = r->o.lib_dir;
+  bg_model *m = bg_model_compile(ast, r->o.sets, r->o.nsets, &r->dg);
+  ast->use_path = NULL;
+  free(buf);
+  return m;
+}
+
 int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
   if (r->done[BG_STAGE_MODEL]) BG_FATAL("a run is loaded once");
   r->done[BG_STAGE_MODEL] = 1;
@@ -57,7 +83,7 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
    * then dropped. A file refused whole (not text, another tool's format)
    * and a run at the error limit stop here. */
   if (ast && (!r->dg.nerrors || (r->dg.nskipped && !bg_diags_full(&r->dg))))
-    r->model = bg_model_compile(ast, r->o.sets, r->o.nsets, &r->dg);
+    r->model = compile(r, ast);
   if (r->o.keep_ast) r->ast = ast; /* the transformations edit the syntax */
   else bg_ast_free(ast);
   if (r->model && r->dg.nerrors) bg_model_free(r->model), r->model = NULL;

@@ -52,6 +52,10 @@ typedef struct bg_run_opts {
   unsigned warn_off; /* named warnings not reported: bit per bg_warning (-Wno-NAME) */
   int werror;        /* named warnings are errors (-Werror) */
   bg_log log;     /* progress, notes and warnings; {0}: silent */
+  /* The installed component library's folder, where `use "NAME.bg"` looks
+   * after the model's folder and $BGDRAW_PATH's (docs/format.md, "Files");
+   * borrowed, nullable. */
+  const char *lib_dir;
 } bg_run_opts;
 
 typedef struct bg_run {
