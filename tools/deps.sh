@@ -6,7 +6,7 @@
 # Runs as root (or with sudo available). Idempotent and quick when nothing is missing.
 set -euo pipefail
 PKGS=(gcc make cmake pkg-config
-      libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev zlib1g-dev
+      libsundials-dev libgraphviz-dev libcairo2-dev libpango1.0-dev liblapacke-dev zlib1g-dev libyaml-dev
       fonts-dejavu-core)
 if [ "${1:-}" = "--tests" ]; then
   PKGS+=(python3 poppler-utils libxml2-utils  # checkers, PDF pages, SVG well-formedness

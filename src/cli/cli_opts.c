@@ -21,7 +21,7 @@
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
-  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME
+  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME, OPT_IMPORT
 };
 
 static const char short_opts[] = ":o:T:M:K:W:qvhV";
@@ -54,6 +54,7 @@ static const struct option long_opts[] = {
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
+    {"import", no_argument, NULL, OPT_IMPORT},
     {"quiet", no_argument, NULL, 'q'},
     {"verbose", no_argument, NULL, 'v'},
     {"help", no_argument, NULL, 'h'},
@@ -219,6 +220,7 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
     o->collapse[o->ncollapse++] = arg;
     return 0;
   case OPT_SIMULATE: o->simulate = 1; return 0;
+  case OPT_IMPORT: o->import = 1; return 0;
   case OPT_VERIFY: o->verify = 1; o->simulate = 1; return 0;
   case OPT_CHECK: o->check = 1; return 0;
   case 'W': return take_warning(o, arg);
@@ -296,6 +298,8 @@ void bg_cli_print_help(FILE *out) {
       "                      frequency, step and impulse responses (svg, pdf, png)\n"
       "  --transform NAME    rewrite the model (-o NEW.bg, -T bg; docs/transform.md):\n"
       "                      merge-stores | parasitic | relax-junction\n"
+      "  --import            write a BondGraphTools YAML model as .bg (-o M.bg, -T bg;\n"
+      "                      docs/import.md); any option reads it directly too\n"
       "  --check             parse and analyse only; diagnostics and a summary\n"
       "  --max-list N        list at most N causal paths and N loops (default 1000)\n"
       "  --max-errors N      stop after N errors (default 100; 0: no limit)\n"

@@ -40,6 +40,7 @@ typedef struct bg_cli_opts {
   const char *transform;    /* --transform NAME: the model rewritten (docs/transform.md) */
   const char *stdin_name;   /* --stdin-name FILE: standard input's name (docs/cli.md) */
   int simulate, verify, check, quiet, verbose, help, version;
+  int import;               /* --import: the model is another tool's; .bg output is it as .bg text */
   unsigned warn_off;        /* -Wno-NAME: bit per bg_warning */
   int werror;               /* -Werror */
   bg_param_override sets[BG_MAX_SETS];

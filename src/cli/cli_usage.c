@@ -103,7 +103,7 @@ static int resolve_format(const bg_cli_opts *o, bg_cli_output *out) {
     return 0;
   }
   /* .bg is a format only for --transform: before it, -T svg -o m.bg wrote svg */
-  int bg_without_transform = !strcmp(out->format, "bg") && !o->transform && T;
+  int bg_without_transform = !strcmp(out->format, "bg") && !o->transform && !o->import && T;
   const bg_output_kind *k = bg_output_for_ext(out->format);
   if (k && !bg_without_transform) {
     out->format = k->name; /* ".SVG" is an SVG */
@@ -168,9 +168,12 @@ static int check_ignored(const bg_cli_opts *o) {
                               : o->simulate ? "--simulate"
                               : o->linear ? "--linear"
                               : o->transform ? "--transform" : "--depfile", "");
-  if (has_format(o, "bg") && !o->transform)
-    return bg_cli_usage_error("a .bg output is the model rewritten by --transform: add "
-                              "--transform NAME (%s)%s", bg_transform_names(), "");
+  if (has_format(o, "bg") && !o->transform && !o->import)
+    return bg_cli_usage_error("a .bg output is the model rewritten by --transform, or read by "
+                              "--import: add --transform NAME (%s) or --import%s", bg_transform_names(), "");
+  if (o->import && o->transform)
+    return bg_cli_usage_error("--import writes the model as it is, --transform rewrites it: convert "
+                              "first (--import -o MODEL.bg), then transform MODEL.bg%s%s", "", "");
   if (o->transform && !has_format(o, "bg") && !o->report)
     return bg_cli_usage_error("--transform %s writes a new model: add -o NEW.bg (or -T bg for "
                               "stdout, or --report FILE.pdf to see it)%s", o->transform, "");

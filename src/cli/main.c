@@ -182,6 +182,12 @@ int main(int argc, char **argv) {
     run_free(&r);
     return EXIT_MODEL;
   }
+  if (r.opts.import && !r.R->imported) {
+    fprintf(stderr, "bgdraw: --import: %s is a bgdraw model already, not a BondGraphTools model\n",
+            r.R->name);
+    run_free(&r);
+    return EXIT_USAGE;
+  }
   char defpath[1024];
   if (!r.opts.check && r.opts.nout == 0 && !r.opts.simulate && !r.opts.equations &&
       !r.opts.plot && !r.opts.report && !cli_linear_asked(&r.opts))

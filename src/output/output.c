@@ -132,8 +132,13 @@ static bg_output_status write_report(bg_output *w, const bg_output_kind *k, cons
 static bg_output_status write_transformed(bg_output *w, const bg_output_kind *k, const char *form,
                                           const char *path, bg_strbuf *out) {
   (void)k, (void)form;
+  if (!w->o.tx && w->run->imported && w->run->import.text) { /* another tool's model as .bg */
+    bg_sb_puts(out, w->run->import.text);
+    return BG_OUT_OK;
+  }
   if (!w->o.tx) return bg_out_error(w, BG_OUT_USAGE, "%s%s: a .bg output is the model --transform "
-                                    "writes; no transformation was asked for", "", path ? path : "");
+                                    "writes, or another tool's model read as .bg; neither is here", "",
+                                    path ? path : "");
   bg_sb_puts(out, w->o.tx->text);
   return BG_OUT_OK;
 }
@@ -155,7 +160,7 @@ const bg_output_kind bg_output_kinds[] = {
     {"mo", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "the model for Modelica"},
     {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_fmu,
      "FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)"},
-    {"bg", BG_STAGE_ANALYSIS, BG_OUTK_EXT, write_transformed, "the model rewritten by --transform"},
+    {"bg", BG_STAGE_ANALYSIS, BG_OUTK_EXT, write_transformed, "the model rewritten by --transform, or imported (--import)"},
     /* chosen by options of their own */
     {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
     {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},

@@ -62,6 +62,44 @@ static bg_model *compile(bg_run *r, bg_ast *ast) {
   return m;
 }
 
+/* Diagnostics in the imported .bg text (source k and the instances' sources
+ * sharing its text) point at the foreign file's line they came from. */
+static void point_at_source(bg_run *r, int k, int from) {
+  const char *text = r->dg.sources[k].src;
+  const bg_import_result *ir = &r->import;
+  for (int i = from; i < r->dg.n; i++) {
+    bg_srcloc *at = &r->dg.items[i].loc;
+    if (at->file <= 0 || at->file >= r->dg.nsources || r->dg.sources[at->file].src != text) continue;
+    if (at->line < 1 || at->line > ir->nlines || !ir->line_of[at->line]) continue;
+    int line = ir->line_of[at->line], col = 1;
+    const char *s = r->src;
+    for (int l = 1; l < line && s; l++) s = memchr(s, '\n', r->srclen - (size_t)(s - r->src)), s = s ? s + 1 : s;
+    while (s && s < r->src + r->srclen && (*s == ' ' || *s == '-' || *s == '\t')) s++, col++;
+    *at = (bg_srcloc){line, col, 0};
+  }
+}
+
+/* Another tool's model: converted (errors at its own lines), then parsed as
+ * the .bg text it became, a source of its own. */
+static int load_imported(bg_run *r, bg_ast **ast) {
+  *ast = NULL;
+  if (bg_import_convert(r->imported, r->name, r->src, r->srclen, &r->dg, &r->import)) return -1;
+  if (r->o.keep_ast) {
+    bg_diag_error(&r->dg, (bg_srcloc){0}, "--transform edits .bg text: convert the %s model first "
+                  "(bgdraw --import %s -o MODEL.bg)", bg_import_format_name(r->imported), r->name);
+    return -1;
+  }
+  bg_strbuf path = {0};
+  bg_sb_printf(&path, "%s (imported)", r->name);
+  int k = bg_diags_add_source(&r->dg, path.s, r->import.text, r->import.len);
+  bg_sb_free(&path);
+  int from = r->dg.n;
+  *ast = bg_parse_source(r->name, r->import.text, r->import.len, k, &r->dg);
+  if (*ast && !r->dg.nerrors) r->model = compile(r, *ast);
+  point_at_source(r, k, from);
+  return 0;
+}
+
 int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
   if (r->done[BG_STAGE_MODEL]) BG_FATAL("a run is loaded once");
   r->done[BG_STAGE_MODEL] = 1;
@@ -76,13 +114,17 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
     bg_diag_error(&r->dg, (bg_srcloc){0}, "cannot read the model: %s", bg_file_strerror(errno));
     return -1;
   }
-  bg_ast *ast = bg_parse_string(r->name, r->src, r->srclen, &r->dg);
+  bg_ast *ast;
+  r->imported = bg_import_detect(r->src, r->srclen);
+  if (r->imported) {
+    if (load_imported(r, &ast)) return -1;
+  } else ast = bg_parse_string(r->name, r->src, r->srclen, &r->dg);
   /* After syntax errors the statements that parsed are still compiled, so
    * their name and structure errors come in the same run (what may follow
    * from a dropped statement is not said: bg_diags_unsure); the model is
    * then dropped. A file refused whole (not text, another tool's format)
    * and a run at the error limit stop here. */
-  if (ast && (!r->dg.nerrors || (r->dg.nskipped && !bg_diags_full(&r->dg))))
+  if (ast && !r->model && (!r->dg.nerrors || (r->dg.nskipped && !bg_diags_full(&r->dg))))
     r->model = compile(r, ast);
   if (r->o.keep_ast) r->ast = ast; /* the transformations edit the syntax */
   else bg_ast_free(ast);
@@ -247,6 +289,7 @@ void bg_run_free(bg_run *r) {
   if (r->ast) bg_ast_free(r->ast);
   if (r->done[BG_STAGE_MODEL]) bg_diags_free(&r->dg);
   free(r->src);
+  bg_import_result_free(&r->import);
   free(r->name);
   for (int i = 0; i < r->o.nsets; i++) free((char *)r->sets[i].name);
   free(r->sets);

@@ -18,6 +18,7 @@
 #include "base/log.h"
 #include "causality/causality.h"
 #include "equations/equations.h"
+#include "import/import.h"
 #include "lang/lang.h"
 #include "linear/linear.h"
 #include "model/model.h"
@@ -65,6 +66,8 @@ typedef struct bg_run {
   char *src;
   size_t srclen;
   bg_diags dg;
+  bg_import_format imported; /* src is another tool's model (src/import) ... */
+  bg_import_result import;   /* ... read as this .bg text (what -o m.bg writes with --import) */
   bg_ast *ast;             /* with o.keep_ast */
   bg_model *model;         /* NULL until loaded, or when it has errors */
   bg_analysis analysis;
