@@ -75,7 +75,7 @@ void bg_ig_add_note(bg_ig *g, bg_ig_model *m, int line, const char *fmt, ...) {
   m->note_lines[m->nnotes++] = line;
 }
 
-int bg_ig_find_node(const bg_ig_model *m, const char *name) {
+static int find_node(const bg_ig_model *m, const char *name) {
   for (int i = 0; i < m->nnodes; i++)
     if (!strcmp(m->nodes[i].name, name)) return i;
   return -1;
@@ -98,7 +98,7 @@ static int taken_word(const char *s) {
 }
 
 static int name_used(const bg_ig_model *m, const char *s) {
-  if (m && bg_ig_find_node(m, s) >= 0) return 1;
+  if (m && find_node(m, s) >= 0) return 1;
   for (int i = 0; m && i < m->nparams; i++)
     if (!strcmp(m->params[i].name, s)) return 1;
   return 0;
@@ -264,7 +264,7 @@ int bg_ig_orient(bg_ig *g, int mi) {
 }
 
 int bg_ig_port_direction(const bg_ig_model *m, const char *port) {
-  int p = bg_ig_find_node(m, port);
+  int p = find_node(m, port);
   if (p < 0 || !m->nodes[p].is_port) return -1;
   for (int i = 0; i < m->nbonds; i++) {
     if (m->bonds[i].a == p) return BG_IG_HEAD; /* power comes in at the port */

@@ -94,7 +94,6 @@ int bg_ig_add_bond(bg_ig_model *m, bg_ig_bond b);
 void bg_ig_add_param(bg_ig_model *m, bg_ig_param p);
 void bg_ig_add_note(bg_ig *g, bg_ig_model *m, int line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
-int bg_ig_find_node(const bg_ig_model *m, const char *name);
 /* A string in the graph's arena. */
 char *bg_ig_printf(bg_ig *g, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* name made a valid .bg name (other characters become '_', a leading digit
