@@ -437,9 +437,16 @@ static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
   if (c1) { sb_sep(sb); bg_sb_printf(sb, "%s%d class 1 causal path%s (dependent stores)", pmin, c1, c1 > 1 ? "s" : ""); }
   if (c2) { sb_sep(sb); bg_sb_printf(sb, "%s%d class 2 causal path%s between resistors", pmin, c2, c2 > 1 ? "s" : ""); }
   if (a->ncloop) {
+    int c5 = 0;
+    for (int l = 0; l < a->ncloop; l++) c5 += a->cloop_class[l] == 5;
     sb_sep(sb);
-    bg_sb_printf(sb, "%s%d causal loop%s, pairwise disjoint, gain other than +1 (Rosenberg-Andry)",
-                 lmin, a->ncloop, a->ncloop > 1 ? "s" : "");
+    if (!c5)
+      bg_sb_printf(sb, "%s%d causal loop%s, pairwise disjoint, gain other than +1 (Rosenberg-Andry)",
+                   lmin, a->ncloop, a->ncloop > 1 ? "s" : "");
+    else
+      bg_sb_printf(sb, "%s%d causal loop%s, pairwise disjoint; %d of gain +1 (class 5), whose two "
+                       "open-loop constraints each read the other loop variable, so they determine "
+                       "both (Figure 4.18 otherwise)", lmin, a->ncloop, a->ncloop > 1 ? "s" : "", c5);
   }
   if (a->ndependent && !c1) { sb_sep(sb); bg_sb_puts(sb, "dependent stores"); }
   if (a->nlag) {
@@ -495,6 +502,7 @@ typedef struct lindep {
   int *stamp, *queue, *indeg, cur;
   double *d, *abs_d;
   long work;
+  int cut1; /* 1 + a node whose out-edges are ignored (a loop cut open), or 0 */
 } lindep;
 
 #define LINDEP_BUDGET 20000000L
@@ -516,6 +524,7 @@ static int lin_depends_dense(lindep *L, int nr, const int *from, int n1, const i
   for (int i = 0; i < n1; i++) A[(size_t)pos[from[i]] * (nr + 1) + nr] = 1;
   for (int i = 0; i < nr; i++) {
     int u = L->queue[i];
+    if (u == L->cut1 - 1) continue;
     for (int k = 0; k < g->n[u]; k++) {
       const bg_sfg_edge *e = &g->edge[g->out[g->adr[u] + k]];
       if (e->order != 0 || L->stamp[e->dst] != L->cur) continue;
@@ -573,6 +582,7 @@ static int lin_depends(lindep *L, const int *from, int n1, const int *to, const 
     int v = L->queue[head++];
     L->indeg[v] = 0;
     L->d[v] = L->abs_d[v] = 0;
+    if (v == L->cut1 - 1) continue;
     for (int k = 0; k < g->n[v]; k++) {
       const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
       if (++L->work > LINDEP_BUDGET) return -1;
@@ -584,6 +594,7 @@ static int lin_depends(lindep *L, const int *from, int n1, const int *to, const 
   int nreach = tail;
   for (int i = 0; i < nreach; i++) {
     int v = L->queue[i];
+    if (v == L->cut1 - 1) continue;
     for (int k = 0; k < g->n[v]; k++) {
       const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
       if (e->order == 0) L->indeg[e->dst]++;
@@ -597,6 +608,7 @@ static int lin_depends(lindep *L, const int *from, int n1, const int *to, const 
     if (L->indeg[L->queue[i]] == 0) order[tail++] = L->queue[i];
   while (head < tail) {
     int v = order[head++];
+    if (v == L->cut1 - 1) continue;
     for (int k = 0; k < g->n[v]; k++) {
       const bg_sfg_edge *e = &g->edge[g->out[g->adr[v] + k]];
       if (e->order != 0) continue;
@@ -622,7 +634,7 @@ static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg
   size_t nn = (size_t)g->nnode + 1;
   lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
               bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
-              bg_xcalloc(nn, sizeof(double)), 0};
+              bg_xcalloc(nn, sizeof(double)), 0, 0};
   int *from = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int));
   int *to = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int)), found = -1;
   double *w = bg_xcalloc((size_t)m->nbondref + 2, sizeof(double));
@@ -665,6 +677,33 @@ static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg
   return found;
 }
 
+/* Whether causal loop l of gain +1 constrains states or inputs alone. Its two
+ * open loops (Figure 4.18) give two constraints, "e_x = e_x + rest" and
+ * "f_x = f_x + rest" at any bond x of the loop (Equations 4.36, 4.37). The
+ * loop's algebraic variables are e_x and f_x; a constraint whose rest does
+ * not depend on the other one reads states and inputs alone (the delta's
+ * cut-set law 4.38): the index is above 1. When both depend on it, the two
+ * constraints determine the two variables and the junction structure's
+ * singularity (Rosenberg-Andry) costs no index (Proposition 5.7 is
+ * sufficient for index 1, not necessary; docs/property.md, finding 3).
+ * Undecided (a cycle the dense solve cannot pass, the budget) counts as
+ * constraining, the prediction of before. */
+static int cloop_constrains_states(const bg_model *m, const bg_analysis *a, const bg_sfg *g, int l) {
+  size_t nn = (size_t)g->nnode + 1;
+  lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
+              bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
+              bg_xcalloc(nn, sizeof(double)), 0, 0};
+  int x = a->cloop_bonds[a->cloop_adr[l]], e = BG_SIG_EFFORT(x), f = BG_SIG_FLOW(x);
+  double w = 1;
+  L.cut1 = 1 + e; /* the effort loop cut open at e_x: what reaches it from f_x */
+  int r1 = lin_depends(&L, &f, 1, &e, &w, 1);
+  L.cut1 = 1 + f;
+  int r2 = r1 == 1 ? lin_depends(&L, &e, 1, &f, &w, 1) : 0;
+  free(L.stamp), free(L.queue), free(L.indeg), free(L.d), free(L.abs_d);
+  (void)m;
+  return !(r1 == 1 && r2 == 1);
+}
+
 /* A linear flat algebraic loop from internal modulation (Equation 4.45)
  * whose gain is 1 at the current parameter values, or -1. */
 static int singular_modulation_loop(const bg_analysis *a) {
@@ -674,6 +713,15 @@ static int singular_modulation_loop(const bg_analysis *a) {
         strncmp(a->tloop_cause[t], "internal", 8) == 0 && nearly_one(a->tloop_gain_value[t]))
       return t;
   return -1;
+}
+
+/* Loops that share bonds, or a class 5 loop whose constraints read states
+ * and inputs alone: the junction structure costs index (above 1). */
+static int cloops_constrain_states(const bg_model *m, const bg_analysis *a, const bg_sfg *g) {
+  if (!a->cloops_disjoint) return 1;
+  for (int l = 0; l < a->ncloop; l++)
+    if (a->cloop_class[l] == 5 && cloop_constrains_states(m, a, g, l)) return 1;
+  return 0;
 }
 
 static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
@@ -691,7 +739,7 @@ static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nb
     a->index_predicted = 2;
     bg_sb_printf(&sb, "class 1 causal path %d shares bonds with causal loop %d: index above 1 "
                       "(Proposition 5.10)", p + 1, l + 1);
-  } else if (!a->rosenberg_andry && a->ncloop) {
+  } else if (!a->rosenberg_andry && a->ncloop && cloops_constrain_states(m, a, g)) {
     a->index_predicted = 2;
     for (l = 0; l < a->ncloop && a->cloop_class[l] != 5; l++) {}
     if (l < a->ncloop)

@@ -8,3 +8,25 @@
 void bg_sort(void *base, size_t n, size_t size, bg_sort_cmp cmp, void *ctx) {
   if (n > 1) qsort_r(base, n, size, cmp, ctx);
 }
+
+static int is_digit(char c) { return c >= '0' && c <= '9'; }
+
+int bg_natural_cmp(const char *a, const char *b) {
+  while (*a && *b) {
+    if (is_digit(*a) && is_digit(*b)) {
+      while (*a == '0') a++;
+      while (*b == '0') b++;
+      size_t na = 0, nb = 0;
+      while (is_digit(a[na])) na++;
+      while (is_digit(b[nb])) nb++;
+      if (na != nb) return na < nb ? -1 : 1;
+      for (size_t i = 0; i < na; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+      a += na, b += nb;
+    } else {
+      if (*a != *b) return (unsigned char)*a < (unsigned char)*b ? -1 : 1;
+      a++, b++;
+    }
+  }
+  return (*a != 0) - (*b != 0);
+}

@@ -11,4 +11,8 @@
 
 typedef int (*bg_sort_cmp)(const void *a, const void *b, void *ctx);
 void bg_sort(void *base, size_t n, size_t size, bg_sort_cmp cmp, void *ctx);
+/* Names in natural order: runs of digits compare as numbers (R2 before R10,
+ * x007 as x7). The tie-break of choices that must not follow the order of a
+ * model's statements (docs/causality.md, "Ties"). */
+int bg_natural_cmp(const char *a, const char *b);
 #endif

@@ -6,13 +6,65 @@
  * away from it (naway), so a node's rule is checked in O(1) and a node
  * scans its bonds only when it is about to assign them: propagation is
  * linear in the number of bonds. */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "causality/causality_int.h"
+#include "base/sort.h"
 #include "base/strbuf.h"
 
 /* ---------------------------------------------------------------- set-up */
+/* The tie-break orders (causality_int.h) are functions of the graph, its
+ * names and its bond numbers, never of the order of the statements. */
+typedef struct { long key; const char *name; int idx; } order_item;
+
+static int by_key(const void *pa, const void *pb) {
+  const order_item *a = pa, *b = pb;
+  if (a->key != b->key) return a->key < b->key ? -1 : 1;
+  int c = a->name && b->name ? bg_natural_cmp(a->name, b->name) : 0;
+  if (c) return c;
+  return (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+static void sort_items(order_item *it, int n, int *out) {
+  qsort(it, (size_t)n, sizeof *it, by_key);
+  for (int i = 0; i < n; i++) out[i] = it[i].idx;
+}
+
+static void make_orders(bg_ceng *E) {
+  const bg_model *m = E->m;
+  int n = m->nbond > m->nelem ? m->nbond : m->nelem, nref = 0;
+  order_item *it = bg_xcalloc(n > 0 ? n : 1, sizeof *it);
+  for (int b = 0; b < m->nbond; b++) it[b] = (order_item){m->bond_num[b], NULL, b};
+  sort_items(it, m->nbond, E->bond_order);
+  for (int e = 0; e < m->nelem; e++) {
+    int adr = m->elem_bondadr[e], deg = m->elem_nbond[e];
+    if (adr + deg > nref) nref = adr + deg;
+  }
+  E->adj = bg_xcalloc(nref > 0 ? nref : 1, sizeof(int));
+  for (int e = 0; e < m->nelem; e++) {
+    int adr = m->elem_bondadr[e], deg = m->elem_nbond[e];
+    for (int i = 0; i < deg; i++) {
+      int b = m->elem_bonds[adr + i];
+      it[i] = (order_item){m->bond_num[b], NULL, b};
+    }
+    sort_items(it, deg, E->adj + adr);
+  }
+  for (int e = 0; e < m->nelem; e++) {
+    long key = 0;
+    if (!bg_elem_is_oneport(m->elem_kind[e]))
+      key = m->elem_nbond[e] > 0 ? m->bond_num[E->adj[m->elem_bondadr[e]]] : LONG_MAX;
+    else if (bg_elem_is_store(m->elem_kind[e]) && m->elem_init && m->elem_init[e] < 0)
+      key = 1;
+    it[e] = (order_item){key, bg_elem_is_oneport(m->elem_kind[e]) ? m->elem_name[e] : NULL, e};
+  }
+  sort_items(it, m->nelem, E->elem_order);
+  free(it);
+}
+
+const int *bg_ceng_bonds(const bg_ceng *E, int e) { return E->adj + E->m->elem_bondadr[e]; }
+
 void bg_ceng_init(bg_ceng *E, const bg_model *m, bg_analysis *a) {
   memset(E, 0, sizeof *E);
   E->m = m;
@@ -31,6 +83,9 @@ void bg_ceng_init(bg_ceng *E, const bg_model *m, bg_analysis *a) {
   E->blocked = bg_xcalloc(nb, 1);
   E->split = bg_xcalloc(nb, 1);
   E->log = bg_xcalloc(nb, sizeof(int));
+  E->bond_order = bg_xcalloc(nb, sizeof(int));
+  E->elem_order = bg_xcalloc(ne, sizeof(int));
+  make_orders(E);
 }
 
 static void trace_clear(bg_ceng *E) {
@@ -66,6 +121,7 @@ void bg_ceng_free(bg_ceng *E) {
   free(E->nat); free(E->naway); free(E->nblk); free(E->art); free(E->force_der);
   free(E->inq); free(E->queue); free(E->indq); free(E->dqueue); free(E->blocked); free(E->split); free(E->log);
   free(E->lag_junction); free(E->lag_bond);
+  free(E->bond_order); free(E->elem_order); free(E->adj);
   memset(E, 0, sizeof *E);
 }
 
@@ -250,7 +306,7 @@ static void prop_junction(bg_ceng *E, int e, int deferred) {
   }
   /* strong at a 0-junction = stroke at it; at a 1-junction = stroke away */
   int at = strong ? !j0 : j0;
-  const int *bonds = m->elem_bonds + m->elem_bondadr[e];
+  const int *bonds = bg_ceng_bonds(E, e);
   for (int i = 0; i < deg; i++) {
     int b = bonds[i];
     if (bg_ceng_open(E, b) && !E->blocked[b])
@@ -262,7 +318,7 @@ static void prop_junction(bg_ceng *E, int e, int deferred) {
 static void prop_twoport(bg_ceng *E, int e) {
   const bg_model *m = E->m;
   if (m->elem_nbond[e] != 2 || E->nat[e] + E->naway[e] != 1) return;
-  const int *bonds = m->elem_bonds + m->elem_bondadr[e];
+  const int *bonds = bg_ceng_bonds(E, e);
   int done = bg_ceng_open(E, bonds[0]) ? bonds[1] : bonds[0];
   int todo = done == bonds[0] ? bonds[1] : bonds[0];
   if (!bg_ceng_open(E, todo) || E->blocked[todo]) return;

@@ -32,12 +32,20 @@ typedef struct bg_ceng {
   char **trace;             /* malloc'd texts */
   int ntrace, captrace;
   int nlag, caplag;         /* Lagrange sources found so far */
+  /* The order every free choice is taken in, independent of the order of
+   * the model's statements (docs/causality.md, "Ties"): bonds by number,
+   * elements by name in natural order (R2 before R10), each element's bonds
+   * by number. */
+  int *bond_order, *elem_order;
+  int *adj;                 /* like m->elem_bonds (elem_bondadr), sorted */
   int *lag_junction, *lag_bond;
 } bg_ceng;
 
 void bg_ceng_init(bg_ceng *E, const bg_model *m, bg_analysis *a);
 void bg_ceng_reset(bg_ceng *E); /* back to no strokes, empty trace */
 void bg_ceng_free(bg_ceng *E);
+/* Element e's bonds in bond-number order (m->elem_nbond[e] of them). */
+const int *bg_ceng_bonds(const bg_ceng *E, int e);
 
 /* The stroke that puts bond b's stroke at node e (at != 0) or away from it. */
 int bg_ceng_stroke_for(const bg_ceng *E, int b, int e, int at);
@@ -73,7 +81,7 @@ int bg_ceng_oneport_caus(const bg_ceng *E, int e);
 
 /* Shared first steps (causality_scap.c): block the bonds that steps assign
  * explicitly (sources, fixed strokes; nonlinear R when relaxed), then the
- * fixed strokes in bond order and the sources in file order. */
+ * fixed strokes by bond number and the sources by name. */
 void bg_ceng_block(bg_ceng *E, int relaxed);
 void bg_ceng_fixed(bg_ceng *E);
 void bg_ceng_sources(bg_ceng *E);

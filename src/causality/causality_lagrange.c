@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Lagrange causality (Karnopp, Section 4.10.1): sources, then artificial
- * flow sources at undetermined 1-junctions (file order), then, when bonds
+ * flow sources at undetermined 1-junctions (by name), then, when bonds
  * are still open and no 1-junction is undetermined, a 1-junction inserted
- * into the first open bond. Generalised forces (4.10.2) as text. */
+ * into the open bond of the smallest number. Generalised forces (4.10.2) as text. */
 #include <string.h>
 
 #include "causality/causality_int.h"
@@ -27,7 +27,7 @@ static int j1_undetermined(const bg_ceng *E, int e) {
  * gets its stroke at it (weak); propagation does the rest. */
 static void attach(bg_ceng *E, int j) {
   const bg_model *m = E->m;
-  const int *bonds = m->elem_bonds + m->elem_bondadr[j];
+  const int *bonds = bg_ceng_bonds(E, j);
   int mark = E->nlog;
   E->step = E->ntrace + 1;
   E->art[j] = 1;
@@ -72,14 +72,14 @@ void bg_ceng_lagrange(bg_ceng *E) {
    * and an assigned bond stays assigned. */
   int j = 0, b = 0;
   for (;;) {
-    while (j < m->nelem && !j1_undetermined(E, j)) j++;
+    while (j < m->nelem && !j1_undetermined(E, E->elem_order[j])) j++;
     if (j < m->nelem) {
-      attach(E, j);
+      attach(E, E->elem_order[j]);
       continue;
     }
-    while (b < m->nbond && !bg_ceng_open(E, b)) b++;
+    while (b < m->nbond && !bg_ceng_open(E, E->bond_order[b])) b++;
     if (b == m->nbond) break;
-    insert(E, b);
+    insert(E, E->bond_order[b]);
   }
 }
 

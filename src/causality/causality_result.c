@@ -41,7 +41,7 @@ typedef struct conflicts {
 static void add_conflict(const bg_ceng *E, conflicts *c, int e) {
   const bg_model *m = E->m;
   int kind = m->elem_kind[e], deg = m->elem_nbond[e], bad = bg_ceng_badness(E, e);
-  const int *bonds = m->elem_bonds + m->elem_bondadr[e];
+  const int *bonds = bg_ceng_bonds(E, e); /* by number */
   int type = 2, degree = 1, strong_at = -1; /* -1: list every bond */
   if (bg_elem_is_junction(kind)) {
     int strong = kind == BG_ELEM_J0 ? E->nat[e] : E->naway[e] + E->art[e];

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* SCAP (Karnopp–Rosenberg) and relaxed causality (Joseph–Martens) on the
- * engine of causality.c. Ties go in file order everywhere: fixed strokes by
- * bond order, then sources, stores and resistors by element order, then
- * internal bonds by bond order. */
+ * engine of causality.c. Ties never follow the order of the statements:
+ * fixed strokes by bond number, then sources, stores and resistors by name
+ * (natural order: R2 before R10), then internal bonds by number
+ * (E->bond_order, E->elem_order; docs/causality.md, "Ties"). */
 #include <stdlib.h>
 
 #include "causality/causality_int.h"
@@ -41,10 +42,11 @@ void bg_ceng_block(bg_ceng *E, int relaxed) {
     }
 }
 
-/* Step 1a: strokes written in the model, in bond order. */
+/* Step 1a: strokes written in the model, by bond number. */
 void bg_ceng_fixed(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int b = 0; b < m->nbond; b++) {
+  for (int i = 0; i < m->nbond; i++) {
+    int b = E->bond_order[i];
     if (m->bond_fix[b] == BG_FIX_NONE || !bg_ceng_open(E, b)) continue;
     bg_strbuf sb = {0};
     int mark = E->nlog;
@@ -58,11 +60,11 @@ void bg_ceng_fixed(bg_ceng *E) {
   }
 }
 
-/* Step 1b: every source in file order. */
+/* Step 1b: every source, by name. */
 void bg_ceng_sources(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int e = 0; e < m->nelem; e++) {
-    int b = bg_ceng_port(E, e);
+  for (int i = 0; i < m->nelem; i++) {
+    int e = E->elem_order[i], b = bg_ceng_port(E, e);
     if (!bg_elem_is_source(m->elem_kind[e]) || b < 0) continue;
     bg_strbuf sb = {0};
     if (!bg_ceng_open(E, b)) {
@@ -100,11 +102,11 @@ static void store_note(bg_ceng *E, int e) {
 }
 
 /* Step 2: integral causality (or the option, or van Dijk's derivative) for
- * each store not yet causal, in file order. */
+ * each store not yet causal, by name. */
 static void stores(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int e = 0; e < m->nelem; e++) {
-    int b = bg_ceng_port(E, e);
+  for (int i = 0; i < m->nelem; i++) {
+    int e = E->elem_order[i], b = bg_ceng_port(E, e);
     if (!bg_elem_is_store(m->elem_kind[e]) || b < 0) continue;
     if (!bg_ceng_open(E, b)) {
       store_note(E, e);
@@ -176,8 +178,8 @@ static void resistor_note(bg_ceng *E, int e) {
 
 static void resistors(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int e = 0; e < m->nelem; e++) {
-    int b = bg_ceng_port(E, e);
+  for (int i = 0; i < m->nelem; i++) {
+    int e = E->elem_order[i], b = bg_ceng_port(E, e);
     if (m->elem_kind[e] != BG_ELEM_R || b < 0) continue;
     if (bg_ceng_open(E, b)) resistor(E, e);
     else resistor_note(E, e);
@@ -185,7 +187,7 @@ static void resistors(bg_ceng *E) {
 }
 
 /* Relaxed (Joseph-Martens, Section 4.9): each nonlinear R still open gets
- * its law's causality, one at a time in file order ("assigned in the order
+ * its law's causality, one at a time by name ("assigned in the order
  * R1, R2, R3, R4"), each followed by propagation, which may complete a
  * junction by elimination before the next resistor is assigned; the
  * resistors not yet assigned stay blocked, so propagation never decides
@@ -195,12 +197,14 @@ static void resistors(bg_ceng *E) {
  * conflicts instead of Figure 4.25's type 1 and type 2.) */
 static void nonlinear_resistors(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int e = 0; e < m->nelem; e++) /* decided earlier by a fixed stroke or a source */
+  for (int i = 0; i < m->nelem; i++) { /* decided earlier by a fixed stroke or a source */
+    int e = E->elem_order[i];
     if (bg_ceng_r_nonlinear(m, e) && bg_ceng_port(E, e) >= 0 &&
         !bg_ceng_open(E, bg_ceng_port(E, e)))
       resistor_note(E, e);
-  for (int e = 0; e < m->nelem; e++) {
-    int b = bg_ceng_port(E, e);
+  }
+  for (int i = 0; i < m->nelem; i++) {
+    int e = E->elem_order[i], b = bg_ceng_port(E, e);
     if (b < 0 || !bg_ceng_r_nonlinear(m, e) || !bg_ceng_open(E, b)) continue;
     int caus = bg_ceng_r_natural(m, e);
     bg_strbuf sb = {0};
@@ -215,7 +219,7 @@ static void nonlinear_resistors(bg_ceng *E) {
 }
 
 /* Step 4: the first open internal bond (both ends junction-structure nodes)
- * in bond order gets its stroke at its head if that propagates without
+ * by bond number gets its stroke at its head if that propagates without
  * conflict, else at its tail (else at its head, conflict recorded). A bond
  * cursor only moves forward: bonds never lose their stroke outside a trial. */
 static int is_js(int kind) { return bg_elem_is_junction(kind) || bg_elem_is_twoport(kind); }
@@ -241,14 +245,16 @@ static void choose_one(bg_ceng *E, int b, int internal) {
 
 static void choices(bg_ceng *E) {
   const bg_model *m = E->m;
-  for (int b = 0; b < m->nbond; b++)
+  for (int i = 0; i < m->nbond; i++) {
+    int b = E->bond_order[i];
     if (bg_ceng_open(E, b) && is_js(m->elem_kind[m->bond_tail[b]]) &&
         is_js(m->elem_kind[m->bond_head[b]]))
       choose_one(E, b, 1);
+  }
   /* Only reachable when a one-port was left open (it cannot be after steps
    * 1-3); kept so that the result is always complete. */
-  for (int b = 0; b < m->nbond; b++)
-    if (bg_ceng_open(E, b)) choose_one(E, b, 0);
+  for (int i = 0; i < m->nbond; i++)
+    if (bg_ceng_open(E, E->bond_order[i])) choose_one(E, E->bond_order[i], 0);
 }
 
 void bg_ceng_scap(bg_ceng *E, int relaxed) {

@@ -3,7 +3,7 @@
  * choice of step 4 closed a causal loop of gain +1, or SCAP ended with a
  * conflict, the junction structure imposes a constraint among stores (a
  * nodicity or cut-set law). The stores on the loop's nodes (or at the
- * conflicting node) are the candidates: the first one in file order whose
+ * conflicting node) are the candidates: the first one by name (those without a given initial value first) whose
  * derivative causality lowers the number of such problems gets it, and SCAP
  * runs again, until none is left or no candidate helps.
  *
@@ -84,7 +84,7 @@ static int expand_junction(vd *V, int u, int x, int s0, int *qt) {
    * from the strong bond and goes out unchanged on every weak bond; the
    * other signal goes from a weak bond to the strong one with a sign */
   int fan_out = j0 != flow;
-  const int *bonds = m->elem_bonds + m->elem_bondadr[x];
+  const int *bonds = bg_ceng_bonds(E, x);
   for (int i = 0; i < m->elem_nbond[x]; i++) {
     int w = bonds[i];
     if (w == b || bg_ceng_at(E, w, x) < 0) continue;
@@ -174,9 +174,11 @@ static int problems(vd *V, int record) {
   bg_ceng *E = V->E;
   const bg_model *m = E->m;
   int n = 0;
-  for (int b = 0; b < m->nbond; b++)
-    if (E->a->bond_reason[b] == BG_REASON_CHOICE) n += unity_loop(V, b, record);
-  for (int e = 0; e < m->nelem; e++) {
+  for (int i = 0; i < m->nbond; i++)
+    if (E->a->bond_reason[E->bond_order[i]] == BG_REASON_CHOICE)
+      n += unity_loop(V, E->bond_order[i], record);
+  for (int i = 0; i < m->nelem; i++) {
+    int e = E->elem_order[i];
     if (!bg_ceng_badness(E, e)) continue;
     n++;
     if (!record) continue;
@@ -209,14 +211,18 @@ static int round_once(vd *V, int nprob) {
   bg_sb_clear(&V->why);
   problems(V, 1);
   if (V->ncand == 0 && V->nloops > 0) all_integral_stores(V);
-  for (int e = 0; e < m->nelem; e++) {
-    if (!V->cand[e]) continue;
-    E->force_der[e] = 1;
-    run_scap(E);
-    int better = problems(V, 0) < nprob;
-    E->force_der[e] = 0;
-    if (better) return e;
-  }
+  /* a store whose initial value the model gives is tried last: its value
+   * stays the one the user wrote when another store can be the dependent one */
+  for (int given = 0; given < 2; given++)
+    for (int i = 0; i < m->nelem; i++) {
+      int e = E->elem_order[i];
+      if (!V->cand[e] || (m->elem_init && m->elem_init[e] >= 0) != given) continue;
+      E->force_der[e] = 1;
+      run_scap(E);
+      int better = problems(V, 0) < nprob;
+      E->force_der[e] = 0;
+      if (better) return e;
+    }
   return -1;
 }
 

@@ -243,24 +243,40 @@ static int structurally_regular(ir_work *W) {
  * choice open among regular ones): an algebraic unknown's (it stays
  * algebraic), a dependent store's (it is in derivative causality already),
  * a state whose initial value the model does not state, then the others;
- * within a group in the order of the unknowns. */
-static int pref_key(const ir_work *W, int v) {
+ * within a group by name (cmp_pref). */
+static int pref_group(const ir_work *W, int v) {
   const bg_eqsys *s = W->s;
   const bg_model *m = s->m;
-  int j = W->v_unk[v], g;
-  if (j >= s->nx) g = 0;
-  else if (s->row_kind[j] == 1) g = 1;
-  else {
-    int root = s->u_elem[j] >= 0 ? m->elem_init[s->u_elem[j]] : s->u_state[j] >= 0 ? m->state_init[s->u_state[j]] : -1;
-    g = root < 0 ? 2 : 3;
-  }
-  return (g * (W->n + 1) + j) * (IR_MAX_ORDER + 2) + W->v_ord[v];
+  int j = W->v_unk[v];
+  if (j >= s->nx) return 0;
+  if (s->row_kind[j] == 1) return 1;
+  int root = s->u_elem[j] >= 0 ? m->elem_init[s->u_elem[j]] : s->u_state[j] >= 0 ? m->state_init[s->u_state[j]] : -1;
+  return root < 0 ? 2 : 3;
 }
 
+/* The store's or state's name, or NULL (an algebraic unknown). */
+static const char *pref_name(const ir_work *W, int v) {
+  const bg_eqsys *s = W->s;
+  int j = W->v_unk[v];
+  if (j >= s->nx) return NULL;
+  return s->u_elem[j] >= 0 ? s->m->elem_name[s->u_elem[j]]
+         : s->u_state[j] >= 0 ? s->m->state_name[s->u_state[j]] : NULL;
+}
+
+/* Within a group stores and states go by name (natural order), not by the
+ * order of the unknowns, which follows the order of the statements: moving
+ * a line must not move a dummy derivative (docs/causality.md, "Ties"). */
 static int cmp_pref(const void *a, const void *b, void *ctx) {
   const ir_work *W = ctx;
-  int ka = pref_key(W, *(const int *)a), kb = pref_key(W, *(const int *)b);
-  return ka < kb ? -1 : ka > kb;
+  int va = *(const int *)a, vb = *(const int *)b;
+  int ga = pref_group(W, va), gb = pref_group(W, vb);
+  if (ga != gb) return ga < gb ? -1 : 1;
+  const char *na = pref_name(W, va), *nb = pref_name(W, vb);
+  int c = na && nb ? bg_natural_cmp(na, nb) : 0;
+  if (c) return c;
+  int ja = W->v_unk[va], jb = W->v_unk[vb];
+  if (ja != jb) return ja < jb ? -1 : 1;
+  return (W->v_ord[va] > W->v_ord[vb]) - (W->v_ord[va] < W->v_ord[vb]);
 }
 
 /* 1 when the columns of M (rows x cols, column-major) are independent:

@@ -32,7 +32,12 @@ static void bonds_list(const bg_model *m, const int *b, int n, bg_strbuf *sb) {
 /* Gain +1 to within rounding: the loop equation (1 - g) x = ... is singular. */
 static int unity(double g) { return fabs(g - 1.0) <= 1e-12; }
 
+/* A class 5 loop costs index only when the analysis says so: when its two
+ * constraints determine its two algebraic variables the prediction is 1
+ * (src/analysis/form.c, cloop_constrains_states) and the equations are
+ * integrated like any other index-1 DAE. */
 static int class5_loop(const bg_analysis *a) {
+  if (a->index_predicted < 2) return -1;
   for (int l = 0; l < a->ncloop; l++)
     if (a->cloop_class[l] == 5) return l;
   return -1;
@@ -98,8 +103,13 @@ static void say_numeric(const bg_analysis *a, const bg_index_facts *f, bg_strbuf
 }
 
 static int singular_tloop(const bg_analysis *a) {
-  for (int t = 0; t < a->ntloop; t++)
+  for (int t = 0; t < a->ntloop; t++) {
+    /* the open loop of a class 5 causal loop the analysis found harmless
+     * (class5_loop): its constraint determines the other loop variable */
+    if (a->index_predicted < 2 && a->tloop_cause[t] && strncmp(a->tloop_cause[t], "causal loop", 11) == 0)
+      continue;
     if (a->tloop_algebraic[t] && unity(a->tloop_gain_value[t])) return t;
+  }
   return -1;
 }
 
