@@ -71,10 +71,12 @@ target_link_libraries(prop_libjson PRIVATE libbgdraw)
 add_test(NAME property_short COMMAND bash ${CMAKE_SOURCE_DIR}/tests/property/short.sh
          $<TARGET_FILE:bgdraw> $<TARGET_FILE:prop_libjson>)
 add_test(NAME property_shrink COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/property/prop.py --self-test)
-set_tests_properties(property_short property_shrink PROPERTIES TIMEOUT 900
+add_test(NAME property_found COMMAND bash ${CMAKE_SOURCE_DIR}/tests/property/found.sh $<TARGET_FILE:bgdraw>)
+set_tests_properties(property_short property_shrink property_found PROPERTIES TIMEOUT 900
                      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_property(TEST property_short APPEND PROPERTY LABELS slow)
 bg_label(property_shrink)
+bg_label(property_found)
 
 # test_threads drives runs through the outputs table (src/output), which the
 # executable and libbgdraw compile in; the test links the renderers directly.

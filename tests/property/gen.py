@@ -17,13 +17,53 @@ import random
 
 
 class Elem:
-    """kind: 0 1 C I R Se Sf MSe MSf TF GY MTF MGY. `decl` is the text after
-    the name (`= 2` or `: e = ...`); `energy(x)` the stored energy of a store
-    as a function of its state (None for others)."""
+    """kind: 0 1 C I R Se Sf MSe MSf TF GY MTF MGY, CF and RF (a C or R field
+    of two ports), De and Df (detectors), LC and RLC (instances of the
+    submodels of SUBMODELS). `decl` is the text after the name (`= 2` or
+    `: e = ...`); `states` the state variables after `NAME.` (`q`, `pa.q`,
+    `c.q`); `energy(*x)` the stored energy as a function of them (None for
+    elements that store none); `ports` the port names of a multiport (bond
+    ends `NAME.port`)."""
 
-    def __init__(self, kind, name, decl="", energy=None, mods=()):
+    def __init__(self, kind, name, decl="", energy=None, mods=(), states=None, ports=()):
         self.kind, self.name, self.decl, self.energy = kind, name, decl, energy
         self.mods = list(mods)  # names of elements its expression reads
+        self.word = {"CF": "C", "RF": "R"}.get(kind, kind)  # the statement's first word
+        if states is None:
+            states = ["q"] if kind == "C" else ["p"] if kind == "I" else []
+        self.states = list(states)
+        self.ports = list(ports)
+
+
+# Two submodels the generator instantiates as one-ports (port a): a lossless
+# series LC and a passive series RLC. Written before the model's statements.
+SUBMODELS = {
+    "LC": """submodel LC(k = 1, m = 1)
+  port a
+  1 s
+  C c = k
+  I l = m
+  bond a -> s
+  bond s -> c
+  bond s -> l
+end""",
+    "RLC": """submodel RLC(k = 1, m = 1, r = 1)
+  port a
+  1 s
+  C c = k
+  I l = m
+  R d = r
+  bond a -> s
+  bond s -> c
+  bond s -> l
+  bond s -> d
+end""",
+}
+
+
+def base(end):
+    """The element of a bond end (`K1.pa` -> `K1`)."""
+    return end.split(".")[0]
 
 
 class Model:
@@ -47,16 +87,21 @@ class Model:
         return m
 
     def stores(self):
-        return [x for x in self.elems if x.kind in ("C", "I")]
+        """Elements with states (C, I, C fields, instances), in order."""
+        return [x for x in self.elems if x.states]
+
+    def detectors(self):
+        return [x for x in self.elems if x.kind in ("De", "Df")]
 
     def plot_columns(self):
         """The plot expressions (model names), in a fixed logical order: every
-        bond's effort and flow, then every store's state."""
+        bond's effort and flow, then every state, then every detector."""
         cols = []
         for b in self.bonds:
             cols += ["e%d" % b[0], "f%d" % b[0]]
         for x in self.stores():
-            cols.append("%s.%s" % (x.name, "q" if x.kind == "C" else "p"))
+            cols += ["%s.%s" % (x.name, v) for v in x.states]
+        cols += [x.name for x in self.detectors()]
         return cols
 
     def text(self, names=None, order=None, numbers=None):
@@ -69,14 +114,14 @@ class Model:
         rn = lambda s: _rename(s, nm, num)
         stmts = []
         for x in self.elems:
-            stmts.append("%-3s %s %s" % (x.kind, nm.get(x.name, x.name), rn(x.decl)))
+            stmts.append("%-3s %s %s" % (x.word, nm.get(x.name, x.name), rn(x.decl)))
         for b in self.bonds:
-            stmts.append("bond %d %s -> %s" % (num.get(b[0], b[0]), nm.get(b[1], b[1]),
-                                               nm.get(b[2], b[2])))
+            stmts.append("bond %d %s -> %s" % (num.get(b[0], b[0]), rn(b[1]), rn(b[2])))
         if order:
             stmts = [stmts[i] for i in order]
         cols = [rn(c) for c in self.plot_columns()]
-        out = ["model prop \"generated (%s)\"" % self.cls] + stmts
+        subs = sorted({x.kind for x in self.elems if x.kind in SUBMODELS})
+        out = ["model prop \"generated (%s)\"" % self.cls] + [SUBMODELS[k] for k in subs] + stmts
         out.append(self.sim)
         out.append("plot " + ", ".join(cols))
         return "\n".join(out) + "\n"
@@ -140,19 +185,34 @@ def generate(seed, max_elems=100):
         if kind == "R":
             r = _val(rng, 0.2, 2)
             u = rng.random()
-            if u < 0.6:
+            if u < 0.5:
                 return add(Elem(kind, n, "= %g" % r))
-            if u < 0.8:
+            if u < 0.65:
                 return add(Elem(kind, n, ": e = %g*f + %g*f^3" % (r, _val(rng, 0.05, 0.5))))
-            return add(Elem(kind, n, ": f = %g*e" % r))
+            if u < 0.75:
+                return add(Elem(kind, n, ": f = %g*e" % r))
+            if u < 0.88:  # a switching law (events): two slopes, passive
+                return add(Elem(kind, n, ": e = if(f > 0, %g*f, %g*f)" % (r, _val(rng, 0.2, 2))))
+            # a table through the origin, increasing: passive, kinks at +-1
+            # (none at 0, where a model starting at rest would sit)
+            r2 = _val(rng, 0.2, 2)
+            return add(Elem(kind, n, ": e = table(f, [-20, %g; -1, %g; 1, %g; 20, %g])" % (
+                -r - 19 * r2, -r, r, r + 19 * r2)))
         if kind in ("Se", "Sf"):
             u = rng.random()
-            if u < 0.4:
+            if u < 0.35:
                 return add(Elem(kind, n, "= %g" % _val(rng)))
-            if u < 0.7:
+            if u < 0.6:
                 return add(Elem(kind, n, "= %g*sin(%g*t)" % (_val(rng), _val(rng))))
-            return add(Elem(kind, n, "= %g*step(t - %g)" % (_val(rng), _val(rng, 0.1, 1))))
-        # modulated source: reads a store's state when there is one
+            if u < 0.85:
+                return add(Elem(kind, n, "= %g*step(t - %g)" % (_val(rng), _val(rng, 0.1, 1))))
+            return add(Elem(kind, n, "= table(t, [0, 0; %g, %g; 3, %g])" % (
+                _val(rng, 0.2, 1), _val(rng), _val(rng))))
+        # modulated source: reads a detector or a store's state when there is one
+        dets = [x for x in m.elems if x.kind in ("De", "Df")]
+        if dets and rng.random() < 0.5:
+            d = rng.choice(dets)
+            return add(Elem(kind, n, "= %g*%s" % (_val(rng, 0.1, 0.5), d.name), mods=[d.name]))
         if stores:
             s = rng.choice(stores)
             st = "q" if s.kind == "C" else "p"
@@ -211,6 +271,11 @@ def generate(seed, max_elems=100):
         for x in b:
             if x in degree:
                 degree[x] += 1
+    # detectors on junctions (a modulated source may read one)
+    if rng.random() < 0.3:
+        for _ in range(rng.choice([1, 1, 2])):
+            j = rng.choice(juncs)
+            add(Elem("De" if j.kind == "0" else "Df", name("d"), "= " + j.name, mods=[j.name]))
     # one-ports: at least one per junction, more up to the target size
     left = max(0, target - len(m.elems))
     homes = list(juncs)
@@ -221,6 +286,43 @@ def generate(seed, max_elems=100):
         if rng.random() < 0.25:
             out = not out  # the other direction: same physics
         bonds.append([e.name, j.name] if out else [j.name, e.name])
+        degree[j.name] += 1
+    # multiports: a C field (two ports, energy with a coupling term, positive
+    # definite), an R field (symmetric positive definite, passive), an
+    # instance of a submodel (SUBMODELS) as a one-port; detectors on junctions
+    if target >= 5 and rng.random() < 0.25:
+        k1, k2 = _val(rng), _val(rng)
+        c = float("%.3g" % (rng.uniform(-0.8, 0.8) / (k1 * k2) ** 0.5))
+        q1, q2 = (float("%.3g" % rng.uniform(-1, 1)) for _ in range(2))
+        n = name("K")
+        e = add(Elem("CF", n, "(pa, pb) : energy = pa.q^2/(2*%g) + pb.q^2/(2*%g) + %g*pa.q*pb.q [q0 = (%g, %g)]"
+                     % (k1, k2, c, q1, q2),
+                     (lambda k1, k2, c: lambda a, b: a * a / (2 * k1) + b * b / (2 * k2) + c * a * b)(k1, k2, c),
+                     states=["pa.q", "pb.q"], ports=["pa", "pb"]))
+        stores.append(e)
+        for port in e.ports:
+            j = rng.choice(juncs)
+            bonds.append([j.name, n + "." + port] if rng.random() < 0.8 else [n + "." + port, j.name])
+            degree[j.name] += 1
+    if cls != "lossless" and target >= 5 and rng.random() < 0.2:
+        r1, r2 = _val(rng, 0.5, 2), _val(rng, 0.5, 2)
+        r12 = float("%.3g" % (rng.uniform(-0.8, 0.8) * (r1 * r2) ** 0.5))
+        n = name("RF")
+        e = add(Elem("RF", n, "(pa, pb) : pa.e = %g*pa.f + %g*pb.f, pb.e = %g*pa.f + %g*pb.f" % (r1, r12, r12, r2),
+                     ports=["pa", "pb"]))
+        for port in e.ports:
+            j = rng.choice(juncs)
+            bonds.append([j.name, n + "." + port] if rng.random() < 0.8 else [n + "." + port, j.name])
+            degree[j.name] += 1
+    if target >= 4 and rng.random() < 0.25:
+        kind = "LC" if cls == "lossless" or rng.random() < 0.5 else "RLC"
+        k, mm = _val(rng), _val(rng)
+        n = name("S")
+        args = "(k = %g, m = %g%s)" % (k, mm, ", r = %g" % _val(rng, 0.2, 2) if kind == "RLC" else "")
+        e = add(Elem(kind, n, args, (lambda k, mm: lambda q, p: q * q / (2 * k) + p * p / (2 * mm))(k, mm),
+                     states=["c.q", "l.p"], ports=["a"]))
+        j = rng.choice(juncs)
+        bonds.append([j.name, n + ".a"])  # the submodel takes power in at a
         degree[j.name] += 1
     for j in juncs:  # every junction has two bonds or more
         while degree[j.name] < 2:
@@ -236,3 +338,65 @@ def _finish(m, rng):
     t_end = rng.choice([1, 2, 3])
     m.sim = "simulate t_end = %g, dt = %g, rtol = 1e-9, atol = 1e-11" % (t_end, t_end / 40)
     return m
+
+
+def parse(text):
+    """A model written by text() back as data (the shrunk findings in
+    tests/property/found/ are re-checked this way: prop.py --model). Only
+    what this generator writes is understood."""
+    import re
+    m = Model("driven")
+    inside = False
+    for line in text.splitlines():
+        line = "" if line.startswith("#") else line.rstrip()
+        w = line.split(None, 2)
+        if not w:
+            continue
+        if w[0] == "submodel":
+            inside = True
+        if inside:
+            inside = w[0] != "end"
+            continue
+        if w[0] == "model":
+            mm = re.search(r"\((\w+)\)", line)
+            m.cls = mm.group(1) if mm else "driven"
+        elif w[0] == "simulate":
+            m.sim = line
+        elif w[0] == "plot":
+            continue
+        elif w[0] == "bond":
+            mm = re.match(r"bond (\d+) (\S+) -> (\S+)$", line)
+            m.bonds.append([int(mm.group(1)), mm.group(2), mm.group(3)])
+        else:
+            m.elems.append(_elem_of(w[0], w[1], w[2] if len(w) > 2 else ""))
+    return m
+
+
+def _elem_of(word, name, decl):
+    """One element statement as text() writes it, with its energy."""
+    import re
+    num = r"(-?[0-9.]+(?:e[+-]?[0-9]+)?)"
+    reads = re.findall(r"([A-Za-z_]\w*)\.[qp]\b", decl) + re.findall(r"\*(d\d+)\b", decl)
+    if word in ("De", "Df"):
+        return Elem(word, name, decl, mods=[decl.split()[-1]])
+    if word in SUBMODELS:
+        mm = re.match(r"\(k = %s, m = %s" % (num, num), decl)
+        k, mass = float(mm.group(1)), float(mm.group(2))
+        return Elem(word, name, decl, lambda q, p: q * q / (2 * k) + p * p / (2 * mass),
+                    states=["c.q", "l.p"], ports=["a"])
+    if decl.startswith("(pa, pb)"):
+        if word == "R":
+            return Elem("RF", name, decl, ports=["pa", "pb"])
+        mm = re.search(r"pa.q\^2/\(2\*%s\) \+ pb.q\^2/\(2\*%s\) \+ %s\*pa.q\*pb.q" % (num, num, num), decl)
+        k1, k2, c = (float(mm.group(i)) for i in (1, 2, 3))
+        return Elem("CF", name, decl, lambda a, b: a * a / (2 * k1) + b * b / (2 * k2) + c * a * b,
+                    states=["pa.q", "pb.q"], ports=["pa", "pb"])
+    if word not in ("C", "I"):
+        return Elem(word, name, decl, mods=reads)
+    mm = re.match(r"= %s" % num, decl)
+    if mm:
+        k = float(mm.group(1))
+        return Elem(word, name, decl, lambda x: x * x / (2 * k))
+    mm = re.match(r": [ef] = [qp]/%s \+ %s\*[qp]\^3" % (num, num), decl)
+    k, a = float(mm.group(1)), float(mm.group(2))
+    return Elem(word, name, decl, lambda x: x * x / (2 * k) + a * x ** 4 / 4)
