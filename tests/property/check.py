@@ -22,7 +22,7 @@ DOCUMENTED_EXITS = {0, 1, 2, 3, 4}
 CHECKS = ["robust", "accepted", "junction_power", "twoport_power", "tellegen", "detector",
           "energy_lossless", "energy_passive", "library", "reverse", "rename", "rename_shuffled",
           "reorder", "reorder_reduced", "reorder_strokes", "renumber", "renumber_shuffled",
-          "shuffled_outcome", "methods_agree", "index_agree", "export_c", "merge_stores"]
+          "shuffled_outcome", "methods_agree", "index_agree", "export_c", "merge_stores", "dc_gain"]
 
 
 class Run:
@@ -102,6 +102,7 @@ def check(bgdraw, m, workdir, seed=0, lib=None):
     _reverse(res, bgdraw, m, workdir, seed, rows)
     _export_c(res, bgdraw, m, workdir, seed, an, rows)
     _merge_stores(res, bgdraw, m, workdir)
+    _dc_gain(res, bgdraw, m, workdir)
     if "shuffled_outcome" not in res:
         res["shuffled_outcome"] = ("pass", "")
     return res
@@ -623,6 +624,123 @@ def _merge_stores(res, bgdraw, m, workdir):
 
 
 SUBMODEL_KINDS = ("LC", "RLC")
+
+
+def _linear_variant(m):
+    """The model made linear and driven by constants, for the DC gain: every
+    store's law its linear part, every R its slope (a switching law its
+    first, a table its middle segment's), modulated two-ports their constant
+    part, every source a constant (MSe, MSf become Se, Sf), an effort source
+    on the first junction when there is none, every store at rest."""
+    import re
+    v = m.copy()
+    v.elems = []
+    for i, x in enumerate(m.elems):
+        x = copy.copy(x)
+        d = re.sub(r"\s*\[(?:[qp]0 = [^\]]+|q0 = \([^)]*\))\]", "", x.decl)
+        if x.kind in ("C", "I"):
+            d = re.sub(r"^: [ef] = [qp]/([0-9.e+-]+) \+ .*$", r"= \1", d)
+        elif x.kind == "R":
+            mm = re.match(r": e = (?:if\(f > 0, )?([0-9.e+-]+)\*f", d)
+            if mm:
+                d = "= " + mm.group(1)
+            mm = re.match(r": e = table\(f, \[[^;]+; ([0-9.e+-]+), ([0-9.e+-]+);", d)
+            if mm:
+                d = "= %g" % (float(mm.group(2)) / float(mm.group(1)))
+        elif x.kind in ("MTF", "MGY"):
+            x.kind = x.word = x.kind[1:]
+            d = "= " + re.match(r"= ([0-9.e+-]+)", d).group(1)
+        elif x.kind in ("Se", "Sf", "MSe", "MSf"):
+            x.kind = x.word = x.kind.lstrip("M")
+            d = "= %g" % (0.5 + 0.25 * (i % 5))
+            x.mods = []
+        x.decl = d
+        v.elems.append(x)
+    if not any(x.kind in ("Se", "Sf") for x in v.elems):
+        juncs = [x for x in v.elems if x.kind in ("0", "1")]
+        if not juncs:
+            return None
+        v.elems.append(gen_Elem("Se", "Uprop", "= 1"))
+        v.bonds.append([max(b[0] for b in v.bonds) + 1, "Uprop", juncs[0].name])
+    v.elems = [x for x in v.elems if x.kind not in ("De", "Df")]  # nothing reads them any more
+    return v
+
+
+def _dc_gain(res, bgdraw, m, workdir):
+    """The linear analysis' DC gain is the simulated steady state: the model
+    made linear and driven by constants (_linear_variant), when it is
+    asymptotically stable (every pole of --linear json left of -1e-3),
+    simulated from rest for 40 time constants of its slowest pole: every
+    resistor's effort and flow ends at the sum over the sources of its DC
+    gain from each times the source's value, to 1e-6 of the largest."""
+    import re
+    v = _linear_variant(m)
+    if v is None:
+        res["dc_gain"] = ("skip", "no junction for a source")
+        return
+    m = v
+    src = [x for x in m.elems if x.kind in ("Se", "Sf")]
+    u = {x.name: float(x.decl[2:]) for x in src}
+    kinds = {x.name: x.kind for x in m.elems}
+    outs = []
+    for b in m.bonds:
+        if "R" in (kinds.get(b[1]), kinds.get(b[2])):
+            outs += ["e%d" % b[0], "f%d" % b[0]]
+    if not outs:
+        res["dc_gain"] = ("skip", "no resistor")
+        return
+    names = ["y%d" % i for i in range(len(outs))]
+    base_text = m.text()
+    text = re.sub(r"\nplot .*\n", "\noutput " + ", ".join("%s = %s" % (n, o) for n, o in zip(names, outs)) +
+                  "\nplot " + ", ".join(outs) + "\n", base_text)
+    lin = run(bgdraw, text, workdir, "m_dc", ["--linear", "json"], [])
+    if not _robust(res, lin, "linear"):
+        res["dc_gain"] = ("fail", "crashed or hung")
+        return
+    try:
+        L = json.loads(lin.out)
+    except ValueError:
+        L = None
+    if lin.status != 0 or not L or L.get("status") != "ok" or not L.get("poles") or not L.get("transfer_functions"):
+        res["dc_gain"] = ("skip", "no linear analysis")
+        return
+    slow = max(p["re"] for p in L["poles"])
+    if not slow < -1e-3:
+        res["dc_gain"] = ("skip", "not asymptotically stable")
+        return
+    t_end = 40 / -slow
+    if t_end > 1e4:
+        res["dc_gain"] = ("skip", "too slow")
+        return
+    gain = {}
+    for tf in L["transfer_functions"]:
+        gain.setdefault(tf["output"], {})[tf["input"]] = tf["dc_gain"]
+    text = re.sub(r"\nsimulate .*\n", "\nsimulate t_end = %.6g, dt = %.6g, rtol = 1e-10, atol = 1e-12\n" % (
+        t_end, t_end / 40), text)
+    r = run(bgdraw, text, workdir, "m_dc", ["--simulate"], ["csv"])
+    if not _robust(res, r, "dc_gain"):
+        res["dc_gain"] = ("fail", "crashed or hung")
+        return
+    if r.status != 0:
+        res["dc_gain"] = ("skip", "the steady-state run stops (exit %d)" % r.status)
+        return
+    last = read_csv(r.files["csv"])[1][-1]
+    want = {}
+    for n in names:
+        g = gain.get(n) or {}
+        if len(g) != len(u) or any(x is None for x in g.values()):
+            continue
+        want[n] = sum(g[i] * u[i] for i in u)
+    if not want:
+        res["dc_gain"] = ("skip", "no finite DC gain")
+        return
+    scale = max(abs(w) for w in want.values())
+    for k, n in enumerate(names):
+        if n in want and abs(last[1 + k] - want[n]) > 1e-6 * scale + 1e-9:
+            res["dc_gain"] = ("fail", "%s (%s) at t = %g: %.12g, the DC gains give %.12g" % (
+                n, outs[k], last[0], last[1 + k], want[n]))
+            return
+    res["dc_gain"] = ("pass", "")
 
 
 def _variant_ok(res, name, r, rows, ref=None):
