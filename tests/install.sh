@@ -16,7 +16,9 @@ cmake --install "$BUILD" --prefix "$tmp/p" >"$tmp/install.log" 2>&1; st=$?
 check "cmake --install (got $st)" $st
 for f in bin/bgdraw share/bgdraw/styles/print.style share/man/man1/bgdraw.1 \
          share/bash-completion/completions/bgdraw include/bgdraw.h include/bgdraw_version.h \
-         share/doc/bgdraw/cli.md share/doc/bgdraw/LICENSE share/doc/bgdraw/NEWS.md; do
+         share/doc/bgdraw/cli.md share/doc/bgdraw/LICENSE share/doc/bgdraw/NEWS.md \
+         share/bgdraw/contrib/sphinx/bgdraw_sphinx.py share/bgdraw/contrib/mkdocs/bgdraw_mkdocs.py \
+         share/bgdraw/contrib/pandoc/bgdraw.lua share/bgdraw/contrib/Makefile.example; do
   [ -f "$tmp/p/$f" ]; check "installed $f" $?
 done
 pc=$(find "$tmp/p" -name bgdraw.pc | head -1)

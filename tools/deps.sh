@@ -12,6 +12,7 @@ if [ "${1:-}" = "--tests" ]; then
   PKGS+=(python3 poppler-utils libxml2-utils  # checkers, PDF pages, SVG well-formedness
          python3-numpy python3-scipy octave   # the Python and Octave exports, reference solutions
          librsvg2-bin pandoc python3-sphinx   # SVG rasterisation check; contrib/ integrations
+         mkdocs                               # contrib/mkdocs (tests/contrib.sh)
          valgrind                             # tests/valgrind_outputs.sh
          python3-pytest jupyter-nbconvert     # the Python package's tests (python/tests),
          python3-ipykernel python3-nbformat   # a notebook executed headless
