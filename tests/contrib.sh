@@ -107,13 +107,14 @@ snap "$p/mkdocs/docs" >"$tmp/src.before"
 printf '# Other\n\nAs [](index.md#fig-load) shows.\n' >"$p/mkdocs/docs/other.md"
 bash "$p/run-mkdocs.sh" >"$tmp/out" 2>&1; st=$?
 check "mkdocs: the page's command builds the site (got $st: $(grep -m2 'WARNING\|ERROR' "$tmp/out"))" $st
-python3 - "$p/mkdocs/site/index.html" "$tmp/rlc.svg" "$p/mkdocs/site/other/index.html" <<'PY'; check "mkdocs: both figures with caption and number, inline SVG as bgdraw draws it, links read Figure N" $?
+python3 - "$p/mkdocs/site/index.html" "$tmp/rlc.svg" "$p/mkdocs/site/other/index.html" <<'PY'; check "mkdocs: both figures with caption and number, align and class, inline SVG as bgdraw draws it, links read Figure N" $?
 import re, sys
 html, svg, other = open(sys.argv[1]).read(), open(sys.argv[2]).read(), open(sys.argv[3]).read()
 fig = re.search(r'<figure id="fig-rlc">(.*?)</figure>', html, re.S).group(1)
 assert svg[svg.index("<svg"):].strip() in fig
 assert '<figcaption><span class="caption-number">Figure 1:</span> The series RLC circuit and its causal paths</figcaption>' in fig
-load = re.search(r'<figure id="fig-load">(.*?)</figure>', html, re.S).group(1)
+load = re.search(r'<figure id="fig-load" class="align-center">(.*?)</figure>', html, re.S).group(1)
+assert load.startswith('<div class="bgdraw wide" role="img" aria-label="A source and its load"><svg')
 assert '>R : Rl<' in load
 assert '<span class="caption-number">Figure 2:</span> A source and its load' in load
 assert '<a href="#fig-rlc">Figure 1</a> shows the causal paths; <a href="#fig-load">Figure 2</a>' in html
@@ -142,13 +143,14 @@ cd "$root" || exit 1
 snap "$p/pandoc" >"$tmp/src.before"
 bash "$p/run-pandoc.sh" >"$tmp/out" 2>"$tmp/err"; st=$?
 check "pandoc: the page's commands convert to HTML, LaTeX and docx (got $st: $(head -3 "$tmp/err"))" $st
-python3 - "$p/pandoc/doc.html" "$tmp/rlc.svg" <<'PY'; check "pandoc html: figures with caption and number, inline SVG, links read Figure N" $?
+python3 - "$p/pandoc/doc.html" "$tmp/rlc.svg" <<'PY'; check "pandoc html: figures with caption and number, align and class, inline SVG, links read Figure N" $?
 import re, sys
 html, svg = open(sys.argv[1]).read(), open(sys.argv[2]).read()
 fig = re.search(r'<figure id="fig-rlc">(.*?)</figure>', html, re.S).group(1)
 assert svg[svg.index("<svg"):].strip() in fig
 assert re.search(r"<figcaption>\s*Figure 1: The series RLC circuit and its causal paths\s*</figcaption>", fig)
-load = re.search(r'<figure id="fig-load">(.*?)</figure>', html, re.S).group(1)
+load = re.search(r'<figure id="fig-load" class="align-center">(.*?)</figure>', html, re.S).group(1)
+assert load.startswith('<div class="bgdraw wide" role="img" aria-label="A source and its load"><svg')
 assert '>R : Rl<' in load and re.search(r"<figcaption>\s*Figure 2: A source and its load", load)
 assert re.search(r'<a href="#fig-rlc">Figure 1</a> shows the causal paths;\s+<a\s+href="#fig-load">Figure 2</a>', html)
 assert "```" not in html and ".bgdraw" not in html

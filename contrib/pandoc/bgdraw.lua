@@ -16,9 +16,10 @@
     As [](#fig-rlc) shows, ...        (an empty link: "Figure 1")
 
 Attributes: the id (#NAME), caption, file (a model file, found as pandoc finds
-images: in the working directory, then in --resource-path), alt, format (HTML
-only: inline, the SVG in the page, the default; svg or png, an image) and
-bgdraw's show, highlight, style, layout, causality. A block with a caption is
+images: in the working directory, then in --resource-path), alt, and for HTML
+align (left, center, right), class (or .CLASS) and format (inline, the SVG in
+the page, the default; svg or png, an image), and bgdraw's show, highlight,
+style, layout, causality. A block with a caption is
 a real figure in every format (HTML <figure>, LaTeX figure with \caption and
 \label, docx caption), numbered in order ("Figure 1: ..."; LaTeX numbers
 its figures itself); an empty link to its id reads "Figure N" (in LaTeX,
@@ -32,7 +33,7 @@ block is an error. BGDRAW in the environment names the program.
 ]]
 local DRAW_OPTIONS = {"show", "highlight", "style", "layout", "causality"}
 local KNOWN = {show = 1, highlight = 1, style = 1, layout = 1, causality = 1, caption = 1,
-               file = 1, alt = 1, format = 1, name = 1}
+               file = 1, alt = 1, format = 1, name = 1, align = 1, class = 1}
 local bgdraw = os.getenv("BGDRAW") or "bgdraw"
 
 -- Stops the conversion with a message, without a Lua stack trace.
@@ -163,6 +164,14 @@ local function bgdraw_attrs(block)
     attrs[k] = v
   end
   if block.identifier ~= "" then attrs.name = block.identifier end
+  local classes = {attrs.class}
+  for _, c in ipairs(block.classes) do
+    if c ~= "bgdraw" then table.insert(classes, c) end
+  end
+  attrs.class = table.concat(classes, " ")
+  if attrs.align and not ({left = 1, center = 1, right = 1})[attrs.align] then
+    fail("```bgdraw align is left, center or right, not '" .. attrs.align .. "'")
+  end
   return attrs
 end
 
@@ -177,18 +186,20 @@ end
 local function figure_html(block, attrs, number, where)
   local fmt = attrs.format or "inline"
   local alt = attrs.alt or attrs.caption or "bond graph"
-  local id = attrs.name and (' id="' .. attrs.name .. '"') or ""
+  local id = (attrs.name and (' id="' .. attrs.name .. '"') or "") ..
+             (attrs.align and (' class="align-' .. attrs.align .. '"') or "")
+  local div = (attrs.class ~= "" and ("bgdraw " .. attrs.class) or "bgdraw")
   local body
   if fmt == "inline" then
     local svg = draw(block, attrs, "svg", where)
     svg = svg:sub((svg:find("<svg", 1, true))) -- no XML declaration inside HTML
-    body = '<div class="bgdraw" role="img" aria-label="' .. alt:gsub('"', "&quot;") .. '">' ..
+    body = '<div class="' .. div .. '" role="img" aria-label="' .. alt:gsub('"', "&quot;") .. '">' ..
            svg .. "</div>"
   elseif fmt == "svg" or fmt == "png" then
     local data = draw(block, attrs, fmt, where)
     local name = "bgdraw-" .. pandoc.utils.sha1(data) .. "." .. fmt
     pandoc.mediabag.insert(name, fmt == "svg" and "image/svg+xml" or "image/png", data)
-    body = '<div class="bgdraw"><img src="' .. name .. '" alt="' .. alt:gsub('"', "&quot;") .. '"/></div>'
+    body = '<div class="' .. div .. '"><img src="' .. name .. '" alt="' .. alt:gsub('"', "&quot;") .. '"/></div>'
   else
     fail(where .. ": format is inline, svg or png, not '" .. fmt .. "'")
   end
