@@ -563,10 +563,10 @@ def _merge_stores(res, bgdraw, m, workdir):
     """--transform merge-stores (a dependent linear store merged into its
     independent partner, A + k^2 D) keeps the dynamics: the model driven (an
     effort source sin(2t) added on its first junction if it has no source),
-    its cubic stores made linear, every store starting from 0 (so no initial value needs making
-    consistent), gives the same effort and flow at every resistor and source,
-    before and after (to 1e-5; the bonds along the merged path carry D's
-    share of the flow or effort before, not after)."""
+    its cubic stores made linear, every store starting from 0 (so no initial
+    value needs making consistent), gives the same effort and flow at every
+    resistor and source, before and after (to 1e-5 of each column's range;
+    the bonds along the merged path carry D's share before, not after)."""
     import re
     kinds = {x.name: x.kind for x in m.elems}
     if set(kinds.values()) & set(SUBMODEL_KINDS):
@@ -619,7 +619,18 @@ def _merge_stores(res, bgdraw, m, workdir):
     if r.status != 0:
         res["merge_stores"] = ("fail", "the merged model: exit status %d\n%s" % (r.status, r.err[-500:]))
         return
-    t = _traj_equal(read_csv(orig.files["csv"])[1], read_csv(r.files["csv"])[1])
+    # to 1e-5 of each column's range: two formulations (a DAE with dependent
+    # stores, an ODE) of an undamped model differ by the solver's error, which
+    # near a zero crossing is large against the value (seed 20046: 7e-7 at
+    # rtol 1e-9, 4e-10 at rtol 1e-12)
+    a, b = read_csv(orig.files["csv"])[1], read_csv(r.files["csv"])[1]
+    t = "row counts %d and %d" % (len(a), len(b)) if len(a) != len(b) else ""
+    for j in range(1, len(a[0]) if a and not t else 1):
+        col = [x[j] for x in a]
+        span = max(col) - min(col)
+        for ra, rb in zip(a, b):
+            if not t and abs(ra[j] - rb[j]) > 1e-5 * span + 1e-9:
+                t = "column %d at t = %g: %.12g and %.12g (range %.3g)" % (j, ra[0], ra[j], rb[j], span)
     res["merge_stores"] = ("fail", "after merging: " + t) if t else ("pass", "")
 
 
