@@ -8,7 +8,7 @@ import re, sys, os
 
 LEVELS = [
     ["diagram_base", "diagram_words", "layout_rank"],          # leaves
-    ["diagram_geom", "diagram_place", "layout_rows"],          # helpers
+    ["diagram_geom", "diagram_place", "diagram_route", "layout_rows"],  # helpers
     ["layout"],                                                # Graphviz
     ["diagram_grid", "diagram_layers", "diagram_marks", "diagram_signals", "diagram_parts",
      "diagram_fields", "diagram_frames", "diagram_dot", "diagram_tips", "diagram_bonds"],  # passes

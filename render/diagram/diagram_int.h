@@ -92,7 +92,7 @@ struct bg_diagram {
 
 /* The files call down this list, never a sibling or up (docs/developer.md):
  *   diagram_base.c, diagram_words.c  leaves: vectors, ink, colours, queries; markup
- *   diagram_geom.c, diagram_place.c  where bonds run; text placement
+ *   diagram_geom.c, diagram_place.c, diagram_route.c  where bonds run; text placement; signal routes
  *   passes: diagram_grid.c (layout stage), diagram_bonds.c, diagram_layers.c, diagram_marks.c,
  *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
  *           diagram_frames.c, diagram_dot.c, diagram_tips.c
@@ -164,6 +164,17 @@ bg_vec bg_free_direction(const bg_diagram_layout *d, int n);
 /* Filled arrowhead with its tip at p, pointing along dir. */
 void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid);
 
+
+/* Orthogonal signal routes (diagram_route.c): a router holds the layout's
+ * nodes and bond legs in a grid of cells and the routes given so far. */
+typedef struct bg_router bg_router;
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond);
+/* The route from node from_node (or, when it is < 0, from the middle of
+ * bond from_bond or near it) to node `to`: a polyline of horizontal and
+ * vertical legs into pts (at most cap points), the first on the source,
+ * the last the arrow's tip. Later routes keep off it. */
+int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, bg_vec *pts, int cap);
+void bg_router_free(bg_router *r);
 
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */

@@ -120,6 +120,25 @@ static void fm_reactions(bg_strbuf *b, int n) {
   }
 }
 
+/* A held-out signal model (not used to tune the router): an RC ladder of k
+ * sections whose resistors are each modulated by the voltage two sections
+ * on (a C's effort) and, every third section, by the source's flow (a bond
+ * variable): signals that run along the ladder against the power. */
+static void fm_modladder(bg_strbuf *b, int k) {
+  bg_sb_printf(b, "model modladder%d\nSe U = 1\nR load = 10\n", k);
+  for (int i = 0; i < k; i++) {
+    bg_sb_printf(b, "1 s%d\n0 n%d\nC C%d = 1\n", i, i, i);
+    if (i % 3 == 2) bg_sb_printf(b, "R R%d : e = (1 + f1) * f\n", i);
+    else bg_sb_printf(b, "R R%d : e = (1 + C%d.e) * f\n", i, (i + 2) % k);
+  }
+  bg_sb_puts(b, "bond 1 U -> s0\n");
+  for (int i = 0; i < k; i++) {
+    bg_sb_printf(b, "bond s%d -> R%d\nbond s%d -> n%d\nbond n%d -> C%d\n", i, i, i, i, i, i);
+    if (i + 1 < k) bg_sb_printf(b, "bond n%d -> s%d\n", i, i + 1);
+  }
+  bg_sb_printf(b, "bond n%d -> load\n", k - 1);
+}
+
 /* Three levels of submodels: Outer holds two Middles, each Middle two
  * Inners (an R and a C); the model chains two Outers between a source and
  * a load. */

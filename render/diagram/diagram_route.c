@@ -1,0 +1,714 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Orthogonal routing of signal lines (issue 31): each signal becomes a
+ * polyline of horizontal and vertical segments, leaving its source at right
+ * angles to a free side and entering its target the same way, found by a
+ * shortest-path search (A*) over a grid of candidate lines — the channels
+ * beside the node boxes in a window around the two ends — where a bend, a
+ * crossed bond, a crossed or shared signal and a run through a node box
+ * each cost. A run through a box or along a bond costs so much that the
+ * search takes any other way, round the outside of the figure when the
+ * window has none; so the search never fails, and a route is never drawn
+ * through a node unless the figure leaves no gap at all.
+ *
+ * Work is bounded per signal: the grid has at most MAXLINES lines each way
+ * (the window's candidates thinned evenly), and what an edge meets is
+ * looked up in a uniform grid of cells over the layout (the near index), so
+ * routing the signals of a figure stays linear in their number. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_int.h"
+
+enum { MAXLINES = 72 };
+/* Costs in points of line length. */
+#define COST_BEND 14.0
+#define COST_CROSS_BOND 160.0 /* a detour of 160 pt is better than a crossed bond */
+#define COST_CROSS_SIGNAL 6.0
+#define COST_SHARE 900.0      /* running on another signal: read as one line */
+#define COST_BLOCK 20000.0    /* through a node box or along a bond */
+#define COST_HUG 1.5          /* per pt beside a bond, nearer than HUG: read as a doubled bond */
+#define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
+#define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
+#define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
+#define LANE 10.0             /* the channel lines' distance from a box */
+#define STUB 10.0             /* the straight run off a port, and onto one */
+
+/* ---------------------------------------------------------------- the near index */
+/* A uniform grid of cells over the layout, each listing the nodes whose box
+ * (grown by 3 pt) and the bond legs whose bounding box meet it, so a query
+ * tests what is near a segment instead of every node and bond. Routed
+ * signal segments are added as they are drawn (a list per cell). */
+typedef struct near_index {
+  double x0, y0, cell;
+  int nx, ny;
+  int *adr, *item; /* per cell (CSR): nodes k as k, legs as nnode + leg */
+  int nnode, nleg;
+  bg_vec *la, *lb; /* legs' ends */
+  unsigned char *lmid; /* the leg holds its bond's middle (where the number goes) */
+  bg_vec *mid;
+  int *stamp, tick;
+  /* routed signal segments: per cell a chain through sig_next */
+  int *sig_head, *sig_next, *sig_seg, nsig, capsig;
+  bg_vec *sa, *sb;
+  int nseg, capseg;
+  int *seg_stamp, capstamp;
+} near_index;
+
+static bg_vec leg_end(const bg_diagram_layout *L, int b, int i) {
+  const bg_bond_geom *g = &L->bg[b];
+  if (i < 0) return g->tail;
+  return i == g->bendn ? g->head : bg_v(L->lay.bendx[g->bendadr + i], L->lay.bendy[g->bendadr + i]);
+}
+
+static void cell_range(const near_index *ix, double x0, double y0, double x1, double y1, int r[4]) {
+  r[0] = (int)floor((x0 - ix->x0) / ix->cell), r[1] = (int)floor((y0 - ix->y0) / ix->cell);
+  r[2] = (int)floor((x1 - ix->x0) / ix->cell), r[3] = (int)floor((y1 - ix->y0) / ix->cell);
+  r[0] = r[0] < 0 ? 0 : r[0] >= ix->nx ? ix->nx - 1 : r[0];
+  r[2] = r[2] < 0 ? 0 : r[2] >= ix->nx ? ix->nx - 1 : r[2];
+  r[1] = r[1] < 0 ? 0 : r[1] >= ix->ny ? ix->ny - 1 : r[1];
+  r[3] = r[3] < 0 ? 0 : r[3] >= ix->ny ? ix->ny - 1 : r[3];
+}
+
+/* Whether node n is an obstacle: drawn, with a box. */
+static int node_drawn(const bg_diagram_layout *L, int n) {
+  return bg_node_shown(L, n) && !bg_fields_hidden(L, n) && L->nw[n] > 0 && L->nh[n] > 0;
+}
+
+static void item_box(const bg_diagram_layout *L, const near_index *ix, int k, double b[4]) {
+  if (k < L->nnode) {
+    b[0] = L->nx[k] - L->nw[k] / 2 - 3, b[1] = L->ny[k] - L->nh[k] / 2 - 3;
+    b[2] = L->nx[k] + L->nw[k] / 2 + 3, b[3] = L->ny[k] + L->nh[k] / 2 + 3;
+    return;
+  }
+  bg_vec a = ix->la[k - L->nnode], c = ix->lb[k - L->nnode];
+  b[0] = fmin(a.x, c.x), b[1] = fmin(a.y, c.y), b[2] = fmax(a.x, c.x), b[3] = fmax(a.y, c.y);
+}
+
+static void near_build(const bg_diagram_layout *L, int nbond, near_index *ix) {
+  memset(ix, 0, sizeof *ix);
+  ix->nnode = L->nnode;
+  for (int b = 0; b < nbond; b++) ix->nleg += L->bond_hidden && L->bond_hidden[b] ? 0 : L->bg[b].bendn + 1;
+  ix->la = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->la), ix->lb = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lb);
+  ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
+  for (int b = 0, k = 0; b < nbond; b++) {
+    for (int i = 0; !(L->bond_hidden && L->bond_hidden[b]) && i <= L->bg[b].bendn; i++, k++) {
+      ix->la[k] = leg_end(L, b, i - 1), ix->lb[k] = leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
+      double dx = ix->lb[k].x - ix->la[k].x, dy = ix->lb[k].y - ix->la[k].y, l2 = dx * dx + dy * dy;
+      double t = l2 > 0 ? ((L->bg[b].mid.x - ix->la[k].x) * dx + (L->bg[b].mid.y - ix->la[k].y) * dy) / l2 : 0;
+      t = t < 0 ? 0 : t > 1 ? 1 : t;
+      bg_vec f = bg_v(ix->la[k].x + t * dx, ix->la[k].y + t * dy);
+      ix->lmid[k] = bg_vlen(bg_vsub(f, L->bg[b].mid)) < 0.5;
+    }
+  }
+  int nitem = L->nnode + ix->nleg;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, area = 0;
+  for (int k = 0; k < nitem; k++) {
+    if (k < L->nnode && !node_drawn(L, k)) continue;
+    double bx[4];
+    item_box(L, ix, k, bx);
+    x0 = fmin(x0, bx[0]), y0 = fmin(y0, bx[1]), x1 = fmax(x1, bx[2]), y1 = fmax(y1, bx[3]);
+    if (k < L->nnode) area += (bx[2] - bx[0]) * (bx[3] - bx[1]);
+  }
+  if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
+  /* cells about twice a node's size, at most four per item */
+  ix->cell = fmax(8, 2 * sqrt(area / (L->nnode + 1)));
+  ix->cell = fmax(ix->cell, sqrt((x1 - x0) * (y1 - y0) / (4.0 * nitem + 4)));
+  ix->x0 = x0, ix->y0 = y0;
+  ix->nx = (int)((x1 - x0) / ix->cell) + 1, ix->ny = (int)((y1 - y0) / ix->cell) + 1;
+  size_t ncell = (size_t)ix->nx * (size_t)ix->ny;
+  ix->adr = bg_xcalloc(ncell + 1, sizeof *ix->adr);
+  for (int pass = 0; pass < 2; pass++) {
+    int *fill = pass ? bg_xcalloc(ncell + 1, sizeof *fill) : NULL;
+    for (int k = 0; k < nitem; k++) {
+      if (k < L->nnode && !node_drawn(L, k)) continue;
+      double bx[4];
+      int r[4];
+      item_box(L, ix, k, bx);
+      cell_range(ix, bx[0], bx[1], bx[2], bx[3], r);
+      for (int cy = r[1]; cy <= r[3]; cy++)
+        for (int cx = r[0]; cx <= r[2]; cx++) {
+          size_t c = (size_t)cy * (size_t)ix->nx + (size_t)cx;
+          if (pass) ix->item[ix->adr[c] + fill[c]++] = k;
+          else ix->adr[c + 1]++;
+        }
+    }
+    if (!pass) {
+      for (size_t c = 0; c < ncell; c++) ix->adr[c + 1] += ix->adr[c];
+      ix->item = bg_xcalloc((size_t)ix->adr[ncell] + 1, sizeof *ix->item);
+    }
+    free(fill);
+  }
+  ix->stamp = bg_xcalloc((size_t)nitem + 1, sizeof *ix->stamp);
+  ix->sig_head = bg_xcalloc(ncell + 1, sizeof *ix->sig_head);
+  for (size_t c = 0; c <= ncell; c++) ix->sig_head[c] = -1;
+}
+
+static void near_free(near_index *ix) {
+  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lmid), free(ix->mid), free(ix->stamp);
+  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->seg_stamp);
+}
+
+/* Calls visit for every item listed in the cells the box [x0,x1]×[y0,y1]
+ * (grown by `grow`) meets, each once. */
+typedef struct near_list {
+  int *k, n, cap;
+} near_list;
+
+static void near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
+  int r[4];
+  cell_range(ix, x0, y0, x1, y1, r);
+  ix->tick++;
+  out->n = 0;
+  for (int cy = r[1]; cy <= r[3]; cy++)
+    for (int cx = r[0]; cx <= r[2]; cx++) {
+      size_t c = (size_t)cy * (size_t)ix->nx + (size_t)cx;
+      for (int j = ix->adr[c]; j < ix->adr[c + 1]; j++) {
+        int k = ix->item[j];
+        if (ix->stamp[k] == ix->tick) continue;
+        ix->stamp[k] = ix->tick;
+        if (out->n == out->cap) out->cap = 2 * out->cap + 16, out->k = bg_xrealloc(out->k, (size_t)out->cap * sizeof *out->k);
+        out->k[out->n++] = k;
+      }
+    }
+}
+
+/* The routed signal segments listed in the cells box meets, each once. */
+static void near_signals(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
+  int r[4];
+  cell_range(ix, x0, y0, x1, y1, r);
+  out->n = 0;
+  if (ix->capstamp < ix->nseg) {
+    ix->seg_stamp = bg_xrealloc(ix->seg_stamp, (size_t)ix->capseg * sizeof *ix->seg_stamp);
+    for (int s = ix->capstamp; s < ix->capseg; s++) ix->seg_stamp[s] = 0;
+    ix->capstamp = ix->capseg;
+  }
+  ix->tick++;
+  for (int cy = r[1]; cy <= r[3]; cy++)
+    for (int cx = r[0]; cx <= r[2]; cx++)
+      for (int j = ix->sig_head[(size_t)cy * (size_t)ix->nx + (size_t)cx]; j >= 0; j = ix->sig_next[j]) {
+        int s = ix->sig_seg[j];
+        if (ix->seg_stamp[s] == ix->tick) continue;
+        ix->seg_stamp[s] = ix->tick;
+        if (out->n == out->cap) out->cap = 2 * out->cap + 16, out->k = bg_xrealloc(out->k, (size_t)out->cap * sizeof *out->k);
+        out->k[out->n++] = s;
+      }
+}
+
+static void near_add_signal(near_index *ix, bg_vec a, bg_vec b) {
+  if (ix->nseg == ix->capseg) {
+    ix->capseg = 2 * ix->capseg + 16;
+    ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
+    ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
+  }
+  int s = ix->nseg++;
+  ix->sa[s] = a, ix->sb[s] = b;
+  int r[4];
+  cell_range(ix, fmin(a.x, b.x), fmin(a.y, b.y), fmax(a.x, b.x), fmax(a.y, b.y), r);
+  for (int cy = r[1]; cy <= r[3]; cy++)
+    for (int cx = r[0]; cx <= r[2]; cx++) {
+      if (ix->nsig == ix->capsig) {
+        ix->capsig = 2 * ix->capsig + 16;
+        ix->sig_next = bg_xrealloc(ix->sig_next, (size_t)ix->capsig * sizeof *ix->sig_next);
+        ix->sig_seg = bg_xrealloc(ix->sig_seg, (size_t)ix->capsig * sizeof *ix->sig_seg);
+      }
+      size_t c = (size_t)cy * (size_t)ix->nx + (size_t)cx;
+      ix->sig_seg[ix->nsig] = s, ix->sig_next[ix->nsig] = ix->sig_head[c], ix->sig_head[c] = ix->nsig++;
+    }
+}
+
+/* ---------------------------------------------------------------- segment tests */
+/* Segment p-q (axis-parallel, from the grid) against segment a-b: 1 when
+ * they cross at a point inside a-b (not within 0.5 pt of its ends) and in
+ * p-q's half-open extent [lower end, upper end), so a crossing at a grid
+ * vertex counts for one edge only; 2 when they run on one line (parallel,
+ * nearer than `near` pt, sharing more than 1 pt); 3 when they run side by
+ * side within HUG pt (*run: for how long); else 0. */
+#define HUG 12.0
+static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run) {
+  bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
+  double lu = bg_vlen(u), lv = bg_vlen(v);
+  if (lu <= 0 || lv <= 0) return 0;
+  double den = u.x * v.y - u.y * v.x;
+  if (fabs(den) < 0.02 * lu * lv) { /* parallel: on one line? */
+    double dist = fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / lu;
+    if (dist >= HUG) return 0;
+    double t0 = ((a.x - p.x) * u.x + (a.y - p.y) * u.y) / lu, t1 = ((b.x - p.x) * u.x + (b.y - p.y) * u.y) / lu;
+    double lo = fmax(0, fmin(t0, t1)), hi = fmin(lu, fmax(t0, t1));
+    if (hi - lo <= 1) return 0;
+    if (run) *run = hi - lo;
+    return dist < near ? 2 : 3;
+  }
+  bg_vec w = bg_vsub(a, p);
+  double t = (w.x * v.y - w.y * v.x) / den; /* along p-q */
+  double s = (w.x * u.y - w.y * u.x) / den; /* along a-b */
+  if (s * lv < 0.5 || (1 - s) * lv < 0.5) return 0;
+  /* half-open along the grid edge, by coordinate: [min, max) */
+  int forward = u.x > 0 || (u.x == 0 && u.y > 0);
+  double tl = forward ? t : 1 - t;
+  return tl >= 0 && tl < 1 ? 1 : 0;
+}
+
+/* ---------------------------------------------------------------- the router */
+typedef struct heap_entry {
+  double f, g; /* estimate, cost so far */
+  int s;       /* state */
+} heap_entry;
+
+struct bg_router {
+  const bg_diagram_layout *L;
+  near_index ix;
+  near_list nl;
+  double fx0, fy0, fx1, fy1; /* the figure's box */
+  /* the current search */
+  double *X, *Y;
+  int nxl, nyl;
+  unsigned char *prio_x, *prio_y;
+  double *hcost, *vcost; /* per edge, NAN until asked */
+  double *g;
+  int *parent;
+  struct heap_entry *heap;
+  int nheap, capheap;
+  int cap_states, cap_lines;
+  /* candidates */
+  double *cx, *cy;
+  unsigned char *cpx, *cpy;
+  int ncx, ncy, capc;
+  int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
+};
+
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) {
+  bg_router *r = bg_xcalloc(1, sizeof *r);
+  r->L = L;
+  near_build(L, nbond, &r->ix);
+  r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
+  for (int k = 0; k < L->nnode; k++)
+    if (node_drawn(L, k)) {
+      double b[4];
+      item_box(L, &r->ix, k, b);
+      r->fx1 = fmax(r->fx1, b[2]), r->fy1 = fmax(r->fy1, b[3]);
+    }
+  for (int k = 0; k < r->ix.nleg; k++) {
+    double b[4];
+    item_box(L, &r->ix, L->nnode + k, b);
+    r->fx1 = fmax(r->fx1, b[2]), r->fy1 = fmax(r->fy1, b[3]);
+  }
+  return r;
+}
+
+void bg_router_free(bg_router *r) {
+  if (!r) return;
+  near_free(&r->ix);
+  free(r->nl.k), free(r->X), free(r->Y), free(r->prio_x), free(r->prio_y), free(r->hcost), free(r->vcost);
+  free(r->g), free(r->parent), free(r->heap), free(r->cx), free(r->cy), free(r->cpx), free(r->cpy);
+  free(r);
+}
+
+static void add_cand(bg_router *r, double x, double y, int prio) {
+  if (r->ncx == r->capc || r->ncy == r->capc) {
+    r->capc = 2 * r->capc + 64;
+    r->cx = bg_xrealloc(r->cx, (size_t)r->capc * sizeof *r->cx), r->cy = bg_xrealloc(r->cy, (size_t)r->capc * sizeof *r->cy);
+    r->cpx = bg_xrealloc(r->cpx, (size_t)r->capc), r->cpy = bg_xrealloc(r->cpy, (size_t)r->capc);
+  }
+  if (!isnan(x)) r->cx[r->ncx] = x, r->cpx[r->ncx++] = (unsigned char)prio;
+  if (!isnan(y)) r->cy[r->ncy] = y, r->cpy[r->ncy++] = (unsigned char)prio;
+}
+
+typedef struct cand {
+  double v;
+  int prio;
+} cand;
+
+static int cand_cmp(const void *a, const void *b) {
+  const cand *p = a, *q = b;
+  if (p->v != q->v) return p->v < q->v ? -1 : 1;
+  return q->prio - p->prio;
+}
+
+/* Sorted lines from the candidates: those nearer than `gap` to a kept one
+ * dropped (a port's line is always kept), the gap grown until at most
+ * MAXLINES remain. */
+static int make_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio) {
+  cand *c = bg_xcalloc((size_t)n + 1, sizeof *c);
+  for (int i = 0; i < n; i++) c[i] = (cand){v[i], pr[i]};
+  qsort(c, (size_t)n, sizeof *c, cand_cmp);
+  int m = 0;
+  for (double gap = 1.5;; gap *= 1.6) {
+    m = 0;
+    for (int i = 0; i < n; i++) {
+      if (m && c[i].v - out[m - 1] < gap) {
+        if (c[i].prio && !oprio[m - 1]) out[m - 1] = c[i].v, oprio[m - 1] = 1; /* the port's line wins */
+        else if (c[i].prio && c[i].v - out[m - 1] >= 0.01) out[m] = c[i].v, oprio[m++] = 1;
+        continue;
+      }
+      out[m] = c[i].v, oprio[m++] = (unsigned char)c[i].prio;
+    }
+    if (m <= MAXLINES) break;
+  }
+  free(c);
+  return m;
+}
+
+static int nearest_line(const double *a, int n, double v) {
+  int lo = 0, hi = n - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (a[mid] < v) lo = mid + 1;
+    else hi = mid;
+  }
+  if (lo > 0 && fabs(a[lo - 1] - v) <= fabs(a[lo] - v)) lo--;
+  return lo;
+}
+
+static double point_seg(bg_vec c, bg_vec p, bg_vec q) {
+  bg_vec u = bg_vsub(q, p);
+  double l2 = u.x * u.x + u.y * u.y, t = l2 > 0 ? ((c.x - p.x) * u.x + (c.y - p.y) * u.y) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
+}
+
+/* What a segment p-q costs: its length, and the penalties for what it meets. */
+static double seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
+  const bg_diagram_layout *L = r->L;
+  double cost = bg_vlen(bg_vsub(q, p)), x0 = fmin(p.x, q.x), x1 = fmax(p.x, q.x), y0 = fmin(p.y, q.y), y1 = fmax(p.y, q.y);
+  near_box(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int k = r->nl.k[j];
+    if (k < L->nnode) {
+      if (k == skip) continue;
+      /* a box grown by 2 pt: the segment runs through it */
+      double bx0 = L->nx[k] - L->nw[k] / 2 - 2, bx1 = L->nx[k] + L->nw[k] / 2 + 2;
+      double by0 = L->ny[k] - L->nh[k] / 2 - 2, by1 = L->ny[k] + L->nh[k] / 2 + 2;
+      if (x0 < bx1 && x1 > bx0 && y0 < by1 && y1 > by0) cost += COST_BLOCK;
+      continue;
+    }
+    double run = 0;
+    int hit = seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run);
+    if (hit == 1) {
+      bg_vec a = r->ix.la[k - L->nnode], b = r->ix.lb[k - L->nnode];
+      int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
+      cost += COST_CROSS_BOND * (slanted ? COST_OBLIQUE : 1);
+    }
+    cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
+    if (r->ix.lmid[k - L->nnode] && point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
+  }
+  near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    int hit = seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL);
+    cost += hit == 1 ? COST_CROSS_SIGNAL : hit == 2 ? COST_SHARE : 0;
+  }
+  return cost;
+}
+
+/* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */
+typedef struct port {
+  bg_vec at;    /* on the box (or the bond) */
+  bg_vec stub;  /* STUB pt out along the normal: a grid vertex */
+  int dir;      /* the normal: 0 +x, 1 -x, 2 +y, 3 -y */
+  double base;  /* of the port itself (a corner) */
+  double cost;  /* and of its stub */
+} port;
+
+static const bg_vec DIRV[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+
+/* Whether a point of node n's box side is clear of the bonds that end there
+ * (6 pt from a bond's end on the box). */
+static int end_near(const bg_diagram_layout *L, const bg_model *m, int b, int n, bg_vec p) {
+  if (L->bond_hidden && L->bond_hidden[b]) return 0;
+  int t = m->bond_tail[b], h = m->bond_head[b];
+  if (L->node_of) t = L->node_of[t], h = L->node_of[h];
+  return (t == n && bg_vlen(bg_vsub(L->bg[b].tail, p)) < 6) || (h == n && bg_vlen(bg_vsub(L->bg[b].head, p)) < 6);
+}
+
+static int side_clear(const bg_diagram_layout *L, const bg_model *m, int n, bg_vec p) {
+  if (n < m->nelem) { /* an element: its own bonds */
+    for (int i = 0; i < m->elem_nbond[n]; i++)
+      if (end_near(L, m, m->elem_bonds[m->elem_bondadr[n] + i], n, p)) return 0;
+    return 1;
+  }
+  for (int b = 0; b < m->nbond; b++) /* a box or an integrator: any bond may end there */
+    if (end_near(L, m, b, n, p)) return 0;
+  return 1;
+}
+
+/* The ports of node n: the middle of each side, its corners, and on long
+ * sides the points halfway between, those clear of the node's bonds (a
+ * junction with a bond on every side is left at a corner); gap: how far out
+ * of the box the line ends (the arrow's tip stops 1.5 pt short). */
+static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *out) {
+  const bg_diagram_layout *L = r->L;
+  double hw = L->nw[n] / 2, hh = L->nh[n] / 2;
+  bg_vec c = bg_v(L->nx[n], L->ny[n]);
+  int np = 0;
+  for (int dir = 0; dir < 4; dir++) {
+    double half = dir < 2 ? hh : hw;
+    for (int k = 0; k < 5; k++) { /* the middle, halfway to the corners, the corners */
+      static const double frac[5] = {0, -0.5, 0.5, -1, 1};
+      double off = frac[k] * half;
+      if ((k == 1 || k == 2) && half < 8) continue;
+      bg_vec at = dir < 2 ? bg_v(c.x + (dir == 0 ? hw : -hw), c.y + off) : bg_v(c.x + off, c.y + (dir == 2 ? hh : -hh));
+      if (!side_clear(L, m, n, at)) continue;
+      at = bg_vadd(at, bg_vscale(DIRV[dir], gap));
+      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, k >= 3 ? COST_CORNER : 0, 0};
+    }
+  }
+  if (!np) /* every side taken by bonds: the sides' middles all the same */
+    for (int dir = 0; dir < 4; dir++) {
+      bg_vec at = bg_vadd(c, bg_v(DIRV[dir].x * (hw + gap), DIRV[dir].y * (hh + gap)));
+      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0};
+    }
+  return np;
+}
+
+/* ---------------------------------------------------------------- search */
+static int entry_less(const heap_entry *a, const heap_entry *b) {
+  return a->f < b->f || (a->f == b->f && a->s < b->s);
+}
+
+static void heap_push(bg_router *r, int s, double f, double g) {
+  if (r->nheap == r->capheap) r->capheap = 2 * r->capheap + 64, r->heap = bg_xrealloc(r->heap, (size_t)r->capheap * sizeof *r->heap);
+  heap_entry e = {f, g, s};
+  int i = r->nheap++;
+  while (i > 0 && entry_less(&e, &r->heap[(i - 1) / 2])) r->heap[i] = r->heap[(i - 1) / 2], i = (i - 1) / 2;
+  r->heap[i] = e;
+}
+
+static heap_entry heap_pop(bg_router *r) {
+  heap_entry top = r->heap[0], last = r->heap[--r->nheap];
+  int i = 0;
+  for (;;) {
+    int c = 2 * i + 1;
+    if (c >= r->nheap) break;
+    if (c + 1 < r->nheap && entry_less(&r->heap[c + 1], &r->heap[c])) c++;
+    if (!entry_less(&r->heap[c], &last)) break;
+    r->heap[i] = r->heap[c], i = c;
+  }
+  if (r->nheap) r->heap[i] = last;
+  return top;
+}
+
+/* The grid over window [wx0,wx1]×[wy0,wy1]: the ports' lines, the lanes
+ * beside every node box in it, the lines between neighbouring lanes, and a
+ * ring round the window. */
+static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double wy1, const port *ps, int nps,
+                       const port *pt, int npt) {
+  const bg_diagram_layout *L = r->L;
+  r->ncx = r->ncy = 0;
+  for (int i = 0; i < nps; i++) add_cand(r, ps[i].stub.x, ps[i].stub.y, 1);
+  for (int i = 0; i < npt; i++) add_cand(r, pt[i].stub.x, pt[i].stub.y, 1);
+  add_cand(r, wx0, wy0, 0), add_cand(r, wx1, wy1, 0);
+  near_box(&r->ix, wx0, wy0, wx1, wy1, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int k = r->nl.k[j];
+    if (k >= L->nnode) continue;
+    double bx0 = L->nx[k] - L->nw[k] / 2, bx1 = L->nx[k] + L->nw[k] / 2;
+    double by0 = L->ny[k] - L->nh[k] / 2, by1 = L->ny[k] + L->nh[k] / 2;
+    if (bx1 < wx0 || bx0 > wx1 || by1 < wy0 || by0 > wy1) continue;
+    add_cand(r, bx0 - LANE, by0 - LANE, 0), add_cand(r, bx1 + LANE, by1 + LANE, 0);
+  }
+  int n0x = r->ncx, n0y = r->ncy;
+  if (r->cap_lines < r->ncx + r->ncy + 2) {
+    r->cap_lines = 2 * (r->ncx + r->ncy) + 2;
+    r->X = bg_xrealloc(r->X, (size_t)r->cap_lines * sizeof *r->X), r->Y = bg_xrealloc(r->Y, (size_t)r->cap_lines * sizeof *r->Y);
+    r->prio_x = bg_xrealloc(r->prio_x, (size_t)r->cap_lines), r->prio_y = bg_xrealloc(r->prio_y, (size_t)r->cap_lines);
+  }
+  /* the channels' middles: between each pair of neighbouring lanes */
+  int m = make_lines(r->cx, r->cpx, n0x, r->X, r->prio_x);
+  for (int i = 0; i + 1 < m; i++) add_cand(r, (r->X[i] + r->X[i + 1]) / 2, NAN, 0);
+  m = make_lines(r->cy, r->cpy, n0y, r->Y, r->prio_y);
+  for (int i = 0; i + 1 < m; i++) add_cand(r, NAN, (r->Y[i] + r->Y[i + 1]) / 2, 0);
+  if (r->cap_lines < r->ncx + r->ncy + 2) {
+    r->cap_lines = 2 * (r->ncx + r->ncy) + 2;
+    r->X = bg_xrealloc(r->X, (size_t)r->cap_lines * sizeof *r->X), r->Y = bg_xrealloc(r->Y, (size_t)r->cap_lines * sizeof *r->Y);
+    r->prio_x = bg_xrealloc(r->prio_x, (size_t)r->cap_lines), r->prio_y = bg_xrealloc(r->prio_y, (size_t)r->cap_lines);
+  }
+  r->nxl = make_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x);
+  r->nyl = make_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y);
+}
+
+/* A* from the source ports to the target ports over the grid; the states
+ * are (vertex, direction of travel). Returns the cost and the route's
+ * vertices from source to target in pts (at most cap), *npts. */
+static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec *pts, int cap, int *npts) {
+  int nx = r->nxl, ny = r->nyl, nv = nx * ny, ns = 4 * nv;
+  if (r->cap_states < ns) {
+    r->cap_states = ns;
+    r->g = bg_xrealloc(r->g, (size_t)ns * sizeof *r->g), r->parent = bg_xrealloc(r->parent, (size_t)ns * sizeof *r->parent);
+    r->hcost = bg_xrealloc(r->hcost, (size_t)nv * sizeof *r->hcost), r->vcost = bg_xrealloc(r->vcost, (size_t)nv * sizeof *r->vcost);
+  }
+  for (int s = 0; s < ns; s++) r->g[s] = INFINITY, r->parent[s] = -1;
+  for (int v = 0; v < nv; v++) r->hcost[v] = r->vcost[v] = NAN;
+  /* goal vertices: each target port's stub, entered along its inward normal */
+  int *goal_dir = bg_xcalloc((size_t)nv, sizeof *goal_dir); /* bit mask of inward directions + 1 */
+  double *goal_cost = bg_xcalloc((size_t)nv * 4, sizeof *goal_cost);
+  int *goal_port = bg_xcalloc((size_t)nv * 4, sizeof *goal_port);
+  for (int i = 0; i < npt; i++) {
+    int gx = nearest_line(r->X, nx, pt[i].stub.x), gy = nearest_line(r->Y, ny, pt[i].stub.y), v = gy * nx + gx;
+    int in = pt[i].dir ^ 1; /* travel toward the box: opposite the normal */
+    if (!(goal_dir[v] & (1 << in)) || pt[i].cost < goal_cost[v * 4 + in])
+      goal_dir[v] |= 1 << in, goal_cost[v * 4 + in] = pt[i].cost, goal_port[v * 4 + in] = i;
+  }
+  r->nheap = 0;
+  for (int i = 0; i < nps; i++) {
+    int gx = nearest_line(r->X, nx, ps[i].stub.x), gy = nearest_line(r->Y, ny, ps[i].stub.y);
+    int s = 4 * (gy * nx + gx) + ps[i].dir;
+    if (ps[i].cost < r->g[s]) r->g[s] = ps[i].cost, r->parent[s] = -2 - i, heap_push(r, s, ps[i].cost, ps[i].cost);
+  }
+  double best = INFINITY;
+  int best_s = -1, best_port = -1;
+  while (r->nheap) {
+    heap_entry e = heap_pop(r);
+    int s = e.s;
+    double gs = r->g[s];
+    if (e.g > gs) continue; /* a state reached more cheaply since */
+    if (e.f >= best) break; /* the heuristic is admissible: nothing left is cheaper */
+    int v = s / 4, dir = s % 4, vx = v % nx, vy = v / nx;
+    for (int in = 0; goal_dir[v] && in < 4; in++) { /* onto a port's stub, turning onto it or not */
+      if (!(goal_dir[v] & (1 << in)) || dir == (in ^ 1)) continue;
+      double c = gs + goal_cost[v * 4 + in] + (dir != in ? COST_BEND : 0);
+      if (c < best) best = c, best_s = s, best_port = goal_port[v * 4 + in];
+    }
+    for (int nd = 0; nd < 4; nd++) {
+      if (nd == (dir ^ 1)) continue; /* no turning back */
+      int wx = vx + (nd == 0) - (nd == 1), wy = vy + (nd == 2) - (nd == 3);
+      if (wx < 0 || wy < 0 || wx >= nx || wy >= ny) continue;
+      int w = wy * nx + wx;
+      double *ec = nd < 2 ? &r->hcost[vy * nx + (nd == 0 ? vx : wx)] : &r->vcost[(nd == 2 ? vy : wy) * nx + vx];
+      if (isnan(*ec)) *ec = seg_cost(r, bg_v(r->X[vx], r->Y[vy]), bg_v(r->X[wx], r->Y[wy]), -1);
+      double c = gs + *ec + (nd != dir ? COST_BEND : 0);
+      int t = 4 * w + nd;
+      if (c < r->g[t]) {
+        r->g[t] = c, r->parent[t] = s;
+        double h = INFINITY;
+        for (int i = 0; i < npt; i++) h = fmin(h, fabs(pt[i].stub.x - r->X[wx]) + fabs(pt[i].stub.y - r->Y[wy]));
+        heap_push(r, t, c + h, c);
+      }
+    }
+  }
+  *npts = 0;
+  if (best_s >= 0) {
+    /* walk back, then reverse: source port, its stub, corners..., target stub, target port */
+    int n = 0;
+    pts[n++] = pt[best_port].at;
+    int s = best_s, prev_dir = -1;
+    while (s >= 0 && n < cap - 2) {
+      int v = s / 4, dir = s % 4;
+      if (dir != prev_dir || r->parent[s] < 0) pts[n++] = bg_v(r->X[v % nx], r->Y[v / nx]);
+      prev_dir = dir;
+      if (r->parent[s] < 0) {
+        pts[n++] = ps[-2 - r->parent[s]].at;
+        break;
+      }
+      s = r->parent[s];
+    }
+    for (int i = 0; i < n / 2; i++) {
+      bg_vec t = pts[i];
+      pts[i] = pts[n - 1 - i], pts[n - 1 - i] = t;
+    }
+    *npts = n;
+  }
+  free(goal_dir), free(goal_cost), free(goal_port);
+  return best;
+}
+
+/* Drops repeated points and the middle one of three on a line. */
+static int simplify(bg_vec *p, int n) {
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    if (m && fabs(p[i].x - p[m - 1].x) < 1e-9 && fabs(p[i].y - p[m - 1].y) < 1e-9) continue;
+    if (m >= 2) {
+      bg_vec a = bg_vsub(p[m - 1], p[m - 2]), b = bg_vsub(p[i], p[m - 1]);
+      if (fabs(a.x * b.y - a.y * b.x) < 1e-6 && a.x * b.x + a.y * b.y > 0) {
+        p[m - 1] = p[i];
+        continue;
+      }
+    }
+    p[m++] = p[i];
+  }
+  return m;
+}
+
+/* Snaps the ports' stubs onto the grid lines they were merged into, moving
+ * the port with them along its side. */
+static void snap_ports(const bg_router *r, port *p, int n) {
+  for (int i = 0; i < n; i++) {
+    double x = r->X[nearest_line(r->X, r->nxl, p[i].stub.x)], y = r->Y[nearest_line(r->Y, r->nyl, p[i].stub.y)];
+    if (p[i].dir < 2) p[i].at.y = y;
+    else p[i].at.x = x;
+    p[i].stub = bg_v(x, y);
+  }
+}
+
+static int route_in(bg_router *r, port *ps, int nps, port *pt, int npt, double wx0, double wy0, double wx1,
+                    double wy1, bg_vec *pts, int cap, double *cost) {
+  build_grid(r, wx0, wy0, wx1, wy1, ps, nps, pt, npt);
+  snap_ports(r, ps, nps), snap_ports(r, pt, npt);
+  for (int i = 0; i < nps; i++) ps[i].cost = ps[i].base + seg_cost(r, ps[i].at, ps[i].stub, r->from_node);
+  for (int i = 0; i < npt; i++) pt[i].cost = pt[i].base + seg_cost(r, pt[i].stub, pt[i].at, r->to_node);
+  int n = 0;
+  *cost = search(r, ps, nps, pt, npt, pts, cap, &n);
+  return n;
+}
+
+/* Whether p lies on bond b's line (within 0.5 pt), its half arrow not counted. */
+static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
+  for (int i = 0; i <= L->bg[b].bendn; i++)
+    if (point_seg(p, leg_end(L, b, i - 1), leg_end(L, b, i)) < 0.5) return 1;
+  return 0;
+}
+
+/* Routes a signal to node `to` from node from_node or, when that is < 0,
+ * from bond from_bond's middle (or 8 pt either side of it). pts receives the polyline,
+ * its first point on the source, its last the arrow's tip 1.5 pt off the
+ * target's box; returns the number of points. The route is remembered, so
+ * later signals keep off it. */
+int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, bg_vec *pts, int cap) {
+  const bg_diagram_layout *L = r->L;
+  bg_vec from_pt = bg_v(0, 0);
+  port ps[20], pt[20];
+  r->from_node = from_node, r->to_node = to;
+  int nps = 0, npt = node_ports(r, m, to, 1.5, pt);
+  if (from_node >= 0) {
+    nps = node_ports(r, m, from_node, 0, ps);
+  } else { /* off the bond's side, either way, at its middle or 8 pt either side on its line */
+    bg_vec mid = L->bg[from_bond].mid, bond_dir = L->bg[from_bond].mdir;
+    int along_x = fabs(bond_dir.x) >= fabs(bond_dir.y);
+    for (int j = 0; j < 3; j++) {
+      double off = j == 0 ? 0 : j == 1 ? -8 : 8;
+      bg_vec at = bg_vadd(mid, along_x ? bg_v(off, 0) : bg_v(0, off));
+      if (j && !on_bond(L, from_bond, at)) continue;
+      for (int k = 0; k < 2; k++) {
+        int dir = along_x ? (k ? 3 : 2) : (k ? 1 : 0);
+        ps[nps++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, j ? COST_CORNER / 4 : 0, 0};
+      }
+    }
+    from_pt = mid;
+  }
+  /* the window: both ends' boxes with a margin that grows with the distance */
+  double ax0 = from_pt.x, ay0 = from_pt.y, ax1 = from_pt.x, ay1 = from_pt.y;
+  if (from_node >= 0) {
+    ax0 = L->nx[from_node] - L->nw[from_node] / 2, ax1 = L->nx[from_node] + L->nw[from_node] / 2;
+    ay0 = L->ny[from_node] - L->nh[from_node] / 2, ay1 = L->ny[from_node] + L->nh[from_node] / 2;
+  }
+  double wx0 = fmin(ax0, L->nx[to] - L->nw[to] / 2), wx1 = fmax(ax1, L->nx[to] + L->nw[to] / 2);
+  double wy0 = fmin(ay0, L->ny[to] - L->nh[to] / 2), wy1 = fmax(ay1, L->ny[to] + L->nh[to] / 2);
+  double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
+  double cost = INFINITY;
+  int n = route_in(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, pts, cap, &cost);
+  if (!(cost < COST_BLOCK)) { /* boxed in: the whole figure, with a ring round it */
+    double c2 = INFINITY;
+    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
+    int n2 = route_in(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
+                      r->fy1 + 2 * LANE, alt, cap, &c2);
+    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2;
+    free(alt);
+  }
+  if (n < 2) { /* no grid at all (cannot happen: the grid holds every port) */
+    pts[0] = ps[0].at, pts[1] = pt[0].at;
+    n = 2;
+  }
+  n = simplify(pts, n);
+  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1]);
+  return n;
+}
