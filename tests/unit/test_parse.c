@@ -268,6 +268,33 @@ static void test_error_recovery(void) {
   bg_diags_free(&dg);
 }
 
+/* A dropped line's names are remembered (bg_diags_unsure: no follow-on
+ * error names them); a dropped bond without both ends makes every bond count
+ * unsure; names of lines that parsed are not. */
+static void test_dropped_names(void) {
+  bg_diags dg;
+  bg_ast *ast = parse("param k = 2\nR R1 = k *\nC C2 = 1\nbond M1.a -> \n", &dg);
+  INT_EQ(dg.nerrors, 2);
+  INT_EQ(dg.nskipped, 2);
+  INT_EQ(ast->nstmts, 2); /* k and C2 */
+  OK(bg_diags_unsure(&dg, "R1"));
+  OK(bg_diags_unsure(&dg, "M1"));
+  OK(bg_diags_unsure(&dg, "M1.b"));      /* the instance named on the dropped bond */
+  OK(bg_diags_unsure(&dg, "X.Y.R1"));    /* R1 of an instance: its last part */
+  OK(!bg_diags_unsure(&dg, "C2"));
+  OK(!bg_diags_unsure(&dg, "k2"));
+  OK(bg_diags_unsure_bonds(&dg, "C2"));  /* the bond names one end only */
+  INT_EQ(bg_diags_failures(&dg), 2 + dg.unsaid);
+  bg_ast_free(ast);
+  bg_diags_free(&dg);
+  ast = parse("Se U = 1\nR R1 = 1\nC C2 = 1\nbond U -> R1 [\n", &dg);
+  INT_EQ(dg.nskipped, 1);
+  OK(!bg_diags_unsure_bonds(&dg, "C2")); /* both ends named: only they are unsure */
+  OK(bg_diags_unsure_bonds(&dg, "R1"));
+  bg_ast_free(ast);
+  bg_diags_free(&dg);
+}
+
 static void test_depth_limit(void) {
   char src[4096] = "param p = ";
   for (int i = 0; i < 150; i++) strcat(src, "(");
@@ -295,6 +322,7 @@ int main(void) {
   test_statement_forms();
   test_continuation_and_crlf();
   test_error_recovery();
+  test_dropped_names();
   test_depth_limit();
   return bg_t_done();
 }
