@@ -27,6 +27,9 @@ FUNCS = {
     "ramp": lambda x: x if x > 0 else 0.0,
     "pulse": lambda x, w: 1.0 if 0 <= x < w else 0.0,
     "sat": lambda x, lo, hi: min(max(x, lo), hi),
+    # memory (docs/format.md): the value it starts with, as outside a simulation
+    "hyst": lambda x, lo, hi: 1.0 if x >= hi else 0.0,
+    "stick": lambda v, f, fs: 1.0 if v == 0 and abs(f) <= fs else 0.0,
 }
 TOKEN = re.compile(r"\(d[A-Za-z_][\w.]*/d[A-Za-z_][\w.]*\)|#\d+|[A-Za-z_][\w]*(?:\.[A-Za-z_]\w*)*'?"
                    r"|\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|&&|\|\||[<>=!]=|\S")

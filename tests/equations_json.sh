@@ -45,6 +45,8 @@ for f in examples/*.bg; do run "$(basename "$f" .bg)" "$f"; done
 run slider_crank_lagrange examples/slider_crank.bg --causality lagrange
 run delta_vandijk examples/delta.bg --causality vandijk
 run hydraulic_relaxed examples/hydraulic_bridge.bg --causality relaxed
+run thermostat tests/data/thermostat.bg    # memory: hyst, and the "discrete" list
+run stick_slip tests/data/stick_slip.bg
 cat >"$tmp/given.bg" <<'M'
 param A = 2, w = 3
 input u = A * sin(w * t) + table(t, [0, 0; 1, 1; 2, 0])

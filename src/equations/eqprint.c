@@ -89,6 +89,31 @@ static void print_detectors(const bg_eqsys *s, int st, bg_strbuf *out) {
   }
 }
 
+/* Memory (hyst, stick): the discrete states, which no equation above
+ * integrates: each changes only at state events (docs/format.md). */
+static void print_discrete(const bg_eqsys *s, int json, bg_strbuf *out) {
+  int nm = bg_eqsys_nmodes(s), k = 0;
+  if (!bg_eqsys_has_memory(s)) return;
+  bg_sb_puts(out, json ? ", \"discrete\": [" : "# discrete states (memory: changed only at state events)\n");
+  for (int e = 0; e < nm; e++) {
+    if (!bg_eqsys_mode_memory(s, e)) continue;
+    bg_strbuf where = {0}, what = {0};
+    bg_eqsys_mode_describe(s, e, &where, &what);
+    if (json) {
+      bg_sb_printf(out, "%s{\"where\": ", k ? ", " : "");
+      bg_sb_json_str(out, bg_sb_str(&where));
+      bg_sb_puts(out, ", \"expr\": ");
+      bg_sb_json_str(out, bg_sb_str(&what));
+      bg_sb_puts(out, "}");
+    } else {
+      bg_sb_printf(out, "# %s: %s\n", bg_sb_str(&where), bg_sb_str(&what));
+    }
+    k++;
+    bg_sb_free(&where), bg_sb_free(&what);
+  }
+  if (json) bg_sb_puts(out, "]");
+}
+
 static void unknown_list(const bg_eqsys *s, int i0, int i1, bg_strbuf *out) {
   for (int i = i0; i < i1; i++) bg_sb_printf(out, "%s%s", i > i0 ? ", " : "", s->uname[i]);
 }
@@ -109,6 +134,7 @@ void bg_eqprint_text(const bg_eqsys *s, bg_strbuf *out) {
   bg_sb_puts(out, "# state equations\n");
   print_rows(&P, 0, out);
   print_detectors(s, ST_TEXT, out);
+  print_discrete(s, 0, out);
   bg_sym_free(P.S);
   bg_eqred *r = bg_eqred_build(s);
   bg_eqred_print(r, 0, out);
@@ -256,7 +282,9 @@ void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
   bg_sb_puts(out, ", \"definitions\": [");
   bg_eqsym_json_defs(P.S, s, &seen, &first, out);
   bg_eqsym_json_defs(bg_eqred_sym(r), s, &seen, &first, out);
-  bg_sb_puts(out, "]}\n");
+  bg_sb_puts(out, "]");
+  print_discrete(s, 1, out);
+  bg_sb_puts(out, "}\n");
   bg_sb_free(&seen);
   bg_eqred_free(r);
   bg_sym_free(P.S);

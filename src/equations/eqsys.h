@@ -172,6 +172,16 @@ int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first);
 /* How the root function of mode e crossed 0 when the mode went from before
  * to after: +1 rising, -1 falling. */
 int bg_eqsys_mode_direction(const bg_eqsys *s, int e, double before, double after);
+/* Memory (hyst, stick; docs/format.md, "Memory"): mode e is a memory
+ * function's discrete state, its value between events whatever the
+ * freezing; bg_eqsys_has_memory counts them. bg_eqsys_modes_reset makes the
+ * next bg_eqsys_modes_update a run's first: memory takes its starting value. */
+int bg_eqsys_mode_memory(const bg_eqsys *s, int e);
+int bg_eqsys_has_memory(const bg_eqsys *s);
+void bg_eqsys_modes_reset(bg_eqsys *s);
+/* Where mode e's instruction sits ("value of heater", "law of F") and what
+ * it is ("hyst(e2, lo, hi)"), appended to where and what. */
+void bg_eqsys_mode_describe(const bg_eqsys *s, int e, bg_strbuf *where, bg_strbuf *what);
 void bg_eqsys_modes_get(const bg_eqsys *s, double *modes); /* bg_eqsys_nmodes values */
 void bg_eqsys_modes_set(bg_eqsys *s, const double *modes);
 #endif

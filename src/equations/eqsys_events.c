@@ -34,6 +34,7 @@ static int roots_of(const bg_eqsys *s, const tinstr *I, int *cond) {
   case BG_FN_MIN: case BG_FN_MAX: *cond = 3; return 1;
   case BG_FN_PULSE: *cond = 3; return 2;
   case BG_FN_SAT: *cond = 7; return 2;
+  case BG_FN_HYST: case BG_FN_STICK: *cond = 7; return 2; /* memory: one root per way out of each mode */
   default: return 0; /* if() switches where its condition (a comparison) does */
   }
 }
@@ -89,19 +90,33 @@ static int is_event(const bg_eqsys *s, const int *prod, int k, int *nr) {
 static const char *sub_text(const tinstr *I, int sub) {
   if (I->op == BG_X_TABLE) return sub ? " (segment's upper end)" : " (segment's lower end)";
   if (I->ref == BG_FN_SAT) return sub ? " (upper limit)" : " (lower limit)";
+  if (I->ref == BG_FN_HYST) return sub ? " (falls: the lower threshold reached)" : " (rises: the upper threshold reached)";
+  if (I->ref == BG_FN_STICK) return sub ? " (sticks: the velocity crosses 0)" : " (slips: the force reaches the limit)";
   if (I->ref == BG_FN_PULSE) return sub ? " (end)" : " (start)";
   if (I->ref == BG_FN_FLOOR || I->ref == BG_FN_CEIL) return sub ? " (next integer up)" : " (next integer down)";
   return "";
 }
 
-/* "law of D: e2 > 0": where the condition sits and what it is. */
-static const char *describe(bg_eqsys *s, const tinstr *I, int sub) {
+/* "law of D" and "e2 > 0": where the condition sits and what it is. */
+static void where_what(const bg_eqsys *s, const tinstr *I, bg_strbuf *where, bg_strbuf *what) {
   const bg_model *m = s->m;
-  bg_strbuf sb = {0};
-  if (I->eq >= 0) bg_sb_printf(&sb, "%s of %s: ", s->sig_what[I->eq], m->elem_name[s->sig_elem[I->eq]]);
-  else if (I->eq > -1000000) bg_sb_printf(&sb, "equation of %s: ", s->uname[-1 - I->eq]);
-  if (I->xn >= 0) bg_xprint(m, I->xn, &sb);
-  else bg_sb_puts(&sb, "?");
+  if (I->eq >= 0) bg_sb_printf(where, "%s of %s", s->sig_what[I->eq], m->elem_name[s->sig_elem[I->eq]]);
+  else if (I->eq > -1000000) bg_sb_printf(where, "equation of %s", s->uname[-1 - I->eq]);
+  if (I->xn >= 0) bg_xprint(m, I->xn, what);
+  else bg_sb_puts(what, "?");
+}
+
+void bg_eqsys_mode_describe(const bg_eqsys *s, int e, bg_strbuf *where, bg_strbuf *what) {
+  where_what(s, &s->code[s->ev_code[e]], where, what);
+}
+
+/* "law of D: e2 > 0" with the root's part ("(upper limit)"). */
+static const char *describe(bg_eqsys *s, const tinstr *I, int sub) {
+  bg_strbuf sb = {0}, what = {0};
+  where_what(s, I, &sb, &what);
+  if (sb.len) bg_sb_puts(&sb, ": ");
+  bg_sb_puts(&sb, bg_sb_str(&what));
+  bg_sb_free(&what);
   bg_sb_puts(&sb, sub_text(I, sub));
   char *t = bg_arena_alloc(&s->arena, sb.len + 1);
   memcpy(t, bg_sb_str(&sb), sb.len + 1);
@@ -129,6 +144,7 @@ void bg_eqs_events_find(bg_eqsys *s) {
   s->ev_zero = bg_arena_alloc(&s->arena, (size_t)nev);
   s->ev_free = bg_arena_alloc(&s->arena, (size_t)nev);
   memset(s->ev_free, 0, (size_t)nev);
+  s->ev_mem = bg_arena_alloc(&s->arena, (size_t)nev);
   s->ev_y = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   s->ev_yp = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   nev = nroot = 0;
@@ -137,6 +153,8 @@ void bg_eqs_events_find(bg_eqsys *s) {
     s->code_ev[k] = -1;
     if (!is_event(s, prod, k, &nr)) continue;
     s->code_ev[k] = nev, s->ev_code[nev] = k, s->ev_root0[nev] = nroot, s->ev_mode[nev] = 0;
+    s->ev_mem[nev] = I->op == BG_X_CALL && (I->ref == BG_FN_HYST || I->ref == BG_FN_STICK);
+    s->nmem += s->ev_mem[nev];
     for (int j = 0; j < nr; j++) s->root_ev[nroot + j] = nev, s->root_text[nroot + j] = describe(s, I, j);
     nev++, nroot += nr;
   }
@@ -194,6 +212,10 @@ static void ev_roots(const bg_eqsys *s, int e, const double *v, double *g) {
   case BG_FN_MIN: case BG_FN_MAX: g[0] = x - y; return;
   case BG_FN_PULSE: g[0] = x, g[1] = x - y; return;
   case BG_FN_SAT: g[0] = x - y, g[1] = x - v[I->a[2]]; return;
+  /* memory (docs/format.md, "Memory"): only the way out of the mode held
+   * is watched; the other root function is a constant that never crosses */
+  case BG_FN_HYST: g[0] = mode ? -1.0 : x - v[I->a[2]], g[1] = mode ? x - y : 1.0; return;
+  case BG_FN_STICK: g[0] = mode ? fabs(y) - v[I->a[2]] : -1.0, g[1] = mode ? 1.0 : x; return;
   case BG_FN_FLOOR: g[0] = x - mode, g[1] = x - (mode + 1); return;
   case BG_FN_CEIL: g[0] = x - (mode - 1), g[1] = x - mode; return;
   default: g[0] = x; return;
@@ -226,6 +248,19 @@ static double ev_mode_of(const bg_eqsys *s, int e, const double *v, const int *d
   case BG_FN_MAX: case BG_FN_ABS: case BG_FN_STEP: case BG_FN_RAMP: return g0 >= 0;
   case BG_FN_PULSE: return g0 >= 0 && g1 < 0;
   case BG_FN_SAT: return g0 < 0 ? 0 : g1 > 0 ? 2 : 1;
+  /* memory: the mode held changes only when its way out is reached; at
+   * the start of a run (ev_fresh) the value the function starts with */
+  case BG_FN_HYST:
+    if (s->ev_fresh) return x >= v[I->a[2]];
+    return s->ev_mode[e] ? g1 > 0 : g0 >= 0;
+  case BG_FN_STICK: {
+    double f = fabs(v[I->a[1]]), lim = v[I->a[2]];
+    if (s->ev_fresh) return x == 0 && f <= lim;
+    if (s->ev_mode[e]) return !(g0 > 0);
+    /* slipping: sticks where the velocity crosses 0 (its root) or sits at
+     * 0, unless the force there is beyond the limit (it slips on) */
+    return (d1 != 0 || x == 0) && (d1 != 0 ? f <= lim : f < lim);
+  }
   case BG_FN_FLOOR: return floor(x) - (x == floor(x) && (d0 < 0 || d1 < 0));
   case BG_FN_CEIL: return ceil(x) + (x == ceil(x) && (d0 > 0 || d1 > 0));
   default: return 0;
@@ -233,7 +268,7 @@ static double ev_mode_of(const bg_eqsys *s, int e, const double *v, const int *d
 }
 
 double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v) {
-  if (s->ev_free[e]) return bg_eqs_ins_value(s, s->ev_code[e], v);
+  if (s->ev_free[e] && !s->ev_mem[e]) return bg_eqs_ins_value(s, s->ev_code[e], v);
   const tinstr *I = &s->code[s->ev_code[e]];
   double mode = s->ev_mode[e], x = v[I->a[0]];
   if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, x, 0);
@@ -243,7 +278,7 @@ double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v) {
   case BG_FN_RAMP: return mode ? x : 0;
   case BG_FN_MIN: case BG_FN_MAX: return mode ? x : v[I->a[1]];
   case BG_FN_SAT: return mode == 0 ? v[I->a[1]] : mode == 2 ? v[I->a[2]] : x;
-  default: return mode; /* sign, step, pulse, floor, ceil */
+  default: return mode; /* sign, step, pulse, floor, ceil, hyst, stick */
   }
 }
 
@@ -277,8 +312,13 @@ int bg_eqsys_mode_direction(const bg_eqsys *s, int e, double before, double afte
   /* a < b, a <= b and min(a, b) hold their mode 1 while the root function
    * a - b is below 0: entering it is falling */
   if (I->op == BG_X_LT || I->op == BG_X_LE || (I->op == BG_X_CALL && I->ref == BG_FN_MIN)) return -up;
+  if (I->op == BG_X_CALL && I->ref == BG_FN_STICK) return -up; /* slipping: |F| - limit rose through 0 */
   return up;
 }
+
+int bg_eqsys_mode_memory(const bg_eqsys *s, int e) { return s->ev_mem[e]; }
+int bg_eqsys_has_memory(const bg_eqsys *s) { return s->nmem; }
+void bg_eqsys_modes_reset(bg_eqsys *s) { s->ev_fresh = 1; }
 
 int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first) {
   int cond;
@@ -372,6 +412,7 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
   memcpy(s->ev_prev, s->ev_mode, (size_t)s->nev * sizeof(double));
   memset(s->ev_free, 0, (size_t)s->nev);
   modes_pass(s, t, y, yp, dir, NULL);
+  s->ev_fresh = 0;
   /* A switching function exactly zero here leaves to one side or the other
    * without a sign change the root finder could see: decide it by where the
    * solution is a moment later, y + delta y' (y' under the modes just set). */

@@ -464,9 +464,12 @@ static int diagnose(bg_eqsys *s, int c0, int c1, double t) {
 static void run_code(bg_eqsys *s, int c1, int frozen) {
   double *v = s->v;
   s->vals_frozen = frozen;
-  if (frozen) {
+  /* memory (hyst, stick) keeps its mode during a run even where the rest
+   * is evaluated as compiled: its mode is its value */
+  if (frozen || (s->ev_frozen && s->nmem)) {
     for (int k = 0; k < c1; k++) {
       int e = k < s->nmain ? s->code_ev[k] : -1;
+      if (e >= 0 && !frozen && !s->ev_mem[e]) e = -1;
       v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_fast(s, &s->code[k], v);
     }
     return;
@@ -534,7 +537,8 @@ static void run_slice(bg_eqsys *s, int frozen) {
   double *v = s->v;
   s->vals_frozen = frozen;
   for (int q = 0; q < s->noslice; q++) {
-    int k = s->oslice[q], e = frozen && k < s->nmain ? s->code_ev[k] : -1;
+    int k = s->oslice[q], e = s->nev && k < s->nmain ? s->code_ev[k] : -1;
+    if (e >= 0 && !frozen && !(s->ev_frozen && s->ev_mem[e])) e = -1;
     v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : ins_fast(s, &s->code[k], v);
   }
 }

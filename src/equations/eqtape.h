@@ -139,6 +139,9 @@ struct bg_eqsys {
   unsigned char *slot_dep; /* per slot: reads y or yp (bit 1), t (bit 2) */
   double *ev_y, *ev_yp;    /* n-sized scratch of the look-ahead */
   int ev_frozen;           /* evaluate with the modes frozen (set by the simulation) */
+  unsigned char *ev_mem;   /* per event: a memory function (hyst, stick): its mode is its value */
+  int nmem;                /* how many */
+  int ev_fresh;            /* the next update starts a run: memory takes its starting value */
   int vals_frozen;         /* the current values were computed with frozen modes */
 
   double *work;     /* n-sized scratch */

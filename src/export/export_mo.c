@@ -65,6 +65,8 @@ static void call(mo *M, const bg_xnode *n) {
   case BG_FN_RAMP: a = "(if %0 < 0 then 0 else %0)"; break;
   case BG_FN_PULSE: a = "(if %0 >= 0 and %0 < %1 then 1 else 0)"; break;
   case BG_FN_SAT: a = "(if %0 < %1 then %1 elseif %0 > %2 then %2 else %0)"; break;
+  case BG_FN_HYST: a = "(if %0 >= %2 then 1 else 0)"; break; /* as it starts: refused (bg_export_refusal) */
+  case BG_FN_STICK: a = "(if %0 == 0 and abs(%1) <= %2 then 1 else 0)"; break;
   default:
     bg_sb_printf(M->o, "%s(", bg_func_name(n->ref));
     x_args(M, n, ", ");

@@ -22,7 +22,9 @@ const bg_xlang bg_xlang_c = {
      [BG_FN_MIN] = "fmin(%0, %1)", [BG_FN_MAX] = "fmax(%0, %1)", [BG_FN_POW] = "pow(%0, %1)",
      [BG_FN_IF] = "(%0 != 0 ? %1 : %2)", [BG_FN_STEP] = "(%0 < 0 ? 0.0 : 1.0)",
      [BG_FN_RAMP] = "(%0 < 0 ? 0.0 : %0)", [BG_FN_PULSE] = "(%0 >= 0 && %0 < %1 ? 1.0 : 0.0)",
-     [BG_FN_SAT] = "(%0 < %1 ? %1 : %0 > %2 ? %2 : %0)"},
+     [BG_FN_SAT] = "(%0 < %1 ? %1 : %0 > %2 ? %2 : %0)",
+     /* memory: the value it starts with (an export with memory is refused: bg_export_refusal) */
+     [BG_FN_HYST] = "(%0 >= %2 ? 1.0 : 0.0)", [BG_FN_STICK] = "(%0 == 0 && fabs(%1) <= %2 ? 1.0 : 0.0)"},
     "-%0", "(double)(%0 == 0)", "(double)(%0 != 0 && %1 != 0)", "(double)(%0 != 0 || %1 != 0)",
     "pow(%0, %1)", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!=", bg_reserved_c};
 
@@ -33,7 +35,8 @@ const bg_xlang bg_xlang_python = {
      [BG_FN_MAX] = "_fmax(%0, %1)", [BG_FN_POW] = "_pow(%0, %1)", [BG_FN_IF] = "(%1 if %0 != 0 else %2)",
      [BG_FN_STEP] = "(0.0 if %0 < 0 else 1.0)", [BG_FN_RAMP] = "(0.0 if %0 < 0 else %0)",
      [BG_FN_PULSE] = "(1.0 if %0 >= 0 and %0 < %1 else 0.0)",
-     [BG_FN_SAT] = "(%1 if %0 < %1 else %2 if %0 > %2 else %0)"},
+     [BG_FN_SAT] = "(%1 if %0 < %1 else %2 if %0 > %2 else %0)",
+     [BG_FN_HYST] = "(1.0 if %0 >= %2 else 0.0)", [BG_FN_STICK] = "(1.0 if %0 == 0 and math.fabs(%1) <= %2 else 0.0)"},
     "-%0", "float(%0 == 0)", "float(%0 != 0 and %1 != 0)", "float(%0 != 0 or %1 != 0)",
     "_pow(%0, %1)", "float(%0 %o %1)", "_tab(%t, %0)", "==", "!=", bg_reserved_python};
 
@@ -42,7 +45,8 @@ const bg_xlang bg_xlang_octave = {
     {FN_COMMON(""), [BG_FN_ABS] = "abs(%0)", [BG_FN_SIGN] = "sign(%0)", [BG_FN_MIN] = "bg_fmin(%0, %1)",
      [BG_FN_MAX] = "bg_fmax(%0, %1)", [BG_FN_POW] = "%0 ^ %1", [BG_FN_IF] = "bg_if(%0 ~= 0, %1, %2)",
      [BG_FN_STEP] = "double(%0 >= 0)", [BG_FN_RAMP] = "bg_if(%0 < 0, 0, %0)",
-     [BG_FN_PULSE] = "double(%0 >= 0 && %0 < %1)", [BG_FN_SAT] = "bg_if(%0 < %1, %1, bg_if(%0 > %2, %2, %0))"},
+     [BG_FN_PULSE] = "double(%0 >= 0 && %0 < %1)", [BG_FN_SAT] = "bg_if(%0 < %1, %1, bg_if(%0 > %2, %2, %0))",
+     [BG_FN_HYST] = "double(%0 >= %2)", [BG_FN_STICK] = "double(%0 == 0 && abs(%1) <= %2)"},
     "-%0", "double(%0 == 0)", "double(%0 ~= 0 && %1 ~= 0)", "double(%0 ~= 0 || %1 ~= 0)",
     "%0 ^ %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~=", bg_reserved_octave};
 
@@ -152,4 +156,18 @@ int bg_export_prefix_ok(const char *p) {
     if (!((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_'))
       return 0;
   return 1;
+}
+
+int bg_export_refusal(const bg_eqsys *s, bg_strbuf *why) {
+  int nm = bg_eqsys_nmodes(s), first;
+  for (int e = 0; e < nm; e++) {
+    if (!bg_eqsys_mode_memory(s, e)) continue;
+    bg_eqsys_mode_roots(s, e, &first);
+    bg_sb_printf(why, "the model keeps a discrete state (%s, %d memory function%s in all) that the "
+                 "exported code does not carry: between events its value would be wrong; simulate "
+                 "it with bgdraw (docs/export.md)", bg_eqsys_root_text(s, first), bg_eqsys_has_memory(s),
+                 bg_eqsys_has_memory(s) == 1 ? "" : "s");
+    return 1;
+  }
+  return 0;
 }

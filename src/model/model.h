@@ -63,6 +63,7 @@ typedef enum {
   BG_FN_SIN, BG_FN_COS, BG_FN_TAN, BG_FN_ASIN, BG_FN_ACOS, BG_FN_ATAN, BG_FN_ATAN2,
   BG_FN_SINH, BG_FN_COSH, BG_FN_TANH, BG_FN_MIN, BG_FN_MAX, BG_FN_POW,
   BG_FN_FLOOR, BG_FN_CEIL, BG_FN_IF, BG_FN_STEP, BG_FN_RAMP, BG_FN_PULSE, BG_FN_SAT,
+  BG_FN_HYST, BG_FN_STICK, /* memory: a discrete state changed only at events (docs/format.md) */
   BG_FN_COUNT
 } bg_func;
 

@@ -392,7 +392,37 @@ static int compile_table(bg_build *b, const bg_expr *e) {
 static const char *const func_names[] = {
     "abs", "sign", "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos",
     "atan", "atan2", "sinh", "cosh", "tanh", "min", "max", "pow", "floor", "ceil", "if",
-    "step", "ramp", "pulse", "sat", "table"};
+    "step", "ramp", "pulse", "sat", "hyst", "stick", "table"};
+
+/* Numbers, pi and params only: the tree's value is known now. */
+static int const_tree(const bg_model *m, int k) {
+  const bg_xnode *x = &m->xnode[k];
+  if (x->op == BG_X_NUM || x->op == BG_X_PARAM) return 1;
+  if (x->op == BG_X_CALL && x->ref == BG_FN_IF) return 0; /* keep it simple: if() may hide anything */
+  if (x->op == BG_X_TIME || x->op == BG_X_INPUT || x->op == BG_X_STATE || x->op == BG_X_EFFORT ||
+      x->op == BG_X_FLOW || x->op == BG_X_STORE || x->op == BG_X_TABLE)
+    return 0;
+  for (int i = 0; i < x->nargs; i++)
+    if (!const_tree(m, x->arg[i])) return 0;
+  return x->nargs > 0;
+}
+
+/* hyst(x, lo, hi) needs lo < hi, stick(v, F, Fs) a limit Fs >= 0, where
+ * they are constants (docs/format.md, "Memory"); otherwise the run would
+ * switch at every event and stop as chattering, far from the mistake. */
+static void check_memory(bg_build *b, const bg_expr *e, int fn, const int *args) {
+  const bg_model *m = b->m;
+  if (fn == BG_FN_HYST && const_tree(m, args[1]) && const_tree(m, args[2])) {
+    double lo = bg_xeval(m, args[1], NULL), hi = bg_xeval(m, args[2], NULL);
+    if (!isnan(lo) && !isnan(hi) && !(lo < hi))
+      bg_diag_error(b->dg, e->args[1]->loc, "hyst(x, lo, hi) needs lo below hi: here lo = %g, hi = %g", lo, hi);
+  }
+  if (fn == BG_FN_STICK && const_tree(m, args[2])) {
+    double lim = bg_xeval(m, args[2], NULL);
+    if (!isnan(lim) && !(lim >= 0))
+      bg_diag_error(b->dg, e->args[2]->loc, "stick(v, F, Fs) needs a static friction limit Fs >= 0: here %g", lim);
+  }
+}
 
 static int compile_call(bg_build *b, const bg_expr *e) {
   if (strcmp(e->str, "table") == 0) return compile_table(b, e);
@@ -413,6 +443,7 @@ static int compile_call(bg_build *b, const bg_expr *e) {
   int k = bg_build_ref(b, BG_X_CALL, fn, e->loc);
   b->m->xnode[k].nargs = (unsigned char)e->nargs;
   for (int i = 0; i < e->nargs; i++) b->m->xnode[k].arg[i] = args[i];
+  if (fn == BG_FN_HYST || fn == BG_FN_STICK) check_memory(b, e, fn, args);
   return k;
 }
 

@@ -121,7 +121,7 @@ static int diff_call(grad *g, int k) {
     int den = op2(g, BG_X_ADD, op2(g, BG_X_MUL, a[1], a[1]), op2(g, BG_X_MUL, a[0], a[0]));
     return dvd(g, sub(g, mul(g, a[1], dy), mul(g, a[0], dx)), den);
   }
-  case BG_FN_PULSE: return ZERO;
+  case BG_FN_PULSE: case BG_FN_HYST: case BG_FN_STICK: return ZERO;
   default: return diff_call1(g, k, x.ref, a[0]);
   }
 }

@@ -23,6 +23,7 @@ static const struct {
     [BG_FN_CEIL] = {"ceil", 1, 1},   [BG_FN_IF] = {"if", 3, 3},
     [BG_FN_STEP] = {"step", 1, 1},   [BG_FN_RAMP] = {"ramp", 1, 1},
     [BG_FN_PULSE] = {"pulse", 2, 2}, [BG_FN_SAT] = {"sat", 3, 3},
+    [BG_FN_HYST] = {"hyst", 3, 3},   [BG_FN_STICK] = {"stick", 3, 3},
 };
 
 const char *bg_func_name(int fn) {
@@ -68,6 +69,10 @@ double bg_func_apply(int fn, const double *a, int nargs) {
   case BG_FN_RAMP: return a[0] < 0 ? 0.0 : a[0];
   case BG_FN_PULSE: return a[0] >= 0 && a[0] < a[1] ? 1.0 : 0.0;
   case BG_FN_SAT: return a[0] < a[1] ? a[1] : a[0] > a[2] ? a[2] : a[0];
+  /* the memory functions without their memory: the value they start with
+   * (docs/format.md, "Memory"); a simulation holds the rest as a mode */
+  case BG_FN_HYST: return a[0] >= a[2] ? 1.0 : 0.0;
+  case BG_FN_STICK: return a[0] == 0 && fabs(a[1]) <= a[2] ? 1.0 : 0.0;
   default: return NAN;
   }
 }

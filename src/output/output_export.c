@@ -37,6 +37,15 @@ bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys *
   *s = bg_eqsys_build_export(r->model, &r->analysis, &dg);
   bg_diags_free(&dg);
   if (!*s) return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s'%s", path ? path : "stdout", "");
+  bg_strbuf why = {0};
+  if (bg_export_refusal(*s, &why)) { /* memory: every export, the FMU too */
+    char what[300];
+    snprintf(what, sizeof what, "export refused: '%s': ", path ? path : "stdout");
+    bg_output_status st = bg_out_refuse(w, what, bg_sb_str(&why));
+    bg_sb_free(&why), bg_eqsys_free(*s);
+    *s = NULL;
+    return st;
+  }
   prefix_of(w, prefix, n);
   return BG_OUT_OK;
 }

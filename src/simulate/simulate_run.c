@@ -466,17 +466,20 @@ static int settle(simrun *R, double tnext) {
  * crossing back within it, the two cancel (no switching took place) */
 #define SIM_EVENT_SAME 1e-6
 
+/* Takes entry k out of the event log. */
+static void unlog(bg_simresult *r, int k) {
+  r->nevents--;
+  memmove(r->event_t + k, r->event_t + k + 1, (size_t)(r->nevents - k) * sizeof(double));
+  memmove(r->event_cond + k, r->event_cond + k + 1, (size_t)(r->nevents - k) * sizeof(int));
+  memmove(r->event_dir + k, r->event_dir + k + 1, (size_t)(r->nevents - k));
+}
+
 static void log_event(simrun *R, int i, int dir) {
   bg_simresult *r = R->r;
   double near = SIM_EVENT_SAME * (R->p->t_end - R->p->t0);
   for (int k = r->nevents - 1; k >= 0 && R->tcur - r->event_t[k] <= near; k--)
     if (r->event_cond[k] == i) {
-      if ((r->event_dir[k] > 0) != (dir > 0)) { /* there and back at once: no switching */
-        r->nevents--;
-        memmove(r->event_t + k, r->event_t + k + 1, (size_t)(r->nevents - k) * sizeof(double));
-        memmove(r->event_cond + k, r->event_cond + k + 1, (size_t)(r->nevents - k) * sizeof(int));
-        memmove(r->event_dir + k, r->event_dir + k + 1, (size_t)(r->nevents - k));
-      }
+      if ((r->event_dir[k] > 0) != (dir > 0)) unlog(r, k); /* there and back at once: no switching */
       return;
     }
   if (r->nevents == R->evcap) {
@@ -517,6 +520,20 @@ static void log_silent(simrun *R) {
   }
 }
 
+/* A memory function's root that left its mode as it was (stick: the
+ * velocity crossed 0 where the force is beyond the limit, so it slips on)
+ * switched nothing: its entry logged at this event is taken back. */
+static void unlog_memory(simrun *R, int nlogged) {
+  bg_simresult *r = R->r;
+  int nm = bg_eqsys_nmodes(R->s), first;
+  for (int e = 0; e < nm; e++) {
+    if (!bg_eqsys_mode_memory(R->s, e) || R->modes_ev[e] != R->modes_before[e]) continue;
+    int nr = bg_eqsys_mode_roots(R->s, e, &first);
+    for (int k = r->nevents - 1; k >= nlogged; k--)
+      if (r->event_cond[k] >= first && r->event_cond[k] < first + nr) unlog(r, k);
+  }
+}
+
 /* At a root: log what fired, set the modes, restart there. */
 static int on_event(simrun *R, double tnext) {
   int ida = R->p->kind == BG_SIM_IDA, f;
@@ -532,7 +549,7 @@ static int on_event(simrun *R, double tnext) {
   if (!ida) f = CVodeReInit(R->mem, R->tcur, R->y);
   else if ((f = IDAReInit(R->mem, R->tcur, R->y, R->yp)) >= 0) f = settle(R, tnext);
   bg_eqsys_modes_get(R->s, R->modes_ev);
-  if (f >= 0) log_silent(R);
+  if (f >= 0) log_silent(R), unlog_memory(R, nlogged);
   /* IDA finds the root on interpolated algebraic values; when the
    * consistent ones at that time say no condition has switched yet (every
    * mode as before), it was not an event: it is found again a moment later. */
@@ -851,6 +868,7 @@ static int run_calcic_guess(simrun *R, const double *y0, double tnext, int k) {
   R->nfunc_err = 0;
   R->sunmsg[0] = 0;
   R->tcur = R->p->t0;
+  bg_eqsys_modes_reset(R->s);
   modes_now(R, NULL);
   int f = IDAReInit(R->mem, R->p->t0, R->y, R->yp);
   return f < 0 ? f : settle(R, tnext);
@@ -858,6 +876,7 @@ static int run_calcic_guess(simrun *R, const double *y0, double tnext, int k) {
 
 static int run_start(simrun *R, bg_simresult *r) {
   if (R->nroot) { /* the modes of the state events from the initial point, then held */
+    bg_eqsys_modes_reset(R->s);
     modes_now(R, NULL);
     bg_eqsys_modes_freeze(R->s, 1);
   }

@@ -150,7 +150,7 @@ static int diff_call(bg_sym *S, int a, const int *u, int n, int x, memo *M) {
   case BG_FN_SAT:
     return ifelse(S, bg_sym_op(S, BG_X_LT, u[0], u[1]), d1,
                   ifelse(S, bg_sym_op(S, BG_X_GT, u[0], u[2]), d2, d0));
-  default: return zero; /* sign, floor, ceil, step, pulse: piecewise constant */
+  default: return zero; /* sign, floor, ceil, step, pulse, hyst, stick: piecewise constant */
   }
 }
 
@@ -603,6 +603,7 @@ static int is_piecewise(const bg_symnode *x) {
   switch (x->ref) {
   case BG_FN_SIGN: case BG_FN_FLOOR: case BG_FN_CEIL: case BG_FN_STEP: case BG_FN_PULSE:
   case BG_FN_IF: case BG_FN_MIN: case BG_FN_MAX: case BG_FN_ABS: case BG_FN_RAMP: case BG_FN_SAT:
+  case BG_FN_HYST: case BG_FN_STICK:
     return 1;
   default: return 0;
   }

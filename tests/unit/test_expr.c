@@ -214,6 +214,11 @@ static const fcase fcases[] = {
     {BG_FN_SAT, 3, {5, 0, 1}, 1},     {BG_FN_SAT, 3, {-5, 0, 1}, 0},
     {BG_FN_SAT, 3, {0.5, 0, 1}, 0.5}, {BG_FN_SAT, 3, {0, 0, 1}, 0},
     {BG_FN_SAT, 3, {1, 0, 1}, 1},
+    /* memory without its memory: the value it starts a run with */
+    {BG_FN_HYST, 3, {12, 8, 12}, 1},  {BG_FN_HYST, 3, {10, 8, 12}, 0},
+    {BG_FN_HYST, 3, {7, 8, 12}, 0},   {BG_FN_STICK, 3, {0, -1.5, 2}, 1},
+    {BG_FN_STICK, 3, {0, 2, 2}, 1},   {BG_FN_STICK, 3, {0, 2.5, 2}, 0},
+    {BG_FN_STICK, 3, {1e-9, 0, 2}, 0},
 };
 
 /* Each case with its arguments read from variables, from constants (folded)
