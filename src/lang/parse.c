@@ -586,8 +586,8 @@ static void parse_element(parser *p, const bg_token *kind) {
   int si = named_stmt(p, BG_ST_ELEMENT, kind, n, "an element");
   bg_ast_stmt *s = &p->stmts[si];
   if (at(p, BG_TK_LPAREN)) {
-    if (strcmp(kind->text, "C") != 0 && strcmp(kind->text, "R") != 0)
-      fail_at(p, cur(p), "only C and R elements can be multiport fields (a port list after "
+    if (strcmp(kind->text, "C") != 0 && strcmp(kind->text, "I") != 0 && strcmp(kind->text, "R") != 0)
+      fail_at(p, cur(p), "only C, I and R elements can be multiport fields (a port list after "
               "the name); %s '%s' has one port or two sides", kind->text, n->text);
     parse_field(p, si);
   } else if (accept(p, BG_TK_ASSIGN)) {
@@ -658,7 +658,7 @@ static void parse_law_lhs(parser *p, bg_ast_item *law) {
     law->name = join_dotted(p, v->text, expect_name(p, "e or f after the port's name")->text);
 }
 
-/* field_stmt := ('C' | 'R') NAME '(' ports ')' ':' law {',' law} [options]
+/* field_stmt := ('C' | 'I' | 'R') NAME '(' ports ')' ':' law {',' law} [options]
  * law := law_lhs '=' expr */
 static void parse_field(parser *p, int si) {
   parse_field_ports(p, si);

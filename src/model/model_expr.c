@@ -114,7 +114,9 @@ static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc);
 /* A port variable in a field's law: e2, f1, q3 by the port's number. */
 static int field_name_var(bg_build *b, const bg_expr *e) {
   const char *s = e->str;
-  if (!strchr("efq", s[0]) || !s[0]) return -1;
+  /* p1, p2 are an I field's momenta; elsewhere p1 stays an ordinary name */
+  const char *letters = b->m->field_kind[b->field] == BG_ELEM_I ? "efqp" : "efq";
+  if (!s[0] || !strchr(letters, s[0])) return -1;
   if (!s[1]) {
     bg_diag_error(b->dg, e->loc, "in a field's laws, name the port's variable (%c1, %c2, "
                   "PORT.%c), not '%s'", s[0], s[0], s[0], s);
@@ -129,7 +131,8 @@ static int field_not_value(bg_build *b, const bg_expr *e, int f) {
   const bg_model *m = b->m;
   bg_diag_error(b->dg, e->loc, "'%s' is %s field; use a variable of one of its ports (e.g. "
                 "%s.%s)", e->str, bg_elem_kind_article(m->field_kind[f]),
-                m->elem_name[m->field_elemadr[f]], m->field_kind[f] == BG_ELEM_C ? "q" : "e");
+                m->elem_name[m->field_elemadr[f]], m->field_kind[f] == BG_ELEM_C ? "q"
+                : m->field_kind[f] == BG_ELEM_I ? "p" : "e");
   return bad(b, e->loc);
 }
 
@@ -210,7 +213,7 @@ static int field_node(bg_build *b, int el, const char *f, bg_srcloc loc) {
 
 /* field: X.e | X.f | X.q | X.p | X.e1 ... | J.e | J.f */
 static int compile_field(bg_build *b, const bg_expr *e) {
-  if (b->field >= 0 && strchr("efq", e->field[0]) && !e->field[1]) {
+  if (b->field >= 0 && strchr("efqp", e->field[0]) && !e->field[1]) {
     /* el.e, or K.el.e with the field's own name: a port's own variable */
     const char *port = e->str, *fname = b->m->field_name[b->field];
     size_t nf = strlen(fname);

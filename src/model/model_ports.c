@@ -38,6 +38,15 @@ int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_e
                   b->law_elem < 0 ? "energy" : "laws", e->text);
     return bg_build_num(b, 0, e->loc);
   }
+  if (kind == BG_ELEM_I && v != 'p') {
+    bg_diag_error(b->dg, e->loc, "an I field's %s the ports' momenta p only, not '%s'",
+                  b->law_elem < 0 ? "energy reads" : "laws read", e->text);
+    return bg_build_num(b, 0, e->loc);
+  }
+  if (kind != BG_ELEM_I && v == 'p') {
+    bg_diag_error(b->dg, e->loc, "%s field's ports have no momentum: '%s'", bg_elem_kind_article(kind), e->text);
+    return bg_build_num(b, 0, e->loc);
+  }
   if (kind == BG_ELEM_R && v == 'q') {
     bg_diag_error(b->dg, e->loc, "an R field's ports have no displacement: '%s'", e->text);
     return bg_build_num(b, 0, e->loc);
@@ -47,7 +56,7 @@ int bg_build_port_var(bg_build *b, const char *port, int num, char v, const bg_e
                   "'%s'", m->elem_name[pe], e->text);
     return bg_build_num(b, 0, e->loc);
   }
-  if (v == 'q') return bg_build_ref(b, BG_X_STORE, pe, e->loc);
+  if (v == 'q' || v == 'p') return bg_build_ref(b, BG_X_STORE, pe, e->loc);
   int bond = bg_elem_port_bond(m, pe);
   if (bond < 0) return bg_build_num(b, 0, e->loc); /* its bond count is reported */
   if (v == 'e') return bg_build_ref(b, BG_X_EFFORT, bond, e->loc);

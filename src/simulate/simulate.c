@@ -195,11 +195,29 @@ static int find_elem(const byname *bn, const char *name, size_t len) {
   return -1;
 }
 
+/* A port of a C or I field whose law is linear in its own state (an
+ * inertance matrix, linear laws): the inverse of the law's coefficient of
+ * that state, the port's own capacitance or inertance seen with the other
+ * ports held (coupled coils: 1/(L^-1)_kk); 1 when the law reads more than
+ * the field's states. */
+static double field_scale(const bg_model *m, int e) {
+  double *q = bg_xcalloc((size_t)m->nelem, sizeof(double));
+  bg_xenv env = {m->sim.t0, NULL, NULL, NULL, NULL, q};
+  double f0 = bg_xeval(m, m->elem_expr[e], &env);
+  q[e] = 1;
+  double c = fabs(bg_xeval(m, m->elem_expr[e], &env) - f0);
+  free(q);
+  return isfinite(c) && c > 0 ? 1 / c : 1.0;
+}
+
 static double store_scale(const byname *bn, const char *name) {
   const bg_model *m = bn->m;
   const char *dot = name ? strrchr(name, '.') : NULL;
   if (!dot || (strcmp(dot, ".q") && strcmp(dot, ".p"))) return 1.0;
   int e = find_elem(bn, name, (size_t)(dot - name));
+  if (e >= 0 && bg_elem_is_store(m->elem_kind[e]) && m->elem_form[e] != BG_FORM_VALUE &&
+      m->elem_field[e] >= 0 && m->elem_linear[e] && !m->elem_modulated[e] && m->elem_expr[e] >= 0)
+    return field_scale(m, e);
   if (e < 0 || !bg_elem_is_store(m->elem_kind[e]) || m->elem_form[e] != BG_FORM_VALUE ||
       m->elem_modulated[e] || m->elem_expr[e] < 0)
     return 1.0;
