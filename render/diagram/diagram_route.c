@@ -498,10 +498,28 @@ static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double 
   for (int i = 0; i < nps; i++) add_cand(r, ps[i].stub.x, ps[i].stub.y, 1);
   for (int i = 0; i < npt; i++) add_cand(r, pt[i].stub.x, pt[i].stub.y, 1);
   add_cand(r, wx0, wy0, 0), add_cand(r, wx1, wy1, 0);
-  near_box(&r->ix, wx0, wy0, wx1, wy1, &r->nl);
+  /* the nodes in the window's cells; in a window of more than 1 024 cells
+   * those of every stride-th cell each way (the lines are thinned to
+   * MAXLINES anyway), so the work per signal stays bounded */
+  int cr[4];
+  cell_range(&r->ix, wx0, wy0, wx1, wy1, cr);
+  double ncell = (double)(cr[2] - cr[0] + 1) * (cr[3] - cr[1] + 1);
+  int stride = ncell > 1024 ? (int)ceil(sqrt(ncell / 1024)) : 1;
+  r->ix.tick++;
+  r->nl.n = 0;
+  for (int cy = cr[1]; cy <= cr[3]; cy += stride)
+    for (int cx = cr[0]; cx <= cr[2]; cx += stride) {
+      size_t c = (size_t)cy * (size_t)r->ix.nx + (size_t)cx;
+      for (int j = r->ix.adr[c]; j < r->ix.adr[c + 1]; j++) {
+        int k = r->ix.item[j];
+        if (k >= L->nnode || r->ix.stamp[k] == r->ix.tick) continue;
+        r->ix.stamp[k] = r->ix.tick;
+        if (r->nl.n == r->nl.cap) r->nl.cap = 2 * r->nl.cap + 16, r->nl.k = bg_xrealloc(r->nl.k, (size_t)r->nl.cap * sizeof *r->nl.k);
+        r->nl.k[r->nl.n++] = k;
+      }
+    }
   for (int j = 0; j < r->nl.n; j++) {
     int k = r->nl.k[j];
-    if (k >= L->nnode) continue;
     double bx0 = L->nx[k] - L->nw[k] / 2, bx1 = L->nx[k] + L->nw[k] / 2;
     double by0 = L->ny[k] - L->nh[k] / 2, by1 = L->ny[k] + L->nh[k] / 2;
     if (bx1 < wx0 || bx0 > wx1 || by1 < wy0 || by0 > wy1) continue;
