@@ -16,7 +16,8 @@ if [ "${1:-}" = "--tests" ]; then
          valgrind                             # tests/valgrind_outputs.sh
          python3-pytest jupyter-nbconvert     # the Python package's tests (python/tests),
          python3-ipykernel python3-nbformat   # a notebook executed headless
-         dpkg-dev lintian)                    # tests/deb.sh: the Debian packages
+         dpkg-dev lintian                     # tests/deb.sh: the Debian packages
+         parallel)                            # tests/study_cli.sh: a study split over GNU parallel
 fi
 missing=()
 for p in "${PKGS[@]}"; do

@@ -457,7 +457,9 @@ static void draw_xticks(plot *P, const panel *q, int k, int labels) {
   bg_markup_escapen(&b, name, strlen(name));
   if (!P->spec || !P->spec->xunit)
     bg_sb_printf(&b, " [%ss]", P->x.exp3 == BG_PLOT_NO_PREFIX ? "" : bg_plot_si_prefix(P->x.exp3));
-  else bg_sb_printf(&b, " [%s]", P->spec->xunit);
+  else if (*P->spec->xunit) bg_sb_printf(&b, " [%s]", P->spec->xunit);
+  else if (P->x.exp3 != BG_PLOT_NO_PREFIX && P->x.exp3) /* a unitless axis: its prefix alone */
+    bg_sb_printf(&b, " [%s]", bg_plot_si_prefix(P->x.exp3));
   text(P, bg_sb_str(&b), (P->left + P->right) / 2, bot + TICK_LEN + 2 + P->h_tick + 3,
        P->fs_label, 0.5, 0, "xlabel");
   bg_sb_free(&b);

@@ -9,6 +9,7 @@
 #include "model/model.h"
 #include "scene/scene.h"
 #include "simulate/simulate.h"
+#include "study/study.h"
 #include "scene/style.h"
 
 /* Draws every panel of r into out (initialised by the caller with
@@ -25,7 +26,8 @@ void bg_plot_scene(const bg_model *m, const bg_simresult *r, const bg_style *st,
 typedef struct bg_plot_spec {
   int xlog;          /* log10 abscissa with decade ticks and a minor grid */
   const char *xname; /* the axis name ("ω"); NULL: the panels' xlabel or "t" */
-  const char *xunit; /* written as " [unit]"; NULL: seconds with the axis' SI prefix */
+  const char *xunit; /* written as " [unit]"; NULL: seconds with the axis' SI prefix; "":
+                        no unit (the prefix alone, when there is one) */
   int angle_panel;   /* 1-based panel whose values are degrees (ticks at multiples of
                         45, or 90 on large ranges); 0: none */
 } bg_plot_spec;
@@ -33,6 +35,13 @@ void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_
                         const bg_style *st, double width, double height, bg_scene *out);
 /* Curve j's colour and dash pattern (docs/plots.md, Line styles). */
 void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it);
+
+/* A parameter study's plot (render/plot/plot_study.c, docs/study.md): the
+ * family of curves (family 1) or the quantities against the swept param
+ * (0), in format fmt into out; BG_RENDER_OK or BG_RENDER_ERROR with the
+ * reason in dg (no run succeeded; quantities of a Monte Carlo study). */
+int bg_study_plot_render(const bg_study *st, int family, const char *style, const char *style_dir,
+                         const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg);
 
 /* --plot FILE: writes the plots to path (svg, pdf or png by its extension)
  * atomically. style and style_dir as in bg_render_opts. Returns

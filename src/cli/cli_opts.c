@@ -21,10 +21,13 @@
 enum {
   OPT_CAUSALITY = 256, OPT_SHOW, OPT_HIGHLIGHT, OPT_STYLE, OPT_LAYOUT, OPT_REPORT, OPT_PLOT,
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
-  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME, OPT_IMPORT
+  OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME, OPT_IMPORT,
+  /* the study's words (cli_study.h): kept in order for cli_study.c */
+  OPT_SWEEP, OPT_VARY, OPT_COLLECT, OPT_STUDY, OPT_FAMILY, OPT_MONTE_CARLO, OPT_SEED, OPT_RUNS,
+  OPT_JOB_LIST, OPT_SLURM, OPT_MERGE, OPT_SPLIT
 };
 
-static const char short_opts[] = ":o:T:M:K:W:qvhV";
+static const char short_opts[] = ":o:T:M:K:W:j:qvhV";
 
 static const struct option long_opts[] = {
     {"output", required_argument, NULL, 'o'},
@@ -51,6 +54,19 @@ static const struct option long_opts[] = {
     {"transform", required_argument, NULL, OPT_TRANSFORM},
     {"collapse", required_argument, NULL, OPT_COLLAPSE},
     {"stdin-name", required_argument, NULL, OPT_STDIN_NAME},
+    {"sweep", required_argument, NULL, OPT_SWEEP},
+    {"vary", required_argument, NULL, OPT_VARY},
+    {"collect", required_argument, NULL, OPT_COLLECT},
+    {"study", required_argument, NULL, OPT_STUDY},
+    {"family", required_argument, NULL, OPT_FAMILY},
+    {"monte-carlo", required_argument, NULL, OPT_MONTE_CARLO},
+    {"seed", required_argument, NULL, OPT_SEED},
+    {"jobs", required_argument, NULL, 'j'},
+    {"runs", required_argument, NULL, OPT_RUNS},
+    {"job-list", required_argument, NULL, OPT_JOB_LIST},
+    {"slurm", required_argument, NULL, OPT_SLURM},
+    {"merge", required_argument, NULL, OPT_MERGE},
+    {"split", required_argument, NULL, OPT_SPLIT},
     {"simulate", no_argument, NULL, OPT_SIMULATE},
     {"verify", no_argument, NULL, OPT_VERIFY},
     {"check", no_argument, NULL, OPT_CHECK},
@@ -89,13 +105,21 @@ static const struct {
     {'T', offsetof(bg_cli_opts, force_format)},
     {'M', offsetof(bg_cli_opts, depfile)},
     {'K', offsetof(bg_cli_opts, layout)}, /* dot's -K ENGINE */
+    {OPT_MONTE_CARLO, offsetof(bg_cli_opts, draws)},
+    {OPT_SEED, offsetof(bg_cli_opts, seed)},
+    {'j', offsetof(bg_cli_opts, jobs)},
+    {OPT_RUNS, offsetof(bg_cli_opts, runs)},
+    {OPT_JOB_LIST, offsetof(bg_cli_opts, joblist)},
+    {OPT_SLURM, offsetof(bg_cli_opts, slurm)},
+    {OPT_MERGE, offsetof(bg_cli_opts, merge)},
+    {OPT_SPLIT, offsetof(bg_cli_opts, split)},
 };
 
 
 
 /* The closest option name to what the user typed (without "=value"). */
 static const char *closest_option(const char *arg, char *buf, size_t n) {
-  static const char shorts[] = "oTMqvhV";
+  static const char shorts[] = "oTMjqvhV";
   char typed[64];
   snprintf(typed, sizeof typed, "%s", arg);
   int bestd = 4;
@@ -119,7 +143,7 @@ static const char *closest_option(const char *arg, char *buf, size_t n) {
  * --causality, ...); NULL when none. One letter is too little for an edit
  * distance: every short option is one edit away. */
 static const char *closest_short(char c, char *buf, size_t n) {
-  static const char shorts[] = "oTMKqvhV";
+  static const char shorts[] = "oTMKjqvhV";
   buf[0] = '\0';
   for (int i = 0; shorts[i]; i++)
     if (shorts[i] != c && tolower((unsigned char)shorts[i]) == tolower((unsigned char)c)) {
@@ -219,6 +243,12 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
     if (o->ncollapse == BG_MAX_COLLAPSE) return bg_cli_usage_error("too many --collapse options%s%s", "", "");
     o->collapse[o->ncollapse++] = arg;
     return 0;
+  case OPT_SWEEP: case OPT_VARY: case OPT_COLLECT: case OPT_STUDY: case OPT_FAMILY:
+    if (o->nstudy == BG_MAX_STUDY_WORDS) return bg_cli_usage_error("too many study options%s%s", "", "");
+    o->study_opt[o->nstudy] = c == OPT_SWEEP ? 's' : c == OPT_VARY ? 'v' : c == OPT_COLLECT ? 'c'
+                            : c == OPT_STUDY ? 'o' : 'f';
+    o->study_arg[o->nstudy++] = arg;
+    return 0;
   case OPT_SIMULATE: o->simulate = 1; return 0;
   case OPT_IMPORT: o->import = 1; return 0;
   case OPT_VERIFY: o->verify = 1; o->simulate = 1; return 0;
@@ -296,6 +326,22 @@ void bg_cli_print_help(FILE *out) {
       "  --linear FORM       linear analysis: text | latex | json | octave | python (docs/linear.md)\n"
       "  --bode FILE, --nyquist FILE, --step FILE\n"
       "                      frequency, step and impulse responses (svg, pdf, png)\n"
+      "  --sweep NAME=A:B:N[:log] | NAME=V1,V2,...\n"
+      "                      a parameter study over a range or values (repeatable:\n"
+      "                      the grid; docs/study.md)\n"
+      "  --monte-carlo N --vary NAME=DIST [--seed S]\n"
+      "                      N runs with NAME drawn from normal(M,SD), uniform(LO,HI),\n"
+      "                      lognormal(MU,SIGMA)\n"
+      "  --collect OUT:WHAT  per run: final | min | max | mean | tmin | tmax | cross=LEVEL\n"
+      "  --study FILE        the study's table (csv, json) or the quantities against\n"
+      "                      the param (svg, pdf, png); repeatable\n"
+      "  --family FILE       the study's runs in one plot (svg, pdf, png)\n"
+      "  -j, --jobs N        threads of a study (default: the number of cores)\n"
+      "  --runs FIRST:COUNT  compute only these runs of the study (a part to --merge)\n"
+      "  --split N:DIR --job-list FILE | --slurm FILE\n"
+      "                      the study as N jobs for GNU parallel or a Slurm array, each\n"
+      "                      writing DIR/part-K.csv\n"
+      "  --merge DIR         the study's outputs from the parts in DIR\n"
       "  --transform NAME    rewrite the model (-o NEW.bg, -T bg; docs/transform.md):\n"
       "                      merge-stores | parasitic | relax-junction\n"
       "  --import            write a BondGraphTools YAML model as .bg (-o M.bg, -T bg;\n"

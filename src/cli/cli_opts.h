@@ -6,7 +6,7 @@
 
 #include "model/model.h"
 
-enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64, BG_MAX_COLLAPSE = 256 };
+enum { BG_MAX_OUTPUTS = 32, BG_MAX_SETS = 64, BG_MAX_COLLAPSE = 256, BG_MAX_STUDY_WORDS = 96 };
 
 /* The path of an output that goes to standard output ("-o -", or -T with no -o). */
 #define BG_CLI_STDOUT "-"
@@ -47,6 +47,14 @@ typedef struct bg_cli_opts {
   int nsets;
   const char *collapse[BG_MAX_COLLAPSE]; /* --collapse NAME (repeatable) or all */
   int ncollapse;
+  /* a parameter study (docs/study.md; src/cli/cli_study.c reads them): --sweep,
+   * --vary, --collect, --study and --family in the order given */
+  int study_opt[BG_MAX_STUDY_WORDS];
+  const char *study_arg[BG_MAX_STUDY_WORDS];
+  int nstudy;
+  const char *draws, *seed, *jobs, *runs; /* --monte-carlo N, --seed S, -j N, --runs A:B */
+  const char *split, *joblist, *slurm, *merge; /* --split N:DIR, --job-list FILE, --slurm FILE,
+                                                     --merge DIR */
 } bg_cli_opts;
 
 /* Parses argv into o (GNU conventions: --opt=value, --, -Tsvg, -qv; options

@@ -11,6 +11,7 @@
 
 #include "causality/causality.h"
 #include "cli/cli_run.h"
+#include "cli/cli_study.h"
 #include "equations/equations.h"
 #include "base/fileio.h"
 #include "analysis/analysis.h"
@@ -172,15 +173,21 @@ int main(int argc, char **argv) {
     return EXIT_OK;
   }
   diagnostics_output(&r.opts);
-  if (cli_render_options(&r) != 0) {
+  cli_study study; /* a parameter study (docs/study.md) */
+  int studying = cli_study_asked(&r.opts);
+  if ((studying && cli_study_parse(&r.opts, &study) != 0) || cli_render_options(&r) != 0) {
+    if (studying) cli_study_free(&study);
     bg_cli_free(&r.opts);
     return EXIT_USAGE;
   }
   int rc = load_model(&r);
   if (!r.opts.quiet || rc) bg_diags_print(&r.R->dg, stderr);
-  if (rc) {
+  if (rc || studying) {
+    if (!rc) rc = cli_study_run(&r, &study);
+    else rc = EXIT_MODEL;
+    if (studying) cli_study_free(&study);
     run_free(&r);
-    return EXIT_MODEL;
+    return rc;
   }
   if (r.opts.import && !r.R->imported) {
     fprintf(stderr, "bgdraw: --import: %s is a bgdraw model already, not a BondGraphTools model\n",

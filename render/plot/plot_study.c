@@ -1,0 +1,209 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Plots of a parameter study (docs/study.md) in the simulation plots' look,
+ * through bg_plot_scene_spec (the data become rows of a result, the panels
+ * a small model, as plot_linear.c does):
+ * - the family of curves: one panel per collected output; a sweep draws
+ *   its runs (at most FAMILY_MAX, evenly chosen, the first and the last
+ *   among them), named by their param values in the legend; a Monte Carlo
+ *   study draws the envelope of its runs: minimum, 5 % quantile, mean,
+ *   95 % quantile and maximum at each time;
+ * - the quantities against the swept param: one panel per quantity, one
+ *   curve per combination of the other params of a grid. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/arena.h"
+#include "plot/plot.h"
+#include "plot/plot_linear.h"
+#include "diagram/render.h"
+
+enum { FAMILY_MAX = 12, QUANTITY_CURVES_MAX = 12 };
+#define WIDTH 540.0
+
+typedef struct table {
+  bg_simresult r;
+  bg_model m;
+  int *adr, *nexpr;
+  const char **title, **ylabel, **xlabel;
+  char **names;
+} table;
+
+static void table_init(table *T, const char *name, int nrow, int ncurve, int npanel) {
+  memset(T, 0, sizeof *T);
+  T->r.nrows = nrow;
+  T->r.nout = ncurve * npanel;
+  T->r.t = bg_xcalloc((size_t)nrow + 1, sizeof(double));
+  T->r.values = bg_xcalloc((size_t)nrow * T->r.nout + 1, sizeof(double));
+  T->names = bg_xcalloc((size_t)T->r.nout + 1, sizeof(char *));
+  T->r.names = (const char **)T->names;
+  T->adr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
+  T->nexpr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
+  T->title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->ylabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->xlabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->m.name = name, T->m.title = name;
+  T->m.nplot = npanel, T->m.nplotexpr = T->r.nout;
+  for (int k = 0; k < npanel; k++) T->adr[k] = k * ncurve, T->nexpr[k] = ncurve, T->ylabel[k] = "";
+  T->m.plot_expradr = T->adr, T->m.plot_nexpr = T->nexpr;
+  T->m.plot_title = T->title, T->m.plot_ylabel = T->ylabel, T->m.plot_xlabel = T->xlabel;
+}
+
+static void table_free(table *T) {
+  for (int k = 0; k < T->r.nout; k++) free(T->names[k]);
+  free(T->names), free(T->r.t), free(T->r.values);
+  free(T->adr), free(T->nexpr), free(T->title), free(T->ylabel), free(T->xlabel);
+}
+
+static char *fmt_num(double v) {
+  char buf[40];
+  bg_num_format(buf, sizeof buf, v, 6);
+  return strdup(buf);
+}
+
+/* "R0 = 5, L0 = 0.001" for the params from index from on */
+static char *param_words(const bg_study *st, const bg_study_run *r, int from) {
+  bg_strbuf b = {0};
+  for (int k = from; k < st->spec->nparams; k++) {
+    char *v = fmt_num(r->param[k]);
+    bg_sb_printf(&b, "%s%s = %s", k > from ? ", " : "", st->spec->params[k].name, v);
+    free(v);
+  }
+  return b.s ? b.s : strdup("");
+}
+
+/* The runs that have trajectories on the first such run's time grid. */
+static int grid_runs(const bg_study *st, long *idx) {
+  int n = 0;
+  const bg_study_run *ref = NULL;
+  for (long i = 0; i < st->count; i++) {
+    const bg_study_run *r = &st->runs[i];
+    if (r->status != BG_STUDY_OK || !r->nrows) continue;
+    if (!ref) ref = r;
+    if (r->nrows != ref->nrows || memcmp(r->t, ref->t, (size_t)r->nrows * sizeof(double))) continue;
+    idx[n++] = i;
+  }
+  return n;
+}
+
+static int cmp_double(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* Quantile q of sorted v[0..n) (linear between order statistics). */
+static double quantile(const double *v, int n, double q) {
+  double h = (n - 1) * q;
+  int lo = (int)floor(h);
+  return lo + 1 < n ? v[lo] + (h - lo) * (v[lo + 1] - v[lo]) : v[n - 1];
+}
+
+static int family_table(const bg_study *st, table *T, char *why, size_t nwhy) {
+  long *idx = bg_xcalloc((size_t)st->count + 1, sizeof(long));
+  int n = grid_runs(st, idx);
+  if (n == 0) {
+    snprintf(why, nwhy, "no run of the study succeeded");
+    free(idx);
+    return -1;
+  }
+  int mc = st->spec->kind == BG_STUDY_MONTE_CARLO, nc = st->ncurve;
+  int ncurve = mc ? 5 : n < FAMILY_MAX ? n : FAMILY_MAX;
+  const bg_study_run *ref = &st->runs[idx[0]];
+  int rows = ref->nrows;
+  table_init(T, st->title, rows, ncurve, nc);
+  memcpy(T->r.t, ref->t, (size_t)rows * sizeof(double));
+  double *col = bg_xcalloc((size_t)n + 1, sizeof(double));
+  for (int c = 0; c < nc; c++) {
+    T->title[c] = st->curve_name[c];
+    if (mc) {
+      static const char *names[] = {"minimum", "5 % quantile", "mean", "95 % quantile", "maximum"};
+      for (int j = 0; j < 5; j++) T->names[c * 5 + j] = strdup(names[j]);
+      for (int row = 0; row < rows; row++) {
+        double sum = 0;
+        for (int i = 0; i < n; i++) col[i] = st->runs[idx[i]].curve[(size_t)row * nc + c], sum += col[i];
+        qsort(col, (size_t)n, sizeof *col, cmp_double);
+        double *out = &T->r.values[(size_t)row * T->r.nout + c * 5];
+        out[0] = col[0], out[1] = quantile(col, n, 0.05), out[2] = sum / n;
+        out[3] = quantile(col, n, 0.95), out[4] = col[n - 1];
+      }
+    } else {
+      for (int j = 0; j < ncurve; j++) {
+        /* evenly chosen: the first and the last run always among them */
+        long i = ncurve == 1 ? 0 : (long)((double)j * (n - 1) / (ncurve - 1) + 0.5);
+        const bg_study_run *r = &st->runs[idx[i]];
+        T->names[c * ncurve + j] = param_words(st, r, 0);
+        for (int row = 0; row < rows; row++)
+          T->r.values[(size_t)row * T->r.nout + c * ncurve + j] = r->curve[(size_t)row * nc + c];
+      }
+    }
+  }
+  free(col), free(idx);
+  return 0;
+}
+
+/* The quantities against the first param: runs in the grid's order, so for
+ * each combination of the other params the first param's values are
+ * consecutive rows (stride = the other params' count). */
+static int quantity_table(const bg_study *st, table *T, char *why, size_t nwhy) {
+  const bg_study_spec *s = st->spec;
+  if (s->kind != BG_STUDY_SWEEP || st->count != st->nruns) {
+    snprintf(why, nwhy, "%s", s->kind != BG_STUDY_SWEEP
+                                  ? "the quantities are drawn against a swept param (--sweep), "
+                                    "not against Monte Carlo draws"
+                                  : "the quantities are drawn from the whole study, not a part");
+    return -1;
+  }
+  int nx = s->params[0].nvalues;
+  long stride = st->nruns / nx;
+  int ncurve = stride < QUANTITY_CURVES_MAX ? (int)stride : QUANTITY_CURVES_MAX;
+  table_init(T, st->title, nx, ncurve, st->ncollect);
+  for (int x = 0; x < nx; x++) T->r.t[x] = s->params[0].values[x];
+  for (int q = 0; q < st->ncollect; q++) {
+    T->title[q] = st->collect[q].label;
+    T->xlabel[q] = s->params[0].name;
+    for (int j = 0; j < ncurve; j++) {
+      T->names[q * ncurve + j] = stride > 1 ? param_words(st, &st->runs[j], 1) : strdup(st->collect[q].label);
+      for (int x = 0; x < nx; x++) {
+        const bg_study_run *r = &st->runs[(long)x * stride + j];
+        T->r.values[(size_t)x * T->r.nout + q * ncurve + j] = r->status == BG_STUDY_OK ? r->value[q] : NAN;
+      }
+    }
+  }
+  return 0;
+}
+
+int bg_study_plot_render(const bg_study *st, int family, const char *style, const char *style_dir,
+                         const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg) {
+  table T;
+  char why[200];
+  if ((family ? family_table(st, &T, why, sizeof why) : quantity_table(st, &T, why, sizeof why))) {
+    bg_diag_error(dg, (bg_srcloc){0}, "no study plot for '%s': %s", path ? path : "the plot", why);
+    return BG_RENDER_ERROR;
+  }
+  bg_style sty;
+  if (bg_style_load(&sty, style, style_dir, dg) != 0) {
+    table_free(&T);
+    return BG_RENDER_ERROR;
+  }
+  bg_scene sc;
+  bg_scene_init(&sc, sty.font);
+  sc.background = sty.background;
+  char title[300];
+  snprintf(title, sizeof title, "%s: %s", st->title,
+           family ? (st->spec->kind == BG_STUDY_MONTE_CARLO ? "Monte Carlo envelope" : "family of runs")
+                  : "collected quantities");
+  sc.title = bg_arena_strdup(&sc.arena, title);
+  const bg_study_param *p0 = &st->spec->params[0];
+  size_t ls = strlen(p0->spec);
+  bg_plot_spec spec = {0};
+  if (!family) {
+    spec.xlog = ls > 4 && !strcmp(p0->spec + ls - 4, ":log");
+    spec.xname = p0->name, spec.xunit = "";
+  }
+  bg_plot_scene_spec(&T.m, &T.r, &spec, &sty, WIDTH, 0, &sc);
+  int rc = bg_plot_render_scene(&sc, fmt, sty.png_scale, out, dg);
+  bg_scene_free(&sc);
+  table_free(&T);
+  return rc;
+}
