@@ -202,7 +202,7 @@ done
 # ---- habits of the ecosystem (issue 32): dot's -K, case-blind extensions,
 # the diagram on standard output when it is not a terminal, hints for short options
 usage "-t suggests -T" "did you mean '-T'" "$M" -t svg
-usage "-c lists the long options beginning with c" "did you mean one of --causality, --color, --collapse, --check" "$M" -c
+usage "-c lists the long options beginning with c" "did you mean one of --causality, --color, --collapse, --collect, --check" "$M" -c
 usage "-T svg:cairo is a sentence" "one renderer for each format.*write -T svg" "$M" -T svg:cairo
 "$BGDRAW" "$M" -K neato -o "$tmp/k.svg" && "$BGDRAW" "$M" --layout neato -o "$tmp/l.svg" &&
   cmp -s "$tmp/k.svg" "$tmp/l.svg" && ! cmp -s "$tmp/k.svg" <("$BGDRAW" "$M" -T svg)
