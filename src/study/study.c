@@ -272,7 +272,10 @@ int bg_study_prepare(const bg_study_spec *s, const bg_study_opts *o, bg_study *s
              o->first + st->count - 1, st->nruns - 1);
     return -1;
   }
-  if (probe(s, o, st, err, n)) return -1;
+  if (probe(s, o, st, err, n)) {
+    bg_study_free(st); /* what the probe kept (the title, the default quantities) */
+    return -1;
+  }
   st->runs = bg_xcalloc((size_t)st->count, sizeof *st->runs);
   return 0;
 }
