@@ -82,6 +82,10 @@ void bgd_options_init(bgd_options *o);
  * diagnostics and gives the model's default name. Never NULL (but for lack
  * of memory): look at bgd_status. o NULL: the defaults. */
 bgd_model *bgd_open(const char *name, const char *text, const bgd_options *o);
+/* The same for len bytes of text (copied) that may hold anything, as a file
+ * may: a NUL byte is a diagnostic ("not a text file"), as it is in a file,
+ * where bgd_open's text would end at it. */
+bgd_model *bgd_open_buffer(const char *name, const char *text, size_t len, const bgd_options *o);
 bgd_model *bgd_open_file(const char *path, const bgd_options *o);
 /* BGD_OK when the model loaded, BGD_MODEL when it has errors, BGD_USAGE for
  * a wrong option (unknown causality method, layer, highlight). */

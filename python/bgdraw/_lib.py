@@ -128,6 +128,7 @@ P = ctypes.POINTER
 CALLS = {
     "bgd_options_init": (None, [P(Options)]),
     "bgd_open": (HANDLE, [ctypes.c_char_p, ctypes.c_char_p, P(Options)]),
+    "bgd_open_buffer": (HANDLE, [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_size_t, P(Options)]),
     "bgd_open_file": (HANDLE, [ctypes.c_char_p, P(Options)]),
     "bgd_status": (ctypes.c_int, [HANDLE]),
     "bgd_free": (None, [HANDLE]),

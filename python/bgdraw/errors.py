@@ -58,7 +58,9 @@ class UsageError(Error, ValueError):
 
 class RefusedError(Error):
     """The analysis refuses it: a simulation or linear analysis refused or
-    failed (exit status 3); reason says why."""
+    failed (exit status 3); reason says why. A simulation that failed part of
+    the way keeps its rows up to there in simulation (else None)."""
+    simulation = None
 
     @property
     def reason(self):

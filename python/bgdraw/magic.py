@@ -80,7 +80,7 @@ def run_cell(line, cell, namespace=None, display=None):
     if a.equations:
         shown.append(m.equations(a.equations))
     if a.linear:
-        shown.append(_Text(m.output("linear", a.linear).decode()))
+        shown.append(_Text(m.output("linear", a.linear).decode("utf-8", "replace")))
     if a.simulate:
         shown.append(_Figure(m.plot(format="svg"), "image/svg+xml"))
     if a.format == "png":

@@ -3,8 +3,10 @@
 libbgdraw handle (the command line's run: each stage runs once, when asked).
 """
 import ctypes
+import functools
 import json
 import os
+import threading
 
 import numpy as np
 
@@ -28,7 +30,8 @@ def _b(s):
 
 
 def _s(b):
-    return None if b is None else b.decode()
+    # the library's text; a diagnostic quotes the model's line, which may not be UTF-8
+    return None if b is None else b.decode("utf-8", "replace")
 
 
 def _diagnostic(d):
@@ -66,6 +69,17 @@ def _shown(value):
     return ",".join(value)
 
 
+def _locked(method):
+    """One thread at a time in a handle (the library's rule); the library
+    runs without the GIL, so different models work on different threads at
+    once."""
+    @functools.wraps(method)
+    def run(self, *args, **kwargs):
+        with self._lock:
+            return method(self, *args, **kwargs)
+    return run
+
+
 class Model:
     """A bond graph model, loaded and checked.
 
@@ -94,14 +108,16 @@ class Model:
 
     @classmethod
     def from_string(cls, text, name="<string>", **options):
-        """Parses and checks model text; name appears in the diagnostics and
-        gives the model's default name (its stem: "pump.bg" names it pump)."""
+        """Parses and checks model text (str, or bytes of UTF-8); name appears
+        in the diagnostics and gives the model's default name (its stem:
+        "pump.bg" names it pump)."""
         return cls._open(name, text, None, options)
 
     @classmethod
     def _open(cls, name, text, path, options):
         self = object.__new__(cls)
         self._handle = None
+        self._lock = threading.RLock()
         self._source = path or name
         known = {"causality", "params", "max_list", "max_errors", "verify", "warnings", "prefix",
                  "log", "verbose", *_DRAWING}
@@ -111,14 +127,17 @@ class Model:
                             f"(options: {', '.join(sorted(known))})")
         self._options = dict(options)
         o = self._c_options(options)
-        self._handle = (lib.bgd_open_file(_b(path), ctypes.byref(o)) if path is not None
-                        else lib.bgd_open(_b(name), _b(text), ctypes.byref(o)))
+        if path is not None:
+            self._handle = lib.bgd_open_file(_b(path), ctypes.byref(o))
+        else:  # every byte, a NUL too (then the diagnostic a file with one gets)
+            data = text if isinstance(text, bytes) else str(text).encode("utf-8", "surrogateescape")
+            self._handle = lib.bgd_open_buffer(_b(name), data, len(data), ctypes.byref(o))
         if not self._handle:
             raise MemoryError("bgdraw: out of memory")
         status = lib.bgd_status(self._handle)
         self.diagnostics = self._read_diagnostics()
         if status != _lib.OK:
-            text = _lib.take_string(lib.bgd_diagnostics_text(self._handle)).decode()
+            text = _lib.take_string(lib.bgd_diagnostics_text(self._handle)).decode("utf-8", "replace")
             diags = self.diagnostics
             self.close()
             raise BY_STATUS.get(status, ModelError)(text, diags)
@@ -154,7 +173,7 @@ class Model:
         if log is not None:
             def relay(_ctx, level, message):
                 try:
-                    log(level, message.decode())
+                    log(level, message.decode("utf-8", "replace"))
                 except Exception:  # an exception cannot cross the C library
                     pass
             o.log = _lib.LOG_FN(relay)
@@ -169,6 +188,7 @@ class Model:
         return [_diagnostic(arr[i]) for i in range(n)]
 
     # ----------------------------------------------------------- life cycle
+    @_locked
     def close(self):
         """Frees the library's handle (also when the object is collected)."""
         if getattr(self, "_handle", None):
@@ -176,7 +196,9 @@ class Model:
             self._handle = None
 
     def __del__(self):
-        self.close()
+        if getattr(self, "_handle", None) and lib is not None:  # (not at interpreter exit)
+            lib.bgd_free(self._handle)
+            self._handle = None
 
     def __enter__(self):
         return self
@@ -197,6 +219,7 @@ class Model:
 
     # -------------------------------------------------------------- results
     @property
+    @_locked
     def name(self):
         return _s(lib.bgd_name(self._h()))
 
@@ -204,6 +227,7 @@ class Model:
     def warnings(self):
         return [d for d in self.diagnostics if d.severity == "warning"]
 
+    @_locked
     def count(self, what):
         """How many elements, bonds, params, states, dependent_stores,
         conflicts, causal_paths, causal_loops, topological_loops, unknowns,
@@ -229,6 +253,7 @@ class Model:
             self._cache["analysis"] = self._analysis()
         return self._cache["analysis"]
 
+    @_locked
     def _analysis(self):
         h = self._h()
         elements = tuple(Element(_s(e.name), _s(e.kind), _s(e.causality))
@@ -267,32 +292,45 @@ class Model:
 
     def check(self):
         """What `bgdraw --check` prints: the model and analysis summary."""
-        return self.output("check").decode()
+        return self.output("check").decode("utf-8", "replace")
 
     def equations(self, printer="text"):
         """The equations as a printer writes them: "text", "latex", "json"
         (then as dicts) or "c". In a notebook the LaTeX displays as math."""
-        data = self.output("equations", printer).decode()
+        data = self.output("equations", printer).decode("utf-8", "replace")
         return json.loads(data) if printer == "json" else Equations(data, printer)
 
+    @_locked
     def simulate(self):
         """Runs the model's simulate block (once): a Simulation, each output
         column by name as a NumPy array. RefusedError when the simulation is
-        refused or fails, with the reason."""
-        if "simulation" in self._cache:
-            return self._cache["simulation"]
+        refused or fails, with the reason; after a failure part of the way,
+        its simulation attribute holds the rows up to there (partial)."""
+        if "simulation" not in self._cache:
+            self._cache["simulation"] = self._simulation()
+        sim = self._cache["simulation"]
+        if isinstance(sim, Exception):
+            raise sim
+        return sim
+
+    def _simulation(self):
         s = _lib.Simulation()
         st = lib.bgd_simulate(self._h(), ctypes.byref(s))
         if st == _lib.MODEL:
-            raise ModelError("bgdraw: the model has no equations to simulate")
-        if st != _lib.OK:
-            raise RefusedError(f"bgdraw: simulation refused: {_s(s.message) or 'no reason given'}")
-        columns = {_s(s.names[j]): _doubles(lib.bgd_column(self._h(), j), s.nrows)
-                   for j in range(s.ncolumns)}
-        sim = Simulation(_doubles(s.time, s.nrows), columns, _s(s.solver), bool(s.partial))
-        self._cache["simulation"] = sim
+            return ModelError("bgdraw: the model has no equations to simulate")
+        sim = None
+        if s.nrows > 0:
+            columns = {_s(s.names[j]): _doubles(lib.bgd_column(self._h(), j), s.nrows)
+                       for j in range(s.ncolumns)}
+            sim = Simulation(_doubles(s.time, s.nrows), columns, _s(s.solver),
+                             bool(s.partial) or st != _lib.OK)
+        if st != _lib.OK:  # a failure part of the way: its rows up to there, as the CSV has them
+            e = RefusedError(f"bgdraw: simulation refused: {_s(s.message) or 'no reason given'}")
+            e.simulation = sim
+            return e
         return sim
 
+    @_locked
     def linear(self):
         """The linear analysis (the model's linearise statement, else at the
         initial point): A, B, C, D, poles and transfer functions. RefusedError
@@ -350,6 +388,7 @@ class Model:
         if st != _lib.OK:
             self._raise(st)
 
+    @_locked
     def output(self, kind, form=None, **drawing):
         """Any output as bgdraw writes it, as bytes: "svg", "pdf", "png",
         "dot", "json", "check", "equations" (form "text", "latex", "json",
@@ -365,6 +404,7 @@ class Model:
             return _lib.take_string(data.value, n.value)
         return self._with_drawing(drawing, produce)
 
+    @_locked
     def write(self, path, kind, form=None, **drawing):
         """An output into a file, written atomically (see output())."""
         def produce():
@@ -379,7 +419,7 @@ class Model:
         style name ("print", "slides") or file; highlight: "path:K", "loop:K",
         "conflict:K"; layout: "dot", "neato", ..., "rows"."""
         return self.output("svg", show=show, style=style, highlight=highlight,
-                           layout=layout).decode()
+                           layout=layout).decode("utf-8", "replace")
 
     def png(self, show=None, style=None, highlight=None, layout=None):
         return self.output("png", show=show, style=style, highlight=highlight, layout=layout)
@@ -409,7 +449,7 @@ class Model:
             fmt = format or os.path.splitext(os.fspath(path))[1].lstrip(".").lower()
             return self.write(path, "plot", fmt)
         data = self.output("plot", format or "svg")
-        return data.decode() if (format or "svg") == "svg" else data
+        return data.decode("utf-8", "replace") if (format or "svg") == "svg" else data
 
     # -------------------------------------------------------------- Jupyter
     def _repr_svg_(self):

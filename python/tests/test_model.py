@@ -214,6 +214,18 @@ def test_model_error_carries_diagnostics(tmp_path):
     assert e.value._render_traceback_()[0] == str(d)
 
 
+def test_text_is_every_byte():
+    with pytest.raises(bgdraw.ModelError) as e:  # not cut at the NUL: the file's diagnostic
+        bgdraw.Model.from_string("Se U = 1\n1 j\0\nC C1 = 1\nbond U -> j\nbond j -> C1\n",
+                                 name="nul.bg")
+    (d,) = e.value.errors
+    assert (d.line, d.column) == (2, 4) and "NUL byte" in d.message
+    with pytest.raises(bgdraw.ModelError, match="UTF-8"):
+        bgdraw.Model.from_string(b"Se U = 1\n1 j\xff\n", name="latin.bg")
+    m = bgdraw.Model.from_string(open(example("rlc.bg"), "rb").read(), name="rlc.bg")
+    assert m.json() == bgdraw.Model.from_file(example("rlc.bg")).json()
+
+
 def test_usage_and_refusals(rlc):
     with pytest.raises(bgdraw.UsageError, match="causality"):
         bgdraw.Model.from_file(example("rlc.bg"), causality="nonsense")
@@ -251,3 +263,33 @@ def test_closed_model():
     with pytest.raises(ValueError, match="closed"):
         m.svg()
     assert repr(m) == "<bgdraw.Model (closed)>"
+
+
+def test_threads():
+    """Models on several threads at once give what they give alone; one model
+    shared by threads that draw it with different layers gives each thread
+    its own layers (a lock per model: the library's one thread per handle)."""
+    from concurrent.futures import ThreadPoolExecutor
+    names = ["rlc.bg", "slider_crank.bg", "hydraulic_bridge.bg", "delta.bg"]
+
+    def work(name):
+        m = bgdraw.Model.from_file(example(name))
+        try:
+            sim = m.simulate().as_dict()
+        except bgdraw.RefusedError as e:
+            sim = e.reason
+        return m.svg(), m.json(), sim
+
+    alone = [work(n) for n in names]
+    with ThreadPoolExecutor(4) as pool:
+        together = list(pool.map(work, names))
+    for (svg, doc, sim), (svg2, doc2, sim2) in zip(alone, together):
+        assert svg == svg2 and doc == doc2
+        assert sim == sim2 if isinstance(sim, str) else all(np.array_equal(sim[k], sim2[k]) for k in sim)
+    shared = bgdraw.Model.from_file(example("class12_paths.bg"))
+    layers = ["paths", "loops", "strokes", "all", "none", "conflicts"]
+    want = {s: shared.svg(show=s) for s in layers}
+    assert len(set(want.values())) == len(layers)
+    with ThreadPoolExecutor(3) as pool:
+        got = list(pool.map(lambda s: (s, shared.svg(show=s)), layers * 20))
+    assert all(svg == want[s] for s, svg in got)

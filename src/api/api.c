@@ -135,7 +135,7 @@ static void configure(bgd_model *m, const bgd_options *o, bg_run_opts *ro, bg_re
   rd->style_dir = library_style_dir(style_dir, n);
 }
 
-static bgd_model *open_run(const char *name, const char *text, const char *path,
+static bgd_model *open_run(const char *name, const char *text, size_t len, const char *path,
                            const bgd_options *o) {
   bgd_model *m = calloc(1, sizeof *m);
   if (!m) return NULL;
@@ -149,7 +149,15 @@ static bgd_model *open_run(const char *name, const char *text, const char *path,
                                  sizeof m->lib_dir); /* docs/format.md, "Files" */
   m->run = bg_run_new(&ro); /* copies the overrides */
   free(sets);
-  int rc = path ? bg_run_load_file(m->run, path) : bg_run_load_string(m->run, name, text);
+  int rc;
+  if (path) rc = bg_run_load_file(m->run, path);
+  else { /* the run owns its copy; a NUL byte in it is a diagnostic, as in a file */
+    char *copy = malloc(len + 1);
+    if (!copy) return bg_run_free(m->run), free(m), NULL;
+    memcpy(copy, text, len);
+    copy[len] = '\0';
+    rc = bg_run_load(m->run, name, copy, len);
+  }
   if (rc && !m->status) m->status = BGD_MODEL;
   bg_output_opts oo = {rd, m->opts.prefix, NULL, NULL, 0}; /* the program's signals are its own */
   oo.render.log = &m->run->o.log;
@@ -158,10 +166,14 @@ static bgd_model *open_run(const char *name, const char *text, const char *path,
 }
 
 bgd_model *bgd_open(const char *name, const char *text, const bgd_options *o) {
-  return open_run(name ? name : "<string>", text ? text : "", NULL, o);
+  return bgd_open_buffer(name, text, text ? strlen(text) : 0, o);
 }
 
-bgd_model *bgd_open_file(const char *path, const bgd_options *o) { return open_run(NULL, NULL, path, o); }
+bgd_model *bgd_open_buffer(const char *name, const char *text, size_t len, const bgd_options *o) {
+  return open_run(name ? name : "<string>", text ? text : "", text ? len : 0, NULL, o);
+}
+
+bgd_model *bgd_open_file(const char *path, const bgd_options *o) { return open_run(NULL, NULL, 0, path, o); }
 
 int bgd_status(const bgd_model *m) { return m ? m->status : BGD_MODEL; }
 

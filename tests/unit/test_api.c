@@ -20,6 +20,7 @@
 #include "harness.h"
 
 static char tmp[256];
+static char *out_of(bgd_model *m, const char *kind, const char *form);
 
 static char *slurp(const char *path, size_t *len) {
   FILE *f = fopen(path, "rb");
@@ -327,6 +328,27 @@ static void test_linear(void) {
 }
 
 /* ------------------------------------------------------------ diagnostics */
+/* Text with a NUL byte, from memory: the diagnostic a file with one gets
+ * (bgd_open would stop at it); without one, bgd_open_buffer is bgd_open. */
+static void test_open_buffer(void) {
+  const char text[] = "Se U = 1\n1 j\0\nC C1 = 1\nbond U -> j\nbond j -> C1\n";
+  bgd_model *m = bgd_open_buffer("nul.bg", text, sizeof text - 1, NULL);
+  INT_EQ(bgd_status(m), BGD_MODEL);
+  const bgd_diagnostic *d;
+  OK(bgd_diagnostics(m, &d) == 1 && d[0].line == 2 && d[0].column == 4 &&
+     strstr(d[0].message, "NUL byte") != NULL);
+  bgd_free(m);
+  const char *good = "Se U = 1\n1 j\nC C1 = 1\nbond U -> j\nbond j -> C1\n";
+  bgd_model *a = bgd_open_buffer("ok.bg", good, strlen(good), NULL), *b = bgd_open("ok.bg", good, NULL);
+  char *ja = out_of(a, "json", NULL), *jb = out_of(b, "json", NULL);
+  OK(bgd_status(a) == BGD_OK && ja && jb && !strcmp(ja, jb));
+  free(ja), free(jb);
+  bgd_free(a), bgd_free(b);
+  a = bgd_open_buffer("part.bg", good, 8, NULL); /* "Se U = 1" alone: a source with no bond */
+  INT_EQ(bgd_status(a), BGD_MODEL);
+  bgd_free(a);
+}
+
 static void test_diagnostics(void) {
   const char *src = "model bad\nR R1 = 1\nbond 1 R1 -> nowhere\n";
   bgd_model *m = bgd_open("bad.bg", src, NULL);
@@ -584,6 +606,7 @@ int main(int argc, char **argv) {
   test_paths_loops();
   test_conflict();
   test_linear();
+  test_open_buffer();
   test_diagnostics();
   test_options();
   test_set_drawing();
