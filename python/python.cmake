@@ -3,9 +3,11 @@
 # build/python/bgdraw, that imports with PYTHONPATH=build/python and loads
 # build/libbgdraw.so; `cmake --install` puts it into the interpreter's site
 # folder (python/sitedir.py) beside a _config.py that finds the installed
-# library. The interpreter: -DPython3_EXECUTABLE=..., else Debian's
-# /usr/bin/python3 (whose python3-numpy, python3-pytest and Jupyter packages
-# the package and its tests use), else the first python3 found.
+# library (install component python3-bgdraw, Debian's name for such a
+# package; tools/packaging.cmake packages the components it lists). The
+# interpreter: -DPython3_EXECUTABLE=..., else Debian's /usr/bin/python3 (whose
+# python3-numpy, python3-pytest and Jupyter packages the package and its
+# tests use), else the first python3 found.
 option(BG_PYTHON "Build and install the Python package" ON)
 set(BG_PYTHON_SITEDIR "" CACHE STRING
     "Where to install the Python package (relative: to the prefix); empty: the interpreter's site folder")
