@@ -323,7 +323,8 @@ class Model:
             columns = {_s(s.names[j]): _doubles(lib.bgd_column(self._h(), j), s.nrows)
                        for j in range(s.ncolumns)}
             sim = Simulation(_doubles(s.time, s.nrows), columns, _s(s.solver),
-                             bool(s.partial) or st != _lib.OK)
+                             bool(s.partial) or st != _lib.OK,
+                             plot=lambda: self.output("plot", "svg").decode("utf-8", "replace"))
         if st != _lib.OK:  # a failure part of the way: its rows up to there, as the CSV has them
             e = RefusedError(f"bgdraw: simulation refused: {_s(s.message) or 'no reason given'}")
             e.simulation = sim

@@ -124,13 +124,23 @@ class Analysis(_Record):
 class Simulation(Mapping):
     """A simulation's result: each output column by name as a NumPy array
     (sim["C1.e"]), the output times (sim.time, also sim["t"] as the CSV's first
-    column), the solver that ran it and whether it stopped early (partial)."""
+    column), the solver that ran it and whether it stopped early (partial).
+    A notebook shows it as the model's plot."""
 
-    def __init__(self, time, columns, solver, partial):
+    def __init__(self, time, columns, solver, partial, plot=None):
         self.time = time
         self.columns = columns  # name -> array, in the model's order
         self.solver = solver
         self.partial = partial
+        self._plot = plot  # the model's plot of it as SVG text, on demand
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        """In a notebook: the model's plot of the run (its plot statement, as
+        --plot draws it), and a line of text."""
+        bundle = {"text/plain": repr(self)}
+        if self._plot is not None:
+            bundle["image/svg+xml"] = self._plot()
+        return bundle
 
     @property
     def names(self):

@@ -35,7 +35,7 @@ def test_rlc_eigenvalues_closed_form(rlc):
     assert np.allclose(eig, [-ALPHA - 1j * WD, -ALPHA + 1j * WD], rtol=1e-9)
 
 
-def test_rlc_step_response_closed_form(rlc):
+def test_rlc_step_response_closed_form(rlc, tmp_path):
     sim = rlc.simulate()
     t = sim.time
     assert sim.names == ["C1.e", "L1.f"] and len(t) == 2001 and t[-1] == pytest.approx(2e-3)
@@ -45,6 +45,10 @@ def test_rlc_step_response_closed_form(rlc):
     assert np.max(np.abs(sim["L1.f"] - i)) < 1e-6  # of a 25 mA peak
     assert sim["t"] is sim.time and list(sim.as_dict()) == ["t", "C1.e", "L1.f"]
     assert rlc.simulate() is sim  # run once
+    # in a notebook: the model's plot, as --plot draws it
+    cli(example("rlc.bg"), "--plot", str(tmp_path / "plot.svg"))
+    plot = (tmp_path / "plot.svg").read_text()
+    assert sim._repr_mimebundle_()["image/svg+xml"] == plot and "<svg" in plot
 
 
 def test_rlc_simulation_is_the_csv(rlc):

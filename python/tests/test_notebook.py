@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """tour.ipynb executed headless by Debian's Jupyter (jupyter nbconvert
 --execute, the python3 kernel of ipykernel): the model displays as the
-command line's SVG, equations as LaTeX mathematics, the simulation's and the
-linear analysis' numbers are the closed forms', the %%bgdraw magic draws a
+command line's SVG, equations as LaTeX mathematics, a simulation as its
+plot, the simulation's and the linear analysis' numbers are the closed forms', the %%bgdraw magic draws a
 cell's model and shows its equations, and a bad model fails its cell with
 bgdraw's diagnostic instead of a Python traceback."""
 import json
@@ -55,6 +55,8 @@ def test_notebook_runs_headless(tmp_path):
     assert "\\dot{q_{\\mathrm{C1}}} &= f_{4}" in latex
     # numbers: the capacitor charged to the 1 V step; DC gain q/U = C0; the poles
     assert _stream(cells[2]) == "C1.e at the end: 1.0\n"
+    cli(example("rlc.bg"), "--plot", str(tmp_path / "plot.svg"))  # a simulation shows as its plot
+    assert _data(cells[2], "image/svg+xml") == (tmp_path / "plot.svg").read_text()
     gain = float(re.search(r"DC gain of C1.q/U: (\S+)", _stream(cells[3])).group(1))
     assert abs(gain - 1e-6) < 1e-15
     poles = eval(_data(cells[3], "text/plain"), {"array": np.array})  # numpy's repr
