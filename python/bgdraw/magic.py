@@ -41,6 +41,10 @@ def parser():
     p.add_argument("-o", "--output", action="append", default=[], metavar="FILE")
     p.add_argument("--report", metavar="FILE")
     p.add_argument("--plot", metavar="FILE")
+    for kind in ("bode", "nyquist", "step"):
+        p.add_argument(f"--{kind}", metavar="FILE")
+    p.add_argument("--prefix")
+    p.add_argument("-W", dest="warnings", action="append", default=[], metavar="WARNING")
     p.add_argument("--max-list", type=int)
     p.add_argument("--max-errors", type=int)
     p.add_argument("--name", default="cell.bg", help="the name diagnostics give the cell")
@@ -67,13 +71,18 @@ def run_cell(line, cell, namespace=None, display=None):
     a = parser().parse_args(shlex.split(line))
     m = Model.from_string(cell, name=a.name, causality=a.causality, params=_params(a.set),
                           show=a.show, style=a.style, highlight=a.highlight, layout=a.layout,
-                          verify=a.verify, max_list=a.max_list, max_errors=a.max_errors)
+                          verify=a.verify, max_list=a.max_list, max_errors=a.max_errors,
+                          prefix=a.prefix, warnings=",".join(a.warnings) or None)
     for path in a.output:
         m.save(path)
     if a.report:
         m.report(a.report)
     if a.plot:
         m.plot(a.plot)
+    for kind in ("bode", "nyquist", "step"):
+        path = getattr(a, kind)
+        if path:  # the format from the file's extension, as bgdraw takes it
+            m.write(path, kind, path.rsplit(".", 1)[-1].lower() if "." in path else None)
     shown = []
     if a.check:
         shown.append(_Text(m.check()))

@@ -358,7 +358,8 @@ class Model:
         n = l.n
         lin = Linear(_matrix(l.A, n, n), _matrix(l.B, n, l.nu), _matrix(l.C, l.ny, n),
                      _matrix(l.D, l.ny, l.nu), inputs, outputs,
-                     _complex(l.pole_re, l.pole_im, l.npoles), bool(l.reduced), tfs)
+                     _complex(l.pole_re, l.pole_im, l.npoles), bool(l.reduced), tfs,
+                     latex=lambda: self.output("linear", "latex").decode("utf-8", "replace"))
         self._cache["linear"] = lin
         return lin
 

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """What bgdraw finds in a model, as Python objects: each has as_dict() for
 plain dicts (the keys of the analysis JSON, docs/json.md, where it has one)."""
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
@@ -226,12 +227,23 @@ class Linear:
     dx/dt = A x + B u, y = C x + D u as NumPy arrays (when reduced), the
     input and output names, the poles and every transfer function."""
 
-    def __init__(self, A, B, C, D, inputs, outputs, poles, reduced, transfer_functions):
+    def __init__(self, A, B, C, D, inputs, outputs, poles, reduced, transfer_functions,
+                 latex=None):
         self.A, self.B, self.C, self.D = A, B, C, D
         self.inputs, self.outputs = inputs, outputs
         self.poles = poles
         self.reduced = reduced
         self.transfer_functions = transfer_functions
+        self._latex = latex  # the model's `--linear latex`, on demand
+
+    def _repr_latex_(self):
+        """In a notebook: A, B, C, D and the transfer functions as
+        mathematics (numeric, then in the params when the model is linear),
+        from bgdraw's LaTeX printer."""
+        if self._latex is None:
+            return None
+        blocks = re.findall(r"\\begin\{align\*\}.*?\\end\{align\*\}", self._latex(), re.S)
+        return "\n".join(f"$${b}$$" for b in blocks) or None
 
     def transfer_function(self, output=None, input=None):
         """output/input by name (or index); either may be left out when the

@@ -40,6 +40,13 @@ def test_text_outputs_instead_of_the_diagram(tmp_path):
     assert "<svg" in shown[0]._repr_mimebundle_()["image/svg+xml"]
     assert (tmp_path / "r.pdf").read_bytes()[:5] == b"%PDF-"
     assert (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG"
+    _, shown = run_cell(f"--bode {tmp_path / 'b.svg'} --step {tmp_path / 's.pdf'}", RC)
+    assert "<svg" in (tmp_path / "b.svg").read_text()
+    assert (tmp_path / "s.pdf").read_bytes()[:5] == b"%PDF-"
+    m, _ = run_cell("--prefix rcm -W no-unused-param", RC + "param unused = 1\n")
+    assert m.warnings == [] and "rcm_" in m.output("c").decode()
+    with pytest.raises(bgdraw.ModelError, match="unused"):
+        run_cell("-W error", RC + "param unused = 1\n")
     _, shown = run_cell("-T png", RC)
     assert shown[0]._repr_mimebundle_()["image/png"][:4] == b"\x89PNG"
 

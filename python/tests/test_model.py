@@ -77,6 +77,12 @@ def test_rlc_linear_closed_form(rlc):
             k, j = lin.outputs.index(t.output), lin.inputs.index(t.input)
             assert t(s) == pytest.approx(H[k, j], rel=1e-9)
     assert str(q) == "C1.q/U = (1000) / (s^2 + 10000*s + 1e+09)"
+    assert q._repr_latex_() == "$\\frac{1000}{s^{2} + 10000 s + 1 \\cdot 10^{9}}$"
+    # in a notebook: bgdraw's LaTeX of the linear analysis, each align* block as display math
+    latex = lin._repr_latex_()
+    want = cli(example("rlc.bg"), "--linear", "latex")[1].decode()
+    assert latex.count("$$\\begin{align*}") == want.count("\\begin{align*}") == 2
+    assert "\\frac{C1.q}{U} &= \\frac{1000}{s^{2} + 10000 s + 1e+09}" in latex and "%" not in latex
     with pytest.raises(ValueError):
         lin.transfer_function()  # two outputs: name one
 
