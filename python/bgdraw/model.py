@@ -176,9 +176,10 @@ class Model:
                     log(level, message.decode("utf-8", "replace"))
                 except Exception:  # an exception cannot cross the C library
                     pass
-            o.log = _lib.LOG_FN(relay)
+            callback = _lib.LOG_FN(relay)  # the handle calls it until it is freed
+            o.log = callback
             o.verbose = int(bool(options.get("verbose")))
-            keep.append(o.log)
+            keep.append(callback)
         self._keep = keep
         return o
 
