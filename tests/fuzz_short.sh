@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # A short deterministic fuzz run (tests/fuzz/README.md): each fuzz target of
-# the build (parse, equations, simulate, render, linear; the fixed-seed driver) runs
+# the build (parse, import, equations, simulate, render, linear; the fixed-seed driver) runs
 # every seed (examples/, tests/bad/, the regression inputs tests/fuzz/corpus/)
 # and a fixed number of mutants of them, and must finish without a crash, a
 # sanitizer report or a hang (10 s per input). A failing input is printed.
@@ -14,7 +14,7 @@ trap 'rm -rf "$tmp"' EXIT
 pass=0
 fail=0
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0}
-for spec in parse:20000 equations:4000 simulate:2000 render:400 linear:2000; do
+for spec in parse:20000 import:4000 equations:4000 simulate:2000 render:400 linear:2000; do
   t=${spec%%:*} runs=${spec#*:}
   exe=$bin/fuzz_$t
   if [ ! -x "$exe" ]; then echo "FAIL fuzz_$t not built next to $BGDRAW"; fail=$((fail + 1)); continue; fi

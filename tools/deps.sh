@@ -17,7 +17,8 @@ if [ "${1:-}" = "--tests" ]; then
          python3-pytest jupyter-nbconvert     # the Python package's tests (python/tests),
          python3-ipykernel python3-nbformat   # a notebook executed headless
          dpkg-dev lintian                     # tests/deb.sh: the Debian packages
-         parallel)                            # tests/study_cli.sh: a study split over GNU parallel
+         parallel                             # tests/study_cli.sh: a study split over GNU parallel
+         python3-yaml)                        # tests/import_bgt.sh: the written YAML read by PyYAML
 fi
 missing=()
 for p in "${PKGS[@]}"; do

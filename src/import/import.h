@@ -3,13 +3,16 @@
  * tools turned into bgdraw's own language before anything else reads them.
  * BondGraphTools' YAML (bgt_read.c over libyaml, yaml_tree.c) becomes .bg
  * text with a header comment naming the source; errors point at the foreign
- * file's own lines. The run (src/run) calls it when the text is foreign, so
+ * file's own lines. And back: a compiled model as BondGraphTools YAML
+ * (bgt_write.c), so the stage stands after model. The run (src/run) calls it when the text is foreign, so
  * every option works on an imported model. */
 #ifndef BG_IMPORT_H
 #define BG_IMPORT_H
 #include <stddef.h>
 
 #include "base/diag.h"
+#include "base/strbuf.h"
+#include "model/model.h"
 
 typedef enum { BG_IMPORT_NONE, BG_IMPORT_BGT } bg_import_format;
 
@@ -34,4 +37,8 @@ typedef struct bg_import_result {
 int bg_import_convert(bg_import_format f, const char *path, const char *src, size_t len,
                       bg_diags *dg, bg_import_result *out);
 void bg_import_result_free(bg_import_result *r);
+
+/* Model m as BondGraphTools YAML appended to out (bgt_write.c): NULL, or
+ * why the format cannot carry m (owned; nothing useful in out then). */
+char *bg_bgt_write(const bg_model *m, bg_strbuf *out);
 #endif

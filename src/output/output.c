@@ -143,6 +143,17 @@ static bg_output_status write_transformed(bg_output *w, const bg_output_kind *k,
   return BG_OUT_OK;
 }
 
+/* The model as BondGraphTools YAML (docs/import.md), or why it cannot be. */
+static bg_output_status write_bgt_yaml(bg_output *w, const bg_output_kind *k, const char *form,
+                                       const char *path, bg_strbuf *out) {
+  (void)k, (void)form, (void)path;
+  char *why = bg_bgt_write(w->run->model, out);
+  if (!why) return BG_OUT_OK;
+  bg_output_status st = bg_out_refuse(w, "cannot write BondGraphTools YAML: ", why);
+  free(why);
+  return st;
+}
+
 /* ------------------------------------------------------------------ table */
 const bg_output_kind bg_output_kinds[] = {
     /* chosen by -o FILE.EXT, in --help's order */
@@ -161,6 +172,7 @@ const bg_output_kind bg_output_kinds[] = {
     {"fmu", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_fmu,
      "FMI 2.0 Model Exchange FMU (ODE models; needs a C compiler)"},
     {"bg", BG_STAGE_ANALYSIS, BG_OUTK_EXT, write_transformed, "the model rewritten by --transform, or imported (--import)"},
+    {"yaml", BG_STAGE_MODEL, BG_OUTK_EXT, write_bgt_yaml, "the model as BondGraphTools YAML (import.md)"},
     /* chosen by options of their own */
     {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
     {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},
