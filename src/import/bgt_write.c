@@ -13,7 +13,7 @@
 
 #include "base/strbuf.h"
 #include "import/import.h"
-#include "model/expr.h"
+#include "model/model.h" /* with expr.h: bg_xeval */
 
 /* 1 when expression root reads only numbers and params. */
 static int is_constant(const bg_model *m, int root) {
