@@ -204,7 +204,7 @@ static void add(bg_diags *d, bg_severity sev, bg_srcloc loc, const char *fmt, va
     va_end(ap);                                                        \
   }
 static const char *const warning_names[BG_W_COUNT] = {"unused-param", "empty-model",
-                                                      "degenerate-value"};
+                                                      "degenerate-value", "unbonded-port"};
 
 int bg_warning_parse(const char *name) {
   for (int i = 0; i < BG_W_COUNT; i++)

@@ -69,6 +69,7 @@ typedef enum bg_warning {
   BG_W_UNUSED_PARAM,  /* unused-param: a param no expression reads */
   BG_W_EMPTY_MODEL,   /* empty-model: no element (or only submodel definitions) */
   BG_W_DEGENERATE,    /* degenerate-value: a C, I, TF or GY whose value is 0 */
+  BG_W_UNBONDED_PORT, /* unbonded-port: an instance's port left unbonded, taken as open or short */
   BG_W_COUNT
 } bg_warning;
 /* The warning named name ("unused-param"), or -1. */

@@ -109,6 +109,10 @@ typedef struct bg_ast_stmt {
    * "energy"; value = the right-hand side) */
   int is_field;
   int field_numbered; /* the ports were given as a count: K(2) */
+  /* ELEMENT and BOND written by `open X` / `short X` (a zero source and its
+   * bond; docs/format.md, "Open and shorted ports"): the bond's direction
+   * follows the port's, and the element is named after the node */
+  int zero_port;
   bg_ast_item *laws;
   int nlaws;
 } bg_ast_stmt;

@@ -7,6 +7,7 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -256,6 +257,79 @@ static void load_file(fl_flattener *f, int fi, int depth) {
   f->files[fi].loading = 0;
 }
 
+/* ---------------------------------------------------------------- unbonded ports */
+/* The port named `port` of def e: the other end of the bond inside e that
+ * joins it, and that end's element kind word ("0", "1", ...; NULL when it
+ * is not an element of e, e.g. a nested instance's port). */
+static const char *inner_kind(const fl_def *e, const char *port, const char **node) {
+  *node = NULL;
+  for (int k = 0; k < e->nstmt && !*node; k++) {
+    const bg_ast_stmt *s = e->stmt[k];
+    if (s->kind == BG_ST_BOND && !strcmp(s->from, port)) *node = s->to;
+    else if (s->kind == BG_ST_BOND && !strcmp(s->to, port)) *node = s->from;
+  }
+  for (int k = 0; *node && k < e->nstmt; k++)
+    if (e->stmt[k]->kind == BG_ST_ELEMENT && !strcmp(e->stmt[k]->name, *node)) return e->stmt[k]->kindword;
+  return NULL;
+}
+
+static int bonded_in(const fl_def *d, const char *end) {
+  for (int k = 0; k < d->nstmt; k++)
+    if (d->stmt[k]->kind == BG_ST_BOND && (!strcmp(d->stmt[k]->from, end) || !strcmp(d->stmt[k]->to, end)))
+      return 1;
+  return 0;
+}
+
+/* An instance's port that no bond of its scope joins, where its meaning is
+ * unambiguous: a port whose inside bond ends at a 0-junction is left open
+ * (zero flow), at a 1-junction shorted (zero effort); either way the
+ * junction loses a branch that carries no power, which is what "not
+ * connected" means. A warning names it (unbonded-port), and the two
+ * statements `open`/`short` would write are added to the scope. Other
+ * unbonded ports stay errors (check_ports). docs/format.md, "Open and
+ * shorted ports". */
+static void unbonded_ports(fl_flattener *f, int di) {
+  fl_def *d = &f->defs[di];
+  int n0 = d->nstmt;
+  for (int k = 0; k < n0; k++) {
+    const bg_ast_stmt *s = d->stmt[k];
+    const sc_entry *de = s->kind == BG_ST_INSTANCE ? bg_fl_lookup(&f->defnames, s->kindword) : NULL;
+    if (!de) continue;
+    const fl_def *e = &f->defs[de->index];
+    for (int j = 0; j < e->nstmt; j++) {
+      const bg_ast_stmt *ps = e->stmt[j];
+      for (int i = 0; ps->kind == BG_ST_PORT && i < ps->nitems; i++) {
+        const char *port = ps->items[i].name, *node;
+        char *end = bg_arena_alloc(&f->out->arena, strlen(s->name) + strlen(port) + 2);
+        sprintf(end, "%s.%s", s->name, port);
+        if (bonded_in(d, end)) continue;
+        const char *kind = inner_kind(e, port, &node);
+        int is_short = kind && !strcmp(kind, "1");
+        if (!kind || (strcmp(kind, "0") && !is_short)) continue; /* ambiguous: an error later */
+        bg_diag_warn(f->dg, BG_W_UNBONDED_PORT, s->name_loc, "port '%s' of %s (%s) is not bonded: "
+                     "taken as %s (zero %s: the %s-junction %s inside loses a branch that carries no "
+                     "power); write 'open %s' or 'short %s' to say which", port, s->name, e->name,
+                     is_short ? "shorted" : "open", is_short ? "effort" : "flow", kind, node, end, end);
+        size_t len = strlen(end);
+        char *name = bg_arena_alloc(&f->out->arena, len + 7);
+        for (size_t c = 0; c < len; c++) name[c] = end[c] == '.' ? '_' : end[c];
+        strcpy(name + len, is_short ? "_short" : "_open");
+        bg_ast_stmt *x = bg_arena_alloc(&f->out->arena, 2 * sizeof *x);
+        bg_expr *zero = bg_arena_alloc(&f->out->arena, sizeof *zero);
+        memset(x, 0, 2 * sizeof *x);
+        memset(zero, 0, sizeof *zero);
+        zero->kind = BG_EX_NUM, zero->loc = s->name_loc, zero->text = "0", zero->depth = 1;
+        x[0].kind = BG_ST_ELEMENT, x[0].loc = x[0].name_loc = s->name_loc;
+        x[0].kindword = is_short ? "Se" : "Sf", x[0].name = name, x[0].expr = zero, x[0].zero_port = 1;
+        x[1].kind = BG_ST_BOND, x[1].loc = x[1].from_loc = x[1].to_loc = s->name_loc;
+        x[1].from = name, x[1].to = end, x[1].zero_port = 1;
+        *FL_PUSH(d->stmt, d->nstmt) = &x[0];
+        *FL_PUSH(d->stmt, d->nstmt) = &x[1];
+      }
+    }
+  }
+}
+
 /* ---------------------------------------------------------------- driver */
 static bg_flat *make_result(fl_flattener *f) {
   bg_flat *r = bg_xcalloc(1, sizeof *r);
@@ -337,6 +411,7 @@ bg_flat *bg_flat_expand(const bg_ast *ast, bg_diags *dg) {
   fl_def *model = FL_PUSH(f.defs, f.ndefs);
   model->name = "the model";
   load_file(&f, 0, 0);
+  for (int i = 0; i < f.ndefs; i++) unbonded_ports(&f, i);
   for (int i = 0; i < f.ndefs; i++) def_names(&f, i);
   for (int i = 1; i < f.ndefs && bg_diags_failures(dg) == errors0; i++) bg_fl_span(&f, i, f.defs[i].head->loc);
   if (bg_diags_failures(dg) == errors0) bg_fl_span(&f, 0, (bg_srcloc){0});

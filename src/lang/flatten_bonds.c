@@ -89,13 +89,14 @@ static const char *port_name(const fl_flattener *f, const fl_inst *in, int p) {
   return d->port_stmt[p]->items[d->port_item[p]].name;
 }
 
-/* Every port joined once inside and once outside, both bonds in one direction. */
+/* Every port joined once inside and once outside, both bonds in one direction
+ * (the bond of an open or short port is turned to agree). */
 static void check_ports(fl_flattener *f) {
   for (int i = 0; i < f->ninst; i++) {
     const fl_inst *in = &f->inst[i];
     const fl_def *d = &f->defs[in->def];
     for (int p = 0; p < d->nports; p++) {
-      const fl_port *pt = &f->ports[in->port_adr + p];
+      fl_port *pt = &f->ports[in->port_adr + p];
       const char *name = port_name(f, in, p);
       bg_srcloc decl = d->port_stmt[p]->items[d->port_item[p]].loc;
       decl.file = in->src;
@@ -104,9 +105,17 @@ static void check_ports(fl_flattener *f) {
         bg_diag_error(f->dg, decl, "port '%s' of %s has no bond inside the submodel", name,
                       d->name);
       if (pt->nouter == 0)
-        bg_diag_error(f->dg, in->pub.loc, "port '%s' of %s (%s) is not connected", name,
-                      in->pub.name, d->name);
+        bg_diag_error(f->dg, in->pub.loc, "port '%s' of %s (%s) is not connected: bond it, or "
+                      "write 'open %s.%s' (zero flow) or 'short %s.%s' (zero effort)", name,
+                      in->pub.name, d->name, in->pub.name, name, in->pub.name, name);
       if (pt->ninner == 0 || pt->nouter == 0 || pt->outer_is_head == pt->inner_is_tail) continue;
+      fl_seg *g = &f->segs[pt->outer];
+      if (f->stmts[g->slot].zero_port) { /* open/short: a zero source takes either direction */
+        fl_end tail = g->end[0];
+        g->end[0] = g->end[1], g->end[1] = tail;
+        pt->outer_is_head = !pt->outer_is_head;
+        continue;
+      }
       bg_diag_error(f->dg, pt->outer_loc, "power direction at port %s.%s: %s takes power %s at "
                     "'%s' (its bond at line %d), this bond takes it %s; reverse this bond",
                     in->pub.name, name, d->name, pt->inner_is_tail ? "in" : "out", name,

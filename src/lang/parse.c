@@ -542,6 +542,41 @@ static void parse_bond(parser *p, const bg_token *kw) {
   parse_options(s, p, 0);
 }
 
+/* open_stmt := ('open' | 'short') bond_end {',' bond_end}: each node (a port
+ * of an instance, M1.shaft, or a junction) gets a zero source, open an Sf
+ * (zero flow), short an Se (zero effort), written as the element and bond
+ * they mean, the element named NODE_open or NODE_short with the node's dots
+ * as '_' (docs/format.md, "Open and shorted ports"). */
+static void parse_open(parser *p, const bg_token *kw) {
+  int is_short = kw->text[0] == 's';
+  do {
+    const char *node;
+    const bg_token *n = parse_bond_end(p, is_short ? "a port (M1.a) or a junction to short"
+                                                   : "a port (M1.a) or a junction to leave open", &node);
+    size_t len = strlen(node);
+    char *name = bg_arena_alloc(&p->ast->arena, len + 7);
+    for (size_t i = 0; i < len; i++) name[i] = node[i] == '.' ? '_' : node[i];
+    strcpy(name + len, is_short ? "_short" : "_open");
+    bg_expr *zero = new_expr(p, BG_EX_NUM, n);
+    zero->num = 0;
+    zero->text = "0";
+    zero->depth = 1;
+    bg_ast_stmt *e = new_stmt(p, BG_ST_ELEMENT, kw);
+    e->kindword = is_short ? "Se" : "Sf";
+    e->name = name;
+    e->name_loc = n->loc;
+    e->expr = zero;
+    e->zero_port = 1;
+    bg_ast_stmt *b = new_stmt(p, BG_ST_BOND, kw); /* e may have moved */
+    b->from = name;
+    b->from_loc = n->loc;
+    b->to = node;
+    b->to_loc = n->loc;
+    b->arrow = BG_ARROW_PLAIN;
+    b->zero_port = 1;
+  } while (accept(p, BG_TK_COMMA));
+}
+
 /* causality_stmt := 'causality' NAME */
 static void parse_causality(parser *p, const bg_token *kw) {
   const bg_token *n = expect_name(p, "a causality method (scap, relaxed, vandijk, lagrange)");
@@ -792,6 +827,7 @@ static int parse_component_stmt(parser *p, const bg_token *t) {
   const char *w = t->text;
   bg_tkind k = cur(p)->kind;
   if (strcmp(w, "submodel") == 0 && k == BG_TK_NAME) parse_submodel(p, t);
+  else if ((strcmp(w, "open") == 0 || strcmp(w, "short") == 0) && k == BG_TK_NAME) parse_open(p, t);
   else if (strcmp(w, "use") == 0 && k == BG_TK_STRING) parse_use(p, t);
   else if (p->open_def >= 0 && strcmp(w, "end") == 0 && (k == BG_TK_EOL || k == BG_TK_EOF || k == BG_TK_NAME))
     parse_end(p, t);
