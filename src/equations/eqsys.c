@@ -298,7 +298,7 @@ static void add_unknowns(bg_eqsys *s) {
 }
 
 /* Algebraic unknowns: the torn signals, in the order tearing chose them. */
-void bg_eqsys_add_z(bg_eqsys *s, int sig) {
+static void add_z(bg_eqsys *s, int sig) {
   int i = s->nx + s->nz++;
   s->sig_torn[sig] = 1;
   s->sig_z[sig] = i;
@@ -362,7 +362,10 @@ static bg_eqsys *build(const bg_model *m, const bg_analysis *a, const int *input
     return NULL;
   }
   bg_eqs_deps(s);
-  bg_eqs_sort(s); /* tears: adds the algebraic unknowns */
+  int *torn = bg_xmalloc(((size_t)s->nsig + 1) * sizeof *torn);
+  int nt = bg_eqs_sort(s, torn); /* tears: the algebraic unknowns */
+  for (int i = 0; i < nt; i++) add_z(s, torn[i]);
+  free(torn);
   s->n = s->nx + s->nz;
   if (inputs) {
     s->lin_nu = nu, s->lin_nh = m->noutput;
@@ -402,14 +405,3 @@ void bg_eqsys_free(bg_eqsys *s) {
   bg_arena_free(&s->arena);
   free(s);
 }
-
-/* ------------------------------------------------------------ accessors */
-int bg_eqsys_n(const bg_eqsys *s) { return s->n; }
-int bg_eqsys_nx(const bg_eqsys *s) { return s->nx; }
-int bg_eqsys_is_ode(const bg_eqsys *s) { return s->nz == 0 && s->ndep == 0; }
-int bg_eqsys_is_reduced(const bg_eqsys *s) { return s->reduced; }
-const char *bg_eqsys_name(const bg_eqsys *s, int i) { return i >= 0 && i < s->n ? s->uname[i] : NULL; }
-int bg_eqsys_is_differential(const bg_eqsys *s, int i) { return i < s->nx; }
-const char *bg_eqsys_error(const bg_eqsys *s) { return s->has_err ? s->err : NULL; }
-int bg_eqsys_noutput(const bg_eqsys *s) { return s->nout; }
-const char *bg_eqsys_output_name(const bg_eqsys *s, int k) { return k >= 0 && k < s->nout ? s->out_name[k] : NULL; }

@@ -9,21 +9,6 @@
 #include "equations/eqsys_int.h"
 #include "model/model.h"
 
-int bg_eqsys_rhs(bg_eqsys *s, double t, const double *y, double *ydot) {
-  if (bg_eqs_eval(s, t, y, NULL, 0)) return -1;
-  for (int i = 0; i < s->nx; i++) ydot[i] = s->v[s->row_slot[i]];
-  return 0;
-}
-
-int bg_eqsys_residual(bg_eqsys *s, double t, const double *y, const double *yp, double *res) {
-  if (bg_eqs_eval(s, t, y, yp, 0)) return -1;
-  for (int i = 0; i < s->n; i++) {
-    double r = s->v[s->row_slot[i]];
-    res[i] = s->row_kind[i] == 0 ? yp[i] - r : r;
-  }
-  return 0;
-}
-
 int bg_eqsys_jac_dense(bg_eqsys *s, double t, const double *y, const double *yp, double cj,
                        double *J) {
   int ode = bg_eqsys_is_ode(s);

@@ -7,11 +7,11 @@
 #define BG_EQSYS_INT_H
 #include "equations/eqtape.h"
 
-/* eqsys.c: makes signal sig the next algebraic unknown, with its residual row. */
-void bg_eqsys_add_z(bg_eqsys *s, int sig);
 /* eqsys_order.c: dependency lists, tearing and the computational order. */
 void bg_eqs_deps(bg_eqsys *s);
-void bg_eqs_sort(bg_eqsys *s);
+/* Tears and orders; the signals tearing leaves as algebraic unknowns go into
+ * torn_out (room for nsig), in the order they become unknowns; their count. */
+int bg_eqs_sort(bg_eqsys *s, int *torn_out);
 /* eqsym.c: fills state_y and x_modulus. */
 void bg_eqs_sym_lookups(bg_eqsys *s);
 /* eqsys_lagstart.c: Lagrange causality's initial point, every store held;
@@ -42,11 +42,11 @@ int bg_eqs_eval_outputs(bg_eqsys *s, double t, const double *y, const double *yp
  * as the ODE right-hand side). Values must be current (bg_eqs_eval). */
 void bg_eqs_jac(bg_eqsys *s, double cj, int resid, double *J, int sparse, int only_y,
                 int only_yp);
-/* eqsys_events.c: finds the event instructions (after compilation); their
- * frozen value and derivative; the value of instruction k as compiled. */
+/* eqsys_events.c: finds the event instructions (after compilation). */
 void bg_eqs_events_find(bg_eqsys *s);
-double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v); /* frozen, or as compiled when free */
-double bg_eqs_ev_der(const bg_eqsys *s, int e, const double *v, const double *dv);
+/* eqsys_tape.c: an event instruction's value in its mode (frozen, or as
+ * compiled when free); the value of instruction k as compiled. */
+double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v);
 double bg_eqs_ins_value(const bg_eqsys *s, int k, const double *v);
 /* eqsys_tape.c: values of the main tape at (t, y, yp) without any check. */
 void bg_eqs_eval_raw(bg_eqsys *s, double t, const double *y, const double *yp);

@@ -128,7 +128,7 @@ static int tear_round(bg_eqsys *s, tarjan *T, int *torn, const int *pref, int *c
   return changed;
 }
 
-void bg_eqs_sort(bg_eqsys *s) {
+int bg_eqs_sort(bg_eqsys *s, int *torn_out) {
   int ns = s->nsig, nn = ns + 1;
   tarjan T;
   int **arrs[] = {&T.deg, &T.comp, &T.ord, &T.cadr};
@@ -142,17 +142,22 @@ void bg_eqs_sort(bg_eqsys *s) {
   }
   while (tear_round(s, &T, torn, pref, cnt)) {
   }
-  /* algebraic unknowns: the analysis' algebraic variables in its order, then by signal */
+  /* algebraic unknowns: the analysis' algebraic variables in its order, then
+   * by signal; the caller (eqsys.c) makes them unknowns in this order */
+  int nt = 0;
+  unsigned char *listed = bg_xcalloc((size_t)nn, 1);
   for (int k = 0; k < s->a->nalgebraic; k++) {
     int v = sig_by_name(s, s->a->algebraic_variables[k]);
-    if (v >= 0 && torn[v] && !s->sig_torn[v]) bg_eqsys_add_z(s, v);
+    if (v >= 0 && torn[v] && !s->sig_torn[v] && !listed[v]) listed[v] = 1, torn_out[nt++] = v;
   }
   for (int v = 0; v < ns; v++)
-    if (torn[v] && !s->sig_torn[v]) bg_eqsys_add_z(s, v);
+    if (torn[v] && !s->sig_torn[v] && !listed[v]) listed[v] = 1, torn_out[nt++] = v;
+  free(listed);
   s->order = bg_arena_alloc(&s->arena, (size_t)nn * sizeof(int));
   s->norder = 0;
   for (int i = 0; i < ns; i++)
     if (!torn[T.ord[i]]) s->order[s->norder++] = T.ord[i];
   for (size_t i = 0; i < sizeof arrs / sizeof *arrs; i++) free(*arrs[i]);
   free(torn), free(pref), free(cnt);
+  return nt;
 }

@@ -14,6 +14,8 @@
 #include "equations/eqsys_int.h"
 #include "model/model.h"
 
+static double ev_der(const bg_eqsys *s, int e, const double *v, const double *dv);
+
 /* ------------------------------------------------------------ slots and code */
 static int new_slot(bg_eqsys *s, int cst, double val) {
   if (s->nslot == s->capslot) {
@@ -573,7 +575,7 @@ static void seed(bg_eqsys *s, int c, double sy, double syp) {
   if (s->vals_frozen) {
     for (int k = 0; k < s->nmain; k++) {
       int e = s->code_ev[k];
-      s->dv[s->code[k].out] = e >= 0 && !s->ev_free[e] ? bg_eqs_ev_der(s, e, s->v, s->dv)
+      s->dv[s->code[k].out] = e >= 0 && !s->ev_free[e] ? ev_der(s, e, s->v, s->dv)
                                                        : ins_der(s, &s->code[k], s->v, s->dv);
     }
     return;
@@ -771,4 +773,46 @@ int bg_eqsys_jac_io(bg_eqsys *s, double t, const double *y, const double *yp, do
     io_column(s, j, F, H);
   }
   return 0;
+}
+
+/* ------------------------------------------------------------ modes */
+/* What an instruction with a switching condition gives in its current mode
+ * (the mode itself is decided by eqsys_events.c at events): the tape's own
+ * evaluation of those instructions, so the tape calls nothing above it. */
+/* Value (der = 0) or slope (der = 1) of segment k, continued linearly. */
+static double table_segment_val(const bg_model *m, int table, int k, double x, int der) {
+  const double *tx = m->table_x + m->table_adr[table], *ty = m->table_y + m->table_adr[table];
+  int n = m->table_n[table];
+  if (k < 0 || k >= n - 1) return der ? 0 : ty[k < 0 ? 0 : n - 1];
+  double slope = (ty[k + 1] - ty[k]) / (tx[k + 1] - tx[k]);
+  return der ? slope : ty[k] + slope * (x - tx[k]);
+}
+
+double bg_eqs_ev_value(const bg_eqsys *s, int e, const double *v) {
+  if (s->ev_free[e] && !s->ev_mem[e]) return bg_eqs_ins_value(s, s->ev_code[e], v);
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double mode = s->ev_mode[e], x = v[I->a[0]];
+  if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, x, 0);
+  if (I->op != BG_X_CALL) return mode;
+  switch (I->ref) {
+  case BG_FN_ABS: return mode ? x : -x;
+  case BG_FN_RAMP: return mode ? x : 0;
+  case BG_FN_MIN: case BG_FN_MAX: return mode ? x : v[I->a[1]];
+  case BG_FN_SAT: return mode == 0 ? v[I->a[1]] : mode == 2 ? v[I->a[2]] : x;
+  default: return mode; /* sign, step, pulse, floor, ceil, hyst, stick */
+  }
+}
+
+static double ev_der(const bg_eqsys *s, int e, const double *v, const double *dv) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  double mode = s->ev_mode[e], d = dv[I->a[0]];
+  if (I->op == BG_X_TABLE) return table_segment_val(s->m, I->ref, (int)mode, v[I->a[0]], 1) * d;
+  if (I->op != BG_X_CALL) return 0;
+  switch (I->ref) {
+  case BG_FN_ABS: return mode ? d : -d;
+  case BG_FN_RAMP: return mode ? d : 0;
+  case BG_FN_MIN: case BG_FN_MAX: return mode ? d : dv[I->a[1]];
+  case BG_FN_SAT: return mode == 0 ? dv[I->a[1]] : mode == 2 ? dv[I->a[2]] : d;
+  default: return 0;
+  }
 }
