@@ -27,18 +27,23 @@ void bg_sb_putn(bg_strbuf *b, const char *s, size_t n) {
 void bg_sb_putc(bg_strbuf *b, char c) { bg_sb_putn(b, &c, 1); }
 void bg_sb_puts(bg_strbuf *b, const char *s) { bg_sb_putn(b, s, strlen(s)); }
 
-void bg_sb_printf(bg_strbuf *b, const char *fmt, ...) {
-  va_list ap, ap2;
-  va_start(ap, fmt);
+void bg_sb_vprintf(bg_strbuf *b, const char *fmt, va_list ap) {
+  va_list ap2;
   va_copy(ap2, ap);
   int n = vsnprintf(NULL, 0, fmt, ap);
-  va_end(ap);
   if (n > 0) {
     reserve(b, (size_t)n);
     vsnprintf(b->s + b->len, (size_t)n + 1, fmt, ap2);
     b->len += (size_t)n;
   }
   va_end(ap2);
+}
+
+void bg_sb_printf(bg_strbuf *b, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  bg_sb_vprintf(b, fmt, ap);
+  va_end(ap);
 }
 
 void bg_sb_json_str(bg_strbuf *b, const char *s) {

@@ -2,6 +2,7 @@
 /* strbuf: a growable NUL-terminated string. */
 #ifndef BG_STRBUF_H
 #define BG_STRBUF_H
+#include <stdarg.h>
 #include <stddef.h>
 
 typedef struct bg_strbuf {
@@ -14,6 +15,8 @@ void bg_sb_puts(bg_strbuf *b, const char *s);
 void bg_sb_putn(bg_strbuf *b, const char *s, size_t n);
 void bg_sb_printf(bg_strbuf *b, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
+/* The same with a va_list (ap is used up, as vsnprintf uses it). */
+void bg_sb_vprintf(bg_strbuf *b, const char *fmt, va_list ap);
 /* Appends s as a JSON string literal, quotes included. */
 void bg_sb_json_str(bg_strbuf *b, const char *s);
 /* The one number printer: the shortest "%.Ng" with N from min_digits to 17

@@ -45,14 +45,21 @@ void bg_ig_add_param(bg_ig_model *m, bg_ig_param p) {
   m->params[m->nparams++] = p;
 }
 
+/* fmt's text in g's arena. */
+static char *arena_vprintf(bg_ig *g, const char *fmt, va_list ap) {
+  va_list ap2;
+  va_copy(ap2, ap);
+  int n = vsnprintf(NULL, 0, fmt, ap);
+  char *s = bg_arena_alloc(&g->arena, (size_t)n + 1);
+  vsnprintf(s, (size_t)n + 1, fmt, ap2);
+  va_end(ap2);
+  return s;
+}
+
 char *bg_ig_printf(bg_ig *g, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  int n = vsnprintf(NULL, 0, fmt, ap);
-  va_end(ap);
-  char *s = bg_arena_alloc(&g->arena, (size_t)n + 1);
-  va_start(ap, fmt);
-  vsnprintf(s, (size_t)n + 1, fmt, ap);
+  char *s = arena_vprintf(g, fmt, ap);
   va_end(ap);
   return s;
 }
@@ -60,11 +67,7 @@ char *bg_ig_printf(bg_ig *g, const char *fmt, ...) {
 void bg_ig_add_note(bg_ig *g, bg_ig_model *m, int line, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  int n = vsnprintf(NULL, 0, fmt, ap);
-  va_end(ap);
-  char *s = bg_arena_alloc(&g->arena, (size_t)n + 1);
-  va_start(ap, fmt);
-  vsnprintf(s, (size_t)n + 1, fmt, ap);
+  char *s = arena_vprintf(g, fmt, ap);
   va_end(ap);
   if (m->nnotes == m->capnotes) {
     m->capnotes = m->capnotes ? 2 * m->capnotes : 8;
@@ -142,16 +145,10 @@ static void put_line(printer *p, int line, const char *fmt, ...) __attribute__((
 static void put_line(printer *p, int line, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  int n = vsnprintf(NULL, 0, fmt, ap);
+  bg_sb_vprintf(&p->sb, fmt, ap);
   va_end(ap);
-  char *s = bg_xmalloc((size_t)n + 1);
-  va_start(ap, fmt);
-  vsnprintf(s, (size_t)n + 1, fmt, ap);
-  va_end(ap);
-  bg_sb_puts(&p->sb, s);
   bg_sb_putc(&p->sb, '\n');
   bg_ivec_push(&p->map, line);
-  free(s);
 }
 
 /* The value of an Sf: BondGraphTools' f is the flow out of the source, the
