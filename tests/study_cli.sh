@@ -80,6 +80,33 @@ grep -q '95 % quantile' "$tmp/mc1.svg"; check "Monte Carlo envelope" $?
   --vary 'ks=uniform(15000,17000)' --collect mb.f:max --study "$tmp/mc4.csv"
 ! cmp -s "$tmp/mc1.csv" "$tmp/mc4.csv"; check "another seed, other draws" $?
 
+# a root locus: the poles are the table's columns, against the closed form
+# -R/2L -+ sqrt((R/2L)^2 - 1/LC) (L = 1 mH, C = 1 uF); the plots are the same
+# bytes from 1 and 2 threads and from the parts merged
+rl=(--sweep R0=5:125:25 --collect poles)
+"$BGDRAW" "$m" "${rl[@]}" -j 1 --study "$tmp/rl1.csv" --root-locus "$tmp/rl1.svg" \
+  --bode-family "$tmp/bf1.svg" && "$BGDRAW" "$m" "${rl[@]}" -j 2 --study "$tmp/rl2.csv" \
+  --root-locus "$tmp/rl2.svg" --bode-family "$tmp/bf2.svg"
+check "root locus and Bode family" $?
+cmp -s "$tmp/rl1.csv" "$tmp/rl2.csv" && cmp -s "$tmp/rl1.svg" "$tmp/rl2.svg" && cmp -s "$tmp/bf1.svg" "$tmp/bf2.svg"
+check "root locus: same bytes from 1 and 2 threads" $?
+head -1 "$tmp/rl1.csv" | grep -qx 'run,R0,status,pole1:re,pole1:im,pole2:re,pole2:im,reason'
+check "the pole columns" $?
+awk -F, 'function abs(x) { return x < 0 ? -x : x }
+  NR > 1 { a = $2 / 2e-3; d = a * a - 1e9; tol = 1e-6
+    if (d < 0) { r1 = -a; i1 = -sqrt(-d); r2 = -a; i2 = sqrt(-d) } else { r1 = -a - sqrt(d); i1 = 0; r2 = -a + sqrt(d); i2 = 0 }
+    if (abs($4 - r1) > tol || abs($5 - i1) > tol || abs($6 - r2) > tol || abs($7 - i2) > tol) bad++; n++ }
+  END { exit !(n == 25 && bad == 0) }' "$tmp/rl1.csv"
+check "the poles are -R/2L -+ sqrt((R/2L)^2 - 1/LC)" $?
+grep -q 'R0 = 125' "$tmp/bf1.svg"; check "the Bode family's legend" $?
+"$BGDRAW" "$m" "${rl[@]}" --split "4:$tmp/rlparts" --job-list "$tmp/rljobs.txt" && mkdir -p "$tmp/rlparts" &&
+  parallel --will-cite --jobs 2 <"$tmp/rljobs.txt" &&
+  "$BGDRAW" "$m" "${rl[@]}" --merge "$tmp/rlparts" --study "$tmp/rlm.csv" --root-locus "$tmp/rlm.svg" \
+    --bode-family "$tmp/bfm.svg"
+check "root locus: split and merged" $?
+cmp -s "$tmp/rl1.csv" "$tmp/rlm.csv" && cmp -s "$tmp/rl1.svg" "$tmp/rlm.svg" && cmp -s "$tmp/bf1.svg" "$tmp/bfm.svg"
+check "root locus: the merge gives the same bytes" $?
+
 # failed runs are rows with reasons; a study where every run fails is status 3
 "$BGDRAW" "$m" --sweep C0=1e-6,0 --collect C1.e:final --study "$tmp/f.csv" 2>"$tmp/err"
 [ $? -eq 0 ] && grep -q '^1,0,failed,,simulation failed' "$tmp/f.csv" && grep -q '1 of 2 runs failed' "$tmp/err"
@@ -105,6 +132,8 @@ usage "family format" "the plot is .svg, .pdf or .png" --sweep R0=1,2 --family "
 usage "--runs beyond" "the study has 2 runs" --sweep R0=1,2 --runs 1:5 --study "$tmp/u.csv"
 usage "--job-list without --split" "needs --split" --sweep R0=1,2 --job-list "$tmp/j.txt"
 usage "--family with --merge" "keep no trajectories" --sweep R0=1,2 --merge "$tmp" --family "$tmp/u.svg"
+usage "--root-locus with --merge" "give the study --collect poles" --sweep R0=1,2 --merge "$tmp" --root-locus "$tmp/u.svg"
+usage "root locus format" "--root-locus $tmp/u.csv: the plot is" --sweep R0=1,2 --root-locus "$tmp/u.csv"
 [ ! -e "$tmp/u.csv" ] && [ ! -e "$tmp/u.svg" ]; check "usage errors write nothing" $?
 "$BGDRAW" "$m" --sweep R0=1,2 --collect C9.e:max --study "$tmp/u.csv" 2>"$tmp/err"
 [ $? -eq 1 ] && grep -q "'C9.e' is not an output of the simulation (outputs: C1.e, L1.f)" "$tmp/err"

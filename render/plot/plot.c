@@ -332,7 +332,8 @@ static void layout_pass(plot *P) {
     panel *q = &P->p[k];
     q->area_h = area;
     int maxn = (int)(area / (2.2 * P->h_tick));
-    if (P->spec && P->spec->angle_panel == k + 1) /* short labels: two more intervals fit */
+    if (P->spec && (P->spec->angle_panel == k + 1 || (k < 32 && (P->spec->angle_mask >> k & 1))))
+      /* short labels: two more intervals fit */
       bg_plot_axis_degrees(q->dlo, q->dhi, maxn + 2, &q->y);
     else bg_plot_axis_make(q->dlo, q->dhi, maxn < 2 ? 2 : maxn, 1, &q->y);
     yw = fmax(yw, ytick_width(P, q));

@@ -30,18 +30,31 @@ typedef struct bg_plot_spec {
                         no unit (the prefix alone, when there is one) */
   int angle_panel;   /* 1-based panel whose values are degrees (ticks at multiples of
                         45, or 90 on large ranges); 0: none */
+  unsigned angle_mask; /* more such panels: bit k for panel k + 1 (the Bode family) */
 } bg_plot_spec;
 void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_spec *spec,
                         const bg_style *st, double width, double height, bg_scene *out);
 /* Curve j's colour and dash pattern (docs/plots.md, Line styles). */
 void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it);
 
-/* A parameter study's plot (render/plot/plot_study.c, docs/study.md): the
- * family of curves (family 1) or the quantities against the swept param
- * (0), in format fmt into out; BG_RENDER_OK or BG_RENDER_ERROR with the
- * reason in dg (no run succeeded; quantities of a Monte Carlo study). */
-int bg_study_plot_render(const bg_study *st, int family, const char *style, const char *style_dir,
-                         const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg);
+/* A parameter study's plots (render/plot/plot_study.c, plot_locus.c,
+ * docs/study.md): the quantities against the swept param, the family of
+ * curves, the root locus (each run's poles in the complex plane coloured by
+ * the first param, arrows along the branches as it grows) and the Bode
+ * family (bode: computed by bg_study_bode_compute). */
+enum { BG_STUDY_PLOT_QUANTITIES = 0, BG_STUDY_PLOT_FAMILY, BG_STUDY_PLOT_LOCUS, BG_STUDY_PLOT_BODE };
+/* Into out (initialised by the caller), width points wide; 0, or -1 with
+ * the reason in why (no run succeeded; quantities of a Monte Carlo study;
+ * no poles). */
+int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode, const bg_style *sty,
+                        double width, bg_scene *out, char *why, size_t nwhy);
+int bg_study_locus_scene(const bg_study *st, const bg_style *sty, double width, bg_scene *out,
+                         char *why, size_t nwhy);
+/* The same in format fmt into out; BG_RENDER_OK or BG_RENDER_ERROR with the
+ * reason in dg. */
+int bg_study_plot_render(const bg_study *st, int kind, const bg_study_bode *bode, const char *style,
+                         const char *style_dir, const char *fmt, const char *path, bg_strbuf *out,
+                         bg_diags *dg);
 
 /* --plot FILE: writes the plots to path (svg, pdf or png by its extension)
  * atomically. style and style_dir as in bg_render_opts. Returns

@@ -6,6 +6,9 @@
 #define BG_PLOT_INT_H
 #include <stddef.h>
 
+#include "scene/scene.h"
+#include "scene/style.h"
+
 /* exp3 of an axis whose values are too large or small for an SI prefix
  * (beyond 10^±24): labels are written in e-notation. */
 enum { BG_PLOT_NO_PREFIX = 999 };
@@ -52,4 +55,17 @@ const char *bg_plot_si_prefix(int exp3);
 /* A value formatted with the axis' prefix and %.6g ("772.578 m"); used for
  * the time where a partial run stopped. Returns buf. */
 char *bg_plot_format_value(double v, int exp3, char *buf, size_t n);
+
+/* An x-y plot area with its two value axes (the Nyquist diagram, the root
+ * locus; plot_linear.c): the data's x and y in page points, and the grid,
+ * frame, tick labels and axis names drawn in the simulation plots' look. */
+typedef struct bg_plot_xy {
+  const bg_style *st;
+  bg_scene *s;
+  double left, right, top, bot;
+  bg_plot_axis x, y;
+} bg_plot_xy;
+double bg_plot_xy_x(const bg_plot_xy *N, double v);
+double bg_plot_xy_y(const bg_plot_xy *N, double v);
+void bg_plot_xy_axes(bg_plot_xy *N, const char *xlabel, const char *ylabel);
 #endif

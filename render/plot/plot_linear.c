@@ -102,17 +102,18 @@ static int step_table(const bg_model *m, const bg_linear *l, table *T) {
 }
 
 /* ------------------------------------------------------------ Nyquist */
-typedef struct nyq {
-  const bg_style *st;
-  bg_scene *s;
-  double left, right, top, bot;
-  bg_plot_axis x, y;
-} nyq;
+typedef bg_plot_xy nyq;
+static double nx(const nyq *N, double v) { return bg_plot_xy_x(N, v); }
+static double ny(const nyq *N, double v) { return bg_plot_xy_y(N, v); }
 
-static double nx(const nyq *N, double v) { return N->left + (v - N->x.lo) / (N->x.hi - N->x.lo) * (N->right - N->left); }
-static double ny(const nyq *N, double v) { return N->bot - (v - N->y.lo) / (N->y.hi - N->y.lo) * (N->bot - N->top); }
+double bg_plot_xy_x(const bg_plot_xy *N, double v) {
+  return N->left + (v - N->x.lo) / (N->x.hi - N->x.lo) * (N->right - N->left);
+}
+double bg_plot_xy_y(const bg_plot_xy *N, double v) {
+  return N->bot - (v - N->y.lo) / (N->y.hi - N->y.lo) * (N->bot - N->top);
+}
 
-static void nyq_axes(nyq *N, const char *xl, const char *yl) {
+void bg_plot_xy_axes(bg_plot_xy *N, const char *xl, const char *yl) {
   bg_scene_item *it = bg_scene_begin(N->s, BG_ITEM_STROKE, "grid 1");
   it->color = N->st->muted, it->color.a *= 0.45, it->width = 0.5;
   char buf[96];
@@ -233,7 +234,7 @@ static int nyquist_scene(const bg_model *m, const bg_linear *l, const bg_style *
   bg_plot_axis_make(lim[0], lim[1], 8, 1, &N.x);
   bg_plot_axis_make(lim[2], lim[3], 7, 1, &N.y);
   bg_scene_text(out, "<b>Nyquist diagram</b>", W / 2, 8, st->font_size, 0.5, 0, st->fg, "title 1");
-  nyq_axes(&N, "Re H(j\xcf\x89)", "Im H(j\xcf\x89)");
+  bg_plot_xy_axes(&N, "Re H(j\xcf\x89)", "Im H(j\xcf\x89)");
   for (int p = 0; p < np && rc == 0; p++) nyq_curve(&N, re + (size_t)p * nw, im + (size_t)p * nw, nw, p);
   bg_scene_item *it = bg_scene_begin(out, BG_ITEM_STROKE, "critical point");
   it->color = st->conflict, it->width = 1.2;
@@ -266,7 +267,7 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
   if (kind == BG_PLOT_NYQUIST) return nyquist_scene(m, l, st, width, out);
   table T;
   int rc = kind == BG_PLOT_BODE ? bode_table(m, l, &T) : step_table(m, l, &T);
-  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2}, time = {0, "t", NULL, 0};
+  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2, 0}, time = {0, "t", NULL, 0, 0};
   if (rc == 0) bg_plot_scene_spec(&T.m, &T.r, kind == BG_PLOT_BODE ? &bode : &time, st, width, 0, out);
   table_free(&T);
   return rc;

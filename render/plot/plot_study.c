@@ -173,37 +173,72 @@ static int quantity_table(const bg_study *st, table *T, char *why, size_t nwhy) 
   return 0;
 }
 
-int bg_study_plot_render(const bg_study *st, int family, const char *style, const char *style_dir,
-                         const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg) {
+/* The Bode family: for each input/output pair a magnitude and a phase
+ * panel, one curve per run drawn, named by its param values. */
+static int bode_table(const bg_study *st, const bg_study_bode *b, table *T, char *why, size_t nwhy) {
+  if (!b || !b->nrun) {
+    snprintf(why, nwhy, "no Bode family was computed");
+    return -1;
+  }
+  int nr = b->nrun, np = b->npair, nw = b->nw;
+  table_init(T, st->title, nw, nr, 2 * np);
+  memcpy(T->r.t, b->w, (size_t)nw * sizeof(double));
+  for (int p = 0; p < np; p++)
+    for (int half = 0; half < 2; half++) {
+      int panel = 2 * p + half;
+      T->title[panel] = half ? NULL : b->pair_name[p];
+      T->ylabel[panel] = half ? "phase [\xc2\xb0]" : "magnitude [dB]";
+      for (int j = 0; j < nr; j++) {
+        T->names[panel * nr + j] = param_words(st, &st->runs[b->run[j]], 0);
+        const double *src = (half ? b->phase : b->mag) + ((size_t)j * np + p) * nw;
+        for (int k = 0; k < nw; k++) T->r.values[(size_t)k * T->r.nout + panel * nr + j] = src[k];
+      }
+    }
+  return 0;
+}
+
+int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode, const bg_style *sty,
+                        double width, bg_scene *out, char *why, size_t nwhy) {
+  if (kind == BG_STUDY_PLOT_LOCUS) return bg_study_locus_scene(st, sty, width, out, why, nwhy);
   table T;
-  char why[200];
-  if ((family ? family_table(st, &T, why, sizeof why) : quantity_table(st, &T, why, sizeof why))) {
-    bg_diag_error(dg, (bg_srcloc){0}, "no study plot for '%s': %s", path ? path : "the plot", why);
-    return BG_RENDER_ERROR;
-  }
-  bg_style sty;
-  if (bg_style_load(&sty, style, style_dir, dg) != 0) {
-    table_free(&T);
-    return BG_RENDER_ERROR;
-  }
-  bg_scene sc;
-  bg_scene_init(&sc, sty.font);
-  sc.background = sty.background;
-  char title[300];
-  snprintf(title, sizeof title, "%s: %s", st->title,
-           family ? (st->spec->kind == BG_STUDY_MONTE_CARLO ? "Monte Carlo envelope" : "family of runs")
-                  : "collected quantities");
-  sc.title = bg_arena_strdup(&sc.arena, title);
+  int rc = kind == BG_STUDY_PLOT_FAMILY ? family_table(st, &T, why, nwhy)
+         : kind == BG_STUDY_PLOT_BODE   ? bode_table(st, bode, &T, why, nwhy)
+                                        : quantity_table(st, &T, why, nwhy);
+  if (rc) return -1;
   const bg_study_param *p0 = &st->spec->params[0];
   size_t ls = strlen(p0->spec);
   bg_plot_spec spec = {0};
-  if (!family) {
+  if (kind == BG_STUDY_PLOT_QUANTITIES) {
     spec.xlog = ls > 4 && !strcmp(p0->spec + ls - 4, ":log");
     spec.xname = p0->name, spec.xunit = "";
+  } else if (kind == BG_STUDY_PLOT_BODE) {
+    spec.xlog = 1, spec.xname = "\xcf\x89", spec.xunit = "rad/s";
+    for (int p = 0; p < bode->npair && 2 * p + 1 < 32; p++) spec.angle_mask |= 1u << (2 * p + 1);
   }
-  bg_plot_scene_spec(&T.m, &T.r, &spec, &sty, WIDTH, 0, &sc);
-  int rc = bg_plot_render_scene(&sc, fmt, sty.png_scale, out, dg);
-  bg_scene_free(&sc);
+  bg_plot_scene_spec(&T.m, &T.r, &spec, sty, width, 0, out);
   table_free(&T);
+  return 0;
+}
+
+int bg_study_plot_render(const bg_study *st, int kind, const bg_study_bode *bode, const char *style,
+                         const char *style_dir, const char *fmt, const char *path, bg_strbuf *out,
+                         bg_diags *dg) {
+  bg_style sty;
+  if (bg_style_load(&sty, style, style_dir, dg) != 0) return BG_RENDER_ERROR;
+  bg_scene sc;
+  bg_scene_init(&sc, sty.font);
+  sc.background = sty.background;
+  static const char *const what[] = {"collected quantities", "family of runs", "root locus",
+                                     "Bode family"};
+  char title[300], why[200];
+  snprintf(title, sizeof title, "%s: %s", st->title,
+           kind == BG_STUDY_PLOT_FAMILY && st->spec->kind == BG_STUDY_MONTE_CARLO
+               ? "Monte Carlo envelope" : what[kind]);
+  sc.title = bg_arena_strdup(&sc.arena, title);
+  int rc = BG_RENDER_ERROR;
+  if (bg_study_plot_scene(st, kind, bode, &sty, WIDTH, &sc, why, sizeof why))
+    bg_diag_error(dg, (bg_srcloc){0}, "no study plot for '%s': %s", path ? path : "the plot", why);
+  else rc = bg_plot_render_scene(&sc, fmt, sty.png_scale, out, dg);
+  bg_scene_free(&sc);
   return rc;
 }

@@ -23,7 +23,7 @@ enum {
   OPT_EQUATIONS, OPT_LINEAR, OPT_BODE, OPT_NYQUIST, OPT_STEP, OPT_MAX_LIST, OPT_MAX_ERRORS, OPT_SET, OPT_SIMULATE, OPT_VERIFY, OPT_CHECK, OPT_DIAG_FORMAT, OPT_COLOR,
   OPT_PREFIX, OPT_TRANSFORM, OPT_COLLAPSE, OPT_STDIN_NAME, OPT_IMPORT,
   /* the study's words (cli_study.h): kept in order for cli_study.c */
-  OPT_SWEEP, OPT_VARY, OPT_COLLECT, OPT_STUDY, OPT_FAMILY, OPT_MONTE_CARLO, OPT_SEED, OPT_RUNS,
+  OPT_SWEEP, OPT_VARY, OPT_COLLECT, OPT_STUDY, OPT_FAMILY, OPT_ROOT_LOCUS, OPT_BODE_FAMILY, OPT_MONTE_CARLO, OPT_SEED, OPT_RUNS,
   OPT_JOB_LIST, OPT_SLURM, OPT_MERGE, OPT_SPLIT
 };
 
@@ -59,6 +59,8 @@ static const struct option long_opts[] = {
     {"collect", required_argument, NULL, OPT_COLLECT},
     {"study", required_argument, NULL, OPT_STUDY},
     {"family", required_argument, NULL, OPT_FAMILY},
+    {"root-locus", required_argument, NULL, OPT_ROOT_LOCUS},
+    {"bode-family", required_argument, NULL, OPT_BODE_FAMILY},
     {"monte-carlo", required_argument, NULL, OPT_MONTE_CARLO},
     {"seed", required_argument, NULL, OPT_SEED},
     {"jobs", required_argument, NULL, 'j'},
@@ -244,9 +246,11 @@ static int take(bg_cli_opts *o, int c, const char *arg) {
     o->collapse[o->ncollapse++] = arg;
     return 0;
   case OPT_SWEEP: case OPT_VARY: case OPT_COLLECT: case OPT_STUDY: case OPT_FAMILY:
+  case OPT_ROOT_LOCUS: case OPT_BODE_FAMILY:
     if (o->nstudy == BG_MAX_STUDY_WORDS) return bg_cli_usage_error("too many study options%s%s", "", "");
     o->study_opt[o->nstudy] = c == OPT_SWEEP ? 's' : c == OPT_VARY ? 'v' : c == OPT_COLLECT ? 'c'
-                            : c == OPT_STUDY ? 'o' : 'f';
+                            : c == OPT_STUDY ? 'o' : c == OPT_FAMILY ? 'f'
+                            : c == OPT_ROOT_LOCUS ? 'l' : 'b';
     o->study_arg[o->nstudy++] = arg;
     return 0;
   case OPT_SIMULATE: o->simulate = 1; return 0;
@@ -332,10 +336,13 @@ void bg_cli_print_help(FILE *out) {
       "  --monte-carlo N --vary NAME=DIST [--seed S]\n"
       "                      N runs with NAME drawn from normal(M,SD), uniform(LO,HI),\n"
       "                      lognormal(MU,SIGMA)\n"
-      "  --collect OUT:WHAT  per run: final | min | max | mean | tmin | tmax | cross=LEVEL\n"
+      "  --collect OUT:WHAT  per run: final | min | max | mean | tmin | tmax | cross=LEVEL;\n"
+      "                      --collect poles: the linearisation's poles\n"
       "  --study FILE        the study's table (csv, json) or the quantities against\n"
       "                      the param (svg, pdf, png); repeatable\n"
       "  --family FILE       the study's runs in one plot (svg, pdf, png)\n"
+      "  --root-locus FILE   the runs' poles in the complex plane (svg, pdf, png)\n"
+      "  --bode-family FILE  the Bode diagrams of up to 12 runs in one plot\n"
       "  -j, --jobs N        threads of a study (default: the number of cores)\n"
       "  --runs FIRST:COUNT  compute only these runs of the study (a part to --merge)\n"
       "  --split N:DIR --job-list FILE | --slurm FILE\n"

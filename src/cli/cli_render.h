@@ -21,7 +21,7 @@
 
 /* Raised whenever the calls below change: a module from another build is
  * refused rather than called wrongly. */
-#define BG_RENDER_API_VERSION 5
+#define BG_RENDER_API_VERSION 6
 
 /* R(return type, name, (parameters), (arguments)) for a call that returns a
  * value, V(name, (parameters), (arguments)) for one that does not; the
@@ -44,9 +44,9 @@
      const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg),                            \
     (m, l, kind, style, style_dir, fmt, path, out, dg))                                           \
   R(int, study_plot_render,                                                                       \
-    (const bg_study *st, int family, const char *style, const char *style_dir, const char *fmt,   \
-     const char *path, bg_strbuf *out, bg_diags *dg),                                             \
-    (st, family, style, style_dir, fmt, path, out, dg))                                           \
+    (const bg_study *st, int kind, const bg_study_bode *bode, const char *style,                 \
+     const char *style_dir, const char *fmt, const char *path, bg_strbuf *out, bg_diags *dg),     \
+    (st, kind, bode, style, style_dir, fmt, path, out, dg))                                       \
   R(int, report_render, (const bg_run *r, const bg_report_opts *o, bg_strbuf *out, bg_diags *dg), \
     (r, o, out, dg))                                                                              \
   V(style_path, (const char *name, const char *style_dir, char *buf, size_t n),                   \

@@ -66,16 +66,24 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
     case 'v': rc = bg_study_add_vary(s, a, err, sizeof err), nvary++; break;
     case 'c': rc = bg_study_add_collect(s, a, err, sizeof err); break;
     case 'o':
-    case 'f': {
-      int fam = o->study_opt[i] == 'f';
+    case 'f':
+    case 'l':
+    case 'b': {
+      char c = (char)o->study_opt[i];
+      static const char *const optname[] = {"--family", "--root-locus", "--bode-family"};
       const char *ext = bg_path_ext(a);
-      if (!in(ext, figure_exts) && (fam || !in(ext, table_exts)))
-        return bg_cli_usage_error(fam ? "--family %s: the plot is .svg, .pdf or .png%s"
-                                      : "--study %s: the table is .csv or .json, the plot of "
-                                        "the quantities .svg, .pdf or .png%s", a, "");
+      if (!in(ext, figure_exts) && (c != 'o' || !in(ext, table_exts)))
+        return bg_cli_usage_error(c != 'o' ? "%s %s: the plot is .svg, .pdf or .png"
+                                           : "--study %s%s: the table is .csv or .json, the plot "
+                                             "of the quantities .svg, .pdf or .png",
+                                  c == 'o' ? "" : optname[c == 'f' ? 0 : c == 'l' ? 1 : 2], a);
       if (cs->nout == CLI_STUDY_MAX_OUT) return bg_cli_usage_error("too many study outputs%s%s", "", "");
-      cs->out[cs->nout].path = a, cs->out[cs->nout].family = fam, cs->nout++;
-      cs->curves |= fam;
+      cs->out[cs->nout].path = a;
+      cs->out[cs->nout].kind = c == 'f' ? BG_STUDY_PLOT_FAMILY : c == 'l' ? BG_STUDY_PLOT_LOCUS
+                             : c == 'b' ? BG_STUDY_PLOT_BODE : in(ext, table_exts) ? -1
+                                                             : BG_STUDY_PLOT_QUANTITIES;
+      cs->nout++;
+      cs->curves |= c == 'f', cs->locus |= c == 'l', cs->bode |= c == 'b';
       break;
     }
     }
@@ -140,12 +148,18 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
                               o->joblist ? "--job-list" : "--slurm", "");
   }
   if (o->merge && o->runs) return bg_cli_usage_error("--merge does not combine with --runs%s%s", "", "");
+  int poles = 0;
+  for (int k = 0; k < s->ncollect; k++) poles |= s->collect[k].kind == BG_COLLECT_POLES;
+  if (o->merge && cs->locus && !poles)
+    return bg_cli_usage_error("--root-locus with --merge draws the poles of the parts' tables: "
+                              "give the study --collect poles%s%s", "", "");
   if (o->merge && cs->curves)
     return bg_cli_usage_error("--family with --merge: the parts keep no trajectories (draw the "
                               "family on one machine, or from a part)%s%s", "", "");
   if (!cs->nout && !o->split)
-    return bg_cli_usage_error("the study writes nothing: add --study FILE.csv|json|svg or "
-                              "--family FILE.svg%s%s", "", "");
+    return bg_cli_usage_error("the study writes nothing: add --study FILE.csv|json|svg, "
+                              "--family FILE.svg, --root-locus FILE.svg or --bode-family "
+                              "FILE.svg%s%s", "", "");
   if (o->split && cs->nout)
     return bg_cli_usage_error("--split writes jobs only; the outputs come from --merge%s%s", "", "");
   /* a study writes only its own outputs: the single run's would be ignored */
@@ -182,7 +196,7 @@ static void part_command(const bg_cli_opts *o, const cli_study *cs, long k, long
   if (o->causality) bg_sb_puts(b, " --causality "), shell_word(b, o->causality);
   for (int i = 0; i < o->nstudy; i++) {
     char c = (char)o->study_opt[i];
-    if (c == 'o' || c == 'f') continue;
+    if (c == 'o' || c == 'f' || c == 'l' || c == 'b') continue;
     bg_sb_puts(b, c == 's' ? " --sweep " : c == 'v' ? " --vary " : " --collect ");
     shell_word(b, o->study_arg[i]);
   }
@@ -347,23 +361,31 @@ static int merge_parts(const bg_cli_opts *o, const cli_study *cs, bg_study *st) 
 }
 
 /* ------------------------------------------------------------ outputs */
-static int write_outputs(run *r, const cli_study *cs, const bg_study *st) {
-  for (int i = 0; i < cs->nout; i++) {
+static int write_outputs(run *r, const cli_study *cs, const bg_study *st, const bg_study_opts *so) {
+  bg_study_bode bode = {0};
+  if (cs->bode) {
+    char err[512];
+    if (bg_study_bode_compute(st, so, &bode, err, sizeof err)) {
+      fprintf(stderr, "bgdraw: error: --bode-family: %s\n", err);
+      return EXIT_MODEL;
+    }
+  }
+  int rc = EXIT_OK;
+  for (int i = 0; i < cs->nout && rc == EXIT_OK; i++) {
     const char *path = cs->out[i].path, *ext = bg_path_ext(path);
     bg_strbuf b = {0};
-    int rc = 0;
     if (!strcmp(ext, "csv")) bg_study_write_csv(st, &b);
     else if (!strcmp(ext, "json")) bg_study_write_json(st, &b);
-    else if (bg_study_plot_render(st, cs->out[i].family, r->ropts.style, r->ropts.style_dir, ext,
+    else if (bg_study_plot_render(st, cs->out[i].kind, &bode, r->ropts.style, r->ropts.style_dir, ext,
                                   path, &b, &r->R->dg) != BG_RENDER_OK) {
       bg_diags_print(&r->R->dg, stderr);
       rc = EXIT_WRITE;
     }
-    if (!rc) rc = cli_write_text(path, &b);
+    if (rc == EXIT_OK) rc = cli_write_text(path, &b);
     bg_sb_free(&b);
-    if (rc) return rc;
   }
-  return EXIT_OK;
+  bg_study_bode_free(&bode);
+  return rc;
 }
 
 int cli_study_run(run *r, cli_study *cs) {
@@ -373,7 +395,7 @@ int cli_study_run(run *r, cli_study *cs) {
   so.name = r->R->name, so.src = r->R->src, so.srclen = r->R->srclen;
   so.sets = o->sets, so.nsets = o->nsets;
   so.method = o->causality ? bg_method_parse(o->causality) : -1;
-  so.jobs = cs->jobs, so.keep_curves = cs->curves;
+  so.jobs = cs->jobs, so.keep_curves = cs->curves, so.want_poles = cs->locus;
   so.first = cs->first, so.count = cs->count;
   so.log = r->R->o.log;
   bg_study st;
@@ -384,7 +406,8 @@ int cli_study_run(run *r, cli_study *cs) {
     return EXIT_MODEL;
   }
   int rc = o->merge ? merge_parts(o, cs, &st) : EXIT_OK;
-  if (rc == EXIT_OK) rc = write_outputs(r, cs, &st);
+  for (long k = 0; o->merge && st.npole && k < st.count; k++) bg_study_poles_from_values(&st, &st.runs[k]);
+  if (rc == EXIT_OK) rc = write_outputs(r, cs, &st, &so);
   if (rc == EXIT_OK && st.nfailed) {
     fprintf(stderr, "bgdraw: %s: %ld of %ld runs failed (the table's status and reason say why)\n",
             st.nfailed == st.count ? "error" : "warning", st.nfailed, st.count);

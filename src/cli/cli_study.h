@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The command line's parameter studies (docs/study.md, src/cli/cli_study.c):
  * --sweep, --vary, --monte-carlo, --seed, --collect, -j, --study, --family,
+ * --root-locus, --bode-family,
  * --runs, --split with --job-list or --slurm, --merge. */
 #ifndef BG_CLI_STUDY_H
 #define BG_CLI_STUDY_H
@@ -11,8 +12,10 @@ enum { CLI_STUDY_MAX_OUT = 16 };
 
 typedef struct cli_study {
   bg_study_spec spec;
-  struct { const char *path; int family; } out[CLI_STUDY_MAX_OUT];
+  /* kind: BG_STUDY_PLOT_* for a plot (render/plot/plot.h), -1 for a table */
+  struct { const char *path; int kind; } out[CLI_STUDY_MAX_OUT];
   int nout, curves, jobs;
+  int locus, bode;       /* --root-locus, --bode-family given */
   long first, count;     /* --runs */
   long parts;            /* --split N:DIR */
   const char *partdir;

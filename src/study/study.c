@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,6 +72,7 @@ static double quantity(const bg_simresult *r, int c, const bg_study_collect *q) 
     }
     return NAN;
   }
+  case BG_COLLECT_POLES: case BG_COLLECT_POLE_RE: case BG_COLLECT_POLE_IM: break; /* not a column's */
   }
   return NAN;
 }
@@ -78,6 +80,62 @@ static double quantity(const bg_simresult *r, int c, const bg_study_collect *q) 
 static int column(const bg_simresult *r, const char *name) {
   for (int k = 0; k < r->nout; k++) if (!strcmp(r->names[k], name)) return k;
   return -1;
+}
+
+bg_run *bg_study_new_run(const bg_study_spec *s, const bg_study_opts *o, const double *param) {
+  bg_param_override *ov = bg_xcalloc((size_t)(o->nsets + s->nparams) + 1, sizeof *ov);
+  int nov = 0;
+  for (int k = 0; k < o->nsets; k++) { /* a --set of a studied param gives way */
+    int studied = 0;
+    for (int j = 0; j < s->nparams; j++) studied |= !strcmp(o->sets[k].name, s->params[j].name);
+    if (!studied) ov[nov++] = o->sets[k];
+  }
+  for (int k = 0; k < s->nparams; k++) ov[nov++] = (bg_param_override){s->params[k].name, param[k]};
+  bg_run_opts ro;
+  bg_run_opts_init(&ro);
+  ro.method = o->method, ro.sets = ov, ro.nsets = nov;
+  bg_run *R = bg_run_new(&ro); /* copies the overrides */
+  free(ov);
+  return R;
+}
+
+/* A run's reason in words (malloc'd). */
+static char *reason_printf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static char *reason_printf(const char *fmt, ...) {
+  bg_strbuf b = {0};
+  va_list ap;
+  va_start(ap, fmt);
+  bg_sb_vprintf(&b, fmt, ap);
+  va_end(ap);
+  return b.s ? b.s : xstrdup("");
+}
+
+/* The run's poles (its linearisation at the model's operating point). */
+static void run_poles(const bg_study *st, bg_run *R, bg_study_run *rec) {
+  bg_run_need(R, BG_STAGE_LINEAR);
+  const bg_linear *l = &R->lin;
+  if (!l->ok) {
+    rec->status = BG_STUDY_REFUSED;
+    rec->reason = reason_printf("not linearised: %s", l->message ? l->message : "no reason given");
+    return;
+  }
+  if (st->npole && l->npole > st->npole) { /* the table has no room: refused, not cut */
+    rec->status = BG_STUDY_FAILED;
+    rec->reason = reason_printf("%d poles, more than the table's %d (the poles at the model's own values)",
+                                l->npole, st->npole);
+    return;
+  }
+  rec->npole = l->npole;
+  rec->pole_re = bg_xcalloc((size_t)l->npole + 1, sizeof(double));
+  rec->pole_im = bg_xcalloc((size_t)l->npole + 1, sizeof(double));
+  memcpy(rec->pole_re, l->pole_re, (size_t)l->npole * sizeof(double));
+  memcpy(rec->pole_im, l->pole_im, (size_t)l->npole * sizeof(double));
+  for (int k = 0; k < st->ncollect; k++) {
+    const bg_study_collect *q = &st->collect[k];
+    if (q->kind == BG_COLLECT_POLE_RE || q->kind == BG_COLLECT_POLE_IM)
+      rec->value[k] = q->pole >= rec->npole ? NAN : q->kind == BG_COLLECT_POLE_RE ? rec->pole_re[q->pole]
+                                                                                 : rec->pole_im[q->pole];
+  }
 }
 
 /* One run of the study: its params as overrides, the simulation, the
@@ -90,25 +148,18 @@ static void one_run(const shared *sh, long i, bg_study_run *rec) {
   rec->value = bg_xcalloc((size_t)st->ncollect + 1, sizeof(double));
   for (int k = 0; k < st->ncollect; k++) rec->value[k] = NAN;
   bg_study_values(s, i, rec->param);
-  bg_param_override *ov = bg_xcalloc((size_t)(o->nsets + s->nparams) + 1, sizeof *ov);
-  int nov = 0;
-  for (int k = 0; k < o->nsets; k++) { /* a --set of a studied param gives way */
-    int studied = 0;
-    for (int j = 0; j < s->nparams; j++) studied |= !strcmp(o->sets[k].name, s->params[j].name);
-    if (!studied) ov[nov++] = o->sets[k];
-  }
-  for (int k = 0; k < s->nparams; k++) ov[nov++] = (bg_param_override){s->params[k].name, rec->param[k]};
-  bg_run_opts ro;
-  bg_run_opts_init(&ro);
-  ro.method = o->method, ro.sets = ov, ro.nsets = nov;
-  bg_run *R = bg_run_new(&ro);
-  free(ov);
+  bg_run *R = bg_study_new_run(s, o, rec->param);
   if (bg_run_load_string(R, o->name, o->src) != 0 || !R->model) {
     rec->status = BG_STUDY_MODEL_ERROR;
     const char *why = "the model has errors";
     for (int k = R->dg.n - 1; k >= 0; k--)
       if (R->dg.items[k].sev == BG_SEV_ERROR) why = R->dg.items[k].msg;
     rec->reason = xstrdup(why);
+    bg_run_free(R);
+    return;
+  }
+  if (st->want_poles) run_poles(st, R, rec);
+  if (!st->need_sim || rec->status != BG_STUDY_OK) {
     bg_run_free(R);
     return;
   }
@@ -119,13 +170,14 @@ static void one_run(const shared *sh, long i, bg_study_run *rec) {
     rec->status = R->sim_status == 1 ? BG_STUDY_REFUSED : r->partial && r->nrows ? BG_STUDY_PARTIAL
                                                                                  : BG_STUDY_FAILED;
     rec->reason = xstrdup(why ? why : "the simulation failed");
+    for (int k = 0; k < st->ncollect; k++) rec->value[k] = NAN; /* a failed run has no quantities */
   } else {
     for (int k = 0; k < st->ncollect; k++) {
+      if (st->collect_curve[k] < 0) continue; /* a pole: above */
       int c = column(r, st->collect[k].var);
       if (c < 0) {
         rec->status = BG_STUDY_FAILED;
-        rec->reason = bg_xmalloc(strlen(st->collect[k].var) + 48);
-        sprintf(rec->reason, "'%s' is not an output of this run", st->collect[k].var);
+        rec->reason = reason_printf("'%s' is not an output of this run", st->collect[k].var);
         break;
       }
       rec->value[k] = quantity(r, c, &st->collect[k]);
@@ -205,11 +257,23 @@ static int probe(const bg_study_spec *s, const bg_study_opts *o, bg_study *st, c
       rc = -1;
     }
   }
+  int poles = o->want_poles;
+  for (int k = 0; k < s->ncollect; k++) poles |= s->collect[k].kind == BG_COLLECT_POLES;
+  if (poles && !rc) { /* the poles at the model's own values give the table its columns */
+    bg_run_need(R, BG_STAGE_LINEAR);
+    if (!R->lin.ok || R->lin.npole == 0) {
+      snprintf(err, n, "the study asks for poles, but %s", !R->lin.ok
+               ? (R->lin.message ? R->lin.message : "the model is not linearised")
+               : "the linearisation has none (no states, or more than 500)");
+      rc = -1;
+    }
+    st->want_poles = 1, st->npole = R->lin.npole;
+  }
   bg_run_need(R, BG_STAGE_EQUATIONS);
   const bg_eqsys *E = R->eqsys;
   int nout = E ? bg_eqsys_noutput(E) : 0;
   for (int k = 0; k < s->ncollect && !rc && E; k++) {
-    int found = 0;
+    int found = s->collect[k].kind == BG_COLLECT_POLES;
     for (int c = 0; c < nout; c++) found |= !strcmp(bg_eqsys_output_name(E, c), s->collect[k].var);
     if (!found) {
       bg_strbuf sb = {0};
@@ -221,7 +285,8 @@ static int probe(const bg_study_spec *s, const bg_study_opts *o, bg_study *st, c
     }
   }
   if (!rc && s->ncollect) {
-    st->collect = (bg_study_collect *)s->collect, st->ncollect = s->ncollect;
+    if (poles) bg_study_expand_poles(st, s->collect, s->ncollect, st->npole);
+    else st->collect = (bg_study_collect *)s->collect, st->ncollect = s->ncollect;
   } else if (!rc) {
     if (!E) {
       snprintf(err, n, "the equations cannot be formed (%s), so there are no outputs to collect",
@@ -250,10 +315,16 @@ static int probe(const bg_study_spec *s, const bg_study_opts *o, bg_study *st, c
   st->collect_curve = bg_xcalloc((size_t)st->ncollect + 1, sizeof(int));
   for (int k = 0; k < st->ncollect; k++) {
     int c = 0;
+    if (st->collect[k].kind == BG_COLLECT_POLE_RE || st->collect[k].kind == BG_COLLECT_POLE_IM) {
+      st->collect_curve[k] = -1;
+      continue;
+    }
+    st->need_sim = 1;
     while (c < st->ncurve && strcmp(st->curve_name[c], st->collect[k].var)) c++;
     if (c == st->ncurve) st->curve_name[st->ncurve++] = xstrdup(st->collect[k].var);
     st->collect_curve[k] = c;
   }
+  st->need_sim |= o->keep_curves;
   return 0;
 }
 
@@ -333,6 +404,7 @@ void bg_study_free(bg_study *st) {
   for (long k = 0; st->runs && k < st->count; k++) {
     bg_study_run *r = &st->runs[k];
     free(r->param), free(r->reason), free(r->value), free(r->t), free(r->curve);
+    free(r->pole_re), free(r->pole_im);
   }
   free(st->runs);
   if (st->own_collect)

@@ -168,9 +168,10 @@ int bg_study_add_collect(bg_study_spec *s, const char *arg, char *err, size_t n)
       {"final", BG_COLLECT_FINAL}, {"min", BG_COLLECT_MIN}, {"max", BG_COLLECT_MAX},
       {"mean", BG_COLLECT_MEAN}, {"tmin", BG_COLLECT_TMIN}, {"tmax", BG_COLLECT_TMAX}};
   const char *c = strrchr(arg, ':');
-  if (!c || c == arg) {
+  int poles = !strcmp(arg, "poles");
+  if (!poles && (!c || c == arg)) {
     snprintf(err, n, "--collect wants OUTPUT:WHAT (WHAT: final, min, max, mean, tmin, tmax, "
-             "cross=LEVEL), not '%s'", arg);
+             "cross=LEVEL) or poles, not '%s'", arg);
     return -1;
   }
   if (s->ncollect == BG_STUDY_MAX_COLLECT) {
@@ -179,6 +180,17 @@ int bg_study_add_collect(bg_study_spec *s, const char *arg, char *err, size_t n)
   }
   bg_study_collect q = {0};
   int found = 0;
+  if (poles) { /* the linearisation's poles: columns pole1:re, pole1:im, ... */
+    for (int i = 0; i < s->ncollect; i++)
+      if (s->collect[i].kind == BG_COLLECT_POLES) {
+        snprintf(err, n, "--collect poles is given twice");
+        return -1;
+      }
+    q.kind = BG_COLLECT_POLES;
+    q.var = dupn(arg, strlen(arg)), q.label = dupn(arg, strlen(arg));
+    s->collect[s->ncollect++] = q;
+    return 0;
+  }
   for (int k = 0; k < 6; k++)
     if (!strcmp(c + 1, kinds[k].name)) q.kind = kinds[k].k, found = 1;
   if (!found && !strncmp(c + 1, "cross=", 6)) {

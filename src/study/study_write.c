@@ -8,7 +8,8 @@
 #include "study/study.h"
 
 static const char *kind_word(const bg_study_collect *q) {
-  static const char *w[] = {"final", "min", "max", "mean", "tmin", "tmax", "cross"};
+  static const char *w[] = {"final", "min", "max", "mean", "tmin", "tmax", "cross", "poles",
+                            "pole-re", "pole-im"};
   return w[q->kind];
 }
 
@@ -76,9 +77,12 @@ void bg_study_write_json(const bg_study *st, bg_strbuf *out) {
     const bg_study_collect *q = &st->collect[k];
     bg_sb_puts(out, k ? ",\n    {\"label\": " : "\n    {\"label\": ");
     bg_sb_json_str(out, q->label);
+    int pole = q->kind == BG_COLLECT_POLE_RE || q->kind == BG_COLLECT_POLE_IM;
     bg_sb_puts(out, ", \"output\": ");
-    bg_sb_json_str(out, q->var);
+    if (pole) bg_sb_puts(out, "null");
+    else bg_sb_json_str(out, q->var);
     bg_sb_printf(out, ", \"what\": \"%s\"", kind_word(q));
+    if (pole) bg_sb_printf(out, ", \"pole\": %d", q->pole + 1);
     if (q->kind == BG_COLLECT_CROSS) bg_sb_puts(out, ", \"level\": "), bg_sb_json_num(out, q->level);
     bg_sb_putc(out, '}');
   }

@@ -9,6 +9,9 @@
  *   peak at v0 = 1, so the runs' mean is the response at the draws' mean,
  *   and the draws have the stated mean and spread;
  * - the same bytes from 1, 2 and 5 threads and from the study cut in parts;
+ * - a root locus of the same circuit: the poles -R/2L +- sqrt((R/2L)^2 -
+ *   1/LC) of each run, as the table's columns; the Bode family's gains
+ *   against |C / (1 - LC w^2 + j RC w)| and its phase;
  * - failures recorded per run with their reasons; the parsers' refusals. */
 #define _DEFAULT_SOURCE /* M_PI */
 #include "harness.h"
@@ -281,8 +284,95 @@ static void parsers(void) {
   bg_study_spec_free(&s);
 }
 
+/* The RLC's poles as R varies, closed form: s = -R/2L +- sqrt((R/2L)^2 - 1/LC),
+ * in the linear stage's order (by real part, then imaginary part). */
+static void root_locus(void) {
+  char *src = example("examples/rlc.bg");
+  const char *sweep[] = {"R0=5:125:25", NULL}, *collect[] = {"poles", "C1.e:max", NULL};
+  bg_study_spec s;
+  spec_words(&s, sweep, NULL, collect);
+  bg_study_opts o = opts("rlc.bg", src, 2);
+  bg_study st;
+  char err[300];
+  INT_EQ(bg_study_run_all(&s, &o, &st, err, sizeof err), 0);
+  INT_EQ(st.npole, 2);
+  INT_EQ(st.ncollect, 5); /* pole1:re, pole1:im, pole2:re, pole2:im, C1.e:max */
+  STR_EQ(st.collect[0].label, "pole1:re");
+  STR_EQ(st.collect[3].label, "pole2:im");
+  OK(st.need_sim); /* C1.e:max needs the simulation */
+  const double L = 1e-3, C = 1e-6;
+  int complex_pairs = 0, real_pairs = 0;
+  for (long i = 0; i < st.count; i++) {
+    const bg_study_run *r = &st.runs[i];
+    INT_EQ(r->status, BG_STUDY_OK);
+    double R = r->param[0], a = R / (2 * L), d = a * a - 1 / (L * C), scale = 1 / sqrt(L * C);
+    if (d < 0) { /* underdamped: -a -+ j sqrt(1/LC - a^2) */
+      DBL_NEAR(r->value[0], -a, 1e-9 * scale);
+      DBL_NEAR(r->value[1], -sqrt(-d), 1e-9 * scale);
+      DBL_NEAR(r->value[2], -a, 1e-9 * scale);
+      DBL_NEAR(r->value[3], sqrt(-d), 1e-9 * scale);
+      complex_pairs++;
+    } else { /* overdamped: two real poles -a -+ sqrt(d) */
+      DBL_NEAR(r->value[0], -a - sqrt(d), 1e-9 * scale);
+      DBL_NEAR(r->value[2], -a + sqrt(d), 1e-9 * scale);
+      OK(r->value[1] == 0 && r->value[3] == 0);
+      real_pairs++;
+    }
+    INT_EQ(r->npole, 2);
+    OK(r->pole_re[0] == r->value[0] && r->pole_im[1] == r->value[3]);
+  }
+  OK(complex_pairs >= 10 && real_pairs >= 10);
+  /* the Bode family of C1.q <- U (the states are the outputs): |C / (1 - LC w^2 + j RC w)| */
+  bg_study_bode b;
+  INT_EQ(bg_study_bode_compute(&st, &o, &b, err, sizeof err), 0);
+  INT_EQ(b.nrun, BG_STUDY_BODE_RUNS);
+  INT_EQ(b.run[0], 0);
+  INT_EQ(b.run[b.nrun - 1], st.count - 1);
+  int pq = -1;
+  for (int p = 0; p < b.npair; p++) if (strstr(b.pair_name[p], "C1.q")) pq = p;
+  OK(pq >= 0);
+  OK(b.w[0] <= 1e3 && b.w[b.nw - 1] >= 1e6); /* the union covers every run's poles */
+  for (int j = 0; j < b.nrun && pq >= 0; j++) {
+    double R = st.runs[b.run[j]].param[0];
+    for (int k = 0; k < b.nw; k += 7) {
+      double w = b.w[k], re = 1 - L * C * w * w, im = R * C * w;
+      double mag = 20 * log10(C / hypot(re, im)), ph = -atan2(im, re) * 180 / M_PI;
+      DBL_NEAR(b.mag[((size_t)j * b.npair + pq) * b.nw + k], mag, 1e-6);
+      DBL_NEAR(b.phase[((size_t)j * b.npair + pq) * b.nw + k], ph, 1e-6);
+    }
+  }
+  bg_study_bode_free(&b);
+  bg_study_free(&st);
+  /* poles alone: no simulation; the root locus's runs keep their poles without columns */
+  bg_study_spec_free(&s);
+  const char *only[] = {"poles", NULL};
+  spec_words(&s, sweep, NULL, only);
+  INT_EQ(bg_study_run_all(&s, &o, &st, err, sizeof err), 0);
+  OK(!st.need_sim && st.ncollect == 4);
+  bg_study_free(&st);
+  bg_study_spec_free(&s);
+  const char *peak[] = {"C1.e:max", NULL};
+  spec_words(&s, sweep, NULL, peak);
+  o.want_poles = 1;
+  INT_EQ(bg_study_run_all(&s, &o, &st, err, sizeof err), 0);
+  INT_EQ(st.ncollect, 1);
+  INT_EQ(st.runs[3].npole, 2);
+  DBL_NEAR(st.runs[3].pole_re[0], -st.runs[3].param[0] / (2 * L), 1e-6);
+  bg_study_free(&st);
+  bg_study_spec_free(&s);
+  /* a model without states has no poles: refused before any run */
+  const char *nostate = "model r\nparam R0 = 1\nSe U = 1\nR R1 = R0\nbond U -> R1\n";
+  bg_study_opts o2 = opts("r.bg", nostate, 1);
+  const char *sw2[] = {"R0=1,2", NULL};
+  spec_words(&s, sw2, NULL, only);
+  OK(bg_study_run_all(&s, &o2, &st, err, sizeof err) == -1 && strstr(err, "poles"));
+  bg_study_spec_free(&s);
+  free(src);
+}
+
 int main(void) {
   parsers();
+  root_locus();
   rlc_sweep();
   quarter_car();
   failures();
