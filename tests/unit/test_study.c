@@ -284,17 +284,28 @@ static void parsers(void) {
   bg_study_spec_free(&s);
 }
 
+/* The study of src over the words given, run on jobs threads; 0 or -1. */
+static int run_words(const char *name, const char *src, const char *const *sweep,
+                     const char *const *collect, int jobs, bg_study_spec *s, bg_study_opts *o,
+                     bg_study *st) {
+  char err[300];
+  spec_words(s, sweep, NULL, collect);
+  *o = opts(name, src, jobs);
+  int rc = bg_study_run_all(s, o, st, err, sizeof err);
+  if (rc) fprintf(stderr, "%s\n", err);
+  return rc;
+}
+
 /* The RLC's poles as R varies, closed form: s = -R/2L +- sqrt((R/2L)^2 - 1/LC),
  * in the linear stage's order (by real part, then imaginary part). */
 static void root_locus(void) {
   char *src = example("examples/rlc.bg");
   const char *sweep[] = {"R0=5:125:25", NULL}, *collect[] = {"poles", "C1.e:max", NULL};
   bg_study_spec s;
-  spec_words(&s, sweep, NULL, collect);
-  bg_study_opts o = opts("rlc.bg", src, 2);
+  bg_study_opts o;
   bg_study st;
   char err[300];
-  INT_EQ(bg_study_run_all(&s, &o, &st, err, sizeof err), 0);
+  INT_EQ(run_words("rlc.bg", src, sweep, collect, 2, &s, &o, &st), 0);
   INT_EQ(st.npole, 2);
   INT_EQ(st.ncollect, 5); /* pole1:re, pole1:im, pole2:re, pole2:im, C1.e:max */
   STR_EQ(st.collect[0].label, "pole1:re");
