@@ -18,31 +18,6 @@ static char *dup_str(const char *s) {
   return memcpy(bg_xmalloc(n), s, n);
 }
 
-void bg_study_expand_poles(bg_study *st, const bg_study_collect *q, int nq, int npole) {
-  int n = 0;
-  for (int k = 0; k < nq; k++) n += q[k].kind == BG_COLLECT_POLES ? 2 * npole : 1;
-  st->collect = bg_xcalloc((size_t)n + 1, sizeof *st->collect);
-  st->own_collect = 1;
-  st->ncollect = 0;
-  for (int k = 0; k < nq; k++) {
-    if (q[k].kind != BG_COLLECT_POLES) {
-      bg_study_collect *c = &st->collect[st->ncollect++];
-      *c = q[k];
-      c->var = dup_str(q[k].var), c->label = dup_str(q[k].label);
-      continue;
-    }
-    for (int p = 0; p < npole; p++)
-      for (int part = 0; part < 2; part++) {
-        bg_study_collect *c = &st->collect[st->ncollect++];
-        c->kind = part ? BG_COLLECT_POLE_IM : BG_COLLECT_POLE_RE;
-        c->pole = p;
-        c->var = dup_str("poles");
-        c->label = bg_xmalloc(32);
-        snprintf(c->label, 32, "pole%d:%s", p + 1, part ? "im" : "re");
-      }
-  }
-}
-
 void bg_study_poles_from_values(const bg_study *st, bg_study_run *rec) {
   free(rec->pole_re), free(rec->pole_im);
   rec->pole_re = bg_xcalloc((size_t)st->npole + 1, sizeof(double));

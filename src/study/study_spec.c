@@ -216,6 +216,33 @@ int bg_study_add_collect(bg_study_spec *s, const char *arg, char *err, size_t n)
   return 0;
 }
 
+static char *dupn_all(const char *s) { return dupn(s, strlen(s)); }
+
+void bg_study_expand_poles(bg_study *st, const bg_study_collect *q, int nq, int npole) {
+  int n = 0;
+  for (int k = 0; k < nq; k++) n += q[k].kind == BG_COLLECT_POLES ? 2 * npole : 1;
+  st->collect = bg_xcalloc((size_t)n + 1, sizeof *st->collect);
+  st->own_collect = 1;
+  st->ncollect = 0;
+  for (int k = 0; k < nq; k++) {
+    if (q[k].kind != BG_COLLECT_POLES) {
+      bg_study_collect *c = &st->collect[st->ncollect++];
+      *c = q[k];
+      c->var = dupn_all(q[k].var), c->label = dupn_all(q[k].label);
+      continue;
+    }
+    for (int p = 0; p < npole; p++)
+      for (int part = 0; part < 2; part++) {
+        bg_study_collect *c = &st->collect[st->ncollect++];
+        c->kind = part ? BG_COLLECT_POLE_IM : BG_COLLECT_POLE_RE;
+        c->pole = p;
+        c->var = dupn_all("poles");
+        c->label = bg_xmalloc(32);
+        snprintf(c->label, 32, "pole%d:%s", p + 1, part ? "im" : "re");
+      }
+  }
+}
+
 long bg_study_nruns(const bg_study_spec *s) {
   if (!s->nparams) return 0;
   if (s->kind == BG_STUDY_MONTE_CARLO) return s->draws;
