@@ -27,6 +27,7 @@ typedef struct vd {
   int *parent, *queue;
   double *coef;
   unsigned char *cand; /* per element: candidate store */
+  int reach;           /* searching dependence (every bond, through R) rather than a loop */
   int ncand, nloops;   /* candidates; unity loops found while recording */
   bg_strbuf why;       /* what the first problem was, for the trace */
 } vd;
@@ -63,7 +64,7 @@ static int sign_at(const bg_model *m, int x, int b, int w) {
 
 /* Visits successor t of u with coefficient c; returns 1 when t closes the cycle. */
 static int visit(vd *V, int u, int t, double c, int s0, int *qt) {
-  if (!internal(V->E->m, t / 2) || V->E->stroke[t / 2] == BG_STROKE_NONE) return 0;
+  if ((!V->reach && !internal(V->E->m, t / 2)) || V->E->stroke[t / 2] == BG_STROKE_NONE) return 0;
   if (t == s0) {
     V->parent[s0] = u;
     V->coef[s0] = c;
@@ -108,25 +109,62 @@ static int expand_twoport(vd *V, int u, int x, int s0, int *qt) {
   return visit(V, u, 2 * c + flow, is_in != flow ? n : 1.0 / n, s0, qt);
 }
 
-/* Breadth-first search for a cycle through signal s0; returns its length
- * (signals, parent chain from s0) or 0. */
-static int find_cycle(vd *V, int s0) {
+/* In a dependence search: an R's output depends on its input without
+ * integration, and an R field's on every port's input. Stores (integrators
+ * or differentiators), sources and detectors end the search, as the
+ * analysis stage's dependence test has it. */
+static int expand_oneport(vd *V, int u, int x, int s0, int *qt) {
+  const bg_model *m = V->E->m;
+  if (m->elem_kind[x] != BG_ELEM_R) return 0;
+  int f = bg_elem_field(m, x);
+  if (f < 0) return visit(V, u, u ^ 1, 1.0, s0, qt);
+  for (int p = 0; p < m->field_nport[f]; p++) {
+    int e = m->field_elemadr[f] + p, b = bg_ceng_port(V->E, e);
+    if (b < 0) continue;
+    int in = sig_node(V->E, 2 * b) == e ? 2 * b : 2 * b + 1;
+    if (visit(V, u, in ^ 1, 1.0, s0, qt)) return 1;
+  }
+  return 0;
+}
+
+/* Breadth-first search from signal `from` to signal s0 (a cycle when they
+ * are the same); returns the length of the parent chain from s0, or 0. */
+static int search(vd *V, int from, int s0) {
   const bg_model *m = V->E->m;
   for (int i = 0; i < V->nsig; i++) V->parent[i] = -2;
   int qh = 0, qt = 0;
-  V->queue[qt++] = s0;
-  V->parent[s0] = -1;
+  V->queue[qt++] = from;
+  V->parent[from] = -1;
   while (qh < qt) {
     int u = V->queue[qh++], x = sig_node(V->E, u), k = m->elem_kind[x];
     int closed = bg_elem_is_junction(k) ? expand_junction(V, u, x, s0, &qt)
-                 : bg_elem_is_twoport(k) ? expand_twoport(V, u, x, s0, &qt) : 0;
+                 : bg_elem_is_twoport(k) ? expand_twoport(V, u, x, s0, &qt)
+                 : V->reach ? expand_oneport(V, u, x, s0, &qt) : 0;
     if (closed) {
       int n = 1;
-      for (int t = V->parent[s0]; t != s0; t = V->parent[t]) n++;
+      for (int t = V->parent[s0]; t != from && t >= 0; t = V->parent[t]) n++;
       return n;
     }
   }
   return 0;
+}
+
+/* Breadth-first search for a cycle through signal s0. */
+static int find_cycle(vd *V, int s0) { return search(V, s0, s0); }
+
+/* Whether the two constraints of a unity loop through bond b determine its
+ * two variables (docs/property.md, finding 5): the effort loop cut open at
+ * e_b is reached from f_b and the flow loop cut open at f_b from e_b, along
+ * the junction structure and through resistors (not through stores). Then
+ * the loop is an algebraic loop of the model's resistors, not a constraint
+ * among stores, and no store is dependent for it. Structural: a dependence
+ * that cancels numerically is left to the analysis stage's test, which then
+ * predicts the index from SCAP's pattern. */
+static int loop_solvable(vd *V, int b) {
+  V->reach = 1;
+  int solvable = search(V, 2 * b + 1, 2 * b) > 0 && search(V, 2 * b, 2 * b + 1) > 0;
+  V->reach = 0;
+  return solvable;
 }
 
 /* Marks the integral stores attached to node x as candidates. */
@@ -151,7 +189,9 @@ static int unity_loop(vd *V, int b, int record) {
     double g = V->coef[s0];
     for (int t = V->parent[s0]; t != s0; t = V->parent[t]) g *= V->coef[t];
     if (!(fabs(g - 1.0) < 1e-9)) return 0;
+    if (loop_solvable(V, b)) return 0;
     if (!record) return 1;
+    find_cycle(V, s0); /* the dependence search reused the parent chain */
     V->nloops++;
     for (int t = V->parent[s0];; t = V->parent[t]) {
       mark_stores_at(V, sig_node(V->E, t));

@@ -35,6 +35,26 @@ worst = max(abs(x - y) / max(abs(x), abs(y), 1e-3) for ra, rb in zip(a, b) for x
 print("  largest relative difference %.2g" % worst)
 sys.exit(worst > 1e-5)
 PY'
+# Finding 5: van Dijk on a junction pair joined by two bonds. The unity loop
+# through bonds 6 and 17 is closed by R1 (both constraints read the other loop
+# variable): no store is dependent for it, and L2 keeps its energy. Before the
+# fix van Dijk gave L2 derivative causality and printed L2.p = 0 throughout.
+m=$here/found/seed1621_methods_agree.bg
+"$bg" "$m" --causality vandijk -o "$tmp/v.json" -o "$tmp/v.csv" 2>/dev/null
+check "seed1621 vandijk: exit 0" '[ $? -eq 0 ]'
+"$bg" "$m" -o "$tmp/s1621.csv" 2>/dev/null
+check "seed1621 vandijk: four states, none dependent" \
+  'python3 -c "import json,sys; a=json.load(open(sys.argv[1])); sys.exit(not (len(a[\"states\"]) == 4 and not a[\"dependent_stores\"]))" "$tmp/v.json"'
+check "seed1621 vandijk: SCAP's trajectories, L2.p from -0.168" 'python3 - "$tmp/v.csv" "$tmp/s1621.csv" <<PY
+import csv, sys
+rows = [list(csv.reader(open(p))) for p in sys.argv[1:3]]
+h = rows[0][0]; a, b = ([[float(v) for v in r] for r in rr[1:]] for rr in rows)
+k = h.index("L2.p")
+assert abs(a[0][k] + 0.168) < 1e-12 and abs(a[-1][k]) > 1e-3, (a[0][k], a[-1][k])
+worst = max(abs(x - y) / max(abs(x), abs(y), 1e-3) for ra, rb in zip(a, b) for x, y in zip(ra, rb))
+print("  largest relative difference %.2g" % worst)
+sys.exit(worst > 1e-6)
+PY'
 # the delta (Figure 4.18): the class 5 loop's cut-set law reads the stores
 # alone, so the index stays above 1
 "$bg" "$here/../../examples/delta.bg" -o "$tmp/d.json" 2>/dev/null
