@@ -48,7 +48,7 @@ close motor "$tmp/short.csv"; check "short M1.shaft: the free motor's closed for
 sed '/^short M1.shaft$/d' "$d/motor_free.bg" >"$tmp/none.bg"
 "$BGDRAW" "$tmp/none.bg" --simulate -o "$tmp/none.csv" 2>"$tmp/err"; check "unbonded shaft: exit 0" $?
 grep -q "warning: port 'shaft' of M1 (DCMotor) is not bonded: taken as shorted (zero effort: the 1-junction jw inside" "$tmp/err" &&
-  grep -q "\[-Wunbonded-port\]" "$tmp/err"; check "unbonded shaft: the unbonded-port warning names the default ($(head -c 300 "$tmp/err"))" $?
+  grep -q "\[-Wunbonded-port\]" "$tmp/err"; cs_=$?; check "unbonded shaft: the unbonded-port warning names the default ($(head -c 300 "$tmp/err"))" $cs_
 cmp -s "$tmp/none.csv" "$tmp/short.csv"; check "unbonded shaft: the same CSV as short M1.shaft" $?
 "$BGDRAW" "$tmp/none.bg" -Werror --check >/dev/null 2>&1; [ $? -eq 1 ]; check "unbonded shaft: -Werror makes it an error" $?
 "$BGDRAW" "$tmp/none.bg" -Wno-unbonded-port --check >/dev/null 2>"$tmp/err"; [ ! -s "$tmp/err" ]; check "unbonded shaft: -Wno-unbonded-port silences it" $?
@@ -58,6 +58,27 @@ close clamped "$tmp/open.csv"; check "open M1.shaft: clamped, w = 0, i = U/R (1 
 "$BGDRAW" "$d/rc_ground.bg" --simulate -o "$tmp/rc.csv"; check "short gnd: exit 0" $?
 close rc "$tmp/rc.csv"; check "short gnd: the RC's closed form" $?
 "$BGDRAW" "$d/rc_ground.bg" --check | grep -q "^form: ode"; check "short gnd: an ODE of one state" $?
+# the same circuit without its reference node: the node potentials float
+# (a class 5 loop through the junctions alone, structurally singular):
+# refused, and the message says how to hold the node
+grep -v '^short gnd$' "$d/rc_ground.bg" >"$tmp/float.bg"
+"$BGDRAW" "$tmp/float.bg" --simulate -o "$tmp/float.csv" 2>"$tmp/err"; [ $? -eq 3 ] && [ ! -e "$tmp/float.csv" ]
+check "no ground: refused (exit 3), no CSV" $?
+grep -q 'node potentials float.*`short gnd`' "$tmp/err"; cs_=$?; check "no ground: the refusal says \`short gnd\` ($(tail -c 400 "$tmp/err"))" $cs_
+"$BGDRAW" "$tmp/float.bg" --causality vandijk --simulate -o "$tmp/float.csv" 2>"$tmp/err"; [ $? -eq 3 ]
+check "no ground, van Dijk: refused too" $?
+grep -q "van Dijk's causality does not help here" "$tmp/err"; check "no ground, van Dijk: not suggested again" $?
+# both branches' bonds out of gnd: jC's effort is e_n2 + e_gnd, a sum, and
+# gnd's balance says the two branch currents are opposite while the series
+# loop says they are equal: the bond graph as drawn carries no current (its
+# own exact answer; docs/format.md says why it is not the RC circuit)
+sed -e 's/^bond jC -> gnd$/bond gnd -> jC/' "$tmp/float.bg" >"$tmp/sum.bg"
+"$BGDRAW" "$tmp/sum.bg" --simulate -o "$tmp/sum.csv" 2>/dev/null
+/usr/bin/python3 -c "
+import csv, sys
+r = list(csv.reader(open(sys.argv[1])))[1:]
+sys.exit(not (len(r) == 501 and all(float(v) == 0 for row in r for v in row[1:])))" "$tmp/sum.csv"
+check "both gnd bonds out, no ground: zero current, as the graph says" $?
 cat >"$tmp/ladder.bg" <<'BG'
 submodel Section(R = 1, C = 1)
   port in, out
@@ -81,6 +102,6 @@ plot S1.c.e
 BG
 "$BGDRAW" "$tmp/ladder.bg" --simulate -o "$tmp/ladder.csv" 2>"$tmp/err"; check "ladder: exit 0" $?
 grep -q "port 'out' of S1 (Section) is not bonded: taken as open (zero flow: the 0-junction b inside" "$tmp/err"
-check "ladder: its far end taken as open ($(head -c 200 "$tmp/err"))" $?
+cs_=$?; check "ladder: its far end taken as open ($(head -c 200 "$tmp/err"))" $cs_
 close ladder "$tmp/ladder.csv"; check "ladder: the last capacitor charges as one RC" $?
 finish

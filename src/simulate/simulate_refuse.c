@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include "simulate/simulate.h"
 
 /* Remedies differ by cause: van Dijk's causality removes a causal loop of
@@ -43,7 +44,36 @@ static int class5_loop(const bg_analysis *a) {
   return -1;
 }
 
-static void say_class5(const bg_model *m, const bg_analysis *a, int l, bg_strbuf *sb) {
+/* A name that says "reference node" (gnd, ground, ref, earth, com, 0). */
+static int ground_like(const char *name) {
+  static const char *const words[] = {"gnd", "ground", "ref", "earth", "com", "0"};
+  for (size_t i = 0; i < sizeof words / sizeof *words; i++)
+    if (strcasecmp(name, words[i]) == 0) return 1;
+  return 0;
+}
+
+/* A causal loop of gain +1 through 0- and 1-junctions alone is a mesh of a
+ * circuit written node by node whose node potentials float: nothing holds
+ * any 0-junction's effort, so every potential is free up to a common
+ * constant (the junction structure is singular). Holding one node at zero
+ * removes it (docs/format.md, "A reference node"). The node to name: one
+ * whose name says ground, else the loop's first 0-junction. -1: not a mesh. */
+static int floating_node(const bg_model *m, const bg_analysis *a, int l) {
+  const int *b = a->cloop_bonds + a->cloop_adr[l];
+  int node = -1, has1 = 0;
+  for (int i = 0; i < a->cloop_n[l]; i++)
+    for (int end = 0; end < 2; end++) {
+      int e = end ? m->bond_head[b[i]] : m->bond_tail[b[i]], k = m->elem_kind[e];
+      if (k == BG_ELEM_J1) has1 = 1;
+      else if (k != BG_ELEM_J0) return -1;
+      else if (node < 0 || (ground_like(m->elem_name[e]) && !ground_like(m->elem_name[node])))
+        node = e;
+    }
+  return has1 ? node : -1;
+}
+
+/* singular: index reduction found the equations structurally singular. */
+static void say_class5(const bg_model *m, const bg_analysis *a, int l, int singular, bg_strbuf *sb) {
   bg_sb_printf(sb, "causal loop %d (bonds ", l + 1);
   bonds_list(m, a->cloop_bonds + a->cloop_adr[l], a->cloop_n[l], sb);
   bg_sb_puts(sb, ") has gain +1 (class 5");
@@ -51,6 +81,21 @@ static void say_class5(const bg_model *m, const bg_analysis *a, int l, bg_strbuf
     bg_sb_printf(sb, ": gain %s = 1 at these parameter values", a->cloop_gain[l]);
   bg_sb_puts(sb, "): the junction structure is singular and the index is above 1, so no "
                  "solver can integrate the equations as they stand. ");
+  int node = floating_node(m, a, l);
+  if (node >= 0) {
+    bg_sb_printf(sb, "The loop runs through 0- and 1-junctions alone: if this is a circuit "
+                     "written node by node, its node potentials float (nothing holds any "
+                     "0-junction's effort). Remedy: hold the reference node at zero, e.g. "
+                     "`short %s` (a circuit's ground; docs/format.md, \"A reference node\")",
+                 m->elem_name[node]);
+    if (singular) { /* no causality changes structurally singular equations */
+      bg_sb_puts(sb, "; van Dijk's causality does not help here.");
+      return;
+    }
+    bg_sb_puts(sb, ". Otherwise: ");
+    bg_sb_puts(sb, REMEDIES + strlen("Remedies: "));
+    return;
+  }
   bg_sb_puts(sb, REMEDIES);
 }
 
@@ -125,6 +170,11 @@ static void say_tloop(const bg_analysis *a, int t, bg_strbuf *sb) {
     bg_sb_puts(sb, REMEDIES);
 }
 
+static int structurally_singular(const bg_index_facts *f) {
+  const bg_indexred *ir = f ? f->reduction : NULL;
+  return ir && ir->status < 0 && ir->message && strstr(ir->message, "structurally singular");
+}
+
 /* Refusals an index reduction can lift: a class 5 loop, an algebraic loop of
  * gain +1, a predicted or numeric index above 1. */
 int bg_simulate_index_problem(const bg_analysis *a, const bg_index_facts *f) {
@@ -144,7 +194,7 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const
   else if (reduced) /* the index problem below is what the reduction removed */
     return NULL;
   else if ((l = class5_loop(a)) >= 0)
-    say_class5(m, a, l, &sb);
+    say_class5(m, a, l, structurally_singular(f), &sb);
   else if ((t = singular_tloop(a)) >= 0) /* before the index: its own remedies */
     say_tloop(a, t, &sb);
   else if (a->index_predicted >= 2)
