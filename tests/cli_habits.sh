@@ -238,5 +238,5 @@ check "a file of submodels only: -Wempty-model" $?
 printf 'param Ra = 2\nSe U = 1\n1 j\nR Ra = Ra\nbond U -> j\nbond j -> Ra\n' >"$tmp/shadow.bg"
 "$BGDRAW" "$tmp/shadow.bg" --check >/dev/null 2>"$tmp/w.err"; st=$?
 [ $st -eq 1 ] && [ "$(grep -c 'error:' "$tmp/w.err")" = 1 ] && grep -q "the element 'Ra' has the name of the param 'Ra'" "$tmp/w.err"
-check "an element named like a param: one clear error (got $st, $(grep -c 'error:' "$tmp/w.err") errors)" $?
+cs_=$?; check "an element named like a param: one clear error (got $st, $(grep -c 'error:' "$tmp/w.err") errors)" $cs_
 finish

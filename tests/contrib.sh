@@ -83,7 +83,7 @@ check "sphinx: a mistake in the used file is a warning naming that file and line
 sed -i 's/R Rload = Rx/R Rload = R/' docs/models/load.bg
 sphinx-build -b html docs build/html >"$tmp/out" 2>"$tmp/err"
 [ ! -s "$tmp/err" ] && grep -q '>R : Rload<' build/html/index.html
-check "sphinx: the used file fixed, the page is read again and drawn ($(head -2 "$tmp/err"))" $?
+cs_=$?; check "sphinx: the used file fixed, the page is read again and drawn ($(head -2 "$tmp/err"))" $cs_
 printf 'Se U = 1\nbond U -> R9\n' >docs/models/bad.bg
 printf '\n.. bgdraw:: models/bad.bg\n' >>docs/index.rst
 sphinx-build -W -b html docs build/html >"$tmp/out" 2>"$tmp/err"; st=$?
@@ -194,7 +194,7 @@ printf '\n```bgdraw\n```\n' >>doc.md
 pandoc doc.md --lua-filter "$filter" -o doc.html 2>"$tmp/err"; st=$?
 line=$(($(wc -l <doc.md) - 1))
 [ $st -ne 0 ] && grep -qF "doc.md:$line: the \`\`\`bgdraw block is empty" "$tmp/err" && ! grep -qi "traceback" "$tmp/err"
-check "pandoc: an empty block is an error naming its line (got $st: $(cat "$tmp/err"))" $?
+cs_=$?; check "pandoc: an empty block is an error naming its line (got $st: $(cat "$tmp/err"))" $cs_
 cp "$tmp/doc.md" doc.md
 printf '\n```{.bgdraw file=models/none.bg}\n```\n' >>doc.md
 pandoc doc.md --lua-filter "$filter" -o doc.html 2>"$tmp/err"; st=$?

@@ -69,7 +69,7 @@ $PY "$tmp/run_py.py" "$tmp" rlc_model "$tmp/py_r25.csv" "$tmp/rlc_r25.csv" R0=25
 cmp_csv "$tmp/rlc_r25.csv" "$tmp/py_r25.csv" 1e-6 "Python R0 = 25 vs --set"; check "Python params dict" $?
 $PY "$tmp/run_py.py" "$tmp" hb_model "$tmp/py_hb.csv" "$tmp/hb.csv" 2>"$tmp/py_hb.err"; check "Python module simulates hydraulic_bridge (DAE)" $?
 # fsolve stopping at round-off is judged by the module, not left as a warning
-[ ! -s "$tmp/py_hb.err" ]; check "hydraulic_bridge in Python: nothing on stderr ($(head -c 200 "$tmp/py_hb.err"))" $?
+[ ! -s "$tmp/py_hb.err" ]; cs_=$?; check "hydraulic_bridge in Python: nothing on stderr ($(head -c 200 "$tmp/py_hb.err"))" $cs_
 printf 'import sys; sys.path.insert(0, sys.argv[1]); import hb_model as m\nimport numpy as np\nprint(m._round_off(lambda z: [z[0] - 2.0], np.array([2.0])), m._round_off(lambda z: [z[0]**2 + 1], np.array([0.0])))\n' >"$tmp/ro.py"
 [ "$($PY "$tmp/ro.py" "$tmp")" = "True False" ]; check "Python _round_off: a solved point accepted, a point with no root (z^2 + 1) refused" $?
 cmp_csv "$tmp/hb.csv" "$tmp/py_hb.csv" 1e-6 "Python vs bgdraw (hydraulic_bridge)"; check "Python export of the DAE matches" $?

@@ -49,11 +49,11 @@ for f in "$root"/examples/*.bg; do
   { cat "$f"; printf '\nparam %s\n' "$params"; } > "$b.bg"
   "$BGDRAW" "$b.bg" -q -o "$b.c" -o "$b.py" -o "$b.m" -o "$b.mo" 2>err; st=$?
   if [ $st -ne 0 ]; then # a model whose equations cannot be exported says why
-    grep -q "error" err; check "$b: an export refused says why ($(head -c 150 err))" $?
+    grep -q "error" err; cs_=$?; check "$b: an export refused says why ($(head -c 150 err))" $cs_
     continue
   fi
   gcc -std=c11 -Wall -Werror -c "$b.c" -o c11.o 2>cerr && gcc -Wall -Werror -c "$b.c" -o gnu.o 2>>cerr
-  check "$b: the C export compiles in C11 and GNU mode ($(grep -m1 error cerr))" $?
+  cs_=$?; check "$b: the C export compiles in C11 and GNU mode ($(grep -m1 error cerr))" $cs_
   grep -q '"for"' "$b.c" && grep -q "double for_;" "$b.h"
   check "$b: C keeps the original names (param_names) beside the fields (for_)" $?
   $PY - "$b" > pyout 2>&1 <<'P'
@@ -66,12 +66,12 @@ y = m.initial(p)
 r = m.rhs(0.0, y, p) if m.IS_ODE else m.residual(0.0, y, 0 * y, p)
 assert all(math.isfinite(float(x)) for x in r)
 P
-  check "$b: the Python module imports and evaluates ($(tail -1 pyout))" $?
+  cs_=$?; check "$b: the Python module imports and evaluates ($(tail -1 pyout))" $cs_
   octave-cli --no-gui --norc --quiet --eval "
     m = $b(); y0 = m.initial(m.params, m.t0); r = m.f(m.t0, y0, m.params);
     assert(all(isfinite(r))); assert(m.params.for_ == m.params.for_);
     k = find(strcmp(m.param_names(:, 1), 'end_')); assert(strcmp(m.param_names{k, 2}, 'end'));" > oout 2>&1
-  check "$b: the Octave function runs ($(grep -m1 -i error oout))" $?
+  cs_=$?; check "$b: the Octave function runs ($(grep -m1 -i error oout))" $cs_
   $PY "$root/tests/export/check_modelica.py" "$b.mo" > mout 2>&1; st=$?
   check "$b: the Modelica file passes the structural check ($(head -c 150 mout))" $st
   $PY - "$b.mo" $MO_WORDS <<'P'; check "$b: Modelica declares no reserved name; renamed ones keep theirs" $?

@@ -12,13 +12,13 @@ d=tests/data/fields
 
 "$BGDRAW" $d/transducer.bg --check >"$tmp/check" 2>&1
 grep -qx "field K (C, 2 ports): K.el integral, K.mech integral" "$tmp/check"
-check "transducer --check field line (got: $(grep field "$tmp/check"))" $?
+cs_=$?; check "transducer --check field line (got: $(grep field "$tmp/check"))" $cs_
 "$BGDRAW" $d/dependent.bg --check >"$tmp/check" 2>&1
 grep -qx "field K (C, 2 ports): K.1 integral, K.2 derivative (mixed causality)" "$tmp/check"
-check "dependent --check mixed causality (got: $(grep field "$tmp/check"))" $?
+cs_=$?; check "dependent --check mixed causality (got: $(grep field "$tmp/check"))" $cs_
 "$BGDRAW" $d/implicit.bg --check >"$tmp/check" 2>&1
 grep -qx "field Rf (R, 2 ports): Rf.1 conductance, Rf.2 conductance" "$tmp/check"
-check "implicit --check R field (got: $(grep field "$tmp/check"))" $?
+cs_=$?; check "implicit --check R field (got: $(grep field "$tmp/check"))" $cs_
 
 "$BGDRAW" $d/transducer.bg -o "$tmp/t.svg" -o "$tmp/t.dot" -o "$tmp/t.pdf" -o "$tmp/t.png"
 check "transducer diagrams" $?
@@ -45,7 +45,7 @@ for m in transducer reaction dependent implicit transducer_sub; do
   for k in 1 2; do
     "$BGDRAW" $d/$m.bg -q -o "$tmp/$m.$k.svg" -o "$tmp/$m.$k.json" -o "$tmp/$m.$k.csv" \
       --report "$tmp/$m.$k.pdf" 2>"$tmp/err" >/dev/null
-    check "$m outputs (run $k): $(head -c 300 "$tmp/err")" $?
+    cs_=$?; check "$m outputs (run $k): $(head -c 300 "$tmp/err")" $cs_
   done
   cmp -s "$tmp/$m.1.svg" "$tmp/$m.2.svg" && cmp -s "$tmp/$m.1.json" "$tmp/$m.2.json" &&
     cmp -s "$tmp/$m.1.csv" "$tmp/$m.2.csv"

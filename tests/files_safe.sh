@@ -54,12 +54,12 @@ ln -s target.json link.json
 "$BGDRAW" m.bg -o link.json; st=$?
 check "write through a symlink exits 0 (got $st)" $st
 [ -L link.json ] && grep -q '"bgdraw-analysis"' target.json; check "link kept, target written" $?
-[ "$(stat -c %a target.json)" = 640 ]; check "target keeps mode 640 (got $(stat -c %a target.json))" $?
+[ "$(stat -c %a target.json)" = 640 ]; cs_=$?; check "target keeps mode 640 (got $(stat -c %a target.json))" $cs_
 ln -s newdir.json dangling.json
 "$BGDRAW" m.bg -o dangling.json && [ -L dangling.json ] && [ -f newdir.json ]
 check "a dangling symlink creates its target" $?
 (umask 027 && "$BGDRAW" m.bg -o fresh.svg)
-[ "$(stat -c %a fresh.svg)" = 640 ]; check "new file follows the umask (got $(stat -c %a fresh.svg))" $?
+[ "$(stat -c %a fresh.svg)" = 640 ]; cs_=$?; check "new file follows the umask (got $(stat -c %a fresh.svg))" $cs_
 [ -z "$(ls -A | grep '^\.')" ]; check "no temporary file left" $?
 
 # --------------------------------------------------- devices, FIFOs, sockets

@@ -40,7 +40,7 @@ for spec in INT:2 TERM:15 HUP:1 TERM_IGNORED:15; do
   kill -$sig $pid
   wait $pid; st=$?
   check "$spec: bgdraw dies of SIG$sig (status $st)" $((st != 128 + n))
-  [ -z "$(ls -A scratch)" ]; check "$spec: no temporary left in TMPDIR ($(ls scratch | tr '\n' ' '))" $?
+  [ -z "$(ls -A scratch)" ]; cs_=$?; check "$spec: no temporary left in TMPDIR ($(ls scratch | tr '\n' ' '))" $cs_
   sleep 0.2
   ! alive "$cc" && ! alive "$child"; check "$spec: the compiler and its child are gone" $?
   [ ! -e rlc.fmu ]; check "$spec: no archive written" $?

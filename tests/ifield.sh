@@ -66,7 +66,7 @@ check "matrix, energy and laws agree to 1e-9" $?
 # the secondary driven by a current source: a port in derivative causality
 sed -e 's/, R2o = 5//' -e 's|^R R2 = R2o$|Sf I2 = 0.5*sin(2*pi*50*t)|' -e 's|^bond j2 -> R2$|bond I2 -> j2|' \
   -e 's|^bond K.sec -> j2$|bond j2 -> K.sec|' "$src" >"$tmp/driven.bg"
-"$BGDRAW" "$tmp/driven.bg" --simulate -o "$tmp/driven.csv" 2>"$tmp/err"; check "driven: exit 0 ($(head -c 300 "$tmp/err"))" $?
+"$BGDRAW" "$tmp/driven.bg" --simulate -o "$tmp/driven.csv" 2>"$tmp/err"; cs_=$?; check "driven: exit 0 ($(head -c 300 "$tmp/err"))" $cs_
 judge driven "$tmp/driven.csv"; check "driven: the primary's current against SciPy" $?
 "$BGDRAW" "$tmp/driven.bg" --check >"$tmp/check.txt"
 grep -q "K.sec" "$tmp/check.txt" && grep -qi "dependent" "$tmp/check.txt"; check "driven: K.sec is a dependent store" $?

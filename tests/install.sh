@@ -105,13 +105,13 @@ check "installed bgdraw and the program run without the source tree (got $st)" $
 cmp -s "$tmp/want.svg" "$tmp/got.svg"; check "installed bgdraw --style print = the build's --style print" $?
 ! cmp -s "$tmp/default.svg" "$tmp/got.svg"; check "--style print differs from the default style" $?
 [ "$(cat "$tmp/prog.out" 2>/dev/null)" = "rlc 4 2 1 1" ]
-check "the C program: name rlc, 4 bonds, 2 states, an SVG (got '$(cat "$tmp/prog.out" 2>/dev/null)')" $?
+cs_=$?; check "the C program: name rlc, 4 bonds, 2 states, an SVG (got '$(cat "$tmp/prog.out" 2>/dev/null)')" $cs_
 cmp -s "$tmp/want.svg" "$tmp/lib.svg"; check "libbgdraw's print-style SVG = bgdraw's" $?
 # use "mechanical.bg": the installed component library, for bgdraw and libbgdraw
 grep -q "^drive.svg: drive.bg $tmp/q/share/bgdraw/lib/mechanical.bg " "$tmp/drive.d"
-check "installed bgdraw finds use \"mechanical.bg\" in PREFIX/share/bgdraw/lib ($(head -1 "$tmp/drive.d" 2>/dev/null))" $?
+cs_=$?; check "installed bgdraw finds use \"mechanical.bg\" in PREFIX/share/bgdraw/lib ($(head -1 "$tmp/drive.d" 2>/dev/null))" $cs_
 [ "$(cut -d' ' -f1,2 "$tmp/prog_drive.out" 2>/dev/null)" = "motor_drive_lib 22" ]
-check "libbgdraw finds it too (got '$(cat "$tmp/prog_drive.out" 2>/dev/null)')" $?
+cs_=$?; check "libbgdraw finds it too (got '$(cat "$tmp/prog_drive.out" 2>/dev/null)')" $cs_
 # what docs/library.md's program prints of rlc: the strokes, the index, the
 # last row (a series RLC after 2 ms: the capacitor charged to 1 V), and the
 # same SVG as bgdraw --style print
@@ -119,9 +119,9 @@ printf '%s\n' 'rlc: 4 bonds, 2 states' 'bond 1 U -> j, stroke at the to end' \
   'bond 2 j -> R1, stroke at the from end' 'bond 3 j -> L1, stroke at the to end' \
   'bond 4 j -> C1, stroke at the from end' 'form ode, index 0 predicted, 0 numeric' >"$tmp/info.want"
 head -6 "$tmp/info.out" 2>/dev/null | cmp -s - "$tmp/info.want"
-check "docs/library.md's program prints rlc's strokes and index (got '$(head -6 "$tmp/info.out" 2>/dev/null)')" $?
+cs_=$?; check "docs/library.md's program prints rlc's strokes and index (got '$(head -6 "$tmp/info.out" 2>/dev/null)')" $cs_
 tail -1 "$tmp/info.out" 2>/dev/null | grep -qE '^t = 0.002: C1.e = 1(\.0+)? L1.f = -?[0-9.e+-]+$'
-check "docs/library.md's program prints the last row (got '$(tail -1 "$tmp/info.out" 2>/dev/null)')" $?
+cs_=$?; check "docs/library.md's program prints the last row (got '$(tail -1 "$tmp/info.out" 2>/dev/null)')" $cs_
 cmp -s "$tmp/want.svg" "$tmp/info.svg"; check "docs/library.md's program writes bgdraw's SVG" $?
 cmp -s "$tmp/info.out" "$tmp/info_cmake.out" && cmp -s "$tmp/info.svg" "$tmp/info_cmake.svg"
 check "the find_package build gives the same output" $?

@@ -18,7 +18,7 @@ for spec in "bridge_compliance 1,4" "internal_mod_r 4" "internal_mod_tf 3" \
   set -- $spec
   x=$1 bonds=$2
   "$BGDRAW" "examples/$x.bg" --causality lagrange -o "$tmp/$x.json" 2>"$tmp/err"
-  check "$x lagrange JSON (got: $(head -c 300 "$tmp/err"))" $?
+  cs_=$?; check "$x lagrange JSON (got: $(head -c 300 "$tmp/err"))" $cs_
   python3 - "$tmp/$x.json" "$bonds" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
@@ -28,9 +28,9 @@ sys.exit(0 if got == want and d["index"]["numeric"] == 1 else 1)
 PY
   check "$x: inserted 1-junctions in bonds $bonds, numeric index 1" $?
   "$BGDRAW" "examples/$x.bg" --causality lagrange --simulate -o "$tmp/$x.L.csv" 2>"$tmp/err"
-  check "$x lagrange run (got: $(head -c 300 "$tmp/err"))" $?
+  cs_=$?; check "$x lagrange run (got: $(head -c 300 "$tmp/err"))" $cs_
   "$BGDRAW" "examples/$x.bg" --causality scap --simulate -o "$tmp/$x.S.csv" 2>"$tmp/err"
-  check "$x scap run (got: $(head -c 300 "$tmp/err"))" $?
+  cs_=$?; check "$x scap run (got: $(head -c 300 "$tmp/err"))" $cs_
   python3 - "$tmp/$x.L.csv" "$tmp/$x.S.csv" <<'PY'
 import csv, sys
 def rows(p):

@@ -24,7 +24,7 @@ for v in inf nan -inf; do
   "$BGDRAW" m.bg --check --set a=$v > /dev/null 2>err; st=$?
   check "--set a=$v: status 1 (got $st)" $((st != 1))
   grep -q "^m.bg: error: --set a=$v: a param takes a finite number$" err
-  check "--set a=$v: the error names the param and the value ($(head -1 err))" $?
+  cs_=$?; check "--set a=$v: the error names the param and the value ($(head -1 err))" $cs_
 done
 "$BGDRAW" m.bg --check > /dev/null 2>err; st=$?
 check "an infinite param in the file: still exit 0 (got $st)" $st
@@ -59,7 +59,7 @@ for form in 'R R1 = if(sqrt(1 - C1.q) > 0.5, 1, 2)' 'R R1 : e = if(sqrt(1 - C1.q
   "$BGDRAW" root.bg --simulate -o root.csv 2>err; st=$?
   check "NaN condition ($form): status 3 (got $st)" $((st != 3))
   grep -q "the search for state events stopped: sqrt of a negative number in the switching condition '[a-z]* of R1[.f]*: sqrt(1 - C1.q) > 0.5' (line 5) at t = " err
-  check "NaN condition ($form): the operation, the condition and its line ($(head -c 300 err))" $?
+  cs_=$?; check "NaN condition ($form): the operation, the condition and its line ($(head -c 300 err))" $cs_
   ! grep -q 'RTFUNC_FAIL: \|, ,' err; check "NaN condition ($form): no raw SUNDIALS text" $?
   tc=$(sed -n 's/.*(line 5) at t = \([0-9.e+-]*\).*/\1/p' err)
   python3 -c "import math,sys; t=math.log(1/0.625)+2*math.log(1.25); sys.exit(abs(float('$tc')-t) > 0.01)"
@@ -72,18 +72,18 @@ rc "t0 = 1e308, t_end = 1.5e308"
 "$BGDRAW" span.bg --simulate -o span.csv 2>err; st=$?
 check "t0 = 1e308: status 3 (got $st)" $((st != 3))
 grep -q "is below the spacing of the time values at t = 1e+308 (adjacent doubles there are 2e+292 apart, so t + h == t).*start it nearer 0 (t0 = 0, t_end = 5e+307)" err
-check "t0 = 1e308: the time axis' resolution named ($(head -c 300 err))" $?
+cs_=$?; check "t0 = 1e308: the time axis' resolution named ($(head -c 300 err))" $cs_
 ! grep -q "singular" err; check "t0 = 1e308: not blamed on a singular point" $?
 rc "t0 = -1e308, t_end = 1e308"
 "$BGDRAW" span.bg --simulate -o span.csv 2>err; st=$?
 check "a span beyond the largest double: refused, status 3 (got $st)" $((st != 3))
 grep -q "simulation refused: the span from t0 = -1e+308 to t_end = 1e+308 is larger than the largest number" err
-check "a span beyond the largest double: the message ($(head -c 200 err))" $?
+cs_=$?; check "a span beyond the largest double: the message ($(head -c 200 err))" $cs_
 rc "t_end = 1e308"
 "$BGDRAW" span.bg --simulate -o span.csv 2>err; st=$?
 check "a span of 1e308: status 3 (got $st)" $((st != 3))
 grep -q "the model's time scale is far shorter than a span this long" err
-check "a span of 1e308: the span named ($(head -c 300 err))" $?
+cs_=$?; check "a span of 1e308: the span named ($(head -c 300 err))" $cs_
 rc "t0 = 1e15, t_end = 2e15"
 "$BGDRAW" span.bg --simulate -o span.csv 2>err; st=$?
 check "t0 = 1e15 (adjacent times 0.125 apart): simulates (got $st)" $st

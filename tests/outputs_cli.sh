@@ -16,7 +16,7 @@ same() { # NAME ARGS...: refused with status 2, the message, nothing written
   rm -f x.pdf m.svg y.svg a.json
   "$BGDRAW" "$root/$M" "$@" >out 2>err; st=$?
   [ $st -eq 2 ] && grep -q "two outputs go to one file" err && ! ls x.pdf m.svg y.svg a.json >/dev/null 2>&1
-  check "$name: refused with status 2 before writing (got $st: $(head -1 err))" $?
+  cs_=$?; check "$name: refused with status 2 before writing (got $st: $(head -1 err))" $cs_
 }
 same "-o x.pdf --report x.pdf" -o x.pdf --report x.pdf
 same "-o m.svg -M m.svg" -o m.svg -M m.svg
@@ -34,7 +34,7 @@ check "-o /dev/stdout into a pipe (got $st)" $?
 echo "first line" >app.txt
 "$BGDRAW" "$root/$M" -T json -o /dev/stdout >>app.txt; st=$?
 [ $st -eq 0 ] && [ "$(head -1 app.txt)" = "first line" ] && grep -q '"format": "bgdraw-analysis"' app.txt
-check "-o /dev/stdout with >> appends (got $st, first line '$(head -1 app.txt)')" $?
+cs_=$?; check "-o /dev/stdout with >> appends (got $st, first line '$(head -1 app.txt)')" $cs_
 "$BGDRAW" "$root/$M" -T json -o /dev/fd/1 >>app.txt; st=$?
 [ $st -eq 0 ] && [ "$(grep -c '"format": "bgdraw-analysis"' app.txt)" = 2 ]
 check "-o /dev/fd/1 appends too (got $st)" $?
@@ -46,5 +46,5 @@ check "-o /dev/fd/1 appends too (got $st)" $?
 "$BGDRAW" chain.bg --equations text 2>err | head -c 100 >/dev/null
 st=${PIPESTATUS[0]}
 [ $st -eq 4 ] && grep -q "cannot write to stdout" err
-check "a reader that closes the pipe: status 4 and a message (got $st: $(head -1 err))" $?
+cs_=$?; check "a reader that closes the pipe: status 4 and a message (got $st: $(head -1 err))" $cs_
 finish

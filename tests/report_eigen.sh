@@ -38,7 +38,7 @@ bond j2 -> C2
 M
 "$BGDRAW" "$tmp/pairs.bg" --report "$tmp/pairs.pdf" 2>/dev/null; check "pairs: exit status" $?
 rows "$tmp/pairs.pdf" >"$tmp/pairs.txt"
-[ "$(wc -l <"$tmp/pairs.txt")" -eq 3 ]; check "pairs: three rows ($(tr '\n' '|' <"$tmp/pairs.txt"))" $?
+[ "$(wc -l <"$tmp/pairs.txt")" -eq 3 ]; cs_=$?; check "pairs: three rows ($(tr '\n' '|' <"$tmp/pairs.txt"))" $cs_
 [ "$(grep -c '±' "$tmp/pairs.txt")" -eq 2 ]; check "pairs: two ± rows" $?
 [ "$(grep -c 'ω = ' "$tmp/pairs.txt")" -eq 2 ]; check "pairs: two frequencies" $?
 

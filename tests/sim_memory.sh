@@ -90,6 +90,6 @@ check "stick_slip: rerun byte-identical" $?
 for ext in c py m mo fmu; do
   "$BGDRAW" "$root/tests/data/thermostat.bg" -o "$tmp/t.$ext" 2>"$tmp/err"; st=$?
   [ $st -eq 3 ] && grep -q "discrete state (value of heater: hyst(" "$tmp/err" && [ ! -e "$tmp/t.$ext" ]
-  check "export .$ext refused with the reason (status $st: $(head -c 200 "$tmp/err"))" $?
+  cs_=$?; check "export .$ext refused with the reason (status $st: $(head -c 200 "$tmp/err"))" $cs_
 done
 finish

@@ -74,7 +74,7 @@ printf 'submodel Cc\n  port p\n  I Ic = 1\n  bond p -> Ic\nend\n' >mk/parts/deep
 printf 'use "parts/b.bg"\nuse "parts/deep/c.bg"\nSe U = 1\n0 j\nB b1\nCc c1\nbond U -> j\nbond j -> b1.p\nbond j -> c1.p\n' >mk/a.bg
 "$BGDRAW" mk/a.bg -q -o mk/a.svg -M mk/a.d
 head -1 mk/a.d | grep -qx 'mk/a.svg: mk/a.bg mk/parts/b.bg mk/parts/deep/c.bg [^ ]*default.style'
-check "-M: the model, the used file and the file it uses, once each ($(head -1 mk/a.d))" $?
+cs_=$?; check "-M: the model, the used file and the file it uses, once each ($(head -1 mk/a.d))" $cs_
 grep -qx 'mk/parts/deep/c.bg:' mk/a.d; check "-M: an empty rule for the nested used file" $?
 cat >mk/Makefile <<EOF
 a.svg: a.bg
@@ -101,7 +101,7 @@ check "without --stdin-name: <stdin>, the working directory" $?
 sed -i 's/bond U -> X//' in.bg
 "$BGDRAW" - --stdin-name mk/page.rst -o s.svg -M s.d <in.bg
 head -1 s.d | grep -qx 's.svg: mk/parts/b.bg mk/parts/deep/c.bg [^ ]*default.style'
-check "--stdin-name with -M: the used files, not the named file ($(head -1 s.d))" $?
+cs_=$?; check "--stdin-name with -M: the used files, not the named file ($(head -1 s.d))" $cs_
 "$BGDRAW" doc/m.bg --stdin-name x.bg --check 2>err.txt; st=$?
 [ $st -eq 2 ] && grep -q "stdin-name names standard input" err.txt; check "--stdin-name with a model file: usage error" $?
 "$BGDRAW" - --stdin-name= --check <in.bg 2>err.txt; st=$?

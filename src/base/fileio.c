@@ -82,9 +82,7 @@ static int write_all(int fd, const char *p, size_t len) {
   return 0;
 }
 
-/* Follows symlinks at the last component of path; the final name (which
- * may not exist yet) in a buffer the caller frees, or NULL (ELOOP, ...). */
-static char *resolve_links(const char *path) {
+char *bg_resolve_links(const char *path) {
   char *p = strdup(path);
   for (int hops = 0; p && hops < 40; hops++) {
     struct stat st;
@@ -245,7 +243,7 @@ int bg_write_file_atomic(const char *path, const void *data, size_t len) {
     if (fd == 1) fflush(stdout); /* what stdio holds goes first */
     return write_all(fd, data, len);
   }
-  char *target = resolve_links(path);
+  char *target = bg_resolve_links(path);
   if (!target) return -1;
   struct stat st;
   int rc = -1;

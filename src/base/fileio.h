@@ -66,6 +66,10 @@ int bg_path_is_input(const char *path);
  *   (BG_EBLOCKDEV, EISDIR, BG_EISINPUT).
  * Returns 0, or -1 with errno set. */
 int bg_write_file_atomic(const char *path, const void *data, size_t len);
+/* Follows symlinks at the last component of path, as bg_write_file_atomic
+ * does: the name the bytes go to (which may not exist yet, e.g. a dangling
+ * link's target) in a buffer the caller frees, or NULL (ELOOP, ...). */
+char *bg_resolve_links(const char *path);
 /* Writes len bytes to an open stream (stdout) and flushes it: 0, or -1 with
  * errno set on any write error (ENOSPC on /dev/full, EPIPE, ...). */
 int bg_write_stream(FILE *f, const void *data, size_t len);

@@ -29,11 +29,8 @@ static int run_draws(const run *r) {
   return 0;
 }
 
-/* The file a path names, for comparing outputs: the real path of what exists
- * (links followed), else the real path of its folder and its name. */
-static char *file_identity(const char *path) {
-  char *real = realpath(path, NULL);
-  if (real) return real;
+/* The real path of path's folder, and its name (path need not exist). */
+static char *folder_identity(const char *path) {
   const char *slash = strrchr(path, '/');
   char dir[4096];
   snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
@@ -44,6 +41,18 @@ static char *file_identity(const char *path) {
   bg_sb_printf(&sb, "%s/%s", rdir, slash ? slash + 1 : path);
   free(rdir);
   return sb.s;
+}
+
+/* The file a path names, for comparing outputs: the name the bytes go to
+ * (links followed as the writer follows them, so a dangling link names its
+ * target), then the real path of what exists, else folder_identity. */
+static char *file_identity(const char *given) {
+  char *target = bg_resolve_links(given);
+  const char *path = target ? target : given;
+  char *id = realpath(path, NULL);
+  if (!id) id = folder_identity(path);
+  free(target);
+  return id;
 }
 
 /* Two outputs into one file would overwrite each other: refused before

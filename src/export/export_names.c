@@ -81,8 +81,21 @@ void bg_export_ident(const char *name, char *buf, size_t n) {
   buf[i] = 0;
 }
 
+/* C reserves every identifier that begins with two underscores or with an
+ * underscore and a capital letter for the implementation (C11 7.1.3): gcc
+ * predefines many as macros (`__FILE__`, `__LINE__`, `__STDC__`), and a
+ * trailing '_' would leave them reserved, so they get a leading 'p'. */
+static int c_implementation_name(const char *id) {
+  return id[0] == '_' && (id[1] == '_' || (id[1] >= 'A' && id[1] <= 'Z'));
+}
+
 void bg_export_ident_in(const char *const *reserved, const char *name, char *buf, size_t n) {
   bg_export_ident(name, buf, n);
+  if (reserved == bg_reserved_c && c_implementation_name(buf) && strlen(buf) + 2 <= n) {
+    memmove(buf + 1, buf, strlen(buf) + 1);
+    buf[0] = 'p';
+    return;
+  }
   if (bg_export_reserved(reserved, buf) && strlen(buf) + 2 <= n) strcat(buf, "_");
 }
 
