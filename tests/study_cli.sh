@@ -107,6 +107,34 @@ check "root locus: split and merged" $?
 cmp -s "$tmp/rl1.csv" "$tmp/rlm.csv" && cmp -s "$tmp/rl1.svg" "$tmp/rlm.svg" && cmp -s "$tmp/bf1.svg" "$tmp/bfm.svg"
 check "root locus: the merge gives the same bytes" $?
 
+# a study carried by the model (a `study` statement) gives the table of the
+# same words on the command line; the command line's words replace the model's
+"$BGDRAW" tests/data/rlc_study.bg --study "$tmp/ms.csv" -j 2 && "$BGDRAW" tests/data/rlc_study.bg \
+  "${study[@]}" --collect poles --study "$tmp/cs.csv" -j 1
+check "the model's own study" $?
+cmp -s "$tmp/ms.csv" "$tmp/cs.csv"; check "the model's study = the same words on the command line" $?
+"$BGDRAW" tests/data/rlc_study.bg --sweep R0=5,6 --study "$tmp/ov.csv" &&
+  head -1 "$tmp/ov.csv" | grep -qx 'run,R0,status,C1.e:max,C1.e:tmax,C1.e:cross=0.5,pole1:re,pole1:im,pole2:re,pole2:im,reason' &&
+  [ "$(wc -l <"$tmp/ov.csv")" -eq 3 ]
+check "--sweep replaces the model's sweeps, its collect lines stay" $?
+"$BGDRAW" tests/data/rlc_study.bg --collect L1.f:max --study "$tmp/ov.csv" &&
+  head -1 "$tmp/ov.csv" | grep -qx 'run,R0,L0,status,L1.f:max,reason'
+check "--collect replaces the model's collect lines" $?
+"$BGDRAW" tests/data/quarter_car_study.bg --study "$tmp/mmc.csv" &&
+  "$BGDRAW" "${mc[@]}" --study "$tmp/cmc.csv" && cmp -s "$tmp/mmc.csv" "$tmp/cmc.csv"
+check "the model's Monte Carlo study (draws and seed)" $?
+"$BGDRAW" tests/data/quarter_car_study.bg --seed 4 --monte-carlo 40 --study "$tmp/mmc4.csv" &&
+  cmp -s "$tmp/mmc4.csv" "$tmp/mc4.csv"
+check "--seed and --monte-carlo replace the model's" $?
+"$BGDRAW" tests/data/rlc_study.bg --seed 3 --study "$tmp/u.csv" 2>"$tmp/err"
+[ $? -eq 2 ] && grep -q -- "--seed belongs to a Monte Carlo study" "$tmp/err"
+check "usage: --seed with the model's sweep" $?
+"$BGDRAW" "$m" --study "$tmp/u.csv" 2>"$tmp/err"
+[ $? -eq 2 ] && grep -q "or a study statement in the model" "$tmp/err"
+check "usage: no study in the model nor on the command line" $?
+"$BGDRAW" tests/data/rlc_study.bg -o "$tmp/single.svg" && [ -s "$tmp/single.svg" ]
+check "a model with a study still draws as a single run" $?
+
 # failed runs are rows with reasons; a study where every run fails is status 3
 "$BGDRAW" "$m" --sweep C0=1e-6,0 --collect C1.e:final --study "$tmp/f.csv" 2>"$tmp/err"
 [ $? -eq 0 ] && grep -q '^1,0,failed,,simulation failed' "$tmp/f.csv" && grep -q '1 of 2 runs failed' "$tmp/err"

@@ -89,15 +89,8 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
     }
     if (rc) return bg_cli_usage_error("%s%s", err, "");
   }
-  if (!nsweep && !nvary)
-    return bg_cli_usage_error("a study needs --sweep NAME=VALUES or --monte-carlo N with --vary "
-                              "NAME=DISTRIBUTION%s%s", "", "");
-  if (nvary && !o->draws)
-    return bg_cli_usage_error("--vary draws from a distribution: say how many runs with "
-                              "--monte-carlo N%s%s", "", "");
-  if (nsweep && (o->draws || o->seed))
-    return bg_cli_usage_error("%s belongs to a Monte Carlo study (--vary), not to a sweep%s",
-                              o->draws ? "--monte-carlo" : "--seed", "");
+  cs->cli_params = nsweep + nvary;
+  for (int i = 0; i < o->nstudy; i++) cs->cli_collect += o->study_opt[i] == 'c';
   if (o->draws) {
     long d;
     if (whole(o->draws, 1, BG_STUDY_MAX_RUNS, &d))
@@ -121,23 +114,14 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
                                 o->jobs, "");
     cs->jobs = (int)j;
   }
-  long nruns = bg_study_nruns(s);
   if (o->runs) {
     const char *rest;
-    long cnt;
-    if (pair(o->runs, &cs->first, &rest) || whole(rest, 1, BG_STUDY_MAX_RUNS, &cnt))
+    if (pair(o->runs, &cs->first, &rest) || whole(rest, 1, BG_STUDY_MAX_RUNS, &cs->count))
       return bg_cli_usage_error("--runs %s: FIRST:COUNT, two whole numbers%s", o->runs, "");
-    if (cs->first + cnt > nruns) {
-      char buf[64];
-      snprintf(buf, sizeof buf, "%ld", nruns);
-      return bg_cli_usage_error("--runs %s: the study has %s runs", o->runs, buf);
-    }
-    cs->count = cnt;
   }
   if (o->split) {
     if (pair(o->split, &cs->parts, &cs->partdir) || cs->parts < 1 || !cs->partdir[0])
       return bg_cli_usage_error("--split %s: N:DIR, the number of parts and their folder%s", o->split, "");
-    if (cs->parts > nruns) cs->parts = nruns;
     if (!o->joblist && !o->slurm)
       return bg_cli_usage_error("--split %s writes jobs: say where with --job-list FILE or "
                                 "--slurm FILE%s", o->split, "");
@@ -148,11 +132,6 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
                               o->joblist ? "--job-list" : "--slurm", "");
   }
   if (o->merge && o->runs) return bg_cli_usage_error("--merge does not combine with --runs%s%s", "", "");
-  int poles = 0;
-  for (int k = 0; k < s->ncollect; k++) poles |= s->collect[k].kind == BG_COLLECT_POLES;
-  if (o->merge && cs->locus && !poles)
-    return bg_cli_usage_error("--root-locus with --merge draws the poles of the parts' tables: "
-                              "give the study --collect poles%s%s", "", "");
   if (o->merge && cs->curves)
     return bg_cli_usage_error("--family with --merge: the parts keep no trajectories (draw the "
                               "family on one machine, or from a part)%s%s", "", "");
@@ -167,7 +146,8 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
       o->nyquist || o->step || o->check || o->transform || o->depfile)
     return bg_cli_usage_error("a study writes --study and --family outputs only; write the "
                               "single run's outputs (-o, --plot, --report, ...) in a call "
-                              "without %s%s", nsweep ? "--sweep" : "--vary", "");
+                              "without %s%s", nsweep ? "--sweep" : nvary ? "--vary"
+                                                     : "the study's options", "");
   return 0;
 }
 
@@ -388,8 +368,65 @@ static int write_outputs(run *r, const cli_study *cs, const bg_study *st, const 
   return rc;
 }
 
+/* A usage message after the model was read: the exit status. */
+static int usage_status(const char *fmt, const char *a, const char *b) {
+  bg_cli_usage_error(fmt, a, b);
+  return EXIT_USAGE;
+}
+
+/* The study of the command line completed by the model's own (`study`
+ * statements, docs/format.md): the command line's params (--sweep,
+ * --vary), --monte-carlo, --seed and --collect each replace the model's;
+ * then what depends on the whole study is checked. 0, or an exit status. */
+static int complete(run *r, cli_study *cs) {
+  const bg_cli_opts *o = &r->opts;
+  const bg_model *m = r->R->model;
+  bg_study_spec *s = &cs->spec;
+  char err[512];
+  for (int j = 0; m && j < m->nstudy; j++) {
+    int k = m->study_kind[j], rc = 0;
+    const char *w = m->study_word[j];
+    if (k == 's' && !cs->cli_params) rc = bg_study_add_sweep(s, w, err, sizeof err);
+    else if (k == 'v' && !cs->cli_params) rc = bg_study_add_vary(s, w, err, sizeof err);
+    else if (k == 'c' && !cs->cli_collect) rc = bg_study_add_collect(s, w, err, sizeof err);
+    else if (k == 'd' && !o->draws) s->draws = strtol(w + 6, NULL, 10);
+    else if (k == 'e' && !o->seed) s->seed = strtoull(w + 5, NULL, 10);
+    if (rc) { /* the model checked the words: only the grid's size can still be too large */
+      fprintf(stderr, "%s:%d:%d: error: %s\n", r->R->name, m->study_loc[j].line,
+              m->study_loc[j].col, err);
+      return EXIT_MODEL;
+    }
+  }
+  int sweep = s->nparams && s->kind == BG_STUDY_SWEEP, vary = s->nparams && !sweep;
+  if (!sweep && !vary)
+    return usage_status("a study needs --sweep NAME=VALUES or --monte-carlo N with --vary "
+                              "NAME=DISTRIBUTION (or a study statement in the model)%s%s", "", "");
+  if (vary && !s->draws)
+    return usage_status("--vary draws from a distribution: say how many runs with "
+                              "--monte-carlo N%s%s", "", "");
+  if (sweep && (o->draws || o->seed))
+    return usage_status("%s belongs to a Monte Carlo study (--vary), not to a sweep%s",
+                              o->draws ? "--monte-carlo" : "--seed", "");
+  if (!vary) s->draws = 0;
+  long nruns = bg_study_nruns(s);
+  if (o->runs && cs->first + cs->count > nruns) {
+    char buf[64];
+    snprintf(buf, sizeof buf, "%ld", nruns);
+    return usage_status("--runs %s: the study has %s runs", o->runs, buf);
+  }
+  if (cs->parts > nruns) cs->parts = nruns;
+  int poles = 0;
+  for (int k = 0; k < s->ncollect; k++) poles |= s->collect[k].kind == BG_COLLECT_POLES;
+  if (o->merge && cs->locus && !poles)
+    return usage_status("--root-locus with --merge draws the poles of the parts' tables: "
+                              "give the study --collect poles%s%s", "", "");
+  return 0;
+}
+
 int cli_study_run(run *r, cli_study *cs) {
   const bg_cli_opts *o = &r->opts;
+  int crc = complete(r, cs);
+  if (crc) return crc;
   if (o->split) return write_jobs(o, cs);
   bg_study_opts so = {0};
   so.name = r->R->name, so.src = r->R->src, so.srclen = r->R->srclen;

@@ -16,6 +16,7 @@ typedef struct cli_study {
   struct { const char *path; int kind; } out[CLI_STUDY_MAX_OUT];
   int nout, curves, jobs;
   int locus, bode;       /* --root-locus, --bode-family given */
+  int cli_params, cli_collect; /* --sweep/--vary and --collect given (else the model's) */
   long first, count;     /* --runs */
   long parts;            /* --split N:DIR */
   const char *partdir;

@@ -72,7 +72,11 @@ typedef enum {
   BG_ST_PORT,     /* items = the ports */
   BG_ST_END,      /* ends the SUBMODEL before it */
   BG_ST_USE,      /* text = the path as written */
-  BG_ST_INSTANCE  /* kindword = the submodel, name = the instance, items = arguments */
+  BG_ST_INSTANCE, /* kindword = the submodel, name = the instance, items = arguments */
+  /* a parameter study carried by the model (docs/format.md, "study"): name =
+   * "sweep", "vary", "draws" or "collect"; items = the command line's words
+   * for it ("R0=5:125:7", "seed=7", "C1.e:max"), each at its position */
+  BG_ST_STUDY
 } bg_stkind;
 
 typedef enum { BG_ARROW_PLAIN, BG_ARROW_STROKE_HEAD /* ->| */, BG_ARROW_STROKE_TAIL /* |-> */ } bg_arrow;

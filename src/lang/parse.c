@@ -34,6 +34,8 @@ typedef struct parser {
 static const char *const keywords[] = {"model", "param", "input", "state", "bond",
                                        "simulate", "plot", "layout", "causality",
                                        "output", "linearise"};
+/* the contextual word `study` and what may follow it */
+static const char *const study_words[] = {"sweep", "vary", "draws", "seed", "collect"};
 static const char *const kinds[] = {"Se", "Sf", "MSe", "MSf", "C", "I", "R",
                                     "TF", "MTF", "GY", "MGY", "0", "1", "De", "Df"};
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -598,6 +600,197 @@ static void parse_plot(parser *p, const bg_token *kw) {
   parse_options(s, p, 0);
 }
 
+/* ---------------------------------------------------------------- study */
+/* A parameter study carried by the model (docs/format.md, "study";
+ * docs/study.md). Each statement becomes the command line's word for it
+ * ("R0=5:125:7", "v0=normal(0.5,0.05)", "C1.e:max", "draws=500"), the
+ * numbers as written, so the study reads the same values from either. */
+enum { STUDY_MAX_VALUES = 100000 };
+
+/* signed_number := ['-' | '+'] NUMBER; its text as written (with the sign). */
+static const char *signed_number(parser *p, const char *what, double *v) {
+  const bg_token *sign = at(p, BG_TK_MINUS) || at(p, BG_TK_PLUS) ? next(p) : NULL;
+  if (!at(p, BG_TK_NUMBER)) {
+    char found[128];
+    describe(cur(p), found, sizeof found);
+    fail_at(p, cur(p), "expected %s (a number: a study's values are written out, not "
+            "computed), found %s", what, found);
+  }
+  const bg_token *t = next(p);
+  *v = sign && sign->kind == BG_TK_MINUS ? -t->num : t->num;
+  if (!isfinite(*v)) fail_at(p, t, "%s must be a finite number, not '%s'", what, t->text);
+  if (!sign || sign->kind == BG_TK_PLUS) return t->text;
+  return bg_ast_join(&p->ast->arena, "", span_text(p, sign->start, t->end)); /* "-5" */
+}
+
+static void study_item(parser *p, bg_ast_stmt *s, const char *word, bg_srcloc loc) {
+  bg_ast_item *it = bg_arena_alloc(&p->ast->arena, (size_t)(s->nitems + 1) * sizeof *it);
+  if (s->nitems) memcpy(it, s->items, (size_t)s->nitems * sizeof *it);
+  memset(&it[s->nitems], 0, sizeof *it);
+  it[s->nitems].name = bg_arena_strdup(&p->ast->arena, word);
+  it[s->nitems].loc = loc;
+  s->items = it;
+  s->nitems++;
+}
+
+/* sweep NAME = NUMBER | '[' NUMBER {',' NUMBER} ']' | range(FROM, TO, COUNT)
+ *            | logrange(FROM, TO, COUNT) */
+static void study_sweep(parser *p, bg_ast_stmt *s, const bg_token *n, bg_strbuf *w) {
+  double v;
+  bg_sb_printf(w, "%s=", n->text);
+  if (at(p, BG_TK_LBRACK)) {
+    const bg_token *open = next(p);
+    int count = 0;
+    do {
+      if (++count > STUDY_MAX_VALUES)
+        fail_at(p, cur(p), "a sweep lists at most %d values", STUDY_MAX_VALUES);
+      bg_sb_printf(w, "%s%s", count > 1 ? "," : "", signed_number(p, "a value of the sweep", &v));
+    } while (accept(p, BG_TK_COMMA));
+    expect_close(p, BG_TK_RBRACK, "][", open);
+  } else if (at(p, BG_TK_NAME)) {
+    const bg_token *f = next(p);
+    int lg = !strcmp(f->text, "logrange");
+    if (!lg && strcmp(f->text, "range"))
+      fail_at(p, f, "a sweep's values are a number, a list [V1, V2, ...], range(FROM, TO, COUNT) "
+              "or logrange(FROM, TO, COUNT), not '%s'", f->text);
+    const bg_token *open = expect(p, BG_TK_LPAREN, "after the range's name");
+    double a, b, c;
+    const char *ta = signed_number(p, "FROM", &a);
+    expect(p, BG_TK_COMMA, "between FROM and TO");
+    const char *tb = signed_number(p, "TO", &b);
+    expect(p, BG_TK_COMMA, "between TO and COUNT");
+    const bg_token *ct = cur(p);
+    const char *tc = signed_number(p, "COUNT", &c);
+    if (!(c >= 1 && c <= 1000000) || c != floor(c))
+      fail_at(p, ct, "a range's COUNT is a whole number from 1 to 1000000, not '%s'", tc);
+    if (lg && !(a > 0 && b > 0))
+      fail_at(p, f, "a logarithmic range needs FROM and TO above 0 (here %s and %s)", ta, tb);
+    expect_close(p, BG_TK_RPAREN, ")(", open);
+    bg_sb_printf(w, "%s:%s:%.0f%s", ta, tb, c, lg ? ":log" : "");
+  } else {
+    bg_sb_puts(w, signed_number(p, "the sweep's values", &v));
+  }
+  study_item(p, s, bg_sb_str(w), n->loc);
+}
+
+/* vary NAME = normal(MEAN, SD) | uniform(LOW, HIGH) | lognormal(MU, SIGMA) */
+static void study_vary(parser *p, bg_ast_stmt *s, const bg_token *n, bg_strbuf *w) {
+  const bg_token *f = expect_name(p, "a distribution: normal(MEAN, SD), uniform(LOW, HIGH) or "
+                                     "lognormal(MU, SIGMA)");
+  int uni = !strcmp(f->text, "uniform");
+  if (!uni && strcmp(f->text, "normal") && strcmp(f->text, "lognormal"))
+    fail_at(p, f, "'%s' is not a distribution: normal(MEAN, SD), uniform(LOW, HIGH) or "
+            "lognormal(MU, SIGMA)", f->text);
+  const bg_token *open = expect(p, BG_TK_LPAREN, "after the distribution's name");
+  double a, b;
+  const char *ta = signed_number(p, uni ? "LOW" : "the mean", &a);
+  expect(p, BG_TK_COMMA, "between the distribution's two numbers");
+  const bg_token *bt = cur(p);
+  const char *tb = signed_number(p, uni ? "HIGH" : "the spread", &b);
+  if (uni && b < a) fail_at(p, bt, "uniform(LOW, HIGH): HIGH (%s) is below LOW (%s)", tb, ta);
+  if (!uni && b < 0) fail_at(p, bt, "%s(...): the spread (%s) is negative", f->text, tb);
+  expect_close(p, BG_TK_RPAREN, ")(", open);
+  bg_sb_printf(w, "%s=%s(%s,%s)", n->text, f->text, ta, tb);
+  study_item(p, s, bg_sb_str(w), n->loc);
+}
+
+/* draws = N [, seed = S] | seed = S  (either order) */
+static void study_draws(parser *p, bg_ast_stmt *s, const bg_token *first) {
+  const bg_token *k = first;
+  for (;;) {
+    if (strcmp(k->text, "draws") && strcmp(k->text, "seed"))
+      fail_at(p, k, "expected draws = N or seed = S, found '%s'", k->text);
+    for (int i = 0; i < s->nitems; i++)
+      if (!strncmp(s->items[i].name, k->text, strlen(k->text)))
+        fail_at(p, k, "'%s' is given twice", k->text);
+    expect(p, BG_TK_ASSIGN, "after draws or seed");
+    const bg_token *t = cur(p);
+    double v;
+    const char *txt = signed_number(p, k->text, &v);
+    int seed = !strcmp(k->text, "seed");
+    size_t len = strlen(txt);
+    if (seed ? (strspn(txt, "0123456789") != len || len > 20 ||
+                (len == 20 && strcmp(txt, "18446744073709551615") > 0))
+             : !(v >= 1 && v <= 1000000 && v == floor(v)))
+      fail_at(p, t, seed ? "the seed is a whole number from 0 to 2^64-1, written in digits, not '%s'"
+                         : "draws is the number of runs, a whole number from 1 to 1000000, not '%s'",
+              txt);
+    char word[64];
+    if (seed) snprintf(word, sizeof word, "seed=%s", txt);
+    else snprintf(word, sizeof word, "draws=%.0f", v);
+    study_item(p, s, word, k->loc);
+    if (!accept(p, BG_TK_COMMA)) break;
+    k = expect_name(p, "draws or seed after ','");
+  }
+}
+
+/* collect ITEM {',' ITEM};  ITEM := 'poles' | EXPR ':' WHAT ['=' NUMBER] */
+static void study_collect(parser *p, bg_ast_stmt *s, bg_strbuf *w) {
+  static const char *const whats[] = {"final", "min", "max", "mean", "tmin", "tmax", "cross"};
+  do {
+    bg_sb_clear(w);
+    bg_sb_puts(w, "");
+    const bg_token *t = cur(p);
+    if (t->kind == BG_TK_NAME && !strcmp(t->text, "poles") &&
+        (p->toks.tok[p->pos + 1].kind == BG_TK_COMMA || p->toks.tok[p->pos + 1].kind == BG_TK_EOL ||
+         p->toks.tok[p->pos + 1].kind == BG_TK_EOF)) {
+      next(p);
+      study_item(p, s, "poles", t->loc);
+      continue;
+    }
+    bg_expr *e = parse_expr(p);
+    if (!at(p, BG_TK_COLON)) {
+      char found[128];
+      describe(cur(p), found, sizeof found);
+      fail_at(p, cur(p), "expected ':' and what to collect of '%s' (final, min, max, mean, tmin, "
+              "tmax, cross = LEVEL), found %s", span_text(p, e->start, e->end), found);
+    }
+    next(p);
+    const bg_token *k = expect_name(p, "what to collect: final, min, max, mean, tmin, tmax or "
+                                       "cross = LEVEL");
+    if (!in_list(k->text, whats, COUNT(whats)))
+      fail_at(p, k, "'%s' is not final, min, max, mean, tmin, tmax or cross = LEVEL", k->text);
+    bg_sb_printf(w, "%s:%s", span_text(p, e->start, e->end), k->text);
+    if (!strcmp(k->text, "cross")) {
+      expect(p, BG_TK_ASSIGN, "after cross (cross = LEVEL)");
+      double v;
+      bg_sb_printf(w, "=%s", signed_number(p, "the level", &v));
+    }
+    for (int i = 0; i < s->nitems; i++)
+      if (!strcmp(s->items[i].name, bg_sb_str(w)))
+        fail_at(p, t, "'%s' is collected twice", bg_sb_str(w));
+    study_item(p, s, bg_sb_str(w), t->loc);
+  } while (accept(p, BG_TK_COMMA));
+}
+
+/* study_stmt := 'study' ('sweep' NAME '=' VALUES | 'vary' NAME '=' DIST
+ *                      | ('draws' | 'seed') '=' NUMBER {',' ...} | 'collect' ITEM {',' ITEM}) */
+static void parse_study(parser *p, const bg_token *kw) {
+  if (p->open_def >= 0) fail_at(p, kw, "'study' is not allowed inside a submodel (it belongs to the model)");
+  const bg_token *sub = next(p);
+  bg_ast_stmt *s = new_stmt(p, BG_ST_STUDY, kw);
+  int si = p->nstmts - 1;
+  s->name = sub->text;
+  s->name_loc = sub->loc;
+  bg_ast_stmt tmp = {0}; /* the items, while new statements cannot move it */
+  bg_strbuf w = {0};
+  if (!strcmp(sub->text, "sweep") || !strcmp(sub->text, "vary")) {
+    const bg_token *n = expect_name(p, "the param to vary");
+    expect(p, BG_TK_ASSIGN, !strcmp(sub->text, "sweep") ? "after the param (sweep NAME = VALUES)"
+                                                       : "after the param (vary NAME = DIST)");
+    if (!strcmp(sub->text, "sweep")) study_sweep(p, &tmp, n, &w);
+    else study_vary(p, &tmp, n, &w);
+  } else if (!strcmp(sub->text, "collect")) {
+    study_collect(p, &tmp, &w);
+  } else {
+    study_draws(p, &tmp, sub);
+    p->stmts[si].name = "draws";
+  }
+  bg_sb_free(&w);
+  p->stmts[si].items = tmp.items;
+  p->stmts[si].nitems = tmp.nitems;
+}
+
 /* "KIND NAME" of an element or an instance: a statement named n, of kind word `kind`. */
 static int named_stmt(parser *p, bg_stkind k, const bg_token *kind, const bg_token *n,
                       const char *what) {
@@ -829,6 +1022,9 @@ static int parse_component_stmt(parser *p, const bg_token *t) {
   if (strcmp(w, "submodel") == 0 && k == BG_TK_NAME) parse_submodel(p, t);
   else if ((strcmp(w, "open") == 0 || strcmp(w, "short") == 0) && k == BG_TK_NAME) parse_open(p, t);
   else if (strcmp(w, "use") == 0 && k == BG_TK_STRING) parse_use(p, t);
+  else if (strcmp(w, "study") == 0 && k == BG_TK_NAME && !instance_follows(p) &&
+           in_list(cur(p)->text, study_words, COUNT(study_words)))
+    parse_study(p, t);
   else if (p->open_def >= 0 && strcmp(w, "end") == 0 && (k == BG_TK_EOL || k == BG_TK_EOF || k == BG_TK_NAME))
     parse_end(p, t);
   else if (p->open_def >= 0 && strcmp(w, "port") == 0 && k == BG_TK_NAME) {

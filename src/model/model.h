@@ -189,7 +189,13 @@ typedef struct bg_xnode {
   X(int, field_nport, nfield)                                                  \
   X(int, field_numbered, nfield)    /* ports given as a count: K(2) */         \
   X(int, field_energy, nfield)      /* energy root xnode (C), or -1 */         \
-  X(bg_srcloc, field_loc, nfield)   /* of the field's name */
+  X(bg_srcloc, field_loc, nfield)   /* of the field's name */                 \
+  /* the model's own parameter study (`study` statements, docs/study.md): \
+     the command line's words for it, in file order; kind 's' sweep, 'v'    \
+     vary, 'd' draws, 'e' seed, 'c' collect */                                \
+  X(int, study_kind, nstudy)                                                   \
+  X(const char *, study_word, nstudy) /* "R0=5:125:7", "draws=500", "C1.e:max" */ \
+  X(bg_srcloc, study_loc, nstudy)
 
 typedef struct bg_simspec {
   int present;
@@ -230,7 +236,7 @@ typedef struct bg_model {
   bg_linspec linear;
   int noutput, nlininput;
   int nelem, nbondref, nbond, nparam, ninput, nstate, nsignal, nplot, nplotexpr;
-  int ntable, ntabledata, nxnode, ninst, nseg, ndet, nfield;
+  int ntable, ntabledata, nxnode, ninst, nseg, ndet, nfield, nstudy;
 #define BG_X_DECLARE(type, name, count) type *name;
   BG_MODEL_ARRAYS(BG_X_DECLARE)
 #undef BG_X_DECLARE

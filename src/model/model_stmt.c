@@ -4,6 +4,7 @@
  * simulate, layout, plot, and the options of bonds and states. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "model/expr.h"
@@ -367,6 +368,93 @@ static void st_linearise(bg_build *b, const bg_ast_stmt *s) {
   else lin_input(b, in->value);
 }
 
+/* study sweep|vary|draws|collect (docs/format.md, "study"): the parser
+ * checked the words' form; here the params are the model's, a study is a
+ * sweep or a Monte Carlo draw, and nothing is given twice. */
+static void st_study(bg_build *b, const bg_ast_stmt *s) {
+  bg_model *m = b->m;
+  char kind = !strcmp(s->name, "sweep") ? 's' : !strcmp(s->name, "vary") ? 'v'
+            : !strcmp(s->name, "collect") ? 'c' : 'd';
+  for (int i = 0; i < s->nitems; i++) {
+    const char *w = s->items[i].name;
+    bg_srcloc loc = s->items[i].loc;
+    char k = kind == 'd' && !strncmp(w, "seed=", 5) ? 'e' : kind;
+    if (k == 's' || k == 'v') {
+      size_t len = strcspn(w, "=");
+      char name[256];
+      snprintf(name, sizeof name, "%.*s", (int)(len < 255 ? len : 255), w);
+      const ns_entry *n = bg_build_lookup(b, name);
+      if (!n || n->kind != NS_PARAM) {
+        const char *near = NULL;
+        int bestd = 3;
+        for (int p = 0; p < m->nparam; p++) {
+          int d = bg_edit_distance(m->param_name[p], name);
+          if (d < bestd) bestd = d, near = m->param_name[p];
+        }
+        bg_diag_error(b->dg, loc, "study %s: '%s' is not a param of the model%s%s%s", s->name, name,
+                      near ? " (did you mean '" : "", near ? near : "", near ? "'?)" : "");
+        continue;
+      }
+    }
+    for (int j = 0; j < m->nstudy; j++) {
+      char kj = (char)m->study_kind[j];
+      const char *wj = m->study_word[j];
+      size_t lj = strcspn(wj, "="), li = strcspn(w, "=");
+      if ((k == 's' || k == 'v') && (kj == 's' || kj == 'v') && kj != k) {
+        bg_diag_error(b->dg, loc, "a study is a sweep or a Monte Carlo draw: 'study %s' after "
+                      "'study %s' (line %d)", s->name, kj == 's' ? "sweep" : "vary", m->study_loc[j].line);
+        return;
+      }
+      if (kj == k && k != 'c' && lj == li && !strncmp(wj, w, li)) {
+        bg_diag_error(b->dg, loc, "%s '%.*s' is already given at line %d", k == 's' || k == 'v'
+                      ? "the param" : "study", (int)li, w, m->study_loc[j].line);
+        return;
+      }
+      if (k == 'c' && kj == 'c' && !strcmp(wj, w)) {
+        bg_diag_error(b->dg, loc, "'%s' is already collected at line %d", w, m->study_loc[j].line);
+        return;
+      }
+    }
+    int at = bg_build_new(b, &m->nstudy);
+    m->study_kind[at] = k;
+    m->study_word[at] = bg_build_strdup(b, w);
+    m->study_loc[at] = loc;
+  }
+}
+
+/* src/study's limit (BG_STUDY_MAX_RUNS; the model stage comes before it) */
+enum { BG_MODEL_STUDY_MAX_RUNS = 1000000 };
+
+/* The study as a whole: draws and vary go together, a seed only with them,
+ * and the grid is within the study's limit. */
+static void study_whole(bg_build *b) {
+  const bg_model *m = b->m;
+  int first[128] = {0}, seen[128] = {0};
+  for (int j = m->nstudy - 1; j >= 0; j--) seen[m->study_kind[j]] = 1, first[m->study_kind[j]] = j;
+  if (seen['v'] && !seen['d'])
+    bg_diag_error(b->dg, m->study_loc[first['v']], "a Monte Carlo study needs the number of runs: "
+                  "add 'study draws = N'");
+  if (seen['d'] && !seen['v'])
+    bg_diag_error(b->dg, m->study_loc[first['d']], "'study draws' without 'study vary NAME = DIST' "
+                  "draws nothing");
+  double grid = 1; /* the grid's size: the product of the sweeps' counts */
+  for (int j = 0; j < m->nstudy; j++) {
+    if (m->study_kind[j] != 's') continue;
+    const char *v = strchr(m->study_word[j], '=') + 1, *c1 = strchr(v, ':');
+    double count = 1;
+    if (c1) count = strtod(strchr(c1 + 1, ':') + 1, NULL); /* FROM:TO:COUNT[:log] */
+    else for (; *v; v++) count += *v == ',';
+    grid *= count;
+    if (grid > BG_MODEL_STUDY_MAX_RUNS) {
+      bg_diag_error(b->dg, m->study_loc[j], "the study's grid has more than %d runs (the sweeps' "
+                    "counts multiply)", BG_MODEL_STUDY_MAX_RUNS);
+      break;
+    }
+  }
+  if (seen['e'] && !seen['v'])
+    bg_diag_error(b->dg, m->study_loc[first['e']], "a seed belongs to a Monte Carlo study, not to a sweep");
+}
+
 void bg_build_statements(bg_build *b) {
   const bg_ast_stmt *model = NULL, *caus = NULL, *sim = NULL, *layout = NULL, *lin = NULL;
   int bond = 0;
@@ -383,7 +471,9 @@ void bg_build_statements(bg_build *b) {
     case BG_ST_LINEARISE: if (once(b, s, &lin, "linearise")) st_linearise(b, s); break;
     case BG_ST_STATE: st_state(b, s); break;
     case BG_ST_BOND: st_bond(b, s, bond++); break;
+    case BG_ST_STUDY: st_study(b, s); break;
     default: break;
     }
   }
+  study_whole(b);
 }
