@@ -135,6 +135,37 @@ check "usage: no study in the model nor on the command line" $?
 "$BGDRAW" tests/data/rlc_study.bg -o "$tmp/single.svg" && [ -s "$tmp/single.svg" ]
 check "a model with a study still draws as a single run" $?
 
+# the study in the PDF report: the section, the table's numbers against the
+# closed form (the peak 1 + exp(-pi z / sqrt(1 - z^2)), z = R/2 sqrt(C/L), and
+# the poles -R/2L -+ j sqrt(1/LC - (R/2L)^2), printed as the report prints
+# numbers: %.4g with a minus sign), the family, the quantities, the root locus
+if command -v pdftotext >/dev/null; then
+  "$BGDRAW" "$m" --sweep R0=5:125:7 --collect C1.e:max --collect poles --report "$tmp/sr.pdf" \
+    --bode-family "$tmp/sr_bode.svg"
+  check "a study's report" $?
+  pdftotext -layout "$tmp/sr.pdf" "$tmp/sr.txt"
+  grep -q 'Parameter study' "$tmp/sr.txt" &&
+    grep -q 'A sweep of R0 over 5:125:7 (7 values): 7 runs; 0 runs failed' "$tmp/sr.txt"
+  check "the report's study section" $?
+  want=$(awk 'BEGIN { R = 5; L = 1e-3; C = 1e-6; z = R / 2 * sqrt(C / L); a = R / (2 * L)
+    b = sqrt(1 / (L * C) - a * a); pi = atan2(0, -1)
+    printf "0 5 ok %.4g -%.4g -%.4g -%.4g %.4g", 1 + exp(-pi * z / sqrt(1 - z * z)), a, b, a, b }' | sed 's/-/\xe2\x88\x92/g')
+  grep -E '^ +0 +5 ok' "$tmp/sr.txt" | tr -s ' ' | sed 's/^ //' | grep -qxF "$want"
+  check "the report's first row: $want" $?
+  for t in 'Runs and collected quantities' 'Family of runs' 'Collected quantities against R0' \
+           'Root locus' 'Bode family'; do
+    grep -q "^$t" "$tmp/sr.txt"; check "the report shows: $t" $?
+  done
+  "$BGDRAW" tests/data/quarter_car_study.bg --report "$tmp/mr.pdf" -j 2 && pdftotext "$tmp/mr.pdf" "$tmp/mr.txt" &&
+    grep -q 'A Monte Carlo study of 40 runs, seed 3' "$tmp/mr.txt" && grep -q 'Monte Carlo envelope' "$tmp/mr.txt"
+  check "a model's Monte Carlo study in its report" $?
+  "$BGDRAW" "$m" --sweep C0=1e-6,0 --collect C1.e:final --report "$tmp/fr.pdf" 2>/dev/null &&
+    pdftotext -layout "$tmp/fr.pdf" - | grep -q '1 run failed'
+  check "the report counts the failed run" $?
+else
+  echo "FAIL pdftotext is not installed (bash tools/deps.sh --tests)"; fail=$((fail + 1))
+fi
+
 # failed runs are rows with reasons; a study where every run fails is status 3
 "$BGDRAW" "$m" --sweep C0=1e-6,0 --collect C1.e:final --study "$tmp/f.csv" 2>"$tmp/err"
 [ $? -eq 0 ] && grep -q '^1,0,failed,,simulation failed' "$tmp/f.csv" && grep -q '1 of 2 runs failed' "$tmp/err"
@@ -151,7 +182,7 @@ usage() { # NAME EXPECTED-MESSAGE ARGS...
   check "usage: $name" $?
 }
 usage "no outputs" "the study writes nothing" --sweep R0=1,2
-usage "-o in a study" "a study writes --study and --family outputs only" --sweep R0=1,2 --study "$tmp/u.csv" -o "$tmp/u.svg"
+usage "-o in a study" "a study writes --study, --family, --root-locus, --bode-family and --report outputs only" --sweep R0=1,2 --study "$tmp/u.csv" -o "$tmp/u.svg"
 usage "--vary without draws" "--monte-carlo N" --vary 'R0=normal(1,2)' --study "$tmp/u.csv"
 usage "--seed in a sweep" "--seed belongs to a Monte Carlo study" --sweep R0=1,2 --seed 3 --study "$tmp/u.csv"
 usage "bad range" "FROM:TO:COUNT" --sweep R0=1:2 --study "$tmp/u.csv"

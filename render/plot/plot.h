@@ -43,8 +43,12 @@ void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it);
  * the first param, arrows along the branches as it grows) and the Bode
  * family (bode: computed by bg_study_bode_compute). */
 enum { BG_STUDY_PLOT_QUANTITIES = 0, BG_STUDY_PLOT_FAMILY, BG_STUDY_PLOT_LOCUS, BG_STUDY_PLOT_BODE };
-/* The root locus into out (initialised by the caller), width points wide;
- * 0, or -1 with the reason in why (no run has poles). */
+/* Plot kind into out (initialised by the caller), width points wide; 0, or
+ * -1 with the reason in why (no run succeeded; quantities of a Monte Carlo
+ * study; no poles). */
+int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode, const bg_style *sty,
+                        double width, bg_scene *out, char *why, size_t nwhy);
+/* The root locus alone (plot_locus.c). */
 int bg_study_locus_scene(const bg_study *st, const bg_style *sty, double width, bg_scene *out,
                          char *why, size_t nwhy);
 /* The same in format fmt into out; BG_RENDER_OK or BG_RENDER_ERROR with the

@@ -197,8 +197,8 @@ static int bode_table(const bg_study *st, const bg_study_bode *b, table *T, char
   return 0;
 }
 
-static int study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode, const bg_style *sty,
-                            double width, bg_scene *out, char *why, size_t nwhy) {
+int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode, const bg_style *sty,
+                        double width, bg_scene *out, char *why, size_t nwhy) {
   if (kind == BG_STUDY_PLOT_LOCUS) return bg_study_locus_scene(st, sty, width, out, why, nwhy);
   table T;
   int rc = kind == BG_STUDY_PLOT_FAMILY ? family_table(st, &T, why, nwhy)
@@ -236,7 +236,7 @@ int bg_study_plot_render(const bg_study *st, int kind, const bg_study_bode *bode
                ? "Monte Carlo envelope" : what[kind]);
   sc.title = bg_arena_strdup(&sc.arena, title);
   int rc = BG_RENDER_ERROR;
-  if (study_plot_scene(st, kind, bode, &sty, WIDTH, &sc, why, sizeof why))
+  if (bg_study_plot_scene(st, kind, bode, &sty, WIDTH, &sc, why, sizeof why))
     bg_diag_error(dg, (bg_srcloc){0}, "no study plot for '%s': %s", path ? path : "the plot", why);
   else rc = bg_plot_render_scene(&sc, fmt, sty.png_scale, out, dg);
   bg_scene_free(&sc);

@@ -37,6 +37,8 @@ static void body(rp_ctx *c) {
   rp_sec_simulation(c);
   if (c->in->lin) progress(c, "linear analysis");
   rp_sec_linear(c);
+  if (c->in->study) progress(c, "parameter study");
+  rp_sec_study(c);
   if (c->in->tx) progress(c, "transformation");
   rp_sec_transform(c);
 }
@@ -48,6 +50,7 @@ static void free_ctx(rp_ctx *c) {
   free(c->hl);
   if (c->plot) bg_scene_free(c->plot), free(c->plot);
   for (int i = 0; i < c->nlin_plot; i++) bg_scene_free(c->lin_plot[i]), free(c->lin_plot[i]);
+  for (int i = 0; i < c->nstudy_plot; i++) bg_scene_free(c->study_plot[i]), free(c->study_plot[i]);
   rp_doc_free(&c->body);
 }
 
@@ -78,7 +81,8 @@ int bg_report_render(const bg_run *r, const bg_report_opts *ro, bg_strbuf *pdf, 
                            r->facts.numeric, r->facts.numeric_skipped,
                            bg_run_has(r, BG_STAGE_SIMULATION) ? &r->sim : NULL, r->sim_status,
                            ro ? ro->ropts : NULL, bg_run_has(r, BG_STAGE_LINEAR) ? &r->lin : NULL,
-                           ro && ro->tx ? ro->tx_name : NULL, ro ? ro->tx : NULL};
+                           ro && ro->tx ? ro->tx_name : NULL, ro ? ro->tx : NULL,
+                           ro ? ro->study : NULL, ro ? ro->bode : NULL};
   const bg_report_input *in = &input;
   rp_ctx c;
   memset(&c, 0, sizeof c);

@@ -15,6 +15,7 @@
 #include "simulate/simulate.h"
 #include "linear/linear.h"
 #include "run/run.h"
+#include "study/study.h"
 #include "transform/transform.h"
 
 /* What the report shows beyond the run. */
@@ -22,6 +23,8 @@ typedef struct bg_report_opts {
   const bg_render_opts *ropts;   /* style, layout, log */
   const char *tx_name;           /* nullable: --transform NAME (section 11 left out) */
   const bg_transform_result *tx; /* the transformed model, with tx_name */
+  const bg_study *study;         /* nullable: a parameter study of the model (its section) */
+  const bg_study_bode *bode;     /* nullable: the study's Bode family */
 } bg_report_opts;
 
 /* The report of what the run computed (the stages it has not run are said

@@ -202,6 +202,8 @@ typedef struct bg_report_input {
   const bg_linear *lin;         /* nullable: no linear analysis (section 10 left out) */
   const char *tx_name;          /* nullable: --transform NAME (section 11 left out) */
   const bg_transform_result *tx; /* the transformed model, with tx_name */
+  const bg_study *study;        /* nullable: a parameter study (its section left out) */
+  const bg_study_bode *bode;    /* nullable: the study's Bode family */
 } bg_report_input;
 
 typedef struct rp_ctx {
@@ -218,6 +220,8 @@ typedef struct rp_ctx {
   bg_scene *plot;     /* the simulation plots (owned), nullable */
   bg_scene *lin_plot[2]; /* the linear analysis' Bode and step plots (owned) */
   int nlin_plot;
+  bg_scene *study_plot[4]; /* the parameter study's plots (owned) */
+  int nstudy_plot;
   bg_diags *dg;
   int failed;        /* a diagram could not be built (errors in dg) */
 } rp_ctx;
@@ -242,6 +246,10 @@ void rp_sec_equations(rp_ctx *c);
 void rp_sec_simulation(rp_ctx *c);
 /* report_linear.c: only when the run made a linear analysis */
 void rp_sec_linear(rp_ctx *c);
+/* report_study.c: only with a parameter study: what was varied, the table,
+ * the family of runs, the quantities against the param, the root locus and
+ * the Bode family */
+void rp_sec_study(rp_ctx *c);
 /* report_transform.c: only with --transform: what changed, before and after */
 void rp_sec_transform(rp_ctx *c);
 /* report_summary.c: the title page with the summary and the contents of

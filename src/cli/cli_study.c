@@ -135,17 +135,18 @@ int cli_study_parse(const bg_cli_opts *o, cli_study *cs) {
   if (o->merge && cs->curves)
     return bg_cli_usage_error("--family with --merge: the parts keep no trajectories (draw the "
                               "family on one machine, or from a part)%s%s", "", "");
-  if (!cs->nout && !o->split)
+  if (!cs->nout && !o->split && !o->report)
     return bg_cli_usage_error("the study writes nothing: add --study FILE.csv|json|svg, "
                               "--family FILE.svg, --root-locus FILE.svg or --bode-family "
                               "FILE.svg%s%s", "", "");
-  if (o->split && cs->nout)
+  if (o->split && (cs->nout || o->report))
     return bg_cli_usage_error("--split writes jobs only; the outputs come from --merge%s%s", "", "");
   /* a study writes only its own outputs: the single run's would be ignored */
-  if (o->nout || o->plot || o->report || o->simulate || o->equations || o->linear || o->bode ||
+  if (o->nout || o->plot || o->simulate || o->equations || o->linear || o->bode ||
       o->nyquist || o->step || o->check || o->transform || o->depfile)
-    return bg_cli_usage_error("a study writes --study and --family outputs only; write the "
-                              "single run's outputs (-o, --plot, --report, ...) in a call "
+    return bg_cli_usage_error("a study writes --study, --family, --root-locus, --bode-family "
+                              "and --report outputs only; write the single run's outputs (-o, "
+                              "--plot, ...) in a call "
                               "without %s%s", nsweep ? "--sweep" : nvary ? "--vary"
                                                      : "the study's options", "");
   return 0;
@@ -341,22 +342,14 @@ static int merge_parts(const bg_cli_opts *o, const cli_study *cs, bg_study *st) 
 }
 
 /* ------------------------------------------------------------ outputs */
-static int write_outputs(run *r, const cli_study *cs, const bg_study *st, const bg_study_opts *so) {
-  bg_study_bode bode = {0};
-  if (cs->bode) {
-    char err[512];
-    if (bg_study_bode_compute(st, so, &bode, err, sizeof err)) {
-      fprintf(stderr, "bgdraw: error: --bode-family: %s\n", err);
-      return EXIT_MODEL;
-    }
-  }
+static int write_outputs(run *r, const cli_study *cs, const bg_study *st, const bg_study_bode *bode) {
   int rc = EXIT_OK;
   for (int i = 0; i < cs->nout && rc == EXIT_OK; i++) {
     const char *path = cs->out[i].path, *ext = bg_path_ext(path);
     bg_strbuf b = {0};
     if (!strcmp(ext, "csv")) bg_study_write_csv(st, &b);
     else if (!strcmp(ext, "json")) bg_study_write_json(st, &b);
-    else if (bg_study_plot_render(st, cs->out[i].kind, &bode, r->ropts.style, r->ropts.style_dir, ext,
+    else if (bg_study_plot_render(st, cs->out[i].kind, bode, r->ropts.style, r->ropts.style_dir, ext,
                                   path, &b, &r->R->dg) != BG_RENDER_OK) {
       bg_diags_print(&r->R->dg, stderr);
       rc = EXIT_WRITE;
@@ -364,7 +357,24 @@ static int write_outputs(run *r, const cli_study *cs, const bg_study *st, const 
     if (rc == EXIT_OK) rc = cli_write_text(path, &b);
     bg_sb_free(&b);
   }
-  bg_study_bode_free(&bode);
+  return rc;
+}
+
+/* --report in a study's call: the model's report at its own values with the
+ * study's section (docs/study.md, "In the report"). */
+static int write_report(run *r, const bg_study *st, const bg_study_bode *bode) {
+  bg_run *R = r->R;
+  bg_run_need(R, BG_STAGE_REDUCTION);
+  if (R->model->linear.present) bg_run_need(R, BG_STAGE_LINEAR);
+  if (R->model->sim.present) bg_run_need(R, BG_STAGE_SIMULATION);
+  bg_report_opts ro = {&r->out.o.render, NULL, NULL, st, bode};
+  bg_strbuf b = {0};
+  int rc = EXIT_OK;
+  if (bg_report_render(R, &ro, &b, &R->dg) != BG_RENDER_OK) {
+    bg_diags_print(&R->dg, stderr);
+    rc = EXIT_WRITE;
+  } else rc = cli_write_text(r->opts.report, &b);
+  bg_sb_free(&b);
   return rc;
 }
 
@@ -432,7 +442,7 @@ int cli_study_run(run *r, cli_study *cs) {
   so.name = r->R->name, so.src = r->R->src, so.srclen = r->R->srclen;
   so.sets = o->sets, so.nsets = o->nsets;
   so.method = o->causality ? bg_method_parse(o->causality) : -1;
-  so.jobs = cs->jobs, so.keep_curves = cs->curves, so.want_poles = cs->locus;
+  so.jobs = cs->jobs, so.keep_curves = cs->curves || (o->report && !o->merge), so.want_poles = cs->locus;
   so.first = cs->first, so.count = cs->count;
   so.log = r->R->o.log;
   bg_study st;
@@ -444,7 +454,14 @@ int cli_study_run(run *r, cli_study *cs) {
   }
   int rc = o->merge ? merge_parts(o, cs, &st) : EXIT_OK;
   for (long k = 0; o->merge && st.npole && k < st.count; k++) bg_study_poles_from_values(&st, &st.runs[k]);
-  if (rc == EXIT_OK) rc = write_outputs(r, cs, &st, &so);
+  bg_study_bode bode = {0};
+  if (rc == EXIT_OK && cs->bode && bg_study_bode_compute(&st, &so, &bode, err, sizeof err)) {
+    fprintf(stderr, "bgdraw: error: --bode-family: %s\n", err);
+    rc = EXIT_MODEL;
+  }
+  if (rc == EXIT_OK) rc = write_outputs(r, cs, &st, &bode);
+  if (rc == EXIT_OK && o->report) rc = write_report(r, &st, &bode);
+  bg_study_bode_free(&bode);
   if (rc == EXIT_OK && st.nfailed) {
     fprintf(stderr, "bgdraw: %s: %ld of %ld runs failed (the table's status and reason say why)\n",
             st.nfailed == st.count ? "error" : "warning", st.nfailed, st.count);

@@ -125,7 +125,7 @@ static bg_output_status write_plot(bg_output *w, const bg_output_kind *k, const 
 static bg_output_status write_report(bg_output *w, const bg_output_kind *k, const char *form,
                                      const char *path, bg_strbuf *out) {
   (void)k, (void)form, (void)path;
-  bg_report_opts ro = {&w->o.render, w->o.tx ? w->o.transform : NULL, w->o.tx};
+  bg_report_opts ro = {&w->o.render, w->o.tx ? w->o.transform : NULL, w->o.tx, NULL, NULL};
   return render_status(bg_report_render(w->run, &ro, out, &w->dg));
 }
 

@@ -210,7 +210,7 @@ static void test_report(const char *name) {
   OK(r->index_computed);
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
-  bg_report_opts ro = {&o, NULL, NULL};
+  bg_report_opts ro = {&o, NULL, NULL, NULL, NULL};
   bg_diags dg;
   bg_diags_init(&dg, "test", NULL, 0);
   bg_strbuf pdf = {0};
@@ -280,7 +280,7 @@ static void test_highlights_share_layout(const char *name, const char *text, int
   bg_render_opts o = {0};
   o.style_dir = BG_SOURCE_DIR "/styles";
   static const bg_index_facts none;
-  bg_report_input in = {f.m, &f.a, f.s, NULL, &none, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL};
+  bg_report_input in = {f.m, &f.a, f.s, NULL, &none, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL, NULL, NULL};
   bg_diags dg;
   bg_diags_init(&dg, "test", NULL, 0);
   rp_ctx c;
