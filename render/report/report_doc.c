@@ -196,3 +196,11 @@ int rp_write_pdf(rp_doc *const *docs, int ndoc, const char *title, bg_strbuf *ou
   free(ol);
   return rc;
 }
+
+void rp_figure(rp_doc *d, const bg_scene *s, const char *title) {
+  double sc = rp_content_w(d) / s->width, room = rp_page_room(d) - 30;
+  if (s->height * sc > room) sc = room / s->height;
+  rp_subsection(d, title, s->height * sc);
+  rp_place(d, s, 0, 0, s->width, s->height, rp_left() + (rp_content_w(d) - s->width * sc) / 2, d->y, sc);
+  d->y += s->height * sc + 8;
+}

@@ -140,6 +140,9 @@ void rp_hline(bg_scene *s, double x0, double x1, double y, double width, bg_rgba
 /* Places the rectangle (sx, sy, sw, sh) of scene s on the last page at (x, y), scaled. */
 void rp_place(rp_doc *d, const bg_scene *s, double sx, double sy, double sw, double sh, double x,
               double y, double scale);
+/* A figure under a subsection title: scene s (kept alive by the caller
+ * until the PDF is written) at the content width, or smaller to fit a page. */
+void rp_figure(rp_doc *d, const bg_scene *s, const char *title);
 /* Running header and footer on every page of d: header text on pages from
  * first_header on, "page N of TOTAL" with N = index + offset + 1. */
 void rp_decorate(rp_doc *d, const char *header, int first_header, int offset, int total);

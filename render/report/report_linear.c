@@ -171,12 +171,7 @@ static void place_plot(rp_ctx *c, const bg_linear *l, int kind, const char *titl
   }
   s->background.a = 0;
   c->lin_plot[c->nlin_plot++] = s;
-  rp_doc *d = &c->body;
-  double sc = rp_content_w(d) / s->width, room = rp_page_room(d) - 30;
-  if (s->height * sc > room) sc = room / s->height;
-  rp_subsection(d, title, s->height * sc);
-  rp_place(d, s, 0, 0, s->width, s->height, rp_left() + (rp_content_w(d) - s->width * sc) / 2, d->y, sc);
-  d->y += s->height * sc + 8;
+  rp_figure(&c->body, s, title);
 }
 
 void rp_sec_linear(rp_ctx *c) {

@@ -107,12 +107,7 @@ static void place(rp_ctx *c, int kind, const char *title) {
   }
   s->background.a = 0;
   c->study_plot[c->nstudy_plot++] = s;
-  rp_doc *d = &c->body;
-  double sc = rp_content_w(d) / s->width, room = rp_page_room(d) - 30;
-  if (s->height * sc > room) sc = room / s->height;
-  rp_subsection(d, title, s->height * sc);
-  rp_place(d, s, 0, 0, s->width, s->height, rp_left() + (rp_content_w(d) - s->width * sc) / 2, d->y, sc);
-  d->y += s->height * sc + 8;
+  rp_figure(&c->body, s, title);
 }
 
 void rp_sec_study(rp_ctx *c) {
