@@ -227,8 +227,10 @@ int bgd_transfer_function_at(bgd_model *m, int k, bgd_transfer *out);
  * "c", "h", "py", "m", "mo", "fmu" (an FMI 2.0 Model Exchange archive,
  * compiled by $CC or cc, whose messages go to the process's stderr; the
  * program's signal handlers are left alone), "csv", "plot" (form "svg", "pdf", "png"),
- * "report", "linear" (form "text", "latex", "json", "octave", "python"),
- * "bode", "nyquist", "step" (form a format). 0 with *data (len bytes,
+ * "report" (form "html": the HTML page; else the PDF, or for bgd_write
+ * the HTML page when the path ends in .html or .htm), "linear" (form
+ * "text", "latex", "json", "octave", "python"), "equations" also form
+ * "mathml", "bode", "nyquist", "step" (form a format). 0 with *data (len bytes,
  * NUL-terminated, malloc'd) or a status with the reason in the diagnostics
  * (bgd_last_error). */
 int bgd_output(bgd_model *m, const char *kind, const char *form, char **data, size_t *len);

@@ -18,7 +18,8 @@ if [ "${1:-}" = "--tests" ]; then
          python3-ipykernel python3-nbformat   # a notebook executed headless
          dpkg-dev lintian                     # tests/deb.sh: the Debian packages
          parallel                             # tests/study_cli.sh: a study split over GNU parallel
-         python3-yaml)                        # tests/import_bgt.sh: the written YAML read by PyYAML
+         python3-yaml                         # tests/import_bgt.sh: the written YAML read by PyYAML
+         chromium)                            # tests/html_browser.sh: the HTML report, headless
 fi
 missing=()
 for p in "${PKGS[@]}"; do

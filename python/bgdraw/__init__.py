@@ -13,15 +13,15 @@ In IPython or Jupyter, `%load_ext bgdraw` adds the %%bgdraw cell magic."""
 from ._lib import LibraryError, lib as _clib
 from .errors import Diagnostic, Error, ModelError, RefusedError, UsageError, WriteError
 from .model import Model
-from .results import (Analysis, Bond, CausalPath, Conflict, Element, Equations, Index, Linear,
-                      Loop, Simulation, TransferFunction)
+from .results import (Analysis, Bond, CausalPath, Conflict, Element, Equations, HTMLReport, Index,
+                      Linear, Loop, Simulation, TransferFunction)
 
 __version__ = _clib.bgd_version().decode()
 API_VERSION = _clib.bgd_api_version()
 library = _clib.path  # the libbgdraw file this package uses
 
 __all__ = ["Model", "Analysis", "Element", "Bond", "CausalPath", "Loop", "Conflict", "Index",
-           "Simulation", "Linear", "TransferFunction", "Equations", "Diagnostic", "Error",
+           "Simulation", "Linear", "TransferFunction", "Equations", "HTMLReport", "Diagnostic", "Error",
            "ModelError", "UsageError", "RefusedError", "WriteError", "LibraryError",
            "from_file", "from_string"]
 

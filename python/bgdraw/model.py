@@ -13,7 +13,7 @@ import numpy as np
 from . import _lib
 from ._lib import lib
 from .errors import BY_STATUS, Diagnostic, ModelError, RefusedError, UsageError
-from .results import (Analysis, Bond, CausalPath, Conflict, Element, Equations, Index, Linear,
+from .results import (Analysis, Bond, CausalPath, Conflict, Element, Equations, HTMLReport, Index, Linear,
                       Loop, Simulation, TransferFunction)
 
 # Files bgdraw writes, by extension: (output kind, form)
@@ -442,8 +442,15 @@ class Model:
             self.write(os.path.splitext(os.fspath(path))[0] + ".h", "h")
 
     def report(self, path, style=None):
-        """The multi-page PDF analysis report (as --report)."""
+        """The analysis report (as --report): the multi-page PDF, or the
+        interactive HTML page for a path ending in .html or .htm."""
         self.write(path, "report", style=style)
+
+    def report_html(self, style=None):
+        """The HTML analysis report as an HTMLReport (a str; in a notebook
+        it displays in a frame): the same bytes as --report FILE.html."""
+        page = self.output("report", "html", style=style).decode("utf-8")
+        return HTMLReport(page, self.name)
 
     def plot(self, path=None, format=None):
         """The simulation's plot (as --plot): into path (its extension the

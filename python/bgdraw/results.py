@@ -286,6 +286,28 @@ class Linear:
                 f"outputs {', '.join(self.outputs)}>")
 
 
+class HTMLReport(str):
+    """The HTML analysis report (a str: the whole self-contained page, as
+    `bgdraw --report FILE.html` writes it). In a notebook it displays in an
+    <iframe srcdoc>, so its style sheet and script stay inside it; save()
+    writes it to a file."""
+
+    def __new__(cls, text, name):
+        s = super().__new__(cls, text)
+        s.name = name
+        return s
+
+    def _repr_html_(self):
+        import html
+        return ('<iframe srcdoc="%s" title="bgdraw analysis report of %s" '
+                'style="width: 100%%; height: 640px; border: 1px solid #ccc"></iframe>'
+                % (html.escape(str(self), quote=True), html.escape(self.name)))
+
+    def save(self, path):
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(str(self))
+
+
 class Equations(str):
     """The equations as a printer writes them (a str); in a notebook the
     LaTeX form displays as mathematics."""

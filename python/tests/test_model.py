@@ -193,6 +193,17 @@ def test_save_report_equations(tmp_path, rlc):
     assert '#include "rlc.h"' in (tmp_path / "rlc.c").read_text() and (tmp_path / "rlc.h").exists()
     rlc.report(tmp_path / "r.pdf")
     assert (tmp_path / "r.pdf").read_bytes()[:5] == b"%PDF-"
+    # the HTML report: the command line's bytes, rows with the analysis' bonds
+    rlc.report(tmp_path / "r.html")
+    cli(example("rlc.bg"), "--report", str(tmp_path / "cli.html"))
+    page = rlc.report_html()
+    assert page.encode() == (tmp_path / "r.html").read_bytes() == (tmp_path / "cli.html").read_bytes()
+    for k, p in enumerate(rlc.analysis.causal_paths):
+        assert '<tr id="path-%d" tabindex="0" data-bonds="%s"' % (k + 1, " ".join(map(str, p.bonds))) in page
+    frame = page._repr_html_()
+    assert frame.startswith("<iframe srcdoc=\"&lt;!DOCTYPE html&gt;") and "<script" not in frame
+    page.save(tmp_path / "saved.html")
+    assert (tmp_path / "saved.html").read_bytes() == (tmp_path / "r.html").read_bytes()
     latex = rlc.equations("latex")
     assert latex == cli(example("rlc.bg"), "--equations", "latex")[1].decode()
     assert latex._repr_latex_().startswith("$$\\begin{align*}")

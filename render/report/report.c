@@ -76,13 +76,18 @@ static int assemble(rp_ctx *c, bg_strbuf *out) {
   return rc;
 }
 
+bg_report_input rp_input(const bg_run *r, const bg_report_opts *ro) {
+  bg_report_input in = {r->model, &r->analysis, r->eqsys, r->eqsys_problem, &r->facts,
+                        r->facts.numeric, r->facts.numeric_skipped,
+                        bg_run_has(r, BG_STAGE_SIMULATION) ? &r->sim : NULL, r->sim_status,
+                        ro ? ro->ropts : NULL, bg_run_has(r, BG_STAGE_LINEAR) ? &r->lin : NULL,
+                        ro && ro->tx ? ro->tx_name : NULL, ro ? ro->tx : NULL,
+                        ro ? ro->study : NULL, ro ? ro->bode : NULL};
+  return in;
+}
+
 int bg_report_render(const bg_run *r, const bg_report_opts *ro, bg_strbuf *pdf, bg_diags *dg) {
-  bg_report_input input = {r->model, &r->analysis, r->eqsys, r->eqsys_problem, &r->facts,
-                           r->facts.numeric, r->facts.numeric_skipped,
-                           bg_run_has(r, BG_STAGE_SIMULATION) ? &r->sim : NULL, r->sim_status,
-                           ro ? ro->ropts : NULL, bg_run_has(r, BG_STAGE_LINEAR) ? &r->lin : NULL,
-                           ro && ro->tx ? ro->tx_name : NULL, ro ? ro->tx : NULL,
-                           ro ? ro->study : NULL, ro ? ro->bode : NULL};
+  bg_report_input input = rp_input(r, ro);
   const bg_report_input *in = &input;
   rp_ctx c;
   memset(&c, 0, sizeof c);

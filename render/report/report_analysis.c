@@ -344,7 +344,7 @@ static void complex_text(bg_strbuf *b, double re, double im) {
 
 /* The eigenvalue closest in magnitude to an estimate: 1/tau for a time
  * constant (real eigenvalues first), omega for a frequency (complex first). */
-static int nearest_eig(const bg_index_result *r, int kind, double value) {
+int rp_nearest_eig(const bg_index_result *r, int kind, double value) {
   int best = -1;
   double bestd = 0;
   for (int pass = 0; pass < 2 && best < 0; pass++)
@@ -386,7 +386,7 @@ static void estimates_table(rp_ctx *c) {
     else bg_sb_puts(&b, "period 2\u03c0/\u03c9<sub>0</sub> = "), rp_num(&b, 2 * 3.14159265358979 / v), bg_sb_puts(&b, " s");
     rp_table_cell(&t, "%s", bg_sb_str(&b));
     bg_sb_clear(&b);
-    int e = r ? nearest_eig(r, kind, v) : -1;
+    int e = r ? rp_nearest_eig(r, kind, v) : -1;
     if (e >= 0) {
       bg_sb_puts(&b, "\u03bb = ");
       complex_text(&b, r->eig_re[e], r->eig_im[e]);
@@ -426,7 +426,7 @@ static void eig_cells(rp_table *t, const bg_index_result *r, int k) {
 
 /* A pair is one row, "re ± im": the member with im > 0 is skipped when its
  * conjugate is in the list (index.c keeps pairs exactly conjugate). */
-static int conjugate_listed(const bg_index_result *r, int k) {
+int rp_conjugate_listed(const bg_index_result *r, int k) {
   if (r->eig_im[k] <= 0) return 0;
   for (int j = 0; j < r->neig; j++)
     if (r->eig_im[j] == -r->eig_im[k] && r->eig_re[j] == r->eig_re[k]) return 1;
@@ -456,7 +456,7 @@ static void eigen_table(rp_ctx *c) {
   int n = r->neig < MAX_EIGS ? r->neig : MAX_EIGS;
   int shown = 0;
   for (int k = 0; k < n; k++) {
-    if (conjugate_listed(r, k)) continue; /* listed as ± with its conjugate */
+    if (rp_conjugate_listed(r, k)) continue; /* listed as ± with its conjugate */
     rp_table_cell(&t, "%d", ++shown);
     eig_cells(&t, r, k);
   }

@@ -229,6 +229,20 @@ typedef struct rp_ctx {
   int failed;        /* a diagram could not be built (errors in dg) */
 } rp_ctx;
 
+/* Shared with the HTML report (render/html): the one-sentence verdict (plain
+ * text), the summary table's rows (key, plain text) and the eigenvalue
+ * nearest an estimate (kind 0 a time constant, 1 a frequency; -1 none). */
+typedef void (*rp_row_fn)(void *ctx, const char *key, const char *plain);
+/* What the report reads of a run (report.c). */
+bg_report_input rp_input(const bg_run *r, const bg_report_opts *ro);
+void rp_verdict(const rp_ctx *c, bg_strbuf *out);
+void rp_summary_rows(const rp_ctx *c, rp_row_fn row, void *ctx);
+int rp_nearest_eig(const bg_index_result *r, int kind, double value);
+/* 1 for the member with im > 0 of a pair listed as its conjugate (one row "re ± im"). */
+int rp_conjugate_listed(const bg_index_result *r, int k);
+/* The solver statistics' rows (report_sim.c). */
+void rp_sim_stat_rows(const rp_ctx *c, const bg_simresult *r, rp_row_fn fn, void *ctx);
+
 /* Keeps diagram d until the PDF is written (NULL: marks the report failed). */
 bg_diagram *rp_keep(rp_ctx *c, bg_diagram *d);
 /* The diagram with every layer (report_diagrams.c). */

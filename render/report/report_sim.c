@@ -14,48 +14,56 @@ static void para(rp_ctx *c, const char *markup) {
   rp_gap(&c->body, 3);
 }
 
-static void row(rp_table *t, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static void row(rp_table *t, const char *key, const char *fmt, ...) {
+static void row(rp_row_fn fn, void *ctx, const char *key, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+static void row(rp_row_fn fn, void *ctx, const char *key, const char *fmt, ...) {
   char buf[512];
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(buf, sizeof buf, fmt, ap);
   va_end(ap);
-  rp_table_cell(t, "%s", key);
-  rp_table_text(t, buf);
+  fn(ctx, key, buf);
+}
+
+static void table_row(void *ctx, const char *key, const char *plain) {
+  rp_table_cell(ctx, "%s", key);
+  rp_table_text(ctx, plain);
+}
+
+void rp_sim_stat_rows(const rp_ctx *c, const bg_simresult *r, rp_row_fn fn, void *ctx) {
+  const bg_simspec *sp = &c->m->sim;
+  int fp = r->linear_solver && !strcmp(r->linear_solver, "none");
+  row(fn, ctx, "Solver", "%s%s%s", r->solver_used ? r->solver_used : "none",
+      fp ? ", fixed-point iteration (no Jacobian)" : r->linear_solver ? ", linear algebra " : "",
+      !fp && r->linear_solver ? r->linear_solver : "");
+  if (r->solver_reason) row(fn, ctx, "Why this solver", "%s", r->solver_reason);
+  row(fn, ctx, "Time span", "%g to %g s%s", sp->t0, sp->t_end, r->partial ? " (stopped early)" : "");
+  if (r->partial) row(fn, ctx, "Time reached", "%.8g s", r->t_reached);
+  row(fn, ctx, "Output rows", "%d", r->nrows);
+  if (r->rtol > 0) row(fn, ctx, "Tolerances", "rtol %g, atol %g", r->rtol, r->atol);
+  row(fn, ctx, "Steps", "%ld", r->steps);
+  row(fn, ctx, "Function evaluations", "%ld", r->rhs_evals);
+  row(fn, ctx, "Jacobian evaluations", "%ld", r->jac_evals);
+  row(fn, ctx, "Error test failures", "%ld", r->err_test_fails);
+  row(fn, ctx, "Nonlinear iterations", "%ld", r->nonlin_iters);
+  if (r->ic_report && *r->ic_report) row(fn, ctx, "Initial values changed", "%s", r->ic_report);
+  if (r->ic_retries) row(fn, ctx, "Initial guesses retried", "%d", r->ic_retries);
+  if (r->max_step > 0) row(fn, ctx, "Largest step allowed", "%g s", r->max_step);
+  if (r->nconditions)
+    row(fn, ctx, "State events", "%d at %d switching condition%s%s", r->nevents, r->nconditions,
+        r->nconditions == 1 ? "" : "s", r->events_searched ? "" : " (not searched)");
+  if (r->rows_redone) row(fn, ctx, "Intervals integrated again", "%d (an output row violated the algebraic equations)", r->rows_redone);
+  bg_strbuf w = {0};
+  if (bg_simresult_row_warning(r, &w)) row(fn, ctx, "Warning", "%s", bg_sb_str(&w));
+  bg_sb_clear(&w);
+  if (bg_sim_verify_text(r, &w)) row(fn, ctx, "Verification", "%s", bg_sb_str(&w));
+  bg_sb_free(&w);
 }
 
 static void stats(rp_ctx *c, const bg_simresult *r) {
-  const bg_simspec *sp = &c->m->sim;
   static const char *head[] = {"Solver statistics", ""};
   rp_table t;
   rp_table_init(&t, 2, head, "ll");
-  int fp = r->linear_solver && !strcmp(r->linear_solver, "none");
-  row(&t, "Solver", "%s%s%s", r->solver_used ? r->solver_used : "none",
-      fp ? ", fixed-point iteration (no Jacobian)" : r->linear_solver ? ", linear algebra " : "",
-      !fp && r->linear_solver ? r->linear_solver : "");
-  if (r->solver_reason) row(&t, "Why this solver", "%s", r->solver_reason);
-  row(&t, "Time span", "%g to %g s%s", sp->t0, sp->t_end, r->partial ? " (stopped early)" : "");
-  if (r->partial) row(&t, "Time reached", "%.8g s", r->t_reached);
-  row(&t, "Output rows", "%d", r->nrows);
-  if (r->rtol > 0) row(&t, "Tolerances", "rtol %g, atol %g", r->rtol, r->atol);
-  row(&t, "Steps", "%ld", r->steps);
-  row(&t, "Function evaluations", "%ld", r->rhs_evals);
-  row(&t, "Jacobian evaluations", "%ld", r->jac_evals);
-  row(&t, "Error test failures", "%ld", r->err_test_fails);
-  row(&t, "Nonlinear iterations", "%ld", r->nonlin_iters);
-  if (r->ic_report && *r->ic_report) row(&t, "Initial values changed", "%s", r->ic_report);
-  if (r->ic_retries) row(&t, "Initial guesses retried", "%d", r->ic_retries);
-  if (r->max_step > 0) row(&t, "Largest step allowed", "%g s", r->max_step);
-  if (r->nconditions)
-    row(&t, "State events", "%d at %d switching condition%s%s", r->nevents, r->nconditions,
-        r->nconditions == 1 ? "" : "s", r->events_searched ? "" : " (not searched)");
-  if (r->rows_redone) row(&t, "Intervals integrated again", "%d (an output row violated the algebraic equations)", r->rows_redone);
-  bg_strbuf w = {0};
-  if (bg_simresult_row_warning(r, &w)) row(&t, "Warning", "%s", bg_sb_str(&w));
-  bg_sb_clear(&w);
-  if (bg_sim_verify_text(r, &w)) row(&t, "Verification", "%s", bg_sb_str(&w));
-  bg_sb_free(&w);
+  rp_sim_stat_rows(c, r, table_row, &t);
   rp_table_emit(&c->body, &t);
 }
 

@@ -69,7 +69,7 @@ static void sim_clause(const rp_ctx *c, bg_strbuf *out, int said_refusal) {
 }
 
 /* The one-sentence verdict, plain text. */
-static void verdict(const rp_ctx *c, bg_strbuf *out) {
+void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
   const bg_analysis *a = c->a;
   const bg_report_input *in = c->in;
   if (!a->complete || a->form == BG_FORM_INCOMPLETE) {
@@ -124,7 +124,8 @@ static void index_text(const rp_ctx *c, bg_strbuf *out) {
 }
 
 /* ---------------------------------------------------------------- summary table */
-static void row(rp_table *t, const char *key, const char *plain) {
+static void row(void *ctx, const char *key, const char *plain) {
+  rp_table *t = ctx;
   rp_table_cell(t, "%s", key);
   rp_table_text(t, plain);
 }
@@ -135,7 +136,7 @@ static void names(bg_strbuf *b, char **v, int n) {
   if (n > 30) bg_sb_printf(b, ", ... (%d in all)", n);
 }
 
-static void counts_row(const rp_ctx *c, rp_table *t) {
+static void counts_row(const rp_ctx *c, rp_row_fn row, void *t) {
   const bg_analysis *a = c->a;
   int c1 = 0, c2 = 0, alg = 0;
   for (int p = 0; p < a->npath; p++) c1 += a->path_class[p] == 1, c2 += a->path_class[p] == 2;
@@ -152,7 +153,7 @@ static void counts_row(const rp_ctx *c, rp_table *t) {
   bg_sb_free(&b);
 }
 
-static void sim_row(const rp_ctx *c, rp_table *t) {
+static void sim_row(const rp_ctx *c, rp_row_fn row, void *t) {
   const bg_report_input *in = c->in;
   bg_strbuf b = {0};
   if (!c->m->sim.present) bg_sb_puts(&b, "no simulate block");
@@ -166,43 +167,47 @@ static void sim_row(const rp_ctx *c, rp_table *t) {
   bg_sb_free(&b);
 }
 
-static void summary_table(const rp_ctx *c, rp_doc *d) {
+void rp_summary_rows(const rp_ctx *c, rp_row_fn row, void *t) {
   const bg_model *m = c->m;
   const bg_analysis *a = c->a;
-  static const char *head[] = {"Summary", ""};
-  rp_table t;
-  rp_table_init(&t, 2, head, "ll");
-  t.size = RP_SIZE_BODY;
   bg_strbuf b = {0};
   bg_model_summary(m, &b);
-  row(&t, "Model", bg_sb_str(&b));
+  row(t, "Model", bg_sb_str(&b));
   bg_sb_clear(&b);
   bg_sb_printf(&b, "%s%s", bg_method_name(a->method), a->complete ? "" : " (incomplete)");
-  row(&t, "Causality", bg_sb_str(&b));
+  row(t, "Causality", bg_sb_str(&b));
   bg_sb_clear(&b);
   bg_sb_printf(&b, "%d: ", a->nstates), names(&b, a->states, a->nstates);
-  row(&t, "States", bg_sb_str(&b));
+  row(t, "States", bg_sb_str(&b));
   bg_sb_clear(&b);
   names(&b, a->dependent_stores, a->ndependent);
-  row(&t, "Dependent stores", bg_sb_str(&b));
-  counts_row(c, &t);
+  row(t, "Dependent stores", bg_sb_str(&b));
+  counts_row(c, row, t);
   bg_sb_clear(&b);
   bg_sb_puts(&b, bg_form_name(a->form));
   if (c->in->facts->reduced_form)
     bg_sb_printf(&b, " (after elimination: %s)", c->in->facts->reduced_form);
   else if (c->in->facts->reduced_note) bg_sb_puts(&b, " (symbolic elimination skipped: work budget)");
-  row(&t, "Form", bg_sb_str(&b));
+  row(t, "Form", bg_sb_str(&b));
   bg_sb_clear(&b);
   if (a->index_predicted < 0) bg_sb_puts(&b, "unknown");
   else if (a->index_predicted >= 2) bg_sb_puts(&b, "above 1");
   else bg_sb_printf(&b, "%d", a->index_predicted);
   if (a->index_reason) bg_sb_printf(&b, " (%s)", a->index_reason);
-  row(&t, "Predicted index", bg_sb_str(&b));
+  row(t, "Predicted index", bg_sb_str(&b));
   bg_sb_clear(&b);
   index_text(c, &b);
-  row(&t, "Numeric index", bg_sb_str(&b));
+  row(t, "Numeric index", bg_sb_str(&b));
   bg_sb_free(&b);
-  sim_row(c, &t);
+  sim_row(c, row, t);
+}
+
+static void summary_table(const rp_ctx *c, rp_doc *d) {
+  static const char *head[] = {"Summary", ""};
+  rp_table t;
+  rp_table_init(&t, 2, head, "ll");
+  t.size = RP_SIZE_BODY;
+  rp_summary_rows(c, row, &t);
   rp_table_emit(d, &t);
 }
 
@@ -246,7 +251,7 @@ static void title_block(const rp_ctx *c, rp_doc *d) {
 
 static void verdict_box(const rp_ctx *c, rp_doc *d) {
   bg_strbuf v = {0}, mk = {0};
-  verdict(c, &v);
+  rp_verdict(c, &v);
   rp_esc(&mk, bg_sb_str(&v));
   double size = RP_SIZE_H2, pad = 10, w = rp_content_w(d) - 2 * pad;
   rp_lines l;

@@ -18,6 +18,7 @@
 #include "plot/plot.h"
 #include "plot/plot_linear.h"
 #include "report/report.h"
+#include "html/html.h"
 
 /* Raised whenever the calls below change: a module from another build is
  * refused rather than called wrongly. */
@@ -49,6 +50,8 @@
     (st, kind, bode, style, style_dir, fmt, path, out, dg))                                       \
   R(int, report_render, (const bg_run *r, const bg_report_opts *o, bg_strbuf *out, bg_diags *dg), \
     (r, o, out, dg))                                                                              \
+  R(int, html_report_render,                                                                      \
+    (const bg_run *r, const bg_report_opts *o, bg_strbuf *out, bg_diags *dg), (r, o, out, dg))    \
   V(style_path, (const char *name, const char *style_dir, char *buf, size_t n),                   \
     (name, style_dir, buf, n))                                                                    \
   V(render_versions, (bg_strbuf *out), (out))                                                     \

@@ -4,6 +4,7 @@
  * show the simulation and --check with outputs are refused with the fix. */
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #include "base/fileio.h"
@@ -11,7 +12,7 @@
 #include "output/output.h"
 #include "transform/transform.h"
 
-static const char *const eq_forms[] = {"text", "latex", "c", "json", NULL};
+static const char *const eq_forms[] = {"text", "latex", "mathml", "c", "json", NULL};
 static const char *const lin_forms[] = {"text", "latex", "json", "octave", "python", NULL};
 static const char *const methods[] = {"scap", "relaxed", "vandijk", "lagrange", NULL};
 static const char *const layouts[] = {"dot", "neato", "fdp", "sfdp", "pinned", "rows", NULL};
@@ -146,9 +147,10 @@ static int check_outputs(bg_cli_opts *o) {
   static const char *const plot_formats[] = {"svg", "pdf", "png", NULL};
   if (o->plot && !in_list(bg_path_ext(o->plot), plot_formats))
     return bg_cli_usage_error("--plot writes svg, pdf or png, not '%s'%s", o->plot, "");
-  if (o->report && strcmp(bg_path_ext(o->report), "pdf") != 0)
-    return bg_cli_usage_error("--report writes a PDF: give a .pdf file, not '%s'%s", o->report,
-                              "");
+  const char *rext = o->report ? bg_path_ext(o->report) : "";
+  if (o->report && strcasecmp(rext, "pdf") && strcasecmp(rext, "html") && strcasecmp(rext, "htm"))
+    return bg_cli_usage_error("--report writes a PDF or an HTML page: give a .pdf or .html file, "
+                              "not '%s'%s", o->report, "");
   const char *const lin_plots[] = {o->bode, o->nyquist, o->step};
   const char *const lin_names[] = {"--bode", "--nyquist", "--step"};
   for (int i = 0; i < 3; i++)

@@ -12,7 +12,7 @@
 #include "equations/eqsys_int.h"
 #include "model/model.h"
 
-enum { ST_TEXT, ST_LATEX };
+enum { ST_TEXT = BG_SYM_TEXT, ST_LATEX = BG_SYM_LATEX, ST_MATHML = BG_SYM_MATHML };
 
 /* The printers' symbols: one context per call; trees simplified on the way
  * (junction coefficients of +-1 cancel, 1/(1/A) is A, like terms collect). */
@@ -24,17 +24,13 @@ typedef struct prn {
 
 static void pr(prn *P, int nd, bg_strbuf *out) {
   int a = bg_eqsym_tree(P->S, P->s, nd, NULL);
-  bg_sym_print(P->S, a, P->st == ST_LATEX, bg_eqsym_name, (void *)P->s, out);
+  bg_sym_print(P->S, a, P->st, bg_eqsym_name, (void *)P->s, out);
 }
 
 static void pr_sig(const bg_eqsys *s, int v, int st, bg_strbuf *out) {
-  bg_sb_printf(out, st == ST_LATEX ? "%c_{%d}" : "%c%d", v & 1 ? 'f' : 'e', s->m->bond_num[v / 2]);
+  bg_eqsym_name((void *)s, SYM_SIG, v, st, out);
 }
 
-static void pr_unknown(const bg_eqsys *s, int i, int st, bg_strbuf *out) {
-  if (st == ST_LATEX) bg_eqsym_latex_name(s->uname[i], out);
-  else bg_sb_puts(out, s->uname[i]);
-}
 
 /* ------------------------------------------------------------ text, LaTeX */
 /* Sorted equations, headed by the definitions of the moduli that print by
@@ -43,33 +39,31 @@ static void print_eqs(prn *P, bg_strbuf *out) {
   const bg_eqsys *s = P->s;
   for (int k = 0; k < s->norder; k++) bg_eqsym_tree(P->S, s, s->sig_root[s->order[k]], NULL);
   for (int i = 0; i < s->n; i++) bg_eqsym_tree(P->S, s, s->row_root[i], NULL);
-  bg_eqsym_aliases(P->S, s, P->st == ST_LATEX, out);
-  const char *eq = P->st == ST_LATEX ? " &= " : " = ", *nl = P->st == ST_LATEX ? " \\\\\n" : "\n";
+  bg_eqsym_aliases(P->S, s, P->st, out);
+  const bg_eqpunct *pu = bg_eqpunct_of(P->st);
   for (int k = 0; k < s->norder; k++) {
     int v = s->order[k];
+    bg_sb_puts(out, pu->row);
     pr_sig(s, v, P->st, out);
-    bg_sb_puts(out, eq);
+    bg_sb_puts(out, pu->eq);
     pr(P, s->sig_root[v], out);
-    bg_sb_puts(out, nl);
+    bg_sb_puts(out, pu->end);
   }
 }
 
 static void print_rows(prn *P, int alg, bg_strbuf *out) {
   const bg_eqsys *s = P->s;
   int st = P->st;
-  const char *eq = st == ST_LATEX ? " &= " : " = ", *nl = st == ST_LATEX ? " \\\\\n" : "\n";
+  const bg_eqpunct *pu = bg_eqpunct_of(st);
   for (int i = alg ? s->nx : 0; i < (alg ? s->n : s->nx); i++) {
-    if (s->row_kind[i] == 0) {
-      if (st == ST_LATEX) bg_sb_puts(out, "\\dot{"), pr_unknown(s, i, st, out), bg_sb_puts(out, "}");
-      else bg_sb_printf(out, "%s'", s->uname[i]);
-      bg_sb_puts(out, eq);
-    } else {
-      bg_sb_printf(out, "0%s", eq);
-    }
+    bg_sb_puts(out, pu->row);
+    if (s->row_kind[i] == 0) bg_eqsym_name((void *)s, SYM_YP, i, st, out);
+    else bg_sb_puts(out, st == ST_MATHML ? "<mn>0</mn>" : "0");
+    bg_sb_puts(out, pu->eq);
     pr(P, s->row_root[i], out);
     if (st == ST_TEXT && alg) bg_sb_printf(out, "    (solved for %s)", s->uname[i]);
     if (st == ST_TEXT && !alg && s->row_kind[i]) bg_sb_printf(out, "    (dependent store: constraint)");
-    bg_sb_puts(out, nl);
+    bg_sb_puts(out, pu->end);
   }
 }
 
@@ -79,13 +73,16 @@ static void print_detectors(const bg_eqsys *s, int st, bg_strbuf *out) {
   const bg_model *m = s->m;
   if (!m->ndet) return;
   if (st == ST_TEXT) bg_sb_puts(out, "# detectors (outputs: the bond variables they read)\n");
+  const bg_eqpunct *pu = bg_eqpunct_of(st);
   for (int k = 0; k < m->ndet; k++) {
     const bg_xnode *x = &m->xnode[m->det_expr[k]];
-    if (st == ST_LATEX) bg_eqsym_latex_name(m->det_name[k], out);
+    bg_sb_puts(out, pu->row);
+    if (st == ST_MATHML) bg_eqsym_mathml_name(m->det_name[k], out);
+    else if (st == ST_LATEX) bg_eqsym_latex_name(m->det_name[k], out);
     else bg_sb_puts(out, m->det_name[k]);
-    bg_sb_puts(out, st == ST_LATEX ? " &= " : " = ");
+    bg_sb_puts(out, pu->eq);
     pr_sig(s, 2 * x->ref + (x->op == BG_X_FLOW), st, out);
-    bg_sb_puts(out, st == ST_LATEX ? " \\\\\n" : "\n");
+    bg_sb_puts(out, pu->end);
   }
 }
 
@@ -157,6 +154,33 @@ void bg_eqprint_latex(const bg_eqsys *s, bg_strbuf *out) {
     bg_sb_puts(out, "\n\\begin{align*}\n");
     bg_eqred_print(r, 1, out);
     bg_sb_puts(out, "\\end{align*}\n");
+  }
+  bg_eqred_free(r);
+}
+
+/* The same rows as MathML, an HTML fragment: one <math display="block"> per
+ * equation, each group headed by an <h3> (the HTML report's section 7 and
+ * --equations mathml; docs/equations.md). */
+void bg_eqprint_mathml(const bg_eqsys *s, bg_strbuf *out) {
+  prn P = {s, bg_sym_new(s->m), ST_MATHML};
+  bg_sb_puts(out, "<h3>Sorted equations</h3>\n");
+  print_eqs(&P, out);
+  if (s->nz) bg_sb_puts(out, "<h3>Algebraic residuals</h3>\n"), print_rows(&P, 1, out);
+  bg_sb_puts(out, "<h3>State equations</h3>\n");
+  print_rows(&P, 0, out);
+  if (s->m->ndet) bg_sb_puts(out, "<h3>Detectors</h3>\n");
+  print_detectors(s, ST_MATHML, out);
+  bg_sym_free(P.S);
+  bg_eqred *r = bg_eqred_build(s);
+  if (bg_eqred_is_ode(r) && bg_eqred_changed(r)) {
+    bg_sb_puts(out, "<h3>Reduced form</h3>\n<p>");
+    for (const char *c = bg_eqred_note(r); *c; c++) {
+      if (*c == '<') bg_sb_puts(out, "&lt;");
+      else if (*c == '&') bg_sb_puts(out, "&amp;");
+      else bg_sb_putc(out, *c);
+    }
+    bg_sb_puts(out, "</p>\n");
+    bg_eqred_print(r, ST_MATHML, out);
   }
   bg_eqred_free(r);
 }
@@ -293,6 +317,7 @@ void bg_eqprint_json(const bg_eqsys *s, bg_strbuf *out) {
 int bg_eqprint(const bg_eqsys *s, const char *format, bg_strbuf *out) {
   if (!strcmp(format, "text")) bg_eqprint_text(s, out);
   else if (!strcmp(format, "latex")) bg_eqprint_latex(s, out);
+  else if (!strcmp(format, "mathml")) bg_eqprint_mathml(s, out);
   else if (!strcmp(format, "json")) bg_eqprint_json(s, out);
   else return -1;
   return 0;

@@ -650,10 +650,12 @@ static void put_lhs(bg_eqred *r, int u, int deriv, int latex, bg_strbuf *out) {
 }
 
 static void put_row(bg_eqred *r, int u, int deriv, int e, int latex, bg_strbuf *out) {
+  const bg_eqpunct *pu = bg_eqpunct_of(latex);
+  bg_sb_puts(out, pu->row);
   put_lhs(r, u, deriv, latex, out);
-  bg_sb_puts(out, latex ? " &= " : " = ");
+  bg_sb_puts(out, pu->eq);
   bg_sym_print(r->S, e, latex, bg_eqsym_name, (void *)r->s, out);
-  bg_sb_puts(out, latex ? " \\\\\n" : "\n");
+  bg_sb_puts(out, pu->end);
 }
 
 /* The coefficient prints with a leading minus sign. */
@@ -680,16 +682,17 @@ static void print_mass_lhs(bg_eqred *r, int lhs, int latex, bg_strbuf *out) {
     if (m->kind == SYM_YP) yp = t;
     int M = yp >= 0 ? bg_sym_scale(S, w, bg_sym_div(S, t, yp)) : bg_sym_scale(S, w, t);
     int paren = S->node[M].kind == SYM_ADD;
-    if (k && !paren && coef_negative(S, M, latex, r->s)) { /* "a - b*v'", not "a + -b*v'" */
+    const bg_eqpunct *pu = bg_eqpunct_of(latex);
+    if (k && !paren && coef_negative(S, M, BG_SYM_TEXT, r->s)) { /* "a - b*v'", not "a + -b*v'" */
       M = bg_sym_scale(S, -1, M);
-      bg_sb_puts(out, " - ");
+      bg_sb_puts(out, pu->minus);
     } else if (k)
-      bg_sb_puts(out, " + ");
+      bg_sb_puts(out, pu->plus);
     if (!(S->node[M].kind == SYM_NUM && S->node[M].c == 1)) {
-      if (paren) bg_sb_puts(out, latex ? "\\left(" : "(");
+      if (paren) bg_sb_puts(out, pu->lp);
       bg_sym_print(S, M, latex, bg_eqsym_name, (void *)r->s, out);
-      if (paren) bg_sb_puts(out, latex ? "\\right)" : ")");
-      if (yp >= 0) bg_sb_puts(out, latex ? " " : "*");
+      if (paren) bg_sb_puts(out, pu->rp);
+      if (yp >= 0) bg_sb_puts(out, pu->times);
     }
     if (yp >= 0) bg_sym_print(S, yp, latex, bg_eqsym_name, (void *)r->s, out);
   }
@@ -704,11 +707,13 @@ void bg_eqred_print(bg_eqred *r, int latex, bg_strbuf *out) {
                  r->print_cut, r->print_cut == 1 ? "" : "s");
   if (!r->ode) return;
   if (r->nmass && !latex) bg_sb_puts(out, "# Lagrange equations, mass-matrix form M(x) v' = f(x)\n");
+  const bg_eqpunct *pu = bg_eqpunct_of(latex);
   for (int k = 0; k < r->nmass; k++) {
+    bg_sb_puts(out, pu->row);
     print_mass_lhs(r, r->mass_lhs[k], latex, out);
-    bg_sb_puts(out, latex ? " &= " : " = ");
+    bg_sb_puts(out, pu->eq);
     bg_sym_print(r->S, r->mass_rhs[k], latex, bg_eqsym_name, (void *)r->s, out);
-    bg_sb_puts(out, latex ? " \\\\\n" : "\n");
+    bg_sb_puts(out, pu->end);
   }
   if (r->nmass && !latex) bg_sb_puts(out, "# explicit form\n");
   for (int k = 0; k < r->nsol; k++) put_row(r, r->sol_u[k], 0, r->sol_expr[k], latex, out);

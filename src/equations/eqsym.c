@@ -74,6 +74,15 @@ int bg_eqsym_tree(bg_sym *S, const bg_eqsys *s, int nd, const int *sigmap) {
 }
 
 /* ------------------------------------------------------------ names */
+const bg_eqpunct *bg_eqpunct_of(int form) {
+  static const bg_eqpunct p[3] = {
+      {"", " = ", "\n", "(", ")", "*", " + ", " - "},
+      {"", " &= ", " \\\\\n", "\\left(", "\\right)", " ", " + ", " - "},
+      {"<math display=\"block\"><mrow>", "<mo>=</mo>", "</mrow></math>\n", "<mrow><mo>(</mo>",
+       "<mo>)</mo></mrow>", "<mo>&#x2062;</mo>", "<mo>+</mo>", "<mo>&#x2212;</mo>"}};
+  return &p[form == BG_SYM_MATHML ? 2 : form ? 1 : 0];
+}
+
 void bg_eqsym_latex_name(const char *nm, bg_strbuf *out) {
   const char *dot = strrchr(nm, '.');
   if (dot && dot[1]) {
@@ -89,6 +98,38 @@ void bg_eqsym_latex_name(const char *nm, bg_strbuf *out) {
   }
 }
 
+/* Names are identifiers, dotted paths and bond variables: only an unlikely
+ * '&' or '<' needs escaping. */
+static void ml_text(bg_strbuf *out, const char *s, size_t n) {
+  for (size_t i = 0; i < n && s[i]; i++) {
+    if (s[i] == '&') bg_sb_puts(out, "&amp;");
+    else if (s[i] == '<') bg_sb_puts(out, "&lt;");
+    else if (s[i] == '>') bg_sb_puts(out, "&gt;");
+    else bg_sb_putc(out, s[i]);
+  }
+}
+
+void bg_eqsym_mathml_name(const char *nm, bg_strbuf *out) {
+  const char *dot = strrchr(nm, '.');
+  if (dot && dot[1]) { /* C1.q: q with subscript C1, upright (a name, not a product) */
+    bg_sb_puts(out, "<msub><mi>"), ml_text(out, dot + 1, strlen(dot + 1));
+    bg_sb_puts(out, "</mi><mi mathvariant=\"normal\">"), ml_text(out, nm, (size_t)(dot - nm));
+    bg_sb_puts(out, "</mi></msub>");
+  } else if ((nm[0] == 'e' || nm[0] == 'f') && isdigit((unsigned char)nm[1])) {
+    bg_sb_printf(out, "<msub><mi>%c</mi><mn>", nm[0]), ml_text(out, nm + 1, strlen(nm + 1));
+    bg_sb_puts(out, "</mn></msub>");
+  } else {
+    bg_sb_puts(out, "<mi>"), ml_text(out, nm, strlen(nm)), bg_sb_puts(out, "</mi>");
+  }
+}
+
+/* A name in one of the printers' forms (BG_SYM_*). */
+static void form_name(const char *nm, int form, bg_strbuf *out) {
+  if (form == BG_SYM_MATHML) bg_eqsym_mathml_name(nm, out);
+  else if (form == BG_SYM_LATEX) bg_eqsym_latex_name(nm, out);
+  else bg_sb_puts(out, nm);
+}
+
 void bg_eqsym_name(void *ctx, int kind, int ref, int latex, bg_strbuf *out) {
   const bg_eqsys *s = ctx;
   const bg_model *m = s->m;
@@ -100,24 +141,29 @@ void bg_eqsym_name(void *ctx, int kind, int ref, int latex, bg_strbuf *out) {
   case SYM_Y: nm = s->uname[ref]; break;
   case SYM_ALIAS: nm = m->elem_name[ref]; break;
   case SYM_YP:
-    if (latex) bg_sb_puts(out, "\\dot{"), bg_eqsym_latex_name(s->uname[ref], out), bg_sb_puts(out, "}");
+    if (latex == BG_SYM_MATHML)
+      bg_sb_puts(out, "<mover accent=\"true\"><mrow>"), bg_eqsym_mathml_name(s->uname[ref], out),
+          bg_sb_puts(out, "</mrow><mo>&#x02d9;</mo></mover>");
+    else if (latex) bg_sb_puts(out, "\\dot{"), bg_eqsym_latex_name(s->uname[ref], out), bg_sb_puts(out, "}");
     else bg_sb_printf(out, "%s'", s->uname[ref]);
     return;
   default:
-    bg_sb_printf(out, latex ? "%c_{%d}" : "%c%d", ref & 1 ? 'f' : 'e', m->bond_num[ref / 2]);
+    bg_sb_printf(out, latex == BG_SYM_MATHML ? "<msub><mi>%c</mi><mn>%d</mn></msub>" : latex ? "%c_{%d}" : "%c%d",
+                 ref & 1 ? 'f' : 'e', m->bond_num[ref / 2]);
     return;
   }
-  if (latex) bg_eqsym_latex_name(nm, out);
-  else bg_sb_puts(out, nm);
+  form_name(nm, latex, out);
 }
 
 void bg_eqsym_aliases(bg_sym *S, const bg_eqsys *s, int latex, bg_strbuf *out) {
   for (int k = 0; k < S->nalias; k++) {
     if (S->alias_expr[k] < 0) continue;
+    const bg_eqpunct *pu = bg_eqpunct_of(latex);
+    bg_sb_puts(out, pu->row);
     bg_eqsym_name((void *)s, SYM_ALIAS, k, latex, out);
-    bg_sb_puts(out, latex ? " &= " : " = ");
+    bg_sb_puts(out, pu->eq);
     bg_sym_print(S, S->alias_expr[k], latex, bg_eqsym_name, (void *)s, out);
-    bg_sb_puts(out, latex ? " \\\\\n" : "\n");
+    bg_sb_puts(out, pu->end);
   }
 }
 

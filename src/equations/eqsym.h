@@ -20,6 +20,15 @@ void bg_eqsym_name(void *ctx, int kind, int ref, int latex, bg_strbuf *out);
 void bg_eqsym_aliases(bg_sym *S, const bg_eqsys *s, int latex, bg_strbuf *out);
 /* "C1.q" -> "q_{\mathrm{C1}}", "e4" -> "e_{4}", other names upright. */
 void bg_eqsym_latex_name(const char *nm, bg_strbuf *out);
+/* The same as MathML: <msub><mi>q</mi><mi mathvariant="normal">C1</mi></msub>. */
+void bg_eqsym_mathml_name(const char *nm, bg_strbuf *out);
+/* What the equation printers put around and between the parts of a row, per
+ * form (BG_SYM_*): the row's start, " = " (LaTeX " &= "), its end, parentheses,
+ * a product's dot and the signs of a sum. */
+typedef struct bg_eqpunct {
+  const char *row, *eq, *end, *lp, *rp, *times, *plus, *minus;
+} bg_eqpunct;
+const bg_eqpunct *bg_eqpunct_of(int form);
 /* JSON objects {"name", "kind": "alias"|"derivative", "expr"} for the aliases
  * (T) and their derivative leaves (dT/dphi, printed "(dT/dphi)") of S that
  * are not yet in `seen` (names, one a line; the new ones are added), each

@@ -15,6 +15,7 @@
 #include "output/output_int.h"
 #include "plot/plot.h"
 #include "report/report.h"
+#include "html/html.h"
 
 void bg_output_init(bg_output *w, bg_run *run, const bg_output_opts *o) {
   memset(w, 0, sizeof *w);
@@ -124,8 +125,12 @@ static bg_output_status write_plot(bg_output *w, const bg_output_kind *k, const 
 /* ------------------------------------------------------ report, transform */
 static bg_output_status write_report(bg_output *w, const bg_output_kind *k, const char *form,
                                      const char *path, bg_strbuf *out) {
-  (void)k, (void)form, (void)path;
+  (void)k;
   bg_report_opts ro = {&w->o.render, w->o.tx ? w->o.transform : NULL, w->o.tx, NULL, NULL};
+  /* the file's extension (or form "html") chooses: the HTML report, else the PDF */
+  const char *ext = path ? bg_path_ext(path) : "";
+  if (form ? !strcmp(form, "html") : !strcasecmp(ext, "html") || !strcasecmp(ext, "htm"))
+    return render_status(bg_html_report_render(w->run, &ro, out, &w->dg));
   return render_status(bg_report_render(w->run, &ro, out, &w->dg));
 }
 
@@ -176,10 +181,10 @@ const bg_output_kind bg_output_kinds[] = {
     /* chosen by options of their own */
     {"h", BG_STAGE_EQUATIONS, 0, bg_out_export_row, "the C export's header"},
     {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},
-    {"equations", BG_STAGE_EQUATIONS, 0, write_equations, "the equations: text, latex, json or c"},
+    {"equations", BG_STAGE_EQUATIONS, 0, write_equations, "the equations: text, latex, mathml, json or c"},
     {"plot", BG_STAGE_SIMULATION, BG_OUTK_DRAWS, write_plot, "the simulation plots: svg, pdf or png"},
     {"report", BG_STAGE_REDUCTION, BG_OUTK_DRAWS | BG_OUTK_MODEL_SIM | BG_OUTK_MODEL_LIN, write_report,
-     "the multi-page PDF report"},
+     "the report: multi-page PDF, or one HTML page (FILE.html or form html)"},
     {"linear", BG_STAGE_LINEAR, 0, bg_out_linear, "the linear analysis: text, latex, json, octave or python"},
     {"bode", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Bode diagrams: svg, pdf or png"},
     {"nyquist", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Nyquist diagrams: svg, pdf or png"},

@@ -184,10 +184,13 @@ typedef struct bg_symenv {
 double bg_sym_eval(bg_sym *S, int a, const bg_symenv *env);
 
 /* ---------------------------------------------------------------- printing */
+/* The printers' forms: text, LaTeX, presentation MathML (the content of a
+ * <math> element: <mrow>s, <mfrac>, <msup>, <msqrt>; names from the caller). */
+enum { BG_SYM_TEXT, BG_SYM_LATEX, BG_SYM_MATHML };
 /* Names of leaves: unknowns, their derivatives and bond variables are named
- * by the caller (params, inputs and t by the model). latex: 0 text, 1 LaTeX. */
+ * by the caller (params, inputs and t by the model). latex: a BG_SYM_* form. */
 typedef void (*bg_sym_namefn)(void *ctx, int kind, int ref, int latex, bg_strbuf *out);
-void bg_sym_print(bg_sym *S, int a, int latex, bg_sym_namefn name, void *ctx, bg_strbuf *out);
+void bg_sym_print(bg_sym *S, int a, int mode, bg_sym_namefn name, void *ctx, bg_strbuf *out);
 /* Model expression `root` simplified and printed as text (sym_xprint.c):
  * store states C1.q / L1.p, user states and params by name, bond
  * variables e7 / f7. */
