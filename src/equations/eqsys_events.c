@@ -322,8 +322,14 @@ static void explain_roots(bg_eqsys *s, const double *g, double t) {
   int line = line_of(s, I);
   char at[32] = "";
   if (line > 0) snprintf(at, sizeof at, " (line %d)", line);
-  snprintf(s->err, sizeof s->err, "%s in the switching condition '%.150s'%s at t = %g", what,
-           s->root_text[i], at, t);
+  /* formatted whole, then cut to s->err's size (a long reason and
+   * condition are cut at the end, never mid-way) */
+  bg_strbuf sb = {0};
+  bg_sb_printf(&sb, "%s in the switching condition '%.150s'%s at t = %g", what, s->root_text[i], at, t);
+  size_t n = sb.len < sizeof s->err ? sb.len : sizeof s->err - 1;
+  memcpy(s->err, bg_sb_str(&sb), n);
+  s->err[n] = 0;
+  bg_sb_free(&sb);
   s->has_err = 1;
 }
 
