@@ -32,7 +32,7 @@ cp $d/bgt_rc.yaml "$tmp/rc_as.bg"
 "$BGDRAW" "$tmp/rc_as.bg" -o "$tmp/c.csv" && cmp -s "$tmp/c.csv" "$tmp/rc.csv"
 check "a YAML model named .bg is imported" $?
 "$BGDRAW" --import examples/rlc.bg -T bg >/dev/null 2>"$tmp/err"
-[ $? = 2 ] && grep -q 'not a BondGraphTools model' "$tmp/err"; check "--import refuses a .bg model" $?
+[ $? = 2 ] && grep -q 'not another tool' "$tmp/err"; check "--import refuses a .bg model" $?
 "$BGDRAW" $d/bgt_rc.yaml -o "$tmp/x.bg" 2>/dev/null; [ $? = 2 ] && [ ! -e "$tmp/x.bg" ]
 check ".bg output without --import or --transform is refused" $?
 "$BGDRAW" --import $d/bgt_rc.yaml --transform merge-stores -o "$tmp/x.bg" 2>/dev/null; [ $? = 2 ]

@@ -190,7 +190,7 @@ int main(int argc, char **argv) {
     return rc;
   }
   if (r.opts.import && !r.R->imported) {
-    fprintf(stderr, "bgdraw: --import: %s is a bgdraw model already, not a BondGraphTools model\n",
+    fprintf(stderr, "bgdraw: --import: %s is a bgdraw model already, not another tool's (BondGraphTools YAML, an MTT drawing)\n",
             r.R->name);
     run_free(&r);
     return EXIT_USAGE;

@@ -118,7 +118,7 @@ static const bg_ynode *seq_of(reader *r, const bg_ynode *model, const char *key,
 static const char *comp_param(reader *r, bg_ig_model *m, const char *comp, const char *p,
                               const char *value, int line) {
   const char *name = bg_ig_name(r->g, m, bg_ig_printf(r->g, "%s_%s", comp, p));
-  bg_ig_add_param(m, (bg_ig_param){name, value, NULL, line});
+  bg_ig_add_param(m, (bg_ig_param){name, value, NULL, line, 0, 0});
   return name;
 }
 

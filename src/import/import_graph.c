@@ -45,6 +45,18 @@ void bg_ig_add_param(bg_ig_model *m, bg_ig_param p) {
   m->params[m->nparams++] = p;
 }
 
+void bg_ig_add_extra(bg_ig_model *m, int file, int line, const char *text) {
+  if (m->nextra == m->capextra) {
+    m->capextra = m->capextra ? 2 * m->capextra : 8;
+    m->extra = bg_xrealloc(m->extra, (size_t)m->capextra * sizeof *m->extra);
+    m->extra_lines = bg_xrealloc(m->extra_lines, (size_t)m->capextra * sizeof *m->extra_lines);
+    m->extra_files = bg_xrealloc(m->extra_files, (size_t)m->capextra * sizeof *m->extra_files);
+  }
+  m->extra[m->nextra] = text;
+  m->extra_lines[m->nextra] = line;
+  m->extra_files[m->nextra++] = file;
+}
+
 /* fmt's text in g's arena. */
 static char *arena_vprintf(bg_ig *g, const char *fmt, va_list ap) {
   va_list ap2;
@@ -127,7 +139,7 @@ void bg_ig_free(bg_ig *g) {
   for (int i = 0; i < g->nmodels; i++) {
     bg_ig_model *m = &g->models[i];
     free(m->nodes), free(m->bonds), free(m->params), free(m->notes), free(m->note_lines);
-    free(m->extra), free(m->extra_lines);
+    free(m->extra), free(m->extra_lines), free(m->extra_files);
   }
   free(g->models);
   bg_arena_free(&g->arena);
@@ -137,18 +149,21 @@ void bg_ig_free(bg_ig *g) {
 /* ------------------------------------------------------------ printing */
 typedef struct {
   bg_strbuf sb;
-  bg_ivec map; /* source line of each printed line */
+  bg_ivec map;  /* source line of each printed line */
+  bg_ivec fmap; /* and its source file (bg_diags index) */
 } printer;
 
-/* One line of text (no newline inside) from source line `line`. */
-static void put_line(printer *p, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static void put_line(printer *p, int line, const char *fmt, ...) {
+/* One line of text (no newline inside) from line `line` of source `file`. */
+static void put_line(printer *p, int file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static void put_line(printer *p, int file, int line, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
   bg_sb_vprintf(&p->sb, fmt, ap);
   va_end(ap);
   bg_sb_putc(&p->sb, '\n');
   bg_ivec_push(&p->map, line);
+  bg_ivec_push(&p->fmap, file);
 }
 
 /* The value of an Sf: BondGraphTools' f is the flow out of the source, the
@@ -165,13 +180,16 @@ static const char *node_value(const bg_ig *g, const bg_ig_model *m, int i) {
   return n->value;
 }
 
+static const char *const arrows[] = {"->", "->|", "|->"}; /* by bg_ig_bond.stroke */
+
 static void emit_model(const bg_ig *g, const bg_ig_model *m, int sub, printer *p) {
   const char *ind = sub ? "  " : "";
-  for (int i = 0; i < m->nnotes; i++) put_line(p, m->note_lines[i], "%s# %s", ind, m->notes[i]);
+  for (int i = 0; i < m->nnotes; i++) put_line(p, m->file, m->note_lines[i], "%s# %s", ind, m->notes[i]);
   for (int i = 0; i < m->nparams; i++) {
     const bg_ig_param *q = &m->params[i];
-    if (q->desc) put_line(p, q->line, "%sparam %s = %s \"%s\"", ind, q->name, q->value, q->desc);
-    else put_line(p, q->line, "%sparam %s = %s", ind, q->name, q->value);
+    const char *kw = q->is_input ? "input" : "param";
+    if (q->desc) put_line(p, q->file, q->line, "%s%s %s = %s \"%s\"", ind, kw, q->name, q->value, q->desc);
+    else put_line(p, q->file, q->line, "%s%s %s = %s", ind, kw, q->name, q->value);
   }
   int nports = 0;
   bg_strbuf ports = {0};
@@ -179,7 +197,7 @@ static void emit_model(const bg_ig *g, const bg_ig_model *m, int sub, printer *p
     if (m->nodes[i].is_port) {
       bg_sb_printf(&ports, "%s%s", nports++ ? ", " : "", m->nodes[i].name);
     }
-  if (nports) put_line(p, m->line, "%sport %s", ind, bg_sb_str(&ports));
+  if (nports) put_line(p, m->file, m->line, "%sport %s", ind, bg_sb_str(&ports));
   bg_sb_free(&ports);
   for (int i = 0; i < m->nnodes; i++) {
     const bg_ig_node *n = &m->nodes[i];
@@ -191,36 +209,40 @@ static void emit_model(const bg_ig *g, const bg_ig_model *m, int sub, printer *p
     if (n->law) bg_sb_printf(&st, " : %s", n->law);
     if (n->opts) bg_sb_printf(&st, "  [%s]", n->opts);
     if (n->comment) bg_sb_printf(&st, "  # %s", n->comment);
-    put_line(p, n->line, "%s", bg_sb_str(&st));
+    put_line(p, n->file, n->line, "%s", bg_sb_str(&st));
     bg_sb_free(&st);
   }
   for (int i = 0; i < m->nbonds; i++) {
     const bg_ig_bond *b = &m->bonds[i];
-    put_line(p, b->line, "%sbond %s%s -> %s%s", ind, m->nodes[b->a].name, b->pa,
+    int s = b->stroke == BG_IG_HEAD ? 1 : b->stroke == BG_IG_TAIL ? 2 : 0;
+    put_line(p, b->file, b->line, "%sbond %s%s %s %s%s", ind, m->nodes[b->a].name, b->pa, arrows[s],
              m->nodes[b->b].name, b->pb);
   }
-  for (int i = 0; i < m->nextra; i++) put_line(p, m->extra_lines[i], "%s%s", ind, m->extra[i]);
+  for (int i = 0; i < m->nextra; i++)
+    put_line(p, m->extra_files ? m->extra_files[i] : m->file, m->extra_lines[i], "%s%s", ind, m->extra[i]);
 }
 
 void bg_ig_emit(const bg_ig *g, bg_import_result *out) {
-  printer p = {{0}, {0}};
+  printer p = {{0}, {0}, {0}};
   bg_ivec_push(&p.map, 0); /* line 0 */
-  put_line(&p, 0, "# %s, imported from %s (%s) by bgdraw; conventions in docs/import.md",
-           g->models[0].name, g->source_path, g->format);
+  bg_ivec_push(&p.fmap, 0);
   const bg_ig_model *root = &g->models[0];
-  if (root->title) put_line(&p, root->line, "model %s \"%s\"", root->name, root->title);
-  else put_line(&p, root->line, "model %s", root->name);
+  put_line(&p, 0, 0, "# %s, imported from %s (%s) by bgdraw; conventions in docs/import.md",
+           root->name, g->source_path, g->format);
+  if (root->title) put_line(&p, root->file, root->line, "model %s \"%s\"", root->name, root->title);
+  else put_line(&p, root->file, root->line, "model %s", root->name);
   emit_model(g, root, 0, &p);
   for (int i = 1; i < g->nmodels; i++) {
     const bg_ig_model *m = &g->models[i];
-    put_line(&p, 0, "%s", "");
-    put_line(&p, m->line, "submodel %s", m->name);
+    put_line(&p, 0, 0, "%s", "");
+    put_line(&p, m->file, m->line, "submodel %s%s", m->name, m->params_sig ? m->params_sig : "");
     emit_model(g, m, 1, &p);
-    put_line(&p, m->line, "end");
+    put_line(&p, m->file, m->line, "end");
   }
   out->text = p.sb.s ? p.sb.s : strdup("");
   out->len = p.sb.len;
   out->line_of = p.map.v;
+  out->file_of = p.fmap.v;
   out->nlines = p.map.n - 1;
 }
 
@@ -234,7 +256,8 @@ int bg_ig_orient(bg_ig *g, int mi) {
     int a_tail = b.ca == BG_IG_TAIL || b.cb == BG_IG_HEAD;
     if (!(a_head && a_tail)) {
       if (a_head) { /* b -> a */
-        m->bonds[i] = (bg_ig_bond){b.b, b.a, b.pb, b.pa, b.cb, b.ca, b.line};
+        m->bonds[i] = (bg_ig_bond){b.b, b.a, b.pb, b.pa, b.cb, b.ca, b.line, b.file,
+                                    b.stroke == BG_IG_HEAD ? BG_IG_TAIL : b.stroke == BG_IG_TAIL ? BG_IG_HEAD : 0};
       }
       continue;
     }
@@ -249,11 +272,11 @@ int bg_ig_orient(bg_ig *g, int mi) {
                    m->nodes[b.a].name, b.pa, m->nodes[b.b].name, b.pb,
                    both_head ? "take" : "give", zn);
     if (both_head) {
-      m->bonds[i] = (bg_ig_bond){z, b.a, "", b.pa, BG_IG_FREE, BG_IG_FREE, b.line};
-      bg_ig_add_bond(m, (bg_ig_bond){z, b.b, "", b.pb, BG_IG_FREE, BG_IG_FREE, b.line});
+      m->bonds[i] = (bg_ig_bond){z, b.a, "", b.pa, BG_IG_FREE, BG_IG_FREE, b.line, b.file, 0};
+      bg_ig_add_bond(m, (bg_ig_bond){z, b.b, "", b.pb, BG_IG_FREE, BG_IG_FREE, b.line, b.file, 0});
     } else {
-      m->bonds[i] = (bg_ig_bond){b.a, z, b.pa, "", BG_IG_FREE, BG_IG_FREE, b.line};
-      bg_ig_add_bond(m, (bg_ig_bond){b.b, z, b.pb, "", BG_IG_FREE, BG_IG_FREE, b.line});
+      m->bonds[i] = (bg_ig_bond){b.a, z, b.pa, "", BG_IG_FREE, BG_IG_FREE, b.line, b.file, 0};
+      bg_ig_add_bond(m, (bg_ig_bond){b.b, z, b.pb, "", BG_IG_FREE, BG_IG_FREE, b.line, b.file, 0});
     }
     added++;
   }

@@ -49,6 +49,7 @@ typedef struct bg_ig_node {
                                when its bond points into it) */
   int is_port;        /* a submodel port (BondGraphTools' exposed SS): no statement */
   int line;           /* source line */
+  int file;           /* source (bg_diags index; 0: the model file) */
 } bg_ig_node;
 
 typedef struct bg_ig_bond {
@@ -56,11 +57,15 @@ typedef struct bg_ig_bond {
   const char *pa, *pb;    /* port suffixes (".1", ".A") or "" */
   int ca, cb;             /* BG_IG_FREE / HEAD / TAIL */
   int line;
+  int file;
+  int stroke;             /* a fixed causal stroke: 0 none, BG_IG_HEAD at b, BG_IG_TAIL at a */
 } bg_ig_bond;
 
 typedef struct bg_ig_param {
   const char *name, *value, *desc;
   int line;
+  int file;
+  int is_input;           /* an `input` (a function of time), not a `param` */
 } bg_ig_param;
 
 typedef struct bg_ig_model {
@@ -77,8 +82,11 @@ typedef struct bg_ig_model {
   int nnotes, capnotes;
   const char **extra;     /* .bg statements after the bonds (the YAML's bgdraw: list) */
   int *extra_lines;
-  int nextra;
+  int *extra_files;       /* nullable: then all in `file` */
+  int nextra, capextra;
   int line;
+  int file;               /* the source of its notes, extra statements and header */
+  const char *params_sig; /* "(a = 1, b)" after a submodel's name, or NULL */
 } bg_ig_model;
 
 typedef struct bg_ig {
@@ -92,6 +100,8 @@ int bg_ig_add_model(bg_ig *g, const char *name, int line);
 int bg_ig_add_node(bg_ig_model *m, bg_ig_node n);
 int bg_ig_add_bond(bg_ig_model *m, bg_ig_bond b);
 void bg_ig_add_param(bg_ig_model *m, bg_ig_param p);
+/* A .bg statement after the bonds, from line `line` of source `file`. */
+void bg_ig_add_extra(bg_ig_model *m, int file, int line, const char *text);
 void bg_ig_add_note(bg_ig *g, bg_ig_model *m, int line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 /* A string in the graph's arena. */
@@ -113,4 +123,36 @@ void bg_ig_free(bg_ig *g);
 
 /* The BondGraphTools reader: the YAML tree into g. 0 on success. */
 int bg_bgt_read(const bg_ynode *doc, bg_ig *g, bg_diags *dg);
+
+/* ---------------------------------------------------------------- xfig */
+/* What an MTT drawing is made of: open polylines (bonds, strokes) and texts
+ * (components, port labels) with their coordinates (xfig units, 1200 a
+ * inch, y downwards) and the file line each object starts on. */
+enum { BG_FIG_LINE = 1, BG_FIG_TEXT = 2 };
+enum { BG_FIG_MAX_OBJECTS = 1000000 };
+typedef struct {
+  int x, y;
+} bg_fig_pt;
+typedef struct {
+  int kind;      /* BG_FIG_LINE or BG_FIG_TEXT */
+  int line;      /* the object's first line in the file */
+  int sub_type;  /* polyline: 1 open polyline; text: justification */
+  int style;     /* polyline: 0 solid */
+  int depth;
+  int arrows;    /* polyline: it has an arrow head at either end */
+  bg_fig_pt *pts; /* polyline: its points; text: its anchor */
+  int npts;
+  const char *text; /* text: the string, escapes undone */
+} bg_fig_obj;
+typedef struct {
+  bg_fig_obj *objs; /* owned (free); their points and strings in the arena */
+  int n, cap;
+} bg_fig;
+/* Parses an xfig 3.x file (errors at its lines in source `file`). 0 on success. */
+int bg_fig_parse(const char *src, size_t len, bg_arena *a, bg_diags *dg, int file, bg_fig *out);
+
+/* The MTT reader (mtt_read.c): the drawing src (at path; its label file,
+ * numeric parameters, inputs, simulation parameters and subsystems beside
+ * it) into g. 0 on success. */
+int bg_mtt_read(const char *path, const char *src, size_t len, bg_ig *g, bg_diags *dg);
 #endif

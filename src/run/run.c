@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "analysis/analysis.h"
 #include "base/fileio.h"
@@ -63,7 +64,8 @@ static bg_model *compile(bg_run *r, bg_ast *ast) {
 }
 
 /* Diagnostics in the imported .bg text (source k and the instances' sources
- * sharing its text) point at the foreign file's line they came from. */
+ * sharing its text) point at the foreign file's line they came from: the
+ * model file's, or another file the import read (an MTT label file). */
 static void point_at_source(bg_run *r, int k, int from) {
   const char *text = r->dg.sources[k].src;
   const bg_import_result *ir = &r->import;
@@ -71,11 +73,13 @@ static void point_at_source(bg_run *r, int k, int from) {
     bg_srcloc *at = &r->dg.items[i].loc;
     if (at->file <= 0 || at->file >= r->dg.nsources || r->dg.sources[at->file].src != text) continue;
     if (at->line < 1 || at->line > ir->nlines || !ir->line_of[at->line]) continue;
-    int line = ir->line_of[at->line], col = 1;
-    const char *s = r->src;
-    for (int l = 1; l < line && s; l++) s = memchr(s, '\n', r->srclen - (size_t)(s - r->src)), s = s ? s + 1 : s;
-    while (s && s < r->src + r->srclen && (*s == ' ' || *s == '-' || *s == '\t')) s++, col++;
-    *at = (bg_srcloc){line, col, 0};
+    int line = ir->line_of[at->line], col = 1, file = ir->file_of ? ir->file_of[at->line] : 0;
+    const char *src = file ? r->dg.sources[file].src : r->src;
+    size_t len = file ? r->dg.sources[file].srclen : r->srclen;
+    const char *s = src;
+    for (int l = 1; l < line && s; l++) s = memchr(s, '\n', len - (size_t)(s - src)), s = s ? s + 1 : s;
+    while (s && s < src + len && (*s == ' ' || *s == '-' || *s == '\t')) s++, col++;
+    *at = (bg_srcloc){line, col, file};
   }
 }
 
@@ -134,6 +138,22 @@ int bg_run_load(bg_run *r, const char *name, char *text, size_t len) {
 
 int bg_run_load_file(bg_run *r, const char *path) {
   size_t len = 0;
+  struct stat st;
+  if (!stat(path, &st) && S_ISDIR(st.st_mode)) { /* an MTT model's folder: its drawing */
+    char *why = NULL, *fig = bg_import_find_drawing(path, &why);
+    if (!fig) {
+      bg_diags_init(&r->dg, path, NULL, 0);
+      r->done[BG_STAGE_MODEL] = 1;
+      r->name = strdup(path);
+      bg_diag_error(&r->dg, (bg_srcloc){0}, "%s", why);
+      free(why);
+      return -1;
+    }
+    char *text = bg_read_file(fig, &len);
+    int rc = bg_run_load(r, fig, text, len);
+    free(fig);
+    return rc;
+  }
   char *text = bg_read_file(path, &len);
   return bg_run_load(r, path, text, len);
 }
