@@ -6,6 +6,7 @@ for the same outputs, and its diagnostics."""
 import gc
 import glob
 import json
+import math
 import os
 
 import numpy as np
@@ -135,8 +136,10 @@ def _record_view(a):
         "elements": [(e.name, e.kind, e.causality) for e in a.elements],
         "paths": [(p.from_, p.to, p.kind, p.class_, p.order, p.bonds) for p in a.causal_paths],
         "cloops": [(c.bonds, c.gain) for c in a.causal_loops],
-        "tloops": [(t.kind, t.order, t.bonds, t.gain, t.gain_value, t.algebraic)
-                   for t in a.topological_loops],
+        # a gain that divides by zero at the initial point is null in the JSON
+        # (docs/json.md: JSON has no NaN or infinity)
+        "tloops": [(t.kind, t.order, t.bonds, t.gain, t.gain_value if math.isfinite(t.gain_value) else None,
+                    t.algebraic) for t in a.topological_loops],
         "conflicts": [(c.element, c.type, c.degree, c.bonds) for c in a.conflicts],
         "index": (a.form, a.index.predicted, a.index.numeric, a.index.reduced_form),
         "states": a.states,
