@@ -19,7 +19,7 @@ unset BGDRAW_PATH
 p=$tmp/p
 python3 tests/doc_snippets.py docs/integrations.md "$p" /usr/local/share/bgdraw/contrib "$root/contrib"
 check "docs/integrations.md: every code block is a file, a command or an output this test uses" $?
-for d in sphinx/docs mkdocs/docs pandoc shell make; do
+for d in sphinx/docs mkdocs/docs pandoc shell make sphinx-report/docs mkdocs-report/docs; do
   mkdir -p "$p/$d/models" && cp examples/rlc.bg "$p/$d/models/rlc.bg"
 done
 bgdraw examples/rlc.bg -q --show paths --style print -T svg >"$tmp/rlc.svg"
@@ -242,4 +242,64 @@ head -1 rlc.d | grep -q '^rlc.svg: models/rlc.bg '; check "shell: -M names the m
 grep -q '>R : Rl<' load.svg && grep -q '>R : Rl<' uses-load.svg
 check "shell: --stdin-name finds the used file beside the name; BGDRAW_PATH finds it too" $?
 cd "$root" || exit 1
+
+# ---------------------------------------------------------------- reports in a page
+bgdraw examples/rlc.bg --report "$tmp/rlc-report.html" -o "$tmp/rlc.json"
+bash "$p/run-sphinx-report.sh" >"$tmp/out" 2>"$tmp/err"; st=$?
+check "sphinx :report:: the page's command builds (got $st: $(head -3 "$tmp/err"))" $st
+[ ! -s "$tmp/err" ]; check "sphinx :report:: no warnings" $?
+bash "$p/run-mkdocs-report.sh" >"$tmp/out" 2>&1; st=$?
+check "mkdocs report=: the page's command builds (got $st: $(grep -m2 'WARNING\|ERROR' "$tmp/out"))" $st
+python3 - "$tmp/rlc-report.html" "$p/sphinx-report/build/html/index.html" "$p/mkdocs-report/site/index.html" <<'PY'
+import os, re, sys
+report = open(sys.argv[1], encoding="utf-8").read()
+for page in sys.argv[2:]:
+    html = open(page, encoding="utf-8").read()
+    links = re.findall(r'<p class="bgdraw-report-link"><a href="([^"]+)">The analysis report</a></p>', html)
+    assert len(links) == 2, (page, links)
+    for l in links:  # the report itself, as --report FILE.html writes it
+        assert open(os.path.join(os.path.dirname(page), l), encoding="utf-8").read() == report, l
+    assert html.count('<svg id="bg-diagram"') == 1 and html.count('<div class="bgdraw-report">') == 1
+    assert re.search(r'<tr id="path-2" tabindex="0" data-bonds="2 3"', html)
+    assert '<style id="bgdraw-parts">' in html and "document.getElementById('bg-diagram')" in html
+    assert 'href="#path-2"' in html
+    if "mkdocs" in page:
+        assert re.search(r'<iframe class="bgdraw" src="[^"]*_bgdraw/bgdraw-[0-9a-f]+\.html" title="bond graph"', html)
+PY
+check "sphinx and mkdocs: the report linked, embedded, and its diagram and tables in the page" $?
+python3 - "$p/sphinx-report/build/html/index.html" "$p/mkdocs-report/site/index.html" "$tmp/rlc.json" <<'PY'
+# in a browser: a row of the page lights the diagram's bonds, #path-2 selects the row
+import json, os, sys
+sys.path.insert(0, "tests/html")
+import cdp
+want = json.load(open(sys.argv[3]))["causal_paths"]
+lit = ("Array.from(document.querySelectorAll('#bg-diagram .bond.hl'))"
+       ".map(e => +Array.from(e.classList).find(c => /^b[0-9]+$/.test(c)).slice(1)).sort()")
+b = cdp.Browser()
+bad = []
+try:
+    for page in sys.argv[1:3]:
+        url = "file://" + os.path.abspath(page)
+        p = b.page(width=1400, height=1000)
+        p.goto(url)
+        p.eval("document.getElementById('path-1').focus()")
+        if p.eval(lit) != sorted(want[0]["bonds"]):
+            bad.append("%s: focus path 1 lit %s" % (page, p.eval(lit)))
+        p.close()
+        p = b.page(width=1400, height=1000)
+        p.goto(url + "#path-2")
+        if p.eval(lit) != sorted(want[1]["bonds"]) or not p.eval(
+                "document.getElementById('path-2').classList.contains('selected')"):
+            bad.append("%s#path-2: lit %s" % (page, p.eval(lit)))
+        # (MkDocs' own theme fails offline: highlight.js from a CDN, a search worker on file://)
+        errors = [e for e in p.events() if e.get("method") == "Runtime.exceptionThrown"]
+        if errors and "sphinx" in page:
+            bad.append("%s: %s" % (page, errors[0]["params"]["exceptionDetails"]["text"]))
+        p.close()
+finally:
+    b.close()
+print("\n".join(bad))
+sys.exit(1 if bad else 0)
+PY
+check "sphinx and mkdocs pages in chromium: a row lights its bonds, #path-2 selects it" $?
 finish

@@ -22,7 +22,13 @@ or name=NAME (the figure's id), caption, file (a model file, relative to the
 page, or to the docs folder when it begins with '/'), alt, align (left,
 center, right), class, format (inline: the SVG in the page, the default;
 svg: an <img> of an SVG file; png) and bgdraw's show, highlight, style,
-layout, causality. A figure with a caption is numbered in its page
+layout, causality, and report: bgdraw's HTML analysis report of the model
+(--report FILE.html) written into the site folder, "link" (the diagram, then
+a link to it), "embed" (the whole report in an <iframe>) or "tables" (the
+report's diagram with its layer toggles and its tables of causal paths, loops
+and conflicts in the page, whose rows light their bonds on hover and focus,
+and PAGE/#path-3 selects causal path 3; one such block a page), each with the
+link. A figure with a caption is numbered in its page
 ("Figure 1: ..."); an empty link to its id, from any page, reads "Figure N".
 
 A model with errors stops the build with bgdraw's diagnostics, which name
@@ -39,13 +45,16 @@ import posixpath
 import re
 import shlex
 import subprocess
+import tempfile
 
 from mkdocs.exceptions import PluginError
 from mkdocs.utils import get_relative_url
 
 DRAW_OPTIONS = ("show", "highlight", "style", "layout", "causality")
-KNOWN = DRAW_OPTIONS + ("caption", "name", "file", "alt", "align", "class", "format")
+KNOWN = DRAW_OPTIONS + ("caption", "name", "file", "alt", "align", "class", "format", "report")
 FORMATS = ("inline", "svg", "png")
+REPORT_OPTIONS = ("style", "layout", "causality")  # what --report takes of them
+REPORT_MODES = ("link", "embed", "tables")
 FENCE = re.compile(r"^(?P<indent> {0,3})(?P<fence>`{3,}|~{3,})\s*(?P<info>.*)$")
 
 # (page url, figure id) -> figure number, filled while pages are converted
@@ -85,6 +94,8 @@ def parse_info(info, where):
             raise PluginError("%s: bgdraw block: '%s' is not key=value" % (where, w))
     if attrs.get("format", "inline") not in FORMATS:
         raise PluginError("%s: bgdraw block: format is one of %s" % (where, ", ".join(FORMATS)))
+    if attrs.get("report", "link") not in REPORT_MODES:
+        raise PluginError("%s: bgdraw block: report is one of %s" % (where, ", ".join(REPORT_MODES)))
     return attrs
 
 
@@ -125,6 +136,19 @@ def shown_path(path):
     return path if rel.startswith(os.pardir) else rel
 
 
+def report_parts(page):
+    """The report's diagram (with its layer toggles) and its tables of paths,
+    loops and conflicts, with the style and the script that make the rows
+    light the diagram: the report's own headings left out."""
+    part = lambda ident: re.search(r'<section id="%s".*?</section>' % ident, page, re.S).group(0)
+    body = part("diagram") + part("paths-loops-conflicts")
+    body = re.sub(r'<h2 id="[^"]*">.*?</h2>\n', "", body)
+    body = re.sub(r' aria-labelledby="[^"]*"', "", body)
+    style = re.search(r'<style id="bgdraw-parts">.*?</style>', page, re.S).group(0)
+    script = page[page.rindex("<script>"):page.rindex("</script>") + len("</script>")]
+    return '<div class="bgdraw-report">%s%s%s</div>' % (style, body, script)
+
+
 class Page:
     """One page's figures: drawn while its Markdown is read, put into its
     HTML once converted."""
@@ -136,9 +160,19 @@ class Page:
 
     def draw(self, attrs, lines, first, where, fmt):
         """bgdraw's output for a block whose model text is lines (at its
-        line numbers in the page) or attrs["file"]."""
-        cmd = [os.environ.get("BGDRAW", "bgdraw"), "-q", "-T", fmt]
-        for key in DRAW_OPTIONS:
+        line numbers in the page) or attrs["file"]: the diagram in format
+        fmt, or for fmt "report" the HTML report."""
+        if fmt == "report":
+            with tempfile.TemporaryDirectory(prefix="bgdraw-mkdocs-") as tmp:
+                out = os.path.join(tmp, "report.html")
+                self.run(attrs, lines, first, where, ["--report", out], REPORT_OPTIONS)
+                with open(out, "rb") as f:
+                    return f.read()
+        return self.run(attrs, lines, first, where, ["-T", fmt], DRAW_OPTIONS)
+
+    def run(self, attrs, lines, first, where, args, keys):
+        cmd = [os.environ.get("BGDRAW", "bgdraw"), "-q"] + args
+        for key in keys:
             if key in attrs:
                 cmd += ["--" + key, attrs[key]]
         if "file" in attrs:
@@ -171,14 +205,25 @@ class Page:
         data = self.draw(attrs, lines, first, where, "png" if fmt == "png" else "svg")
         alt = attrs.get("alt") or attrs.get("caption") or "bond graph"
         classes = " ".join(["bgdraw"] + attrs.get("class", "").split())
-        if fmt == "inline":
+        report, link = attrs.get("report"), ""
+        if report:
+            page = self.draw(attrs, lines, first, where, "report")
+            url = self.image(page, "html")
+            link = '<p class="bgdraw-report-link"><a href="%s">The analysis report</a></p>' % html.escape(url)
+        if report == "embed":
+            body = ('<iframe class="%s" src="%s" title="%s" loading="lazy" style="width: 100%%; '
+                    'height: 40em; border: 1px solid #ccc"></iframe>'
+                    % (classes, html.escape(url), html.escape(alt)))
+        elif report == "tables":
+            body = '<div class="%s">%s</div>' % (classes, report_parts(page.decode()))
+        elif fmt == "inline":
             svg = data.decode()
             body = '<div class="%s" role="img" aria-label="%s">%s</div>' % (
                 classes, html.escape(alt), svg[svg.index("<svg"):].strip())
         else:
             body = '<div class="%s"><img src="%s" alt="%s"/></div>' % (
                 classes, html.escape(self.image(data, fmt)), html.escape(alt))
-        return body
+        return body + link
 
     def markdown(self, markdown):
         """Replaces each bgdraw block by a placeholder (the figure goes into

@@ -25,6 +25,14 @@ its text searchable, its CSS classes styleable), "svg" (an <img> of an SVG
 file) or "png"; conf.py's bgdraw_html_format sets the default ("inline").
 LaTeX gets a PDF, text and man pages the alt text.
 
+report: bgdraw's HTML analysis report of the model (--report FILE.html), written
+into the output folder beside the images: "link" (the diagram, then a link to
+the report), "embed" (the whole report in an <iframe>), "tables" (the report's
+diagram with its layer toggles and its tables of causal paths, loops and
+conflicts in the page: hovering or focusing a row lights its bonds, and a link
+to PAGE.html#path-3 selects causal path 3; one such block a page), each with
+the link. Other builders ignore it.
+
 The model is drawn while the page is read: a model with errors is a warning
 with bgdraw's diagnostics, which name the model file and line, or for a model
 written in the page the page's own file and line (sphinx-build -W makes it
@@ -50,7 +58,9 @@ from sphinx.util.docutils import SphinxDirective
 logger = logging.getLogger(__name__)
 
 DRAW_OPTIONS = ("show", "highlight", "style", "layout", "causality")
+REPORT_OPTIONS = ("style", "layout", "causality")  # what --report takes of them
 HTML_FORMATS = ("inline", "svg", "png")
+REPORT_MODES = ("link", "embed", "tables")
 
 
 class BgdrawError(Exception):
@@ -136,6 +146,23 @@ def format_spec(argument):
     return directives.choice(argument, HTML_FORMATS)
 
 
+def report_spec(argument):
+    return directives.choice(argument, REPORT_MODES)
+
+
+def report_parts(page):
+    """The report's diagram (with its layer toggles) and its tables of paths,
+    loops and conflicts, with the style and the script that make the rows
+    light the diagram: the page's own headings left out."""
+    part = lambda ident: re.search(r'<section id="%s".*?</section>' % ident, page, re.S).group(0)
+    body = part("diagram") + part("paths-loops-conflicts")
+    body = re.sub(r'<h2 id="[^"]*">.*?</h2>\n', "", body)
+    body = re.sub(r' aria-labelledby="[^"]*"', "", body)
+    style = re.search(r'<style id="bgdraw-parts">.*?</style>', page, re.S).group(0)
+    script = page[page.rindex("<script>"):page.rindex("</script>") + len("</script>")]
+    return '<div class="bgdraw-report">%s%s%s</div>\n' % (style, body, script)
+
+
 class BgdrawDirective(SphinxDirective):
     has_content = True
     optional_arguments = 1
@@ -148,6 +175,7 @@ class BgdrawDirective(SphinxDirective):
         "class": directives.class_option,
         "alt": directives.unchanged,
         "format": format_spec,
+        "report": report_spec,
     })
 
     def inline_model(self):
@@ -197,6 +225,7 @@ class BgdrawDirective(SphinxDirective):
         node["options"] = options
         node["svg"] = svg[svg.index("<svg"):]  # no XML declaration inside HTML
         node["format"] = self.options.get("format")
+        node["report"] = self.options.get("report")
         title = re.search(r"<title>(.*?)</title>", svg, re.S)
         node["alt"] = (self.options.get("alt") or self.options.get("caption")
                        or (title.group(1) if title else "bond graph"))
@@ -243,6 +272,25 @@ def image_file(translator, node, fmt):
     return posixpath.join(builder.imgpath, name)
 
 
+def report_file(translator, node):
+    """Writes the model's HTML report into the output folder (once: named by
+    a hash, like the images); its URI and text, or (None, None) after a warning."""
+    options = {k: v for k, v in node["options"].items() if k in REPORT_OPTIONS}
+    key = hashlib.sha1((node["svg"] + repr(sorted(options.items())) + "report").encode())
+    name = "bgdraw-%s.html" % key.hexdigest()[:20]
+    builder = translator.builder
+    out = os.path.join(builder.outdir, builder.imagedir, name)
+    if not os.path.isfile(out):
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        try:
+            run_bgdraw(builder.config.bgdraw_command, node["model"], options, ["--report", out])
+        except BgdrawError as e:
+            logger.warning("bgdraw could not write the report:\n%s", e, location=node)
+            return None, None
+    with open(out, encoding="utf-8") as f:
+        return posixpath.join(builder.imgpath, name), f.read()
+
+
 def html_visit(self, node):
     fmt = node.get("format") or self.builder.config.bgdraw_html_format
     if fmt not in HTML_FORMATS:
@@ -252,7 +300,15 @@ def html_visit(self, node):
     classes = " ".join(["bgdraw"] + node["classes"])
     if "align" in node:
         self.body.append('<div class="align-%s">' % node["align"])
-    if fmt == "inline":
+    report = node.get("report")
+    report_uri, page = report_file(self, node) if report else (None, None)
+    if report == "embed" and report_uri:
+        self.body.append('<iframe class="%s" src="%s" title="%s" loading="lazy" '
+                         'style="width: 100%%; height: 40em; border: 1px solid #ccc"></iframe>\n'
+                         % (classes, self.attval(report_uri), self.attval(node["alt"])))
+    elif report == "tables" and report_uri:
+        self.body.append('<div class="%s">%s</div>\n' % (classes, report_parts(page)))
+    elif fmt == "inline":
         self.body.append('<div class="%s" role="img" aria-label="%s">%s</div>\n'
                          % (classes, self.attval(node["alt"]), node["svg"]))
     else:
@@ -260,6 +316,9 @@ def html_visit(self, node):
         if uri:
             self.body.append('<div class="%s"><img src="%s" alt="%s"/></div>\n'
                              % (classes, self.attval(uri), self.attval(node["alt"])))
+    if report_uri:
+        self.body.append('<p class="bgdraw-report-link"><a href="%s">The analysis report</a></p>\n'
+                         % self.attval(report_uri))
     if "align" in node:
         self.body.append("</div>\n")
     raise nodes.SkipNode

@@ -296,8 +296,9 @@ class Model:
         return self.output("check").decode("utf-8", "replace")
 
     def equations(self, printer="text"):
-        """The equations as a printer writes them: "text", "latex", "json"
-        (then as dicts) or "c". In a notebook the LaTeX displays as math."""
+        """The equations as a printer writes them: "text", "latex", "mathml",
+        "json" (then as dicts) or "c". In a notebook LaTeX and MathML display
+        as mathematics."""
         data = self.output("equations", printer).decode("utf-8", "replace")
         return json.loads(data) if printer == "json" else Equations(data, printer)
 

@@ -321,3 +321,6 @@ class Equations(str):
         if self.form != "latex":
             return None
         return "$$" + str(self).strip() + "$$"
+
+    def _repr_html_(self):
+        return str(self) if self.form == "mathml" else None

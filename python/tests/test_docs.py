@@ -61,7 +61,7 @@ def test_python_snippets(tmp_path, monkeypatch):
         else:
             assert out.getvalue() == "", f"block {i + 1} prints but the page shows no output"
     assert ran >= 6
-    for f in ("rlc.pdf", "rlc.png", "rlc-report.pdf"):
+    for f in ("rlc.pdf", "rlc.png", "rlc-report.pdf", "rlc-report.html"):
         assert (tmp_path / f).stat().st_size > 1000
 
 

@@ -211,6 +211,9 @@ def test_save_report_equations(tmp_path, rlc):
     assert latex == cli(example("rlc.bg"), "--equations", "latex")[1].decode()
     assert latex._repr_latex_().startswith("$$\\begin{align*}")
     assert rlc.equations("text")._repr_latex_() is None
+    mathml = rlc.equations("mathml")
+    assert mathml == cli(example("rlc.bg"), "--equations", "mathml")[1].decode()
+    assert mathml._repr_html_().startswith("<h3>Sorted equations</h3>") and rlc.equations("text")._repr_html_() is None
     eqs = rlc.equations("json")
     assert eqs["format"] and isinstance(eqs["equations"], list)
     assert rlc.check() == cli(example("rlc.bg"), "--check")[1].decode()

@@ -18,6 +18,8 @@ static void head(ht_ctx *c) {
   if (m->title) bg_sb_puts(o, " \u2014 "), ht_esc(o, m->title);
   bg_sb_puts(o, " \u2014 bgdraw analysis report</title>\n<style>\n");
   bg_sb_puts(o, ht_css);
+  bg_sb_puts(o, "</style>\n<style id=\"bgdraw-parts\">\n");
+  bg_sb_puts(o, ht_css_parts);
   bg_sb_puts(o, "</style>\n</head>\n<body>\n<a class=\"skip\" href=\"#main\">Skip to the report</a>\n"
                 "<header>\n<p class=\"sub\">bgdraw analysis report</p>\n<h1>");
   ht_esc(o, m->title ? m->title : m->name);

@@ -28,16 +28,12 @@ const char ht_css[] =
     "th,td{border-bottom:1px solid var(--rule);padding:.25rem .6rem;text-align:left;vertical-align:top}\n"
     "thead th{background:var(--shade)}\n"
     "td.n{text-align:right;font-variant-numeric:tabular-nums}\n"
-    "tr[data-bonds]{cursor:pointer}\n"
-    "tr[data-bonds]:hover,tr[data-bonds]:focus{background:var(--shade);outline:2px solid var(--accent);"
-    "outline-offset:-2px}\n"
-    "tr.selected,tr:target{background:var(--sel)}\n"
+
     "code,pre{font-family:'DejaVu Sans Mono',monospace;font-size:.88em}\n"
     "code.expr{white-space:nowrap}\n"
     "pre{background:var(--shade);padding:.6rem;overflow-x:auto}\n"
     ".note{color:var(--muted);font-size:.85rem}\n"
-    "fieldset.layers{border:1px solid var(--rule);margin:.5rem 0;padding:.2rem .6rem}\n"
-    "fieldset.layers label{display:inline-block;margin-right:1rem;white-space:nowrap}\n"
+
     "figure{margin:.5rem 0}\n"
     "figure svg{display:block;max-width:100%;height:auto}\n"
     "figcaption{color:var(--muted);font-size:.85rem}\n"
@@ -45,6 +41,23 @@ const char ht_css[] =
     "@media (min-width:72rem){main{display:grid;grid-template-columns:minmax(0,1fr) minmax(0,1fr);"
     "column-gap:2rem}main>section{grid-column:1}main>#diagram{grid-column:2;grid-row:1/span 50;"
     "position:sticky;top:0;align-self:start;max-height:100vh;overflow:auto}}\n"
+    ".readout{font-family:'DejaVu Sans Mono',monospace}\n"
+    "@media print{nav,fieldset.layers,.skip,.readout-hint{display:none}"
+    "body{font-size:10pt;background:#fff;color:#000}main{display:block}"
+    "main>#diagram{position:static;max-height:none;overflow:visible}"
+    "figure svg{filter:none}tr{break-inside:avoid}h2,h3{break-after:avoid}"
+    "section#diagram,figure{break-inside:avoid}a{color:inherit;text-decoration:none}}\n";
+
+/* What the diagram's interaction needs, also in a page that embeds the
+ * report's diagram and tables (contrib/: report=tables): scoped to the
+ * report's own classes, nothing for the page's body or headings. */
+const char ht_css_parts[] =
+    "tr[data-bonds]{cursor:pointer}\n"
+    "tr[data-bonds]:hover,tr[data-bonds]:focus{background:var(--shade,#f2f4f7);"
+    "outline:2px solid var(--accent,#1f5fa8);outline-offset:-2px}\n"
+    "tr[data-bonds].selected,tr[data-bonds]:target{background:var(--sel,#fff3c4)}\n"
+    "fieldset.layers{border:1px solid var(--rule,#d0d4da);margin:.5rem 0;padding:.2rem .6rem}\n"
+    "fieldset.layers label{display:inline-block;margin-right:1rem;white-space:nowrap}\n"
     /* layers hidden by the check boxes */
     ".hide-strokes .stroke,.hide-strokes .lagrange-stroke,.hide-numbers .number,.hide-numbers .variable,"
     ".hide-paths .path,.hide-paths .path-arrow,.hide-paths .path-tag,.hide-paths .path-leader,"
@@ -54,17 +67,13 @@ const char ht_css[] =
     ".hide-signals .state-node,.hide-signals .state-input,.hide-signals .state-input-arrow,"
     ".hide-labels .bondlabel,.hide-legend .legend-sample,.hide-legend .legend-text{display:none}\n"
     /* a row's bonds and marks lit, the rest faded */
-    ".dim svg path:not(.hl):not(.background):not(.halo),.dim svg text:not(.hl):not(.node){opacity:.25}\n"
-    "svg path.hl{stroke:var(--hl);stroke-width:2.5px;opacity:1}\n"
-    "svg path.path-arrow.hl,svg path.loop-arrow.hl,svg path.flash.hl{fill:var(--hl)}\n"
-    "svg text.hl{fill:var(--hl);font-weight:bold}\n"
-    "svg line.cursor{stroke:var(--hl);stroke-width:1;pointer-events:none}\n"
-    ".readout{font-family:'DejaVu Sans Mono',monospace}\n"
-    "@media print{nav,fieldset.layers,.skip,.readout-hint{display:none}"
-    "body{font-size:10pt;background:#fff;color:#000}main{display:block}"
-    "main>#diagram{position:static;max-height:none;overflow:visible}"
-    "figure svg{filter:none}tr{break-inside:avoid}h2,h3{break-after:avoid}"
-    "section#diagram,figure{break-inside:avoid}a{color:inherit;text-decoration:none}}\n";
+    ".dim #bg-diagram path:not(.hl):not(.background):not(.halo),"
+    ".dim #bg-diagram text:not(.hl):not(.node){opacity:.25}\n"
+    "#bg-diagram path.hl{stroke:var(--hl,#d62728);stroke-width:2.5px;opacity:1}\n"
+    "#bg-diagram path.path-arrow.hl,#bg-diagram path.loop-arrow.hl,#bg-diagram path.flash.hl"
+    "{fill:var(--hl,#d62728)}\n"
+    "#bg-diagram text.hl{fill:var(--hl,#d62728);font-weight:bold}\n"
+    "figure.plot line.cursor{stroke:var(--hl,#d62728);stroke-width:1;pointer-events:none}\n";
 
 const char ht_js[] =
     "(function () {\n"

@@ -44,8 +44,9 @@ void ht_more_rows(ht_ctx *c, int shown, int total, int omitted, const char *what
 void ht_bonds(bg_strbuf *b, const bg_model *m, const int *bonds, int n);
 /* A number as the PDF prints it (%.4g, a minus sign). */
 void ht_num(bg_strbuf *b, double v);
-/* The style sheet and the script (html_assets.c). */
-extern const char ht_css[], ht_js[];
+/* The style sheet, the part of it the interaction needs (also in a page
+ * that embeds the diagram and tables) and the script (html_assets.c). */
+extern const char ht_css[], ht_css_parts[], ht_js[];
 
 /* ------------------------------------------------------------ sections */
 void ht_summary(ht_ctx *c);    /* html_analysis.c */
