@@ -99,6 +99,9 @@ awk -F, 'function abs(x) { return x < 0 ? -x : x }
   END { exit !(n == 25 && bad == 0) }' "$tmp/rl1.csv"
 check "the poles are -R/2L -+ sqrt((R/2L)^2 - 1/LC)" $?
 grep -q 'R0 = 125' "$tmp/bf1.svg"; check "the Bode family's legend" $?
+[ "$(grep -c 'R0 = 125' "$tmp/bf1.svg")" -eq 1 ]; check "the Bode family's legend once, not in every panel" $?
+"$BGDRAW" "$m" --sweep R0=5,50 --collect poles --family "$tmp/pf.svg" && grep -q 'L1.f' "$tmp/pf.svg"
+check "a study of poles alone draws every output in its family" $?
 "$BGDRAW" "$m" "${rl[@]}" --split "4:$tmp/rlparts" --job-list "$tmp/rljobs.txt" && mkdir -p "$tmp/rlparts" &&
   parallel --will-cite --jobs 2 <"$tmp/rljobs.txt" &&
   "$BGDRAW" "$m" "${rl[@]}" --merge "$tmp/rlparts" --study "$tmp/rlm.csv" --root-locus "$tmp/rlm.svg" \

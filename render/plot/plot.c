@@ -226,6 +226,7 @@ static int legend_pass(plot *P, int k, int draw) {
   }
   double avail = P->right - x0, gap = 14, pad = 4;
   int n = q->nshown + (q->ncol > q->nshown), rows = 0, start = 0;
+  if (P->spec && P->spec->legend_once && k > 0) n = 0; /* the first panel's says it */
   bg_strbuf *mk = bg_xcalloc((size_t)(n > 0 ? n : 1), sizeof *mk);
   double *w = bg_xcalloc((size_t)(n > 0 ? n : 1), sizeof *w);
   for (int j = 0; j < n; j++) {

@@ -31,6 +31,7 @@ typedef struct bg_plot_spec {
   int angle_panel;   /* 1-based panel whose values are degrees (ticks at multiples of
                         45, or 90 on large ranges); 0: none */
   unsigned angle_mask; /* more such panels: bit k for panel k + 1 (the Bode family) */
+  int legend_once;     /* the same curves in every panel: the legend on the first only */
 } bg_plot_spec;
 void bg_plot_scene_spec(const bg_model *m, const bg_simresult *r, const bg_plot_spec *spec,
                         const bg_style *st, double width, double height, bg_scene *out);

@@ -267,7 +267,7 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
   if (kind == BG_PLOT_NYQUIST) return nyquist_scene(m, l, st, width, out);
   table T;
   int rc = kind == BG_PLOT_BODE ? bode_table(m, l, &T) : step_table(m, l, &T);
-  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2, 0}, time = {0, "t", NULL, 0, 0};
+  static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2, 0, 0}, time = {0, "t", NULL, 0, 0, 0};
   if (rc == 0) bg_plot_scene_spec(&T.m, &T.r, kind == BG_PLOT_BODE ? &bode : &time, st, width, 0, out);
   table_free(&T);
   return rc;

@@ -127,7 +127,7 @@ static double colour_bar(locus *L, double y) {
     bg_scene_line(N->s, a, y + h), bg_scene_close(N->s);
   }
   char lo[40], hi[40];
-  bg_num_format(lo, sizeof lo, L->plo, 6), bg_num_format(hi, sizeof hi, L->phi, 6);
+  snprintf(lo, sizeof lo, "%.6g", L->plo), snprintf(hi, sizeof hi, "%.6g", L->phi);
   bg_strbuf b = {0};
   bg_markup_escape(&b, L->st->spec->params[0].name);
   bg_sb_printf(&b, "%s", L->plog ? " (log scale)" : "");

@@ -56,9 +56,11 @@ static void table_free(table *T) {
   free(T->adr), free(T->nexpr), free(T->title), free(T->ylabel), free(T->xlabel);
 }
 
+/* A param's value in a legend: six significant digits (a Monte Carlo
+ * draw's full digits are in the table). */
 static char *fmt_num(double v) {
   char buf[40];
-  bg_num_format(buf, sizeof buf, v, 6);
+  snprintf(buf, sizeof buf, "%.6g", v);
   return strdup(buf);
 }
 
@@ -208,6 +210,7 @@ int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode,
   const bg_study_param *p0 = &st->spec->params[0];
   size_t ls = strlen(p0->spec);
   bg_plot_spec spec = {0};
+  spec.legend_once = 1; /* every panel shows the same runs (or envelope lines) */
   if (kind == BG_STUDY_PLOT_QUANTITIES) {
     spec.xlog = ls > 4 && !strcmp(p0->spec + ls - 4, ":log");
     spec.xname = p0->name, spec.xunit = "";

@@ -308,10 +308,16 @@ static int probe(const bg_study_spec *s, const bg_study_opts *o, bg_study *st, c
         }
     }
   }
+  /* the distinct outputs of the quantities, in order of first mention; a
+   * family of a study that collects only poles draws every output */
+  int only_poles = 1;
+  for (int k = 0; k < st->ncollect; k++)
+    only_poles &= st->collect[k].kind == BG_COLLECT_POLE_RE || st->collect[k].kind == BG_COLLECT_POLE_IM;
+  int every = !rc && o->keep_curves && only_poles && E;
+  st->curve_name = bg_xcalloc((size_t)st->ncollect + (every ? nout : 0) + 1, sizeof(char *));
+  for (int c = 0; every && c < nout; c++) st->curve_name[st->ncurve++] = xstrdup(bg_eqsys_output_name(E, c));
   bg_run_free(R);
   if (rc) return rc;
-  /* the distinct outputs of the quantities, in order of first mention */
-  st->curve_name = bg_xcalloc((size_t)st->ncollect + 1, sizeof(char *));
   st->collect_curve = bg_xcalloc((size_t)st->ncollect + 1, sizeof(int));
   for (int k = 0; k < st->ncollect; k++) {
     int c = 0;
