@@ -116,6 +116,10 @@ check "root locus: the merge gives the same bytes" $?
   "${study[@]}" --collect poles --study "$tmp/cs.csv" -j 1
 check "the model's own study" $?
 cmp -s "$tmp/ms.csv" "$tmp/cs.csv"; check "the model's study = the same words on the command line" $?
+"$BGDRAW" tests/data/rlc_study.bg --split "3:$tmp/mparts" --job-list "$tmp/mjobs.txt" && mkdir -p "$tmp/mparts" &&
+  parallel --will-cite --jobs 2 <"$tmp/mjobs.txt" &&
+  "$BGDRAW" tests/data/rlc_study.bg --merge "$tmp/mparts" --study "$tmp/mm.csv" && cmp -s "$tmp/ms.csv" "$tmp/mm.csv"
+check "the model's own study split, run by GNU parallel and merged" $?
 "$BGDRAW" tests/data/rlc_study.bg --sweep R0=5,6 --study "$tmp/ov.csv" &&
   head -1 "$tmp/ov.csv" | grep -qx 'run,R0,status,C1.e:max,C1.e:tmax,C1.e:cross=0.5,pole1:re,pole1:im,pole2:re,pole2:im,reason' &&
   [ "$(wc -l <"$tmp/ov.csv")" -eq 3 ]
