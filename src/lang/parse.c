@@ -29,6 +29,8 @@ typedef struct parser {
   bg_ast_stmt *stmts; /* malloc'd while parsing, copied into the arena at the end */
   int nstmts, cap;
   int open_def;       /* index of the SUBMODEL statement whose body is being read, or -1 */
+  bg_strbuf words;    /* a study statement's words while they are built (here, not on the
+                         stack: a syntax error leaves by longjmp); freed at the end */
 } parser;
 
 static const char *const keywords[] = {"model", "param", "input", "state", "bond",
@@ -773,20 +775,20 @@ static void parse_study(parser *p, const bg_token *kw) {
   s->name = sub->text;
   s->name_loc = sub->loc;
   bg_ast_stmt tmp = {0}; /* the items, while new statements cannot move it */
-  bg_strbuf w = {0};
+  bg_strbuf *w = &p->words;
+  bg_sb_clear(w);
   if (!strcmp(sub->text, "sweep") || !strcmp(sub->text, "vary")) {
     const bg_token *n = expect_name(p, "the param to vary");
     expect(p, BG_TK_ASSIGN, !strcmp(sub->text, "sweep") ? "after the param (sweep NAME = VALUES)"
                                                        : "after the param (vary NAME = DIST)");
-    if (!strcmp(sub->text, "sweep")) study_sweep(p, &tmp, n, &w);
-    else study_vary(p, &tmp, n, &w);
+    if (!strcmp(sub->text, "sweep")) study_sweep(p, &tmp, n, w);
+    else study_vary(p, &tmp, n, w);
   } else if (!strcmp(sub->text, "collect")) {
-    study_collect(p, &tmp, &w);
+    study_collect(p, &tmp, w);
   } else {
     study_draws(p, &tmp, sub);
     p->stmts[si].name = "draws";
   }
-  bg_sb_free(&w);
   p->stmts[si].items = tmp.items;
   p->stmts[si].nitems = tmp.nitems;
 }
@@ -1193,6 +1195,7 @@ bg_ast *bg_parse_source(const char *path, const char *src, size_t len, int file,
   if (p->nstmts) memcpy(ast->stmts, p->stmts, (size_t)p->nstmts * sizeof *ast->stmts);
   ast->nstmts = p->nstmts;
   free(p->stmts);
+  bg_sb_free(&p->words);
   bg_lex_free(&p->toks);
   free(p);
   return ast;
