@@ -214,6 +214,16 @@ static const char *oneport_value(build *b, const bg_mtt_comp *c, int *err) {
 }
 
 /* ------------------------------------------------------------ nodes */
+/* A component's name: its label, or MTT's own name of an unlabelled one:
+ * mttR, mtt0, then mtt0_2, mtt0_3 for the later ones of a type, in
+ * drawing order. */
+static const char *comp_name(build *b, const bg_mtt_comp *c) {
+  if (c->name) return c->name;
+  int k = 1;
+  for (const bg_mtt_comp *o = b->sr->s.c; o < c; o++) k += !o->name && !strcmp(o->type, c->type);
+  return k == 1 ? bg_ig_printf(b->r->g, "mtt%s", c->type) : bg_ig_printf(b->r->g, "mtt%s_%d", c->type, k);
+}
+
 static int add_node(build *b, const bg_mtt_comp *c, const char *name, const char *kind,
                     const char *value, const char *comment) {
   bg_ig_node n = {0};
@@ -307,7 +317,7 @@ static int two_port(build *b, int ci) {
     if (is_tf) inverse ^= swapped;
     if (inverse) v = recip(b, v);
   }
-  int node = add_node(b, c, c->name ? c->name : "mtt", c->type, v, NULL);
+  int node = add_node(b, c, comp_name(b, c), c->type, v, NULL);
   for (int i = 0; i < 2; i++) set_end(b, bond[i], end[i], node, NULL);
   return 0;
 }
@@ -325,7 +335,7 @@ static int amplifier(build *b, int ci) {
   const char *g = u ? "1" : arg_expr(b, c, w[0]);
   if (!g) return -1;
   int ae = !strcmp(c->type, "AE");
-  const char *base = c->name ? c->name : "mtt";
+  const char *base = comp_name(b, c);
   int in = add_node(b, c, bg_ig_printf(b->r->g, "%s_in", base), ae ? "Sf" : "Se", "0",
                     ae ? "MTT's AE: no flow at its input" : "MTT's AF: no effort at its input");
   const char *inname = M(b)->nodes[in].name;
@@ -353,7 +363,7 @@ static int emtf(build *b, int ci) {
   const char *w[3];
   int nw, u = lin_args(b, c, w, &nw);
   if (u < 0) return -1;
-  const char *base = c->name ? c->name : "mtt";
+  const char *base = comp_name(b, c);
   int mod = add_node(b, c, bg_ig_printf(b->r->g, "%s_mod", base), "Sf", "0",
                      "MTT's EMTF: no flow at its modulating port");
   const char *m = bg_ig_printf(b->r->g, "%s.e", M(b)->nodes[mod].name);
@@ -385,7 +395,7 @@ static int detector(build *b, int ci, int *junction_bonds) {
   const bg_mtt_bond *bd = &b->sr->s.b[bond[0]];
   int other = bd->comp[1 - end[0]];
   const bg_mtt_comp *oc = &b->sr->s.c[other];
-  const char *name = bg_ig_name(b->r->g, M(b), c->name ? c->name : "mtt");
+  const char *name = bg_ig_name(b->r->g, M(b), comp_name(b, c));
   if (!strcmp(oc->type, de ? "0" : "1") && junction_bonds[other] > 2) {
     junction_bonds[other]--;
     set_end(b, bond[0], 0, -1, NULL), set_end(b, bond[0], 1, -1, NULL);
@@ -450,7 +460,7 @@ static int source(build *b, int ci) {
   int ke = attr(ea), kf = attr(fa);
   const char *kind = NULL, *value = NULL, *comment = NULL;
   char det = 0;
-  const char *name = c->name ? c->name : "mtt";
+  const char *name = comp_name(b, c);
   if (ke == AT_VAL && (kf == AT_EXT || kf == AT_INT)) kind = "Se", value = arg_expr(b, c, ea), det = kf == AT_EXT ? 'f' : 0;
   else if (kf == AT_VAL && (ke == AT_EXT || ke == AT_INT)) kind = "Sf", value = arg_expr(b, c, fa), det = ke == AT_EXT ? 'e' : 0;
   else if (ke == AT_ZERO && kf == AT_UNK) kind = "Se", value = "0", comment = "MTT's algebraic-loop SS (zero,unknown): zero effort";
@@ -490,7 +500,7 @@ static int plain_source(build *b, int ci) {
   int bond[2], end[2], n = bonds_at(b, ci, bond, end, 2);
   if (need_bonds(b, c, n, 1)) return -1;
   const bg_mtt_row *l = label_of(b, c);
-  const char *name = c->name ? c->name : bg_ig_printf(b->r->g, "mtt%s", c->type), *v;
+  const char *name = comp_name(b, c), *v;
   if (l && l->n > 2 && strcmp(l->f[2], "external")) {
     const char *semi = strchr(l->f[2], ';');
     v = arg_expr(b, c, semi ? bg_arena_strndup(A(b), l->f[2], (size_t)(semi - l->f[2])) : l->f[2]);
@@ -669,7 +679,7 @@ static int instance(build *b, int ci) {
     }
   }
   if (args.len) bg_sb_putc(&args, ')');
-  int node = add_node(b, c, c->name ? c->name : c->type, r->g->models[mi].name, NULL, NULL);
+  int node = add_node(b, c, comp_name(b, c), r->g->models[mi].name, NULL, NULL);
   if (args.len) M(b)->nodes[node].sig = bg_arena_strdup(A(b), args.s);
   bg_sb_free(&args);
   const bg_ig_model *cm = &r->g->models[mi];
@@ -699,7 +709,7 @@ static int component(build *b, int ci, int *junction_bonds) {
     const char *v = oneport_value(b, c, &err);
     if (err) return -1;
     const bg_mtt_row *l = label_of(b, c);
-    int node = add_node(b, c, c->name ? c->name : bg_ig_printf(b->r->g, "mtt%s", t), t, v,
+    int node = add_node(b, c, comp_name(b, c), t, v,
                         !l || l->n < 2 || !strcmp(l->f[1], "none") ? "no lin law in the label file: MTT's unit law" : NULL);
     set_end(b, bond[0], end[0], node, NULL);
     b->comp_node[ci] = node;
@@ -833,7 +843,7 @@ static int build_sys(reader *r, sysrec *sr, const char *key, int root) {
     const bg_mtt_comp *c = &s->c[i];
     b.comp_node[i] = -1, junction_bonds[i] = c->nbonds;
     if (strcmp(c->type, "0") && strcmp(c->type, "1")) continue;
-    int node = add_node(&b, c, c->name ? c->name : bg_ig_printf(r->g, "mtt%s", c->type), c->type, NULL, NULL);
+    int node = add_node(&b, c, comp_name(&b, c), c->type, NULL, NULL);
     b.comp_node[i] = node;
     for (int j = 0; j < s->nb; j++)
       for (int k = 0; k < 2; k++)

@@ -1,0 +1,146 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Random MTT models for tests/import_mtt.sh (issue 35): a chain of 0- and
+1-junctions, each with one-port R, C and I drawn around it, neighbours joined
+by a bond or through a TF or GY, driven by an SS effort input, bonds drawn
+either way (into or out of the stores and resistors, either way between
+junctions), polylines with the half arrow at their first or last segment,
+text anchors left, centre or right of a component, artwork at other depths;
+and the same model written in .bg the way a user would transcribe it.
+
+usage: import_mtt_gen.py SEED N DIR   writes DIR/genS/genS_abg.fig, _lbl.txt,
+       _numpar.txt, _input.txt, _simpar.txt and DIR/genS.bg
+"""
+import math
+import os
+import random
+import sys
+
+HEADER = "#FIG 3.2\nLandscape\nCenter\nMetric\nA4\n100.00\nSingle\n-2\n1200 2\n"
+
+
+def main():
+    seed, n, out = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+    rnd = random.Random(seed)
+    name = "gen%d" % seed
+    folder = os.path.join(out, name)
+    os.makedirs(folder, exist_ok=True)
+    objs, pos = [], {}
+
+    def text(label, x, y, depth=0):
+        just = rnd.choice([0, 1, 2])  # the anchor is the reading point whatever the justification
+        objs.append("4 %d 0 %d 0 0 20 0.0000 4 240 600 %d %d %s\\001" % (just, depth, x, y, label))
+
+    def comp(label, x, y):
+        pos[label] = (x, y)
+        text(label, x, y)
+
+    def bond(a, b):
+        (x1, y1), (x2, y2) = pos[a], pos[b]
+        L = math.hypot(x2 - x1, y2 - y1)
+        ux, uy = (x2 - x1) / L, (y2 - y1) / L
+        tail = (x1 + 300 * ux, y1 + 300 * uy)
+        head = (x2 - 300 * ux, y2 - 300 * uy)
+        side = rnd.choice([1, -1])
+        barb = (head[0] - 200 * ux + side * 200 * uy, head[1] - 200 * uy - side * 200 * ux)
+        pts = [tail, head, barb]
+        if rnd.random() < 0.5:
+            pts.reverse()  # the half arrow drawn first
+        objs.append("2 1 0 1 0 7 %d 0 -1 0.000 0 0 -1 0 0 3\n\t %s" % (
+            rnd.choice([0, 10, 100]), " ".join("%d %d" % (round(x), round(y)) for x, y in pts)))
+
+    lbl, numpar, elems, bonds, params = [], [], [], [], []
+    spacing = 3600
+    kinds = [rnd.choice("01") for _ in range(n)]
+    for i, k in enumerate(kinds):
+        comp("%s:j%d" % (k, i), 1200 + i * spacing, 6000)
+    comp("SS:u", 1200, 3000)
+    lbl.append("u\tSS\texternal,internal")
+    first = "%s:j0" % kinds[0]
+    bond("SS:u", first)
+    bonds.append(("u", "j0"))
+    elems.append("Se u = u_u")
+    count = 0
+    for i, k in enumerate(kinds):
+        j = "%s:j%d" % (k, i)
+        spots = [(0, 1800), (1200, -1800), (-1200, 1800)] if i == 0 else [(0, -1800), (0, 1800), (1200, 1800)]
+        for dx, dy in spots[:rnd.randint(1, 3)]:
+            kind = rnd.choice("RCI")
+            count += 1
+            en = "%s%d" % (kind.lower(), count)
+            v = rnd.choice([0.5, 1, 2, 4])
+            if rnd.random() < 0.3:  # a parameter with its value in numpar
+                pn = "k%d" % count
+                numpar.append("%s = %g;" % (pn, v))
+                params.append("param %s = %g" % (pn, v))
+                arg, val = pn, pn
+            else:
+                arg, val = "%g" % v, "%g" % v
+            inverse = rnd.random() < 0.3
+            word = {"R": "flow", "C": "effort", "I": "flow"}[kind]
+            if inverse:
+                word = {"R": "effort", "C": "state", "I": "state"}[kind]
+                val = "1/%s" % val
+            lbl.append("%s\tlin\t%s,%s" % (en, word, arg))
+            comp("%s:%s" % (kind, en), 1200 + i * spacing + dx, 6000 + dy)
+            elems.append("%s %s = %s" % (kind, en, val))
+            if rnd.random() < 0.8:
+                bond(j, "%s:%s" % (kind, en))
+                bonds.append(("j%d" % i, en))
+            else:
+                bond("%s:%s" % (kind, en), j)
+                bonds.append((en, "j%d" % i))
+        if i + 1 < n:
+            nxt = "%s:j%d" % (kinds[i + 1], i + 1)
+            a, b = ("j%d" % i, "j%d" % (i + 1)), (j, nxt)
+            if rnd.random() < 0.5:
+                a, b = (a[1], a[0]), (b[1], b[0])
+            how = rnd.choice(["bond", "TF", "GY"])
+            if how == "bond":
+                bond(*b)
+                bonds.append(a)
+            else:
+                tn = "%s%d" % (how.lower(), i)
+                r = rnd.choice([0.5, 2, 3])
+                word = rnd.choice(["effort", "flow"])
+                lbl.append("%s\tlin\t%s,%g" % (tn, word, r))
+                comp("%s:%s" % (how, tn), 1200 + i * spacing + spacing // 2, 6000)
+                bond(b[0], "%s:%s" % (how, tn))
+                bond("%s:%s" % (how, tn), b[1])
+                bonds.append((a[0], tn))
+                bonds.append((tn, a[1]))
+                val = "%g" % r if word == "effort" else "1/%g" % r  # TF: e2 = r e1; GY: e1 = r f2
+                elems.append("%s %s = %s" % (how, tn, val))
+    text("generated by tests/import_mtt_gen.py (artwork)", 3000, 900, depth=51)
+    objs.append("2 2 0 1 0 7 55 0 -1 0.000 0 0 -1 0 0 5\n\t 300 300 9000 300 9000 900 300 900 300 300")
+    with open(os.path.join(folder, name + "_abg.fig"), "w") as f:
+        f.write(HEADER)
+        for o in objs:
+            f.write(o + "\n")
+    with open(os.path.join(folder, name + "_lbl.txt"), "w") as f:
+        f.write("#SUMMARY %s: a generated chain\n" % name)
+        for line in lbl:
+            f.write("\t%s\n" % line)
+    with open(os.path.join(folder, name + "_numpar.txt"), "w") as f:
+        f.write("".join(line + "\n" for line in numpar))
+    with open(os.path.join(folder, name + "_input.txt"), "w") as f:
+        f.write("%s__u = 1;\n" % name)
+    with open(os.path.join(folder, name + "_simpar.txt"), "w") as f:
+        f.write("LAST = 2;\nDT = 0.1;\n")
+    # the .bg a user would write: junctions first, then the components as drawn
+    with open(os.path.join(out, name + ".bg"), "w") as f:
+        f.write('model %s "%s: a generated chain"\n' % (name, name))
+        f.write("input u_u = 1\n")
+        for p in params:
+            f.write(p + "\n")
+        for i, k in enumerate(kinds):
+            f.write("%s j%d\n" % (k, i))
+        for e in elems:
+            f.write(e + "\n")
+        for a, b in bonds:
+            f.write("bond %s -> %s\n" % (a, b))
+        f.write("simulate t_end = 2, dt = 0.1\n")
+
+
+if __name__ == "__main__":
+    main()
