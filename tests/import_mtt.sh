@@ -88,11 +88,23 @@ for seed in $(seq 1 25); do
 done
 [ $n = 25 ]; check "25 generated drawings read as the same models written in .bg" $?
 
+# the size is bounded: a drawing of more components than that is refused at once
+python3 -c "
+print('#FIG 3.2\nLandscape\nCenter\nMetric\nA4\n100.00\nSingle\n-2\n1200 2')
+for i in range(10001): print('4 1 0 0 0 0 20 0.0000 4 240 600 %d 0 R:r%d\\\\001' % (600 * i, i))
+" >"$tmp/huge_abg.fig"
+"$BGDRAW" "$tmp/huge_abg.fig" --check 2>"$tmp/err"
+[ $? = 1 ] && grep -q "huge_abg.fig:10010:1: error: MTT drawing: more than 10000 components" "$tmp/err"
+check "a drawing of more than 10000 components is refused" $?
+
 # every other option on the folder directly; the same bytes twice
 "$BGDRAW" $d/mtt_chain -o "$tmp/chain.svg" && grep -q '<svg' "$tmp/chain.svg" &&
   "$BGDRAW" $d/mtt_chain --equations text | grep -q "^c.q' = "
 check "a diagram and the equations straight from the folder" $?
 "$BGDRAW" --import $d/mtt_amps -T bg | cmp -s - "$tmp/mtt_amps.bg"; check "deterministic" $?
+"$BGDRAW" - --stdin-name $d/mtt_amps/mtt_amps_abg.fig -o "$tmp/s.csv" <$d/mtt_amps/mtt_amps_abg.fig &&
+  cmp -s "$tmp/s.csv" "$tmp/mtt_amps.csv"
+check "the drawing on standard input, its files found from --stdin-name" $?
 "$BGDRAW" --import examples/rlc.bg -T bg >/dev/null 2>"$tmp/err"
 [ $? = 2 ] && grep -q 'not another tool' "$tmp/err"; check "--import refuses a .bg model" $?
 mkdir -p "$tmp/empty"

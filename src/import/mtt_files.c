@@ -50,6 +50,7 @@ static void push_row(bg_mtt_rows *r, bg_mtt_row row) {
     r->v = bg_xrealloc(r->v, (size_t)r->cap * sizeof *r->v);
   }
   r->v[r->n++] = row;
+  bg_strindex_add(&r->idx, BG_STRKEYS(r->v, f[0]), r->n);
 }
 
 /* Calls line() on each line of the file at path (a missing file has none).
@@ -107,16 +108,14 @@ static int lbl_line(void *ctx, const char *t, size_t len, int line) {
   if (!n) return 0;
   for (int k = 0; k < 3 && k < n; k++) row.f[k] = w[k];
   row.n = n < 3 ? n : 3;
-  int rc = 0;
-  for (int k = 0; k < out->rows.n; k++)
-    if (!strcmp(out->rows.v[k].f[0], w[0])) {
-      bg_diag_error(r->dg, (bg_srcloc){line, 1, out->file},
-                    "MTT label file: '%s' is labelled twice (first at line %d)", w[0],
-                    out->rows.v[k].line);
-      rc = -1;
-    }
+  const bg_mtt_row *first = bg_mtt_find(&out->rows, w[0]);
+  if (first) {
+    bg_diag_error(r->dg, (bg_srcloc){line, 1, out->file},
+                  "MTT label file: '%s' is labelled twice (first at line %d)", w[0], first->line);
+    return -1;
+  }
   push_row(&out->rows, row);
-  return rc;
+  return 0;
 }
 
 int bg_mtt_read_lbl(const char *path, bg_arena *a, bg_diags *dg, bg_mtt_lbl *out) {
@@ -154,9 +153,8 @@ static int assign_line(void *ctx, const char *t, size_t len, int line) {
     return -1;
   }
   /* a later assignment of the same name wins, as in Octave */
-  int k = 0;
-  while (k < out->rows.n && strcmp(out->rows.v[k].f[0], row.f[0])) k++;
-  if (k < out->rows.n) out->rows.v[k] = row;
+  int k = bg_strindex_lookup(&out->rows.idx, BG_STRKEYS(out->rows.v, f[0]), row.f[0]);
+  if (k >= 0) out->rows.v[k] = row;
   else push_row(&out->rows, row);
   return 0;
 }
@@ -168,12 +166,12 @@ int bg_mtt_read_assign(const char *path, bg_arena *a, bg_diags *dg, bg_mtt_assig
 }
 
 const bg_mtt_row *bg_mtt_find(const bg_mtt_rows *r, const char *name) {
-  for (int i = 0; i < r->n; i++)
-    if (!strcmp(r->v[i].f[0], name)) return &r->v[i];
-  return NULL;
+  int k = bg_strindex_lookup(&r->idx, BG_STRKEYS(r->v, f[0]), name);
+  return k >= 0 ? &r->v[k] : NULL;
 }
 
 void bg_mtt_rows_free(bg_mtt_rows *r) {
   free(r->v);
+  bg_strindex_free(&r->idx);
   memset(r, 0, sizeof *r);
 }

@@ -252,13 +252,25 @@ static void attach_stroke(bg_mtt_sys *s, bg_arena *a, bg_diags *dg, const bg_fig
   if (b->half_e[end] && b->half_f[end]) b->stroke[end] = 1;
 }
 
+static int too_big(const bg_mtt_sys *s, bg_diags *dg, const bg_fig_obj *o, const char *what, int max) {
+  bg_diag_error(dg, at_obj(s, o),
+                "MTT drawing: more than %d %s; bgdraw reads drawings up to that size", max, what);
+  return -1;
+}
+
 int bg_mtt_geometry(bg_mtt_sys *s, const bg_fig *fig, bg_arena *a, bg_diags *dg) {
-  int rc = 0;
+  int rc = 0, marks = 0;
+  for (int i = 0; i < fig->n && !rc; i++) {
+    const bg_fig_obj *o = &fig->objs[i];
+    if (o->depth % 10 == 0 && ++marks > BG_MTT_MAX_MARKS)
+      return too_big(s, dg, o, "objects of the bond graph (bonds, strokes, texts)", BG_MTT_MAX_MARKS);
+  }
   for (int i = 0; i < fig->n && !rc; i++) {
     const bg_fig_obj *o = &fig->objs[i];
     if (o->depth % 10 != 0) continue; /* artwork, MTT's rule */
     if (o->kind == BG_FIG_LINE && o->sub_type == 1 && o->style == 0 && !o->arrows && o->npts >= 3) {
       bg_mtt_bond b;
+      if (s->nb >= BG_MTT_MAX_BONDS) return too_big(s, dg, o, "bonds", BG_MTT_MAX_BONDS);
       if (bond_of(s, o, dg, &b)) rc = -1;
       else add_bond(s, b);
     } else if (o->kind == BG_FIG_TEXT) {
@@ -267,6 +279,7 @@ int bg_mtt_geometry(bg_mtt_sys *s, const bg_fig *fig, bg_arena *a, bg_diags *dg)
       if (!c.type) continue;
       c.at = o->pts[0], c.line = o->line;
       c.label = comp_label(a, &c);
+      if (s->nc >= BG_MTT_MAX_COMPONENTS) return too_big(s, dg, o, "components", BG_MTT_MAX_COMPONENTS);
       add_comp(s, c);
     }
   }

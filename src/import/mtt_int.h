@@ -15,6 +15,7 @@ typedef struct {
 typedef struct {
   bg_mtt_row *v; /* owned */
   int n, cap;
+  bg_strindex idx; /* f[0] -> the first row of that name */
 } bg_mtt_rows;
 
 typedef struct {
@@ -38,6 +39,11 @@ const bg_mtt_row *bg_mtt_find(const bg_mtt_rows *r, const char *name);
 void bg_mtt_rows_free(bg_mtt_rows *r);
 
 /* ------------------------------------------------------------ a drawing */
+/* The largest drawing read: what is near what is found by comparing
+ * distances, quadratic in the drawing's size, so the size is bounded (MTT's
+ * drawings are drawn by hand: its largest example has 80 components). */
+enum { BG_MTT_MAX_COMPONENTS = 10000, BG_MTT_MAX_BONDS = 10000, BG_MTT_MAX_MARKS = 20000 };
+
 enum { BG_MTT_HEAD = 0, BG_MTT_TAIL = 1 }; /* the two ends of a bond */
 
 typedef struct {

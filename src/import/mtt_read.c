@@ -47,6 +47,8 @@ typedef struct {
   int root;
   const char **sym, **sym_bg; /* MTT parameter names and their .bg names */
   int nsym, capsym;
+  bg_strindex sym_idx;
+  int nest; /* numpar values naming numpar values, being declared */
   int *end_node;           /* per bond end (2 * b + end): its node, -1: dropped */
   int *comp_node;          /* per component: its node (junctions, one-ports), -1 */
   char *free_stroke;       /* per bond: its drawn stroke is not kept */
@@ -110,9 +112,11 @@ static const char *rename_expr(build *b, const char *e) {
   return s;
 }
 
+enum { MAX_VALUE_NEST = 200 };
+
 static const char *use_symbol(build *b, const char *sym) {
-  for (int i = 0; i < b->nsym; i++)
-    if (!strcmp(b->sym[i], sym)) return b->sym_bg[i];
+  int found = bg_strindex_lookup(&b->sym_idx, BG_STRKEYS_ARRAY(b->sym), sym);
+  if (found >= 0) return b->sym_bg[found];
   if (b->nsym == b->capsym) {
     b->capsym = b->capsym ? 2 * b->capsym : 16;
     b->sym = bg_xrealloc(b->sym, (size_t)b->capsym * sizeof *b->sym);
@@ -127,14 +131,20 @@ static const char *use_symbol(build *b, const char *sym) {
   const char *bgname = bg_ig_name(b->r->g, M(b), clash ? bg_ig_printf(b->r->g, "%s_par", sym) : sym);
   int k = b->nsym++;
   b->sym[k] = sym, b->sym_bg[k] = bgname;
+  bg_strindex_add(&b->sym_idx, BG_STRKEYS_ARRAY(b->sym), b->nsym);
   const bg_mtt_row *v = bg_mtt_find(&b->r->numpar.rows, sym);
   bg_ig_param p = {bgname, "1", NULL, b->sr->s.lbl.summary_line, b->sr->s.lbl.file < 0 ? b->sr->s.file : b->sr->s.lbl.file, 0};
   if (!v) p.desc = bg_ig_printf(b->r->g, "MTT parameter %s: no value in %s_numpar.txt, 1 taken", sym, b->r->root_type);
   else if (clash) p.desc = bg_ig_printf(b->r->g, "MTT parameter %s", sym);
   int pi = M(b)->nparams;
   bg_ig_add_param(M(b), p);
-  if (v) { /* after adding: its expression may declare more */
+  if (v && b->nest >= MAX_VALUE_NEST) {
+    bg_diag_error(b->r->dg, (bg_srcloc){v->line, 1, b->r->numpar.file},
+                  "MTT parameter file: values naming other values more than %d deep", MAX_VALUE_NEST);
+  } else if (v) { /* after adding: its expression may declare more */
+    b->nest++;
     const char *val = rename_expr(b, v->f[1]);
+    b->nest--;
     M(b)->params[pi].value = val;
     M(b)->params[pi].line = v->line, M(b)->params[pi].file = b->r->numpar.file;
   }
@@ -829,7 +839,7 @@ static int build_sys(reader *r, sysrec *sr, const char *key, int root) {
                    *key ? " (port directions " : "", key, *key ? ": i in, o out)" : "");
   }
   sr->building = 1;
-  build b = {r, sr, mi, root, NULL, NULL, 0, 0, NULL, NULL, NULL, NULL};
+  build b = {r, sr, mi, root, NULL, NULL, 0, 0, {0}, 0, NULL, NULL, NULL, NULL};
   const bg_mtt_sys *s = &sr->s;
   b.end_node = bg_xmalloc(sizeof *b.end_node * (size_t)(2 * s->nb + 1));
   b.end_sfx = bg_xmalloc(sizeof *b.end_sfx * (size_t)(2 * s->nb + 1));
@@ -870,6 +880,7 @@ static int build_sys(reader *r, sysrec *sr, const char *key, int root) {
     params_to_signature(&b);
   }
   free(b.end_node), free(b.end_sfx), free(b.comp_node), free(b.free_stroke), free(junction_bonds), free(b.sym), free(b.sym_bg);
+  bg_strindex_free(&b.sym_idx);
   sr->building = 0;
   if (rc) return -1;
   if (!root) {
