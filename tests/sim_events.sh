@@ -45,6 +45,19 @@ print("event times against the closed form: %.2g" % err)
 sys.exit(0 if err < 1e-8 else 1)
 PY
 check "ball: JSON events against the closed form" $?
+# the keys of simulation.events are the ones docs/json.md names, no more, no fewer
+python3 - "$tmp/b.json" docs/json.md <<'PY'
+import json, re, sys
+ev = json.load(open(sys.argv[1]))["simulation"]["events"]
+row = next(l for l in open(sys.argv[2]) if l.startswith("| `events` | object |"))
+named = set(re.findall(r"`(\w+)`", row))
+keys, entry = set(ev), set().union(*(set(e) for e in ev["list"]))
+ok = keys == {"searched", "conditions", "count", "list"} and keys <= named
+ok = ok and "`simulation.events.list`" in row and "{t, condition, direction}" in row and entry == {"t", "condition", "direction"}
+print("simulation.events keys", sorted(keys), "entries", sorted(entry))
+sys.exit(0 if ok else 1)
+PY
+check "ball: simulation.events and its list entries have the keys docs/json.md names" $?
 "$BGDRAW" $ball -v -o "$tmp/b2.json" -o "$tmp/b2.csv" 2>/dev/null; cmp -s "$tmp/b.json" "$tmp/b2.json"; check "ball: rerun, same JSON bytes" $?
 if command -v pdftotext >/dev/null; then
   "$BGDRAW" $ball --report "$tmp/b.pdf" 2>/dev/null

@@ -32,10 +32,11 @@ void bg_export_octave(const bg_eqsys *s, const char *fname, bg_strbuf *out);
  * variable, and the bond graph's equations unsorted, with der(...). */
 void bg_export_modelica(const bg_eqsys *s, bg_strbuf *out);
 
-/* 1 when an export cannot be trusted to compute what bgdraw computes, with
- * the reason in why: memory (hyst, stick: a discrete state the exported
- * code does not carry; docs/export.md). */
-int bg_export_refusal(const bg_eqsys *s, bg_strbuf *why);
+/* 1 when the export to format ("c", "h", "py", "m", "mo", "fmu") cannot be
+ * trusted to compute what bgdraw computes, with the reason in why: memory
+ * (hyst, stick) in the Octave and Modelica exports, which carry no modes
+ * (docs/export.md). */
+int bg_export_refusal(const bg_eqsys *s, const char *format, bg_strbuf *why);
 
 /* FMI 2.0 Model Exchange (ODE models only; the caller refuses a DAE).
  * The GUID: a hash of text (the C export), "{8-4-4-4-12}" into buf of n >= 40. */

@@ -128,7 +128,8 @@ static void header(const cx *X, bg_strbuf *h) {
   bg_sb_printf(h, "#ifndef %s_H\n#define %s_H\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n", U, U);
   bg_sb_printf(h, "#define %s_N %d      /* unknowns y */\n#define %s_NX %d     /* differential unknowns, first in y */\n", U, s->n, U, s->nx);
   bg_sb_printf(h, "#define %s_NOUT %d   /* outputs */\n#define %s_NPARAM %d /* fields of %s_params */\n", U, s->nout, U, bg_export_nparams(s), P);
-  bg_sb_printf(h, "#define %s_NNZ %d    /* Jacobian entries (CSC pattern) */\n#define %s_NWORK %d  /* doubles of scratch */\n", U, s->nnz, U, 2 * s->nslot);
+  bg_sb_printf(h, "#define %s_NNZ %d    /* Jacobian entries (CSC pattern) */\n#define %s_NWORK %d  /* doubles of scratch */\n", U, s->nnz, U,
+               2 * s->nslot + (s->nev ? 2 * s->n + 2 * s->nev : 0));
   bg_sb_printf(h, "#define %s_IS_ODE %d\n\n", U, ode);
   bg_sb_printf(h, "typedef struct %s_params {\n", P);
   for (int k = 0; k < s->m->nparam; k++)
@@ -141,20 +142,25 @@ static void header(const cx *X, bg_strbuf *h) {
   bg_sb_printf(h, "/* 1: the derivative appears (IDASetId), 0: algebraic */\nextern const int %s_is_differential[%s_N + 1];\n", P, U);
   bg_sb_printf(h, "/* Jacobian pattern, compressed sparse columns, diagonal included */\n"
                   "extern const int %s_jac_colptr[%s_N + 1], %s_jac_rowind[%s_NNZ + 1];\n\n", P, U, P, U);
+  if (s->nev) bg_xev_c_header(s, P, U, h);
+  const char *md = s->nev ? "const " : "", *mdp = s->nev ? "_modes *md, " : "";
+  char MD[120] = "";
+  if (s->nev) snprintf(MD, sizeof MD, "%s%s%s", md, P, mdp);
   bg_sb_printf(h, "/* Initial values at t0 (states from the model's q0/p0/init with p; dependent\n"
                   " * stores and algebraic unknowns: consistent at the default params) */\n"
                   "void %s_initial(const %s_params *p, double t0, double *y0, double *work);\n", P, P);
+  if (s->nev) bg_sb_puts(h, "/* Every function below evaluates with the modes md held */\n");
   if (ode) bg_sb_printf(h, "/* ydot = f(t, y); 0, or -1 when a value is not finite */\n"
-                           "int %s_rhs(const %s_params *p, double t, const double *y, double *ydot, double *work);\n", P, P);
+                           "int %s_rhs(const %s_params *p, %sdouble t, const double *y, double *ydot, double *work);\n", P, P, MD);
   bg_sb_printf(h, "/* F(t, y, yp) = 0 (an ODE as yp - f); 0, or -1 when a value is not finite */\n"
-                  "int %s_residual(const %s_params *p, double t, const double *y, const double *yp, double *res,\n"
-                  "                double *work);\n", P, P);
+                  "int %s_residual(const %s_params *p, %sdouble t, const double *y, const double *yp, double *res,\n"
+                  "                double *work);\n", P, P, MD);
   bg_sb_printf(h, "/* Jacobian values in the pattern's order: %s */\n"
-                  "int %s_jacobian(const %s_params *p, double t, const double *y, const double *yp, double cj,\n"
-                  "                double *values, double *work);\n", ode ? "df/dy (yp and cj unused)" : "dF/dy + cj dF/dyp", P, P);
+                  "int %s_jacobian(const %s_params *p, %sdouble t, const double *y, const double *yp, double cj,\n"
+                  "                double *values, double *work);\n", ode ? "df/dy (yp and cj unused)" : "dF/dy + cj dF/dyp", P, P, MD);
   bg_sb_printf(h, "/* The outputs (plot expressions, or the states) */\n"
-                  "int %s_outputs(const %s_params *p, double t, const double *y, const double *yp, double *out,\n"
-                  "               double *work);\n", P, P);
+                  "int %s_outputs(const %s_params *p, %sdouble t, const double *y, const double *yp, double *out,\n"
+                  "               double *work);\n", P, P, MD);
   bg_sb_printf(h, "\n#ifdef __cplusplus\n}\n#endif\n#endif\n");
 }
 
@@ -204,31 +210,39 @@ static void tables_of_names(const cx *X, bg_strbuf *c) {
  * between two instructions changes no result). */
 #define BG_PART 100
 
-static void part_head(const char *name, int part, int deriv, bg_strbuf *c) {
+/* ev: the parts take the modes' context c (a model with state events:
+ * the main code and its derivatives hold their switching instructions'
+ * modes, export_events.c). */
+static void part_head(const char *name, int part, int deriv, int ev, bg_strbuf *c) {
   if (deriv)
-    bg_sb_printf(c, "static BG_NOINLINE void %s_%d(const double *v, double *d) {\n  double r, q, mg;\n"
-                    "  (void)v, (void)d, (void)r, (void)q, (void)mg;\n", name, part);
-  else bg_sb_printf(c, "static BG_NOINLINE void %s_%d(double *v) {\n  (void)v;\n", name, part);
+    bg_sb_printf(c, "static BG_NOINLINE void %s_%d(const double *v, double *d%s) {\n  double r, q, mg;\n"
+                    "  (void)v, (void)d, (void)r, (void)q, (void)mg;\n", name, part, ev ? ", const bg_mc *c" : "");
+  else bg_sb_printf(c, "static BG_NOINLINE void %s_%d(double *v%s) {\n  (void)v;\n", name, part, ev ? ", bg_mc *c" : "");
+  if (ev) bg_sb_puts(c, "  (void)c;\n");
 }
 
 /* The function `name` of the code [c0, c1): its values (deriv 0) or their
  * directional derivatives (deriv 1), in parts of BG_PART instructions. */
 static void code_fn(const bg_eqsys *s, const char *name, const char *what, int c0, int c1,
-                    int deriv, bg_strbuf *c) {
+                    int deriv, int ev, bg_strbuf *c) {
   int nparts = c1 > c0 ? (c1 - c0 + BG_PART - 1) / BG_PART : 0;
   for (int part = 0; part < nparts; part++) {
     int a = c0 + part * BG_PART, b = a + BG_PART < c1 ? a + BG_PART : c1;
-    part_head(name, part, deriv, c);
+    part_head(name, part, deriv, ev, c);
     if (deriv)
-      for (int k = a; k < b; k++) deriv_stmt(s, &s->code[k], c);
+      for (int k = a; k < b; k++) {
+        if (ev && s->code_ev[k] >= 0) bg_xev_c_der(s, s->code_ev[k], c);
+        deriv_stmt(s, &s->code[k], c);
+      }
     else bg_xl_code(&bg_xlang_c, s, a, b, "v", c);
     bg_sb_puts(c, "}\n");
   }
   if (what) bg_sb_printf(c, "/* %s */\n", what);
-  bg_sb_printf(c, "static void %s(%s) {\n  (void)v;%s\n", name,
-               deriv ? "const double *v, double *d" : "double *v", deriv ? " (void)d;" : "");
+  bg_sb_printf(c, "static void %s(%s%s) {\n  (void)v;%s%s\n", name,
+               deriv ? "const double *v, double *d" : "double *v", ev ? (deriv ? ", const bg_mc *c" : ", bg_mc *c") : "",
+               deriv ? " (void)d;" : "", ev ? " (void)c;" : "");
   for (int part = 0; part < nparts; part++)
-    bg_sb_printf(c, "  %s_%d(v%s);\n", name, part, deriv ? ", d" : "");
+    bg_sb_printf(c, "  %s_%d(v%s%s);\n", name, part, deriv ? ", d" : "", ev ? ", c" : "");
   bg_sb_puts(c, "}\n\n");
 }
 
@@ -240,13 +254,23 @@ static void eval_fns(const cx *X, bg_strbuf *c) {
                P, U, U);
   bg_xl_constants(&bg_xlang_c, s, "v", "p->%s", c);
   bg_sb_puts(c, "}\n\n");
-  code_fn(s, "bg_main", "the equations in computational order", 0, s->nmain, 0, c);
-  code_fn(s, "bg_output_code", NULL, s->nmain, s->nout_code, 0, c);
-  code_fn(s, "bg_initial_code", NULL, s->nout_code, s->ncode, 0, c);
-  code_fn(s, "bg_deriv", "one directional derivative d of every value, given v", 0, s->nmain, 1, c);
+  code_fn(s, "bg_main", "the equations in computational order", 0, s->nmain, 0, s->nev > 0, c);
+  code_fn(s, "bg_output_code", NULL, s->nmain, s->nout_code, 0, 0, c);
+  code_fn(s, "bg_initial_code", NULL, s->nout_code, s->ncode, 0, 0, c);
+  code_fn(s, "bg_deriv", "one directional derivative d of every value, given v", 0, s->nmain, 1, s->nev > 0, c);
   bg_sb_puts(c, "\n");
   bg_sb_printf(c, "static int bg_rows_finite(const double *v) {\n  for (int i = 0; i < %s_N; i++)\n"
                   "    if (!isfinite(v[bg_row_slot[i]])) return 0;\n  return 1;\n}\n\n", U);
+  if (!s->nev) return;
+  bg_sb_printf(c, "/* The values with the modes held; as compiled where a held value is not\n"
+                  " * finite (a branch continued past its switching point can leave a law's\n"
+                  " * domain). Returns how they were computed: 1 held, 0 as compiled. */\n"
+                  "static int bg_eval_modes(const %s_params *p, const %s_modes *md, double t, const double *y, const double *yp,\n"
+                  "                         double *v, int outputs) {\n  bg_mc c = {(%s_modes *)md, 1, NULL, NULL};\n"
+                  "  for (;; c.how = 0) {\n    bg_start(p, t, y, yp, v);\n    bg_main(v, &c);\n"
+                  "    int ok = 1;\n    if (outputs) {\n      bg_output_code(v);\n"
+                  "      for (int k = 0; k < %s_NOUT; k++) ok &= isfinite(v[bg_out_slot[k]]) != 0;\n"
+                  "    } else ok = bg_rows_finite(v);\n    if (ok || c.how == 0) return c.how;\n  }\n}\n\n", P, P, P, U);
 }
 
 static void initial_fn(const cx *X, bg_strbuf *c) {
@@ -255,7 +279,8 @@ static void initial_fn(const cx *X, bg_strbuf *c) {
   double *y0 = bg_xcalloc((size_t)s->n + 1, sizeof(double));
   bg_eqsys_initial(s, y0);
   bg_sb_printf(c, "void %s_initial(const %s_params *p, double t0, double *y0, double *work) {\n"
-                  "  double *v = work;\n  bg_start(p, t0, NULL, NULL, v);\n  bg_main(v);\n  bg_initial_code(v);\n", P, P);
+                  "  double *v = work;\n  bg_start(p, t0, NULL, NULL, v);\n  bg_main(v%s);\n  bg_initial_code(v);\n", P, P,
+               s->nev ? ", NULL" : "");
   for (int i = 0; i < s->n; i++) {
     bg_sb_printf(c, "  y0[%d] = ", i);
     if (i < s->nint && s->init_slot[i] >= 0) bg_sb_printf(c, "v[%d]", s->init_slot[i]);
@@ -268,37 +293,55 @@ static void initial_fn(const cx *X, bg_strbuf *c) {
   (void)U;
 }
 
+/* The evaluation at (t, y, yp) into v: as compiled, or (a model with state
+ * events) with the modes md held (bg_eval_modes; outputs: 1 with them). */
+static void eval_stmt(const bg_eqsys *s, const char *y, const char *yp, int outputs, bg_strbuf *c) {
+  if (s->nev) bg_sb_printf(c, "  bg_eval_modes(p, md, t, %s, %s, v, %d);\n", y, yp, outputs);
+  else bg_sb_printf(c, "  bg_start(p, t, %s, %s, v);\n  bg_main(v);\n%s", y, yp, outputs ? "  bg_output_code(v);\n" : "");
+}
+
+/* rhs, residual, jacobian, outputs; a model with state events takes the
+ * modes md after p (a model without keeps its interface byte for byte). */
 static void api_fns(const cx *X, bg_strbuf *c) {
   const bg_eqsys *s = X->s;
   const char *P = X->P, *U = X->U;
   int ode = bg_eqsys_is_ode(s);
-  if (ode)
-    bg_sb_printf(c, "int %s_rhs(const %s_params *p, double t, const double *y, double *ydot, double *work) {\n"
-                    "  double *v = work;\n  bg_start(p, t, y, NULL, v);\n  bg_main(v);\n"
-                    "  for (int i = 0; i < %s_NX; i++) ydot[i] = v[bg_row_slot[i]];\n  return bg_rows_finite(v) ? 0 : -1;\n}\n\n",
-                 P, P, U);
-  bg_sb_printf(c, "int %s_residual(const %s_params *p, double t, const double *y, const double *yp, double *res,\n"
-                  "                double *work) {\n  double *v = work;\n  bg_start(p, t, y, yp, v);\n  bg_main(v);\n"
-                  "  for (int i = 0; i < %s_N; i++)\n"
+  char md[160] = "", half[80];
+  if (s->nev) snprintf(md, sizeof md, "const %s_modes *md, ", P);
+  if (s->nev) snprintf(half, sizeof half, "%d", s->nslot); /* U_NWORK holds the event scratch too */
+  else snprintf(half, sizeof half, "%s_NWORK / 2", U);
+  if (ode) {
+    bg_sb_printf(c, "int %s_rhs(const %s_params *p, %sdouble t, const double *y, double *ydot, double *work) {\n"
+                    "  double *v = work;\n", P, P, md);
+    eval_stmt(s, "y", "NULL", 0, c);
+    bg_sb_printf(c, "  for (int i = 0; i < %s_NX; i++) ydot[i] = v[bg_row_slot[i]];\n  return bg_rows_finite(v) ? 0 : -1;\n}\n\n", U);
+  }
+  bg_sb_printf(c, "int %s_residual(const %s_params *p, %sdouble t, const double *y, const double *yp, double *res,\n"
+                  "                double *work) {\n  double *v = work;\n", P, P, md);
+  eval_stmt(s, "y", "yp", 0, c);
+  bg_sb_printf(c, "  for (int i = 0; i < %s_N; i++)\n"
                   "    res[i] = bg_row_kind[i] == 0 ? yp[i] - v[bg_row_slot[i]] : v[bg_row_slot[i]];\n"
-                  "  return bg_rows_finite(v) ? 0 : -1;\n}\n\n", P, P, U);
-  bg_sb_printf(c, "int %s_jacobian(const %s_params *p, double t, const double *y, const double *yp, double cj,\n"
+                  "  return bg_rows_finite(v) ? 0 : -1;\n}\n\n", U);
+  bg_sb_printf(c, "int %s_jacobian(const %s_params *p, %sdouble t, const double *y, const double *yp, double cj,\n"
                   "                double *values, double *work) {\n"
-                  "  const int ode = %d;\n  double *v = work, *d = work + %s_NWORK / 2;\n"
-                  "  bg_start(p, t, y, ode ? NULL : yp, v);\n  bg_main(v);\n"
-                  "  for (int c = 0; c < %d; c++) {\n    memset(d, 0, sizeof(double) * (%s_NWORK / 2));\n"
+                  "  const int ode = %d;\n  double *v = work, *d = work + %s;\n", P, P, md, ode, half);
+  if (s->nev)
+    bg_sb_printf(c, "  bg_mc mc = {(%s_modes *)md, bg_eval_modes(p, md, t, y, ode ? NULL : yp, v, 0), NULL, NULL};\n", P);
+  else bg_sb_puts(c, "  bg_start(p, t, y, ode ? NULL : yp, v);\n  bg_main(v);\n");
+  bg_sb_printf(c, "  for (int c = 0; c < %d; c++) {\n    memset(d, 0, sizeof(double) * (%s));\n"
                   "    for (int k = bg_color_adr[c]; k < bg_color_adr[c + 1]; k++)\n"
                   "      d[1 + bg_color_cols[k]] = 1, d[1 + %s_N + bg_color_cols[k]] = ode ? 0 : cj;\n"
-                  "    bg_deriv(v, d);\n    for (int q = bg_color_adr[c]; q < bg_color_adr[c + 1]; q++) {\n"
+                  "    bg_deriv(v, d%s);\n    for (int q = bg_color_adr[c]; q < bg_color_adr[c + 1]; q++) {\n"
                   "      int j = bg_color_cols[q];\n      for (int k = %s_jac_colptr[j]; k < %s_jac_colptr[j + 1]; k++) {\n"
                   "        int i = %s_jac_rowind[k];\n        double x = d[bg_row_slot[i]];\n"
                   "        if (bg_row_kind[i] == 0 && !ode) x = (i == j ? cj : 0) - x;\n        values[k] = x;\n"
                   "      }\n    }\n  }\n  (void)cj, (void)yp;\n  return bg_rows_finite(v) ? 0 : -1;\n}\n\n",
-               P, P, ode, U, s->ncolor, U, U, P, P, P);
-  bg_sb_printf(c, "int %s_outputs(const %s_params *p, double t, const double *y, const double *yp, double *out,\n"
-                  "               double *work) {\n  double *v = work;\n  bg_start(p, t, y, yp, v);\n  bg_main(v);\n"
-                  "  bg_output_code(v);\n  int ok = 1;\n  for (int k = 0; k < %s_NOUT; k++) out[k] = v[bg_out_slot[k]], ok &= isfinite(out[k]) != 0;\n"
-                  "  return ok ? 0 : -1;\n}\n", P, P, U);
+               s->ncolor, half, U, s->nev ? ", &mc" : "", P, P, P);
+  bg_sb_printf(c, "int %s_outputs(const %s_params *p, %sdouble t, const double *y, const double *yp, double *out,\n"
+                  "               double *work) {\n  double *v = work;\n", P, P, md);
+  eval_stmt(s, "y", "yp", 1, c);
+  bg_sb_printf(c, "  int ok = 1;\n  for (int k = 0; k < %s_NOUT; k++) out[k] = v[bg_out_slot[k]], ok &= isfinite(out[k]) != 0;\n"
+                  "  return ok ? 0 : -1;\n}\n%s", U, s->nev ? "\n" : "");
 }
 
 void bg_export_c(const bg_eqsys *s, const char *prefix, const char *header_name, bg_strbuf *h,
@@ -316,8 +359,10 @@ void bg_export_c(const bg_eqsys *s, const char *prefix, const char *header_name,
                 "#define BG_NOINLINE\n#endif\n\n");
   prelude_fn(c);
   prelude_tables(s->m, c);
+  if (s->nev) bg_xev_c_runtime(s, prefix, c);
   tables_of_names(&X, c);
   eval_fns(&X, c);
   initial_fn(&X, c);
   api_fns(&X, c);
+  if (s->nev) bg_xev_c_api(s, prefix, X.U, c);
 }

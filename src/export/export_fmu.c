@@ -105,7 +105,8 @@ void bg_export_fmu_description(const bg_eqsys *s, const char *prefix, const char
   xml_attr(o, m->name);
   bg_sb_printf(o, "\" guid=\"%s\"", guid);
   if (m->title) bg_sb_puts(o, " description=\""), xml_attr(o, m->title), bg_sb_puts(o, "\"");
-  bg_sb_puts(o, " generationTool=\"bgdraw\" variableNamingConvention=\"flat\" numberOfEventIndicators=\"0\">\n");
+  bg_sb_puts(o, " generationTool=\"bgdraw\" variableNamingConvention=\"flat\" numberOfEventIndicators=\"");
+  bg_sb_printf(o, "%d\">\n", bg_eqsys_nroots(s));
   bg_sb_printf(o, "  <ModelExchange modelIdentifier=\"%s\">\n    <SourceFiles>\n", prefix);
   bg_sb_printf(o, "      <File name=\"%s.c\"/>\n      <File name=\"%s_fmi2.c\"/>\n", prefix, prefix);
   bg_sb_puts(o, "    </SourceFiles>\n  </ModelExchange>\n");
@@ -147,12 +148,12 @@ static const char glue_types[] =
 static const char glue_instance[] =
     "enum { MODE_INSTANTIATED, MODE_INIT, MODE_EVENT, MODE_CONTINUOUS, MODE_TERMINATED };\n"
     "typedef struct {\n  fmi2CallbackFunctions cb;\n  char *name;\n  int mode, logging;\n  M_params p;\n  double t;\n"
-    "  double x[M_NX + 1], dx[M_NX + 1], out[M_NOUT + 1], work[M_NWORK + 1];\n} bg_fmu;\n\n"
+    "  double x[M_NX + 1], dx[M_NX + 1], out[M_NOUT + 1], work[M_NWORK + 1];\n  M_EVENT_FIELDS\n} bg_fmu;\n\n"
     "static fmi2Status bg_fail(bg_fmu *m, const char *msg) {\n"
     "  if (m && m->cb.logger) m->cb.logger(m->cb.componentEnvironment, m->name, fmi2Error, \"logStatusError\", \"%s\", msg);\n"
     "  return fmi2Error;\n}\n\n"
     "/* the states from the params at time t: the model's q0, p0, init */\n"
-    "static void bg_reinit(bg_fmu *m) { M_initial(&m->p, m->t, m->x, m->work); }\n\n"
+    "static void bg_reinit(bg_fmu *m) {\n  M_initial(&m->p, m->t, m->x, m->work);\n  M_MODES_START(m);\n}\n\n"
     "FMI2_EXPORT const char *fmi2GetTypesPlatform(void) { return \"default\"; }\n"
     "FMI2_EXPORT const char *fmi2GetVersion(void) { return \"2.0\"; }\n\n"
     "FMI2_EXPORT fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, fmi2String location,\n"
@@ -164,7 +165,7 @@ static const char glue_instance[] =
     "  if (!m) return bg_fail(&tmp, \"out of memory\"), NULL;\n  *m = tmp;\n  size_t n = strlen(tmp.name) + 1;\n"
     "  m->name = m->cb.allocateMemory ? m->cb.allocateMemory(n, 1) : calloc(n, 1);\n"
     "  if (m->name) memcpy(m->name, tmp.name, n);\n"
-    "  m->logging = logging;\n  m->p = M_default_params;\n  bg_reinit(m);\n  return m;\n}\n\n"
+    "  m->logging = logging;\n  m->p = M_default_params;\n  M_SETUP_SPAN(m, 0, 0, 0);\n  bg_reinit(m);\n  return m;\n}\n\n"
     "FMI2_EXPORT void fmi2FreeInstance(fmi2Component c) {\n  bg_fmu *m = c;\n  if (!m) return;\n"
     "  void (*fr)(void *) = m->cb.freeMemory ? m->cb.freeMemory : free;\n  fr(m->name);\n  fr(m);\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const fmi2String cat[]) {\n"
@@ -173,7 +174,7 @@ static const char glue_instance[] =
     "                                           fmi2Boolean stop_defined, fmi2Real stop) {\n"
     "  bg_fmu *m = c;\n  (void)tol_defined, (void)tol, (void)stop_defined, (void)stop;\n"
     "  if (m->mode != MODE_INSTANTIATED) return bg_fail(m, \"fmi2SetupExperiment only after fmi2Instantiate\");\n"
-    "  m->t = t0;\n  bg_reinit(m);\n  return fmi2OK;\n}\n\n"
+    "  m->t = t0;\n  M_SETUP_SPAN(m, t0, stop_defined, stop);\n  bg_reinit(m);\n  return fmi2OK;\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2EnterInitializationMode(fmi2Component c) {\n  bg_fmu *m = c;\n"
     "  if (m->mode != MODE_INSTANTIATED) return bg_fail(m, \"fmi2EnterInitializationMode out of order\");\n"
     "  m->mode = MODE_INIT;\n  return fmi2OK;\n}\n\n"
@@ -206,7 +207,7 @@ static const char glue_real[] =
     "  if (m->mode == MODE_INSTANTIATED || m->mode == MODE_INIT) bg_reinit(m); /* initial states follow the params */\n"
     "  return fmi2OK;\n}\n\n";
 
-/* Continuous states, derivatives, events (there are none). */
+/* Time, continuous states, derivatives. */
 static const char glue_me[] =
     "FMI2_EXPORT fmi2Status fmi2SetTime(fmi2Component c, fmi2Real t) { ((bg_fmu *)c)->t = t; return fmi2OK; }\n\n"
     "FMI2_EXPORT fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx) {\n"
@@ -220,7 +221,10 @@ static const char glue_me[] =
     "  if (bg_eval(m, 0)) return bg_fail(m, \"a derivative is not finite (a law outside its domain)\");\n"
     "  for (size_t i = 0; i < nx; i++) dx[i] = m->dx[i];\n  return fmi2OK;\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {\n"
-    "  (void)c;\n  for (size_t i = 0; i < nx; i++) x[i] = 1.0;\n  return fmi2OK;\n}\n\n"
+    "  (void)c;\n  for (size_t i = 0; i < nx; i++) x[i] = 1.0;\n  return fmi2OK;\n}\n\n";
+
+/* Events: a model without switching conditions has none. */
+static const char glue_no_events[] =
     "FMI2_EXPORT fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real z[], size_t nz) {\n"
     "  (void)z;\n  return nz == 0 ? fmi2OK : bg_fail(c, \"the model has no event indicators\");\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2EnterEventMode(fmi2Component c) { ((bg_fmu *)c)->mode = MODE_EVENT; return fmi2OK; }\n\n"
@@ -230,6 +234,40 @@ static const char glue_me[] =
     "  e->nextEventTimeDefined = fmi2False, e->nextEventTime = 0;\n  return fmi2OK;\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {\n"
     "  ((bg_fmu *)c)->mode = MODE_CONTINUOUS;\n  return fmi2OK;\n}\n\n"
+    "FMI2_EXPORT fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean no_set_state, fmi2Boolean *enter_event,\n"
+    "                                                   fmi2Boolean *terminate) {\n"
+    "  (void)c, (void)no_set_state;\n  *enter_event = *terminate = fmi2False;\n  return fmi2OK;\n}\n\n";
+
+/* The same with state events: the root functions are the event indicators;
+ * at an event (fmi2EnterEventMode, then fmi2NewDiscreteStates) every mode is
+ * set from the values there, with the directions of the indicators that
+ * changed sign since the continuous-time phase began; no state jumps. */
+static const char glue_me_events[] =
+    "FMI2_EXPORT fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real z[], size_t nz) {\n  bg_fmu *m = c;\n"
+    "  if (nz != M_NROOT) return bg_fail(m, \"fmi2GetEventIndicators: wrong number of event indicators\");\n"
+    "  if (M_roots(&m->p, &m->md, m->t, m->x, NULL, z, m->work))\n"
+    "    return bg_fail(m, \"an event indicator is not finite (a law outside its domain)\");\n"
+    "  /* one at 0 when the phase began (a speed held at 0 while stuck) takes the\n"
+    "   * side it leaves to: crossing back later is a crossing */\n"
+    "  for (int i = 0; i < M_NROOT; i++)\n    if (m->gpre[i] == 0) m->gpre[i] = z[i];\n  return fmi2OK;\n}\n\n"
+    "FMI2_EXPORT fmi2Status fmi2EnterEventMode(fmi2Component c) {\n  bg_fmu *m = c;\n"
+    "  m->mode = MODE_EVENT, m->event_pending = 1;\n  return fmi2OK;\n}\n\n"
+    "/* the indicators at the start of a continuous-time phase: the signs a crossing changes */\n"
+    "static int bg_mark(bg_fmu *m) { return M_roots(&m->p, &m->md, m->t, m->x, NULL, m->gpre, m->work); }\n\n"
+    "FMI2_EXPORT fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *e) {\n  bg_fmu *m = c;\n"
+    "  e->newDiscreteStatesNeeded = e->terminateSimulation = fmi2False;\n"
+    "  e->nominalsOfContinuousStatesChanged = e->valuesOfContinuousStatesChanged = fmi2False;\n"
+    "  e->nextEventTimeDefined = fmi2False, e->nextEventTime = 0;\n"
+    "  if (!m->event_pending) return fmi2OK; /* after initialisation: the modes are set */\n"
+    "  m->event_pending = 0;\n"
+    "  if (M_roots(&m->p, &m->md, m->t, m->x, NULL, m->g, m->work))\n"
+    "    return bg_fail(m, \"an event indicator is not finite (a law outside its domain)\");\n"
+    "  for (int i = 0; i < M_NROOT; i++)\n"
+    "    m->dir[i] = m->gpre[i] < 0 && m->g[i] >= 0 ? 1 : m->gpre[i] > 0 && m->g[i] <= 0 ? -1 : 0;\n"
+    "  M_event(&m->p, m->t, m->x, NULL, m->dir, 1e-9 * m->span, &m->md, m->work);\n"
+    "  bg_mark(m);\n  return fmi2OK;\n}\n\n"
+    "FMI2_EXPORT fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {\n  bg_fmu *m = c;\n"
+    "  m->mode = MODE_CONTINUOUS;\n  bg_mark(m);\n  return fmi2OK;\n}\n\n"
     "FMI2_EXPORT fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean no_set_state, fmi2Boolean *enter_event,\n"
     "                                                   fmi2Boolean *terminate) {\n"
     "  (void)c, (void)no_set_state;\n  *enter_event = *terminate = fmi2False;\n  return fmi2OK;\n}\n\n";
@@ -264,7 +302,23 @@ static void glue_model(const bg_eqsys *s, const char *P, const char *guid, bg_st
   U[i] = 0;
   bg_sb_printf(c, "#define M_GUID \"%s\"\n#define M_params %s_params\n#define M_default_params %s_default_params\n", guid, P, P);
   bg_sb_printf(c, "#define M_initial %s_initial\n#define M_rhs %s_rhs\n#define M_outputs %s_outputs\n", P, P, P);
-  bg_sb_printf(c, "#define M_NX %s_NX\n#define M_NOUT %s_NOUT\n#define M_NWORK %s_NWORK\n#define M_NPARAM %s_NPARAM\n\n", U, U, U, U);
+  bg_sb_printf(c, "#define M_NX %s_NX\n#define M_NOUT %s_NOUT\n#define M_NWORK %s_NWORK\n#define M_NPARAM %s_NPARAM\n", U, U, U, U);
+  if (!s->nev) bg_sb_puts(c, "#define M_EVENT_FIELDS\n#define M_MODES_START(m)\n#define M_SETUP_SPAN(m, t0, defined, stop)\n\n");
+  else {
+    const bg_model *m = s->m;
+    double span = m->sim.present && m->sim.t_end > m->sim.t0 ? m->sim.t_end - m->sim.t0 : 1;
+    bg_sb_printf(c, "/* state events: the modes, the indicators, the span (the look-ahead is 1e-9 of it) */\n"
+                    "#define M_NROOT %s_NROOT\n#define M_roots %s_roots\n#define M_event %s_event\n"
+                    "#define M_EVENT_FIELDS %s_modes md; double g[M_NROOT + 1], gpre[M_NROOT + 1], span; "
+                    "int dir[M_NROOT + 1], event_pending;\n", U, P, P, P);
+    bg_sb_printf(c, "#define M_MODES_START(m) (%s_modes_start(&(m)->p, (m)->t, (m)->x, NULL, 1e-9 * (m)->span, &(m)->md, (m)->work), \\\n"
+                    "                          M_roots(&(m)->p, &(m)->md, (m)->t, (m)->x, NULL, (m)->gpre, (m)->work))\n", P);
+    bg_sb_puts(c, "#define M_SETUP_SPAN(m, t0, defined, stop) ((m)->span = (defined) && (stop) > (t0) ? (stop) - (t0) : ");
+    bg_xl_num(&bg_xlang_c, c, span);
+    bg_sb_printf(c, ")\n/* the functions of an instance m evaluate with its modes */\n"
+                    "#undef M_rhs\n#undef M_outputs\n#define M_rhs(p, t, x, dx, w) %s_rhs(p, &m->md, t, x, dx, w)\n"
+                    "#define M_outputs(p, t, x, dx, o, w) %s_outputs(p, &m->md, t, x, dx, o, w)\n\n", P, P);
+  }
   bg_sb_printf(c, "static double bg_unused_param;\n/* the record's field of value reference r (< M_NPARAM) */\n"
                   "static double *bg_param(%s_params *p, unsigned r) {\n  switch (r) {\n", P);
   int vr = 0;
@@ -284,5 +338,6 @@ void bg_export_fmu_glue(const bg_eqsys *s, const char *prefix, const char *heade
   bg_sb_puts(c, glue_instance);
   bg_sb_puts(c, glue_real);
   bg_sb_puts(c, glue_me);
+  bg_sb_puts(c, s->nev ? glue_me_events : glue_no_events);
   bg_sb_puts(c, glue_none);
 }

@@ -48,6 +48,30 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 /* Statements for code [c0, c1). */
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o);
 
+
+/* ---- export_events.c (and the tape's part in export_tape.c): state events in the C and Python exports (docs/export.md,
+ * "State events"): the switching instructions through their modes, the root
+ * functions, and the function that applies an event, as eqsys_events.c and
+ * the tape evaluate them inside bgdraw. */
+/* The kinds of switching instruction (export_tape.c); the numbers are the
+ * runtime's (BG_K_* in C, the Python helpers' k). */
+enum { K_LT, K_LE, K_GT, K_GE, K_TABLE, K_ABS, K_SIGN, K_STEP, K_RAMP, K_MIN, K_MAX, K_PULSE, K_SAT,
+       K_HYST, K_STICK, K_FLOOR, K_CEIL };
+int bg_xev_kind(const bg_eqsys *s, int e);
+/* "K, T, [MODE, ]x, y, z" of event e (mode: a format with %d for e, or NULL). */
+void bg_xev_args(const bg_xlang *L, const bg_eqsys *s, int e, const char *arr, const char *mode, bg_strbuf *o);
+/* C: the runtime (kinds, root functions, modes, held values and slopes)
+ * before the tape's functions; the modes struct and API in the header; the
+ * derivative of event e when its mode is held ("if (...) d[o] = ...; else");
+ * the API functions (roots, modes_start, event). */
+void bg_xev_c_runtime(const bg_eqsys *s, const char *P, bg_strbuf *c);
+void bg_xev_c_header(const bg_eqsys *s, const char *P, const char *U, bg_strbuf *h);
+void bg_xev_c_der(const bg_eqsys *s, int e, bg_strbuf *c);
+void bg_xev_c_api(const bg_eqsys *s, const char *P, const char *U, bg_strbuf *c);
+/* Python: the runtime and the API (Modes, modes_start, roots, event) and
+ * simulate() as a solve_ivp driver that restarts at each event. */
+void bg_xev_python(const bg_eqsys *s, bg_strbuf *o);
+
 /* Param k as an identifier of the exported record in language L (its name
  * with every character outside [A-Za-z0-9_] made '_', a trailing '_' when
  * L reserves it; names are unique in a model, so are these unless two meet

@@ -195,7 +195,8 @@ void bg_export_python(const bg_eqsys *s, bg_strbuf *o) {
   const bg_xlang *L = &bg_xlang_python;
   py_header(s, o);
   bg_sb_puts(o, py_helpers);
-  bg_sb_puts(o, "def _eval(p, t, y, yp):\n    p = PARAMS if p is None else p\n    v = [0.0] * _NSLOT\n"
+  bg_sb_puts(o, s->nev ? "def _eval(p, t, y, yp, c=None):\n" : "def _eval(p, t, y, yp):\n");
+  bg_sb_puts(o, "    p = PARAMS if p is None else p\n    v = [0.0] * _NSLOT\n"
                 "    v[0] = t\n    for i in range(N):\n        v[1 + i] = float(y[i])\n"
                 "        v[1 + N + i] = 0.0 if yp is None else float(yp[i])\n");
   bg_xl_constants(L, s, "v", "p[\"%s\"]", o);
@@ -210,7 +211,8 @@ void bg_export_python(const bg_eqsys *s, bg_strbuf *o) {
   bg_sb_puts(o, "    y0 = [0.0] * N\n");
   initial_stmts(L, s, o);
   bg_sb_puts(o, "    return np.array(y0)\n\n\n");
-  bg_sb_puts(o, py_api);
+  if (s->nev) bg_xev_python(s, o); /* modes, root functions, the event driver */
+  else bg_sb_puts(o, py_api);
 }
 
 /* ------------------------------------------------------------ Octave */

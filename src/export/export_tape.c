@@ -94,17 +94,13 @@ static void lin_value(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, con
   if (!I->a[0]) bg_sb_puts(o, "0");
 }
 
-/* "arr[out] = value;" for tape instruction I. */
-static void value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr,
-                       bg_strbuf *o) {
+/* The value expression of tape instruction I (no assignment). */
+static void xl_expr(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr, bg_strbuf *o) {
   static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1",
                                 [BG_X_MUL] = "%0 * %1", [BG_X_DIV] = "%0 / %1"};
-  bg_sb_puts(o, L->indent);
-  bg_xl_slot(L, o, arr, I->out);
-  bg_sb_puts(o, " = ");
   const char *tpl;
   switch (I->op) {
-  case T_LIN: lin_value(L, s, I, arr, o); bg_sb_printf(o, "%s\n", L->stmt_end); return;
+  case T_LIN: lin_value(L, s, I, arr, o); return;
   case BG_X_CALL: tpl = L->fn[I->ref]; break;
   case BG_X_TABLE: tpl = L->table; break;
   case BG_X_NEG: tpl = L->neg; break;
@@ -116,6 +112,74 @@ static void value_stmt(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, co
   default: tpl = L->cmp; break;
   }
   expand(L, o, tpl, I->a, I->ref, cmp_op(L, I->op), arr);
+}
+
+/* ------------------------------------------------------------ switching instructions
+ * (docs/export.md, "State events"): written through their modes; the
+ * runtime they call is export_events.c's. */
+int bg_xev_kind(const bg_eqsys *s, int e) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  switch (I->op) {
+  case BG_X_LT: return K_LT;
+  case BG_X_LE: return K_LE;
+  case BG_X_GT: return K_GT;
+  case BG_X_GE: return K_GE;
+  case BG_X_TABLE: return K_TABLE;
+  default: break;
+  }
+  switch (I->ref) {
+  case BG_FN_ABS: return K_ABS;
+  case BG_FN_SIGN: return K_SIGN;
+  case BG_FN_STEP: return K_STEP;
+  case BG_FN_RAMP: return K_RAMP;
+  case BG_FN_MIN: return K_MIN;
+  case BG_FN_MAX: return K_MAX;
+  case BG_FN_PULSE: return K_PULSE;
+  case BG_FN_SAT: return K_SAT;
+  case BG_FN_HYST: return K_HYST;
+  case BG_FN_STICK: return K_STICK;
+  case BG_FN_FLOOR: return K_FLOOR;
+  default: return K_CEIL;
+  }
+}
+
+/* "K, T, [MODE, ]v[a0], v[a1], v[a2]": the kind, the table (0 when none),
+ * mode (when given: an expression with %d for the event) and the three
+ * argument values (0 for an argument the instruction lacks). */
+void bg_xev_args(const bg_xlang *L, const bg_eqsys *s, int e, const char *arr, const char *mode, bg_strbuf *o) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  bg_sb_printf(o, "%d, %d", bg_xev_kind(s, e), I->op == BG_X_TABLE ? I->ref : 0);
+  if (mode) bg_sb_puts(o, ", "), bg_sb_printf(o, mode, e);
+  for (int q = 0; q < 3; q++) {
+    bg_sb_puts(o, ", ");
+    if (q < I->na) bg_xl_slot(L, o, arr, I->a[q]);
+    else bg_sb_puts(o, "0.0");
+  }
+}
+
+/* The value of switching instruction e (event e of s) through its mode:
+ * C and Python call the runtime (bg_at, _at) with the compiled value beside
+ * it; Octave writes the compiled value (its export has no modes). */
+static void xev_value(const bg_xlang *L, const bg_eqsys *s, int e, const char *arr, bg_strbuf *o) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  if (L == &bg_xlang_octave) { xl_expr(L, s, I, arr, o); return; }
+  bg_sb_printf(o, "%s(c, %d, ", L == &bg_xlang_c ? "bg_at" : "_at", e);
+  bg_xev_args(L, s, e, arr, NULL, o);
+  bg_sb_printf(o, ", %d, ", s->ev_root0[e]);
+  xl_expr(L, s, I, arr, o);
+  bg_sb_puts(o, ")");
+}
+
+/* "arr[out] = value;" for tape instruction k; a switching instruction of a
+ * model with state events goes through its mode (export_events.c). */
+static void value_stmt(const bg_xlang *L, const bg_eqsys *s, int k, const char *arr, bg_strbuf *o) {
+  const tinstr *I = &s->code[k];
+  bg_sb_puts(o, L->indent);
+  bg_xl_slot(L, o, arr, I->out);
+  bg_sb_puts(o, " = ");
+  int e = s->nev && k < s->nmain ? s->code_ev[k] : -1;
+  if (e >= 0) xev_value(L, s, e, arr, o);
+  else xl_expr(L, s, I, arr, o);
   bg_sb_printf(o, "%s\n", L->stmt_end);
 }
 
@@ -137,7 +201,7 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 }
 
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o) {
-  for (int k = c0; k < c1; k++) value_stmt(L, s, &s->code[k], arr, o);
+  for (int k = c0; k < c1; k++) value_stmt(L, s, k, arr, o);
 }
 
 int bg_export_nparams(const bg_eqsys *s) {
@@ -158,15 +222,19 @@ int bg_export_prefix_ok(const char *p) {
   return 1;
 }
 
-int bg_export_refusal(const bg_eqsys *s, bg_strbuf *why) {
+int bg_export_refusal(const bg_eqsys *s, const char *format, bg_strbuf *why) {
+  /* C, Python and the FMU carry the modes (export_events.c); Octave and
+   * Modelica do not, and a memory function has no value without its mode */
+  if (!strcmp(format, "c") || !strcmp(format, "h") || !strcmp(format, "py") || !strcmp(format, "fmu")) return 0;
   int nm = bg_eqsys_nmodes(s), first;
   for (int e = 0; e < nm; e++) {
     if (!bg_eqsys_mode_memory(s, e)) continue;
     bg_eqsys_mode_roots(s, e, &first);
     bg_sb_printf(why, "the model keeps a discrete state (%s, %d memory function%s in all) that the "
-                 "exported code does not carry: between events its value would be wrong; simulate "
-                 "it with bgdraw (docs/export.md)", bg_eqsys_root_text(s, first), bg_eqsys_has_memory(s),
-                 bg_eqsys_has_memory(s) == 1 ? "" : "s");
+                 "%s export does not carry: between events its value would be wrong; export it to C, "
+                 "Python or an FMU, or simulate it with bgdraw (docs/export.md)", bg_eqsys_root_text(s, first),
+                 bg_eqsys_has_memory(s), bg_eqsys_has_memory(s) == 1 ? "" : "s",
+                 !strcmp(format, "m") ? "Octave/MATLAB" : "Modelica");
     return 1;
   }
   return 0;

@@ -24,8 +24,8 @@ static void base_name(const char *path, char *buf, size_t n) {
   if (dot) *dot = 0;
 }
 
-bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys **s, char *prefix,
-                                      size_t n) {
+bg_output_status bg_out_export_system(bg_output *w, const char *format, const char *path, bg_eqsys **s,
+                                      char *prefix, size_t n) {
   *s = NULL;
   if (w->o.prefix && !bg_export_prefix_ok(w->o.prefix))
     return bg_out_error(w, BG_OUT_USAGE, "--prefix '%s' is not a C identifier (letters, digits, '_')%s",
@@ -38,7 +38,7 @@ bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys *
   bg_diags_free(&dg);
   if (!*s) return bg_out_error(w, BG_OUT_MODEL, "no equations for '%s'%s", path ? path : "stdout", "");
   bg_strbuf why = {0};
-  if (bg_export_refusal(*s, &why)) { /* memory: every export, the FMU too */
+  if (bg_export_refusal(*s, format, &why)) { /* memory in an export without modes */
     char what[300];
     snprintf(what, sizeof what, "export refused: '%s': ", path ? path : "stdout");
     bg_output_status st = bg_out_refuse(w, what, bg_sb_str(&why));
@@ -46,6 +46,11 @@ bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys *
     *s = NULL;
     return st;
   }
+  if (!strcmp(format, "m") && bg_eqsys_nmodes(*s)) /* ode15s without 'Events' steps over them */
+    bg_diag_warning(&w->dg, (bg_srcloc){0}, "'%s': the Octave/MATLAB export has no event handling: "
+                    "ode15s steps over the model's %d switching conditions, so results near a switch are "
+                    "only as good as its step control; export to C, Python or an FMU for located events "
+                    "(docs/export.md)", path ? path : "stdout", bg_eqsys_nmodes(*s));
   prefix_of(w, prefix, n);
   return BG_OUT_OK;
 }
@@ -53,7 +58,7 @@ bg_output_status bg_out_export_system(bg_output *w, const char *path, bg_eqsys *
 bg_output_status bg_out_export(bg_output *w, const char *format, const char *path, bg_strbuf *out) {
   bg_eqsys *s;
   char prefix[80], name[300];
-  bg_output_status st = bg_out_export_system(w, path, &s, prefix, sizeof prefix);
+  bg_output_status st = bg_out_export_system(w, !strcmp(format, "h") ? "c" : format, path, &s, prefix, sizeof prefix);
   if (st != BG_OUT_OK) return st;
   if (!strcmp(format, "c") || !strcmp(format, "h")) {
     bg_strbuf h = {0}, c = {0};

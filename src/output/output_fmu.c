@@ -266,7 +266,7 @@ bg_output_status bg_out_fmu(bg_output *w, const bg_output_kind *k, const char *f
   (void)k, (void)form;
   char prefix[80];
   bg_eqsys *s = NULL;
-  bg_output_status st = bg_out_export_system(w, path, &s, prefix, sizeof prefix);
+  bg_output_status st = bg_out_export_system(w, "fmu", path, &s, prefix, sizeof prefix);
   if (st != BG_OUT_OK) return st;
   if (!bg_eqsys_is_ode(s)) {
     bg_eqsys_free(s);

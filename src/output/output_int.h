@@ -15,10 +15,11 @@ bg_output_status bg_out_no_equations(bg_output *w, const char *path);
  * header and the source as one unit, as --equations c prints them). */
 bg_output_status bg_out_export(bg_output *w, const char *format, const char *path, bg_strbuf *out);
 /* The export build of the run's model (params stay variables) into *s
+ * for format (c, py, m, mo, fmu: what it refuses)
  * (the caller frees it) and the exported symbols' prefix; BG_OUT_OK, or
  * the status after an error in w->dg (a bad --prefix, no equations). */
-bg_output_status bg_out_export_system(bg_output *w, const char *path, struct bg_eqsys **s, char *prefix,
-                                      size_t n);
+bg_output_status bg_out_export_system(bg_output *w, const char *format, const char *path,
+                                      struct bg_eqsys **s, char *prefix, size_t n);
 /* The table's writer of the export rows (the row's name is the format). */
 bg_output_status bg_out_export_row(bg_output *w, const bg_output_kind *k, const char *form, const char *path, bg_strbuf *out);
 /* output_fmu.c: the FMI 2.0 Model Exchange archive, compiled by $CC. */

@@ -4,9 +4,15 @@
  * standard prescribes (instantiate, setup, set a parameter, initialise, event
  * iteration, continuous-time mode), integrates the states with classic RK4 at
  * SUB steps per output interval, and writes the outputs at the times of a
- * reference CSV, in its header's format.
- * Usage: fmu_import LIB.so GUID NX REF.csv OUT.csv OUTVRS [VR=VALUE]
- *   OUTVRS: the outputs' value references, comma separated. */
+ * reference CSV, in its header's format. With event indicators it handles
+ * state events as an FMI master does: after each step it compares the
+ * indicators' signs with those at the start of the step; on a change it
+ * locates the first crossing by bisection of the step, completes the step
+ * to just past it, enters event mode, iterates fmi2NewDiscreteStates,
+ * returns to continuous-time mode and goes on from there.
+ * Usage: fmu_import LIB.so GUID NX REF.csv OUT.csv OUTVRS [nz=N] [events=FILE] [VR=VALUE]...
+ *   OUTVRS: the outputs' value references, comma separated; nz: the number
+ *   of event indicators; events: where each crossing is written ("t i dir"). */
 #include <dlfcn.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -59,6 +65,30 @@ static int read_ref(const char *path) {
   return ntimes > 1 ? 0 : -1;
 }
 
+/* The fmi2 functions the integration calls, looked up once in main. */
+static Status (*set_time)(Comp, double), (*set_states)(Comp, const double *, size_t),
+    (*get_derivatives)(Comp, double *, size_t);
+
+/* One classic RK4 step of length h from (t, x) into xn; the FMU is left at (t + h, xn). */
+static int rk4(Comp c, double t, const double *x, double h, double *xn, int nx) {
+  static const double at[4] = {0, 0.5, 0.5, 1};
+  double k[4][64], xs[64];
+  for (int q = 0; q < 4; q++) {
+    for (int i = 0; i < nx; i++) xs[i] = x[i] + (q ? at[q] * h * k[q - 1][i] : 0);
+    if (set_time(c, t + at[q] * h) || set_states(c, xs, (size_t)nx) || get_derivatives(c, k[q], (size_t)nx))
+      return fprintf(stderr, "failed: an evaluation at t = %g\n", t + at[q] * h), 1;
+  }
+  for (int i = 0; i < nx; i++) xn[i] = x[i] + h / 6 * (k[0][i] + 2 * k[1][i] + 2 * k[2][i] + k[3][i]);
+  return set_time(c, t + h) || set_states(c, xn, (size_t)nx);
+}
+
+/* 1 when an event indicator changed sign from z to zn (left 0 is no crossing). */
+static int crossed(const double *z, const double *zn, int nz) {
+  for (int i = 0; i < nz; i++)
+    if ((z[i] < 0 && zn[i] >= 0) || (z[i] > 0 && zn[i] <= 0)) return 1;
+  return 0;
+}
+
 int main(int argc, char **argv) {
   if (argc < 7 || read_ref(argv[4])) return fprintf(stderr, "usage: see the source\n"), 2;
   lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
@@ -79,6 +109,9 @@ int main(int argc, char **argv) {
   FN(Status, fmi2SetTime, Comp, double);
   FN(Status, fmi2CompletedIntegratorStep, Comp, int, int *, int *);
   FN(Status, fmi2Terminate, Comp);
+  FN(Status, fmi2GetEventIndicators, Comp, double *, size_t);
+  FN(Status, fmi2EnterEventMode, Comp);
+  set_time = fmi2SetTime, set_states = fmi2SetContinuousStates, get_derivatives = fmi2GetDerivatives;
   FN(void, fmi2FreeInstance, Comp);
   if (strcmp(fmi2GetVersion(), "2.0") || strcmp(fmi2GetTypesPlatform(), "default")) return 3;
   Callbacks cb = {logger, calloc, free, NULL, NULL};
@@ -90,7 +123,11 @@ int main(int argc, char **argv) {
   unsigned ovr[64];
   for (char *t = strtok(argv[6], ","); t && nout < 64; t = strtok(NULL, ",")) ovr[nout++] = (unsigned)atoi(t);
   CHECK(fmi2SetupExperiment(c, 0, 0, times[0], 1, times[ntimes - 1]));
+  int nz = 0;
+  FILE *fe = NULL;
   for (int a = 7; a < argc; a++) { /* VR=VALUE: a parameter, then read back */
+    if (!strncmp(argv[a], "nz=", 3)) { nz = atoi(argv[a] + 3); continue; }
+    if (!strncmp(argv[a], "events=", 7)) { fe = fopen(argv[a] + 7, "w"); continue; }
     unsigned vr = (unsigned)atoi(argv[a]);
     double v = atof(strchr(argv[a], '=') + 1), back = 0;
     CHECK(fmi2SetReal(c, &vr, 1, &v));
@@ -102,29 +139,51 @@ int main(int argc, char **argv) {
   EventInfo ev = {1, 0, 0, 0, 0, 0};
   while (ev.new_discrete && !ev.terminate) CHECK(fmi2NewDiscreteStates(c, &ev));
   CHECK(fmi2EnterContinuousTimeMode(c));
-  double x[64], k[4][64], xs[64], out[64];
-  if (nx > 64 || nout > 64) return 2;
+  double x[64], xn[64], out[64], z[64], zn[64];
+  if (nx > 64 || nout > 64 || nz > 64) return 2;
   CHECK(fmi2GetContinuousStates(c, x, (size_t)nx));
+  if (nz) CHECK(fmi2GetEventIndicators(c, z, (size_t)nz));
   FILE *f = fopen(argv[5], "w");
   fputs(header, f);
   const int SUB = 100;
+  double t = times[0];
   for (int r = 0; r < ntimes; r++) {
-    if (r > 0) {
-      double h = (times[r] - times[r - 1]) / SUB, t = times[r - 1];
-      for (int s = 0; s < SUB; s++, t = times[r - 1] + s * h) {
-        static const double at[4] = {0, 0.5, 0.5, 1};
-        for (int q = 0; q < 4; q++) {
-          for (int i = 0; i < nx; i++) xs[i] = x[i] + (q ? at[q] * h * k[q - 1][i] : 0);
-          CHECK(fmi2SetTime(c, t + at[q] * h));
-          CHECK(fmi2SetContinuousStates(c, xs, (size_t)nx));
-          CHECK(fmi2GetDerivatives(c, k[q], (size_t)nx));
+    double h = r > 0 ? (times[r] - times[r - 1]) / SUB : 0;
+    while (r > 0 && times[r] - t > 1e-9 * h) {
+      double hs = h < times[r] - t ? h : times[r] - t;
+      if (rk4(c, t, x, hs, xn, nx)) return 1;
+      int enter = 0, term = 0;
+      CHECK(fmi2CompletedIntegratorStep(c, 1, &enter, &term));
+      if (enter || term) return fprintf(stderr, "unexpected step event\n"), 3;
+      if (nz) {
+        CHECK(fmi2GetEventIndicators(c, zn, (size_t)nz));
+        if (crossed(z, zn, nz)) { /* the first crossing: bisection of the step */
+          double lo = 0, hi = hs;
+          for (int it = 0; it < 200 && hi - lo > 1e-15 * (t > 1 ? t : t < -1 ? -t : 1); it++) {
+            double mid = 0.5 * (lo + hi);
+            if (rk4(c, t, x, mid, xn, nx)) return 1;
+            CHECK(fmi2GetEventIndicators(c, zn, (size_t)nz));
+            if (crossed(z, zn, nz)) hi = mid;
+            else lo = mid;
+          }
+          if (rk4(c, t, x, hi, xn, nx)) return 1; /* just past it */
+          CHECK(fmi2GetEventIndicators(c, zn, (size_t)nz));
+          for (int i = 0; i < nz && fe; i++)
+            if ((z[i] < 0 && zn[i] >= 0) || (z[i] > 0 && zn[i] <= 0)) fprintf(fe, "%.17g %d %d\n", t + hi, i, zn[i] > z[i] ? 1 : -1);
+          CHECK(fmi2EnterEventMode(c));
+          EventInfo e = {1, 0, 0, 0, 0, 0};
+          while (e.new_discrete && !e.terminate) CHECK(fmi2NewDiscreteStates(c, &e));
+          if (e.values_changed) CHECK(fmi2GetContinuousStates(c, xn, (size_t)nx));
+          CHECK(fmi2EnterContinuousTimeMode(c));
+          CHECK(fmi2GetEventIndicators(c, zn, (size_t)nz));
+          hs = hi;
         }
-        for (int i = 0; i < nx; i++) x[i] += h / 6 * (k[0][i] + 2 * k[1][i] + 2 * k[2][i] + k[3][i]);
-        int enter = 0, term = 0;
-        CHECK(fmi2CompletedIntegratorStep(c, 1, &enter, &term));
-        if (enter || term) return fprintf(stderr, "unexpected event\n"), 3;
+        memcpy(z, zn, sizeof(double) * (size_t)nz);
       }
+      t += hs;
+      memcpy(x, xn, sizeof(double) * (size_t)nx);
     }
+    t = times[r];
     CHECK(fmi2SetTime(c, times[r]));
     CHECK(fmi2SetContinuousStates(c, x, (size_t)nx));
     CHECK(fmi2GetReal(c, ovr, (size_t)nout, out));
@@ -132,6 +191,7 @@ int main(int argc, char **argv) {
     for (int i = 0; i < nout; i++) fprintf(f, ",%.17g", out[i]);
     fputc('\n', f);
   }
+  if (fe) fclose(fe);
   fclose(f);
   CHECK(fmi2Terminate(c));
   fmi2FreeInstance(c);
