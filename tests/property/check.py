@@ -508,19 +508,28 @@ EXPORT_EVERY = 10  # the C export is compiled for one model in EXPORT_EVERY (by 
 def _export_c(res, bgdraw, m, workdir, seed, an, rows):
     """The C export (-o NAME.c), compiled with tests/export/driver.c and
     integrated with IDA from its own initial values, residual and exact
-    Jacobian, reproduces bgdraw's CSV to 1e-5 of each column's range."""
+    Jacobian, reproduces bgdraw's CSV to 1e-5 of each column's range. An ODE
+    with switching conditions runs through tests/export/events_driver.c
+    instead (CVODE's root finding on the exported root functions, the
+    exported event function at each root; docs/export.md, "State events")."""
     why = None
     sim = an.get("simulation") or {}
+    switching = bool(sim.get("events"))
     if rows is None:
         why = "no simulation"
     elif seed % EXPORT_EVERY:
         why = "one model in %d" % EXPORT_EVERY
     elif _dae_repaired(an):
         why = "index reduced or initial values made consistent"
-    elif "step(" in m.text() or "table(t" in m.text() or (sim.get("events") or {}).get("count"):
-        why = "time events (the driver integrates straight through)"
+    elif "step(" in m.text() or "table(t" in m.text():
+        why = "input breakpoints (the drivers integrate straight through)"
+    elif switching and an["form"] != "ode":
+        why = "switching conditions in a DAE (events_driver.c drives ODEs)"
     if why:
         res["export_c"] = ("skip", why)
+        return
+    if switching:
+        _export_c_events(res, bgdraw, workdir, rows)
         return
     # the driver links one ODE export (CVODE) and one DAE export (IDA): the
     # model takes the slot of its form, rlc or hydraulic_bridge the other
@@ -537,13 +546,33 @@ def _export_c(res, bgdraw, m, workdir, seed, an, rows):
               "-lsundials_sunmatrixdense", "-lsundials_sunlinsoldense", "-lm"],
              [w("driver")] + ([w("m.csv"), w("other.csv")] if ode_model else [w("other.csv"), w("m.csv")]) +
              [w("d_ode.csv"), w("d_dae.csv")]]
+    if _run_steps(res, steps):
+        _export_c_compare(res, workdir, w("d_%s.csv" % mine_c), rows)
+
+
+def _run_steps(res, steps):
     for cmd in steps:
         p = subprocess.run(cmd, capture_output=True, timeout=TIME_LIMIT * 4)
         if p.returncode != 0:
             res["export_c"] = ("fail", "%s: exit status %d\n%s" % (
                 os.path.basename(cmd[0]), p.returncode, p.stderr.decode("utf-8", "replace")[-1000:]))
-            return
-    head, mine = read_csv(w("d_%s.csv" % mine_c))
+            return False
+    return True
+
+
+def _export_c_events(res, bgdraw, workdir, rows):
+    w = lambda name: os.path.join(workdir, name)
+    steps = [[bgdraw, w("m.bg"), "-q", "--prefix", "ev", "-o", w("ev.c")],
+             ["cc", "-std=c11", "-O1", "-w", "-I" + workdir, os.path.join(HERE, "..", "export", "events_driver.c"),
+              w("ev.c"), "-o", w("evdriver"), "-lsundials_cvode", "-lsundials_nvecserial",
+              "-lsundials_sunmatrixdense", "-lsundials_sunlinsoldense", "-lm"],
+             [w("evdriver"), w("m.csv"), w("d_ev.csv"), w("d_ev.txt")]]
+    if _run_steps(res, steps):
+        _export_c_compare(res, workdir, w("d_ev.csv"), rows)
+
+
+def _export_c_compare(res, workdir, path, rows):
+    head, mine = read_csv(path)
     ref_head = read_csv(os.path.join(workdir, "m.csv"))[0]
     if head != ref_head or len(mine) != len(rows):
         res["export_c"] = ("fail", "columns %s, bgdraw's %s" % (head[:6], ref_head[:6]))
