@@ -370,6 +370,7 @@ static void draw_all(bg_diagram *d) {
     else bg_scene_item_box(&d->scene, it, b), bg_obstacle_rect(d, b[0], b[1], b[2], b[3]);
   }
   bg_obstacle_nodes(d);
+  if (show & BG_SHOW_SIGNALS) bg_route_signals(d); /* loops closed by a modulation follow them */
   bg_layers_prepare(d);
   if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);
   if ((show & BG_SHOW_LOOPS) || hk == 'l') bg_draw_loops(d);
@@ -485,6 +486,7 @@ void bg_diagram_free(bg_diagram *d) {
   bg_obstacles_free(d->obs);
   free(d->labels);
   free(d->poly);
+  free(d->routes);
   bg_scene_free(&d->scene);
   bg_arena_free(&d->arena);
   free(d);

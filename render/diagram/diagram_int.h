@@ -81,6 +81,9 @@ struct bg_diagram {
   struct bg_layer_label *labels; /* path tags and loop gains, placed after every line */
   int nlabels, caplabels;
   int *poly, npoly, cappoly; /* scene items of path and loop polylines */
+  struct bg_signal_route *routes; /* every routed signal's polyline, in drawing order
+                                     (diagram_signals.c, bg_route_signals) */
+  int nroutes, route_next;
   bg_vec shift;              /* what the scene was moved by: page = layout + shift */
   int keep_page;             /* drawn again (bg_diagram_redraw): placed on the page below */
   bg_vec keep_shift;         /* that diagram's shift and page size */
@@ -216,6 +219,16 @@ void bg_draw_nodes(bg_diagram *d);
 void bg_draw_lagrange(bg_diagram *d);
 
 /* signals (diagram_signals.c) */
+/* A signal's route from node `from` (-1: from bond from_bond's middle) to
+ * node `to`: pts[0] on the source, pts[n - 1] the arrow's tip. */
+typedef struct bg_signal_route {
+  int from, from_bond, to, n;
+  bg_vec *pts;
+} bg_signal_route;
+/* Routes every signal drawn (into d->routes), before the path and loop
+ * layers, whose loops closed by a modulation follow them. */
+void bg_route_signals(bg_diagram *d);
+/* Draws the routed signals. */
 void bg_draw_signals(bg_diagram *d);
 
 /* layers (diagram_layers.c) */

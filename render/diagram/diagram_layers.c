@@ -31,6 +31,8 @@ typedef struct joint {
   bg_vec corner[6];
   int rounded;      /* kind 3 round a two-port's label: the corners rounded, so the line reads as
                        passing the label, not as a dashed box drawn round it */
+  bg_vec *via;      /* kind 4: a loop closed along its modulating signal's route, through these */
+  int nvia;
 } joint;
 
 static bg_vec centre(const bg_diagram *d, int n) {
@@ -112,7 +114,7 @@ static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
   bg_vec e = bg_box_exit(centre(d, v), d->L->nw[v] / 2, d->L->nh[v] / 2, centre(d, s->u));
   bg_vec base = bg_vsub(e, bg_vscale(s->dir, fmax(s->off, t->off) + 1));
-  joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
+  joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}, 0, NULL, 0};
   j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, 4.0 / 3 * s->off));
   j.c2 = bg_vadd(j.p1, bg_vscale(s->dir, 4.0 / 3 * t->off));
   return j;
@@ -185,6 +187,68 @@ static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b)
   return hits;
 }
 
+/* The corners (at most 4, into c) of the shorter way from p0 to p1 round
+ * node v's box, grown by 2 pt and to hold both ends. */
+static int round_box_short(const bg_diagram *d, int v, bg_vec p0, bg_vec p1, bg_vec c[4]) {
+  double b[4] = {d->L->nx[v] - d->L->nw[v] / 2 - 2, d->L->ny[v] - d->L->nh[v] / 2 - 2, d->L->nx[v] + d->L->nw[v] / 2 + 2,
+                 d->L->ny[v] + d->L->nh[v] / 2 + 2};
+  for (int k = 0; k < 2; k++) {
+    bg_vec p = k ? p1 : p0;
+    b[0] = fmin(b[0], p.x), b[1] = fmin(b[1], p.y), b[2] = fmax(b[2], p.x), b[3] = fmax(b[3], p.y);
+  }
+  double w = b[2] - b[0], h = b[3] - b[1], per = 2 * (w + h);
+  double from = label_perimeter_at(b, p0), to = label_perimeter_at(b, p1), cw = fmod(to - from + per, per);
+  const double at[4] = {w, w + h, 2 * w + h, 0}; /* top right, bottom right, bottom left, top left */
+  const bg_vec corner[4] = {bg_v(b[2], b[1]), bg_v(b[2], b[3]), bg_v(b[0], b[3]), bg_v(b[0], b[1])};
+  int n = 0, back = cw > per / 2; /* anticlockwise is shorter */
+  double len = back ? per - cw : cw, dist[4];
+  for (int k = 0; k < 4; k++) { /* the corners passed, in the order of the way taken */
+    double dk = back ? fmod(from - at[k] + per, per) : fmod(at[k] - from + per, per);
+    if (dk <= 1e-9 || dk >= len - 1e-9) continue;
+    int i = n++;
+    for (; i > 0 && dist[i - 1] > dk; i--) dist[i] = dist[i - 1], c[i] = c[i - 1];
+    dist[i] = dk, c[i] = corner[k];
+  }
+  return n;
+}
+
+/* The route of the signal from node `from` to node `to`, or NULL. */
+static const bg_signal_route *signal_route(const bg_diagram *d, int from, int to) {
+  for (int k = 0; k < d->nroutes; k++)
+    if (d->routes[k].from == from && d->routes[k].to == to && d->routes[k].n >= 2) return &d->routes[k];
+  return NULL;
+}
+
+/* A loop closed by a modulation follows its signal's route (issue 31), at
+ * the first layer's offset on the route's left (no other layer runs there),
+ * as it runs beside a bond: from where the loop reaches the signal's source
+ * round that box (the shorter way) to the route's start, along the route,
+ * and round the modulated element's box to its bond. 0 when the signal is
+ * not routed (signals not shown, or not from a node). */
+static int routed_jump(const bg_diagram *d, const seg *s, const seg *t, joint *j) {
+  const bg_signal_route *r = signal_route(d, d->L->node_of[s->v], d->L->node_of[t->u]);
+  if (!r) return 0;
+  int n = r->n;
+  double off = d->st.layer_offset; /* no other layer runs beside the signal */
+  bg_vec d0 = bg_vunit(bg_vsub(r->pts[1], r->pts[0])), dn = bg_vunit(bg_vsub(r->pts[n - 1], r->pts[n - 2]));
+  bg_vec q0 = bg_vadd(bg_vadd(r->pts[0], bg_vscale(d0, 2)), bg_vscale(bg_vleft(d0), off));
+  bg_vec qn = bg_vadd(bg_vsub(r->pts[n - 1], bg_vscale(dn, 0.5)), bg_vscale(bg_vleft(dn), off));
+  bg_vec ca[4], cb[4];
+  int na = round_box_short(d, s->v, j->p0, q0, ca), nb = round_box_short(d, t->u, qn, j->p1, cb);
+  j->via = bg_xcalloc((size_t)(n + na + nb), sizeof *j->via);
+  j->nvia = 0;
+  for (int k = 0; k < na; k++) j->via[j->nvia++] = ca[k];
+  j->via[j->nvia++] = q0;
+  for (int k = 1; k + 1 < n; k++) { /* a corner of the route, moved off on both legs' left */
+    bg_vec in = bg_vunit(bg_vsub(r->pts[k], r->pts[k - 1])), out = bg_vunit(bg_vsub(r->pts[k + 1], r->pts[k]));
+    j->via[j->nvia++] = bg_vadd(r->pts[k], bg_vscale(bg_vadd(bg_vleft(in), bg_vleft(out)), off));
+  }
+  j->via[j->nvia++] = qn;
+  for (int k = 0; k < nb; k++) j->via[j->nvia++] = cb[k];
+  j->kind = 4;
+  return 1;
+}
+
 /* A modulation closes the loop between different nodes (the signal of s
  * arrives at s->v, whose variable an element's law uses: t->u): a straight
  * line beside the modulating signal, bowed (12 to 45 pt at its middle,
@@ -192,7 +256,8 @@ static int curve_in_labels(const bg_diagram *d, const bg_vec c[4], int a, int b)
  * the same bond (an element modulated by its own output), a curve bulging
  * further out. */
 static joint jump(const bg_diagram *d, const seg *s, const seg *t) {
-  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
+  joint j = {1, beside_node(d, s, s->v, s->u), beside_node(d, t, t->u, t->v), {0, 0}, {0, 0}, 0, {{0, 0}}, 0, NULL, 0};
+  if (s->b != t->b && routed_jump(d, s, t, &j)) return j;
   if (s->b != t->b) {
     static const double bows[] = {0, 12, -12, 20, -20, 30, -30, 45, -45};
     bg_vec ab = bg_vsub(j.p1, j.p0), nrm = bg_vleft(bg_vunit(ab));
@@ -262,7 +327,7 @@ static joint join(const bg_diagram *d, const seg *s, const seg *t) {
   if (t->u != s->v) return jump(d, s, t);
   if (t->b == s->b && t->u == s->v && t->v == s->u) return turn(d, s, t);
   bg_vec a = bg_vadd(c, bg_vscale(s->n, s->off)), b = bg_vadd(c, bg_vscale(t->n, t->off));
-  joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}, 0};
+  joint j = {1, a, b, {0, 0}, {0, 0}, 0, {{0, 0}}, 0, NULL, 0};
   if (!bg_elem_is_junction(v < d->m->nelem ? d->m->elem_kind[v] : BG_ELEM_J1)) {
     /* keep off the label: leave and re-enter at the box, around it */
     j.p0 = beside_node(d, s, v, s->u), j.p1 = beside_node(d, t, v, t->v);
@@ -305,7 +370,8 @@ static void emit_joint(bg_scene *sc, const joint *j) {
       round_corner(sc, k ? j->corner[k - 1] : j->p0, j->corner[k], k + 1 < j->ncorner ? j->corner[k + 1] : j->p1);
     else
       bg_scene_line(sc, j->corner[k].x, j->corner[k].y);
-  if (j->kind == 1 || j->kind == 3) bg_scene_line(sc, j->p1.x, j->p1.y);
+  for (int k = 0; j->kind == 4 && k < j->nvia; k++) bg_scene_line(sc, j->via[k].x, j->via[k].y);
+  if (j->kind == 1 || j->kind == 3 || j->kind == 4) bg_scene_line(sc, j->p1.x, j->p1.y);
   if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
 }
 
@@ -370,6 +436,7 @@ static int draw_polyline(bg_diagram *d, seg *s, int n, int kind, int i, int merg
   int nrun = n;
   for (int k = 0; k < n; k++)
     if (j[k].kind == 2 && s[(k + 1) % n].u != s[k].v) runs[nrun++] = bulge_run(&j[k]);
+  for (int k = 0; k < n; k++) free(j[k].via);
   free(j);
   return nrun;
 }

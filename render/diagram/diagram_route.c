@@ -32,7 +32,13 @@ enum { MAXLINES = 72 };
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
 #define LANE 10.0             /* the channel lines' distance from a box */
-#define STUB 10.0             /* the straight run off a port, and onto one */
+#define STUB 10.0
+/* The whole figure's grid is searched only where thinning it to MAXLINES
+ * merged no candidate lines further apart than this: a coarser grid's
+ * lines run through the boxes (the 1 000-signal network's whole-figure
+ * searches merged lines up to 80 pt apart and found a way for 3 % of its
+ * boxed-in signals, at six times a window's work). */
+#define FALLBACK_GAP (4 * LANE)             /* the straight run off a port, and onto one */
 
 /* ---------------------------------------------------------------- the near index */
 /* A uniform grid of cells over the layout, each listing the nodes whose box
@@ -264,7 +270,8 @@ struct bg_router {
   double *X, *Y;
   int nxl, nyl;
   unsigned char *prio_x, *prio_y;
-  double *hcost, *vcost; /* per edge, NAN until asked */
+  double *hcost, *vcost; /* per edge (grid_costs) */
+  double *hv;            /* per vertex: the search's estimate, NAN until asked */
   double *g;
   int *parent;
   struct heap_entry *heap;
@@ -274,6 +281,7 @@ struct bg_router {
   double *cx, *cy;
   unsigned char *cpx, *cpy;
   int ncx, ncy, capc;
+  double gap;             /* the grid's lines: candidates nearer than this were merged */
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
 };
 
@@ -299,7 +307,7 @@ bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) {
 void bg_router_free(bg_router *r) {
   if (!r) return;
   near_free(&r->ix);
-  free(r->nl.k), free(r->X), free(r->Y), free(r->prio_x), free(r->prio_y), free(r->hcost), free(r->vcost);
+  free(r->nl.k), free(r->X), free(r->Y), free(r->prio_x), free(r->prio_y), free(r->hcost), free(r->vcost), free(r->hv);
   free(r->g), free(r->parent), free(r->heap), free(r->cx), free(r->cy), free(r->cpx), free(r->cpy);
   free(r);
 }
@@ -325,13 +333,10 @@ static int cand_cmp(const void *a, const void *b) {
   return q->prio - p->prio;
 }
 
-/* Sorted lines from the candidates: those nearer than `gap` to a kept one
+/* Lines from sorted candidates: those nearer than `gap` to a kept one
  * dropped (a port's line is always kept), the gap grown until at most
- * MAXLINES remain. */
-static int make_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio) {
-  cand *c = bg_xcalloc((size_t)n + 1, sizeof *c);
-  for (int i = 0; i < n; i++) c[i] = (cand){v[i], pr[i]};
-  qsort(c, (size_t)n, sizeof *c, cand_cmp);
+ * MAXLINES remain (*gap_used). */
+static int merge_lines(const cand *c, int n, double *out, unsigned char *oprio, double *gap_used) {
   int m = 0;
   for (double gap = 1.5;; gap *= 1.6) {
     m = 0;
@@ -343,9 +348,30 @@ static int make_lines(const double *v, const unsigned char *pr, int n, double *o
       }
       out[m] = c[i].v, oprio[m++] = (unsigned char)c[i].prio;
     }
-    if (m <= MAXLINES) break;
+    if (m <= MAXLINES) {
+      *gap_used = gap;
+      return m;
+    }
   }
-  free(c);
+}
+
+/* One axis of the grid (out must hold n + MAXLINES): the candidates'
+ * lines, then again with the channels' middles between neighbouring lines
+ * added. The candidates are sorted once; the middles come sorted and are
+ * merged in. Returns the number of lines, *gap_used the final gap. */
+static int axis_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio,
+                      double *gap_used) {
+  cand *c = bg_xcalloc((size_t)n + 1, sizeof *c), *all = bg_xcalloc((size_t)n + MAXLINES + 1, sizeof *all);
+  for (int i = 0; i < n; i++) c[i] = (cand){v[i], pr[i]};
+  qsort(c, (size_t)n, sizeof *c, cand_cmp);
+  int m = merge_lines(c, n, out, oprio, gap_used), na = 0;
+  for (int i = 0, k = 0; i < n || k + 1 < m;) { /* merge: candidates and middles, in cand_cmp's order */
+    cand mid = k + 1 < m ? (cand){(out[k] + out[k + 1]) / 2, 0} : (cand){0, 0};
+    if (k + 1 < m && (i == n || cand_cmp(&mid, &c[i]) < 0)) all[na++] = mid, k++;
+    else all[na++] = c[i++];
+  }
+  m = merge_lines(all, na, out, oprio, gap_used);
+  free(c), free(all);
   return m;
 }
 
@@ -399,6 +425,152 @@ static double seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     cost += hit == 1 ? COST_CROSS_SIGNAL : hit == 2 ? COST_SHARE : 0;
   }
   return cost;
+}
+
+/* The edges of one grid line that overlap the open interval (lo, hi) along
+ * it: *i0 .. *i1 (empty when *i0 > *i1). A: the line's vertices, n of them. */
+static void edge_range(const double *A, int n, double lo, double hi, int *i0, int *i1) {
+  int a = 0, b = n - 1; /* first edge i with A[i + 1] > lo */
+  while (a < b) {
+    int mid = (a + b) / 2;
+    if (A[mid + 1] > lo) b = mid;
+    else a = mid + 1;
+  }
+  int c = -1, d = n - 2; /* last edge i with A[i] < hi */
+  while (c < d) {
+    int mid = (c + d + 1) / 2;
+    if (A[mid] < hi) c = mid;
+    else d = mid - 1;
+  }
+  *i0 = a, *i1 = c;
+}
+
+/* The edge i whose half-open extent [A[i], A[i+1]) holds v, or -1. */
+static int edge_at(const double *A, int n, double v) {
+  if (n < 2 || v < A[0] || v >= A[n - 1]) return -1;
+  int a = 0, b = n - 2;
+  while (a < b) {
+    int mid = (a + b + 1) / 2;
+    if (A[mid] <= v) a = mid;
+    else b = mid - 1;
+  }
+  return a;
+}
+
+/* A point's coordinates along a grid line and across it. */
+static double along(bg_vec p, int horiz) { return horiz ? p.x : p.y; }
+static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
+
+/* Segment a-b against grid line (horizontal when horiz) at `at` over the
+ * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
+ * open, as seg_meet counts it); a parallel run within HUG pt adds to each
+ * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
+ * `hug` per pt of the shared run. */
+static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
+                      double hug, double *out) {
+  double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
+  double lv = sqrt(va * va + vc * vc);
+  if (lv <= 0) return;
+  if (fabs(vc) < 0.02 * lv) { /* parallel: on one line? */
+    double dist = fabs(across(a, horiz) - at);
+    if (dist >= HUG || (dist >= 3 && hug <= 0)) return;
+    double t0 = fmin(along(a, horiz), along(b, horiz)), t1 = fmax(along(a, horiz), along(b, horiz));
+    int i0, i1;
+    edge_range(A, n, t0, t1, &i0, &i1);
+    for (int i = i0; i <= i1; i++) {
+      double run = fmin(A[i + 1], t1) - fmax(A[i], t0);
+      if (run > 1) out[i] += dist < 3 ? block : hug * run;
+    }
+    return;
+  }
+  double s = (at - across(a, horiz)) / vc;
+  if (s * lv < 0.5 || (1 - s) * lv < 0.5) return;
+  int i = edge_at(A, n, along(a, horiz) + s * va);
+  if (i >= 0) out[i] += cross;
+}
+
+/* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
+static void line_range(const double *A, int n, double lo, double hi, int *j0, int *j1) {
+  int a = 0, b = n; /* first j with A[j] >= lo */
+  while (a < b) {
+    int mid = (a + b) / 2;
+    if (A[mid] >= lo) b = mid;
+    else a = mid + 1;
+  }
+  int c = -1, d = n - 1; /* last j with A[j] <= hi */
+  while (c < d) {
+    int mid = (c + d + 1) / 2;
+    if (A[mid] <= hi) c = mid;
+    else d = mid - 1;
+  }
+  *j0 = a, *j1 = c;
+}
+
+/* What every edge of the grid costs, the same as seg_cost would say edge by
+ * edge: the edges' lengths, then each item near the grid (from one query of
+ * the near index over the whole window) added to the lines it comes near
+ * and there to the edges it meets (found by bisection). One pass over the
+ * window's items instead of a query per edge: an item is looked at once,
+ * not once for every edge near it. hcost holds the horizontal lines' edges
+ * (line j's edge i at j * nx + i), vcost the vertical ones' (line j's edge
+ * i at j * ny + i). */
+static void grid_costs(bg_router *r) {
+  const bg_diagram_layout *L = r->L;
+  const double *X = r->X, *Y = r->Y;
+  int nx = r->nxl, ny = r->nyl;
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i + 1 < nx; i++) r->hcost[j * nx + i] = X[i + 1] - X[i];
+  for (int j = 0; j < nx; j++)
+    for (int i = 0; i + 1 < ny; i++) r->vcost[j * ny + i] = Y[i + 1] - Y[i];
+  near_box(&r->ix, X[0] - HUG, Y[0] - HUG, X[nx - 1] + HUG, Y[ny - 1] + HUG, &r->nl);
+  for (int jj = 0; jj < r->nl.n; jj++) {
+    int k = r->nl.k[jj], j0, j1, i0, i1;
+    if (k < L->nnode) { /* a box grown by 2 pt: the lines through it */
+      double bx0 = L->nx[k] - L->nw[k] / 2 - 2, bx1 = L->nx[k] + L->nw[k] / 2 + 2;
+      double by0 = L->ny[k] - L->nh[k] / 2 - 2, by1 = L->ny[k] + L->nh[k] / 2 + 2;
+      line_range(Y, ny, by0, by1, &j0, &j1);
+      edge_range(X, nx, bx0, bx1, &i0, &i1);
+      for (int j = j0; j <= j1; j++)
+        for (int i = i0; Y[j] > by0 && Y[j] < by1 && i <= i1; i++) r->hcost[j * nx + i] += COST_BLOCK;
+      line_range(X, nx, bx0, bx1, &j0, &j1);
+      edge_range(Y, ny, by0, by1, &i0, &i1);
+      for (int j = j0; j <= j1; j++)
+        for (int i = i0; X[j] > bx0 && X[j] < bx1 && i <= i1; i++) r->vcost[j * ny + i] += COST_BLOCK;
+      continue;
+    }
+    int leg = k - L->nnode;
+    bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
+    int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
+    double cross = COST_CROSS_BOND * (slanted ? COST_OBLIQUE : 1);
+    line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, &r->vcost[j * ny]);
+    if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
+      bg_vec mid = r->ix.mid[leg];
+      line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);
+      for (int j = j0; j <= j1; j++) {
+        double dc = fabs(mid.y - Y[j]), half = dc < 10 ? sqrt(100 - dc * dc) : 0;
+        edge_range(X, nx, mid.x - half, mid.x + half, &i0, &i1);
+        for (int i = i0; half > 0 && i <= i1; i++) r->hcost[j * nx + i] += COST_NUMBER;
+      }
+      line_range(X, nx, mid.x - 10, mid.x + 10, &j0, &j1);
+      for (int j = j0; j <= j1; j++) {
+        double dc = fabs(mid.x - X[j]), half = dc < 10 ? sqrt(100 - dc * dc) : 0;
+        edge_range(Y, ny, mid.y - half, mid.y + half, &i0, &i1);
+        for (int i = i0; half > 0 && i <= i1; i++) r->vcost[j * ny + i] += COST_NUMBER;
+      }
+    }
+  }
+  near_signals(&r->ix, X[0] - 3, Y[0] - 3, X[nx - 1] + 3, Y[ny - 1] + 3, &r->nl);
+  for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
+    bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
+    int j0, j1;
+    line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, COST_CROSS_SIGNAL, COST_SHARE, 0, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, COST_CROSS_SIGNAL, COST_SHARE, 0, &r->vcost[j * ny]);
+  }
 }
 
 /* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */
@@ -525,24 +697,15 @@ static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double 
     if (bx1 < wx0 || bx0 > wx1 || by1 < wy0 || by0 > wy1) continue;
     add_cand(r, bx0 - LANE, by0 - LANE, 0), add_cand(r, bx1 + LANE, by1 + LANE, 0);
   }
-  int n0x = r->ncx, n0y = r->ncy;
-  if (r->cap_lines < r->ncx + r->ncy + 2) {
-    r->cap_lines = 2 * (r->ncx + r->ncy) + 2;
+  if (r->cap_lines < r->ncx + r->ncy + 2 * MAXLINES) {
+    r->cap_lines = 2 * (r->ncx + r->ncy) + 2 * MAXLINES;
     r->X = bg_xrealloc(r->X, (size_t)r->cap_lines * sizeof *r->X), r->Y = bg_xrealloc(r->Y, (size_t)r->cap_lines * sizeof *r->Y);
     r->prio_x = bg_xrealloc(r->prio_x, (size_t)r->cap_lines), r->prio_y = bg_xrealloc(r->prio_y, (size_t)r->cap_lines);
   }
-  /* the channels' middles: between each pair of neighbouring lanes */
-  int m = make_lines(r->cx, r->cpx, n0x, r->X, r->prio_x);
-  for (int i = 0; i + 1 < m; i++) add_cand(r, (r->X[i] + r->X[i + 1]) / 2, NAN, 0);
-  m = make_lines(r->cy, r->cpy, n0y, r->Y, r->prio_y);
-  for (int i = 0; i + 1 < m; i++) add_cand(r, NAN, (r->Y[i] + r->Y[i + 1]) / 2, 0);
-  if (r->cap_lines < r->ncx + r->ncy + 2) {
-    r->cap_lines = 2 * (r->ncx + r->ncy) + 2;
-    r->X = bg_xrealloc(r->X, (size_t)r->cap_lines * sizeof *r->X), r->Y = bg_xrealloc(r->Y, (size_t)r->cap_lines * sizeof *r->Y);
-    r->prio_x = bg_xrealloc(r->prio_x, (size_t)r->cap_lines), r->prio_y = bg_xrealloc(r->prio_y, (size_t)r->cap_lines);
-  }
-  r->nxl = make_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x);
-  r->nyl = make_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y);
+  double gx = 0, gy = 0;
+  r->nxl = axis_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x, &gx);
+  r->nyl = axis_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y, &gy);
+  r->gap = fmax(gx, gy);
 }
 
 /* A* from the source ports to the target ports over the grid; the states
@@ -554,9 +717,11 @@ static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec 
     r->cap_states = ns;
     r->g = bg_xrealloc(r->g, (size_t)ns * sizeof *r->g), r->parent = bg_xrealloc(r->parent, (size_t)ns * sizeof *r->parent);
     r->hcost = bg_xrealloc(r->hcost, (size_t)nv * sizeof *r->hcost), r->vcost = bg_xrealloc(r->vcost, (size_t)nv * sizeof *r->vcost);
+    r->hv = bg_xrealloc(r->hv, (size_t)nv * sizeof *r->hv);
   }
   for (int s = 0; s < ns; s++) r->g[s] = INFINITY, r->parent[s] = -1;
-  for (int v = 0; v < nv; v++) r->hcost[v] = r->vcost[v] = NAN;
+  for (int v = 0; v < nv; v++) r->hv[v] = NAN;
+  grid_costs(r);
   /* goal vertices: each target port's stub, entered along its inward normal */
   int *goal_dir = bg_xcalloc((size_t)nv, sizeof *goal_dir); /* bit mask of inward directions + 1 */
   double *goal_cost = bg_xcalloc((size_t)nv * 4, sizeof *goal_cost);
@@ -592,14 +757,17 @@ static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec 
       int wx = vx + (nd == 0) - (nd == 1), wy = vy + (nd == 2) - (nd == 3);
       if (wx < 0 || wy < 0 || wx >= nx || wy >= ny) continue;
       int w = wy * nx + wx;
-      double *ec = nd < 2 ? &r->hcost[vy * nx + (nd == 0 ? vx : wx)] : &r->vcost[(nd == 2 ? vy : wy) * nx + vx];
-      if (isnan(*ec)) *ec = seg_cost(r, bg_v(r->X[vx], r->Y[vy]), bg_v(r->X[wx], r->Y[wy]), -1);
-      double c = gs + *ec + (nd != dir ? COST_BEND : 0);
+      double ec = nd < 2 ? r->hcost[vy * nx + (nd == 0 ? vx : wx)] : r->vcost[vx * ny + (nd == 2 ? vy : wy)];
+      double c = gs + ec + (nd != dir ? COST_BEND : 0);
       int t = 4 * w + nd;
       if (c < r->g[t]) {
         r->g[t] = c, r->parent[t] = s;
-        double h = INFINITY;
-        for (int i = 0; i < npt; i++) h = fmin(h, fabs(pt[i].stub.x - r->X[wx]) + fabs(pt[i].stub.y - r->Y[wy]));
+        double h = r->hv[w];
+        if (isnan(h)) {
+          h = INFINITY;
+          for (int i = 0; i < npt; i++) h = fmin(h, fabs(pt[i].stub.x - r->X[wx]) + fabs(pt[i].stub.y - r->Y[wy]));
+          r->hv[w] = h;
+        }
         heap_push(r, t, c + h, c);
       }
     }
@@ -659,8 +827,10 @@ static void snap_ports(const bg_router *r, port *p, int n) {
 }
 
 static int route_in(bg_router *r, port *ps, int nps, port *pt, int npt, double wx0, double wy0, double wx1,
-                    double wy1, bg_vec *pts, int cap, double *cost) {
+                    double wy1, double max_gap, bg_vec *pts, int cap, double *cost) {
   build_grid(r, wx0, wy0, wx1, wy1, ps, nps, pt, npt);
+  *cost = INFINITY;
+  if (r->gap > max_gap) return 0;
   snap_ports(r, ps, nps), snap_ports(r, pt, npt);
   for (int i = 0; i < nps; i++) ps[i].cost = ps[i].base + seg_cost(r, ps[i].at, ps[i].stub, r->from_node);
   for (int i = 0; i < npt; i++) pt[i].cost = pt[i].base + seg_cost(r, pt[i].stub, pt[i].at, r->to_node);
@@ -713,12 +883,15 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
   double wy0 = fmin(ay0, L->ny[to] - L->nh[to] / 2), wy1 = fmax(ay1, L->ny[to] + L->nh[to] / 2);
   double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
   double cost = INFINITY;
-  int n = route_in(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, pts, cap, &cost);
-  if (!(cost < COST_BLOCK)) { /* boxed in: the whole figure, with a ring round it */
+  int n = route_in(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, INFINITY, pts, cap,
+                   &cost);
+  /* boxed in: the whole figure, with a ring round it, where its grid keeps
+   * the lanes (the window's grid, over less of the figure, was as fine) */
+  if (!(cost < COST_BLOCK) && r->gap <= FALLBACK_GAP) {
     double c2 = INFINITY;
     bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
     int n2 = route_in(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
-                      r->fy1 + 2 * LANE, alt, cap, &c2);
+                      r->fy1 + 2 * LANE, FALLBACK_GAP, alt, cap, &c2);
     if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2;
     free(alt);
   }

@@ -49,11 +49,25 @@ static void signal_polyline(bg_diagram *d, sigrole role, const bg_vec *pts, int 
   signal_head(d, role, tip, adir, hot);
 }
 
+/* The route of the next signal: with a router, found and kept in
+ * d->routes (the routing pass, bg_route_signals); without, the one kept
+ * for it (the drawing pass, which walks the signals in the same order). */
+static const bg_signal_route *route_of(bg_diagram *d, bg_router *rt, int from, int from_bond, int to) {
+  if (!rt) return d->route_next < d->nroutes ? &d->routes[d->route_next++] : NULL;
+  bg_vec pts[256];
+  int n = bg_route(rt, d->m, from, from_bond, to, pts, 256);
+  if (d->nroutes % 16 == 0)
+    d->routes = bg_xrealloc(d->routes, (size_t)(d->nroutes + 16) * sizeof *d->routes);
+  bg_signal_route *r = &d->routes[d->nroutes++];
+  *r = (bg_signal_route){from, from_bond, to, n, bg_arena_alloc(&d->arena, (size_t)n * sizeof *pts)};
+  memcpy(r->pts, pts, (size_t)n * sizeof *pts);
+  return r;
+}
+
 /* Between two nodes, along the route from `from` to `to`. */
 static void signal_between(bg_diagram *d, bg_router *rt, sigrole role, int from, int to, int hot) {
-  bg_vec pts[256];
-  int n = bg_route(rt, d->m, from, -1, to, pts, 256);
-  signal_polyline(d, role, pts, n, hot);
+  const bg_signal_route *r = route_of(d, rt, from, -1, to);
+  if (!rt && r) signal_polyline(d, role, r->pts, r->n, hot);
 }
 
 /* Self-modulation: a loop leaving the box and coming back, on its free side. */
@@ -80,12 +94,12 @@ static int signal_from_bond(bg_diagram *d, bg_router *rt, sigrole role, const ch
   long num = strtol(var + 1, &end, 10);
   int b = *end ? -1 : bg_model_find_bond(m, (int)num);
   if (b < 0) return -1;
-  bg_vec pts[256];
-  int n = bg_route(rt, m, -1, b, to, pts, 256);
+  const bg_signal_route *r = route_of(d, rt, -1, b, to);
+  if (rt || !r) return 0;
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
   it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
-  bg_scene_circle(&d->scene, pts[0].x, pts[0].y, 1.6);
-  signal_polyline(d, role, pts, n, hot);
+  bg_scene_circle(&d->scene, r->pts[0].x, r->pts[0].y, 1.6);
+  signal_polyline(d, role, r->pts, r->n, hot);
   return 0;
 }
 
@@ -103,7 +117,9 @@ static void draw_signal(bg_diagram *d, bg_router *rt, int i) {
   if (to_box != to && (from_box == to_box || from < 0)) return;
   if (from >= 0 && from_box != from && from_box != to_box) from = from_box;
   to = to_box;
-  if (from == to) signal_self(d, role, to, hot);
+  if (from == to) {
+    if (!rt) signal_self(d, role, to, hot);
+  }
   else if (from >= 0) signal_between(d, rt, role, from, to, hot);
   else if (s >= 0 && d->L->state_node[s] >= 0) signal_between(d, rt, role, d->L->state_node[s], to, hot);
   else signal_from_bond(d, rt, role, m->signal_var[i], to, hot);
@@ -116,8 +132,9 @@ static void draw_state(bg_diagram *d, bg_router *rt, int s) {
   if (n < 0) return;
   char role[160];
   snprintf(role, sizeof role, "state-node %s", m->state_name[s]);
-  bg_scene_text(&d->scene, d->L->nlabel[n], d->L->nx[n], d->L->ny[n], d->st.font_size, 0.5, 0.5,
-                bg_diagram_ink(d, d->st.signal, !bg_diagram_muted(d)), role);
+  if (!rt)
+    bg_scene_text(&d->scene, d->L->nlabel[n], d->L->nx[n], d->L->ny[n], d->st.font_size, 0.5, 0.5,
+                  bg_diagram_ink(d, d->st.signal, !bg_diagram_muted(d)), role);
   int in[64], nin = bg_state_inputs(m, s, in, 64);
   for (int k = 0; k < nin; k++) {
     char name[160];
@@ -126,12 +143,22 @@ static void draw_state(bg_diagram *d, bg_router *rt, int s) {
   }
 }
 
-void bg_draw_signals(bg_diagram *d) {
-  int first = d->scene.nitem;
-  bg_router *rt = bg_router_new(d->L, d->m->nbond);
+/* Every signal and state input, in drawing order: routed (rt) or drawn. */
+static void walk_signals(bg_diagram *d, bg_router *rt) {
   for (int s = 0; s < d->m->nstate; s++) draw_state(d, rt, s);
   for (int i = 0; i < d->m->nsignal; i++) draw_signal(d, rt, i);
+}
+
+void bg_route_signals(bg_diagram *d) {
+  bg_router *rt = bg_router_new(d->L, d->m->nbond);
+  walk_signals(d, rt);
   bg_router_free(rt);
+}
+
+void bg_draw_signals(bg_diagram *d) {
+  int first = d->scene.nitem;
+  d->route_next = 0;
+  walk_signals(d, NULL);
   for (int i = first; i < d->scene.nitem; i++) /* numbers and tags keep off the lines */
     if (d->scene.item[i].kind == BG_ITEM_STROKE) bg_obstacle_item(d, i);
 }

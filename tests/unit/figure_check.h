@@ -41,6 +41,7 @@ typedef struct fc_stats {
   int foreign;               /* element labels inside a frame of an instance they do not belong to */
   int texts, small_text;     /* every text item; those with some part below 6 pt */
   int arrangement;           /* element label pairs in another order than in the default style (fc_arrangement) */
+  int layer_oblique;         /* path/loop line × bond pairs crossing more than 5 degrees off a right angle */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -418,6 +419,27 @@ static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique) {
   return n;
 }
 
+/* Path/loop line l × bond b: whether l crosses b more than 5 degrees off a
+ * right angle away from b's ends (more than 8 pt from them: a path turns
+ * round a bond's end, and a layer changes sides at a junction, there): a
+ * loop closed by a modulation jumping across the figure. */
+static int fc_layer_oblique(const fc_line *l, const fc_line *b) {
+  int nb = fc_body(b);
+  if (nb < 1) return 0;
+  double ex[2] = {b->seg[0].x0, b->seg[nb - 1].x1}, ey[2] = {b->seg[0].y0, b->seg[nb - 1].y1};
+  for (int p = 0; p < l->nseg; p++)
+    for (int q = 0; q < nb; q++) {
+      const fc_seg *u = &l->seg[p], *v = &b->seg[q];
+      if (!fc_cross(u, v)) continue;
+      double ux = u->x1 - u->x0, uy = u->y1 - u->y0, vx = v->x1 - v->x0, vy = v->y1 - v->y0;
+      double den = ux * vy - uy * vx, t = ((v->x0 - u->x0) * vy - (v->y0 - u->y0) * vx) / den;
+      double x = u->x0 + t * ux, y = u->y0 + t * uy;
+      if (hypot(x - ex[0], y - ey[0]) < 8 || hypot(x - ex[1], y - ey[1]) < 8) continue;
+      if (fabs(ux * vx + uy * vy) / (fc_seg_len(u) * fc_seg_len(v) + 1e-300) > sin(5 * 3.14159265358979 / 180)) return 1;
+    }
+  return 0;
+}
+
 /* Two segments on one line (parallel within 1 degree, < 1 pt apart) that
  * share more than 2 pt: drawn on top of each other. */
 static int fc_seg_overlap(const fc_seg *a, const fc_seg *b) {
@@ -545,6 +567,12 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
         if (fc_sig_cross(l, m, &ob)) {
           st->sig_cross++, st->sig_oblique += ob;
           if (fc_explain) printf("  signal %s crosses bond %d%s\n", l->name, m->id, ob ? " obliquely" : "");
+        }
+      }
+      if (l->kind == FC_OVERLAY && m->kind == FC_BOND) { /* a modulation's jump straight across */
+        if (fc_layer_oblique(l, m)) {
+          st->layer_oblique++;
+          if (fc_explain) printf("  %s %d crosses bond %d obliquely\n", l->id ? "path" : "loop", l->id ? l->id : l->loop, m->id);
         }
       }
       if (l->kind == FC_BOND && m->kind == FC_BOND && k != j && fc_false_tee(l, m)) {
