@@ -50,6 +50,10 @@ dpkg-deb -f "$tmp/deb/libbgdraw-dev_${v}-1_amd64.deb" Depends | grep -q "libbgdr
 check "libbgdraw-dev depends on libbgdraw0 (= ${v}-1)" $?
 dpkg-deb -f "$tmp/deb/bgdraw_${v}-1_amd64.deb" Depends | grep -q "libsundials-ida"
 check "bgdraw's Depends computed by dpkg-shlibdeps (SUNDIALS among them)" $?
+for p in bgdraw libbgdraw0; do # LAPACKE is opened on first use: stated, not found
+  dpkg-deb -f "$tmp/deb/${p}_${v}-1_amd64.deb" Depends | grep -Eq "(^|, )liblapacke \\(>= [0-9.]+\\)"
+  check "$p depends on liblapacke (opened on first use, not linked)" $?
+done
 cp examples/rlc.bg "$tmp/rlc.bg"
 (cd "$tmp" && "$BGDRAW" rlc.bg --check >tree.check && "$BGDRAW" rlc.bg -o tree.svg)
 # apt's view: every dependency resolvable on this system

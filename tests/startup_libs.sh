@@ -3,7 +3,8 @@
 # Start-up (issue 19): a run that draws nothing loads none of the render
 # libraries (Graphviz, cairo, pango) and not the render module; a run that
 # draws loads the module once and gives the same diagram; a missing module
-# is an error with status 4, not a crash. Checked with the loader's own list
+# is an error with status 4, not a crash. LAPACK (issue 34) is opened only
+# by a run that calls it; missing, it is an error with status 4. Checked with the loader's own list
 # of the files it maps (LD_DEBUG=files), never with a clock.
 # Usage: bash tests/startup_libs.sh PATH_TO_BGDRAW   (from the project root)
 set -u
@@ -32,6 +33,20 @@ libs=$(mapped examples/rlc.bg -o "$tmp/a.svg")
 if [ "$(echo "$libs" | grep -c 'bgdraw_render')" = 1 ] && echo "$libs" | grep -q libcairo; then ok
 else bad "a diagram run does not map the render module once"; fi
 if grep -q '<svg' "$tmp/a.svg" && [ "$(grep -c 'stroke' "$tmp/a.svg")" -gt 4 ]; then ok; else bad "no diagram drawn"; fi
+# LAPACK is opened on first use (src/base/lapack.h): Debian's liblapacke and
+# liblapack are BIND_NOW, 4 000 symbol lookups at every start otherwise
+if echo "$libs" | grep -q 'liblapack'; then bad "a diagram run maps LAPACK: $(echo "$libs" | grep lapack | tr '\n' ' ')"
+else ok; fi
+if mapped examples/rlc.bg --linear text | grep -q 'liblapacke'; then ok; else bad "--linear text does not map liblapacke"; fi
+"$BGDRAW" examples/rlc.bg --linear text >"$tmp/lin.txt" 2>&1 && grep -q "eigenvalues\|poles" "$tmp/lin.txt" && ok ||
+  bad "--linear text with LAPACK opened on first use: $(head -c 200 "$tmp/lin.txt")"
+BGDRAW_LAPACKE=$tmp/none.so "$BGDRAW" examples/rlc.bg --linear text >/dev/null 2>"$tmp/err"
+st=$?
+if [ $st = 4 ] && grep -q "cannot load LAPACK ($tmp/none.so)" "$tmp/err"; then ok
+else bad "LAPACK missing: status $st, $(head -1 "$tmp/err")"; fi
+BGDRAW_LAPACKE=$tmp/none.so "$BGDRAW" examples/rlc.bg -o "$tmp/d.svg" 2>/dev/null && ok ||
+  bad "a diagram needs LAPACK"
+
 # --show alone must be checked by the module (an unknown layer is a usage error)
 if "$BGDRAW" examples/rlc.bg --show nonsense -o "$tmp/b.svg" 2>/dev/null; then bad "--show nonsense accepted"
 else [ $? = 2 ] && ok || bad "--show nonsense: status not 2"; fi

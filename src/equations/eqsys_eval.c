@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* bg_eqsys evaluation entry points: initial values, right-hand side,
  * residual, exact Jacobians, linearisation, outputs, breakpoints. */
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

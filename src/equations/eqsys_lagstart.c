@@ -11,7 +11,7 @@
  * e = 0). The general Newton of eqsys_eval.c, which moves dependent stores
  * onto their constraints with yp = 0, would instead start such a model at a
  * steady state. */
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

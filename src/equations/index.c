@@ -2,7 +2,7 @@
 /* Numeric index (Algorithm 4.1, the shuffle algorithm) and eigenvalues of
  * the linearised model A x' + B x = f. See index.h and docs/equations.md. */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

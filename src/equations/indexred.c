@@ -4,7 +4,7 @@
  * docs/equations.md "Index reduction"). The reduced system is built in
  * indexred_build.c; graph searches use explicit stacks. */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

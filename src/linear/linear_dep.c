@@ -15,7 +15,7 @@
  *     descriptor form stays. Else x_i' = (E1 P)^-1 (A1 P x_i + (A1 Q + B1) u)
  *     and y = (C P + Cp P A) x_i + (D + C Q + Cp P B) u. */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

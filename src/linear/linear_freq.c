@@ -9,7 +9,7 @@
  * solve per frequency. */
 #include <complex.h>
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

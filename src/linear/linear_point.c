@@ -7,7 +7,7 @@
  * message says so; two other starts tell whether other steady states are
  * likely (nonlinear models). */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

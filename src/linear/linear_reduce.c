@@ -9,7 +9,7 @@
  * linear_dep.c, which eliminates the states the constraints fix, or keeps
  * the descriptor form when that needs an input's derivative. */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

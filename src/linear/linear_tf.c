@@ -7,7 +7,7 @@
  * (uncontrollable or unobservable) and cancel. The gain comes from H at one
  * point off the axes: K = H(s0) prod(s0 - p) / prod(s0 - z). */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

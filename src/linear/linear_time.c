@@ -6,7 +6,7 @@
  * x_0 = B, x_{k+1} = Phi x_k for a unit impulse (the D term's Dirac pulse at
  * t = 0 is not drawn). Dense: up to BG_LIN_MAX_TIME states. */
 #include <float.h>
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

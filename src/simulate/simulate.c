@@ -2,7 +2,7 @@
 /* bg_simulate: decides whether and how to simulate (refusal, solver choice
  * and why, tolerances, output grid, input breakpoints), then hands the plan
  * to the SUNDIALS driver (simulate_run.c). */
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <float.h>
 #include <math.h>
 #include <stdio.h>

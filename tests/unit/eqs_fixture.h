@@ -3,7 +3,7 @@
  * (or inline source), runs causality and analysis, builds the equations. */
 #ifndef BG_EQS_FIXTURE_H
 #define BG_EQS_FIXTURE_H
-#include <lapacke.h>
+#include "base/lapack.h"
 #include <stdlib.h>
 #include <string.h>
 #include "causality/causality.h"
