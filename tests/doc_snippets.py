@@ -3,7 +3,8 @@
 them (tests/contrib.sh on docs/integrations.md). Each fenced block must
 follow one of these comments:
     <!-- file: PATH [PATH...] -->   the block is a file: written to each PATH
-    <!-- run: DIR -->               the block's lines are commands run in DIR
+    <!-- run: DIR -->               the block's lines are commands run in DIR (the
+                                    blocks of one DIR in page order, one script)
     <!-- output: NAME -->           the block is output the test compares
 A fenced block without one is an error (a snippet no test runs).
 Usage: python3 doc_snippets.py PAGE OUTDIR [FROM TO]...
@@ -16,7 +17,7 @@ import sys
 
 page, outdir, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
 lines = open(page, encoding="utf-8").read().split("\n")
-marker, problems, i = None, [], 0
+marker, problems, i, scripts = None, [], 0, set()
 while i < len(lines):
     m = re.match(r"<!-- (file|run|output): (.+?) -->$", lines[i])
     if m:
@@ -43,8 +44,14 @@ while i < len(lines):
             with open(os.path.join(outdir, path), "w", encoding="utf-8") as out:
                 out.write(body)
     elif marker[0] == "run":
-        with open(os.path.join(outdir, "run-%s.sh" % marker[1][0]), "w", encoding="utf-8") as out:
-            out.write("set -e\ncd '%s'\n%s" % (os.path.join(outdir, marker[1][0]), body))
+        # several blocks may run in one DIR: their commands follow each other in one script
+        script = os.path.join(outdir, "run-%s.sh" % marker[1][0])
+        first = script not in scripts
+        scripts.add(script)
+        with open(script, "w" if first else "a", encoding="utf-8") as out:
+            if first:
+                out.write("set -e\ncd '%s'\n" % os.path.join(outdir, marker[1][0]))
+            out.write(body)
     else:
         with open(os.path.join(outdir, "output-%s.txt" % marker[1][0]), "w", encoding="utf-8") as out:
             out.write(body)
