@@ -11,28 +11,9 @@ set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
 BG=$BGDRAW
 
-bash tools/gallery.sh "$BG" "$tmp/out" 2>"$tmp/build.err"
-cs_=$?; check "tools/gallery.sh builds the tutorial: $(tail -3 "$tmp/build.err")" $cs_
-d=$tmp/out/tutorial
-
-# the page's models are the files of examples/tutorial, all of them
-for f in examples/tutorial/*.bg; do
-  cmp -s "$f" "$d/${f##*/}"; check "docs/tutorial.md shows $f as it is" $?
-done
-for f in "$d"/*.bg; do
-  [ -f "examples/tutorial/${f##*/}" ]; check "the page's model ${f##*/} is a file of examples/tutorial" $?
-done
-
-# every picture and link of the page exists, and is what its name says
-for img in $(grep -o '](tutorial/[^)]*)' docs/tutorial.md | sed 's/^](tutorial\///; s/)$//'); do
-  case $img in
-    *.png) file "$d/$img" | grep -q 'PNG image data' ;;
-    *.pdf) file "$d/$img" | grep -q 'PDF document' ;;
-    *.html) grep -q '</html>' "$d/$img" ;;
-    *) false ;;
-  esac
-  check "the page's $img is made" $?
-done
+. "$(dirname "$0")/lib/doc_pages.sh"
+page_build tutorial
+page_files tutorial
 
 # output blocks: MODEL-check and MODEL-equations are the whole output of the command,
 # MODEL-linear its beginning (the page leaves out the symbolic part), MODEL-reduced lines

@@ -6,7 +6,8 @@
 # what the page's commands draw; the page is copied beside them, and turned into HTML
 # when pandoc is installed. tests/tutorial.sh and tests/gallery.sh run the same
 # commands and check their numbers.
-#     bash tools/gallery.sh [BGDRAW [OUT]]      (from anywhere; also: cmake --build build --target gallery)
+#     bash tools/gallery.sh [BGDRAW [OUT [PAGE...]]]   (from anywhere; also: cmake --build build --target gallery)
+# PAGE: tutorial, gallery (default both).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bg=$(realpath "${1:-$root/build/bgdraw}")
@@ -14,7 +15,9 @@ out=$(realpath -m "${2:-$root/out/docs}")
 [ -x "$bg" ] || { echo "gallery.sh: no bgdraw at $bg (build it first)" >&2; exit 2; }
 mkdir -p "$out/bin"
 ln -sf "$bg" "$out/bin/bgdraw"
-for page in tutorial gallery; do
+pages=("${@:3}")
+[ ${#pages[@]} -gt 0 ] || pages=(tutorial gallery)
+for page in "${pages[@]}"; do
   [ -f "$root/docs/$page.md" ] || continue
   rm -rf "${out:?}/$page"
   mkdir -p "$out/$page"

@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# What tests/tutorial.sh and tests/gallery.sh check alike on their page (sourced after
+# tests/lib/preamble.sh): page_build PAGE builds docs/PAGE.md with tools/gallery.sh into
+# $tmp/out (every command block run) and sets d, the folder of its pictures; page_files
+# PAGE checks that the page shows every file of examples/PAGE as it is and nothing else,
+# and that every picture and link of the page was made and is what its name says.
+page_build() { # PAGE
+  bash tools/gallery.sh "$BGDRAW" "$tmp/out" "$1" 2>"$tmp/build.err"
+  local st=$?
+  check "tools/gallery.sh builds docs/$1.md: $(tail -3 "$tmp/build.err")" $st
+  d=$tmp/out/$1
+}
+page_files() { # PAGE
+  local f img
+  for f in examples/"$1"/*.bg examples/"$1"/*.c; do
+    [ -f "$f" ] || continue
+    cmp -s "$f" "$d/${f##*/}"; check "docs/$1.md shows $f as it is" $?
+  done
+  while IFS= read -r f; do
+    [ -f "examples/$1/$f" ]; check "the page's model $f is a file of examples/$1" $?
+  done < <(grep -o "^<!-- file: $1/[^ ]* -->" "docs/$1.md" | sed "s|^<!-- file: $1/||; s| -->\$||")
+  for img in $(grep -o "]($1/[^)]*)" "docs/$1.md" | sed "s|^]($1/||; s|)\$||"); do
+    case $img in
+      *.png) file "$d/$img" | grep -q 'PNG image data' ;;
+      *.pdf) file "$d/$img" | grep -q 'PDF document' ;;
+      *.html) grep -q '</html>' "$d/$img" ;;
+      *) false ;;
+    esac
+    check "the page's $img is made" $?
+  done
+}
