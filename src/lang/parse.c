@@ -622,7 +622,11 @@ static const char *signed_number(parser *p, const char *what, double *v) {
   *v = sign && sign->kind == BG_TK_MINUS ? -t->num : t->num;
   if (!isfinite(*v)) fail_at(p, t, "%s must be a finite number, not '%s'", what, t->text);
   if (!sign || sign->kind == BG_TK_PLUS) return t->text;
-  return bg_ast_join(&p->ast->arena, "", span_text(p, sign->start, t->end)); /* "-5" */
+  size_t n = strlen(t->text); /* "-5", whatever stood between the sign and the digits */
+  char *neg = bg_arena_alloc(&p->ast->arena, n + 2);
+  neg[0] = '-';
+  memcpy(neg + 1, t->text, n + 1);
+  return neg;
 }
 
 static void study_item(parser *p, bg_ast_stmt *s, const char *word, bg_srcloc loc) {

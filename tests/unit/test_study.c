@@ -381,8 +381,52 @@ static void root_locus(void) {
   free(src);
 }
 
+/* The model's own study (`study` statements, docs/format.md): the words
+ * the command line would take, the numbers exactly as written. */
+static void model_words(void) {
+  const char *src = "model m\nparam a = 1, b = 2\nSe U = a\nC C1 = b\nbond U -> C1\n"
+                    "study sweep a = range(-5, + 5, 3)\n"
+                    "study sweep b = [1e-3, - 2.5e-3, 7]\n"
+                    "study collect C1.e:max, C1.e : cross = -0.5, poles\n";
+  bg_run *R = bg_run_new(NULL);
+  OK(bg_run_load_string(R, "m.bg", src) == 0 && R->model);
+  if (R->model) {
+    const bg_model *m = R->model;
+    INT_EQ(m->nstudy, 5);
+    static const char *const want[] = {"a=-5:5:3", "b=1e-3,-2.5e-3,7", "C1.e:max", "C1.e:cross=-0.5", "poles"};
+    static const char kind[] = "sscc" "c";
+    for (int k = 0; k < m->nstudy && k < 5; k++) {
+      STR_EQ(m->study_word[k], want[k]);
+      INT_EQ(m->study_kind[k], kind[k]);
+    }
+    /* the words parse as the command line's: the same values */
+    bg_study_spec s;
+    memset(&s, 0, sizeof s);
+    char err[200];
+    INT_EQ(bg_study_add_sweep(&s, m->study_word[0], err, sizeof err), 0);
+    INT_EQ(bg_study_add_sweep(&s, m->study_word[1], err, sizeof err), 0);
+    OK(s.params[0].values[0] == -5 && s.params[0].values[1] == 0 && s.params[0].values[2] == 5);
+    OK(s.params[1].values[1] == -2.5e-3);
+    bg_study_spec_free(&s);
+  }
+  bg_run_free(R);
+  const char *mc = "model m\nparam a = 1\nSe U = a\nC C1 = 1\nbond U -> C1\n"
+                   "study vary a = lognormal(0, 0.25)\nstudy seed = 18446744073709551615, draws = 20\n";
+  R = bg_run_new(NULL);
+  OK(bg_run_load_string(R, "m.bg", mc) == 0 && R->model);
+  if (R->model) {
+    INT_EQ(R->model->nstudy, 3);
+    STR_EQ(R->model->study_word[0], "a=lognormal(0,0.25)");
+    STR_EQ(R->model->study_word[1], "seed=18446744073709551615");
+    STR_EQ(R->model->study_word[2], "draws=20");
+    INT_EQ(R->model->study_kind[1], 'e');
+  }
+  bg_run_free(R);
+}
+
 int main(void) {
   parsers();
+  model_words();
   root_locus();
   rlc_sweep();
   quarter_car();
