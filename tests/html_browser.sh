@@ -12,6 +12,7 @@ set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
 out=${BGDRAW_SHOTS:-$tmp/shots}
 python3 tests/html/browser.py "$BGDRAW" "$out" examples/*.bg tests/data/linear_rlc.bg \
-  tests/data/thermostat.bg tests/data/coupled_coils.bg
+  tests/data/thermostat.bg tests/data/coupled_coils.bg examples/components/rc_ladder_lib.bg \
+  tests/data/fields/dependent.bg
 check "the reports in chromium" $?
 finish

@@ -12,7 +12,7 @@
 set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
 
-for m in examples/*.bg tests/data/*.bg; do
+for m in examples/*.bg tests/data/*.bg examples/components/*.bg tests/data/fields/*.bg; do
   n=$(basename "$m" .bg)
   "$BGDRAW" "$m" --report "$tmp/$n.html" -o "$tmp/$n.json" >/dev/null 2>&1
   [ -s "$tmp/$n.html" ]; check "$n: --report FILE.html writes the page" $?
@@ -63,6 +63,19 @@ for f in sorted(os.listdir(tmp)):
         print("%s: one h1, a language" % n); bad += 1
 sys.exit(bad != 0)
 PY
+
+# a model of submodels: its instances and each bond's origin; a field: its ports
+python3 - "$tmp/rc_ladder_lib" <<'PY'
+import json, re, sys
+h = open(sys.argv[1] + ".html", encoding="utf-8").read()
+j = json.load(open(sys.argv[1] + ".json"))
+rows = re.findall(r'<tr id="bond-([0-9]+)" tabindex="0" data-bonds="([0-9]+)"', h)
+sys.exit(0 if '<section id="instances"' in h and [int(a) for a, _ in rows] == [b["id"] for b in j["bonds"]] else 1)
+PY
+check "submodels: the instances section, a row per flat bond" $?
+grep -q '<h3 id="field-1">C field K: 2 ports, mixed causality</h3>' "$tmp/dependent.html" &&
+  ! grep -q '<section id="fields"' "$tmp/rlc.html" && ! grep -q '<section id="instances"' "$tmp/rlc.html"
+check "fields: the field's section (and neither section for rlc)" $?
 
 # the linear analysis and the transformation, when the run has them
 "$BGDRAW" tests/data/linear_rlc.bg --report "$tmp/lin.html" 2>/dev/null

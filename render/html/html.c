@@ -31,6 +31,8 @@ static void head(ht_ctx *c) {
 static void body(ht_ctx *c) {
   ht_summary(c);
   ht_diagram(c);
+  ht_components(c);
+  ht_fields(c);
   ht_trace(c);
   ht_tables(c);
   ht_index(c);

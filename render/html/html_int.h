@@ -54,6 +54,8 @@ void ht_trace(ht_ctx *c);
 void ht_tables(ht_ctx *c);
 void ht_index(ht_ctx *c);
 void ht_estimates(ht_ctx *c);
+void ht_components(ht_ctx *c); /* html_model.c: models with submodels */
+void ht_fields(ht_ctx *c);     /* html_model.c: models with multiport fields */
 void ht_diagram(ht_ctx *c);    /* html_figures.c */
 void ht_equations(ht_ctx *c);
 void ht_simulation(ht_ctx *c);

@@ -50,8 +50,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     bg_eqsys *s = fuzz_eqsys(&f, size);
     bg_strbuf sb = {0};
     if (s) {
-      static const char *const forms[] = {"text", "latex", "c", "json"};
-      for (int i = 0; i < 4; i++) bg_eqprint(s, forms[i], &sb);
+      static const char *const forms[] = {"text", "latex", "c", "json", "mathml"};
+      for (int i = 0; i < 5; i++) bg_eqprint(s, forms[i], &sb);
       if (bg_eqsys_n(s) <= 40) { /* the dense index is cubic: keep runs short */
         bg_index_result ix;
         bg_index_compute(s, f.model, &ix);

@@ -4,7 +4,7 @@
  * index reduction, simulation, linear analysis) of different example models
  * through every output of the outputs table (src/output: the check summary,
  * JSON, the equations in every printer, the exports, CSV, the diagram as SVG,
- * PNG and DOT, the plot, the report), many times over, and every result must
+ * PNG and DOT, the plot, the PDF and HTML reports, MathML), many times over, and every result must
  * equal the one the same model gives on one thread, byte for byte. The sorts that kept
  * their context in globals, the inputs set, the atomic writes' temporary
  * file, text measurement and Graphviz are what this exercises
@@ -41,7 +41,7 @@ static char *run_model(const char *name, const char *outdir) {
       {"equations", "json"}, {"equations", "c"}, {"tex", NULL},        {"c", NULL},
       {"py", NULL},        {"m", NULL},         {"mo", NULL},         {"csv", NULL},
       {"linear", "text"},  {"svg", NULL},       {"png", NULL},        {"dot", NULL},
-      {"plot", "svg"},     {"report", NULL},
+      {"plot", "svg"},     {"report", NULL},    {"report", "html"},   {"equations", "mathml"},
   };
   char path[600];
   snprintf(path, sizeof path, "%s/examples/%s.bg", BG_SOURCE_DIR, name);
@@ -61,7 +61,7 @@ static char *run_model(const char *name, const char *outdir) {
     for (size_t i = 0; i < out.len; i++) hash = hash * 31 + (unsigned char)out.s[i];
     bg_sb_printf(&all, "\n== %s %s: status %d, %zu bytes, hash %lu\n", outs[k].kind,
                  outs[k].form ? outs[k].form : "", st, out.len, hash);
-    if (strcmp(outs[k].kind, "png") && strcmp(outs[k].kind, "report"))
+    if (strcmp(outs[k].kind, "png") && (strcmp(outs[k].kind, "report") || outs[k].form))
       bg_sb_putn(&all, out.s ? out.s : "", out.len);
     if (!strcmp(outs[k].kind, "svg")) { /* an atomic write (its temporary file) */
       char file[700];
@@ -110,6 +110,7 @@ int main(void) {
     OK(strstr(expect[k], "<svg") != NULL);
     OK(strstr(expect[k], "== equations text: status 0") != NULL);
     OK(strstr(expect[k], "== report : status 0") != NULL);
+    OK(strstr(expect[k], "== report html: status 0") != NULL);
   }
   /* one-thread runs repeat themselves (nothing a first run leaves behind
    * changes a second one) */
