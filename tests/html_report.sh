@@ -82,8 +82,10 @@ check "fields: the field's section (and neither section for rlc)" $?
 grep -q '<section id="linear"' "$tmp/lin.html" && grep -q 'aria-label="Bode diagram"' "$tmp/lin.html"
 check "linear analysis: its section and Bode diagram" $?
 "$BGDRAW" tests/data/transform/gear.bg --transform merge-stores --report "$tmp/tx.html" 2>/dev/null
-grep -q '<section id="transformation"' "$tmp/tx.html" && [ "$(grep -c 'aria-label="The bond graph' "$tmp/tx.html")" = 2 ]
-check "transformation: its section, both bond graphs" $?
+grep -q '<section id="transformation"' "$tmp/tx.html" && [ "$(grep -c 'aria-label="The bond graph' "$tmp/tx.html")" = 2 ] &&
+  grep -qF '<tr><th scope="row">dependent stores</th><td class="n">1</td><td class="n">0</td></tr>' "$tmp/tx.html" &&
+  grep -qF '<tr><th scope="row">form</th><td class="n">DAE</td><td class="n">ODE</td></tr>' "$tmp/tx.html"
+check "transformation: its section, the analysis before and after (merging the gear's stores), both bond graphs" $?
 ! grep -q '<section id="transformation"' "$tmp/rlc.html"; check "no transformation section without --transform" $?
 
 # the plot's readout data: the CSV's times and first column

@@ -263,6 +263,17 @@ void ht_linear(ht_ctx *c) {
 }
 
 /* ---------------------------------------------------------------- transformation */
+static void compare_row(void *ctx, const char *what, const char *before, const char *after) {
+  bg_strbuf *b = ctx;
+  bg_sb_puts(b, "<tr><th scope=\"row\">");
+  ht_esc(b, what);
+  bg_sb_puts(b, "</th><td class=\"n\">");
+  ht_esc(b, before);
+  bg_sb_puts(b, "</td><td class=\"n\">");
+  ht_esc(b, after);
+  bg_sb_puts(b, "</td></tr>\n");
+}
+
 void ht_transform(ht_ctx *c) {
   const bg_transform_result *tx = c->in->tx;
   if (!tx) return;
@@ -272,6 +283,10 @@ void ht_transform(ht_ctx *c) {
   bg_sb_puts(c->out, "</code> wrote a new model. ");
   ht_esc(c->out, tx->summary);
   bg_sb_puts(c->out, "</p>\n");
+  static const char *const head[] = {"", "Before", "After"};
+  ht_table(c, NULL, "The analysis before and after", 3, head);
+  rp_transform_rows(c->a, &tx->run->analysis, compare_row, c->out);
+  ht_table_end(c);
   ht_sub(c, "transform-before", "Before");
   bg_sb_puts(c->out, "<figure class=\"diagram-small\">\n");
   if (diagram_svg(c, c->m, c->a, BG_SHOW_DEFAULT, "role=\"img\" aria-label=\"The bond graph before\"")) c->failed = 1;

@@ -240,6 +240,10 @@ void rp_summary_rows(const rp_ctx *c, rp_row_fn row, void *ctx);
 int rp_nearest_eig(const bg_index_result *r, int kind, double value);
 /* 1 for the member with im > 0 of a pair listed as its conjugate (one row "re ± im"). */
 int rp_conjugate_listed(const bg_index_result *r, int k);
+/* The analysis before and after --transform, one row each (what, before,
+ * after: report_transform.c). */
+typedef void (*rp_cmp_fn)(void *ctx, const char *what, const char *before, const char *after);
+void rp_transform_rows(const bg_analysis *a, const bg_analysis *b, rp_cmp_fn fn, void *ctx);
 /* The solver statistics' rows (report_sim.c). */
 void rp_sim_stat_rows(const rp_ctx *c, const bg_simresult *r, rp_row_fn fn, void *ctx);
 

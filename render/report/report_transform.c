@@ -8,10 +8,11 @@
 #include "diagram/diagram_int.h"
 #include "report/report_int.h"
 
-static void row(rp_table *t, const char *what, int before, int after) {
-  rp_table_text(t, what);
-  rp_table_cell(t, "%d", before);
-  rp_table_cell(t, "%d", after);
+static void count_row(rp_cmp_fn fn, void *ctx, const char *what, int before, int after) {
+  char a[16], b[16];
+  snprintf(a, sizeof a, "%d", before);
+  snprintf(b, sizeof b, "%d", after);
+  fn(ctx, what, a, b);
 }
 
 static int count_class(const bg_analysis *a, int cls) {
@@ -30,25 +31,31 @@ static void index_word(const bg_analysis *a, char *buf, size_t n) {
   else snprintf(buf, n, "%d", a->index_predicted);
 }
 
+void rp_transform_rows(const bg_analysis *a, const bg_analysis *b, rp_cmp_fn fn, void *ctx) {
+  count_row(fn, ctx, "states", a->nstates, b->nstates);
+  count_row(fn, ctx, "dependent stores", a->ndependent, b->ndependent);
+  count_row(fn, ctx, "class 1 causal paths", count_class(a, 1), count_class(b, 1));
+  count_row(fn, ctx, "class 2 causal paths", count_class(a, 2), count_class(b, 2));
+  count_row(fn, ctx, "causal loops", a->ncloop, b->ncloop);
+  count_row(fn, ctx, "conflicts", a->nconflict, b->nconflict);
+  fn(ctx, "form", form_word(a), form_word(b));
+  char ia[32], ib[32];
+  index_word(a, ia, sizeof ia);
+  index_word(b, ib, sizeof ib);
+  fn(ctx, "predicted index", ia, ib);
+}
+
+static void table_row(void *ctx, const char *what, const char *before, const char *after) {
+  rp_table_text(ctx, what);
+  rp_table_text(ctx, before);
+  rp_table_text(ctx, after);
+}
+
 static void compare(rp_ctx *c, const bg_analysis *a, const bg_analysis *b) {
   static const char *const head[] = {"", "before", "after"};
   rp_table t;
   rp_table_init(&t, 3, head, "lrr");
-  row(&t, "states", a->nstates, b->nstates);
-  row(&t, "dependent stores", a->ndependent, b->ndependent);
-  row(&t, "class 1 causal paths", count_class(a, 1), count_class(b, 1));
-  row(&t, "class 2 causal paths", count_class(a, 2), count_class(b, 2));
-  row(&t, "causal loops", a->ncloop, b->ncloop);
-  row(&t, "conflicts", a->nconflict, b->nconflict);
-  rp_table_text(&t, "form");
-  rp_table_text(&t, form_word(a));
-  rp_table_text(&t, form_word(b));
-  char ia[32], ib[32];
-  index_word(a, ia, sizeof ia);
-  index_word(b, ib, sizeof ib);
-  rp_table_text(&t, "predicted index");
-  rp_table_text(&t, ia);
-  rp_table_text(&t, ib);
+  rp_transform_rows(a, b, table_row, &t);
   rp_table_emit(&c->body, &t);
 }
 
