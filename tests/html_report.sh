@@ -81,6 +81,28 @@ check "fields: the field's section (and neither section for rlc)" $?
 "$BGDRAW" tests/data/linear_rlc.bg --report "$tmp/lin.html" 2>/dev/null
 grep -q '<section id="linear"' "$tmp/lin.html" && grep -q 'aria-label="Bode diagram"' "$tmp/lin.html"
 check "linear analysis: its section and Bode diagram" $?
+"$BGDRAW" tests/data/linear_rlc.bg --linear json >"$tmp/lin.json"
+python3 - "$tmp/lin.html" "$tmp/lin.json" <<'PY'; check "Bode readout data: 20 log10 |num/den| of the transfer functions" $?
+import json, math, re, sys
+h = open(sys.argv[1], encoding="utf-8").read()
+tf = json.load(open(sys.argv[2]))["transfer_functions"]
+bode = h[h.index('aria-label="Bode diagram"'):]
+d = json.loads(re.search(r'<script type="application/json" class="plot-data">(.*?)</script>', bode, re.S).group(1))
+assert d["xlog"] == 1 and len(d["panels"]) == 2
+def poly(c, s):
+    v = 0
+    for a in c:
+        v = v * s + a
+    return v
+mag = d["panels"][0]
+assert len(mag["names"]) == len(tf)
+for j, t in enumerate(tf):
+    assert mag["names"][j] == "%s \u2190 %s" % (t["output"], t["input"]), mag["names"][j]
+    for w, v in zip(d["t"], mag["values"][j]):
+        g = abs(poly(t["num"], 1j * w) / poly(t["den"], 1j * w))
+        want = 20 * math.log10(g) if g > 0 else None
+        assert (v is None and want is None) or abs(v - want) <= 1e-4 * max(1, abs(want)), (w, v, want)
+PY
 "$BGDRAW" tests/data/transform/gear.bg --transform merge-stores --report "$tmp/tx.html" 2>/dev/null
 grep -q '<section id="transformation"' "$tmp/tx.html" && [ "$(grep -c 'aria-label="The bond graph' "$tmp/tx.html")" = 2 ] &&
   grep -qF '<tr><th scope="row">dependent stores</th><td class="n">1</td><td class="n">0</td></tr>' "$tmp/tx.html" &&

@@ -122,12 +122,12 @@ static void json_name(bg_strbuf *b, const char *s) {
   bg_sb_putc(b, '"');
 }
 
-/* The plots' data for the readout: the time axis' span (as plot.c's
- * time_range: the simulate block's, else the rows'), the times and, per
- * panel, the columns it draws (plot.c's make_panels: a panel per plot
- * statement, else one of every output; at most 24 curves a panel). */
-static void readout_data(ht_ctx *c, const bg_simresult *r) {
-  const bg_model *m = c->m;
+/* The plots' data for the readout: the abscissa's span (as plot.c's
+ * time_range: the simulate block's, else the rows'), whether it is a log
+ * axis (Bode), the abscissae and, per panel, the columns it draws (plot.c's
+ * make_panels: a panel per plot statement of m, else one of every output;
+ * at most 24 curves a panel). */
+static void readout_data(ht_ctx *c, const bg_model *m, const bg_simresult *r, int xlog) {
   const bg_simspec *sp = &m->sim;
   double t0 = r->t[0], t1 = r->t[r->nrows - 1];
   if (sp->present && isfinite(sp->t0) && isfinite(sp->t_end) && sp->t_end > sp->t0) t0 = sp->t0, t1 = sp->t_end;
@@ -136,6 +136,7 @@ static void readout_data(ht_ctx *c, const bg_simresult *r) {
   bg_strbuf *o = c->out;
   bg_sb_puts(o, "<script type=\"application/json\" class=\"plot-data\">{\"t0\": ");
   json_num(o, t0), bg_sb_puts(o, ", \"t1\": "), json_num(o, t1);
+  bg_sb_printf(o, ", \"xlog\": %d", xlog);
   bg_sb_puts(o, ", \"t\": [");
   for (int i = 0, k = 0; i < r->nrows; i += stride, k++) bg_sb_puts(o, k ? "," : ""), json_num(o, r->t[i]);
   bg_sb_puts(o, "], \"panels\": [");
@@ -172,7 +173,7 @@ static void plots(ht_ctx *c, const bg_simresult *r) {
   ht_sub(c, "plots", r->partial ? "Plots (partial results)" : "Plots");
   bg_sb_puts(c->out, "<figure class=\"plot\" data-readout=\"1\">\n");
   ht_inline_svg(c, svg.s, svg.len, "role=\"img\" aria-label=\"Simulation plots: the outputs against time\"");
-  readout_data(c, r);
+  readout_data(c, c->m, r, 0);
   bg_sb_puts(c->out, "<figcaption>The outputs against time. Under the pointer: <output class=\"readout\" "
                      "aria-live=\"polite\">point at a plot</output></figcaption>\n</figure>\n");
   bg_sb_free(&svg);
@@ -239,8 +240,16 @@ static void linear_plot(ht_ctx *c, int kind, const char *id, const char *title) 
     bg_sb_puts(&a, "role=\"img\" aria-label=\"");
     ht_esc(&a, title);
     bg_sb_puts(&a, "\"");
-    bg_sb_puts(c->out, "<figure class=\"plot\">\n");
+    bg_plot_table T;
+    int data = bg_plot_linear_table(c->m, c->in->lin, kind, &T) == 0;
+    bg_sb_puts(c->out, data ? "<figure class=\"plot\" data-readout=\"1\">\n" : "<figure class=\"plot\">\n");
     ht_inline_svg(c, svg.s, svg.len, bg_sb_str(&a));
+    if (data) {
+      readout_data(c, &T.m, &T.r, kind == BG_PLOT_BODE);
+      bg_sb_puts(c->out, "<figcaption>Under the pointer: <output class=\"readout\" aria-live=\"polite\">"
+                         "point at a plot</output></figcaption>\n");
+      bg_plot_table_free(&T);
+    }
     bg_sb_puts(c->out, "</figure>\n");
     bg_sb_free(&a);
   }

@@ -21,14 +21,7 @@
 enum { BODE_POINTS = 400, TIME_POINTS = 401 };
 #define WIDTH 540.0
 
-/* Rows of nrow x ncol columns with names, and the panels that show them. */
-typedef struct table {
-  bg_simresult r;
-  bg_model m;
-  int plot_expradr[2], plot_nexpr[2];
-  const char *title[2], *ylabel[2], *xlabel[2];
-  char **names;
-} table;
+typedef bg_plot_table table;
 
 static void table_init(table *T, const bg_model *src, int nrow, int npair, int npanel) {
   memset(T, 0, sizeof *T);
@@ -45,7 +38,7 @@ static void table_init(table *T, const bg_model *src, int nrow, int npair, int n
   T->m.plot_title = T->title, T->m.plot_ylabel = T->ylabel, T->m.plot_xlabel = T->xlabel;
 }
 
-static void table_free(table *T) {
+void bg_plot_table_free(bg_plot_table *T) {
   for (int k = 0; k < T->r.nout; k++) free(T->names[k]);
   free(T->names), free(T->r.t), free(T->r.values);
 }
@@ -269,7 +262,14 @@ int bg_plot_linear_scene(const bg_model *m, const bg_linear *l, int kind, const 
   int rc = kind == BG_PLOT_BODE ? bode_table(m, l, &T) : step_table(m, l, &T);
   static const bg_plot_spec bode = {1, "\xcf\x89", "rad/s", 2, 0, 0}, time = {0, "t", NULL, 0, 0, 0};
   if (rc == 0) bg_plot_scene_spec(&T.m, &T.r, kind == BG_PLOT_BODE ? &bode : &time, st, width, 0, out);
-  table_free(&T);
+  bg_plot_table_free(&T);
+  return rc;
+}
+
+int bg_plot_linear_table(const bg_model *m, const bg_linear *l, int kind, bg_plot_table *T) {
+  if (!l->ok || l->nu * l->ny == 0 || kind == BG_PLOT_NYQUIST) return -1;
+  int rc = kind == BG_PLOT_BODE ? bode_table(m, l, T) : step_table(m, l, T);
+  if (rc != 0) bg_plot_table_free(T);
   return rc;
 }
 

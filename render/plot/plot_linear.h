@@ -8,8 +8,24 @@
 #include "model/model.h"
 #include "scene/scene.h"
 #include "scene/style.h"
+#include "simulate/simulate.h"
 
 enum { BG_PLOT_BODE, BG_PLOT_NYQUIST, BG_PLOT_STEP };
+
+/* The rows a Bode or step plot draws: the abscissa (frequencies, times) in
+ * r.t, one column per curve, m's plot statements the panels (the HTML
+ * report's readout reads them). */
+typedef struct bg_plot_table {
+  bg_simresult r;
+  bg_model m;
+  int plot_expradr[2], plot_nexpr[2];
+  const char *title[2], *ylabel[2], *xlabel[2];
+  char **names;
+} bg_plot_table;
+/* 0 with T filled (free it with bg_plot_table_free), or -1: nothing drawn
+ * (not linearised, no pair, Nyquist, no step response). */
+int bg_plot_linear_table(const bg_model *m, const bg_linear *l, int kind, bg_plot_table *T);
+void bg_plot_table_free(bg_plot_table *T);
 
 /* Draws plot `kind` of every input/output pair into out, width points wide
  * (height chosen). 0, or -1 when there is nothing to draw (not linearised,

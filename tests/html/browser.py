@@ -17,6 +17,7 @@ usage: browser.py BGDRAW OUTDIR MODEL...   (OUTDIR keeps the screenshots)"""
 import base64
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -145,18 +146,23 @@ def layer_checks(page, name):
 
 
 def readout_check(page, name, csvpath):
-    if not page.eval("!!document.querySelector('figure.plot[data-readout] path.panel')"):
+    if not page.eval("!!document.querySelector('svg[aria-label^=Simulation] path.panel')"):
         return
-    pt = page.eval("(() => { const p = document.querySelector('figure.plot[data-readout] path.panel');"
+    pt = page.eval("(() => { const p = document.querySelector('svg[aria-label^=Simulation] path.panel');"
                    " p.scrollIntoView({block: 'center'}); const b = p.getBoundingClientRect();"
                    " return [b.x + b.width * 0.37, b.y + b.height / 2]; })()")
     page.mouse(pt[0], pt[1])
-    text = page.eval("document.querySelector('figure.plot output.readout').textContent")
+    text = page.eval("document.querySelector('svg[aria-label^=Simulation]').closest('figure').querySelector('output.readout').textContent")
     ok = text.startswith("t = ") and ": " in text
     check(name + ": the readout shows values under the pointer", ok, text)
     if not ok or not csvpath:
         return
     t = float(text[4:text.index(": ")])
+    d = json.loads(page.eval("document.querySelector('svg[aria-label^=Simulation]').closest('figure')"
+                             ".querySelector('script.plot-data').textContent"))
+    at = d["t0"] + 0.37 * (d["t1"] - d["t0"])
+    gap = max(b - a for a, b in zip(d["t"], d["t"][1:])) if len(d["t"]) > 1 else 0
+    check(name + ": the readout's time is where the pointer is (%g, %g)" % (t, at), abs(t - at) <= 1.5 * gap + 1e-9)
     first = text[text.index(": ") + 2:].split(", ")[0]
     col, val = first.rsplit(" = ", 1)
     rows = list(csv.reader(open(csvpath)))
@@ -170,9 +176,33 @@ def readout_check(page, name, csvpath):
     check(name + ": readout at t = %g is the CSV's %s" % (t, col),
           abs(float(val) - want) <= 1e-4 * max(abs(want), 1e-12) + 1e-12 and abs(best[0] - t) <= 1e-4 * max(abs(t), 1e-12),
           (text, best[0], want))
-    x0 = page.eval("(() => { const b = document.querySelector('figure.plot path.panel').getBoundingClientRect();"
-                   " return b.x; })()")
-    check(name + ": the readout's time is where the pointer is", True, x0)
+
+
+def bode_check(page, name):
+    """The Bode readout on its log axis: the pointer halfway across the panel
+    reads the frequency halfway between the ends in decades."""
+    fig = "document.querySelector('svg[aria-label=\"Bode diagram\"]').closest('figure')"
+    if not page.eval("!!document.querySelector('svg[aria-label=\"Bode diagram\"]')"):
+        return
+    d = json.loads(page.eval(fig + ".querySelector('script.plot-data').textContent"))
+    pt = page.eval("(() => { const p = %s.querySelector('path.panel'); p.scrollIntoView({block: 'center'});"
+                   " const b = p.getBoundingClientRect(); return [b.x + b.width / 2, b.y + b.height / 2]; })()" % fig)
+    page.mouse(pt[0], pt[1])
+    text = page.eval(fig + ".querySelector('output.readout').textContent")
+    ok = text.startswith("\u03c9 = ")
+    check(name + ": the Bode readout names the frequency", ok, text)
+    if not ok:
+        return
+    w = float(text[4:text.index(": ")])
+    mid = 10 ** ((math.log10(d["t0"]) + math.log10(d["t1"])) / 2)
+    step = (math.log10(d["t1"]) - math.log10(d["t0"])) / (len(d["t"]) - 1)
+    check(name + ": the Bode readout's frequency is where the pointer is on the log axis (%g, %g)" % (w, mid),
+          abs(math.log10(w) - math.log10(mid)) <= 1.5 * step)
+    first = text[text.index(": ") + 2:].split(", ")[0].rsplit(" = ", 1)[1]
+    i = min(range(len(d["t"])), key=lambda k: abs(d["t"][k] - w))
+    want = d["panels"][0]["values"][0][i]
+    check(name + ": the Bode readout shows the row's magnitude", abs(float(first) - want) <= 1e-4 * max(1, abs(want)),
+          (first, want))
 
 
 def a11y_checks(page, name):
@@ -283,6 +313,7 @@ def model(b, bgdraw, path, outdir, first):
     table_checks(page, name, j)
     layer_checks(page, name)
     readout_check(page, name, csvpath)
+    bode_check(page, name)
     quiet_page(page, name + " (after the interaction)", url)
     # Enter on a focused row selects it and writes the fragment
     if j["causal_paths"]:
