@@ -22,6 +22,18 @@ for m in mtt_rlc mtt_amps mtt_chain; do
   check "$m: the folder, the folder/ and the drawing give the same model" $?
   "$BGDRAW" $d/$m --check >"$tmp/a" && "$BGDRAW" $d/$m.bg --check >"$tmp/b"
   cmp -s "$tmp/a" "$tmp/b"; check "$m: --check equals the hand-written model's" $?
+  "$BGDRAW" $d/$m -T json >"$tmp/a.json" && "$BGDRAW" $d/$m.bg -T json >"$tmp/b.json" &&
+    python3 - "$tmp/a.json" "$tmp/b.json" <<'PY'
+import json, sys
+def view(d):  # the causal analysis: strokes and why, paths, loops, states, index
+    return ([(b["id"], b["from"], b["to"], b["stroke"], b["reason"], b["conflict"]) for b in d["bonds"]],
+            d["causal_paths"], d["causal_loops"], d["conflicts"], d["states"], d["dependent_stores"],
+            [(t["bonds"], t["gain_value"], t["algebraic"]) for t in d["topological_loops"]],
+            d.get("detectors"), d["form"], d["index"])
+a, b = (view(json.load(open(f))) for f in sys.argv[1:3])
+sys.exit(a != b)
+PY
+  check "$m: the causal analysis (strokes, paths, loops, states) equals the hand-written model's" $?
   "$BGDRAW" $d/$m -o "$tmp/$m.csv" && "$BGDRAW" $d/$m.bg -o "$tmp/b.csv"
   cmp -s "$tmp/$m.csv" "$tmp/b.csv"; check "$m: simulation equals the hand-written model's" $?
   "$BGDRAW" "$tmp/$m.bg" -o "$tmp/c.csv" && cmp -s "$tmp/$m.csv" "$tmp/c.csv"

@@ -129,7 +129,7 @@ int bg_bgt_read(const bg_ynode *doc, bg_ig *g, bg_diags *dg);
  * (components, port labels) with their coordinates (xfig units, 1200 a
  * inch, y downwards) and the file line each object starts on. */
 enum { BG_FIG_LINE = 1, BG_FIG_TEXT = 2 };
-enum { BG_FIG_MAX_OBJECTS = 1000000 };
+enum { BG_FIG_MAX_OBJECTS = 1000000, BG_FIG_MAX_COORD = 100000000 };
 typedef struct {
   int x, y;
 } bg_fig_pt;

@@ -73,6 +73,19 @@ static int integer(lexer *lx, const char *what) {
   return v >= 0 ? (int)(v + 0.5) : -(int)(-v + 0.5);
 }
 
+/* A coordinate: within +-10^8 (xfig's own canvas is far smaller), so squared
+ * distances stay exact in 64 bits. */
+static int coordinate(lexer *lx, const char *what) {
+  int line = lx->line;
+  double v = number(lx, what);
+  if (!lx->failed && (v > BG_FIG_MAX_COORD || v < -BG_FIG_MAX_COORD)) {
+    bg_diag_error(lx->dg, (bg_srcloc){line, 1, lx->file},
+                  "xfig drawing: the coordinate %.0f is beyond +-%d", v, BG_FIG_MAX_COORD);
+    lx->failed = 1;
+  }
+  return v >= 0 ? (int)(v + 0.5) : -(int)(-v + 0.5);
+}
+
 /* A count the rest of the file can hold (each item takes at least `per`
  * bytes), so a huge number in a small file allocates nothing. */
 static int count(lexer *lx, const char *what, int per) {
@@ -205,8 +218,8 @@ int bg_fig_parse(const char *src, size_t len, bg_arena *a, bg_diags *dg, int fil
       if (lx.failed) break;
       o.pts = bg_arena_alloc(a, (size_t)(np ? np : 1) * sizeof *o.pts);
       for (int i = 0; i < np && !lx.failed; i++) {
-        o.pts[i].x = integer(&lx, "a point's x");
-        o.pts[i].y = integer(&lx, "a point's y");
+        o.pts[i].x = coordinate(&lx, "a point's x");
+        o.pts[i].y = coordinate(&lx, "a point's y");
       }
       o.npts = np;
       if (!lx.failed) push(out, o);
@@ -230,8 +243,8 @@ int bg_fig_parse(const char *src, size_t len, bg_arena *a, bg_diags *dg, int fil
       o.depth = integer(&lx, "a depth");
       skip_numbers(&lx, 7, "a text's fields");
       o.pts = bg_arena_alloc(a, sizeof *o.pts);
-      o.pts[0].x = integer(&lx, "a text's x");
-      o.pts[0].y = integer(&lx, "a text's y");
+      o.pts[0].x = coordinate(&lx, "a text's x");
+      o.pts[0].y = coordinate(&lx, "a text's y");
       o.npts = 1;
       if (lx.failed) break;
       o.text = text_string(&lx, a, line);
