@@ -131,8 +131,21 @@ mv "$tmp/amb/mtt_amps_abg.fig" "$tmp/amb/amb_abg.fig"
 for f in lbl numpar simpar; do mv "$tmp/amb/mtt_amps_$f.txt" "$tmp/amb/amb_$f.txt"; done
 "$BGDRAW" --import "$tmp/amb" -T bg >"$tmp/amb.bg" 2>"$tmp/err"
 grep -q "warning: MTT drawing: the bond's tail at (3000, 1500) is almost as near R:r0 as 0: read as 0" "$tmp/err" &&
-  grep -q 'amb_abg.fig:[0-9]*:1: warning' "$tmp/err" && grep -q '^bond mtt0 -> r0$' "$tmp/amb.bg"
-check "an almost equally near label: the reading taken is said with its coordinates" $?
+  grep -q 'amb_abg.fig:[0-9]*:1: warning' "$tmp/err" && grep -q '^bond mtt0 -> r0$' "$tmp/amb.bg" &&
+  grep -q "^# amb_abg.fig:[0-9]*: the bond's tail at (3000, 1500) is almost as near R:r0 as 0: read as 0$" "$tmp/amb.bg"
+check "an almost equally near label: the reading taken is said with its coordinates (stderr and the .bg text)" $?
+
+# a named component the label file does not list takes MTT's default label
+# (R:r is lin flow,r); a third field in the drawing (R:r:flow,r) is its arguments
+cp -r $d/mtt_rlc "$tmp/dl"
+sed -i '/^\tr\tlin/d' "$tmp/dl/mtt_rlc_lbl.txt"
+"$BGDRAW" --import "$tmp/dl" -T bg | cmp -s - "$tmp/mtt_rlc.bg"
+check "a component missing from the label file: MTT's default label" $?
+sed -i 's/ R:r\\001$/ R:r:effort,g\\001/' "$tmp/dl/mtt_rlc_abg.fig"
+printf 'g = 0.5;\n' >>"$tmp/dl/mtt_rlc_numpar.txt"
+"$BGDRAW" --import "$tmp/dl" -T bg | grep -q '^R  r = 1/g$' && "$BGDRAW" "$tmp/dl" -o "$tmp/dl.csv" &&
+  cmp -s "$tmp/dl.csv" "$tmp/mtt_rlc.csv"
+check "a drawing's TYPE:NAME:ARGS gives lin's arguments" $?
 
 # errors at the foreign files' lines: a .bg error of a numpar value, a label
 # file's CR, an unknown port of a subsystem

@@ -114,11 +114,27 @@ static int nearest_end(const bg_mtt_sys *s, bg_fig_pt p, int *end, i64 *d1, i64 
   return best;
 }
 
-static void ambiguous(const bg_mtt_sys *s, bg_diags *dg, int line, const char *what,
+/* A reading worth saying: a warning at the object's line, and a note the
+ * .bg text keeps as a comment. */
+static void say(bg_mtt_sys *s, bg_arena *a, bg_diags *dg, int line, const char *msg) {
+  bg_diag_warning(dg, (bg_srcloc){line, 1, s->file}, "MTT drawing: %s", msg);
+  if (s->nnotes == s->capnotes) {
+    s->capnotes = s->capnotes ? 2 * s->capnotes : 8;
+    s->notes = bg_xrealloc(s->notes, (size_t)s->capnotes * sizeof *s->notes);
+  }
+  size_t n = strlen(msg) + 48;
+  char *note = bg_arena_alloc(a, n);
+  snprintf(note, n, "%s_abg.fig:%d: %s", s->type, line, msg);
+  s->notes[s->nnotes++] = note;
+}
+
+static void ambiguous(bg_mtt_sys *s, bg_arena *a, bg_diags *dg, int line, const char *what,
                       bg_fig_pt p, const char *taken, const char *other) {
-  bg_diag_warning(dg, (bg_srcloc){line, 1, s->file},
-                  "MTT drawing: %s at (%d, %d) is almost as near %s as %s: read as %s", what, p.x,
-                  p.y, other, taken, taken);
+  size_t n = strlen(what) + strlen(taken) * 2 + strlen(other) + 96;
+  char *msg = bg_arena_alloc(a, n);
+  snprintf(msg, n, "%s at (%d, %d) is almost as near %s as %s: read as %s", what, p.x, p.y, other,
+           taken, taken);
+  say(s, a, dg, line, msg);
 }
 
 static const char *comp_label(bg_arena *a, const bg_mtt_comp *c) {
@@ -159,7 +175,7 @@ static int attach_components(bg_mtt_sys *s, bg_arena *a, bg_diags *dg) {
       }
       b->comp[k] = best;
       if (second >= 0 && close_call(d1, d2))
-        ambiguous(s, dg, b->line, k == BG_MTT_HEAD ? "the bond's head" : "the bond's tail",
+        ambiguous(s, a, dg, b->line, k == BG_MTT_HEAD ? "the bond's head" : "the bond's tail",
                   b->end[k], comp_label(a, &s->c[best]), comp_label(a, &s->c[second]));
     }
     if (b->comp[0] == b->comp[1]) {
@@ -214,7 +230,7 @@ static int attach_port_label(bg_mtt_sys *s, bg_arena *a, bg_diags *dg, const bg_
       for (int k = 0; k < 2; k++)
         if ((j != i || k != end) && (dd < 0 || dist2(o->pts[0], s->b[j].end[k]) < dd))
           dd = dist2(o->pts[0], s->b[j].end[k]), other = j * 2 + k;
-    ambiguous(s, dg, o->line, what, o->pts[0], end_label(a, s, i, end),
+    ambiguous(s, a, dg, o->line, what, o->pts[0], end_label(a, s, i, end),
               end_label(a, s, other / 2, other % 2));
   }
   return 0;
@@ -234,10 +250,10 @@ static void attach_stroke(bg_mtt_sys *s, bg_arena *a, bg_diags *dg, const bg_fig
   bg_fig_pt e = b->end[end];
   i64 len2 = dist2(p0, p1);
   if (d1 > 4 * len2) {
-    bg_diag_warning(dg, at_obj(s, o),
-                    "MTT drawing: the stroke at (%d, %d) is far from every bond end; taken as a "
-                    "stroke at %s",
-                    mid.x, mid.y, end_label(a, s, i, end));
+    char msg[256];
+    snprintf(msg, sizeof msg, "the stroke at (%d, %d) is far from every bond end; taken as a stroke at %s",
+             mid.x, mid.y, end_label(a, s, i, end));
+    say(s, a, dg, o->line, msg);
   }
   i64 dm = dist2(e, mid), da = dist2(e, p0), db = dist2(e, p1);
   if (dm <= da && dm <= db) {

@@ -77,6 +77,8 @@ typedef struct {
   bg_mtt_bond *b;    /* owned */
   int nb, capb;
   bg_mtt_lbl lbl;
+  const char **notes; /* owned array: the readings said in warnings, for the .bg text */
+  int nnotes, capnotes;
 } bg_mtt_sys;
 
 /* The drawing's bonds, strokes, components and port labels, and what is

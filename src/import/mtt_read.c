@@ -171,18 +171,42 @@ static const char *arg_expr(build *b, const bg_mtt_comp *c, const char *a) {
 static const char *recip(build *b, const char *v) { return bg_ig_printf(b->r->g, "1/%s", v); }
 
 /* The arguments of a lin CR split at commas (at most 3). */
+/* MTT's label for a named component the label file does not list (its
+ * abg2lbl: the name is the parameter). */
+static const char *default_args(build *b, const bg_mtt_comp *c) {
+  static const char *const forms[][2] = {{"R", "flow"}, {"C", "effort"}, {"I", "flow"}, {"TF", "flow"},
+                                         {"GY", "flow"}, {"EMTF", "flow"}, {"AE", NULL}, {"AF", NULL}};
+  for (size_t i = 0; i < sizeof forms / sizeof *forms; i++)
+    if (!strcmp(c->type, forms[i][0]))
+      return forms[i][1] ? bg_ig_printf(b->r->g, "%s,%s", forms[i][1], c->name) : c->name;
+  return NULL;
+}
+
+/* The lin arguments of component c: its label's, else the drawing's third
+ * field (TYPE:NAME:ARGS), else MTT's default label. 1: no law (an unnamed
+ * component, or CR none): MTT's unit law; -1 after an error. */
 static int lin_args(build *b, const bg_mtt_comp *c, const char **w, int *nw) {
   const bg_mtt_row *l = label_of(b, c);
   *nw = 0;
-  if (!l || l->n < 2 || !strcmp(l->f[1], "none")) return 1; /* no CR: MTT's unit law */
-  if (strcmp(l->f[1], "lin")) {
-    bg_diag_error(b->r->dg, (bg_srcloc){l->line, 1, b->sr->s.lbl.file},
-                  "MTT model: %s has the constitutive relationship '%s'; bgdraw reads 'lin' "
-                  "(linear) only: write the law in the .bg model (bgdraw --import ... -o M.bg)",
-                  c->label, l->f[1]);
+  const char *s;
+  if (l && l->n >= 2) {
+    if (!strcmp(l->f[1], "none")) return 1;
+    if (strcmp(l->f[1], "lin")) {
+      bg_diag_error(b->r->dg, (bg_srcloc){l->line, 1, b->sr->s.lbl.file},
+                    "MTT model: %s has the constitutive relationship '%s'; bgdraw reads 'lin' "
+                    "(linear) only: write the law in the .bg model (bgdraw --import ... -o M.bg)",
+                    c->label, l->f[1]);
+      return -1;
+    }
+    s = l->n > 2 ? l->f[2] : "";
+  } else if (c->cr && strchr(c->cr, '=')) {
+    bg_diag_error(b->r->dg, at_comp(b, c),
+                  "MTT model: %s:%s: a law written in the drawing is not read; write it in the .bg "
+                  "model (bgdraw --import ... -o M.bg)", c->label, c->cr);
     return -1;
-  }
-  const char *s = l->n > 2 ? l->f[2] : "";
+  } else if (c->cr) s = c->cr;
+  else if (c->name && (s = default_args(b, c))) {
+  } else return 1;
   while (*s && *nw < 3) {
     const char *e = strchr(s, ',');
     size_t n = e ? (size_t)(e - s) : strlen(s);
@@ -208,11 +232,11 @@ static const char *oneport_value(build *b, const bg_mtt_comp *c, int *err) {
   const char *w[3];
   int n, u = lin_args(b, c, w, &n);
   if (u < 0) return *err = 1, NULL;
-  if (u > 0) return "1";
+  if (u > 0) return *err = -1, "1"; /* -1: no law, not an error */
   char t = c->type[0];
-  int known = !strcmp(w[0], "flow") || !strcmp(w[0], "effort") || (t != 'R' && !strcmp(w[0], "state"));
+  int known = n == 2 && (!strcmp(w[0], "flow") || !strcmp(w[0], "effort") || (t != 'R' && !strcmp(w[0], "state")));
   if (n != 2 || !known) {
-    *err = bad_lin(b, c, t == 'R' ? "flow,VALUE (e = VALUE f) or effort,VALUE (f = VALUE e)"
+    *err = -bad_lin(b, c, t == 'R' ? "flow,VALUE (e = VALUE f) or effort,VALUE (f = VALUE e)"
                                    : t == 'C' ? "effort,VALUE (q = VALUE e) or state,VALUE (e = VALUE q)"
                                               : "flow,VALUE (p = VALUE f) or state,VALUE (f = VALUE p)");
     return NULL;
@@ -717,10 +741,8 @@ static int component(build *b, int ci, int *junction_bonds) {
     int bond[2], end[2], n = bonds_at(b, ci, bond, end, 2), err = 0;
     if (need_bonds(b, c, n, 1)) return -1;
     const char *v = oneport_value(b, c, &err);
-    if (err) return -1;
-    const bg_mtt_row *l = label_of(b, c);
-    int node = add_node(b, c, comp_name(b, c), t, v,
-                        !l || l->n < 2 || !strcmp(l->f[1], "none") ? "no lin law in the label file: MTT's unit law" : NULL);
+    if (err > 0) return -1;
+    int node = add_node(b, c, comp_name(b, c), t, v, err < 0 ? "no law (unnamed, or CR none): MTT's unit law" : NULL);
     set_end(b, bond[0], end[0], node, NULL);
     b->comp_node[ci] = node;
     return 0;
@@ -776,11 +798,13 @@ static int bonds(build *b, const char *key) {
       continue;
     }
     for (int k = 0; k < 2; k++)
-      if (!bd->stroke[k] && (bd->half_e[k] || bd->half_f[k]))
-        bg_diag_warning(b->r->dg, (bg_srcloc){bd->line, 1, s->file},
-                        "MTT drawing: a half stroke (%s) at (%d, %d) is not read: bgdraw has no "
-                        "bicausal bonds, it assigns that bond's causality itself",
-                        bd->half_e[k] ? "effort side" : "flow side", bd->end[k].x, bd->end[k].y);
+      if (!bd->stroke[k] && (bd->half_e[k] || bd->half_f[k])) {
+        const char *msg = bg_ig_printf(b->r->g, "a half stroke (%s) at (%d, %d) is not read: bgdraw has no "
+                                       "bicausal bonds, it assigns that bond's causality itself",
+                                       bd->half_e[k] ? "effort side" : "flow side", bd->end[k].x, bd->end[k].y);
+        bg_diag_warning(b->r->dg, (bg_srcloc){bd->line, 1, s->file}, "MTT drawing: %s", msg);
+        bg_ig_add_note(b->r->g, M(b), 0, "%s_abg.fig:%d: %s", s->type, bd->line, msg);
+      }
     bg_ig_bond bond = {b->end_node[t], b->end_node[h], b->end_sfx[t], b->end_sfx[h], BG_IG_FREE, BG_IG_FREE,
                        bd->line, s->file, bd->stroke[0] ? BG_IG_HEAD : bd->stroke[1] ? BG_IG_TAIL : 0};
     if (flip[j])
@@ -859,6 +883,7 @@ static int build_sys(reader *r, sysrec *sr, const char *key, int root) {
       for (int k = 0; k < 2; k++)
         if (s->b[j].comp[k] == i) set_end(&b, j, k, node, NULL);
   }
+  for (int i = 0; i < s->nnotes; i++) bg_ig_add_note(r->g, M(&b), 0, "%s", s->notes[i]);
   for (int i = 0; i < s->nc; i++)
     if (component(&b, i, junction_bonds)) rc = -1;
   if (!rc) rc = bonds(&b, root ? NULL : key);
@@ -935,7 +960,7 @@ int bg_mtt_read(const char *path, const char *src, size_t len, bg_ig *g, bg_diag
   }
   for (int i = 0; i < r.nsys; i++) {
     sysrec *sr = r.sys[i];
-    free(sr->s.c), free(sr->s.b), free(sr->keys), free(sr->mis), free(sr->pos);
+    free(sr->s.c), free(sr->s.b), free(sr->s.notes), free(sr->keys), free(sr->mis), free(sr->pos);
     bg_mtt_rows_free(&sr->s.lbl.rows), bg_mtt_rows_free(&sr->s.lbl.aliases);
     free(sr);
   }
