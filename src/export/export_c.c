@@ -306,7 +306,7 @@ static void api_fns(const cx *X, bg_strbuf *c) {
   const bg_eqsys *s = X->s;
   const char *P = X->P, *U = X->U;
   int ode = bg_eqsys_is_ode(s);
-  char md[160] = "", half[80];
+  char md[160] = "", half[120];
   if (s->nev) snprintf(md, sizeof md, "const %s_modes *md, ", P);
   if (s->nev) snprintf(half, sizeof half, "%d", s->nslot); /* U_NWORK holds the event scratch too */
   else snprintf(half, sizeof half, "%s_NWORK / 2", U);
