@@ -10,7 +10,8 @@
 #   tests/data/switch_kinds.bg (every kind of switching instruction in one
 #   law, 18 root functions: 26 instants);
 # - C: tests/export/events_driver.c drives the export with CVODE's root
-#   finding on ev_roots, ev_event at each root, CVodeReInit;
+#   finding on ev_roots, ev_event at each root, CVodeReInit; and a DAE
+#   (tests/data/half_wave_dae.bg, a series resistor) with IDA;
 # - Python: the module's simulate() (solve_ivp events, restart per event);
 # - FMU: tests/export/fmu_import.c as an FMI master (event indicators,
 #   bisection of the step, event mode, fmi2NewDiscreteStates);
@@ -36,7 +37,7 @@ for mdl in bouncing_ball half_wave thermostat stick_slip switch_kinds; do
   mkdir -p "$tmp/c_$mdl"
   "$BGDRAW" tests/data/$mdl.bg -q --prefix ev -o "$tmp/c_$mdl/ev.c"; check "$mdl: -o ev.c" $?
   cc -std=c11 -Wall -Wextra -Werror -I"$tmp/c_$mdl" tests/export/events_driver.c "$tmp/c_$mdl/ev.c" -o "$tmp/c_$mdl/drv" \
-    -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm
+    -lsundials_ida -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm
   check "$mdl: the C export compiles with the CVODE driver (-Wall -Wextra -Werror)" $?
   "$tmp/c_$mdl/drv" "$tmp/$mdl.csv" "$tmp/c_$mdl.csv" "$tmp/c_$mdl.ev" 2>/dev/null; check "$mdl: C + CVODE runs" $?
   cmp_ev "$tmp/$mdl.csv" "$tmp/$mdl.json" "$tmp/c_$mdl.csv" "$tmp/c_$mdl.ev" 1e-6 2e-7 1e-6 "$mdl C + CVODE" $how
@@ -81,6 +82,24 @@ PY
   check "$mdl: FMU against bgdraw" $?
 done
 
+# a DAE: the rectifier with a series resistor, its C export with IDA (root
+# finding, the event function, IDACalcIC after each event until the modes
+# agree); Python's simulate() refuses it, the FMU (ODE only) too
+mdl=half_wave_dae
+"$BGDRAW" tests/data/$mdl.bg -q --simulate -o "$tmp/$mdl.csv" -o "$tmp/$mdl.json"; check "$mdl: bgdraw simulates" $?
+mkdir -p "$tmp/c_$mdl"
+"$BGDRAW" tests/data/$mdl.bg -q --prefix ev -o "$tmp/c_$mdl/ev.c" && grep -q '#define EV_IS_ODE 0' "$tmp/c_$mdl/ev.h"
+check "$mdl: -o ev.c, a DAE" $?
+cc -std=c11 -Wall -Wextra -Werror -I"$tmp/c_$mdl" tests/export/events_driver.c "$tmp/c_$mdl/ev.c" -o "$tmp/c_$mdl/drv" \
+  -lsundials_ida -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm
+check "$mdl: the C export compiles with the IDA driver" $?
+"$tmp/c_$mdl/drv" "$tmp/$mdl.csv" "$tmp/c_$mdl.csv" "$tmp/c_$mdl.ev" 2>/dev/null; check "$mdl: C + IDA runs" $?
+cmp_ev "$tmp/$mdl.csv" "$tmp/$mdl.json" "$tmp/c_$mdl.csv" "$tmp/c_$mdl.ev" 1e-6 2e-7 1e-6 "$mdl C + IDA"
+check "$mdl: C + IDA against bgdraw" $?
+"$BGDRAW" tests/data/$mdl.bg -q -o "$tmp/${mdl}_m.py"
+/usr/bin/python3 -c "import sys; sys.path.insert(0, sys.argv[1]); import ${mdl}_m as m; m.simulate()" "$tmp" 2>"$tmp/err"
+[ $? -ne 0 ] && grep -q "NotImplementedError: switching conditions in a DAE" "$tmp/err"
+check "$mdl: Python's simulate() refuses a switching DAE, saying what to use" $?
 # the header says it: the modes, the roots, the event function
 h="$tmp/c_bouncing_ball/ev.h"
 grep -q '#define EV_NROOT 2' "$h" && grep -q '#define EV_NMODE 2' "$h" && grep -q 'int ev_event(' "$h" &&

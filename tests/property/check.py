@@ -524,7 +524,7 @@ def _export_c(res, bgdraw, m, workdir, seed, an, rows):
     elif "step(" in m.text() or "table(t" in m.text():
         why = "input breakpoints (the drivers integrate straight through)"
     elif switching and an["form"] != "ode":
-        why = "switching conditions in a DAE (events_driver.c drives ODEs)"
+        why = "switching conditions in a DAE (a start on a switch needs bgdraw's limit from the right, not exported)"
     if why:
         res["export_c"] = ("skip", why)
         return
@@ -564,7 +564,7 @@ def _export_c_events(res, bgdraw, workdir, rows):
     w = lambda name: os.path.join(workdir, name)
     steps = [[bgdraw, w("m.bg"), "-q", "--prefix", "ev", "-o", w("ev.c")],
              ["cc", "-std=c11", "-O1", "-w", "-I" + workdir, os.path.join(HERE, "..", "export", "events_driver.c"),
-              w("ev.c"), "-o", w("evdriver"), "-lsundials_cvode", "-lsundials_nvecserial",
+              w("ev.c"), "-o", w("evdriver"), "-lsundials_ida", "-lsundials_cvode", "-lsundials_nvecserial",
               "-lsundials_sunmatrixdense", "-lsundials_sunlinsoldense", "-lm"],
              [w("evdriver"), w("m.csv"), w("d_ev.csv"), w("d_ev.txt")]]
     if _run_steps(res, steps):
