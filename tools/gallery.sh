@@ -22,16 +22,34 @@ for page in "${pages[@]}"; do
   rm -rf "${out:?}/$page"
   mkdir -p "$out/$page"
   python3 "$root/tests/doc_snippets.py" "$root/docs/$page.md" "$out"
-  # the gallery's models are files of examples/gallery, used where they are
+  # the page's models are written from its blocks (tests/*.sh check they are the files
+  # of examples/PAGE), then its commands run where they are
   for script in "$out"/run-"$page"*.sh; do
     [ -f "$script" ] || continue
     echo "gallery.sh: running the commands of docs/$page.md (${script##*/})" >&2
-    PATH="$out/bin:$PATH" BGDRAW_GALLERY_ROOT="$root" bash "$script" >"${script%.sh}.log"
+    PATH="$out/bin:$PATH" bash "$script" >"${script%.sh}.log"
   done
   cp "$root/docs/$page.md" "$out/$page.md"
   if command -v pandoc >/dev/null; then
-    pandoc --standalone --metadata title="bgdraw $page" -f gfm -t html5 \
+    pandoc --standalone --metadata pagetitle="bgdraw $page" -f gfm -t html5 \
       "$out/$page.md" -o "$out/$page.html"
   fi
 done
+# README's picture of a gallery page, on request (GALLERY_SCREENSHOT=1, with Debian's
+# chromium): one entry, the thermostat, as the HTML shows it; it is
+# docs/images/gallery_entry.png
+if [ "${GALLERY_SCREENSHOT:-0}" = 1 ] && [ -f "$out/gallery.html" ]; then
+  python3 -c '
+import sys
+out = sys.argv[1]
+page = open(out + "/gallery.html", encoding="utf-8").read()
+start = page.index("<h2 id=\"thermostat\">")
+end = page.index("<h2", start + 1)
+with open(out + "/gallery_entry.html", "w", encoding="utf-8") as f:
+    f.write(page[:page.index("<body>") + 6] + page[start:end] + "</body></html>\n")
+' "$out"
+  timeout 300 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars \
+    --virtual-time-budget=5000 --window-size=900,2300 --screenshot="$out/gallery_entry.png" \
+    "file://$out/gallery_entry.html" >/dev/null 2>&1 || echo "gallery.sh: no screenshot" >&2
+fi
 echo "gallery.sh: wrote $out" >&2

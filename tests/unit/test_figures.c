@@ -542,11 +542,73 @@ static void test_long_chain(void) {
   bg_sb_free(&src);
 }
 
+/* ---------------------------------------------------------------- the tutorial and the gallery */
+/* The models of docs/tutorial.md and docs/gallery.md (examples/tutorial,
+ * examples/gallery: issue 38), each in every style and layer set, their
+ * totals against limits_pages, as measured when they were added: no fault
+ * of any kind (every column but the counts of bonds, strokes, labels,
+ * numbers, tags, frames and texts is 0). */
+static const fc_stats limits_pages[3][2] = {
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
+};
+
+static int list_page_models(const char *folder, char **names, int cap) {
+  char path[512];
+  snprintf(path, sizeof path, "%s/examples/%s", BG_SOURCE_DIR, folder);
+  DIR *dir = opendir(path);
+  if (!dir) return 0;
+  int n = 0;
+  for (struct dirent *e; (e = readdir(dir)) && n < cap;) {
+    size_t len = strlen(e->d_name);
+    if (len > 3 && !strcmp(e->d_name + len - 3, ".bg")) {
+      char name[512];
+      snprintf(name, sizeof name, "%s/%.*s", folder, (int)(len - 3), e->d_name);
+      names[n++] = strdup(name);
+    }
+  }
+  closedir(dir);
+  return n;
+}
+
+static void test_pages(void) {
+  fc_stats tot[3][2] = {{{0}}};
+  const char *folders[] = {"tutorial", "gallery"};
+  int models = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
+  for (int fi = 0; fi < 2; fi++) {
+    char *names[64];
+    int n = list_page_models(folders[fi], names, 64);
+    for (int i = 0; i < n; i++) {
+      fx f;
+      OK(fx_load(&f, names[i], -1, NULL, 0, NULL, NULL) == 0);
+      measure_model(&f, names[i], tot, verbose);
+      fx_free(&f);
+      free(names[i]);
+      models++;
+    }
+  }
+  OK(models >= 14);
+  for (int si = 0; si < 3; si++)
+    for (int k = 0; k < 2; k++) {
+      char what[64];
+      snprintf(what, sizeof what, "tutorial+gallery %s %s", styles[si], show_names[k]);
+      print_row(what, &tot[si][k]);
+      const int *got = (const int *)&tot[si][k], *lim = (const int *)&limits_pages[si][k];
+      for (size_t c = 0; c < sizeof(fc_stats) / sizeof(int); c++)
+        BG_T_REPORT(got[c] <= lim[c], "%s: column %zu: %d > limit %d", what, c, got[c], lim[c]);
+    }
+}
+
 int main(void) {
   test_checker();
   test_checker_31();
   test_long_chain();
   test_examples();
+  test_pages();
   test_generated();
   test_lagrange();
   test_print_conventions();
