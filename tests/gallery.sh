@@ -22,22 +22,11 @@ done
 (cd "$d" && "$BGDRAW" gear_merged.bg --check) >"$d/gear_merged.check" 2>&1
 
 python3 - "$d" <<'EOF'
-import cmath, csv, json, math, sys
-d = sys.argv[1]
-bad = 0
-def table(name):
-    with open(f"{d}/{name}") as f:
-        r = list(csv.reader(f))
-    return r[0], [[float(x) if x not in ("", "ok") else x for x in row] for row in r[1:]]
-def rows(name):
-    return table(name)[1]
-def close(what, got, want, tol):
-    global bad
-    ok = abs(got - want) <= tol
-    print(("ok  " if ok else "FAIL"), f"{what}: {got:.9g} (hand: {want:.9g})")
-    bad += not ok
-def worst(name, col, f):
-    return max(abs(r[col] - f(r[0])) for r in rows(name))
+import cmath, json, math, sys
+sys.path.insert(0, "tests/lib")
+import page_numbers as pn
+from page_numbers import close, rows, table, worst
+d = pn.D = sys.argv[1]
 def linear(name):
     return json.load(open(f"{d}/{name}"))
 
@@ -124,7 +113,7 @@ for r in runs:
     z = b / (2 * math.sqrt(100))
     close(f"sweep b = {b:g}: peak", r[head.index("K.q:max")], 0.01 * (1 + math.exp(-z * math.pi / math.sqrt(1 - z * z))), 1e-5)
     close(f"sweep b = {b:g}: time of the peak", r[head.index("K.q:tmax")], math.pi / (10 * math.sqrt(1 - z * z)), 1e-3)
-sys.exit(1 if bad else 0)
+sys.exit(1 if pn.failed else 0)
 EOF
 check "the gallery's numbers (above)" $?
 

@@ -37,20 +37,11 @@ done
 
 # the numbers the text states, against their hand-derived values
 python3 - "$d" <<'EOF'
-import csv, math, sys
-d = sys.argv[1]
-bad = 0
-def rows(name):
-    with open(f"{d}/{name}") as f:
-        r = list(csv.reader(f))
-    return [[float(x) for x in row] for row in r[1:]]
-def at(name, t):
-    return next(r for r in rows(name) if abs(r[0] - t) < 1e-9)
-def close(what, got, want, tol):
-    global bad
-    ok = abs(got - want) <= tol
-    print(("ok  " if ok else "FAIL"), f"{what}: {got:.6g} (hand: {want:.6g})")
-    bad += not ok
+import math, sys
+sys.path.insert(0, "tests/lib")
+import page_numbers as pn
+from page_numbers import at, close, rows
+pn.D = sys.argv[1]
 def matmul(a, b):
     return [[sum(a[i][k] * b[k][j] for k in range(len(b))) for j in range(len(b[0]))] for i in range(len(a))]
 def expm(a):
@@ -97,7 +88,7 @@ close("wider outlet: h(5000)", at("tank_wide.csv", 5000)[1], 0.5 * (1 - math.exp
 M = [[-1, 1, 0], [1, -2, 1], [0, 1, -2]]
 worst = max(abs(r[i + 1] - cascade(M, [3, 2, 1], r[0])[i]) for r in rows("three_tanks.csv") for i in range(3))
 close("three tanks: largest deviation from the exact levels", worst, 0, 2e-4)
-sys.exit(1 if bad else 0)
+sys.exit(1 if pn.failed else 0)
 EOF
 check "the tutorial's numbers (above)" $?
 

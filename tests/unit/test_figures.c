@@ -214,6 +214,20 @@ static void print_row(const char *what, const fc_stats *t) {
 static const char *const header =
     "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl";
 
+/* Each style's and layer set's totals printed and held to their limits,
+ * column by column. */
+static void check_limits(const char *set, fc_stats tot[3][2], const fc_stats lim[3][2]) {
+  for (int si = 0; si < 3; si++)
+    for (int k = 0; k < 2; k++) {
+      char what[64];
+      snprintf(what, sizeof what, "%s %s %s", set, styles[si], show_names[k]);
+      print_row(what, &tot[si][k]);
+      const int *got = (const int *)&tot[si][k], *l = (const int *)&lim[si][k];
+      for (size_t c = 0; c < sizeof(fc_stats) / sizeof(int); c++)
+        BG_T_REPORT(got[c] <= l[c], "%s: column %zu: %d > limit %d", what, c, got[c], l[c]);
+    }
+}
+
 /* One model in every style and layer set, added to tot; the arrangement
  * of each style compared with the default style's (same layers). */
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
@@ -317,15 +331,7 @@ static void test_generated(void) {
     bg_sb_free(&src);
   }
   printf("%-34s %s\n", "", header);
-  for (int si = 0; si < 3; si++)
-    for (int k = 0; k < 2; k++) {
-      char what[64];
-      snprintf(what, sizeof what, "generated %s %s", styles[si], show_names[k]);
-      print_row(what, &tot[si][k]);
-      const int *got = (const int *)&tot[si][k], *lim = (const int *)&limits_generated[si][k];
-      for (size_t c = 0; c < sizeof(fc_stats) / sizeof(int); c++)
-        BG_T_REPORT(got[c] <= lim[c], "%s: column %zu: %d > limit %d", what, c, got[c], lim[c]);
-    }
+  check_limits("generated", tot, limits_generated);
 }
 
 /* ---------------------------------------------------------------- conventions */
@@ -549,12 +555,12 @@ static void test_long_chain(void) {
  * of any kind (every column but the counts of bonds, strokes, labels,
  * numbers, tags, frames and texts is 0). */
 static const fc_stats limits_pages[3][2] = {
-    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
-     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
-    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
-     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
-    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0},
-     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0}},
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0, 0}},
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0, 0}},
+    {{87, 0, 87, 0, 93, 0, 87, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 197, 0, 0, 0},
+     {87, 0, 87, 0, 144, 0, 87, 0, 51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 398, 0, 0, 0}},
 };
 
 static int list_page_models(const char *folder, char **names, int cap) {
@@ -592,15 +598,7 @@ static void test_pages(void) {
     }
   }
   OK(models >= 14);
-  for (int si = 0; si < 3; si++)
-    for (int k = 0; k < 2; k++) {
-      char what[64];
-      snprintf(what, sizeof what, "tutorial+gallery %s %s", styles[si], show_names[k]);
-      print_row(what, &tot[si][k]);
-      const int *got = (const int *)&tot[si][k], *lim = (const int *)&limits_pages[si][k];
-      for (size_t c = 0; c < sizeof(fc_stats) / sizeof(int); c++)
-        BG_T_REPORT(got[c] <= lim[c], "%s: column %zu: %d > limit %d", what, c, got[c], lim[c]);
-    }
+  check_limits("tutorial+gallery", tot, limits_pages);
 }
 
 int main(void) {
