@@ -39,6 +39,7 @@ typedef struct grid {
   int *val, cap, used;
   /* routes: per edge the corners (grid cells), bent[e] = count, -1: slanted */
   int *bent, (*corner)[4];
+  double *inst_cx, *inst_cy; /* per instance: the centre of its hubs (NULL: no instances) */
 } grid;
 
 static unsigned long long cell_key(int x, int y) {
@@ -219,15 +220,70 @@ static int find(int *up, int v) {
   return v;
 }
 
+/* Per instance (issue 31): the columns its hubs (its own and its
+ * instances') take, lo..hi, and their component (-1: none). */
+static void instance_columns(const grid *g, const int *h, int nh, int *up, int *ilo, int *ihi, int *icomp) {
+  const bg_model *m = g->d->m;
+  for (int k = 0; k < m->ninst; k++) ilo[k] = 1 << 30, ihi[k] = -1, icomp[k] = -1;
+  for (int i = 0; i < nh; i++) {
+    int v = h[i];
+    if (v >= m->nelem) continue;
+    for (int k = m->elem_inst[v]; k >= 0; k = m->inst_parent[k]) {
+      ilo[k] = g->col[v] < ilo[k] ? g->col[v] : ilo[k];
+      ihi[k] = g->col[v] > ihi[k] ? g->col[v] : ihi[k];
+      icomp[k] = find(up, v);
+    }
+  }
+}
+
+/* Where the bands of component c (ncol columns, at most wrap a band) start:
+ * as even as the columns allow (a 25-section ladder folded 16 + 16 + 16 + 2,
+ * leaving one section alone on its last row; issue 31); with instance
+ * frames, each fold at the column boundary near the even place (at least
+ * half a band on) that cuts the fewest instances, so a frame stays whole in
+ * one band where its columns fit one (a fold through an instance put its
+ * nodes on two bands, its frame round both, across its siblings). Returns
+ * the number of bands; start[0] = 0. */
+static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo, const int *ihi, const int *icomp,
+                       int *start) {
+  int nb = 0, *cut = NULL;
+  if (g->d->m->ninst) { /* cut[b]: instances with columns on both sides of boundary b (before column b) */
+    cut = bg_xcalloc((size_t)ncol + 2, sizeof *cut);
+    for (int k = 0; k < g->d->m->ninst; k++)
+      if (icomp[k] == c && ilo[k] < ihi[k]) cut[ilo[k] + 1]++, cut[ihi[k] + 1]--;
+    for (int b = 1; b <= ncol; b++) cut[b] += cut[b - 1];
+  }
+  start[nb++] = 0;
+  for (int s = 0; ncol - s > wrap;) {
+    int left = (ncol - s + wrap - 1) / wrap, ideal = (ncol - s + left - 1) / left, best = s + ideal;
+    if (cut) {
+      long best_cost = -1;
+      for (int b = s + (ideal + 1) / 2; b <= s + wrap && b < ncol; b++) {
+        long cost = (long)cut[b] * 4 * ncol + abs(b - (s + ideal));
+        if (best_cost < 0 || cost < best_cost) best_cost = cost, best = b;
+      }
+    }
+    start[nb++] = s = best;
+  }
+  free(cut);
+  return nb;
+}
+
 /* Each component's hubs snake into bands of at most `wrap` columns when it is
  * wider than that (a long chain becomes rows), and the components are stacked
- * top to bottom in the order of their first node. */
+ * top to bottom in the order of their first node. A band runs back from
+ * under the end of the band before it. */
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
   for (int v = 0; v < n; v++) up[v] = v;
   for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
   int *lo = bg_xcalloc((size_t)n + 1, sizeof(int)), *hi = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *ncol = bg_xcalloc((size_t)n + 1, sizeof(int)), *base = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *boff = bg_xcalloc((size_t)n + 1, sizeof(int)), *nband = bg_xcalloc((size_t)n + 1, sizeof(int));
+  /* bands: at most one per 1 + ncol / 8 columns of a component, ncol <= its nodes */
+  int *start = bg_xcalloc(2 * (size_t)n + 2, sizeof(int)), *bx = bg_xcalloc(2 * (size_t)n + 2, sizeof(int));
+  int ni = g->d->m->ninst, *ilo = bg_xcalloc((size_t)ni + 1, sizeof(int)), *ihi = bg_xcalloc((size_t)ni + 1, sizeof(int));
+  int *icomp = bg_xcalloc((size_t)ni + 1, sizeof(int));
   for (int v = 0; v < n; v++) lo[v] = 1 << 30, hi[v] = -(1 << 30);
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v);
@@ -235,31 +291,55 @@ static void stack_components(grid *g, const int *h, int nh) {
     hi[c] = g->row[v] > hi[c] ? g->row[v] : hi[c];
     ncol[c] = g->col[v] + 1 > ncol[c] ? g->col[v] + 1 : ncol[c];
   }
-  int next = 0;
+  if (ni) instance_columns(g, h, nh, up, ilo, ihi, icomp);
+  /* between bands a free row, and with frames one more per level of
+   * nesting, for the frames' padding and labels (18 pt a level; a free
+   * row is a row gap, 21 pt and more) */
+  int depth = 0;
+  for (int k = 0; k < ni; k++) {
+    int dk = 0;
+    for (int q = k; q >= 0; q = g->d->m->inst_parent[q]) dk++;
+    depth = dk > depth ? dk : depth;
+  }
+  int sep = 1 + depth;
+  int next = 0, nstart = 0;
   for (int v = 0; v < n; v++) {
     int c = find(up, v);
     if (lo[c] > hi[c] || base[c] < 0) continue;
     int span = hi[c] - lo[c] + 1, wrap = (int)ceil(sqrt((double)ncol[c] * (2 * span + 2)));
     if (wrap < 16) wrap = 16;
-    int bands = (ncol[c] + wrap - 1) / wrap;
-    /* bands as even as the columns allow: a 25-section ladder folded
-     * 16 + 16 + 16 + 2, leaving one section alone on its last row (issue 31).
-     * Not yet with instance frames: the fold does not keep a frame whole, and
-     * even bands cut the nested test model's frames more (2 -> 13 crossings) */
-    if (bands > 1 && !g->d->m->ninst) wrap = (ncol[c] + bands - 1) / bands;
+    boff[c] = nstart;
+    nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, start + nstart);
+    /* each band's first column under the last one of the band before, the
+     * bands running right and left in turn; then all moved right of 0 */
+    int x = 0, minx = 0;
+    for (int b = 0; b < nband[c]; b++) {
+      int w = (b + 1 < nband[c] ? start[nstart + b + 1] : ncol[c]) - start[nstart + b];
+      bx[nstart + b] = x;
+      x += (b % 2 ? -1 : 1) * (w - 1);
+      minx = x < minx ? x : minx;
+    }
+    for (int b = 0; b < nband[c]; b++) bx[nstart + b] -= minx;
+    nstart += nband[c];
     base[c] = -1 - next; /* marks the component done; the row offset */
-    next += bands * (span + 1);
-    ncol[c] = wrap;
+    next += nband[c] * (span + sep);
   }
   for (int i = 0; i < nh; i++) {
-    int v = h[i], c = find(up, v), wrap = ncol[c], band = g->col[v] / wrap, k = g->col[v] % wrap;
-    int span = hi[c] - lo[c] + 1;
-    g->gx[v] = 2 * (band % 2 ? wrap - 1 - k : k);
-    g->gy[v] = 2 * ((-1 - base[c]) + band * (span + 1) + g->row[v] - lo[c]);
+    int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;
+    const int *st = start + boff[c];
+    while (a < z) { /* the band holding v's column */
+      int mid = (a + z + 1) / 2;
+      if (st[mid] <= g->col[v]) a = mid;
+      else z = mid - 1;
+    }
+    int k = g->col[v] - st[a], span = hi[c] - lo[c] + 1;
+    g->gx[v] = 2 * (bx[boff[c] + a] + (a % 2 ? -k : k));
+    g->gy[v] = 2 * ((-1 - base[c]) + a * (span + sep) + g->row[v] - lo[c]);
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
-  free(up), free(lo), free(hi), free(ncol), free(base);
+  free(up), free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
+  free(ilo), free(ihi), free(icomp);
 }
 
 /* ---------------------------------------------------------------- routing bonds between hubs */
@@ -383,6 +463,16 @@ static double side_cost(const grid *g, int v, int w, int k) {
   double ang = atan2(d->ny[w] - d->ny[v], d->nx[w] - d->nx[v]);
   double dif = fabs(remainder(ang - atan2(side_dy[k], side_dx[k]), 2 * BG_PI));
   int source = w < d->m->nelem && bg_elem_is_source(d->m->elem_kind[w]);
+  const bg_model *m = d->m;
+  if (g->inst_cx && v < m->nelem && w < m->nelem && m->elem_inst[v] >= 0 && m->elem_inst[w] != m->elem_inst[v]) {
+    /* an element outside the hub's instance (on a port's junction) goes
+     * out of its frame: away from the instance's hubs (issue 31: R : load
+     * sat inside the frames of the last Inner it hangs from) */
+    int i = m->elem_inst[v];
+    double ax = g->gx[v] - g->inst_cx[i], ay = g->gy[v] - g->inst_cy[i], al = hypot(ax, ay);
+    double c = al > 1e-9 ? (ax * side_dx[k] + ay * side_dy[k]) / al : 0;
+    dif += 4 * (1 - c);
+  }
   return dif - (source && k == 2 ? 1.0 : 0);
 }
 
@@ -437,7 +527,22 @@ static void near_cell(grid *g, int x, int y, int sides, int *ox, int *oy) {
     }
 }
 
+/* Per instance: the centre of its own hubs on the grid (side_cost). */
+static void instance_centres(grid *g) {
+  const bg_model *m = g->d->m;
+  if (!m->ninst) return;
+  g->inst_cx = bg_xcalloc((size_t)m->ninst, sizeof(double)), g->inst_cy = bg_xcalloc((size_t)m->ninst, sizeof(double));
+  int *cnt = bg_xcalloc((size_t)m->ninst, sizeof(int));
+  for (int v = 0; v < g->n && v < m->nelem; v++)
+    if (g->hub[v] && g->placed[v] && m->elem_inst[v] >= 0)
+      g->inst_cx[m->elem_inst[v]] += g->gx[v], g->inst_cy[m->elem_inst[v]] += g->gy[v], cnt[m->elem_inst[v]]++;
+  for (int i = 0; i < m->ninst; i++)
+    if (cnt[i]) g->inst_cx[i] /= cnt[i], g->inst_cy[i] /= cnt[i];
+  free(cnt);
+}
+
 static void place_leaves(grid *g) {
+  instance_centres(g);
   int *leaf = bg_xcalloc((size_t)g->n + 1, sizeof(int));
   for (int v = 0; v < g->n; v++) {
     if (!g->hub[v] || !g->placed[v]) continue;
@@ -594,7 +699,7 @@ static void grid_free(grid *g) {
   free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg);
   free(g->gx), free(g->gy), free(g->col), free(g->row);
   free(g->placed), free(g->hub), free(g->sides), free(g->bent), free(g->corner);
-  free(g->key), free(g->val);
+  free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy);
 }
 
 void bg_grid_place(bg_diagram_layout *d) {

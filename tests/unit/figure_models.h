@@ -153,4 +153,23 @@ static void fm_nested(bg_strbuf *b) {
                 "Se U = 1\nOuter O1\nOuter O2\nR load = 1\n"
                 "bond U -> O1.p\nbond O1.n -> O2.p\nbond O2.n -> load\n");
 }
+/* Held out from the frame work (issue 31, kept whole when a long chain
+ * folds): n stages in a row, each three cells in series with a branch
+ * instance on a 0-junction between its second and third cell, a load on
+ * the last stage's port. Two levels, frames side by side and one hanging
+ * below its junction. */
+static void fm_stages(bg_strbuf *b, int n) {
+  bg_sb_puts(b, "model stages\n"
+                "submodel Cell\n  port p, n\n  1 j\n  R r = 1\n  0 k\n  I l = 1\n"
+                "  bond p -> j\n  bond j -> r\n  bond j -> k\n  bond k -> l\n  bond k -> n\nend\n"
+                "submodel Shunt\n  port p\n  1 s\n  C c = 1\n  R g = 2\n  bond p -> s\n  bond s -> c\n  bond s -> g\nend\n"
+                "submodel Stage\n  port p, n\n  Cell A\n  Cell B\n  Cell D\n  Shunt H\n  0 m\n"
+                "  bond p -> A.p\n  bond A.n -> B.p\n  bond B.n -> m\n  bond m -> H.p\n  bond m -> D.p\n  bond D.n -> n\nend\n"
+                "Se U = 1\n");
+  for (int i = 1; i <= n; i++) bg_sb_printf(b, "Stage T%d\n", i);
+  bg_sb_puts(b, "R load = 1\nbond U -> T1.p\n");
+  for (int i = 1; i < n; i++) bg_sb_printf(b, "bond T%d.n -> T%d.p\n", i, i + 1);
+  bg_sb_printf(b, "bond T%d.n -> load\n", n);
+}
+
 #endif

@@ -195,12 +195,12 @@ static const fc_stats limits[3][2] = {
  * signals join species to reactions across the ring. docs/drawing.md has
  * the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1255, 36, 1255, 7, 1269, 1, 1255, 0, 0, 0, 0, 0, 4, 11, 3, 59, 0, 0, 0, 0, 14, 2, 9, 2506, 0, 0, 0},
-     {1255, 36, 1255, 7, 2088, 2, 1255, 0, 819, 4, 0, 6, 2, 11, 0, 59, 2, 0, 0, 0, 14, 2, 7, 3842, 0, 0, 87}},
-    {{1255, 36, 1255, 4, 1269, 1, 1255, 0, 0, 0, 0, 0, 3, 11, 0, 63, 1, 0, 0, 0, 14, 2, 9, 2506, 0, 0, 0},
-     {1255, 36, 1255, 4, 2088, 2, 1255, 0, 819, 1, 0, 5, 2, 11, 0, 62, 1, 0, 0, 0, 14, 2, 7, 3842, 0, 0, 111}},
-    {{1255, 36, 1255, 7, 1269, 2, 1255, 0, 0, 0, 0, 0, 4, 10, 4, 54, 1, 0, 0, 1, 14, 2, 9, 2506, 0, 0, 0},
-     {1255, 36, 1255, 8, 2088, 2, 1255, 0, 819, 0, 0, 12, 2, 11, 0, 57, 1, 0, 0, 0, 14, 2, 7, 3842, 0, 0, 113}},
+    {{1255, 36, 1255, 7, 1269, 0, 1255, 0, 0, 0, 0, 0, 4, 11, 3, 59, 0, 0, 0, 0, 14, 0, 0, 2506, 0, 0, 0},
+     {1255, 36, 1255, 7, 2088, 0, 1255, 0, 819, 4, 0, 6, 2, 11, 0, 59, 2, 0, 0, 0, 14, 0, 0, 3842, 0, 0, 87}},
+    {{1255, 36, 1255, 4, 1269, 0, 1255, 0, 0, 0, 0, 0, 3, 11, 0, 63, 1, 0, 0, 0, 14, 0, 0, 2506, 0, 0, 0},
+     {1255, 36, 1255, 4, 2088, 0, 1255, 0, 819, 1, 0, 5, 2, 11, 0, 62, 1, 0, 0, 0, 14, 0, 0, 3842, 0, 0, 111}},
+    {{1255, 36, 1255, 7, 1269, 1, 1255, 0, 0, 0, 0, 0, 4, 10, 4, 54, 1, 0, 0, 1, 14, 0, 0, 2506, 0, 0, 0},
+     {1255, 36, 1255, 8, 2088, 0, 1255, 0, 819, 0, 0, 12, 2, 11, 0, 57, 1, 0, 0, 0, 14, 0, 0, 3842, 0, 0, 113}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
@@ -307,6 +307,7 @@ static const gen_model generated[] = {
     {"reactions12", fm_reactions, 12}, {"nested3", make_nested, 0},
     /* held out: added with the signal router, not used to tune it */
     {"reactions20", make_reactions, 20}, {"modladder9", fm_modladder, 9},
+
 };
 
 static void test_generated(void) {
@@ -332,6 +333,36 @@ static void test_generated(void) {
   }
   printf("%-34s %s\n", "", header);
   check_limits("generated", tot, limits_generated);
+}
+
+/* A held-out model with frames (fm_stages, not used to tune the fold
+ * that keeps frames whole): frames crossing and foreign elements with the
+ * default layers in each style, held to what they are today. Not at 0 yet:
+ * a Shunt instance hanging from a junction between two Cells takes the
+ * row beside the third Cell, so their frames overlap, and its one-ports
+ * lie in the Cell's frame (docs/drawing.md, "frames kept whole"). */
+static void test_frames_held_out(void) {
+  static const int max_cross[3] = {4, 4, 3}, max_foreign[3] = {3, 3, 3};
+  bg_strbuf src = {0};
+  fm_stages(&src, 4);
+  fx f;
+  int rc = fm_load(&f, "stages4", bg_sb_str(&src));
+  BG_T_REPORT(rc == 0, "stages4 compiles");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
+    bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+    OK(d != NULL);
+    if (!d) continue;
+    fc_stats st = {0};
+    fc_count(bg_diagram_scene(d), &st);
+    BG_T_REPORT(st.frames == 20, "stages4 %s: 20 frames (%d)", styles[si], st.frames);
+    BG_T_REPORT(st.frame_cross <= max_cross[si] && st.foreign <= max_foreign[si],
+                "stages4 %s: frames crossing %d (<= %d), foreign %d (<= %d)", styles[si], st.frame_cross,
+                max_cross[si], st.foreign, max_foreign[si]);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+  bg_sb_free(&src);
 }
 
 /* ---------------------------------------------------------------- conventions */
@@ -608,6 +639,7 @@ int main(void) {
   test_examples();
   test_pages();
   test_generated();
+  test_frames_held_out();
   test_lagrange();
   test_print_conventions();
   test_layer_styles();
