@@ -170,9 +170,15 @@ static void say_tloop(const bg_analysis *a, int t, bg_strbuf *sb) {
     bg_sb_puts(sb, REMEDIES);
 }
 
-static int structurally_singular(const bg_index_facts *f) {
+/* The index reduction that was tried and failed, with its reason, or NULL. */
+static const bg_indexred *failed_reduction(const bg_index_facts *f) {
   const bg_indexred *ir = f ? f->reduction : NULL;
-  return ir && ir->status < 0 && ir->message && strstr(ir->message, "structurally singular");
+  return ir && ir->status < 0 && ir->message ? ir : NULL;
+}
+
+static int structurally_singular(const bg_index_facts *f) {
+  const bg_indexred *ir = failed_reduction(f);
+  return ir && strstr(ir->message, "structurally singular");
 }
 
 /* Refusals an index reduction can lift: a class 5 loop, an algebraic loop of
@@ -202,8 +208,8 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const
   else if (numeric_above_1(a, f))
     say_numeric(a, f, &sb);
   if (!sb.len) return NULL;
-  const bg_indexred *ir = f ? f->reduction : NULL;
-  if (ir && ir->status < 0 && ir->message && bg_simulate_index_problem(a, f)) {
+  const bg_indexred *ir = failed_reduction(f);
+  if (ir && bg_simulate_index_problem(a, f)) {
     const char *why = ir->message, *pre = "index reduction failed: ";
     if (!strncmp(why, pre, strlen(pre))) why += strlen(pre);
     bg_sb_printf(&sb, " Index reduction (Pantelides, dummy derivatives) was tried and failed: %s.", why);
