@@ -5,8 +5,10 @@
 #
 #   bash tests/fuzz/campaign.sh [SECONDS_PER_TARGET] [TARGET...]   (from the project root)
 #
-# TARGET: parse, equations, simulate, render, linear (default: all five), 600 s each.
-# libFuzzer runs in fork mode (-fork=1 -ignore_timeouts=1 -ignore_ooms=1): a
+# TARGET: parse, equations, simulate, render, linear, import (default: all six),
+# 600 s each. FORKS (default 1) worker processes per target: FORKS=2 uses both
+# cores of a quiet machine.
+# libFuzzer runs in fork mode (-fork=FORKS -ignore_timeouts=1 -ignore_ooms=1): a
 # slow or memory-hungry input is saved and the campaign goes on, so one run
 # collects every timeout instead of stopping at the first.
 # Builds build-fuzz/ (clang, -DCMAKE_BUILD_TYPE=Fuzz -DBG_LIBFUZZER=ON), keeps a
@@ -20,7 +22,9 @@ set -u
 secs=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(parse equations simulate render linear)
+[ ${#targets[@]} -eq 0 ] && targets=(parse equations simulate render linear import)
+forks=${FORKS:-1}
+total=0
 root=$PWD
 work=${BG_FUZZ_WORK:-/tmp/bgdraw-fuzz}
 build=${BG_FUZZ_BUILD:-$root/build-fuzz}
@@ -40,7 +44,7 @@ for t in "${targets[@]}"; do
   nice -n 19 "$build/fuzz_$t" "$dir/corpus" "$root/examples" "$root/tests/bad" \
     "$root/tests/fuzz/corpus" "$root/tests/data" -dict="$root/tests/fuzz/bg.dict" -max_len=8192 \
     -timeout=10 -rss_limit_mb=2048 -max_total_time="$secs" -print_final_stats=1 \
-    -fork=1 -ignore_timeouts=1 -ignore_ooms=1 -ignore_crashes=0 \
+    -fork="$forks" -ignore_timeouts=1 -ignore_ooms=1 -ignore_crashes=0 \
     -artifact_prefix="$dir/found/" -close_fd_mask=3 >"$dir/log" 2>&1
   # fork mode: the parent's last status line "#N: cov: ... exec/s: S oom/timeout/crash: a/b/c"
   last=$(grep -E '^#[0-9]+: cov:' "$dir/log" | tail -1)
@@ -49,4 +53,6 @@ for t in "${targets[@]}"; do
   otc=$(echo "$last" | sed -n 's/.*oom\/timeout\/crash: *\([0-9\/]*\).*/\1/p')
   echo "fuzz_$t: ${execs:-?} executions in ${secs} s (${speed:-?}/s), corpus $(ls "$dir/corpus" | wc -l)," \
        "oom/timeout/crash ${otc:-?}, findings $(ls "$dir/found" | wc -l) (in $dir/found)"
+  total=$((total + ${execs:-0}))
 done
+echo "all targets: $total executions"
