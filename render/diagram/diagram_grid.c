@@ -4,9 +4,11 @@
  * draws the bonds horizontal and vertical, the way textbooks draw bond graphs.
  *
  * Hubs (nodes with two or more bonds: junctions, two-ports) get a column from
- * their dot rank and a row that continues their parent's (the hub before them
- * nearest in dot's order), so a chain runs along one row and a branch opens a
- * row below or above. Grid cells: hubs at even (gx, gy); their one-ports
+ * their dot rank and a row from a tree drawing: each hangs from its parent
+ * (the hub before it nearest in dot's order), the child with the longest
+ * chain onward continues the parent's row (so the longest source-to-load
+ * chain is the main row) and the other children's subtrees are stacked
+ * above and below it, as near as their rows allow (assign_rows). Grid cells: hubs at even (gx, gy); their one-ports
  * (leaves) go to a free side cell next to them (left, above, below, right, in
  * the order that best keeps dot's directions), else a diagonal one. A bond
  * between hubs is a straight run of free cells, else an elbow (one or two
@@ -159,59 +161,138 @@ static int parent_of(const grid *g, int v) {
   return best;
 }
 
-/* Rows of one column's hubs h[0..n) (dot's order): strictly increasing and
- * as near their wishes as possible (pool-adjacent-violators on wish - i). */
-static void fit_rows(grid *g, const int *h, const double *wish, int n) {
-  double *val = bg_xcalloc((size_t)n + 1, sizeof(double));
-  int *len = bg_xcalloc((size_t)n + 1, sizeof(int)), nb = 0;
-  for (int i = 0; i < n; i++) {
-    val[nb] = wish[i] - i, len[nb++] = 1;
-    while (nb > 1 && val[nb - 2] > val[nb - 1]) {
-      val[nb - 2] = (val[nb - 2] * len[nb - 2] + val[nb - 1] * len[nb - 1]) / (len[nb - 2] + len[nb - 1]);
-      len[nb - 2] += len[nb - 1], nb--;
-    }
-  }
-  for (int b = 0, i = 0; b < nb; b++)
-    for (int k = 0; k < len[b]; k++, i++) g->row[h[i]] = (int)floor(val[b] + 0.5) + i;
-  free(val), free(len);
-}
-
 /* Whether s comes before v among p's children in dot's order. */
 static int before(const grid *g, int s, int v) {
   double ds = g->d->ny[s], dv = g->d->ny[v];
   return ds < dv || (ds == dv && s < v);
 }
 
-/* A hub's wish: its parent's row for the child nearest the parent in dot's
- * y, one more or less per sibling between them; 0 without a parent. */
-static double wish_of(const grid *g, int v, int p) {
-  if (p < 0) return 0;
-  int near = v, rank_v = 0, rank_near = 0;
-  for (int k = g->adr[p]; k < g->adr[p + 1]; k++) {
-    int s = other(g, g->adj[k], p);
-    if (s == v || !g->hub[s] || g->col[s] <= g->col[p] || parent_of(g, s) != p) continue;
-    rank_v += before(g, s, v);
-    double ds = fabs(g->d->ny[s] - g->d->ny[p]), dn = fabs(g->d->ny[near] - g->d->ny[p]);
-    if (ds < dn || (ds == dn && s < near)) near = s;
+static int by_dot_y(const void *a, const void *b, void *ctx) {
+  int s = *(const int *)a, v = *(const int *)b;
+  return s == v ? 0 : before(ctx, s, v) ? -1 : 1;
+}
+
+/* The rows, as a tree drawing (issue 31): every hub hangs from its parent
+ * (parent_of); of a hub's children the one with the longest chain onward
+ * (the farthest column, then the most hubs, then the nearest in dot's y)
+ * continues its row, so the longest source-to-load chain is the main row
+ * and a side branch never bends it (a quarter car, a π filter had the
+ * chain on an elbow where the branch was nearer in dot's y); the other
+ * children's subtrees are stacked above (those before it in dot's order)
+ * and below (those after), each as near as its subtree's rows allow,
+ * column by column (its contour: per column the least and greatest row).
+ * A hub takes over the contour of the child that continues it, which
+ * spans the most columns, and merges the others' into it, so the work is
+ * the sum of the shorter subtrees' spans: linear. Several roots (parts,
+ * hubs with no hub in an earlier column) are stacked the same way. */
+typedef struct contour {
+  int *top, *bot, len, cap; /* index i: column last - i; rows relative to the root */
+} contour;
+
+enum { NO_ROW = 1 << 29, GAP = 2 };
+
+static void contour_push(contour *c, int top, int bot) {
+  if (c->len == c->cap) {
+    c->cap = c->cap ? 2 * c->cap : 4;
+    c->top = bg_xrealloc(c->top, (size_t)c->cap * sizeof(int));
+    c->bot = bg_xrealloc(c->bot, (size_t)c->cap * sizeof(int));
   }
-  for (int k = g->adr[p]; near != v && k < g->adr[p + 1]; k++) {
-    int s = other(g, g->adj[k], p);
-    if (s != near && g->hub[s] && g->col[s] > g->col[p] && parent_of(g, s) == p)
-      rank_near += before(g, s, near);
+  c->top[c->len] = top, c->bot[c->len++] = bot;
+}
+
+/* The offset that puts subtree s (its last column slast) just above (dir
+ * -1) or below (dir 1) what acc (last column alast) holds, at least `least`
+ * beyond it in dir; then s merged into acc at that offset. */
+static int contour_stack(contour *acc, int alast, const contour *s, int slast, int dir, int least) {
+  int off = least;
+  for (int i = 0; i < s->len; i++) {
+    int k = alast - slast + i; /* s's column slast - i in acc */
+    if (k < 0 || k >= acc->len || acc->top[k] == NO_ROW || s->top[i] == NO_ROW) continue;
+    int need = dir < 0 ? acc->top[k] - GAP - s->bot[i] : acc->bot[k] + GAP - s->top[i];
+    if (dir < 0 ? need < off : need > off) off = need;
   }
-  return g->row[p] + (rank_v - rank_near);
+  for (int i = 0; i < s->len; i++) {
+    int k = alast - slast + i;
+    if (s->top[i] == NO_ROW || k < 0) continue;
+    while (acc->len <= k) contour_push(acc, NO_ROW, -NO_ROW);
+    if (acc->top[k] == NO_ROW) acc->top[k] = s->top[i] + off, acc->bot[k] = s->bot[i] + off;
+    acc->top[k] = s->top[i] + off < acc->top[k] ? s->top[i] + off : acc->top[k];
+    acc->bot[k] = s->bot[i] + off > acc->bot[k] ? s->bot[i] + off : acc->bot[k];
+  }
+  return off;
+}
+
+/* Stacks kids[0..n) round kids[cont] (offset 0, its contour taken over
+ * into acc): those before it upwards, nearest first, those after it
+ * downwards; each one's offset into off[]. */
+static void stack_children(contour *cs, const int *last, int *off, const int *kids, int n, int cont, contour *acc,
+                           int alast) {
+  for (int dir = -1; dir <= 1; dir += 2) {
+    int least = 0;
+    for (int i = cont + dir; i >= 0 && i < n; i += dir) {
+      int s = kids[i];
+      off[s] = contour_stack(acc, alast, &cs[s], last[s], dir, least + dir);
+      least = off[s];
+      free(cs[s].top), free(cs[s].bot), memset(&cs[s], 0, sizeof cs[s]);
+    }
+  }
 }
 
 static void assign_rows(grid *g, const int *h, int nh) {
-  double *wish = bg_xcalloc((size_t)nh + 1, sizeof(double));
-  for (int i = 0; i < nh;) {
-    int j = i;
-    while (j < nh && g->col[h[j]] == g->col[h[i]]) j++;
-    for (int k = i; k < j; k++) wish[k - i] = wish_of(g, h[k], parent_of(g, h[k]));
-    fit_rows(g, h + i, wish, j - i);
-    i = j;
+  int n = g->n, *par = bg_xcalloc((size_t)n + 1, sizeof(int)), *last = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *reach = bg_xcalloc((size_t)n + 1, sizeof(int)), *cont = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *off = bg_xcalloc((size_t)n + 1, sizeof(int)), *kids = bg_xcalloc((size_t)nh + 1, sizeof(int));
+  contour *cs = bg_xcalloc((size_t)n + 1, sizeof(contour));
+  for (int i = 0; i < nh; i++) par[h[i]] = parent_of(g, h[i]), last[h[i]] = g->col[h[i]], reach[h[i]] = 1, cont[h[i]] = -1;
+  for (int i = nh - 1; i >= 0; i--) { /* children lie in later columns: done before their parent */
+    int v = h[i], p = par[v];
+    if (p < 0) continue;
+    int c = cont[p];
+    if (c < 0 || last[v] > last[c] || (last[v] == last[c] && reach[v] > reach[c]) ||
+        (last[v] == last[c] && reach[v] == reach[c] &&
+         (fabs(g->d->ny[v] - g->d->ny[p]) < fabs(g->d->ny[c] - g->d->ny[p]) ||
+          (fabs(g->d->ny[v] - g->d->ny[p]) == fabs(g->d->ny[c] - g->d->ny[p]) && v < c))))
+      cont[p] = v;
+    if (last[v] > last[p]) last[p] = last[v];
+    if (reach[v] + 1 > reach[p]) reach[p] = reach[v] + 1;
   }
-  free(wish);
+  for (int i = nh - 1; i >= 0; i--) { /* each hub's contour from its children's */
+    int v = h[i], nk = 0, at = 0;
+    contour acc = {0};
+    if (cont[v] >= 0) acc = cs[cont[v]], memset(&cs[cont[v]], 0, sizeof acc);
+    while (acc.len < last[v] - g->col[v]) contour_push(&acc, NO_ROW, -NO_ROW);
+    contour_push(&acc, 0, 0); /* v's own column */
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+      int s = other(g, g->adj[k], v);
+      if (g->hub[s] && par[s] == v && (nk == 0 || kids[nk - 1] != s)) kids[nk++] = s;
+    }
+    bg_sort(kids, (size_t)nk, sizeof(int), by_dot_y, g);
+    int m = 0;
+    for (int k = 0; k < nk; k++) /* a child joined by two bonds counted once */
+      if (m == 0 || kids[m - 1] != kids[k]) kids[m++] = kids[k];
+    for (int k = 0; k < m; k++) at = kids[k] == cont[v] ? k : at;
+    /* as many branches above as below (one each takes the hub's free
+     * sides): dot's order kept, the continuing child moved among them */
+    int q = m - 1, want = m == 0 ? 0 : at < q / 2 ? q / 2 : at > q - q / 2 ? q - q / 2 : at;
+    for (; at < want; at++) kids[at] = kids[at + 1], kids[at + 1] = cont[v];
+    for (; at > want; at--) kids[at] = kids[at - 1], kids[at - 1] = cont[v];
+    if (cont[v] >= 0) off[cont[v]] = 0, stack_children(cs, last, off, kids, m, at, &acc, last[v]);
+    cs[v] = acc;
+  }
+  /* the roots, in dot's order, stacked below one another */
+  contour all = {0};
+  int alast = 0, least = 0, first = 1;
+  for (int i = 0; i < nh; i++)
+    if (par[h[i]] < 0) alast = last[h[i]] > alast ? last[h[i]] : alast;
+  for (int i = 0; i < nh; i++) {
+    int v = h[i];
+    if (par[v] >= 0) continue;
+    off[v] = contour_stack(&all, alast, &cs[v], last[v], 1, first ? 0 : least + 1);
+    least = off[v], first = 0;
+  }
+  for (int i = 0; i < nh; i++) g->row[h[i]] = (par[h[i]] >= 0 ? g->row[par[h[i]]] : 0) + off[h[i]];
+  for (int v = 0; v < n; v++) free(cs[v].top), free(cs[v].bot);
+  free(all.top), free(all.bot), free(cs), free(par), free(last), free(reach), free(cont), free(off), free(kids);
 }
 
 /* ---------------------------------------------------------------- components, wrapping */

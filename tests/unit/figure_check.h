@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "model/model.h"
 #include "scene/scene.h"
 
 typedef struct fc_stats {
@@ -42,6 +43,7 @@ typedef struct fc_stats {
   int texts, small_text;     /* every text item; those with some part below 6 pt */
   int arrangement;           /* element label pairs in another order than in the default style (fc_arrangement) */
   int layer_oblique;         /* path/loop line × bond pairs crossing more than 5 degrees off a right angle */
+  int spine_bent;            /* bonds of the longest source-to-load chain drawn with a corner (fc_spine_bent) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -640,6 +642,73 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
   st->lines_through += fc_through(&f, FC_BOND) + fc_through(&f, FC_SIGNAL);
   fc_count_31(s, &f, st);
   fc_free(&f);
+}
+
+/* Whether bond line l turns a corner (its half arrow not counted). */
+static int fc_has_corner(const fc_line *l) {
+  for (int k = 1; k < l->nseg - l->barb; k++) {
+    const fc_seg *a = &l->seg[k - 1], *b = &l->seg[k];
+    double cr = (a->x1 - a->x0) * (b->y1 - b->y0) - (a->y1 - a->y0) * (b->x1 - b->x0);
+    double la = hypot(a->x1 - a->x0, a->y1 - a->y0), lb = hypot(b->x1 - b->x0, b->y1 - b->y0);
+    if (la > 0.5 && lb > 0.5 && fabs(cr) > 0.02 * la * lb) return 1;
+  }
+  return 0;
+}
+
+/* Issue 31, the spine: the longest source-to-load power chain is the main
+ * row, and a side branch must not bend it onto an elbow. In each connected
+ * part with a source (the first in model order, the one the layout ranks
+ * from) the chain is walked from the source: breadth-first distances from
+ * it, and from each element the next one a step further whose reach (the
+ * farthest distance onward, a step further each time) is the largest; of
+ * several such, one whose bond is drawn without a corner. Counts the
+ * chain's bonds drawn with a corner (a fold between bands is a straight
+ * run down, not counted). */
+static inline int fc_spine_bent(const bg_model *m, const bg_scene *s) {
+  fc_scene f;
+  fc_read(s, &f);
+  int n = m->nelem, nb = m->nbond, bent = 0;
+  int *dist = malloc(((size_t)n + 1) * sizeof(int)), *reach = malloc(((size_t)n + 1) * sizeof(int));
+  int *queue = malloc(((size_t)n + 1) * sizeof(int)), *corner = calloc((size_t)nb + 1, sizeof(int));
+  for (int j = 0; j < f.nline; j++)
+    if (f.line[j].kind == FC_BOND && f.line[j].id > 0)
+      for (int b = 0; b < nb; b++)
+        if (m->bond_num[b] == f.line[j].id) corner[b] = fc_has_corner(&f.line[j]);
+  for (int v = 0; v < n; v++) dist[v] = -1;
+  for (int src = 0; src < n; src++) {
+    if (!bg_elem_is_source(m->elem_kind[src]) || dist[src] >= 0) continue;
+    int qh = 0, qt = 0;
+    dist[src] = 0, queue[qt++] = src;
+    while (qh < qt) {
+      int v = queue[qh++];
+      for (int k = 0; k < m->elem_nbond[v]; k++) {
+        int b = m->elem_bonds[m->elem_bondadr[v] + k], u = m->bond_tail[b] == v ? m->bond_head[b] : m->bond_tail[b];
+        if (dist[u] < 0) dist[u] = dist[v] + 1, queue[qt++] = u;
+      }
+    }
+    for (int i = qt - 1; i >= 0; i--) { /* farthest first: reach of every element of the part */
+      int v = queue[i];
+      reach[v] = dist[v];
+      for (int k = 0; k < m->elem_nbond[v]; k++) {
+        int b = m->elem_bonds[m->elem_bondadr[v] + k], u = m->bond_tail[b] == v ? m->bond_head[b] : m->bond_tail[b];
+        if (dist[u] == dist[v] + 1 && reach[u] > reach[v]) reach[v] = reach[u];
+      }
+    }
+    for (int v = src;;) {
+      int next = -1, next_bent = 1;
+      for (int k = 0; k < m->elem_nbond[v]; k++) {
+        int b = m->elem_bonds[m->elem_bondadr[v] + k], u = m->bond_tail[b] == v ? m->bond_head[b] : m->bond_tail[b];
+        if (dist[u] != dist[v] + 1 || reach[u] != reach[src]) continue;
+        if (next < 0 || (next_bent && !corner[b])) next = u, next_bent = corner[b];
+      }
+      if (next < 0) break;
+      if (next_bent && fc_explain) printf("  spine: the bond %s -> %s turns a corner\n", m->elem_name[v], m->elem_name[next]);
+      bent += next_bent, v = next;
+    }
+  }
+  free(dist), free(reach), free(queue), free(corner);
+  fc_free(&f);
+  return bent;
 }
 
 static inline void fc_add(fc_stats *sum, const fc_stats *s) {

@@ -172,4 +172,52 @@ static void fm_stages(bg_strbuf *b, int n) {
   bg_sb_printf(b, "bond T%d.n -> load\n", n);
 }
 
+/* Spine models (issue 31: the power chain from source to load is the main
+ * row, side branches hang off it). A π filter of n sections: a source
+ * resistance, then per section a shunt branch (a 1-junction with a C and
+ * its series resistance) on a 0-junction and a series inductor on a
+ * 1-junction, a last shunt and a load. */
+static void fm_pifilter(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model pifilter%d\nSe U = 1\n1 src\nR Rs = 1\nR load = 10\n", n);
+  for (int i = 0; i <= n; i++) {
+    bg_sb_printf(b, "0 p%d\n1 h%d\nC Cp%d = 1\nR Re%d = 0.1\n", i, i, i, i);
+    if (i < n) bg_sb_printf(b, "1 l%d\nI L%d = 1\n", i, i);
+  }
+  bg_sb_puts(b, "bond U -> src\nbond src -> Rs\nbond src -> p0\n");
+  for (int i = 0; i <= n; i++) {
+    bg_sb_printf(b, "bond p%d -> h%d\nbond h%d -> Cp%d\nbond h%d -> Re%d\n", i, i, i, i, i, i);
+    if (i < n) bg_sb_printf(b, "bond p%d -> l%d\nbond l%d -> L%d\nbond l%d -> p%d\n", i, i, i, i, i, i + 1);
+  }
+  bg_sb_printf(b, "bond p%d -> load\n", n);
+}
+
+/* A power chain of n junctions (1, 0, ... with an R, I or C each) from a
+ * source to a load, with random side branches: from a junction, a chain of
+ * one to three junctions (each with a one-port), shorter than what is left
+ * of the main chain; a branch's junction may branch once more. */
+static void fm_branchy(bg_strbuf *b, int n, unsigned seed) {
+  static const char *kind[] = {"R", "I", "C"};
+  bg_sb_printf(b, "model branchy%u\nSe U = 1\nR load = 1\n", seed);
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "%d j%d\n%s w%d = 1\n", i % 2, i, kind[fm_rand(&seed) % 3], i);
+  bg_sb_puts(b, "bond U -> j0\n");
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "bond j%d -> w%d\n", i, i);
+    if (i + 1 < n) bg_sb_printf(b, "bond j%d -> j%d\n", i, i + 1);
+    int left = n - 1 - i;
+    if (left < 2 || fm_rand(&seed) % 3) continue;
+    int len = 1 + (int)(fm_rand(&seed) % 3), prev = -1;
+    if (len >= left) len = left - 1;
+    for (int k = 0; k < len; k++) { /* the branch's junctions: b<i>_<k>, kinds alternating from j<i>'s */
+      bg_sb_printf(b, "%d b%d_%d\n%s x%d_%d = 1\n", (i + k + 1) % 2, i, k, kind[fm_rand(&seed) % 3], i, k);
+      if (prev < 0) bg_sb_printf(b, "bond j%d -> b%d_%d\n", i, i, k);
+      else bg_sb_printf(b, "bond b%d_%d -> b%d_%d\n", i, prev, i, k);
+      bg_sb_printf(b, "bond b%d_%d -> x%d_%d\n", i, k, i, k);
+      if (k == 0 && len == 1 && fm_rand(&seed) % 2) /* a second one-port on a one-junction branch */
+        bg_sb_printf(b, "%s y%d = 1\nbond b%d_0 -> y%d\n", kind[fm_rand(&seed) % 3], i, i, i);
+      prev = k;
+    }
+  }
+  bg_sb_printf(b, "bond j%d -> load\n", n - 1);
+}
+
 #endif
