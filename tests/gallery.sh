@@ -25,7 +25,7 @@ python3 - "$d" <<'EOF'
 import cmath, json, math, sys
 sys.path.insert(0, "tests/lib")
 import page_numbers as pn
-from page_numbers import close, rows, table, worst
+from page_numbers import close, rows, table, tf_at, worst
 d = pn.D = sys.argv[1]
 def linear(name):
     return json.load(open(f"{d}/{name}"))
@@ -35,9 +35,7 @@ j = linear("rc_filter_linear.json")
 close("RC: pole", j["poles"][0]["re"], -1000, 1e-6)
 tf = j["transfer_functions"][0]
 close("RC: DC gain", tf["dc_gain"], 1, 1e-12)
-s = 1000j
-H = sum(c * s ** (len(tf["num"]) - 1 - i) for i, c in enumerate(tf["num"])) / \
-    sum(c * s ** (len(tf["den"]) - 1 - i) for i, c in enumerate(tf["den"]))
+H = tf_at(tf, 1000j)
 close("RC: magnitude at 1000 rad/s [dB]", 20 * math.log10(abs(H)), -10 * math.log10(2), 1e-9)
 close("RC: phase at 1000 rad/s [deg]", math.degrees(cmath.phase(H)), -45, 1e-9)
 close("RC: largest deviation from 1 - e^(-t/RC)", worst("rc_filter.csv", 1, lambda t: 1 - math.exp(-t / 1e-3)), 0, 1e-6)
@@ -113,9 +111,147 @@ for r in runs:
     z = b / (2 * math.sqrt(100))
     close(f"sweep b = {b:g}: peak", r[head.index("K.q:max")], 0.01 * (1 + math.exp(-z * math.pi / math.sqrt(1 - z * z))), 1e-5)
     close(f"sweep b = {b:g}: time of the peak", r[head.index("K.q:tmax")], math.pi / (10 * math.sqrt(1 - z * z)), 1e-3)
+# loudspeaker: v/U = Bl / ((Re + s Le)(m s + b + k/s) + Bl^2), x/U = v/(s U)
+Re_, Le, Bl, m, k, b = 6, 0.5e-3, 7, 0.02, 2000, 1
+want = [1, Re_ / Le + b / m, (Re_ * b + Le * k + Bl ** 2) / (Le * m), Re_ * k / (Le * m)]
+tfs = linear("loudspeaker_linear.json")["transfer_functions"]
+for tf in tfs:
+    for i, (got, w) in enumerate(zip(tf["den"], want)):
+        close(f"loudspeaker {tf['output']}: s^{3 - i} coefficient", got / tf["den"][0], w, 1e-9 * abs(w))
+w0 = math.sqrt(k / m)
+H = tf_at(tfs[0], 1j * w0)
+Hh = Bl / ((Re_ + 1j * w0 * Le) * b + Bl ** 2)
+close("loudspeaker: |v/U| at w0 [dB]", 20 * math.log10(abs(H)), 20 * math.log10(abs(Hh)), 1e-9)
+close("loudspeaker: phase of v/U at w0 [deg]", math.degrees(cmath.phase(H)), math.degrees(cmath.phase(Hh)), 1e-9)
+close("loudspeaker: DC gain of x [m/V]", tfs[1]["dc_gain"], Bl / (Re_ * k), 1e-12)
+
+
+# coupled coils: det(L s + R), DC gains, the exact solution (Sylvester's formula)
+def coils(R2):
+    L1, L2, M, R1 = 1e-2, 4e-2, 1.6e-2, 1
+    det = L1 * L2 - M * M
+    A = [[-R1 * L2 / det, R2 * M / det], [R1 * M / det, -R2 * L1 / det]]  # -L^-1 R
+    tr, dt_ = A[0][0] + A[1][1], A[0][0] * A[1][1] - A[0][1] * A[1][0]
+    l1 = (tr + math.sqrt(tr * tr - 4 * dt_)) / 2
+    l2 = (tr - math.sqrt(tr * tr - 4 * dt_)) / 2
+
+    def i(t):  # i(0) = 0, i_inf = (1/R1, 0): i = i_inf - e^(At) i_inf
+        e1, e2 = math.exp(l1 * t), math.exp(l2 * t)
+        E = [[(e1 * (A[r][c] - l2 * (r == c)) - e2 * (A[r][c] - l1 * (r == c))) / (l1 - l2)
+              for c in range(2)] for r in range(2)]
+        return [1 / R1 - E[0][0] / R1, -E[1][0] / R1]
+    return det, l1, l2, i
+
+
+det, l1, l2, i = coils(2)
+lin = linear("coupled_coils_linear.json")
+want = [1, (1 * 4e-2 + 2 * 1e-2) / det, 2 / det]
+for tf in lin["transfer_functions"]:
+    for n, (got, w) in enumerate(zip(tf["den"], want)):
+        close(f"coupled coils {tf['output']}: s^{2 - n} coefficient", got / tf["den"][0], w, 1e-9 * w)
+close("coupled coils: DC gain of i1", lin["transfer_functions"][0]["dc_gain"], 1, 1e-9)
+close("coupled coils: DC gain of i2", lin["transfer_functions"][1]["dc_gain"], 0, 1e-9)
+close("coupled coils: slow pole", max(p["re"] for p in lin["poles"]), l1, 1e-6)
+close("coupled coils: fast pole", min(p["re"] for p in lin["poles"]), l2, 1e-6)
+for col in (1, 2):
+    close(f"coupled coils: largest deviation of i{col} [A]", worst("coupled_coils.csv", col, lambda t: i(t)[col - 1]), 0, 1e-5)
+i8 = coils(8)[3]
+py = [[float(x) for x in line.split()] for line in open(f"{d}/coupled_python.txt")]
+close("coupled coils, Python export: lines", len(py), 11, 0)
+close("coupled coils, Python export with R2 = 8: largest deviation [A]",
+      max(max(abs(r[1] - i8(r[0])[0]), abs(r[2] - i8(r[0])[1])) for r in py), 0, 1e-6)
+
+
+# pendulum: T = 4 sqrt(J/(m g L)) K(sin(th0/2)), energy constant
+def ellip_k(kk):
+    a, b = 1.0, math.sqrt(1 - kk * kk)
+    while abs(a - b) > 1e-15:
+        a, b = (a + b) / 2, math.sqrt(a * b)
+    return math.pi / (2 * a)
+
+
+J, g = 0.01 + 1, 9.81
+T = 4 * math.sqrt(J / g) * ellip_k(math.sin(1))
+r = rows("pendulum.csv")
+cross = [a[0] + (b[0] - a[0]) * a[1] / (a[1] - b[1]) for a, b in zip(r, r[1:]) if a[1] > 0 >= b[1]]
+close("pendulum: downward zero crossings", len(cross), 4, 0)
+for n, (a, b) in enumerate(zip(cross, cross[1:])):
+    close(f"pendulum: period {n + 1} [s]", b - a, T, 1e-5)
+E0 = g * (1 - math.cos(2))
+close("pendulum: largest energy deviation / E0", max(abs(J * x[2] ** 2 / 2 + g * (1 - math.cos(x[1])) - E0) for x in r) / E0, 0, 1e-5)
+
+# heat conduction: poles -(2/(Rs Cs))(1 - cos(k pi/4)), the modal solution from 20 degC
+a = 1 / (0.5 * 200)
+lam = [-2 * a * (1 - math.cos(kk * math.pi / 4)) for kk in (1, 2, 3)]
+got = sorted(p["re"] for p in linear("heat_rod_linear.json")["poles"])
+for gp, w in zip(got, sorted(lam)):
+    close("heat rod: pole", gp, w, 1e-12)
+Tss, x0 = [80, 60, 40], [-60, -40, -20]
+vec = [[math.sin(j * kk * math.pi / 4) for j in (1, 2, 3)] for kk in (1, 2, 3)]
+c = [sum(x * v for x, v in zip(x0, vk)) / sum(v * v for v in vk) for vk in vec]
+for j in range(3):
+    close(f"heat rod: largest deviation of T{j + 1}",
+          worst("heat_rod.csv", j + 1, lambda t: Tss[j] + sum(c[kk] * vec[kk][j] * math.exp(lam[kk] * t) for kk in range(3))), 0, 1e-4)
+
+
+# enzyme: conservation, and the mass-action equations by RK4
+def mass_action(y):
+    S, E, C, P = y
+    v1, v2 = 10 * S * E - 1 * C, 2 * C - 1e-3 * E * P
+    return [-v1, -v1 + v2, v1 - v2, v2]
+
+
+r = rows("enzyme.csv")
+close("enzyme: largest deviation of S + ES + P from 1 mol", max(abs(x[1] + x[2] + x[3] - 1 - 2e-9) for x in r), 0, 1e-9)
+y, h, ref = [1, 0.1, 1e-9, 1e-9], 1e-3, {0: [1, 0.1, 1e-9, 1e-9]}
+for n in range(1, 10001):
+    k1 = mass_action(y)
+    k2 = mass_action([a + h / 2 * b for a, b in zip(y, k1)])
+    k3 = mass_action([a + h / 2 * b for a, b in zip(y, k2)])
+    k4 = mass_action([a + h * b for a, b in zip(y, k3)])
+    y = [a + h / 6 * (p + 2 * q + 2 * s + u) for a, p, q, s, u in zip(y, k1, k2, k3, k4)]
+    if n % 10 == 0:
+        ref[n // 10] = y
+close("enzyme: rows", len(r), 1001, 0)
+close("enzyme: largest deviation from the mass-action equations [mol]",
+      max(abs(x[col] - ref[round(x[0] * 100)][s]) for x in r for col, s in ((1, 0), (2, 2), (3, 3))), 0, 1e-6)
+close("enzyme: E + ES of the reference", max(abs(v[1] + v[2] - 0.1 - 1e-9) for v in ref.values()), 0, 1e-12)
+
+# hydraulic cylinder: travel Ps A / k, pressure Ps
+last = rows("cylinder.csv")[-1]
+close("cylinder: final travel [m]", last[1], 1e6 * 1e-3 / 1e5, 1e-8)
+close("cylinder: final pressure [Pa]", last[2], 1e6, 1e-2)
 sys.exit(1 if pn.failed else 0)
 EOF
 check "the gallery's numbers (above)" $?
+
+# the hydraulic cylinder's FMU, run by the suite's FMI importer (RK4) against bgdraw's run
+mkdir -p "$tmp/fmu" && (cd "$tmp/fmu" && unzip -q "$d/cylinder.fmu")
+guid=$(sed -n 's/.*guid="\([^"]*\)".*/\1/p' "$tmp/fmu/modelDescription.xml")
+vrs=$(python3 -c '
+import sys, xml.etree.ElementTree as ET
+v = {s.get("name"): s.get("valueReference") for s in ET.parse(sys.argv[1]).iter("ScalarVariable")}
+print(v["K.q"] + "," + v["oil.e"])' "$tmp/fmu/modelDescription.xml")
+cc -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror tests/export/fmu_import.c -o "$tmp/fmu_import" -ldl &&
+  "$tmp/fmu_import" "$tmp/fmu/binaries/linux64/cylinder.so" "$guid" 3 "$d/cylinder.csv" "$d/cylinder_fmu.csv" "$vrs" 2>"$tmp/fmu.err"
+check "the cylinder's FMU runs in the test importer" $?
+python3 - "$d" <<'EOF'
+import sys
+sys.path.insert(0, "tests/lib")
+import page_numbers as pn
+pn.D = sys.argv[1]
+a, b = pn.rows("cylinder.csv"), pn.rows("cylinder_fmu.csv")
+pn.close("cylinder FMU: rows", len(b), len(a), 0)
+for col, name in ((1, "travel"), (2, "pressure")):
+    span = max(r[col] for r in a) - min(r[col] for r in a)
+    pn.close(f"cylinder FMU: largest deviation of the {name} / its range",
+             max(abs(x[col] - y[col]) for x, y in zip(a, b)) / span, 0, 1e-5)
+pn.close("cylinder FMU: final travel [m]", b[-1][1], 0.01, 1e-7)
+sys.exit(1 if pn.failed else 0)
+EOF
+check "the cylinder's FMU against bgdraw and the hand answer (above)" $?
+python3 tests/export/check_modelica.py "$d/heat_rod.mo" >/dev/null
+check "heat_rod.mo is a balanced Modelica model (tests/export/check_modelica.py)" $?
 
 # every gallery model passes --check without a warning
 for f in examples/gallery/*.bg; do

@@ -15,6 +15,9 @@ out=$(realpath -m "${2:-$root/out/docs}")
 [ -x "$bg" ] || { echo "gallery.sh: no bgdraw at $bg (build it first)" >&2; exit 2; }
 mkdir -p "$out/bin"
 ln -sf "$bg" "$out/bin/bgdraw"
+# the pages' python3 is Debian's, with the NumPy and SciPy of tools/deps.sh --tests, not
+# whichever python3 comes first on PATH (a virtual environment without them)
+[ -x /usr/bin/python3 ] && ln -sf /usr/bin/python3 "$out/bin/python3"
 pages=("${@:3}")
 [ ${#pages[@]} -gt 0 ] || pages=(tutorial gallery)
 for page in "${pages[@]}"; do

@@ -12,7 +12,7 @@ page_build() { # PAGE
 }
 page_files() { # PAGE
   local f img
-  for f in examples/"$1"/*.bg examples/"$1"/*.c; do
+  for f in examples/"$1"/*.bg examples/"$1"/*.c examples/"$1"/*.py examples/"$1"/*.yaml; do
     [ -f "$f" ] || continue
     cmp -s "$f" "$d/${f##*/}"; check "docs/$1.md shows $f as it is" $?
   done

@@ -35,6 +35,14 @@ def worst(name, col, f):
     return max(abs(r[col] - f(r[0])) for r in rows(name))
 
 
+def tf_at(tf, s):
+    """A transfer function of --linear json (its num and den coefficients, highest power
+    first) at the complex frequency s."""
+    def poly(c):
+        return sum(x * s ** (len(c) - 1 - i) for i, x in enumerate(c))
+    return poly(tf["num"]) / poly(tf["den"])
+
+
 def close(what, got, want, tol):
     global failed
     ok = abs(got - want) <= tol
