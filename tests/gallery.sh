@@ -20,6 +20,14 @@ for m in thermostat belt_friction; do
     >"$d/$m.events"
 done
 (cd "$d" && "$BGDRAW" gear_merged.bg --check) >"$d/gear_merged.check" 2>&1
+(cd "$d" && "$BGDRAW" divider_parasitic.bg --check) >"$d/divider_parasitic.check" 2>&1
+# the building's every state (its plot statement left out: the CSV then has the states)
+grep -v '^plot ' "$d/building.bg" >"$tmp/building_states.bg"
+"$BGDRAW" "$tmp/building_states.bg" --simulate -o "$d/building_states.csv"
+check "the building simulates with every state" $?
+# the imported model is the text the page shows
+cmp -s "$tmp/out/output-rlc_bgt-import.txt" "$d/rlc_bgt.bg"
+check "--import rlc_bgt.yaml writes what the page shows" $?
 
 python3 - "$d" <<'EOF'
 import cmath, json, math, sys
@@ -221,6 +229,49 @@ close("enzyme: E + ES of the reference", max(abs(v[1] + v[2] - 0.1 - 1e-9) for v
 last = rows("cylinder.csv")[-1]
 close("cylinder: final travel [m]", last[1], 1e6 * 1e-3 / 1e5, 1e-8)
 close("cylinder: final pressure [Pa]", last[2], 1e6, 1e-2)
+
+# electrostatic actuator: k (x0 - x) x^2 = eps A V^2 / 2, its larger root; q = eps A V / x
+epsA, V, x0, k = 8.854e-16, 5, 1e-5, 100
+lo, hi = 2 * x0 / 3, x0  # k (x0 - x) x^2 falls from its maximum at 2 x0 / 3 to 0 at x0
+for _ in range(200):
+    mid = (lo + hi) / 2
+    lo, hi = (mid, hi) if k * (x0 - mid) * mid * mid > epsA * V * V / 2 else (lo, mid)
+last = rows("actuator.csv")[-1]
+close("actuator: final gap [m]", last[1], lo, 1e-11)
+close("actuator: final charge [C]", last[2], epsA * V / lo, 1e-15)
+
+# loaded divider: vC = 5 (1 - e^(-t / 1 ms)); the parasitic store and the transformed model
+close("divider: largest deviation from 5 (1 - e^(-t/1 ms)) [V]", worst("divider.csv", 1, lambda t: 5 * (1 - math.exp(-t / 1e-3))), 0, 1e-5)
+close("divider, parasitic: largest deviation [V]", worst("divider_parasitic.csv", 1, lambda t: 5 * (1 - math.exp(-t / 1e-3))), 0, 5e-3)
+text = open(f"{d}/divider_parasitic.bg").read()
+close("divider, parasitic: Cp_mid_0 = 5e-09", int("param Cp_mid_0 = 5e-09 " in text), 1, 0)
+close("divider, parasitic: the store at mid", int("bond 8 mid -> Cp_mid" in text), 1, 0)
+check = open(f"{d}/divider_parasitic.check").read()
+close("divider, parasitic: an explicit ODE without class 2 paths",
+      int("form: ode" in check and "class 2: 0" in check and "states (2): Cp_mid.q, C1.q" in check), 1, 0)
+
+# imported RLC: vC = 1 - e^(-2t)(cos 4t + sin 4t / 2), i = e^(-2t) sin 4t / 2
+close("imported RLC: largest deviation of vC", worst("rlc_bgt.csv", 1, lambda t: 1 - math.exp(-2 * t) * (math.cos(4 * t) + math.sin(4 * t) / 2)), 0, 1e-5)
+close("imported RLC: largest deviation of i", worst("rlc_bgt.csv", 2, lambda t: math.exp(-2 * t) * math.sin(4 * t) / 2), 0, 1e-5)
+
+# thermometer: each run crosses 57.927 at Rf Cb ln(60 / 22.073); the mean of Rf Cb is 10 s
+head, runs = table("thermometer_study.csv")
+close("thermometer: runs", len(runs), 200, 0)
+col = head.index("bulb.e:cross=57.927")
+taus = [r[head.index("Rf")] * r[head.index("Cb")] for r in runs]
+close("thermometer: largest deviation of a crossing from its Rf Cb ln(60/22.073) [s]",
+      max(abs(r[col] - tau * math.log(60 / 22.073)) for r, tau in zip(runs, taus)), 0, 1e-4)
+sd = 10 * math.sqrt(0.1 ** 2 + (0.1 / math.sqrt(12) / 0.5) ** 2)
+close("thermometer: mean of Rf Cb against 10 s, in standard errors", (sum(taus) / len(taus) - 10) / (sd / math.sqrt(200)), 0, 3)
+
+# building: omega_j = 2 sqrt(k/m) sin((2j - 1) pi / 18); energy kept once the ground stops
+w = sorted(p["im"] for p in linear("building_linear.json")["poles"] if p["im"] > 0)
+for j, got in enumerate(w, 1):
+    close(f"building: mode {j} [rad/s]", got, 2 * math.sqrt(2e8 / 1e5) * math.sin((2 * j - 1) * math.pi / 18), 1e-9)
+head, r = table("building_states.csv")
+energy = [sum(x[head.index(f"S{s}.K.q")] ** 2 * 2e8 / 2 + x[head.index(f"S{s}.M.p")] ** 2 / 2e5 for s in (1, 2, 3, 4))
+          for x in r if x[0] >= 0.2]
+close("building: energy after the shake, largest deviation / its value", (max(energy) - min(energy)) / energy[0], 0, 1e-5)
 sys.exit(1 if pn.failed else 0)
 EOF
 check "the gallery's numbers (above)" $?
