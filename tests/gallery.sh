@@ -4,7 +4,8 @@
 # examples/gallery, every command block runs (tools/gallery.sh in a private folder),
 # every picture is made, and each entry's numbers are checked against the hand-derived
 # or textbook answer the page states. Each gallery model also passes --check without
-# a warning.
+# a warning, and the property checks that apply to it and to each tutorial model
+# (tests/property/prop.py --file).
 #     bash tests/gallery.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
@@ -303,6 +304,14 @@ EOF
 check "the cylinder's FMU against bgdraw and the hand answer (above)" $?
 python3 tests/export/check_modelica.py "$d/heat_rod.mo" >/dev/null
 check "heat_rod.mo is a balanced Modelica model (tests/export/check_modelica.py)" $?
+
+# the property checks that apply to a hand-written model (tests/property/given.py), on
+# every tutorial and gallery model (the YAML one as its --import text)
+python3 tests/property/prop.py "$BGDRAW" $(for f in examples/tutorial/*.bg examples/gallery/*.bg; do
+  printf -- '--file %s ' "$f"; done) --file "$d/rlc_bgt.bg" >"$tmp/prop.txt" 2>&1
+st=$?
+grep ': fail' "$tmp/prop.txt"
+check "the property checks on the tutorial's and the gallery's models ($(grep -c ': pass$' "$tmp/prop.txt") passed)" $st
 
 # every gallery model passes --check without a warning
 for f in examples/gallery/*.bg; do

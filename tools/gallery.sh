@@ -3,7 +3,8 @@
 # Builds the tutorial and the gallery (docs/tutorial.md, docs/gallery.md) into OUT
 # (default out/docs): every model and command block of each page is taken from the page
 # (tests/doc_snippets.py) and run there, so the pictures beside the page are exactly
-# what the page's commands draw; the page is copied beside them, and turned into HTML
+# what the page's commands draw; the page is written beside them with its pictures shown
+# (the repository's page names them in comments), and turned into HTML
 # when pandoc is installed. tests/tutorial.sh and tests/gallery.sh run the same
 # commands and check their numbers.
 #     bash tools/gallery.sh [BGDRAW [OUT [PAGE...]]]   (from anywhere; also: cmake --build build --target gallery)
@@ -32,7 +33,10 @@ for page in "${pages[@]}"; do
     echo "gallery.sh: running the commands of docs/$page.md (${script##*/})" >&2
     PATH="$out/bin:$PATH" bash "$script" >"${script%.sh}.log"
   done
-  cp "$root/docs/$page.md" "$out/$page.md"
+  # the page names its pictures in comments (no broken image links where the pictures
+  # are not built, docs/gallery.md "Where the pictures are"); beside them they are images
+  # (and the links to built files, such as the tutorial's reports, links)
+  sed 's/^<!-- \(!\{0,1\}\[[^]]*\]('"$page"'\/[^)]*)\) -->$/\1/' "$root/docs/$page.md" >"$out/$page.md"
   if command -v pandoc >/dev/null; then
     pandoc --standalone --metadata pagetitle="bgdraw $page" -f gfm -t html5 \
       "$out/$page.md" -o "$out/$page.html"

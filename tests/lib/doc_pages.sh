@@ -3,7 +3,8 @@
 # tests/lib/preamble.sh): page_build PAGE builds docs/PAGE.md with tools/gallery.sh into
 # $tmp/out (every command block run) and sets d, the folder of its pictures; page_files
 # PAGE checks that the page shows every file of examples/PAGE as it is and nothing else,
-# and that every picture and link of the page was made and is what its name says.
+# that every picture and link of the page was made and is what its name says, that the
+# built page shows each, and that the repository's page links no picture it lacks.
 page_build() { # PAGE
   bash tools/gallery.sh "$BGDRAW" "$tmp/out" "$1" 2>"$tmp/build.err"
   local st=$?
@@ -27,5 +28,14 @@ page_files() { # PAGE
       *) false ;;
     esac
     check "the page's $img is made" $?
+    grep -v '^<!--' "$tmp/out/$1.md" | grep -qF "]($1/$img)"
+    check "the built page shows $img" $?
   done
+  # the repository's page shows no picture and links no file that is not a file of the
+  # repository (the built ones are named in comments: docs/gallery.md, "Where the
+  # pictures are")
+  local bad
+  bad=$(grep -v '^<!--' "docs/$1.md" | grep -o "]($1/[^)]*)" | sed 's/^](//; s/)$//' |
+    while read -r img; do [ -f "docs/$img" ] || echo "$img"; done)
+  [ -z "$bad" ]; check "docs/$1.md shows or links nothing the repository lacks: ${bad:-none}" $?
 }

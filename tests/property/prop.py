@@ -7,6 +7,10 @@
                                  every check on one model written by the generator
                                  (a shrunk finding of tests/property/found/): exit 1
                                  when a check fails
+    prop.py BGDRAW --file FILE.bg [--file ...]
+                                 the checks that apply to a model someone wrote
+                                 (given.py: the tutorial's and the gallery's
+                                 models in tests/gallery.sh): exit 1 when one fails
     prop.py --self-test          the shrinker shrinks (a synthetic predicate)
 
 Generates models seed S, S+1, ..., S+N-1 (tests/property/gen.py), checks each
@@ -142,6 +146,19 @@ def check_files(bgdraw, paths, seed, lib):
     return 1 if bad else 0
 
 
+def check_given(bgdraw, paths):
+    """The checks that apply to each hand-written model (given.py), one line each."""
+    import given
+    bad = 0
+    for path in paths:
+        res = given.check_file(bgdraw, path)
+        for c in check.CHECKS:
+            st, why = res[c]
+            print("%s %s: %s%s" % (path, c, st, (" (" + why.splitlines()[0] + ")") if why else ""))
+            bad += st == "fail"
+    return 1 if bad else 0
+
+
 def print_table(table, out):
     print("| check | ran | passed | failed | skipped |", file=out)
     print("|---|---|---|---|---|", file=out)
@@ -164,10 +181,13 @@ def main():
                     help="a check whose failures are counted but do not fail the run (docs/property.md)")
     ap.add_argument("--self-test", action="store_true")
     ap.add_argument("--model", action="append", help="check these models instead of generated ones")
+    ap.add_argument("--file", action="append", help="check these hand-written models (given.py)")
     a = ap.parse_args()
     if a.self_test:
         return self_test()
     bgdraw = os.path.abspath(a.bgdraw)
+    if a.file:
+        return check_given(bgdraw, a.file)
     if a.model:
         return check_files(bgdraw, a.model, a.seed, os.path.abspath(a.lib) if a.lib else None)
     table = {c: {"pass": 0, "fail": 0, "skip": 0} for c in check.CHECKS}
