@@ -414,6 +414,10 @@ static void draw_scene(bg_diagram *d) {
   d->scene.background = d->st.background;
   d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");
   draw_all(d);
+  /* what labels avoided is not needed once everything is placed: at
+   * 100 000 masses it was 400 MB held while the SVG was written */
+  bg_obstacles_free(d->obs);
+  d->obs = NULL;
 }
 
 static void layout_release(bg_diagram_layout *L) {
