@@ -100,7 +100,7 @@ void rp_place(rp_doc *d, const bg_scene *s, double sx, double sy, double sw, dou
     p->capplace = p->capplace ? 2 * p->capplace : 4;
     p->place = bg_xrealloc(p->place, (size_t)p->capplace * sizeof *p->place);
   }
-  p->place[p->nplace++] = (bg_surface_place){s, sx, sy, sw, sh, x, y, scale};
+  p->place[p->nplace++] = (bg_surface_place){s, sx, sy, sw, sh, x, y, scale, 0};
 }
 
 void rp_outline(rp_doc *d, const char *title, int level, double y) {

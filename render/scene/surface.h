@@ -46,10 +46,16 @@ int bg_surface_png_write(const bg_scene *s, double scale, bg_strbuf *out);
  * anti-aliased clip edge still shows some of an item that lies just outside
  * it, within the edge pixel. */
 #define BG_PLACE_CULL_PAD 24.0
+/* raster > 0 draws the rectangle as an image of that many pixels per page
+ * point instead of as vectors, leaving out text smaller than
+ * BG_RASTER_MIN_TEXT pixels: the map of a huge diagram (report), whose
+ * every item would otherwise be recorded on one PDF page. */
+#define BG_RASTER_MIN_TEXT 2.0
 typedef struct bg_surface_place {
   const bg_scene *scene;
   double sx, sy, sw, sh;
   double x, y, scale;
+  double raster;
 } bg_surface_place;
 
 typedef struct bg_surface_page {

@@ -75,7 +75,7 @@ static void replay_text(cairo_t *cr, PangoContext *ctx, const bg_scene *s,
 }
 
 /* The caller holds the text lock (text_int.h). */
-static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
+static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip, double min_text) {
   cairo_font_options_t *fo = bg_text_font_options();
   cairo_set_font_options(cr, fo);
   cairo_font_options_destroy(fo);
@@ -91,8 +91,11 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
       bg_scene_item_box(s, it, b);
       if (b[2] < clip[0] || b[0] > clip[2] || b[3] < clip[1] || b[1] > clip[3]) continue;
     }
-    if (it->kind == BG_ITEM_TEXT) replay_text(cr, ctx, s, it);
-    else replay_shape(cr, s, it);
+    if (it->kind == BG_ITEM_TEXT) {
+      if (it->size >= min_text) replay_text(cr, ctx, s, it);
+    } else {
+      replay_shape(cr, s, it);
+    }
   }
   g_object_unref(ctx);
 }
@@ -100,8 +103,13 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip) {
 const char *bg_surface_cairo_version(void) { return CAIRO_VERSION_STRING; }
 const char *bg_surface_pango_version(void) { return PANGO_VERSION_STRING; }
 
-void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL); }
+void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL, 0); }
 
 void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]) {
-  replay_items(cr, s, clip);
+  replay_items(cr, s, clip, 0);
+}
+
+void bg_surface_replay_clipped_text(cairo_t *cr, const bg_scene *s, const double clip[4],
+                                    double min_text) {
+  replay_items(cr, s, clip, min_text);
 }

@@ -15,6 +15,9 @@ void bg_surface_replay(cairo_t *cr, const bg_scene *s);
  * rectangle clip (x0, y0, x1, y1, in s's points): what a clipped placement
  * shows, at the cost of what it shows rather than of the whole scene. */
 void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]);
+/* The same, leaving out text items smaller than min_text (points of s). */
+void bg_surface_replay_clipped_text(cairo_t *cr, const bg_scene *s, const double clip[4],
+                                    double min_text);
 /* A cairo_write_func_t appending to the bg_strbuf passed as closure. */
 cairo_status_t bg_surface_sink(void *closure, const unsigned char *data, unsigned int len);
 /* Ends a drawing: destroys cr, finishes and destroys sf; 0 if neither the

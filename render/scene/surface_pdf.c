@@ -3,6 +3,7 @@
  * date from the clock and ignores SOURCE_DATE_EPOCH, so we set it ourselves
  * (from SOURCE_DATE_EPOCH when set, else a fixed date) for reproducible files. */
 #include <cairo-pdf.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -45,7 +46,37 @@ int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
 }
 
 /* ---------------------------------------------------------------- multi-page */
+/* A placement drawn as an image (surface.h): its items are rasterised at
+ * p->raster pixels per page point, text too small to read left out, and the
+ * page gets one image instead of every path and glyph of the region. */
+static void draw_place_raster(cairo_t *cr, const bg_surface_place *p) {
+  double k = p->raster, px = p->scale * k; /* pixels per point of the placed scene */
+  int w = (int)ceil(p->sw * px), h = (int)ceil(p->sh * px);
+  if (w < 1 || h < 1 || w > 32000 || h > 32000) return;
+  cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+  cairo_t *ic = cairo_create(img);
+  cairo_scale(ic, px, px);
+  cairo_translate(ic, -p->sx, -p->sy);
+  const double pad = BG_PLACE_CULL_PAD, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
+  bg_surface_replay_clipped_text(ic, p->scene, clip, BG_RASTER_MIN_TEXT / px);
+  cairo_destroy(ic);
+  cairo_surface_flush(img);
+  cairo_save(cr);
+  cairo_rectangle(cr, p->x, p->y, p->sw * p->scale, p->sh * p->scale);
+  cairo_clip(cr);
+  cairo_translate(cr, p->x, p->y);
+  cairo_scale(cr, 1 / k, 1 / k);
+  cairo_set_source_surface(cr, img, 0, 0);
+  cairo_paint(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(img);
+}
+
 static void draw_place(cairo_t *cr, const bg_surface_place *p) {
+  if (p->raster > 0) {
+    draw_place_raster(cr, p);
+    return;
+  }
   cairo_save(cr);
   cairo_rectangle(cr, p->x, p->y, p->sw * p->scale, p->sh * p->scale);
   cairo_clip(cr);

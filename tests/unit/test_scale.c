@@ -143,7 +143,7 @@ static void page_pdf(const bg_scene *s, double clip_x, bg_strbuf *out) {
   bg_scene page;
   bg_scene_init(&page, "DejaVu Sans");
   page.width = 300, page.height = 300;
-  bg_surface_place pl = {s, clip_x, 0, 100, 100, 10, 10, 1};
+  bg_surface_place pl = {s, clip_x, 0, 100, 100, 10, 10, 1, 0};
   bg_surface_page pg = {&page, &pl, 1};
   OK(bg_surface_pdf_pages(&pg, 1, NULL, 0, NULL, out) == 0);
   bg_scene_free(&page);
