@@ -248,6 +248,55 @@ static void test_crop(void) {
   bg_scene_free(&a), bg_scene_free(&k);
 }
 
+static int has_image(const bg_strbuf *b) {
+  const char *key = "/Subtype /Image";
+  size_t n = strlen(key);
+  for (size_t i = 0; i + n <= b->len; i++)
+    if (!memcmp(b->s + i, key, n)) return 1;
+  return 0;
+}
+
+static void raster_pdf(const bg_scene *s, double raster, bg_strbuf *out) {
+  bg_scene page;
+  bg_scene_init(&page, "DejaVu Sans");
+  page.width = 300, page.height = 300;
+  bg_surface_place pl = {s, 0, 0, 100, 100, 10, 10, 1, raster};
+  bg_surface_page pg = {&page, &pl, 1};
+  OK(bg_surface_pdf_pages(&pg, 1, NULL, 0, NULL, out) == 0);
+  bg_scene_free(&page);
+}
+
+/* A placement drawn as an image (the report's map of a huge diagram):
+ * the page holds one image whatever the number of items, where the vector
+ * placement holds every item; and raster 0 is the vector placement. */
+static void test_raster_place(void) {
+  size_t vec[2], ras[2];
+  for (int k = 0; k < 2; k++) {
+    bg_scene a;
+    bg_scene_init(&a, "DejaVu Sans");
+    a.width = a.height = 100;
+    int n = k ? 4000 : 200;
+    for (int i = 0; i < n; i++) { /* lines at scattered heights, so they do not compress away */
+      line_item(&a, (i * 37) % 90, (i * 37) % 90 + 10, "line");
+      a.op[a.nop - 1].y[0] = a.op[a.nop - 2].y[0] = (i * 7919) % 1000 / 10.0;
+    }
+    bg_scene_text(&a, "big", 50, 20, 11, 0.5, 0, (bg_rgba){0, 0, 0, 1}, "text");
+    bg_strbuf pv = {0}, pr = {0}, p0 = {0}, pp = {0};
+    raster_pdf(&a, 3, &pr);
+    raster_pdf(&a, 0, &pv);
+    page_pdf(&a, 0, &pp);
+    OK(pv.len == pp.len && !memcmp(pv.s, pp.s, pv.len));
+    OK(pr.len > 0 && has_image(&pr));
+    OK(!has_image(&pv));
+    vec[k] = pv.len, ras[k] = pr.len;
+    bg_sb_free(&pv), bg_sb_free(&pr), bg_sb_free(&p0), bg_sb_free(&pp);
+    bg_scene_free(&a);
+  }
+  fprintf(stderr, "raster place: vectors %zu -> %zu bytes, image %zu -> %zu\n", vec[0], vec[1], ras[0], ras[1]);
+  OK(vec[1] > 3 * vec[0]);     /* vectors: every item on the page */
+  OK(ras[1] < ras[0] + 20000); /* an image: bounded by its pixels */
+}
+
 int main(void) {
   test_find_elem();
   test_find_bond();
@@ -256,5 +305,6 @@ int main(void) {
   test_obstacle_segments();
   test_clipped_place();
   test_crop();
+  test_raster_place();
   return bg_t_done();
 }
