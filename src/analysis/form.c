@@ -503,6 +503,7 @@ typedef struct lindep {
   double *d, *abs_d;
   long work;
   int cut1; /* 1 + a node whose out-edges are ignored (a loop cut open), or 0 */
+  double sum; /* the last decided derivative */
 } lindep;
 
 #define LINDEP_BUDGET 20000000L
@@ -562,6 +563,7 @@ static int lin_depends_dense(lindep *L, int nr, const int *from, int n1, const i
   }
   free(A);
   if (!ok || !isfinite(sum)) return -1;
+  L->sum = sum;
   return fabs(sum) > 1e-12 * scale;
 }
 
@@ -625,16 +627,87 @@ static int lin_depends(lindep *L, const int *from, int n1, const int *to, const 
     scale += fabs(w[i]) * L->abs_d[to[i]];
   }
   if (!isfinite(sum) || !isfinite(scale)) return -1;
+  L->sum = sum;
   return fabs(sum) > 1e-12 * scale;
 }
 
+/* Whether the junction equations of every conflict junction, taken
+ * together, determine the variables those junctions put out. The signal flow
+ * graph has no edges at a conflict junction (sfg.c), so a conflict's own test
+ * above cannot see a dependence that passes through another conflict
+ * junction: seed 1710 (docs/property.md, finding 6), a 1-junction joined to a
+ * 0-junction in conflict by two bonds, whose balance of efforts fixes the
+ * 0-junction's effort and, through its flow balance, its own flow. Here every
+ * bond of a conflict junction gives one unknown, the variable the junction
+ * puts out on it (the conjugate of the one it receives), and the junction one
+ * equation per bond (a 0-junction: its efforts equal the first bond's and its
+ * flows balance; a 1-junction the dual); the linearised Jacobian of the
+ * equations in the unknowns (the received variables through the graph without
+ * integrator edges) must have full rank. Undecided (a cycle the dense solve
+ * cannot pass, the budget, more than 64 unknowns) is no. */
+#define JUNCTION_UNKNOWNS_MAX 64
+static int conflict_junctions_solvable(const bg_model *m, const bg_analysis *a, lindep *L) {
+  int n = 0, *node = bg_xcalloc((size_t)m->nelem + 1, sizeof(int)), nj = 0;
+  for (int c = 0; c < a->nconflict; c++) {
+    int j = a->conflict_node[c], k = m->elem_kind[j], dup = 0;
+    for (int i = 0; i < nj; i++) dup |= node[i] == j;
+    if ((k == BG_ELEM_J0 || k == BG_ELEM_J1) && !dup) node[nj++] = j, n += m->elem_nbond[j];
+  }
+  if (n > JUNCTION_UNKNOWNS_MAX || !n) { free(node); return 0; }
+  int *unk = bg_xcalloc((size_t)n, sizeof(int)), *to = bg_xcalloc((size_t)n, sizeof(int));
+  double *M = bg_xcalloc((size_t)n * (size_t)n, sizeof(double)), *w = bg_xcalloc((size_t)n, sizeof(double)), big = 0;
+  int nu = 0, ok = 1;
+  for (int q = 0; q < nj; q++) {
+    const int *bs = m->elem_bonds + m->elem_bondadr[node[q]];
+    for (int i = 0; i < m->elem_nbond[node[q]]; i++)
+      unk[nu++] = bg_paths_effort_in(m, a, node[q], bs[i]) ? BG_SIG_FLOW(bs[i]) : BG_SIG_EFFORT(bs[i]);
+  }
+  for (int q = 0, row = 0; q < nj && ok; q++) {
+    int j = node[q], j0 = m->elem_kind[j] == BG_ELEM_J0, nb = m->elem_nbond[j];
+    const int *bs = m->elem_bonds + m->elem_bondadr[j];
+    for (int eq = 0; eq < nb && ok; eq++, row++) {
+      int nt; /* equation eq < nb - 1: common(b[eq + 1]) - common(b[0]); the last: the balance */
+      if (eq < nb - 1) {
+        to[0] = j0 ? BG_SIG_EFFORT(bs[eq + 1]) : BG_SIG_FLOW(bs[eq + 1]), w[0] = 1;
+        to[1] = j0 ? BG_SIG_EFFORT(bs[0]) : BG_SIG_FLOW(bs[0]), w[1] = -1, nt = 2;
+      } else
+        for (nt = 0; nt < nb; nt++)
+          to[nt] = j0 ? BG_SIG_FLOW(bs[nt]) : BG_SIG_EFFORT(bs[nt]), w[nt] = m->bond_head[bs[nt]] == j ? 1 : -1;
+      for (int u = 0; u < n && ok; u++) {
+        int d = lin_depends(L, unk + u, 1, to, w, nt);
+        if (d < 0) ok = 0;
+        M[(size_t)row * n + u] = d == 1 ? L->sum : 0;
+        if (fabs(M[(size_t)row * n + u]) > big) big = fabs(M[(size_t)row * n + u]);
+      }
+    }
+  }
+  for (int c = 0; c < n && ok; c++) { /* Gaussian elimination, partial pivoting */
+    int piv = c;
+    for (int i = c + 1; i < n; i++)
+      if (fabs(M[(size_t)i * n + c]) > fabs(M[(size_t)piv * n + c])) piv = i;
+    if (!(fabs(M[(size_t)piv * n + c]) > 1e-9 * big)) { ok = 0; break; }
+    for (int k = 0; k < n; k++) {
+      double t = M[(size_t)c * n + k];
+      M[(size_t)c * n + k] = M[(size_t)piv * n + k], M[(size_t)piv * n + k] = t;
+    }
+    for (int i = c + 1; i < n; i++) {
+      double f = M[(size_t)i * n + c] / M[(size_t)c * n + c];
+      for (int k = c; k < n; k++) M[(size_t)i * n + k] -= f * M[(size_t)c * n + k];
+    }
+  }
+  free(node), free(unk), free(to), free(M), free(w);
+  return ok;
+}
+
 /* The first conflict at a junction whose equations do not determine its
- * algebraic variables, or -1; *bond gets the bond that shows it (type 2). */
+ * algebraic variables, or -1; *bond gets the bond that shows it (type 2).
+ * A conflict that fails its own test counts only when the conflict
+ * junctions' equations together do not determine their variables either. */
 static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g, int *bond) {
   size_t nn = (size_t)g->nnode + 1;
   lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
               bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
-              bg_xcalloc(nn, sizeof(double)), 0, 0};
+              bg_xcalloc(nn, sizeof(double)), 0, 0, 0};
   int *from = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int));
   int *to = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int)), found = -1;
   double *w = bg_xcalloc((size_t)m->nbondref + 2, sizeof(double));
@@ -672,6 +745,7 @@ static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg
     if (r == 0) found = c;
     if (L.work > LINDEP_BUDGET) break; /* out of budget: the rest taken as solvable */
   }
+  if (found >= 0 && conflict_junctions_solvable(m, a, &L)) found = -1;
   free(L.stamp), free(L.queue), free(L.indeg), free(L.d), free(L.abs_d);
   free(from), free(to), free(w);
   return found;
@@ -692,7 +766,7 @@ static int cloop_constrains_states(const bg_model *m, const bg_analysis *a, cons
   size_t nn = (size_t)g->nnode + 1;
   lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
               bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
-              bg_xcalloc(nn, sizeof(double)), 0, 0};
+              bg_xcalloc(nn, sizeof(double)), 0, 0, 0};
   int x = a->cloop_bonds[a->cloop_adr[l]], e = BG_SIG_EFFORT(x), f = BG_SIG_FLOW(x);
   double w = 1;
   L.cut1 = 1 + e; /* the effort loop cut open at e_x: what reaches it from f_x */
