@@ -135,6 +135,14 @@ static int mergeable(tx_ctx *c, int p, int *keep, int *drop, bg_strbuf *f, int *
                  m->xnode[x].loc.line, m->elem_name[*drop]);
     return 0;
   }
+  /* the kept store's state becomes both stores' (p1 + p2): a reader of it
+   * would change the dynamics (its flow or effort keeps its value) */
+  for (x = 0; x < m->nxnode; x++)
+    if (m->xnode[x].op == BG_X_STORE && m->xnode[x].ref == *keep) {
+      bg_sb_printf(&c->problem, "line %d reads the state of %s, which the merge makes the sum of "
+                   "both stores' states", m->xnode[x].loc.line, m->elem_name[*keep]);
+      return 0;
+    }
   return 1;
 }
 

@@ -100,6 +100,10 @@ static void collect(tx_ctx *c, plan *p) {
   }
   for (int k = 0; k < a->nconflict; k++) {
     int j = a->conflict_node[k];
+    /* a conflict at a TF or GY (both ports want the same variable) has no
+     * junction to carry a store: a bond to the two-port would make it a
+     * three-port, which does not compile (property campaign, seed 170) */
+    if (m->elem_kind[j] != BG_ELEM_J0 && m->elem_kind[j] != BG_ELEM_J1) continue;
     if (a->conflict_type[k] != 1) {
       /* type 2 of degree d: d + 1 bonds want to set the common variable; the
        * first stays, each other one gets a junction of the other type with a
