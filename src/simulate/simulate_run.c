@@ -579,6 +579,11 @@ static int run_restart(simrun *R, double tb, double tnext) {
   R->tcur = tb;
   modes_now(R, NULL);
   if (R->p->kind != BG_SIM_IDA) return CVodeReInit(R->mem, tb, R->y);
+  /* the algebraic rows at the inputs' new values first, as at the start
+   * (bg_eqsys_initial): IDACalcIC's Newton has no rate of a dependent store
+   * to move, and from the old values it failed on a DAE of dependent stores
+   * driven by a step (property campaign, docs/property.md finding 7) */
+  bg_eqsys_consistent(R->s, tb, N_VGetArrayPointer(R->y), 30);
   int f = IDAReInit(R->mem, tb, R->y, R->yp);
   return f < 0 ? f : settle(R, tnext);
 }
