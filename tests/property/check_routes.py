@@ -1,0 +1,399 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The property campaign's checks of other routes to the same numbers
+(docs/property.md): the Python export and the FMU against bgdraw's run, the
+reduced form against the full DAE, the linear model's step response against
+the simulation of a small step, the index reduction against parasitic
+stores as they shrink. check.py calls routes(...) after its own checks.
+
+The SciPy side runs in tests/property/scipy_run.py under a Python with NumPy
+and SciPy (PROP_PYTHON, default Debian's /usr/bin/python3): the campaign's
+own Python needs neither.
+"""
+import copy
+import json
+import os
+import re
+import subprocess
+import xml.etree.ElementTree as ET
+import zipfile
+
+import check as ck
+from gen import Elem
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCIPY_RUN = os.path.join(HERE, "scipy_run.py")
+EXPORT_PY_EVERY = 10   # the Python export for one model in 10 (by seed; the C export takes seed % 10 == 0)
+FMU_EVERY = 10         # the FMU (compiled by bgdraw) for one model in 10, seed % 10 == 5
+ROUTE_EVERY = 3        # the reduced form (seed % 3 == 1) and the step response (seed % 3 == 2):
+                       # each starts SciPy (0.3 s), more than the rest of a model's checks
+CHECKS = ["export_py", "fmu", "reduced_form", "step_response", "parasitic"]
+
+
+def scipy_python():
+    return os.environ.get("PROP_PYTHON", "/usr/bin/python3")
+
+
+def _scipy(res, name, args):
+    """Runs scipy_run.py; True when it wrote its CSV (exit 0), else records
+    a skip (exit 2: the route does not apply) or a failure."""
+    try:
+        p = subprocess.run([scipy_python(), SCIPY_RUN] + args, capture_output=True, timeout=ck.TIME_LIMIT * 4)
+    except subprocess.TimeoutExpired:
+        res[name] = ("fail", "scipy_run.py %s: no answer within %d s" % (args[0], ck.TIME_LIMIT * 4))
+        return False
+    err = p.stderr.decode("utf-8", "replace").strip()
+    if p.returncode == 2:
+        res[name] = ("skip", err.splitlines()[-1] if err else "does not apply")
+    elif p.returncode != 0:
+        res[name] = ("fail", "scipy_run.py %s: exit status %d\n%s" % (args[0], p.returncode, err[-1500:]))
+    return p.returncode == 0
+
+
+def compare(res, name, what, ref_path, path, rel=1e-5, cols=None):
+    """Every column of path against the same-named column of the reference
+    CSV on the same times, to rel of the reference column's range (plus
+    1e-9): records pass or fail under name."""
+    rh, rr = ck.read_csv(ref_path)
+    h, rows = ck.read_csv(path)
+    if len(rows) != len(rr) or any(abs(a[0] - b[0]) > 1e-9 * (1 + abs(b[0])) for a, b in zip(rows, rr)):
+        res[name] = ("fail", "%s: %d rows, bgdraw's %d" % (what, len(rows), len(rr)))
+        return
+    for j, c in enumerate(h):
+        if j == 0 or (cols is not None and c not in cols):
+            continue
+        if c not in rh:
+            res[name] = ("fail", "%s: column %s not in bgdraw's CSV" % (what, c))
+            return
+        k = rh.index(c)
+        col = [r[k] for r in rr]
+        span = max(col) - min(col) + 1e-9 * max(1.0, max(abs(v) for v in col))
+        for a, b in zip(rows, rr):
+            if not abs(a[j] - b[k]) <= rel * span + 1e-9:
+                res[name] = ("fail", "%s at t = %g: %s %.12g, bgdraw %.12g (range %.3g)" % (
+                    c, b[0], what, a[j], b[k], span))
+                return
+    res[name] = ("pass", "")
+
+
+def routes(res, bgdraw, m, workdir, seed, an, rows):
+    for c in CHECKS:
+        res[c] = ("skip", "")
+    _export_py(res, bgdraw, m, workdir, seed, an, rows)
+    _fmu(res, bgdraw, m, workdir, seed, an, rows)
+    if seed % ROUTE_EVERY == 1 or not ck.SAMPLE:
+        _reduced_form(res, bgdraw, workdir, an, rows)
+    else:
+        res["reduced_form"] = ("skip", "one model in %d" % ROUTE_EVERY)
+    if seed % ROUTE_EVERY == 2 or not ck.SAMPLE:
+        _step_response(res, bgdraw, m, workdir)
+    else:
+        res["step_response"] = ("skip", "one model in %d" % ROUTE_EVERY)
+    _parasitic(res, bgdraw, m, workdir, an, rows)
+
+
+def _plain_run(an, rows):
+    """Why bgdraw's run is no reference for another route, or None."""
+    if rows is None:
+        return "no simulation"
+    if ck._dae_repaired(an):
+        return "index reduced or initial values made consistent"
+    return None
+
+
+def _export_py(res, bgdraw, m, workdir, seed, an, rows):
+    """The Python export (-o NAME.py) simulated by its own simulate()
+    (SciPy's solve_ivp, BDF, rtol 1e-10) reproduces bgdraw's CSV to 1e-5 of
+    every column's range."""
+    why = "one model in %d" % EXPORT_PY_EVERY if seed % EXPORT_PY_EVERY != 5 and ck.SAMPLE else _plain_run(an, rows)
+    if why is None and (an.get("simulation") or {}).get("events"):
+        why = "switching conditions (tests/export_events.sh checks the export's events)"
+    if why:
+        res["export_py"] = ("skip", why)
+        return
+    w = lambda n: os.path.join(workdir, n)
+    p = subprocess.run([bgdraw, w("m.bg"), "-q", "-o", w("prop_model.py")], capture_output=True, timeout=ck.TIME_LIMIT)
+    if p.returncode != 0:
+        res["export_py"] = ("fail", "the export: exit status %d\n%s" % (p.returncode, p.stderr.decode()[-500:]))
+        return
+    if _scipy(res, "export_py", ["pyexport", workdir, "prop_model", w("m.csv"), w("py.csv")]):
+        compare(res, "export_py", "Python export", w("m.csv"), w("py.csv"))
+
+
+def _fmu(res, bgdraw, m, workdir, seed, an, rows):
+    """The FMU (-o NAME.fmu, compiled by bgdraw) run by the suite's own FMI
+    importer (tests/export/fmu_import.c: RK4 at 100 steps per output
+    interval, state events located by bisection) reproduces bgdraw's CSV to
+    1e-5 of every column's range (the first 60 outputs: the importer's
+    limit is 64)."""
+    why = "one model in %d" % FMU_EVERY if seed % FMU_EVERY != 5 and ck.SAMPLE else _plain_run(an, rows)
+    if why is None and an["form"] != "ode":
+        why = "a DAE (FMI 2.0 Model Exchange: ODE models only)"
+    if why:
+        res["fmu"] = ("skip", why)
+        return
+    w = lambda n: os.path.join(workdir, n)
+    p = subprocess.run([bgdraw, w("m.bg"), "-q", "--prefix", "pfmu", "-o", w("m.fmu")], capture_output=True,
+                       timeout=ck.TIME_LIMIT * 4)
+    if p.returncode == 3:
+        res["fmu"] = ("skip", "refused: " + p.stderr.decode()[-200:].strip())
+        return
+    if p.returncode != 0:
+        res["fmu"] = ("fail", "the export: exit status %d\n%s" % (p.returncode, p.stderr.decode()[-500:]))
+        return
+    z = zipfile.ZipFile(w("m.fmu"))
+    z.extract("binaries/linux64/pfmu.so", w("fmu"))
+    md = ET.fromstring(z.read("modelDescription.xml"))
+    nx = len(md.findall("./ModelStructure/Derivatives/Unknown"))
+    nz = int(md.get("numberOfEventIndicators", "0"))
+    outs = [(v.get("name"), v.get("valueReference")) for v in md.iter("ScalarVariable")
+            if v.get("causality") == "output"][:60]
+    if nx > 64 or nz > 64:
+        res["fmu"] = ("skip", "more than 64 states or event indicators (the importer's limit)")
+        return
+    head, ref = ck.read_csv(w("m.csv"))
+    names = [re.sub(r"^out\((.*)\)$", r"\1", n) for n, _ in outs]
+    if names != head[1:1 + len(names)]:
+        res["fmu"] = ("fail", "outputs %s, the CSV's %s" % (names[:4], head[1:5]))
+        return
+    with open(w("fmu_ref.csv"), "w") as f:  # the first 60 columns: the importer's line and output limits
+        f.write(",".join(head[:1 + len(names)]) + "\n")
+        for r in ref:
+            f.write(",".join("%.17g" % v for v in r[:1 + len(names)]) + "\n")
+    steps = [["cc", "-std=c11", "-D_POSIX_C_SOURCE=200809L", "-O1", "-w",
+              os.path.join(HERE, "..", "export", "fmu_import.c"), "-o", w("fmu_import"), "-ldl"],
+             [w("fmu_import"), w("fmu/binaries/linux64/pfmu.so"), md.get("guid"), str(nx), w("fmu_ref.csv"),
+              w("fmu.csv"), ",".join(vr for _, vr in outs), "nz=%d" % nz]]
+    for cmd in steps:
+        p = subprocess.run(cmd, capture_output=True, timeout=ck.TIME_LIMIT * 4)
+        if p.returncode != 0:
+            res["fmu"] = ("fail", "%s: exit status %d\n%s" % (os.path.basename(cmd[0]), p.returncode,
+                                                              p.stderr.decode("utf-8", "replace")[-800:]))
+            return
+    compare(res, "fmu", "FMU", w("fmu_ref.csv"), w("fmu.csv"))
+
+
+def _reduced_form(res, bgdraw, workdir, an, rows):
+    """The reduced form (--equations json, key `reduced`: the explicit ODE
+    after symbolic elimination, docs/equations.md) integrated by SciPy from
+    the run's first row gives the states and dependent stores of bgdraw's
+    run of the full equations (IDA on the DAE, or CVODE), to 1e-5 of each
+    column's range."""
+    why = _plain_run(an, rows)
+    if why is None and an.get("reduced_form") != "ode":
+        why = "no reduced ODE (reduced form %s)" % an.get("reduced_form")
+    if why is None and re.search(r"step\(|table\(t", open(os.path.join(workdir, "m.bg")).read()):
+        # the reduced ODE holds between input breakpoints; at a step a state
+        # that follows the input (a capacitor across an effort source,
+        # combined into the reduced states) jumps, which x' = ... cannot show
+        # (docs/property.md, finding 10); bgdraw restarts there from the
+        # constraints
+        why = "input breakpoints (the reduced ODE holds between them)"
+    if why:
+        res["reduced_form"] = ("skip", why)
+        return
+    w = lambda n: os.path.join(workdir, n)
+    p = subprocess.run([bgdraw, w("m.bg"), "-q", "--equations", "json"], capture_output=True, timeout=ck.TIME_LIMIT)
+    if p.returncode != 0:
+        res["reduced_form"] = ("fail", "--equations json: exit status %d" % p.returncode)
+        return
+    with open(w("eq.json"), "wb") as f:
+        f.write(p.stdout)
+    if _scipy(res, "reduced_form", ["reduced", w("eq.json"), w("m.csv"), w("red.csv")]):
+        compare(res, "reduced_form", "reduced form", w("m.csv"), w("red.csv"))
+
+
+STEP = 1e-3  # the small step: cubic laws stay linear to 1e-6 of it
+
+
+def _step_variant(m):
+    """The model at rest with every source 0 but one, which steps by STEP at
+    T1 (between two output rows): switching laws take their first slope (a
+    kink at rest has no linearisation), time-modulated two-ports their
+    constant part; cubic laws, tables (linear near 0) and modulation by
+    states and detectors stay. Returns (text, source name, T1, outputs)."""
+    v = m.copy()
+    v.elems = []
+    for x in m.elems:
+        x = copy.copy(x)
+        d = re.sub(r"\s*\[(?:[qp]0 = [^\]]+|q0 = \([^)]*\))\]", "", x.decl)
+        if x.kind == "R":
+            mm = re.match(r": e = if\(f > 0, ([0-9.e+-]+)\*f", d)
+            d = "= " + mm.group(1) if mm else d
+        elif x.kind in ("MTF", "MGY") and "sin(t)" in d:
+            x.kind = x.word = x.kind[1:]
+            d = "= " + re.match(r"= ([0-9.e+-]+)", d).group(1)
+        elif x.kind in ("Se", "Sf") or (x.kind in ("MSe", "MSf") and not x.mods):
+            x.kind = x.word = x.kind.lstrip("M")
+            d, x.mods = "= 0", []
+        x.decl = d
+        v.elems.append(x)
+    t_end = float(re.search(r"t_end = ([0-9.e+-]+)", m.sim).group(1))
+    dt = t_end / 40
+    t1 = 5.5 * dt
+    plain = sorted((x.name for x in v.elems if x.kind in ("Se", "Sf")), key=lambda n: ck._natural(n))
+    if plain:
+        src = plain[0]
+        x = v.elem(src)
+        k = v.elems.index(x)
+        v.elems[k] = copy.copy(x)
+        v.elems[k].decl = "= %g*step(t - %.17g)" % (STEP, t1)
+    else:
+        juncs = [x for x in v.elems if x.kind in ("0", "1")]
+        if not juncs:
+            return None
+        src = "Uprop"
+        v.elems.append(Elem("Se", src, "= %g*step(t - %.17g)" % (STEP, t1)))
+        v.bonds.append([max(b[0] for b in v.bonds) + 1, src, juncs[0].name])
+    kinds = {x.name: x.kind for x in v.elems}
+    outs = ["%s.%s" % (x.name, x.states[0]) for x in v.elems if x.kind in ("C", "I")]
+    for b in v.bonds:
+        if "R" in (kinds.get(b[1]), kinds.get(b[2])):
+            outs += ["e%d" % b[0], "f%d" % b[0]]
+    outs = outs[:40]
+    if not outs:
+        return None
+    names = ["y%d" % i for i in range(len(outs))]
+    text = v.text()
+    text = re.sub(r"\nsimulate .*\n", "\nsimulate t_end = %g, dt = %.17g, rtol = 1e-10, atol = 1e-15\n" % (
+        t_end, dt), text)
+    text = re.sub(r"\nplot .*\n", "\noutput " + ", ".join("%s = %s" % (n, o) for n, o in zip(names, outs)) +
+                  "\nplot " + ", ".join(outs) + "\n", text)
+    return text, src, t1, names
+
+
+def _step_response(res, bgdraw, m, workdir):
+    """The linear model's step response is the simulation of a small step:
+    the model at rest, one source stepping by STEP (_step_variant), simulated
+    by bgdraw, against the step response of the state space of its
+    `--linear json` at the initial point (rest: A, B, C, D) computed exactly
+    (scipy_run.py step), at every output (stores' states, resistors' effort
+    and flow) to 1e-5 of its range."""
+    sv = _step_variant(m)
+    if sv is None:
+        res["step_response"] = ("skip", "no junction for a source")
+        return
+    text, src, t1, names = sv
+    w = lambda n: os.path.join(workdir, n)
+    lin = ck.run(bgdraw, text, workdir, "m_st", ["--linear", "json"], [])
+    if not ck._robust(res, lin, "linear"):
+        res["step_response"] = ("fail", "crashed or hung")
+        return
+    try:
+        L = json.loads(lin.out)
+    except ValueError:
+        L = None
+    if lin.status != 0 or not L or L.get("status") != "ok" or not L.get("state_space"):
+        res["step_response"] = ("skip", "no linear analysis" + (": " + L["reduce_note"] if L and L.get("reduce_note") else ""))
+        return
+    if src not in L["inputs"] or [o for o in L["outputs"] if o in names] != names:  # detectors add outputs
+        res["step_response"] = ("fail", "inputs %s, outputs %s" % (L["inputs"], L["outputs"][:4]))
+        return
+    if any(p["re"] > 1e-9 for p in L.get("poles") or []):
+        res["step_response"] = ("skip", "unstable: the response leaves the small-signal range")
+        return
+    r = ck.run(bgdraw, text, workdir, "m_st", ["--simulate"], ["csv", "json"])
+    if not ck._robust(res, r, "step_response"):
+        res["step_response"] = ("fail", "crashed or hung")
+        return
+    if r.status != 0:
+        res["step_response"] = ("skip", "the step's run stops (exit %d)" % r.status)
+        return
+    if ck._dae_repaired(json.load(open(r.files["json"]))):
+        res["step_response"] = ("skip", "index reduced or initial values made consistent")
+        return
+    head, rows = ck.read_csv(r.files["csv"])
+    with open(w("st_sim.csv"), "w") as f:  # the plot's columns under the outputs' names
+        f.write(",".join(["t"] + names) + "\n")
+        for row in rows:
+            f.write(",".join("%.17g" % v for v in row) + "\n")
+    with open(w("st_lin.json"), "wb") as f:
+        f.write(lin.out)
+    if _scipy(res, "step_response", ["step", w("st_lin.json"), w("st_sim.csv"), w("st_lin.csv"), src,
+                                     "%.17g" % STEP, "%.17g" % t1]):
+        compare(res, "step_response", "linear step response", w("st_sim.csv"), w("st_lin.csv"), cols=names)
+
+
+def _parasitic(res, bgdraw, m, workdir, an, rows):
+    """Index reduction against parasitic stores (the chapter's Section 4.3):
+    for a model whose run reduced the index, `--transform parasitic` adds
+    small stores where the analysis names the problem; run at the stated
+    value and at 1/100 of it (each new store starting at the reduced run's
+    value of its junction's variable, so neither starts off the constraint),
+    the deviation from the reduced run (largest over the columns, relative
+    to each column's range, after the first row: the fast stores' initial
+    layer, where variables that follow derivatives have not yet met the
+    reduced run's) shrinks with the parameter (to 0.3 of the first or below
+    1e-6) and ends below 1e-2."""
+    red = ((an.get("index") or {}).get("reduction") or {}).get("status")
+    if rows is None or red != "reduced":
+        res["parasitic"] = ("skip", "the run did not reduce the index" if rows is not None else "no simulation")
+        return
+    w = lambda n: os.path.join(workdir, n)
+    if os.path.exists(w("par.bg")):
+        os.remove(w("par.bg"))
+    tr = ck.run(bgdraw, m.text(), workdir, "m_par", ["--transform", "parasitic", "-o", w("par.bg")], [])
+    if not ck._robust(res, tr, "parasitic"):
+        res["parasitic"] = ("fail", "crashed or hung")
+        return
+    if tr.status != 0:
+        why = [ln for ln in tr.err.splitlines() if "error" in ln]
+        res["parasitic"] = ("skip", "the transformation does not apply" + (
+            ": " + why[0].split("does not apply to prop: ")[-1][:100] if why else ""))
+        return
+    if "internal error" in tr.err:
+        res["parasitic"] = ("fail", tr.err[-300:])
+        return
+    text = open(w("par.bg")).read()
+    params = dict(re.findall(r"^param (\w+) = ([0-9.e+-]+)", text, re.M))
+    stores = re.findall(r"^([CI])\s+(\w+) = (\w+)$", text, re.M)
+    stores = [(k, n, p) for k, n, p in stores if p in params]
+    bonds = re.findall(r"^bond (\d+) (\S+) -> (\S+)$", text, re.M)
+    head, _ = ck.read_csv(w("m.csv"))
+    orig = {b[0] for b in m.bonds}
+    for x in m.stores():  # every store from the reduced run's consistent start
+        if x.kind not in ("C", "I", "CF"):
+            res["parasitic"] = ("skip", "a store the check cannot restart (%s)" % x.kind)
+            return
+        vals = [rows[0][head.index("%s.%s" % (x.name, st))] for st in x.states]
+        init = "[%s0 = %s]" % ("p" if x.kind == "I" else "q", "%.17g" % vals[0] if len(vals) == 1 else
+                               "(%s)" % ", ".join("%.17g" % v for v in vals))
+        pat = re.compile(r"^(%s\s+%s\b.*?)(\s*\[[qp]0 = [^\]]*\])?$" % (x.word, x.name), re.M)
+        text = pat.sub(lambda mm: mm.group(1) + " " + init, text, count=1)
+    devs = []
+    for scale in (1.0, 0.01):
+        t = text
+        for k, n, p in stores:
+            j = [b[1] if b[2] == n else b[2] for b in bonds if n in (b[1], b[2])][0]
+            nums = [int(b[0]) for b in bonds if j in (b[1], b[2]) and int(b[0]) in orig]
+            if not nums:
+                res["parasitic"] = ("fail", "the store %s sits at %s, which has no bond of the model" % (n, j))
+                return
+            col = head.index(("e%d" if k == "C" else "f%d") % nums[0])
+            value = float(params[p]) * scale
+            t = re.sub(r"^param %s = [0-9.e+-]+" % p, "param %s = %.17g" % (p, value), t, flags=re.M)
+            t = re.sub(r"^(%s\s+%s = %s)$" % (k, n, p), r"\1 [%s0 = %.17g]" % ("q" if k == "C" else "p",
+                                                                             value * rows[0][col]), t, flags=re.M)
+        r = ck.run(bgdraw, t, workdir, "m_par%d" % len(devs), ["--simulate"], ["csv"])
+        if not ck._robust(res, r, "parasitic"):
+            res["parasitic"] = ("fail", "crashed or hung")
+            return
+        if r.status != 0:
+            res["parasitic"] = ("skip", "the parasitic model's run stops (exit %d)" % r.status)
+            return
+        h, pr = ck.read_csv(r.files["csv"])
+        if h != head or len(pr) != len(rows):
+            res["parasitic"] = ("fail", "columns or rows differ from the reduced run's")
+            return
+        worst = (0.0, "")
+        for j in range(1, len(head)):
+            col = [x[j] for x in rows]
+            span = max(col) - min(col) + 1e-9 * max(1.0, max(abs(v) for v in col))
+            d = max(abs(a[j] - b[j]) for a, b in zip(rows[1:], pr[1:])) / span
+            worst = max(worst, (d, head[j]))
+        devs.append(worst)
+    (d1, c1), (d2, c2) = devs
+    if d2 > 1e-2 or (d2 > 0.3 * d1 and d2 > 1e-6):
+        res["parasitic"] = ("fail", "deviation from the reduced run %.3g (%s) at the stated value, %.3g (%s) "
+                            "at 1/100 of it" % (d1, c1, d2, c2))
+    else:
+        res["parasitic"] = ("pass", "%.3g -> %.3g" % (d1, d2))
