@@ -75,6 +75,20 @@ def compare(res, name, what, ref_path, path, rel=1e-5, cols=None):
     res[name] = ("pass", "")
 
 
+def _simulated(res, name, bgdraw, text, workdir, tag, outs, what):
+    """bgdraw --simulate on a variant: the Run when it ran to the end; else
+    None, with a failure recorded for a crash or hang, a skip (what stops)
+    for a stated stop."""
+    r = ck.run(bgdraw, text, workdir, tag, ["--simulate"], outs)
+    if not ck._robust(res, r, name):
+        res[name] = ("fail", "crashed or hung")
+    elif r.status != 0:
+        res[name] = ("skip", "%s stops (exit %d)" % (what, r.status))
+    else:
+        return r
+    return None
+
+
 def routes(res, bgdraw, m, workdir, seed, an, rows):
     for c in CHECKS:
         res[c] = ("skip", "")
@@ -291,12 +305,8 @@ def _step_response(res, bgdraw, m, workdir):
     if any(p["re"] > 1e-9 for p in L.get("poles") or []):
         res["step_response"] = ("skip", "unstable: the response leaves the small-signal range")
         return
-    r = ck.run(bgdraw, text, workdir, "m_st", ["--simulate"], ["csv", "json"])
-    if not ck._robust(res, r, "step_response"):
-        res["step_response"] = ("fail", "crashed or hung")
-        return
-    if r.status != 0:
-        res["step_response"] = ("skip", "the step's run stops (exit %d)" % r.status)
+    r = _simulated(res, "step_response", bgdraw, text, workdir, "m_st", ["csv", "json"], "the step's run")
+    if r is None:
         return
     if ck._dae_repaired(json.load(open(r.files["json"]))):
         res["step_response"] = ("skip", "index reduced or initial values made consistent")
@@ -373,12 +383,9 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
             t = re.sub(r"^param %s = [0-9.e+-]+" % p, "param %s = %.17g" % (p, value), t, flags=re.M)
             t = re.sub(r"^(%s\s+%s = %s)$" % (k, n, p), r"\1 [%s0 = %.17g]" % ("q" if k == "C" else "p",
                                                                              value * rows[0][col]), t, flags=re.M)
-        r = ck.run(bgdraw, t, workdir, "m_par%d" % len(devs), ["--simulate"], ["csv"])
-        if not ck._robust(res, r, "parasitic"):
-            res["parasitic"] = ("fail", "crashed or hung")
-            return
-        if r.status != 0:
-            res["parasitic"] = ("skip", "the parasitic model's run stops (exit %d)" % r.status)
+        r = _simulated(res, "parasitic", bgdraw, t, workdir, "m_par%d" % len(devs), ["csv"],
+                       "the parasitic model's run")
+        if r is None:
             return
         h, pr = ck.read_csv(r.files["csv"])
         if h != head or len(pr) != len(rows):
