@@ -5,8 +5,9 @@
 # changes), builds that bgdraw and runs a campaign on it, which must find the
 # error (and shrink it to a handful of bonds).
 # Usage: bash tests/property/plant.sh [N] [DIR] [PLANT] [SEED] [MAX_ELEMS]
-#   (from the project root; N models from SEED (default 1), up to MAX_ELEMS
-#   elements (default 30); DIR keeps the copy, its build and the shrunk models)
+#   (from the project root; N models from SEED (default 1; a comma list: those
+#   seeds, N ignored), up to MAX_ELEMS elements (default 30); DIR keeps the
+#   copy, its build and the shrunk models)
 # PLANT:
 #   tf          (default) src/equations/eqsys.c: in the TF whose side 1
 #               receives the effort, f1 = n f2 becomes f1 = -n f2
@@ -48,7 +49,8 @@ open(p, "w").write(s.replace(old, new, 1))
 PY
 cmake -S "$dir" -B "$dir/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$dir/build" -j"$(nproc)" --target bgdraw >/dev/null
-python3 "$root/tests/property/prop.py" "$dir/build/bgdraw" --count "$n" --seed "$seed" --max-elems "$max" \
+case $seed in *,*) which=(--seeds "$seed") ;; *) which=(--count "$n" --seed "$seed") ;; esac
+python3 "$root/tests/property/prop.py" "$dir/build/bgdraw" "${which[@]}" --max-elems "$max" \
   --found "$dir/found" --known reorder_reduced --known shuffled_outcome --known merge_stores_outcome &&
   { echo "plant.sh: the planted error ($plant) was not found"; exit 1; }
 ls "$dir/found"

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The property campaign's driver (docs/property.md).
 
-    prop.py BGDRAW [--count N] [--seed S] [--max-elems K] [--found DIR] [--jobs J] [--lib PROP_LIBJSON]
+    prop.py BGDRAW [--count N] [--seed S | --seeds S1,S2,...] [--max-elems K] [--found DIR] [--jobs J]
+                   [--lib PROP_LIBJSON]
     prop.py BGDRAW --model FILE.bg [--seed S] [--lib PROP_LIBJSON]
                                  every check on one model written by the generator
                                  (a shrunk finding of tests/property/found/): exit 1
@@ -226,6 +227,7 @@ def main():
     ap.add_argument("bgdraw", nargs="?")
     ap.add_argument("--count", type=int, default=300)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--seeds", help="a comma list of seeds instead of --count and --seed")
     ap.add_argument("--max-elems", type=int, default=100)
     ap.add_argument("--found", default=None)
     ap.add_argument("--jobs", type=int, default=1)
@@ -250,7 +252,8 @@ def main():
     known = set(a.known or [])
     nknown = 0
     lib = os.path.abspath(a.lib) if a.lib else None
-    jobs = [(bgdraw, s, a.max_elems, a.found, known, lib) for s in range(a.seed, a.seed + a.count)]
+    seeds = [int(x) for x in a.seeds.split(",")] if a.seeds else list(range(a.seed, a.seed + a.count))
+    jobs = [(bgdraw, s, a.max_elems, a.found, known, lib) for s in seeds]
     with ProcessPoolExecutor(max_workers=a.jobs) as ex:
         for k, (seed, size, res, why, shrunk) in enumerate(ex.map(one, jobs, chunksize=4)):
             sizes.append(size)
@@ -270,8 +273,9 @@ def main():
             if (k + 1) % 500 == 0:
                 print("... %d models, %d with a failure" % (k + 1, nfail), file=sys.stderr, flush=True)
                 print_table(table, sys.stderr)
-    print("%d models (seeds %d..%d), %d to %d elements (mean %.1f), %d with a failure" % (
-        a.count, a.seed, a.seed + a.count - 1, min(sizes), max(sizes), sum(sizes) / len(sizes), nfail))
+    print("%d models (seeds %s), %d to %d elements (mean %.1f), %d with a failure" % (
+        len(seeds), a.seeds or "%d..%d" % (a.seed, a.seed + a.count - 1), min(sizes), max(sizes),
+        sum(sizes) / len(sizes), nfail))
     print("%d models not simulated (exit status 3, the reason stated):" % sum(refused.values()))
     for k, v in sorted(refused.items(), key=lambda kv: -kv[1]):
         print("  %5d  %s" % (v, k))
