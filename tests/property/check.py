@@ -55,8 +55,9 @@ def run(bgdraw, text, workdir, tag, args, outs):
 
 
 def read_csv(path):
+    """The header and the rows (a failed run's CSV ends with a '# partial: ...' line)."""
     with open(path) as f:
-        rows = list(csv.reader(f))
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
     return rows[0], [[float(v) for v in r] for r in rows[1:]]
 
 
@@ -667,6 +668,9 @@ def _merge_stores(res, bgdraw, m, workdir):
     if stopped:
         a = a[:len(b)]
         res["merge_stores_outcome"] = ("fail", "the merged model: " + stopped)
+        if not b:
+            res["merge_stores"] = ("skip", "the merged model stops at its start")
+            return
     t = "row counts %d and %d" % (len(a), len(b)) if len(a) != len(b) or not b else ""
     for j in range(1, len(a[0]) if a and not t else 1):
         col = [x[j] for x in a]
