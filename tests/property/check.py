@@ -314,6 +314,12 @@ def _methods(res, bgdraw, m, text, workdir, an):
         return
     ref = _summary(an)
     for meth in ("relaxed", "vandijk"):
+        if meth == "vandijk" and ((p or 0) >= 2 or (k or 0) >= 2):
+            # van Dijk's method exists to take an index above 1 away: it makes
+            # the stores of the hidden constraints dependent where SCAP keeps
+            # them and the index reduction takes their states (seed 838: C5
+            # both ways, the same trajectories; docs/property.md finding 14)
+            continue
         r = run(bgdraw, text, workdir, "m_" + meth, ["--causality", meth], ["json"])
         if not _robust(res, r, meth):
             res["methods_agree"] = ("fail", "%s: crashed or hung" % meth)
@@ -324,7 +330,10 @@ def _methods(res, bgdraw, m, text, workdir, an):
         j = json.load(open(r.files["json"]))
         s = _summary(j)
         for key in ("states", "predicted"):
-            if s[key] == ref[key]:
+            if s[key] == ref[key] or (key == "predicted" and ix["numeric_status"] == "singular"):
+                # a singular pencil: the equations have no index for the
+                # predictions to agree on; every method's run refuses with that
+                # reason (docs/property.md, finding 14)
                 continue
             res["methods_agree"] = ("fail", "%s: %s %s, scap %s" % (meth, key, s[key], ref[key]))
             return
@@ -527,6 +536,8 @@ def _export_c(res, bgdraw, m, workdir, seed, an, rows):
         why = "one model in %d" % EXPORT_EVERY
     elif _dae_repaired(an):
         why = "index reduced or initial values made consistent"
+    elif not an["states"] and not an["dependent_stores"]:
+        why = "no state (the drivers' CVODE and IDA take no empty vector: seed 630 crashed driver.c)"
     elif "step(" in m.text() or "table(t" in m.text():
         why = "input breakpoints (the drivers integrate straight through)"
     elif switching and an["form"] != "ode":
