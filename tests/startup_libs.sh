@@ -3,8 +3,8 @@
 # Start-up (issue 19): a run that draws nothing loads none of the render
 # libraries (Graphviz, cairo, pango) and not the render module; a run that
 # draws loads the module once and gives the same diagram; a missing module
-# is an error with status 4, not a crash. LAPACK (issue 34) is opened only
-# by a run that calls it; missing, it is an error with status 4. Checked with the loader's own list
+# is an error with status 4, not a crash. LAPACK and SUNDIALS (issue 34) are
+# opened only by a run that calls them; missing, each is an error with status 4. Checked with the loader's own list
 # of the files it maps (LD_DEBUG=files), never with a clock.
 # Usage: bash tests/startup_libs.sh PATH_TO_BGDRAW   (from the project root)
 set -u
@@ -46,6 +46,27 @@ if [ $st = 4 ] && grep -q "cannot load LAPACK ($tmp/none.so)" "$tmp/err"; then o
 else bad "LAPACK missing: status $st, $(head -1 "$tmp/err")"; fi
 BGDRAW_LAPACKE=$tmp/none.so "$BGDRAW" examples/rlc.bg -o "$tmp/d.svg" 2>/dev/null && ok ||
   bad "a diagram needs LAPACK"
+# SUNDIALS likewise (src/simulate/simulate_sundials.h): 845 BIND_NOW
+# references and nine libraries in the global scope otherwise
+if echo "$libs" | grep -q 'libsundials'; then bad "a diagram run maps SUNDIALS: $(echo "$libs" | grep sundials | tr '\n' ' ')"
+else ok; fi
+if mapped examples/rlc.bg --check | grep -q 'libsundials'; then bad "--check maps SUNDIALS"; else ok; fi
+sim=$(mapped examples/rlc.bg --simulate -o "$tmp/s.csv")
+for lib in cvode ida nvecserial sunmatrixdense sunlinsoldense sunmatrixsparse sunlinsolklu; do
+  if [ "$(echo "$sim" | grep -c "libsundials_$lib\.")" = 1 ]; then ok; else bad "--simulate does not map libsundials_$lib once"; fi
+done
+# through the table the run gives its full grid of finite numbers (their
+# accuracy against exact solutions is tests/sim_accuracy.sh's)
+if [ "$(grep -c . "$tmp/s.csv")" -gt 100 ] && ! grep -qi 'nan\|inf' "$tmp/s.csv"; then ok
+else bad "--simulate with SUNDIALS opened on first use: $(head -c 200 "$tmp/s.csv")"; fi
+for var in CVODE IDA SUNLINSOLKLU; do
+  env "BGDRAW_SUNDIALS_$var=$tmp/none.so" "$BGDRAW" examples/rlc.bg --simulate -o "$tmp/m.csv" 2>"$tmp/err"
+  st=$?
+  if [ $st = 4 ] && grep -q "cannot load SUNDIALS ($tmp/none.so)" "$tmp/err" && [ ! -s "$tmp/m.csv" ]; then ok
+  else bad "SUNDIALS $var missing: status $st, $(head -1 "$tmp/err")"; fi
+done
+BGDRAW_SUNDIALS_CVODE=$tmp/none.so "$BGDRAW" examples/rlc.bg -o "$tmp/e.svg" 2>/dev/null && cmp -s "$tmp/e.svg" "$tmp/a.svg" && ok ||
+  bad "a diagram needs SUNDIALS"
 
 # --show alone must be checked by the module (an unknown layer is a usage error)
 if "$BGDRAW" examples/rlc.bg --show nonsense -o "$tmp/b.svg" 2>/dev/null; then bad "--show nonsense accepted"

@@ -20,6 +20,12 @@ function(bg_add_test name)
   add_executable(test_${name} ${CMAKE_SOURCE_DIR}/tests/unit/test_${name}.c)
   target_include_directories(test_${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/unit)
   target_link_libraries(test_${name} PRIVATE ${BG_LIBS})
+  # a test that drives SUNDIALS itself (an independent solution) links it; the
+  # engine opens it on first use (src/simulate/simulate_sundials.h)
+  file(STRINGS ${CMAKE_SOURCE_DIR}/tests/unit/test_${name}.c sun REGEX "^#include <(cvode|ida|nvector|sun)")
+  if(sun)
+    target_link_libraries(test_${name} PRIVATE ${BG_SUNDIALS_LIBS})
+  endif()
   target_compile_definitions(test_${name} PRIVATE
     BG_SOURCE_DIR="${CMAKE_SOURCE_DIR}" BG_BINARY_DIR="${CMAKE_BINARY_DIR}"
     BG_EXE="$<TARGET_FILE:bgdraw>")

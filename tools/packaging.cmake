@@ -68,28 +68,49 @@ set(CPACK_DEBIAN_LIBBGDRAW0_PACKAGE_CONTROL_EXTRA
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 set(CPACK_INSTALL_DEFAULT_DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE
     GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
-# LAPACKE is opened on first use (src/base/lapack.h), so no ELF file names it
-# and dpkg-shlibdeps cannot see it: the dependency is stated, the one
-# liblapacke's own shlibs file gives for the SONAME the build opens
-file(REAL_PATH ${LAPACKE_LIB} BG_LAPACKE_REAL)
-execute_process(COMMAND dpkg-query -S ${BG_LAPACKE_REAL} OUTPUT_VARIABLE BG_LAPACKE_OWNER
-                ERROR_QUIET OUTPUT_STRIP_TRAILING_WHITESPACE)
-string(REGEX REPLACE ":.*" "" BG_LAPACKE_PKG "${BG_LAPACKE_OWNER}")
-string(REGEX REPLACE "^([^:]*):([^:]*):.*" "\\1:\\2" BG_LAPACKE_PKGARCH "${BG_LAPACKE_OWNER}")
-string(REGEX MATCH "^(.*)\\.so\\.([0-9]+)$" _ "${BG_LAPACKE_SONAME}")
-set(BG_LAPACKE_DEPENDS "${BG_LAPACKE_PKG}")
-foreach(f /var/lib/dpkg/info/${BG_LAPACKE_PKGARCH}.shlibs /var/lib/dpkg/info/${BG_LAPACKE_PKG}.shlibs)
-  if(EXISTS ${f})
-    file(STRINGS ${f} BG_LAPACKE_SHLIBS REGEX "^${CMAKE_MATCH_1} ${CMAKE_MATCH_2} ")
-    if(BG_LAPACKE_SHLIBS)
-      string(REGEX MATCH "^[^ ]+ [^ ]+ (.*)$" _ "${BG_LAPACKE_SHLIBS}")
-      set(BG_LAPACKE_DEPENDS "${CMAKE_MATCH_1}")
-      break()
+# LAPACKE and SUNDIALS are opened on first use (src/base/lapack.h,
+# src/simulate/simulate_sundials.h), so no ELF file names them and
+# dpkg-shlibdeps cannot see them: each dependency is stated, the one the
+# library's own shlibs file gives for the SONAME the build opens (the package
+# name alone when the shlibs file has no line for it)
+function(bg_deb_depends out lib)
+  file(REAL_PATH ${lib} real)
+  bg_soname(soname ${lib})
+  execute_process(COMMAND dpkg-query -S ${real} OUTPUT_VARIABLE owner
+                  ERROR_QUIET OUTPUT_STRIP_TRAILING_WHITESPACE)
+  string(REGEX REPLACE ":.*" "" pkg "${owner}")
+  string(REGEX REPLACE "^([^:]*):([^:]*):.*" "\\1:\\2" pkgarch "${owner}")
+  # the shlibs key: "libfoo 3" for libfoo.so.3, "libfoo-1.2" for libfoo-1.2.so
+  if(soname MATCHES "^(.*)\\.so\\.([0-9.]+)$")
+    set(key "${CMAKE_MATCH_1} ${CMAKE_MATCH_2} ")
+  else()
+    string(REGEX REPLACE "\\.so$" "" key "${soname}")
+    set(key "${key} ")
+  endif()
+  string(REPLACE "." "\\." key "${key}")
+  set(dep "${pkg}")
+  foreach(f /var/lib/dpkg/info/${pkgarch}.shlibs /var/lib/dpkg/info/${pkg}.shlibs)
+    if(EXISTS ${f})
+      file(STRINGS ${f} line REGEX "^${key}")
+      if(line)
+        string(REGEX MATCH "^[^ ]+ [^ ]+ (.*)$" _ "${line}")
+        set(dep "${CMAKE_MATCH_1}")
+        break()
+      endif()
     endif()
+  endforeach()
+  set(${out} "${dep}" PARENT_SCOPE)
+endfunction()
+set(BG_STATED_DEPENDS)
+foreach(lib ${LAPACKE_LIB} ${BG_SUNDIALS_LIBS})
+  bg_deb_depends(dep ${lib})
+  if(dep AND NOT dep IN_LIST BG_STATED_DEPENDS)
+    list(APPEND BG_STATED_DEPENDS "${dep}")
   endif()
 endforeach()
-set(CPACK_DEBIAN_BGDRAW_PACKAGE_DEPENDS "${BG_LAPACKE_DEPENDS}")
-set(CPACK_DEBIAN_LIBBGDRAW0_PACKAGE_DEPENDS "${BG_LAPACKE_DEPENDS}")
+list(JOIN BG_STATED_DEPENDS ", " BG_STATED_DEPENDS)
+set(CPACK_DEBIAN_BGDRAW_PACKAGE_DEPENDS "${BG_STATED_DEPENDS}")
+set(CPACK_DEBIAN_LIBBGDRAW0_PACKAGE_DEPENDS "${BG_STATED_DEPENDS}")
 set(CPACK_DEBIAN_BGDRAW_PACKAGE_NAME bgdraw)
 set(CPACK_DEBIAN_BGDRAW_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_BGDRAW_DESCRIPTION "causal bond graphs: causality, analysis, diagrams, simulation

@@ -3,7 +3,8 @@
  * KLU linear algebra with the eqsys' exact Jacobian, output on a fixed grid,
  * never stepping over an input discontinuity (stop just before each
  * breakpoint, re-initialise at it). Failures are put into words here.
- * With src/simulate_words.c, the only place that includes SUNDIALS headers. */
+ * With src/simulate_words.c, the only place that includes SUNDIALS headers
+ * (through simulate_sundials.h, which loads the libraries on first use). */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,19 +12,9 @@
 #include <string.h>
 #include <time.h>
 
-#include <cvode/cvode.h>
-#include <ida/ida.h>
-#include <nvector/nvector_serial.h>
-#include <sundials/sundials_config.h>
-#include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunlinsol/sunlinsol_klu.h>
-#include <sunmatrix/sunmatrix_dense.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
-#include <sunmatrix/sunmatrix_sparse.h>
-
 #include "base/arena.h"
 #include "simulate/simulate_int.h"
+#include "simulate/simulate_sundials.h"
 #include "simulate/simulate_words_int.h"
 
 typedef struct simrun {
