@@ -1,39 +1,63 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# The C export in parts (issue 34, "Exports that compile"): a model's code is
-# cut into functions of at most 100 instructions (docs/export.md), so that
-# the compile time grows linearly with the model instead of superlinearly.
-# On a chain of 120 masses (239 states, 242 instructions a function of the
-# right-hand side before the cut): every part has at most 100 assignments,
-# and the compiled right-hand side equals the Python export's bit for bit
-# (the same operations in the same order, printed by another printer) at
-# 20 random points.
+# The C export that compiles quickly (issue 34, "Exports that compile";
+# docs/export.md, "Compile time"): runs of a repeated pattern of statements
+# are written as loops over tables of slots, the straight code between them
+# in functions of at most 100 instructions. On a chain of 120 masses with
+# parameters varying from mass to mass (239 states): the right-hand side,
+# the residual, the Jacobian and its derivatives come as loops, straight
+# parts have at most 100 assignments, and the compiled right-hand side equals
+# the Python export's bit for bit (the same operations in the same order,
+# printed by another printer) at 20 random points. On that chain, a chain of
+# masses in pairs (a dependent inertia in each pair: a DAE) and a chain
+# whose end dampers switch (state events; a switching instruction is written
+# through its event's number, so it stays out of loops): every function of the C
+# export (initial values, right-hand side, residual, Jacobian, outputs, root
+# functions) with loops equals the same export written straight
+# (BGDRAW_EXPORT_LOOPS=0, the code of before) bit for bit at 20 random points.
 # Usage: bash tests/export_parts.sh PATH_TO_BGDRAW   (from the project root)
 set -u
 . "$(dirname "$0")/lib/preamble.sh" "$@"
 cd "$tmp"
-/usr/bin/python3 - >chain.bg <<'PY'
-n = 120
-print('model chain "a mass-spring-damper chain"')
+# chains of n masses: chain (masses and springs varying from mass to mass),
+# pairs (two masses on each 1-junction: a dependent inertia, a DAE), switch
+# (the first and last dampers stiffer one way: state events)
+cat >gen.py <<'PY'
+import sys
+kind, n = sys.argv[1], int(sys.argv[2])
+print(f'model {kind} "a chain of {n} masses"')
 print("param m0 = 1, k0 = 100, b0 = 2")
 print("Se F = step(t)")
 for i in range(1, n + 1):
-    print(f"1 v{i}\nI m{i} = m0 * (1 + {i % 7} / 10)\nR d{i} = b0")
+    mass = f"m0 * (1 + {i % 7} / 10)" if kind != "switch" else "m0"
+    extra = f"\nI n{i} = m0 / 2" if kind == "pairs" else ""
+    law = ": e = if(f > 0, b0 * f, 3 * b0 * f)" if kind == "switch" and i in (1, n) else "= b0"
+    print(f"1 v{i}\nI m{i} = {mass}{extra}\nR d{i} {law}")
     if i < n:
-        print(f"0 s{i}\nC k{i} = 1 / (k0 * (1 + {i % 5} / 10))")
+        spring = f"1 / (k0 * (1 + {i % 5} / 10))" if kind == "chain" else "1 / k0"
+        print(f"0 s{i}\nC k{i} = {spring}")
 print("bond F -> v1")
 for i in range(1, n + 1):
     print(f"bond v{i} -> m{i}\nbond v{i} -> d{i}")
+    if kind == "pairs":
+        print(f"bond v{i} -> n{i}")
     if i < n:
         print(f"bond v{i} -> s{i}\nbond s{i} -> k{i}\nbond s{i} -> v{i + 1}")
 PY
+/usr/bin/python3 gen.py chain 120 >chain.bg
 "$BGDRAW" chain.bg -o chain.c -o chain.py; check "exports written" $?
-parts=$(grep -c '^static BG_NOINLINE void bg_main_' chain.c)
-[ "$parts" -ge 3 ]; check "the equations come in parts (got $parts)" $?
+for fn in bg_main bg_deriv; do
+  loops=$(grep -c "^static const int ${fn}_[0-9]*_slots\[" chain.c)
+  [ "$loops" -ge 1 ]; check "$fn: the repeated pattern as a loop over a table ($loops)" $?
+done
 longest=$(awk '/^static BG_NOINLINE void/ {n = 0; inside = 1; next}
   inside && /^}/ {if (n > m) m = n; inside = 0} inside && /^  [vd]\[[0-9]+\] = / {n++}
   END {print m + 0}' chain.c)
-[ "$longest" -le 100 ] && [ "$longest" -ge 50 ]; check "at most 100 assignments a part (longest $longest)" $?
+[ "$longest" -le 100 ]; check "at most 100 straight assignments a part (longest $longest)" $?
+lines=$(wc -l <chain.c)
+BGDRAW_EXPORT_LOOPS=0 "$BGDRAW" chain.bg -o straight.c
+straight=$(wc -l <straight.c)
+[ "$lines" -lt $((straight / 2)) ]; check "loops: $lines lines, straight $straight" $?
 cat >drv.c <<'C'
 #include <stdio.h>
 #include "chain.h"
@@ -75,4 +99,76 @@ a = [float.fromhex(s) for s in open('c.txt').read().split()]
 b = [float.fromhex(s) for s in open('py.txt').read().split()]
 sys.exit(not (len(a) == len(b) == 20 * 239 and a == b and any(x != 0 for x in a)))"
 check "C in parts equals the Python export bit for bit at 20 points" $?
+
+# Every function, loops against straight, on three shapes of model
+/usr/bin/python3 gen.py pairs 60 >pairs.bg
+/usr/bin/python3 gen.py switch 60 >switch.bg
+for mdl in chain pairs switch; do
+  mkdir -p "l_$mdl" "s_$mdl"
+  "$BGDRAW" $mdl.bg -o "l_$mdl/m.c" --prefix m; check "$mdl: exported with loops" $?
+  BGDRAW_EXPORT_LOOPS=0 "$BGDRAW" $mdl.bg -o "s_$mdl/m.c" --prefix m; check "$mdl: exported straight" $?
+  grep -q '_slots\[' "l_$mdl/m.c"; check "$mdl: the export has loops" $?
+  ! grep -q '_slots\[' "s_$mdl/m.c"; check "$mdl: BGDRAW_EXPORT_LOOPS=0 writes none" $?
+  cat >"drv_$mdl.c" <<'C'
+#include <stdio.h>
+#include <stdlib.h>
+#include "m.h"
+/* every function of the export at the points on stdin, each number as %a */
+#ifdef M_NROOT
+#define MD &md,
+#else
+#define MD
+#endif
+int main(void) {
+  static double y[M_N], yp[M_N], r[M_N], jac[M_NNZ + 1], out[M_NOUT + 1], work[M_NWORK];
+  double t, cj;
+#ifdef M_NROOT
+  static double g[M_NROOT + 1];
+  m_modes md;
+#endif
+  m_initial(&m_default_params, 0, y, work);
+  for (int i = 0; i < M_N; i++) printf("%a\n", y[i]);
+  while (scanf("%la %la", &t, &cj) == 2) {
+    for (int i = 0; i < M_N; i++) if (scanf("%la %la", &y[i], &yp[i]) != 2) return 1;
+#ifdef M_NROOT
+    m_modes_start(&m_default_params, t, y, yp, 1e-6, &md, work);
+    for (int k = 0; k < M_NMODE; k++) printf("mode %a\n", md.m[k]);
+    printf("%d\n", m_roots(&m_default_params, &md, t, y, yp, g, work));
+    for (int k = 0; k < M_NROOT; k++) printf("%a\n", g[k]);
+#endif
+#if M_IS_ODE
+    printf("%d\n", m_rhs(&m_default_params, MD t, y, r, work));
+    for (int i = 0; i < M_NX; i++) printf("%a\n", r[i]);
+#endif
+    printf("%d\n", m_residual(&m_default_params, MD t, y, yp, r, work));
+    for (int i = 0; i < M_N; i++) printf("%a\n", r[i]);
+    printf("%d\n", m_jacobian(&m_default_params, MD t, y, yp, cj, jac, work));
+    for (int k = 0; k < M_NNZ; k++) printf("%a\n", jac[k]);
+    printf("%d\n", m_outputs(&m_default_params, MD t, y, yp, out, work));
+    for (int k = 0; k < M_NOUT; k++) printf("%a\n", out[k]);
+  }
+  return 0;
+}
+C
+  n=$(sed -n 's/^#define M_N \([0-9]*\).*/\1/p' "l_$mdl/m.h")
+  /usr/bin/python3 - "$n" >"pts_$mdl.txt" <<'PY'
+import random, sys
+random.seed(7)
+for k in range(20):
+    print(float.hex(random.uniform(0, 2)), float.hex(random.uniform(1, 1e3)))
+    for i in range(int(sys.argv[1])):
+        print(float.hex(random.uniform(-1, 1)), float.hex(random.uniform(-1, 1)))
+PY
+  for how in l s; do
+    gcc -std=c11 -O2 -Wall -Werror -I"${how}_$mdl" "drv_$mdl.c" "${how}_$mdl/m.c" -lm -o "${how}_$mdl/drv" 2>"${how}_$mdl/cerr"
+    st=$?
+    check "$mdl ($how): compiles with -Wall -Werror ($(head -c 200 "${how}_$mdl/cerr"))" $st
+    "${how}_$mdl/drv" <"pts_$mdl.txt" >"${how}_$mdl/out.txt"; check "$mdl ($how): runs" $?
+  done
+  nums=$(grep -c . "l_$mdl/out.txt")
+  [ "$nums" -gt $((20 * n)) ] && cmp -s "l_$mdl/out.txt" "s_$mdl/out.txt"
+  check "$mdl ($n unknowns): loops equal straight code bit for bit ($nums numbers)" $?
+done
+grep -q '^#define M_IS_ODE 0' l_pairs/m.h; check "pairs is a DAE" $?
+grep -q '^#define M_NROOT [1-9]' l_switch/m.h; check "switch has root functions" $?
 finish

@@ -46,7 +46,7 @@ if [ $st = 4 ] && grep -q "cannot load LAPACK ($tmp/none.so)" "$tmp/err"; then o
 else bad "LAPACK missing: status $st, $(head -1 "$tmp/err")"; fi
 BGDRAW_LAPACKE=$tmp/none.so "$BGDRAW" examples/rlc.bg -o "$tmp/d.svg" 2>/dev/null && ok ||
   bad "a diagram needs LAPACK"
-# SUNDIALS likewise (src/simulate/simulate_sundials.h): 845 BIND_NOW
+# SUNDIALS likewise (src/simulate/simulate_sundials_int.h): 845 BIND_NOW
 # references and nine libraries in the global scope otherwise
 if echo "$libs" | grep -q 'libsundials'; then bad "a diagram run maps SUNDIALS: $(echo "$libs" | grep sundials | tr '\n' ' ')"
 else ok; fi

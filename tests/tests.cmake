@@ -21,7 +21,7 @@ function(bg_add_test name)
   target_include_directories(test_${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/unit)
   target_link_libraries(test_${name} PRIVATE ${BG_LIBS})
   # a test that drives SUNDIALS itself (an independent solution) links it; the
-  # engine opens it on first use (src/simulate/simulate_sundials.h)
+  # engine opens it on first use (src/simulate/simulate_sundials_int.h)
   file(STRINGS ${CMAKE_SOURCE_DIR}/tests/unit/test_${name}.c sun REGEX "^#include <(cvode|ida|nvector|sun)")
   if(sun)
     target_link_libraries(test_${name} PRIVATE ${BG_SUNDIALS_LIBS})

@@ -8,7 +8,8 @@
 # collapsed submodel. Under valgrind: no
 # invalid read, write or free, and no block definitely lost that bgdraw
 # itself allocated (its first frame above the allocator is in bgdraw's code;
-# fontconfig's and pango's process-wide caches are theirs). In a sanitizer
+# fontconfig's and pango's process-wide caches are theirs; the loader's over-reads
+# of a RUNPATH in a dlopen are suppressed: tests/valgrind.supp). In a sanitizer
 # build (valgrind cannot run those) the same runs go through ASan with leak
 # detection on, the libraries' caches suppressed (tests/lsan.supp).
 # Usage: bash tests/valgrind_outputs.sh PATH_TO_BGDRAW   (from the project root)
@@ -37,7 +38,7 @@ if grep -qa __asan_init "$BGDRAW"; then
   done
 else
   for i in "${!runs[@]}"; do
-    valgrind -q --leak-check=full --show-leak-kinds=definite --num-callers=40 \
+    valgrind -q --leak-check=full --show-leak-kinds=definite --num-callers=40 --suppressions="$root/tests/valgrind.supp" \
       --log-file=vg$i.log $BGDRAW ${runs[$i]} >out 2>err; st=$?
     check "valgrind run $i exits 0 (got $st)" $st
     ! grep -q "Invalid read\|Invalid write\|Invalid free\|Mismatched free\|overlap" vg$i.log

@@ -69,7 +69,7 @@ set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 set(CPACK_INSTALL_DEFAULT_DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE
     GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
 # LAPACKE and SUNDIALS are opened on first use (src/base/lapack.h,
-# src/simulate/simulate_sundials.h), so no ELF file names them and
+# src/simulate/simulate_sundials_int.h), so no ELF file names them and
 # dpkg-shlibdeps cannot see them: each dependency is stated, the one the
 # library's own shlibs file gives for the SONAME the build opens (the package
 # name alone when the shlibs file has no line for it)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* Libraries opened on first use (base/lapack.h, simulate/simulate_sundials.h):
+/* Libraries opened on first use (base/lapack.h, simulate/simulate_sundials_int.h):
  * open by SONAME or an environment override, look a routine up, and stop the
  * process with status 4 and the loader's reason when either fails, as a
  * missing library at start-up would (the packages depend on them). */

@@ -204,10 +204,11 @@ static void tables_of_names(const cx *X, bg_strbuf *c) {
 
 /* Instructions per generated function. Compilers take time superlinear in
  * the length of one straight-line function (gcc -O2: 92 s for the single
- * function of a 1 000-mass chain), so the code of [c0, c1) is cut into parts
- * of at most this many instructions, each its own function that the
- * compiler may not inline back (every value lives in v[] and d[], so a cut
- * between two instructions changes no result). */
+ * function of a 1 000-mass chain), so the straight code of [c0, c1) is cut
+ * into parts of at most this many instructions, each its own function that
+ * the compiler may not inline back (every value lives in v[] and d[], so a
+ * cut between two instructions changes no result). Runs of a repeated
+ * pattern become loops over tables of slots (export_runs.c), a part each. */
 #define BG_PART 100
 
 /* ev: the parts take the modes' context c (a model with state events:
@@ -221,22 +222,46 @@ static void part_head(const char *name, int part, int deriv, int ev, bg_strbuf *
   if (ev) bg_sb_puts(c, "  (void)c;\n");
 }
 
+/* Every statement of [c0, c1), each closed in t: its value (deriv 0) or its
+ * directional derivative (deriv 1). */
+static void code_stmts(const bg_eqsys *s, int c0, int c1, int deriv, int ev, bg_xstmts *t) {
+  for (int k = c0; k < c1; k++) {
+    if (!deriv) bg_xl_code(&bg_xlang_c, s, k, k + 1, "v", &t->text);
+    else {
+      if (ev && s->code_ev[k] >= 0) bg_xev_c_der(s, s->code_ev[k], &t->text);
+      deriv_stmt(s, &s->code[k], &t->text);
+    }
+    bg_xstmts_end(t);
+  }
+}
+
 /* The function `name` of the code [c0, c1): its values (deriv 0) or their
- * directional derivatives (deriv 1), in parts of BG_PART instructions. */
+ * directional derivatives (deriv 1), in parts. */
 static void code_fn(const bg_eqsys *s, const char *name, const char *what, int c0, int c1,
                     int deriv, int ev, bg_strbuf *c) {
-  int nparts = c1 > c0 ? (c1 - c0 + BG_PART - 1) / BG_PART : 0;
-  for (int part = 0; part < nparts; part++) {
-    int a = c0 + part * BG_PART, b = a + BG_PART < c1 ? a + BG_PART : c1;
-    part_head(name, part, deriv, ev, c);
-    if (deriv)
-      for (int k = a; k < b; k++) {
-        if (ev && s->code_ev[k] >= 0) bg_xev_c_der(s, s->code_ev[k], c);
-        deriv_stmt(s, &s->code[k], c);
-      }
-    else bg_xl_code(&bg_xlang_c, s, a, b, "v", c);
-    bg_sb_puts(c, "}\n");
+  bg_xstmts t = {0};
+  bg_xrun *run = NULL;
+  int nrun = 0, nparts = 0;
+  char tab[120];
+  code_stmts(s, c0, c1, deriv, ev, &t);
+  if (t.n) bg_xruns_plan(&t, &run, &nrun);
+  for (int q = 0; q < nrun; q++) {
+    const bg_xrun *r = &run[q];
+    if (r->reps > 1) {
+      snprintf(tab, sizeof tab, "%s_%d_slots", name, nparts);
+      bg_xruns_table(&t, r, tab, c);
+      part_head(name, nparts++, deriv, ev, c);
+      bg_xruns_loop(&t, r, tab, c);
+      bg_sb_puts(c, "}\n");
+      continue;
+    }
+    for (int a = r->start, end = r->start + r->period; a < end; a += BG_PART) {
+      part_head(name, nparts++, deriv, ev, c);
+      bg_xruns_straight(&t, a, a + BG_PART < end ? a + BG_PART : end, c);
+      bg_sb_puts(c, "}\n");
+    }
   }
+  free(run), bg_xstmts_free(&t);
   if (what) bg_sb_printf(c, "/* %s */\n", what);
   bg_sb_printf(c, "static void %s(%s%s) {\n  (void)v;%s%s\n", name,
                deriv ? "const double *v, double *d" : "double *v", ev ? (deriv ? ", const bg_mc *c" : ", bg_mc *c") : "",
@@ -246,13 +271,27 @@ static void code_fn(const bg_eqsys *s, const char *name, const char *what, int c
   bg_sb_puts(c, "}\n\n");
 }
 
+/* Lines of text, one statement each, as a function's body: runs of a
+ * repeated pattern as loops over tables (written to tables, which go before
+ * the function), the rest as it is. */
+static void inline_lines(const char *text, const char *name, bg_strbuf *tables, bg_strbuf *body) {
+  bg_xstmts t = {0};
+  bg_xstmts_lines(&t, text);
+  bg_xruns_inline(&t, name, tables, body);
+  bg_xstmts_free(&t);
+}
+
 static void eval_fns(const cx *X, bg_strbuf *c) {
   const bg_eqsys *s = X->s;
   const char *P = X->P, *U = X->U;
+  bg_strbuf k = {0}, body = {0};
+  bg_xl_constants(&bg_xlang_c, s, "v", "p->%s", &k);
+  inline_lines(bg_sb_str(&k), "bg_start_slots", c, &body);
   bg_sb_printf(c, "static void bg_start(const %s_params *p, double t, const double *y, const double *yp, double *v) {\n"
                   "  (void)p;\n  v[0] = t;\n  for (int i = 0; i < %s_N; i++) v[1 + i] = y ? y[i] : 0, v[1 + %s_N + i] = yp ? yp[i] : 0;\n",
                P, U, U);
-  bg_xl_constants(&bg_xlang_c, s, "v", "p->%s", c);
+  bg_sb_puts(c, bg_sb_str(&body));
+  bg_sb_free(&k), bg_sb_free(&body);
   bg_sb_puts(c, "}\n\n");
   code_fn(s, "bg_main", "the equations in computational order", 0, s->nmain, 0, s->nev > 0, c);
   code_fn(s, "bg_output_code", NULL, s->nmain, s->nout_code, 0, 0, c);
@@ -278,16 +317,20 @@ static void initial_fn(const cx *X, bg_strbuf *c) {
   const char *P = X->P, *U = X->U;
   double *y0 = bg_xcalloc((size_t)s->n + 1, sizeof(double));
   bg_eqsys_initial(s, y0);
+  bg_strbuf k = {0}, body = {0};
+  for (int i = 0; i < s->n; i++) {
+    bg_sb_printf(&k, "  y0[%d] = ", i);
+    if (i < s->nint && s->init_slot[i] >= 0) bg_sb_printf(&k, "v[%d]", s->init_slot[i]);
+    else if (i < s->nint) bg_sb_puts(&k, "0");
+    else bg_xl_num(&bg_xlang_c, &k, y0[i]);
+    bg_sb_puts(&k, ";\n");
+  }
+  inline_lines(bg_sb_str(&k), "bg_initial_slots", c, &body);
   bg_sb_printf(c, "void %s_initial(const %s_params *p, double t0, double *y0, double *work) {\n"
                   "  double *v = work;\n  bg_start(p, t0, NULL, NULL, v);\n  bg_main(v%s);\n  bg_initial_code(v);\n", P, P,
                s->nev ? ", NULL" : "");
-  for (int i = 0; i < s->n; i++) {
-    bg_sb_printf(c, "  y0[%d] = ", i);
-    if (i < s->nint && s->init_slot[i] >= 0) bg_sb_printf(c, "v[%d]", s->init_slot[i]);
-    else if (i < s->nint) bg_sb_puts(c, "0");
-    else bg_xl_num(&bg_xlang_c, c, y0[i]);
-    bg_sb_puts(c, ";\n");
-  }
+  bg_sb_puts(c, bg_sb_str(&body));
+  bg_sb_free(&k), bg_sb_free(&body);
   bg_sb_printf(c, "  (void)y0;\n}\n\n");
   free(y0);
   (void)U;

@@ -49,6 +49,39 @@ void bg_xl_constants(const bg_xlang *L, const bg_eqsys *s, const char *arr, cons
 void bg_xl_code(const bg_xlang *L, const bg_eqsys *s, int c0, int c1, const char *arr, bg_strbuf *o);
 
 
+/* ---- export_runs.c: the repeated patterns of a generated C function,
+ * written as loops over tables of slots (docs/export.md, "Compile time"). */
+typedef struct bg_xstmts {
+  bg_strbuf text; /* the statements' text, one after another */
+  size_t *at;     /* statement k is text [at[k], at[k + 1]) */
+  int n, cap;
+} bg_xstmts;
+/* Ends statement n: the text appended since the previous end. */
+void bg_xstmts_end(bg_xstmts *t);
+void bg_xstmts_free(bg_xstmts *t);
+/* Each line of text a statement. */
+void bg_xstmts_lines(bg_xstmts *t, const char *text);
+/* A piece of the function: statements [start, start + period * reps), a
+ * pattern of `period` statements repeated `reps` times (reps 1: straight). */
+typedef struct bg_xrun {
+  int start, period, reps;
+} bg_xrun;
+/* The pieces in order (malloc'd): runs of one pattern with at least 4
+ * repetitions covering at least 64 statements, and the straight code
+ * between them. Two statements share a pattern when their texts are equal
+ * but for the numbers N of their slot references v[N], d[N] and y0[N]. */
+void bg_xruns_plan(const bg_xstmts *t, bg_xrun **runs, int *nruns);
+/* Statements [k0, k1) as they are. */
+void bg_xruns_straight(const bg_xstmts *t, int k0, int k1, bg_strbuf *c);
+/* A run's table `static const int tab[reps][K]`: row m the slot numbers of
+ * repetition m in text order; and its loop, row by row, each statement with
+ * v[x[j]] / d[x[j]] / y0[x[j]] for its slot references. */
+void bg_xruns_table(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_strbuf *c);
+void bg_xruns_loop(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_strbuf *c);
+/* The statements with their runs as loops in one function's body: the
+ * tables (name_<piece>) into tables, the code into body. */
+void bg_xruns_inline(const bg_xstmts *t, const char *name, bg_strbuf *tables, bg_strbuf *body);
+
 /* ---- export_events.c (and the tape's part in export_tape.c): state events in the C and Python exports (docs/export.md,
  * "State events"): the switching instructions through their modes, the root
  * functions, and the function that applies an event, as eqsys_events.c and

@@ -4,7 +4,7 @@
  * never stepping over an input discontinuity (stop just before each
  * breakpoint, re-initialise at it). Failures are put into words here.
  * With src/simulate_words.c, the only place that includes SUNDIALS headers
- * (through simulate_sundials.h, which loads the libraries on first use). */
+ * (through simulate_sundials_int.h, which loads the libraries on first use). */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -14,7 +14,7 @@
 
 #include "base/arena.h"
 #include "simulate/simulate_int.h"
-#include "simulate/simulate_sundials.h"
+#include "simulate/simulate_sundials_int.h"
 #include "simulate/simulate_words_int.h"
 
 typedef struct simrun {

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The SUNDIALS table of simulate/simulate_sundials.h, filled by dlopen on
+/* The SUNDIALS table of simulate/simulate_sundials_int.h, filled by dlopen on
  * first use. Each library's name is its SONAME, read by CMake from the
  * library it found (BG_SUNDIALS_SONAME_<LIB>); BGDRAW_SUNDIALS_<LIB> in the
  * environment overrides it (tests). Each library is opened RTLD_LOCAL, so
@@ -7,7 +7,7 @@
 #include <pthread.h>
 
 #include "base/dynload.h"
-#include "simulate/simulate_sundials.h"
+#include "simulate/simulate_sundials_int.h"
 
 enum {
 #define BG_SUNDIALS_LIB_ENUM(lib) LIB_##lib,

@@ -8,8 +8,8 @@
  * the first time a run simulates (bg_sundials). Include this header instead
  * of the SUNDIALS headers: the names below are macros over the table, so call
  * sites read as plain SUNDIALS. */
-#ifndef BG_SIMULATE_SUNDIALS_H
-#define BG_SIMULATE_SUNDIALS_H
+#ifndef BG_SIMULATE_SUNDIALS_INT_H
+#define BG_SIMULATE_SUNDIALS_INT_H
 #include <cvode/cvode.h>
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
