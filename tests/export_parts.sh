@@ -10,8 +10,8 @@
 # the Python export's bit for bit (the same operations in the same order,
 # printed by another printer) at 20 random points. On that chain, a chain of
 # masses in pairs (a dependent inertia in each pair: a DAE) and a chain
-# whose end dampers switch (state events; a switching instruction is written
-# through its event's number, so it stays out of loops): every function of the C
+# whose dampers switch (state events; an event's number comes from the table
+# like a slot): every function of the C
 # export (initial values, right-hand side, residual, Jacobian, outputs, root
 # functions) with loops equals the same export written straight
 # (BGDRAW_EXPORT_LOOPS=0, the code of before) bit for bit at 20 random points.
@@ -21,7 +21,7 @@ set -u
 cd "$tmp"
 # chains of n masses: chain (masses and springs varying from mass to mass),
 # pairs (two masses on each 1-junction: a dependent inertia, a DAE), switch
-# (the first and last dampers stiffer one way: state events)
+# (two dampers in three stiffer one way: state events)
 cat >gen.py <<'PY'
 import sys
 kind, n = sys.argv[1], int(sys.argv[2])
@@ -31,7 +31,7 @@ print("Se F = step(t)")
 for i in range(1, n + 1):
     mass = f"m0 * (1 + {i % 7} / 10)" if kind != "switch" else "m0"
     extra = f"\nI n{i} = m0 / 2" if kind == "pairs" else ""
-    law = ": e = if(f > 0, b0 * f, 3 * b0 * f)" if kind == "switch" and i in (1, n) else "= b0"
+    law = ": e = if(f > 0, b0 * f, 3 * b0 * f)" if kind == "switch" and i % 3 else "= b0"
     print(f"1 v{i}\nI m{i} = {mass}{extra}\nR d{i} {law}")
     if i < n:
         spring = f"1 / (k0 * (1 + {i % 5} / 10))" if kind == "chain" else "1 / k0"
@@ -171,4 +171,6 @@ PY
 done
 grep -q '^#define M_IS_ODE 0' l_pairs/m.h; check "pairs is a DAE" $?
 grep -q '^#define M_NROOT [1-9]' l_switch/m.h; check "switch has root functions" $?
+grep -q 'bg_at(c, x\[[0-9]*\], ' l_switch/m.c && grep -q 'if (bg_held(c, x\[[0-9]*\])) d\[x\[' l_switch/m.c
+check "switch: its switching instructions and their derivatives loop too" $?
 finish

@@ -271,22 +271,12 @@ static void code_fn(const bg_eqsys *s, const char *name, const char *what, int c
   bg_sb_puts(c, "}\n\n");
 }
 
-/* Lines of text, one statement each, as a function's body: runs of a
- * repeated pattern as loops over tables (written to tables, which go before
- * the function), the rest as it is. */
-static void inline_lines(const char *text, const char *name, bg_strbuf *tables, bg_strbuf *body) {
-  bg_xstmts t = {0};
-  bg_xstmts_lines(&t, text);
-  bg_xruns_inline(&t, name, tables, body);
-  bg_xstmts_free(&t);
-}
-
 static void eval_fns(const cx *X, bg_strbuf *c) {
   const bg_eqsys *s = X->s;
   const char *P = X->P, *U = X->U;
   bg_strbuf k = {0}, body = {0};
   bg_xl_constants(&bg_xlang_c, s, "v", "p->%s", &k);
-  inline_lines(bg_sb_str(&k), "bg_start_slots", c, &body);
+  bg_xruns_lines(bg_sb_str(&k), "bg_start_slots", c, &body);
   bg_sb_printf(c, "static void bg_start(const %s_params *p, double t, const double *y, const double *yp, double *v) {\n"
                   "  (void)p;\n  v[0] = t;\n  for (int i = 0; i < %s_N; i++) v[1 + i] = y ? y[i] : 0, v[1 + %s_N + i] = yp ? yp[i] : 0;\n",
                P, U, U);
@@ -325,7 +315,7 @@ static void initial_fn(const cx *X, bg_strbuf *c) {
     else bg_xl_num(&bg_xlang_c, &k, y0[i]);
     bg_sb_puts(&k, ";\n");
   }
-  inline_lines(bg_sb_str(&k), "bg_initial_slots", c, &body);
+  bg_xruns_lines(bg_sb_str(&k), "bg_initial_slots", c, &body);
   bg_sb_printf(c, "void %s_initial(const %s_params *p, double t0, double *y0, double *work) {\n"
                   "  double *v = work;\n  bg_start(p, t0, NULL, NULL, v);\n  bg_main(v%s);\n  bg_initial_code(v);\n", P, P,
                s->nev ? ", NULL" : "");

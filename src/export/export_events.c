@@ -159,21 +159,26 @@ static void c_tables_of_events(const bg_eqsys *s, const char *P, const char *U, 
 
 void bg_xev_c_api(const bg_eqsys *s, const char *P, const char *U, bg_strbuf *c) {
   c_tables_of_events(s, P, U, c);
-  bg_sb_printf(c, "static void bg_roots_of(const double *v, const %s_modes *md, double *g) {\n  (void)v, (void)md;\n", P);
+  /* one line an event: a chain of equal switching elements loops (export_runs.c) */
+  bg_strbuf roots = {0}, zeros = {0}, body = {0};
   for (int e = 0; e < s->nev; e++) {
-    bg_sb_puts(c, "  bg_ev_roots(");
-    bg_xev_args(&bg_xlang_c, s, e, "v", "md->m[%d]", c);
-    bg_sb_printf(c, ", g + %d);\n", s->ev_root0[e]);
+    bg_sb_puts(&roots, "  bg_ev_roots(");
+    bg_xev_args(&bg_xlang_c, s, e, "v", "md->m[%d]", &roots);
+    bg_sb_printf(&roots, ", g + %d);\n", s->ev_root0[e]);
+    bg_sb_printf(&zeros, "  n += zero[%d] = (!only || only[%d]) && bg_ev_zero(", e, e);
+    bg_xev_args(&bg_xlang_c, s, e, "v", "md->m[%d]", &zeros);
+    bg_sb_printf(&zeros, ", dir ? dir + %d : NULL);\n", s->ev_root0[e]);
   }
-  bg_sb_printf(c, "}\n\n/* zero[e]: mode e's switching function sits at 0, undecided (only: those to look at) */\n"
+  bg_xruns_lines(bg_sb_str(&roots), "bg_roots_slots", c, &body);
+  bg_sb_printf(c, "static void bg_roots_of(const double *v, const %s_modes *md, double *g) {\n  (void)v, (void)md;\n", P);
+  bg_sb_printf(c, "%s}\n\n", bg_sb_str(&body));
+  bg_sb_clear(&body);
+  bg_xruns_lines(bg_sb_str(&zeros), "bg_zero_slots", c, &body);
+  bg_sb_printf(c, "/* zero[e]: mode e's switching function sits at 0, undecided (only: those to look at) */\n"
                   "static int bg_zero_of(const double *v, const %s_modes *md, const int *dir, unsigned char *zero,\n"
                   "                      const unsigned char *only) {\n  int n = 0;\n", P);
-  for (int e = 0; e < s->nev; e++) {
-    bg_sb_printf(c, "  n += zero[%d] = (!only || only[%d]) && bg_ev_zero(", e, e);
-    bg_xev_args(&bg_xlang_c, s, e, "v", "md->m[%d]", c);
-    bg_sb_printf(c, ", dir ? dir + %d : NULL);\n", s->ev_root0[e]);
-  }
-  bg_sb_puts(c, "  return n;\n}\n\n");
+  bg_sb_printf(c, "%s  return n;\n}\n\n", bg_sb_str(&body));
+  bg_sb_free(&roots), bg_sb_free(&zeros), bg_sb_free(&body);
   bg_sb_printf(c, "static int bg_roots_finite(const double *g) {\n  for (int i = 0; i < %s_NROOT; i++)\n"
                   "    if (!isfinite(g[i])) return 0;\n  return 1;\n}\n\n", U);
   bg_sb_printf(c, "int %s_roots(const %s_params *p, const %s_modes *md, double t, const double *y, const double *yp,\n"

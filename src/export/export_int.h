@@ -59,8 +59,6 @@ typedef struct bg_xstmts {
 /* Ends statement n: the text appended since the previous end. */
 void bg_xstmts_end(bg_xstmts *t);
 void bg_xstmts_free(bg_xstmts *t);
-/* Each line of text a statement. */
-void bg_xstmts_lines(bg_xstmts *t, const char *text);
 /* A piece of the function: statements [start, start + period * reps), a
  * pattern of `period` statements repeated `reps` times (reps 1: straight). */
 typedef struct bg_xrun {
@@ -69,18 +67,20 @@ typedef struct bg_xrun {
 /* The pieces in order (malloc'd): runs of one pattern with at least 4
  * repetitions covering at least 64 statements, and the straight code
  * between them. Two statements share a pattern when their texts are equal
- * but for the numbers N of their slot references v[N], d[N] and y0[N]. */
+ * but for the numbers N of their slot references v[N], d[N] and y0[N] and
+ * of their events and root functions (export_runs.c, parameter). */
 void bg_xruns_plan(const bg_xstmts *t, bg_xrun **runs, int *nruns);
 /* Statements [k0, k1) as they are. */
 void bg_xruns_straight(const bg_xstmts *t, int k0, int k1, bg_strbuf *c);
 /* A run's table `static const int tab[reps][K]`: row m the slot numbers of
  * repetition m in text order; and its loop, row by row, each statement with
- * v[x[j]] / d[x[j]] / y0[x[j]] for its slot references. */
+ * x[j] for each of those numbers. */
 void bg_xruns_table(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_strbuf *c);
 void bg_xruns_loop(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_strbuf *c);
-/* The statements with their runs as loops in one function's body: the
- * tables (name_<piece>) into tables, the code into body. */
-void bg_xruns_inline(const bg_xstmts *t, const char *name, bg_strbuf *tables, bg_strbuf *body);
+/* Text of one statement a line as a function's body: its runs as loops
+ * (their tables, name_<piece>, into tables, which go before the function),
+ * the rest as it is (into body). */
+void bg_xruns_lines(const char *text, const char *name, bg_strbuf *tables, bg_strbuf *body);
 
 /* ---- export_events.c (and the tape's part in export_tape.c): state events in the C and Python exports (docs/export.md,
  * "State events"): the switching instructions through their modes, the root

@@ -3,7 +3,8 @@
  * time"). A model built of many equal parts (a chain of masses, a ladder)
  * gives a tape whose instructions repeat one pattern with other slots: the
  * C export writes such a run as a loop over a table of the slots, each
- * iteration the pattern's statements with v[x[j]] for v[N], in the order of
+ * iteration the pattern's statements with v[x[j]] for v[N] (and an event's
+ * number from the table likewise), in the order of
  * the straight-line code, so the loop computes every value as that code did,
  * bit for bit, while the compiler sees the pattern once. */
 #include <stdio.h>
@@ -36,33 +37,75 @@ void bg_xstmts_free(bg_xstmts *t) {
   memset(t, 0, sizeof *t);
 }
 
-/* A slot reference at p: v[N], d[N] or y0[N], not the tail of a longer
- * name. Returns the length of the array's name, 0 when p starts none. */
-static int slot_ref(const char *start, const char *p) {
-  if (p > start && (p[-1] == '_' || (p[-1] >= '0' && p[-1] <= '9') || ((p[-1] | 32) >= 'a' && (p[-1] | 32) <= 'z')))
-    return 0;
-  int n = p[0] == 'y' && p[1] == '0' ? 2 : p[0] == 'v' || p[0] == 'd' ? 1 : 0;
-  return n && p[n] == '[' && p[n + 1] >= '0' && p[n + 1] <= '9' ? n : 0;
+static int ident_char(char c) {
+  return c == '_' || (c >= '0' && c <= '9') || ((c | 32) >= 'a' && (c | 32) <= 'z');
 }
 
-/* Statement k's pattern: its text with each slot number as '#' (into sh);
- * its slot numbers appended to nums when nums is given. */
-static void pattern(const bg_xstmts *t, int k, bg_strbuf *sh, int **nums, int *nn, int *cap) {
+/* Does the text [s, p) end with w? */
+static int ends_with(const char *s, const char *p, const char *w) {
+  size_t n = strlen(w);
+  return (size_t)(p - s) >= n && !memcmp(p - n, w, n);
+}
+
+/* Is the number starting at p one of the statement's parameters? A slot
+ * v[N], d[N], y0[N], or an event's number: bg_at(c, E, ...), bg_held(c, E),
+ * md->m[E], zero[E], only[E], and its first root function: g + R, dir + R
+ * (the root functions' code, export_events.c) and bg_at's eighth argument
+ * (r0: the walker is there). Each name is not the tail of a longer one.
+ * Everything else (coefficients, kinds, tables) is text. */
+static int parameter(const char *s, const char *p, int r0) {
+  static const char *const before[] = {"v[", "d[", "y0[", "zero[", "only[", "g + ", "dir + ",
+                                       "bg_at(c, ", "bg_held(c, ", "->m["};
+  for (size_t k = 0; k < sizeof before / sizeof *before; k++) {
+    size_t n = strlen(before[k]);
+    if (ends_with(s, p, before[k]) &&
+        (!ident_char(before[k][0]) || (size_t)(p - s) == n || !ident_char(p[-(long)n - 1])))
+      return 1;
+  }
+  return r0 && ends_with(s, p, ", ");
+}
+
+/* Statement k's text with each parameter replaced: loop 0, by '#' (its
+ * pattern, into out) with the parameters' values appended to nums; loop 1,
+ * by x[j] (j counting on from *j), every line indented one level more. */
+static void walk(const bg_xstmts *t, int k, int loop, bg_strbuf *out, int **nums, int *nn, int *cap, int *j) {
   const char *s = t->text.s + t->at[k], *e = t->text.s + t->at[k + 1];
-  bg_sb_clear(sh);
+  int at = -1, depth = 0, commas = 0, bol = 1; /* at: bg_at's depth while inside it */
   for (const char *p = s; p < e;) {
-    int len = slot_ref(s, p);
-    if (!len) { bg_sb_putc(sh, *p++); continue; }
-    bg_sb_putn(sh, p, (size_t)len + 1), bg_sb_putc(sh, '#');
-    int v = 0;
-    for (p += len + 1; *p >= '0' && *p <= '9'; p++) v = v * 10 + (*p - '0');
-    if (!nums) continue;
-    if (*nn == *cap) *cap = *cap ? 2 * *cap : 64, *nums = bg_xrealloc(*nums, (size_t)*cap * sizeof **nums);
-    (*nums)[(*nn)++] = v;
+    if (*p >= '0' && *p <= '9' && (p == s || (!ident_char(p[-1]) && p[-1] != '.')) &&
+        parameter(s, p, at >= 0 && depth == at && commas == 7)) {
+      int v = 0;
+      for (; p < e && *p >= '0' && *p <= '9'; p++) v = v * 10 + (*p - '0');
+      if (loop) { bg_sb_printf(out, "x[%d]", (*j)++); continue; }
+      bg_sb_putc(out, '#');
+      if (*nn == *cap) *cap = *cap ? 2 * *cap : 64, *nums = bg_xrealloc(*nums, (size_t)*cap * sizeof **nums);
+      (*nums)[(*nn)++] = v;
+      continue;
+    }
+    char ch = *p++;
+    if (loop && bol) bg_sb_puts(out, "  ");
+    bol = ch == '\n';
+    bg_sb_putc(out, ch);
+    if (ch == '(') {
+      depth++;
+      if (ends_with(s, p, "bg_at(")) at = depth, commas = 0;
+    } else if (ch == ')') {
+      if (depth-- == at) at = -1;
+    } else if (ch == ',' && depth == at) commas++;
   }
 }
 
-void bg_xstmts_lines(bg_xstmts *t, const char *text) {
+/* Statement k's pattern (into sh); its parameters appended to nums when
+ * nums is given. */
+static void pattern(const bg_xstmts *t, int k, bg_strbuf *sh, int **nums, int *nn, int *cap) {
+  int *none = NULL, n0 = 0, c0 = 0;
+  bg_sb_clear(sh);
+  walk(t, k, 0, sh, nums ? nums : &none, nums ? nn : &n0, nums ? cap : &c0, NULL);
+  free(none);
+}
+
+/* Each line of text a statement. */
+static void xstmts_lines(bg_xstmts *t, const char *text) {
   for (const char *p = text; p && *p;) {
     const char *e = strchr(p, '\n');
     e = e ? e + 1 : p + strlen(p);
@@ -152,26 +195,13 @@ void bg_xruns_table(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_st
 void bg_xruns_loop(const bg_xstmts *t, const bg_xrun *r, const char *tab, bg_strbuf *c) {
   bg_sb_printf(c, "  for (int i = 0; i < %d; i++) {\n    const int *x = %s[i];\n", r->reps, tab);
   int j = 0;
-  for (int k = r->start; k < r->start + r->period; k++) {
-    const char *s = t->text.s + t->at[k], *e = t->text.s + t->at[k + 1];
-    int bol = 1;
-    for (const char *p = s; p < e;) {
-      if (bol) bg_sb_puts(c, "  "), bol = 0; /* one level deeper */
-      int len = slot_ref(s, p);
-      if (len) {
-        bg_sb_putn(c, p, (size_t)len), bg_sb_printf(c, "[x[%d]]", j++);
-        for (p += len + 1; *p >= '0' && *p <= '9'; p++) {}
-        p++; /* ']' */
-        continue;
-      }
-      bol = *p == '\n';
-      bg_sb_putc(c, *p++);
-    }
-  }
+  for (int k = r->start; k < r->start + r->period; k++) walk(t, k, 1, c, NULL, NULL, NULL, &j);
   bg_sb_puts(c, "  }\n");
 }
 
-void bg_xruns_inline(const bg_xstmts *t, const char *name, bg_strbuf *tables, bg_strbuf *body) {
+/* The statements with their runs as loops in one function's body: the
+ * tables (name_<piece>) into tables, the code into body. */
+static void runs_inline(const bg_xstmts *t, const char *name, bg_strbuf *tables, bg_strbuf *body) {
   bg_xrun *run = NULL;
   int nrun = 0;
   char tab[120];
@@ -184,4 +214,11 @@ void bg_xruns_inline(const bg_xstmts *t, const char *name, bg_strbuf *tables, bg
     bg_xruns_loop(t, r, tab, body);
   }
   free(run);
+}
+
+void bg_xruns_lines(const char *text, const char *name, bg_strbuf *tables, bg_strbuf *body) {
+  bg_xstmts t = {0};
+  xstmts_lines(&t, text);
+  runs_inline(&t, name, tables, body);
+  bg_xstmts_free(&t);
 }
