@@ -336,8 +336,9 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
     the deviation from the reduced run (largest over the columns, relative
     to each column's range, after the first row: the fast stores' initial
     layer, where variables that follow derivatives have not yet met the
-    reduced run's) shrinks with the parameter (to 0.3 of the first or below
-    1e-6) and ends below 1e-2."""
+    reduced run's; each column against its range, at least 1e-3 of the
+    largest range) shrinks with the parameter (to 0.3 of the first or below
+    1e-5, the runs' own error) and ends below 1e-2."""
     red = ((an.get("index") or {}).get("reduction") or {}).get("status")
     if rows is None or red != "reduced":
         res["parasitic"] = ("skip", "the run did not reduce the index" if rows is not None else "no simulation")
@@ -396,14 +397,18 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
             res["parasitic"] = ("fail", "columns or rows differ from the reduced run's")
             return
         worst = (0.0, "")
+        # each column against its range, but at least 1e-3 of the largest
+        # range: a variable the reduced run holds at 0 (a hidden constraint)
+        # is O(parameter) with the parasitic stores (the campaign's seeds
+        # 1328, 1372: 1e-3 against a range of 1e-9)
+        spans = [max(x[j] for x in rows) - min(x[j] for x in rows) for j in range(len(head))]
+        floor = 1e-3 * max(spans[1:]) + 1e-12
         for j in range(1, len(head)):
-            col = [x[j] for x in rows]
-            span = max(col) - min(col) + 1e-9 * max(1.0, max(abs(v) for v in col))
-            d = max(abs(a[j] - b[j]) for a, b in zip(rows[1:], pr[1:])) / span
+            d = max(abs(a[j] - b[j]) for a, b in zip(rows[1:], pr[1:])) / max(spans[j], floor)
             worst = max(worst, (d, head[j]))
         devs.append(worst)
     (d1, c1), (d2, c2) = devs
-    if d2 > 1e-2 or (d2 > 0.3 * d1 and d2 > 1e-6):
+    if d2 > 1e-2 or (d2 > 0.3 * d1 and d2 > 1e-5):  # 1e-5: the runs' own error at rtol 1e-9 (seed 1277)
         res["parasitic"] = ("fail", "deviation from the reduced run %.3g (%s) at the stated value, %.3g (%s) "
                             "at 1/100 of it" % (d1, c1, d2, c2))
     else:
