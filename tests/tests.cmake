@@ -5,7 +5,8 @@
 set(BG_SLOW_TESTS valgrind_outputs fuzz_short render_examples render api index_agree export_cli
     report_cli threads install equations_json sim_iteration sim_accuracy verify_bound
     symbols_rule figures scale fonts contrib components fmu_cli transform_cli linear_cli
-    plot_cli mutated_models sim_bridge sim_time_events include_rule deb html_browser html_report)
+    plot_cli mutated_models sim_bridge sim_time_events include_rule deb html_browser html_report
+    large_memory)
 function(bg_label name)
   if(name IN_LIST BG_SLOW_TESTS)
     set_property(TEST ${name} APPEND PROPERTY LABELS slow)

@@ -4,6 +4,7 @@
  * contents, whose page numbers are known by then; pages get their running
  * header and footer and go to one PDF with outlines. */
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,9 +13,17 @@
 #include "base/fileio.h"
 #include "report/report_int.h"
 
-static void progress(const rp_ctx *c, const char *what) {
-  if (c->in->ropts) bg_logf(c->in->ropts->log, BG_LOG_PROGRESS, "report: %s", what);
+void rp_progress(const rp_ctx *c, const char *fmt, ...) {
+  if (!c->in->ropts) return;
+  char what[256];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(what, sizeof what, fmt, ap);
+  va_end(ap);
+  bg_logf(c->in->ropts->log, BG_LOG_PROGRESS, "report: %s", what);
 }
+
+static void progress(const rp_ctx *c, const char *what) { rp_progress(c, "%s", what); }
 
 static void body(rp_ctx *c) {
   c->body.section = 1; /* 1 is the summary on the title page */
@@ -68,6 +77,7 @@ static int assemble(rp_ctx *c, bg_strbuf *out) {
   rp_decorate(&front, bg_sb_str(&esc), 1, 0, total);
   rp_decorate(&c->body, bg_sb_str(&esc), 0, front.npage, total);
   rp_doc *docs[2] = {&front, &c->body};
+  rp_progress(c, "writing %d pages", total);
   bg_sb_printf(&head, " \u2014 analysis report");
   int rc = rp_write_pdf(docs, 2, bg_sb_str(&head), out);
   bg_sb_free(&head);

@@ -531,6 +531,9 @@ void rp_sec_highlights(rp_ctx *c) {
           RP_SIZE_BODY, 0, 0, rp_ink);
   if (shown < n) rest_note(c, h, shown, n);
   qsort(h, (size_t)shown, sizeof *h, by_kind);
-  for (int i = 0; i < shown && !c->failed; i++) show_one(c, &h[i]);
+  for (int i = 0; i < shown && !c->failed; i++) {
+    if (c->m->nbond > 5000) rp_progress(c, "highlight %d of %d", i + 1, shown); /* seconds each at 10^5 bonds */
+    show_one(c, &h[i]);
+  }
   free(h);
 }

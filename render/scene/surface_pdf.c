@@ -85,7 +85,7 @@ static void draw_place(cairo_t *cr, const bg_surface_place *p) {
   cairo_translate(cr, -p->sx, -p->sy);
   /* a tile of a large diagram draws only what reaches into it (surface.h) */
   const double pad = BG_PLACE_CULL_PAD, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
-  bg_surface_replay_clipped(cr, p->scene, clip);
+  bg_surface_replay_clipped_text(cr, p->scene, clip, BG_PLACE_MIN_TEXT / p->scale);
   cairo_restore(cr);
 }
 
