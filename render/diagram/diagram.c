@@ -451,6 +451,9 @@ bg_diagram *bg_diagram_build(const bg_model *m, const bg_analysis *a, const bg_r
   if (o->highlight_kind && check_highlight(d, dg) != 0) goto fail;
   if (!(d->held = layout_build(d, dg))) goto fail;
   d->L = d->held;
+  if (m->nbond > 5000) /* progress under -v: the drawing takes seconds at 10^5 bonds */
+    bg_logf(d->o.log, BG_LOG_PROGRESS, "diagram: %d nodes laid out (%s); drawing", d->L->nnode,
+            d->L->lay.engine);
   draw_scene(d);
   return d;
 fail:

@@ -55,6 +55,8 @@ int bg_highlight_parse(const char *item, int *kind, int *index) {
 
 int bg_diagram_render(bg_diagram *d, const char *format, bg_strbuf *out, bg_diags *dg) {
   int rc = 0;
+  if (d->scene.nitem > 20000) /* progress under -v for a large diagram */
+    bg_logf(d->o.log, BG_LOG_PROGRESS, "diagram: writing %s (%d items)", format, d->scene.nitem);
   if (!strcmp(format, "svg")) rc = bg_surface_svg_write_tips(&d->scene, bg_diagram_tip, d, out);
   else if (!strcmp(format, "svg-cairo")) rc = bg_surface_svg_cairo_write(&d->scene, out);
   else if (!strcmp(format, "pdf")) rc = bg_surface_pdf_write(&d->scene, out);
