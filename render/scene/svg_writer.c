@@ -84,7 +84,7 @@ static void path_data(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it) 
  * letter of its word and the number ("path 2 loop=1" -> "path p2 l1"), and
  * each key of key=value ("flash conflict=1" -> "flash conflict c1"). */
 static void class_attr(bg_strbuf *b, const char *role) {
-  char word[128] = "";
+  char w0 = '\0'; /* the first word's letter */
   bg_sb_puts(b, " class=\"");
   int first = 1;
   for (const char *p = role; *p;) {
@@ -92,19 +92,20 @@ static void class_attr(bg_strbuf *b, const char *role) {
     size_t n = strcspn(p, " ");
     if (!n) break;
     char tok[128];
-    snprintf(tok, sizeof tok, "%.*s", (int)(n < 127 ? n : 127), p);
+    size_t k = n < 127 ? n : 127;
+    memcpy(tok, p, k), tok[k] = '\0';
     p += n;
     char *eq = strchr(tok, '=');
     if (first) {
-      snprintf(word, sizeof word, "%s", tok);
+      w0 = tok[0];
       bg_sb_puts(b, tok);
       first = 0;
     } else if (eq && eq[1] >= '0' && eq[1] <= '9' && strspn(eq + 1, "0123456789") == strlen(eq + 1)) {
       *eq = '\0';
-      if (strcmp(tok, "bond")) bg_sb_printf(b, " %s", tok);
-      bg_sb_printf(b, " %c%s", tok[0], eq + 1);
+      if (strcmp(tok, "bond")) bg_sb_putc(b, ' '), bg_sb_puts(b, tok);
+      bg_sb_putc(b, ' '), bg_sb_putc(b, tok[0]), bg_sb_puts(b, eq + 1);
     } else if (tok[0] >= '0' && tok[0] <= '9' && strspn(tok, "0123456789") == strlen(tok)) {
-      bg_sb_printf(b, " %c%s", word[0], tok);
+      bg_sb_putc(b, ' '), bg_sb_putc(b, w0), bg_sb_puts(b, tok);
     }
   }
   bg_sb_putc(b, '"');
