@@ -4,7 +4,6 @@
  * contents, whose page numbers are known by then; pages get their running
  * header and footer and go to one PDF with outlines. */
 #include <errno.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,16 +11,6 @@
 #include "diagram/diagram_int.h"
 #include "base/fileio.h"
 #include "report/report_int.h"
-
-void rp_progress(const rp_ctx *c, const char *fmt, ...) {
-  if (!c->in->ropts) return;
-  char what[256];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(what, sizeof what, fmt, ap);
-  va_end(ap);
-  bg_logf(c->in->ropts->log, BG_LOG_PROGRESS, "report: %s", what);
-}
 
 static void progress(const rp_ctx *c, const char *what) { rp_progress(c, "%s", what); }
 

@@ -2,6 +2,7 @@
 /* The report's document: A4 pages, each a bg_scene with other scenes
  * placed on it, a flowing cursor, headings recorded for the outline and the
  * contents, running header and footer, the multi-page PDF. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -203,4 +204,15 @@ void rp_figure(rp_doc *d, const bg_scene *s, const char *title) {
   rp_subsection(d, title, s->height * sc);
   rp_place(d, s, 0, 0, s->width, s->height, rp_left() + (rp_content_w(d) - s->width * sc) / 2, d->y, sc);
   d->y += s->height * sc + 8;
+}
+
+/* ---------------------------------------------------------------- progress */
+void rp_progress(const rp_ctx *c, const char *fmt, ...) {
+  if (!c->in->ropts) return;
+  char what[256];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(what, sizeof what, fmt, ap);
+  va_end(ap);
+  bg_logf(c->in->ropts->log, BG_LOG_PROGRESS, "report: %s", what);
 }

@@ -247,7 +247,7 @@ void rp_transform_rows(const bg_analysis *a, const bg_analysis *b, rp_cmp_fn fn,
 /* The solver statistics' rows (report_sim.c). */
 void rp_sim_stat_rows(const rp_ctx *c, const bg_simresult *r, rp_row_fn fn, void *ctx);
 
-/* A progress line under -v ("report: ..."), report.c. */
+/* A progress line under -v ("report: ..."), report_doc.c. */
 void rp_progress(const rp_ctx *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* Keeps diagram d until the PDF is written (NULL: marks the report failed). */
 bg_diagram *rp_keep(rp_ctx *c, bg_diagram *d);

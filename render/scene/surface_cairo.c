@@ -105,10 +105,6 @@ const char *bg_surface_pango_version(void) { return PANGO_VERSION_STRING; }
 
 void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL, 0); }
 
-void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]) {
-  replay_items(cr, s, clip, 0);
-}
-
 void bg_surface_replay_clipped_text(cairo_t *cr, const bg_scene *s, const double clip[4],
                                     double min_text) {
   replay_items(cr, s, clip, min_text);

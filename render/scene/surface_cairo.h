@@ -13,9 +13,8 @@
 void bg_surface_replay(cairo_t *cr, const bg_scene *s);
 /* The same, but only the items whose box (bg_scene_item_box) meets the
  * rectangle clip (x0, y0, x1, y1, in s's points): what a clipped placement
- * shows, at the cost of what it shows rather than of the whole scene. */
-void bg_surface_replay_clipped(cairo_t *cr, const bg_scene *s, const double clip[4]);
-/* The same, leaving out text items smaller than min_text (points of s). */
+ * shows, at the cost of what it shows rather than of the whole scene; text
+ * items smaller than min_text (points of s) left out. */
 void bg_surface_replay_clipped_text(cairo_t *cr, const bg_scene *s, const double clip[4],
                                     double min_text);
 /* A cairo_write_func_t appending to the bg_strbuf passed as closure. */
