@@ -73,6 +73,20 @@ $PY "$tmp/run_py.py" "$tmp" hb_model "$tmp/py_hb.csv" "$tmp/hb.csv" 2>"$tmp/py_h
 printf 'import sys; sys.path.insert(0, sys.argv[1]); import hb_model as m\nimport numpy as np\nprint(m._round_off(lambda z: [z[0] - 2.0], np.array([2.0])), m._round_off(lambda z: [z[0]**2 + 1], np.array([0.0])))\n' >"$tmp/ro.py"
 [ "$($PY "$tmp/ro.py" "$tmp")" = "True False" ]; check "Python _round_off: a solved point accepted, a point with no root (z^2 + 1) refused" $?
 cmp_csv "$tmp/hb.csv" "$tmp/py_hb.csv" 1e-6 "Python vs bgdraw (hydraulic_bridge)"; check "Python export of the DAE matches" $?
+# mass action (log in the laws): the module evaluates its tape with every unknown 0
+# (initial(), the consistent start), where Python's math.log raises and C gives -inf
+cp examples/gallery/reaction.bg "$tmp/reaction.bg"
+"$BGDRAW" "$tmp/reaction.bg" -q --simulate -o "$tmp/reaction.csv"; check "reaction simulates" $?
+"$BGDRAW" "$tmp/reaction.bg" -q -o "$tmp/reaction_model.py"; check "-o reaction_model.py exit 0" $?
+$PY "$tmp/run_py.py" "$tmp" reaction_model "$tmp/py_reaction.csv" "$tmp/reaction.csv"; check "Python module of a model with log() simulates" $?
+cmp_csv "$tmp/reaction.csv" "$tmp/py_reaction.csv" 1e-6 "Python vs bgdraw (reaction)"; check "Python export of reaction matches" $?
+printf '%s\n' 'import sys; sys.path.insert(0, sys.argv[1]); import reaction_model as m' \
+  'print(m._div(1.0, 0.0), m._div(-1.0, 0.0), m._div(0.0, 0.0), m._div(1.0, -0.0), m._log(0.0), m._log(-1.0), m._log10(0.0),' \
+  '      m._sqrt(-1.0), m._asin(2.0), m._acos(-2.0), m._exp(1e4), m._sinh(-1e4), m._cosh(-1e4), m._pow(0.0, -1.0),' \
+  '      m._pow(-2.0, 2001.0), m._pow(2.0, 5000.0), m._pow(-8.0, 1 / 3), m._floor(float("nan")), m._ceil(2.5))' >"$tmp/cdom.py"
+got=$($PY "$tmp/cdom.py" "$tmp")
+[ "$got" = "inf -inf nan -inf -inf nan -inf nan nan nan inf -inf inf inf -inf inf nan nan 3.0" ]; cs_=$?
+check "Python helpers give C's values outside the domain ($got)" $cs_
 
 # Octave (Debian's octave, installed by tools/deps.sh)
 "$BGDRAW" "$tmp/rlc.bg" -q -o "$tmp/rlc_fn.m"; check "-o rlc_fn.m exit 0" $?

@@ -8,13 +8,16 @@
 
 #include "export/export_int.h"
 
-#define FN_COMMON(P)                                                                       \
-  [BG_FN_SQRT] = P "sqrt(%0)", [BG_FN_EXP] = P "exp(%0)", [BG_FN_LOG] = P "log(%0)",       \
-  [BG_FN_LOG10] = P "log10(%0)", [BG_FN_SIN] = P "sin(%0)", [BG_FN_COS] = P "cos(%0)",     \
-  [BG_FN_TAN] = P "tan(%0)", [BG_FN_ASIN] = P "asin(%0)", [BG_FN_ACOS] = P "acos(%0)",     \
-  [BG_FN_ATAN] = P "atan(%0)", [BG_FN_ATAN2] = P "atan2(%0, %1)", [BG_FN_SINH] = P "sinh(%0)", \
-  [BG_FN_COSH] = P "cosh(%0)", [BG_FN_TANH] = P "tanh(%0)", [BG_FN_FLOOR] = P "floor(%0)", \
+/* the functions defined everywhere (Python's raise outside the domain: FN_DOMAIN) */
+#define FN_TOTAL(P)                                                                            \
+  [BG_FN_SIN] = P "sin(%0)", [BG_FN_COS] = P "cos(%0)", [BG_FN_TAN] = P "tan(%0)",             \
+  [BG_FN_ATAN] = P "atan(%0)", [BG_FN_ATAN2] = P "atan2(%0, %1)", [BG_FN_TANH] = P "tanh(%0)"
+#define FN_DOMAIN(P)                                                                           \
+  [BG_FN_SQRT] = P "sqrt(%0)", [BG_FN_EXP] = P "exp(%0)", [BG_FN_LOG] = P "log(%0)",           \
+  [BG_FN_LOG10] = P "log10(%0)", [BG_FN_ASIN] = P "asin(%0)", [BG_FN_ACOS] = P "acos(%0)",     \
+  [BG_FN_SINH] = P "sinh(%0)", [BG_FN_COSH] = P "cosh(%0)", [BG_FN_FLOOR] = P "floor(%0)",     \
   [BG_FN_CEIL] = P "ceil(%0)"
+#define FN_COMMON(P) FN_TOTAL(P), FN_DOMAIN(P)
 
 const bg_xlang bg_xlang_c = {
     0, "[", "]", ";", "  ",
@@ -30,7 +33,11 @@ const bg_xlang bg_xlang_c = {
 
 const bg_xlang bg_xlang_python = {
     0, "[", "]", "", "    ",
-    {FN_COMMON("math."), [BG_FN_ABS] = "math.fabs(%0)",
+    /* Python's math raises where C returns inf or NaN (log(0), sqrt(-1), exp(1000),
+     * floor(nan)): the helpers give C's values, so a tape evaluated at a point
+     * outside a law's domain (initial() with every unknown 0) runs on as in C. */
+    {FN_TOTAL("math."), FN_DOMAIN("_"),
+     [BG_FN_ABS] = "math.fabs(%0)",
      [BG_FN_SIGN] = "(1.0 if %0 > 0 else -1.0 if %0 < 0 else 0.0)", [BG_FN_MIN] = "_fmin(%0, %1)",
      [BG_FN_MAX] = "_fmax(%0, %1)", [BG_FN_POW] = "_pow(%0, %1)", [BG_FN_IF] = "(%1 if %0 != 0 else %2)",
      [BG_FN_STEP] = "(0.0 if %0 < 0 else 1.0)", [BG_FN_RAMP] = "(0.0 if %0 < 0 else %0)",
@@ -98,6 +105,7 @@ static void lin_value(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, con
 static void xl_expr(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr, bg_strbuf *o) {
   static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1",
                                 [BG_X_MUL] = "%0 * %1", [BG_X_DIV] = "%0 / %1"};
+  static const char *py_div = "_div(%0, %1)"; /* Python raises on a division by 0, C gives inf or NaN */
   const char *tpl;
   switch (I->op) {
   case T_LIN: lin_value(L, s, I, arr, o); return;
@@ -108,7 +116,8 @@ static void xl_expr(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const
   case BG_X_POW: tpl = L->pow_; break;
   case BG_X_AND: tpl = L->and_; break;
   case BG_X_OR: tpl = L->or_; break;
-  case BG_X_ADD: case BG_X_SUB: case BG_X_MUL: case BG_X_DIV: tpl = arith[I->op]; break;
+  case BG_X_DIV: tpl = L == &bg_xlang_python ? py_div : arith[I->op]; break;
+  case BG_X_ADD: case BG_X_SUB: case BG_X_MUL: tpl = arith[I->op]; break;
   default: tpl = L->cmp; break;
   }
   expand(L, o, tpl, I->a, I->ref, cmp_op(L, I->op), arr);
