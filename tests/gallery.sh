@@ -71,6 +71,16 @@ last = rows("dc_motor_gear.csv")[-1]
 close("DC motor: load speed", last[1], wm / n, 1e-6)
 close("DC motor: current", last[2], (V - K * wm) / Ra, 1e-6)
 
+# field-controlled motor: the field current Vf/Rf sets the gyrator's ratio r = k i_f;
+# the controller's voltage Kp (wref - w) balances Ra i + r w, and r i = b w
+Vf, Rf, k, Ra, b, Kp, wref = 10, 20, 0.5, 0.5, 1e-3, 2, 100
+r = k * Vf / Rf
+w = Kp * wref / (Ra * b / r + r + Kp)
+last = rows("field_motor.csv")[-1]
+close("field motor: speed", last[1], w, 1e-6)
+close("field motor: armature current", last[2], b * w / r, 1e-6)
+close("field motor: field current", last[3], Vf / Rf, 1e-6)
+
 # two inertias: one state after merge-stores, and both models' load speed
 check = open(f"{d}/gear_merged.check").read()
 close("merged gear: states", int("states (1): Jl.p" in check), 1, 0)
