@@ -2,8 +2,10 @@
 /* Report sections 2 and 3: the diagram with every layer, and one
  * highlighted diagram per path, loop and conflict worth showing. A diagram
  * is scaled to fit its space, but never so far that its smallest text falls
- * below RP_MIN_TEXT points: then it is cut into tiles on several pages
- * (the whole diagram) or cropped to the highlighted item (highlights). */
+ * below RP_MIN_TEXT points: then it goes on a page of its own, or its
+ * drawing is cut into even parts on several pages with its legend placed
+ * whole (the whole diagram), or it is cropped to the highlighted item
+ * (highlights). Measured by tests/unit/test_report_split.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -108,6 +110,8 @@ typedef struct tiling {
   int nused;
 } tiling;
 
+static int is_legend(const bg_scene_item *it) { return !strncmp(it->role, "legend", 6); }
+
 static void item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) {
   if (it->kind == BG_ITEM_TEXT) {
     double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;
@@ -125,16 +129,57 @@ static void item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) {
   }
 }
 
+/* A diagram's drawing and its legend (bg_draw_legend puts it below the
+ * drawing) as regions x, y, w, h of the scene, each with its smallest
+ * text: a split diagram's parts cover the drawing only, and its legend is
+ * placed whole on a page of its own (legend[2] 0: no legend). The drawing
+ * keeps the style's margin but stops half way down the gap above the
+ * legend, so no part shows a sliver of the legend's first row. */
+typedef struct regions {
+  double draw[4], legend[4];
+  double draw_text, legend_text;
+} regions;
 
-static int tiles_for(double w, double h, double cw, double ch, double scale, tiling *t) {
-  t->scale = scale;
-  t->tw = cw / scale, t->th = ch / scale;
-  if (t->tw > w) t->tw = w;
-  if (t->th > h) t->th = h;
-  t->nx = w <= t->tw + 0.5 ? 1 : (int)ceil((w - TILE_OVERLAP) / (t->tw - TILE_OVERLAP));
-  t->ny = h <= t->th + 0.5 ? 1 : (int)ceil((h - TILE_OVERLAP) / (t->th - TILE_OVERLAP));
-  t->stepx = t->nx > 1 ? (w - t->tw) / (t->nx - 1) : 0;
-  t->stepy = t->ny > 1 ? (h - t->th) / (t->ny - 1) : 0;
+static void split_regions(const bg_scene *s, double margin, regions *g) {
+  double d[4] = {1e300, 1e300, -1e300, -1e300}, l[4] = {1e300, 1e300, -1e300, -1e300};
+  g->draw_text = g->legend_text = 0;
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    int leg = is_legend(it);
+    item_box(s, it, leg ? l : d);
+    double *m = leg ? &g->legend_text : &g->draw_text;
+    if (it->kind == BG_ITEM_TEXT && (*m == 0 || it->size < *m)) *m = it->size;
+  }
+  if (d[0] > d[2]) d[0] = d[1] = 0, d[2] = s->width, d[3] = s->height;
+  double x0 = fmax(0, d[0] - margin), y0 = fmax(0, d[1] - margin);
+  double x1 = fmin(s->width, d[2] + margin), y1 = fmin(s->height, d[3] + margin);
+  g->legend[2] = 0;
+  if (l[0] <= l[2]) {
+    double gap = (d[3] + l[1]) / 2, pad = 4;
+    if (y1 > gap) y1 = gap;
+    double ly0 = fmax(gap, l[1] - pad), lx0 = fmax(0, l[0] - pad);
+    g->legend[0] = lx0, g->legend[1] = ly0;
+    g->legend[2] = fmin(s->width, l[2] + pad) - lx0, g->legend[3] = fmin(s->height, l[3] + pad) - ly0;
+  }
+  g->draw[0] = x0, g->draw[1] = y0, g->draw[2] = x1 - x0, g->draw[3] = y1 - y0;
+  if (g->draw_text <= 0) g->draw_text = RP_MIN_TEXT;
+  if (g->legend_text <= 0) g->legend_text = RP_MIN_TEXT;
+}
+
+/* Even parts of a w x h region on pages cw x ch at scale s or above: the
+ * fewest columns and rows at s, then the largest scale (at most cap) at
+ * which they still cover the region. Every part is the same size and
+ * neighbours share exactly TILE_OVERLAP: spreading fixed-size tiles over
+ * the region instead repeated up to 90 % of a part on its neighbour. */
+static int tiles_for(double w, double h, double cw, double ch, double s, double cap, tiling *t) {
+  const double ov = TILE_OVERLAP;
+  double tw = cw / s, th = ch / s;
+  t->nx = w <= tw ? 1 : (int)ceil((w - ov) / (tw - ov));
+  t->ny = h <= th ? 1 : (int)ceil((h - ov) / (th - ov));
+  t->tw = (w + (t->nx - 1) * ov) / t->nx, t->th = (h + (t->ny - 1) * ov) / t->ny;
+  t->scale = fmin(fmin(cw / t->tw, ch / t->th), fmax(cap, s));
+  t->stepx = t->nx > 1 ? t->tw - ov : 0;
+  t->stepy = t->ny > 1 ? t->th - ov : 0;
   return t->nx * t->ny;
 }
 
@@ -161,11 +206,13 @@ static void mark_box(tiling *t, const double b[4]) {
 }
 
 /* Numbers the tiles of region r that show something: a text or a path
- * point of the scene beyond the overlap. Returns the count. */
+ * point of the scene (its legend aside: placed on its own) beyond the
+ * overlap. Returns the count. */
 static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
   memset(t->num, 0, sizeof t->num);
   for (int k = 0; k < s->nitem; k++) {
     const bg_scene_item *it = &s->item[k];
+    if (is_legend(it)) continue;
     if (it->kind == BG_ITEM_TEXT) {
       double b[4] = {1e300, 1e300, -1e300, -1e300};
       item_box(s, it, b);
@@ -188,17 +235,19 @@ static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
   return t->nused;
 }
 
-/* The largest scale not above `scale` with at most max pages showing
- * something (smaller than asked only when even that many are not enough). */
+/* The largest scale not above `scale` (then grown up to cap to even the
+ * parts) with at most max pages showing something (smaller than asked
+ * only when even that many are not enough). */
 static void plan_tiles(const bg_scene *s, const double r[4], double cw, double ch, double scale,
-                       int max, tiling *t) {
+                       double cap, int max, tiling *t) {
   for (;; scale *= 0.92)
-    if (tiles_for(r[2], r[3], cw, ch, scale, t) <= MAX_GRID && number_tiles(s, r, t) <= max) return;
+    if (tiles_for(r[2], r[3], cw, ch, scale, cap, t) <= MAX_GRID && number_tiles(s, r, t) <= max) return;
 }
 
-/* A map of the tiles: the whole region shrunk onto the page with the parts numbered. */
-static void overview(rp_doc *d, const bg_scene *s, const double r[4], const tiling *t) {
-  double cw = rp_content_w(d), ch = rp_room(d) - 10;
+/* A map of the tiles: the whole region shrunk onto the page with the parts
+ * numbered, leaving `reserve` points below it (the legend's). */
+static void overview(rp_doc *d, const bg_scene *s, const double r[4], const tiling *t, double reserve) {
+  double cw = rp_content_w(d), ch = rp_room(d) - 10 - reserve;
   double sc = fit_scale(r[2], r[3], cw, ch, 1);
   double x0 = rp_left() + (cw - r[2] * sc) / 2, y0 = d->y;
   bg_scene *pg = rp_scene(d);
@@ -257,43 +306,155 @@ static void diagram_caption(rp_ctx *c, bg_diagram *dg) {
   rp_gap(&c->body, 4);
 }
 
+/* Content width and the room of a full page of either orientation. */
+static void page_box(int land, double *cw, double *ch) {
+  *cw = (land ? RP_A4_H : RP_A4_W) - 2 * RP_MARGIN_X;
+  *ch = (land ? RP_A4_W : RP_A4_H) - RP_MARGIN_TOP - RP_MARGIN_BOTTOM;
+}
+
+/* Where a slice of the legend from y0 may end to fit up to y1: moved up
+ * above any legend item it would cut (its rows stand apart). */
+static double legend_cut_at(const bg_scene *s, double y0, double y1) {
+  for (int moved = 1; moved;) {
+    moved = 0;
+    for (int i = 0; i < s->nitem; i++) {
+      if (!is_legend(&s->item[i])) continue;
+      double b[4] = {1e300, 1e300, -1e300, -1e300};
+      item_box(s, &s->item[i], b);
+      if (b[1] < y1 && b[3] > y1 && b[1] - 0.5 > y0) y1 = b[1] - 0.5, moved = 1;
+    }
+  }
+  return y1;
+}
+
+/* The legend's scale: the parts', smaller to fit a page, never
+ * below its own readable scale (a legend row wider than the page at 6 pt
+ * is cut at the page's edge rather than made unreadable). */
+static double legend_scale(const rp_doc *d, const regions *g, double scale) {
+  double sc = fmin(scale, rp_content_w(d) / g->legend[2]), lmin = RP_MIN_TEXT / g->legend_text;
+  sc = fmin(sc, (rp_page_room(d) - 8) / g->legend[3]); /* a page of its own holds it whole */
+  return sc < lmin ? lmin : sc;
+}
+
+/* A split diagram's legend at the cursor, whole: on the next page when it
+ * does not fit below the cursor, and only when it is taller than a page
+ * in slices cut between its rows, side by side in balanced columns while
+ * the page's width allows, then on further pages. */
+static void place_legend(rp_doc *d, const bg_scene *s, const regions *g, double scale, int land) {
+  const double *L = g->legend;
+  if (L[2] <= 0) return;
+  double sc = legend_scale(d, g, scale), end = L[1] + L[3], colw = L[2] * sc + 12;
+  int ncol = (int)floor((rp_content_w(d) + 12) / colw);
+  if (ncol < 1) ncol = 1;
+  if (L[3] * sc > rp_room(d) - 4 && (L[3] * sc > (rp_room(d) - 4) * ncol || rp_room(d) < 0.5 * rp_page_room(d)))
+    rp_new_page(d, land);
+  double top = d->y, bottom = top, x = rp_left(), row = 2 * g->legend_text;
+  int col = 0;
+  for (double y = L[1]; y < end - 0.5;) {
+    double room = (rp_room(d) - 4) / sc, left = end - y;
+    double cut = y + fmin(room, left > room ? left / (ncol - col) + row : left);
+    cut = cut >= end ? end : legend_cut_at(s, y, cut);
+    rp_place(d, s, L[0], y, L[2], cut - y, x, top, sc);
+    bottom = fmax(bottom, top + (cut - y) * sc + 4);
+    if ((y = cut) >= end - 0.5) break;
+    if (++col < ncol) x += colw;
+    else rp_new_page(d, land), top = bottom = d->y, x = rp_left(), col = 0;
+  }
+  d->y = bottom;
+}
+
+/* The section's one orientation and its parts. A diagram a page holds
+ * whole at a readable size takes its own orientation (landscape when
+ * wider than tall), or the other one when only that holds it; otherwise
+ * its drawing is cut into parts in the orientation that needs fewer (of
+ * as many, the one with the larger scale, then its own). own: 1 when the
+ * whole diagram fits one page. */
+static int choose_plan(const bg_scene *s, const regions *g, double smin, tiling *t, int *own) {
+  int land = s->width > 1.15 * s->height;
+  double cw, ch;
+  for (int k = 0; k < 2; k++) {
+    int o = k ? !land : land;
+    page_box(o, &cw, &ch);
+    if (fit_scale(s->width, s->height, cw, ch - 14, MAX_SCALE) >= smin) {
+      const double whole[4] = {0, 0, s->width, s->height};
+      *own = 1;
+      plan_tiles(s, whole, cw, ch - 14, smin, MAX_SCALE, 1, t);
+      return o;
+    }
+  }
+  *own = 0;
+  double dmin = RP_MIN_TEXT / g->draw_text;
+  int grid[2];
+  for (int o = 0; o < 2; o++) {
+    page_box(o, &cw, &ch);
+    grid[o] = tiles_for(g->draw[2], g->draw[3], cw, ch - 14, dmin, MAX_SCALE, t);
+  }
+  int best = land;
+  if (grid[0] <= MAX_TILES || grid[1] <= MAX_TILES) { /* else the scale shrinks in either: keep its own */
+    page_box(!land, &cw, &ch);
+    plan_tiles(s, g->draw, cw, ch - 14, dmin, MAX_SCALE, MAX_TILES, t);
+    int other = t->nused;
+    double other_scale = t->scale;
+    page_box(land, &cw, &ch);
+    plan_tiles(s, g->draw, cw, ch - 14, dmin, MAX_SCALE, MAX_TILES, t);
+    if (other < t->nused || (other == t->nused && other_scale > t->scale + 1e-9)) best = !land;
+    else return land;
+  }
+  page_box(best, &cw, &ch);
+  plan_tiles(s, g->draw, cw, ch - 14, dmin, MAX_SCALE, MAX_TILES, t);
+  return best;
+}
+
 void rp_sec_diagram(rp_ctx *c) {
   bg_diagram *dg = build_full(c);
   if (!dg) return;
   rp_doc *d = &c->body;
   const bg_scene *s = &dg->scene;
   double w = s->width, h = s->height, smin = smallest_scale(s);
-  int land = w > 1.15 * h;
+  regions g;
+  split_regions(s, dg->st.margin, &g);
+  tiling t;
+  int own;
+  int land = choose_plan(s, &g, smin, &t, &own);
   rp_new_page(d, land);
   rp_section(d, "Diagram", 1, 0, 0);
   diagram_caption(c, dg);
   double cw = rp_content_w(d), ch = rp_room(d) - 14;
   double sc = fit_scale(w, h, cw, ch, MAX_SCALE);
-  double r[4] = {0, 0, w, h};
   if (sc >= smin) {
     rp_place(d, s, 0, 0, w, h, rp_left() + (cw - w * sc) / 2, d->y, sc);
     d->y += h * sc + 4;
     note(d, "Shown at %.0f %% of its natural size.", 100 * sc);
     return;
   }
-  tiling t;
-  double full = rp_page_room(d) - 14;
-  plan_tiles(s, r, cw, full, smin, MAX_TILES, &t);
+  const double whole[4] = {0, 0, w, h};
+  const double *r = own ? whole : g.draw;
   bg_strbuf b = {0};
-  if (t.nused == 1) /* a page of its own is enough: no parts, no map */
+  if (own) /* a page of its own is enough: no parts, no map */
     bg_sb_printf(&b, "The diagram does not fit below this text at a readable size (its smallest "
                      "text would be below %.0f pt), so it follows on a page of its own at %.0f %%.",
                  RP_MIN_TEXT, 100 * t.scale);
+  else if (t.nused == 1)
+    bg_sb_printf(&b, "The diagram is too large for one page at a readable size (its smallest text "
+                     "would be below %.0f pt), so its legend is below and its drawing follows on a "
+                     "page of its own at %.0f %%.", RP_MIN_TEXT, 100 * t.scale);
   else
     bg_sb_printf(&b, "The diagram is too large for one page at a readable size (its smallest text "
-                     "would be below %.0f pt), so it follows in %d parts at %.0f %%; the map below "
-                     "shows where each part lies.", RP_MIN_TEXT, t.nused, 100 * t.scale);
-  if (t.scale < smin) bg_sb_puts(&b, " Even so the diagram needs more pages than the report allows, "
-                                     "so its text is below that size.");
+                     "would be below %.0f pt), so its drawing follows in %d parts at %.0f %%, each "
+                     "repeating %.0f pt of its neighbours; the map below shows where each part lies, "
+                     "and the legend follows it.", RP_MIN_TEXT, t.nused, 100 * t.scale, TILE_OVERLAP);
+  if (t.scale < (own ? smin : RP_MIN_TEXT / g.draw_text) - 1e-9)
+    bg_sb_puts(&b, " Even so the diagram needs more pages than the report allows, "
+                   "so its text is below that size.");
   rp_para(d, bg_sb_str(&b), RP_SIZE_BODY, 0, 0, rp_ink);
   bg_sb_free(&b);
   rp_gap(d, 4);
-  if (t.nused > 1) overview(d, s, r, &t);
+  if (t.nused > 1) {
+    /* the legend under the map when both fit the page with a map of some size */
+    double lh = g.legend[2] > 0 ? g.legend[3] * legend_scale(d, &g, t.scale) + 8 : 0;
+    overview(d, s, r, &t, lh < 0.6 * rp_room(d) ? lh : 0);
+  }
+  if (!own) place_legend(d, s, &g, t.scale, land);
   emit_tiles(d, s, r, &t, land, "Diagram");
 }
 
@@ -469,9 +630,10 @@ static void show_one(rp_ctx *c, const hl *h) {
   double sc = fit_scale(r[2], r[3], cw, half, 1);
   if (sc < smin) sc = fit_scale(r[2], r[3], cw, full, 1);
   int cropped = sc < smin;
-  if (cropped) {
-    double drawn[4] = {r[0], r[1], r[2], r[3]};
-    hot_region(dg, h, drawn, r);
+  if (cropped) { /* to the drawing: a crop never shows part of the legend */
+    regions g;
+    split_regions(s, dg->st.margin, &g);
+    hot_region(dg, h, g.draw, r);
     sc = fit_scale(r[2], r[3], cw, full, 1);
   }
   bg_strbuf t = {0}, x = {0};
@@ -487,7 +649,7 @@ static void show_one(rp_ctx *c, const hl *h) {
     d->y += r[3] * sc + 10;
   } else {
     tiling tl; /* planned on the whole scene, as before the crop */
-    plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, MAX_HL_TILES, &tl);
+    plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, 1, MAX_HL_TILES, &tl);
     const bg_scene *k = keep_cropped(c, s, r); /* every tile lies inside r */
     rp_subsection(d, bg_sb_str(&t), 30);
     if (tl.nused == 1) bg_sb_puts(&x, " It follows on a page of its own.");

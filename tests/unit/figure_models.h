@@ -220,4 +220,19 @@ static void fm_branchy(bg_strbuf *b, int n, unsigned seed) {
   bg_sb_printf(b, "bond j%d -> load\n", n - 1);
 }
 
+/* A generated model for a table of them: its name and its maker with n. */
+typedef struct fm_model {
+  const char *name;
+  void (*make)(bg_strbuf *b, int n);
+  int n;
+} fm_model;
+
+/* Makers of that shape for the models with other parameters (the seeds
+ * are the figure tests'). */
+__attribute__((unused)) static void fm_make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
+__attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
+__attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }
+__attribute__((unused)) static void fm_make_branchy(bg_strbuf *b, int n) { fm_branchy(b, n, 7u + (unsigned)n); }
+__attribute__((unused)) static void fm_make_stages(bg_strbuf *b, int n) { fm_stages(b, n); }
+
 #endif

@@ -297,26 +297,14 @@ static void test_examples(void) {
 /* Models nobody tuned the drawing to (figure_models.h), each in every style
  * with the default layers and with --show all; the totals against
  * limits_generated (issue 31: the faults it lists, at 0 where met). */
-typedef struct gen_model {
-  const char *name;
-  void (*make)(bg_strbuf *b, int n);
-  int n;
-} gen_model;
-
-static void make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
-static void make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
-static void make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }
-static void make_reactions(bg_strbuf *b, int n) { fm_reactions(b, n); }
-static void make_branchy(bg_strbuf *b, int n) { fm_branchy(b, n, 7u + (unsigned)n); }
-
-static const gen_model generated[] = {
+static const fm_model generated[] = {
     {"chain30", fm_chain, 30},    {"chain300", fm_chain, 300}, {"ladder25", fm_ladder, 25},
-    {"grid5x5", make_grid, 5},    {"tree40", make_tree, 40},   {"tree25", make_tree, 25},
-    {"reactions12", fm_reactions, 12}, {"nested3", make_nested, 0},
+    {"grid5x5", fm_make_grid, 5},    {"tree40", fm_make_tree, 40},   {"tree25", fm_make_tree, 25},
+    {"reactions12", fm_reactions, 12}, {"nested3", fm_make_nested, 0},
     /* held out: added with the signal router, not used to tune it */
-    {"reactions20", make_reactions, 20}, {"modladder9", fm_modladder, 9},
+    {"reactions20", fm_reactions, 20}, {"modladder9", fm_modladder, 9},
     /* the spine (issue 31): the issue's π filter, random chains with side branches */
-    {"pifilter3", fm_pifilter, 3}, {"branchy12", make_branchy, 12}, {"branchy20", make_branchy, 20},
+    {"pifilter3", fm_pifilter, 3}, {"branchy12", fm_make_branchy, 12}, {"branchy20", fm_make_branchy, 20},
 
 };
 
