@@ -631,123 +631,174 @@ static int lin_depends(lindep *L, const int *from, int n1, const int *to, const 
   return fabs(sum) > 1e-12 * scale;
 }
 
-/* Whether the junction equations of every conflict junction, taken
- * together, determine the variables those junctions put out. The signal flow
- * graph has no edges at a conflict junction (sfg.c), so a conflict's own test
- * above cannot see a dependence that passes through another conflict
- * junction: seed 1710 (docs/property.md, finding 6), a 1-junction joined to a
- * 0-junction in conflict by two bonds, whose balance of efforts fixes the
- * 0-junction's effort and, through its flow balance, its own flow. Here every
- * bond of a conflict junction gives one unknown, the variable the junction
- * puts out on it (the conjugate of the one it receives), and the junction one
- * equation per bond (a 0-junction: its efforts equal the first bond's and its
- * flows balance; a 1-junction the dual); the linearised Jacobian of the
+/* Equation eq (0 .. elem_nbond - 1) of conflict node j as sum_i w[i] to[i]
+ * = 0 over bond signals; returns the number of terms. A junction: the
+ * common variable of bond eq + 1 equals bond 0's, the last its balance. A
+ * two-port a -> T -> b, modulus n at the operating point (g->ratio): TF
+ * e_b - n e_a and f_a - n f_b; GY e_a - r f_b and e_b - r f_a. */
+static int node_equation(const bg_model *m, const bg_sfg *g, int j, int eq, int *to, double *w) {
+  int k = m->elem_kind[j], nb = m->elem_nbond[j];
+  const int *bs = m->elem_bonds + m->elem_bondadr[j];
+  if (k == BG_ELEM_J0 || k == BG_ELEM_J1) {
+    int j0 = k == BG_ELEM_J0, nt;
+    if (eq < nb - 1) {
+      to[0] = j0 ? BG_SIG_EFFORT(bs[eq + 1]) : BG_SIG_FLOW(bs[eq + 1]), w[0] = 1;
+      to[1] = j0 ? BG_SIG_EFFORT(bs[0]) : BG_SIG_FLOW(bs[0]), w[1] = -1;
+      return 2;
+    }
+    for (nt = 0; nt < nb; nt++)
+      to[nt] = j0 ? BG_SIG_FLOW(bs[nt]) : BG_SIG_EFFORT(bs[nt]), w[nt] = m->bond_head[bs[nt]] == j ? 1 : -1;
+    return nt;
+  }
+  int a = m->bond_head[bs[0]] == j ? bs[0] : bs[1], b = a == bs[0] ? bs[1] : bs[0];
+  double n = g->ratio[j];
+  if (k == BG_ELEM_TF || k == BG_ELEM_MTF) {
+    to[0] = eq ? BG_SIG_FLOW(a) : BG_SIG_EFFORT(b);
+    to[1] = eq ? BG_SIG_FLOW(b) : BG_SIG_EFFORT(a);
+  } else {
+    to[0] = eq ? BG_SIG_EFFORT(b) : BG_SIG_EFFORT(a);
+    to[1] = eq ? BG_SIG_FLOW(a) : BG_SIG_FLOW(b);
+  }
+  w[0] = 1, w[1] = -n;
+  return 2;
+}
+
+static int conflict_node_testable(const bg_model *m, int j) {
+  int k = m->elem_kind[j];
+  return k == BG_ELEM_J0 || k == BG_ELEM_J1 ||
+         ((k == BG_ELEM_TF || k == BG_ELEM_MTF || k == BG_ELEM_GY || k == BG_ELEM_MGY) &&
+          m->elem_nbond[j] == 2 && m->elem_expr[j] >= 0);
+}
+
+/* Whether the equations of the conflict nodes node[0 .. nj), taken together,
+ * determine the variables those nodes put out: 1 yes, 0 no, -1 undecided. The
+ * signal flow graph has no edges at a conflict node (sfg.c), so its equations
+ * are written here (node_equation) and the unknowns are the variables each
+ * node puts out on its bonds (the conjugates of the ones it receives): one per
+ * bond, as many as the node has equations. The linearised Jacobian of the
  * equations in the unknowns (the received variables through the graph without
- * integrator edges) must have full rank. Undecided (a cycle the dense solve
- * cannot pass, the budget, more than 64 unknowns) is no. */
+ * integrator edges) must have full rank. Alone, a type 2 conflict's system is
+ * Equations 4.47 and 4.48 (each determining bond's common variable against
+ * the input bond's, which reads the others' conjugates through the balance;
+ * seed 1088, docs/property.md finding 14), a two-port's its two relations
+ * (both ports receiving efforts: e_b = n e_a must depend on the flows it
+ * puts out; seeds 170, 231, finding 13). Together they see a dependence that
+ * passes through another conflict node: seed 1710 (finding 6), a 1-junction
+ * joined to a 0-junction in conflict by two bonds, whose balance of efforts
+ * fixes the 0-junction's effort and, through its flow balance, its own flow.
+ * Undecided: a cycle the dense solve cannot pass, the budget, more than 64
+ * unknowns. */
 #define JUNCTION_UNKNOWNS_MAX 64
-static int conflict_junctions_solvable(const bg_model *m, const bg_analysis *a, lindep *L) {
-  int n = 0, *node = bg_xcalloc((size_t)m->nelem + 1, sizeof(int)), nj = 0;
-  for (int c = 0; c < a->nconflict; c++) {
-    int j = a->conflict_node[c], k = m->elem_kind[j], dup = 0;
-    for (int i = 0; i < nj; i++) dup |= node[i] == j;
-    if ((k == BG_ELEM_J0 || k == BG_ELEM_J1) && !dup) node[nj++] = j, n += m->elem_nbond[j];
-  }
-  if (n > JUNCTION_UNKNOWNS_MAX || !n) { free(node); return 0; }
-  int *unk = bg_xcalloc((size_t)n, sizeof(int)), *to = bg_xcalloc((size_t)n, sizeof(int));
-  double *M = bg_xcalloc((size_t)n * (size_t)n, sizeof(double)), *w = bg_xcalloc((size_t)n, sizeof(double)), big = 0;
+static int conflict_nodes_solvable(const bg_model *m, const bg_analysis *a, lindep *L,
+                                   const int *node, int nj) {
+  int n = 0;
+  for (int q = 0; q < nj; q++) n += m->elem_nbond[node[q]];
+  if (n > JUNCTION_UNKNOWNS_MAX) return -1;
+  if (!n) return 1;
+  int *unk = bg_xcalloc((size_t)n, sizeof(int)), to[JUNCTION_UNKNOWNS_MAX];
+  double *M = bg_xcalloc((size_t)n * (size_t)n, sizeof(double)), w[JUNCTION_UNKNOWNS_MAX];
   int nu = 0, ok = 1;
-  for (int q = 0; q < nj; q++) {
-    const int *bs = m->elem_bonds + m->elem_bondadr[node[q]];
+  for (int q = 0; q < nj; q++)
     for (int i = 0; i < m->elem_nbond[node[q]]; i++)
-      unk[nu++] = bg_paths_effort_in(m, a, node[q], bs[i]) ? BG_SIG_FLOW(bs[i]) : BG_SIG_EFFORT(bs[i]);
-  }
-  for (int q = 0, row = 0; q < nj && ok; q++) {
-    int j = node[q], j0 = m->elem_kind[j] == BG_ELEM_J0, nb = m->elem_nbond[j];
-    const int *bs = m->elem_bonds + m->elem_bondadr[j];
-    for (int eq = 0; eq < nb && ok; eq++, row++) {
-      int nt; /* equation eq < nb - 1: common(b[eq + 1]) - common(b[0]); the last: the balance */
-      if (eq < nb - 1) {
-        to[0] = j0 ? BG_SIG_EFFORT(bs[eq + 1]) : BG_SIG_FLOW(bs[eq + 1]), w[0] = 1;
-        to[1] = j0 ? BG_SIG_EFFORT(bs[0]) : BG_SIG_FLOW(bs[0]), w[1] = -1, nt = 2;
-      } else
-        for (nt = 0; nt < nb; nt++)
-          to[nt] = j0 ? BG_SIG_FLOW(bs[nt]) : BG_SIG_EFFORT(bs[nt]), w[nt] = m->bond_head[bs[nt]] == j ? 1 : -1;
-      for (int u = 0; u < n && ok; u++) {
+      unk[nu++] = out_sig(m, a, node[q], m->elem_bonds[m->elem_bondadr[node[q]] + i]);
+  for (int q = 0, row = 0; q < nj && ok > 0; q++)
+    for (int eq = 0; eq < m->elem_nbond[node[q]] && ok > 0; eq++, row++) {
+      int nt = node_equation(m, L->g, node[q], eq, to, w);
+      for (int u = 0; u < n && ok > 0; u++) {
         int d = lin_depends(L, unk + u, 1, to, w, nt);
-        if (d < 0) ok = 0;
+        if (d < 0) ok = -1;
         M[(size_t)row * n + u] = d == 1 ? L->sum : 0;
-        if (fabs(M[(size_t)row * n + u]) > big) big = fabs(M[(size_t)row * n + u]);
       }
     }
-  }
-  for (int c = 0; c < n && ok; c++) { /* Gaussian elimination, partial pivoting */
-    int piv = c;
-    for (int i = c + 1; i < n; i++)
-      if (fabs(M[(size_t)i * n + c]) > fabs(M[(size_t)piv * n + c])) piv = i;
-    if (!(fabs(M[(size_t)piv * n + c]) > 1e-9 * big)) { ok = 0; break; }
+  /* Rank by elimination, each entry carrying the scale of what was summed
+   * into it (the sum of magnitudes): an entry is zero when it cancels to
+   * 1e-9 of that scale, as lin_depends decides its entries. A small slope is
+   * not a zero (a conductance f = G e^3 at e = 0, series_conductances under
+   * relaxed causality: index 1); a cancellation is (seed 1088, two bonds
+   * setting one effort: e2 - e1 = 0 whatever the flows). Rows, then columns,
+   * are scaled to a largest entry of 1 first, so that the pivots compare
+   * (the unknowns mix efforts and flows, the entries conductances of 1e-10
+   * and ones: the hydraulic bridge under relaxed causality). */
+  double *S = bg_xcalloc((size_t)n * (size_t)n, sizeof(double));
+  for (int i = 0; i < n * n; i++) S[i] = fabs(M[i]);
+  for (int pass = 0; pass < 2 && ok > 0; pass++)
+    for (int r = 0; r < n; r++) {
+      double mx = 0;
+      for (int u = 0; u < n; u++) mx = fmax(mx, fabs(pass ? M[(size_t)u * n + r] : M[(size_t)r * n + u]));
+      if (mx == 0) { ok = 0; break; }
+      for (int u = 0; u < n; u++) {
+        size_t x = pass ? (size_t)u * n + r : (size_t)r * n + u;
+        M[x] /= mx, S[x] /= mx;
+      }
+    }
+  for (int c = 0; c < n && ok > 0; c++) { /* Gaussian elimination, partial pivoting */
+    int piv = -1;
+    for (int i = c; i < n; i++)
+      if (fabs(M[(size_t)i * n + c]) > 1e-9 * S[(size_t)i * n + c] &&
+          (piv < 0 || fabs(M[(size_t)i * n + c]) > fabs(M[(size_t)piv * n + c])))
+        piv = i;
+    if (piv < 0) { ok = 0; break; }
     for (int k = 0; k < n; k++) {
-      double t = M[(size_t)c * n + k];
-      M[(size_t)c * n + k] = M[(size_t)piv * n + k], M[(size_t)piv * n + k] = t;
+      size_t x = (size_t)c * n + k, y = (size_t)piv * n + k;
+      double t = M[x], ts = S[x];
+      M[x] = M[y], S[x] = S[y], M[y] = t, S[y] = ts;
     }
     for (int i = c + 1; i < n; i++) {
       double f = M[(size_t)i * n + c] / M[(size_t)c * n + c];
-      for (int k = c; k < n; k++) M[(size_t)i * n + k] -= f * M[(size_t)c * n + k];
+      if (f == 0) continue;
+      for (int k = c; k < n; k++) {
+        M[(size_t)i * n + k] -= f * M[(size_t)c * n + k];
+        S[(size_t)i * n + k] += fabs(f) * S[(size_t)c * n + k];
+      }
     }
   }
-  free(node), free(unk), free(to), free(M), free(w);
+  free(S);
+  free(unk), free(M);
   return ok;
 }
 
-/* The first conflict at a junction whose equations do not determine its
- * algebraic variables, or -1; *bond gets the bond that shows it (type 2).
- * A conflict that fails its own test counts only when the conflict
- * junctions' equations together do not determine their variables either. */
-static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g, int *bond) {
+/* The first conflict whose equations do not determine its algebraic
+ * variables, or -1. A type 1 conflict at a junction: its balance must depend
+ * on its common variable; a type 2 conflict or one at a two-port: its own
+ * equations must determine what it puts out (conflict_nodes_solvable; an
+ * undecided test counts as solvable). A conflict that fails its own test
+ * counts only when the equations of all conflict nodes together do not
+ * determine their variables either (undecided: they do not). */
+static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g) {
   size_t nn = (size_t)g->nnode + 1;
   lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
               bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
               bg_xcalloc(nn, sizeof(double)), 0, 0, 0};
   int *from = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int));
   int *to = bg_xcalloc((size_t)m->nbondref + 2, sizeof(int)), found = -1;
+  int *node = bg_xcalloc((size_t)a->nconflict + 1, sizeof(int)), nj = 0;
   double *w = bg_xcalloc((size_t)m->nbondref + 2, sizeof(double));
+  for (int c = 0; c < a->nconflict; c++) {
+    int j = a->conflict_node[c], dup = 0;
+    for (int i = 0; i < nj; i++) dup |= node[i] == j;
+    if (conflict_node_testable(m, j) && !dup) node[nj++] = j;
+  }
   for (int c = 0; c < a->nconflict && found < 0; c++) {
-    int j = a->conflict_node[c], kind = m->elem_kind[j];
-    if (kind != BG_ELEM_J0 && kind != BG_ELEM_J1) continue;
-    int j0 = kind == BG_ELEM_J0, r = 1;
-    if (a->conflict_type[c] == 1) {
+    int j = a->conflict_node[c], kind = m->elem_kind[j], r = 1;
+    if (!conflict_node_testable(m, j)) continue;
+    if ((kind == BG_ELEM_J0 || kind == BG_ELEM_J1) && a->conflict_type[c] == 1) {
+      int j0 = kind == BG_ELEM_J0, n = m->elem_nbond[j];
       const int *bs = m->elem_bonds + m->elem_bondadr[j];
-      int n = m->elem_nbond[j];
       for (int i = 0; i < n; i++) {
         from[i] = j0 ? BG_SIG_EFFORT(bs[i]) : BG_SIG_FLOW(bs[i]);
         to[i] = j0 ? BG_SIG_FLOW(bs[i]) : BG_SIG_EFFORT(bs[i]);
         w[i] = m->bond_head[bs[i]] == j ? 1 : -1; /* the balance: sum of sigma x = 0 */
       }
       r = lin_depends(&L, from, n, to, w, n);
-      *bond = -1;
     } else {
-      const int *cb = a->conflict_bonds + a->conflict_adr[c];
-      int n = a->conflict_n[c], input = -1;
-      for (int i = 0; i < n && input < 0; i++)
-        if (carrier_rank(m, a, j, cb[i]) == 1) input = i;
-      for (int i = 0; i < n && input < 0; i++)
-        if (carrier_rank(m, a, j, cb[i]) != 0) input = i;
-      if (input < 0) input = 0;
-      for (int i = 0; i < n && r == 1; i++) {
-        if (i == input) continue;
-        from[0] = j0 ? BG_SIG_FLOW(cb[i]) : BG_SIG_EFFORT(cb[i]);
-        to[0] = j0 ? BG_SIG_EFFORT(cb[i]) : BG_SIG_FLOW(cb[i]);
-        w[0] = 1;
-        r = lin_depends(&L, from, 1, to, w, 1);
-        *bond = cb[i];
-      }
+      r = conflict_nodes_solvable(m, a, &L, &j, 1);
     }
     if (r == 0) found = c;
     if (L.work > LINDEP_BUDGET) break; /* out of budget: the rest taken as solvable */
   }
-  if (found >= 0 && conflict_junctions_solvable(m, a, &L)) found = -1;
+  if (found >= 0 && conflict_nodes_solvable(m, a, &L, node, nj) == 1) found = -1;
   free(L.stamp), free(L.queue), free(L.indeg), free(L.d), free(L.abs_d);
-  free(from), free(to), free(w);
+  free(from), free(to), free(w), free(node);
   return found;
 }
 
@@ -800,7 +851,7 @@ static int cloops_constrain_states(const bg_model *m, const bg_analysis *a, cons
 
 static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
   bg_strbuf sb = {0};
-  int p = 0, l = 0, cb = -1, c = a->complete ? conflict_unsolvable(m, a, g, &cb) : -1;
+  int p = 0, l = 0, c = a->complete ? conflict_unsolvable(m, a, g) : -1;
   /* Lagrange causality: each artificial flow source's velocity is an
    * algebraic unknown whose balance is a Lagrange equation (Section 4.10) */
   int inv = 0, dae = a->ndependent || nblocks || a->nconflict || a->ncloop || a->nlag ||
@@ -823,16 +874,21 @@ static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nb
       bg_sb_puts(&sb, "causal loops share bonds (Rosenberg-Andry not satisfied): index above 1");
   } else if (c >= 0) {
     a->index_predicted = 2;
-    const char *j = m->elem_name[a->conflict_node[c]];
-    int j0 = m->elem_kind[a->conflict_node[c]] == BG_ELEM_J0;
-    if (cb < 0)
+    int n = a->conflict_node[c], k = m->elem_kind[n], j0 = k == BG_ELEM_J0;
+    const char *j = m->elem_name[n];
+    if (k != BG_ELEM_J0 && k != BG_ELEM_J1)
+      bg_sb_printf(&sb, "conflict at the two-port %s: its two relations do not determine the "
+                        "variables it puts out on its bonds, so they constrain states or inputs: "
+                        "index above 1", j);
+    else if (a->conflict_type[c] == 1)
       bg_sb_printf(&sb, "type 1 conflict at %s: the balance of its %s does not depend on its "
                         "%s, so it constrains states or inputs: index above 1", j,
                    j0 ? "flows" : "efforts", j0 ? "effort" : "flow");
     else
-      bg_sb_printf(&sb, "type 2 conflict at %s: the %s of bond %d does not depend on its %s, so "
-                        "it constrains states or inputs: index above 1", j, j0 ? "effort" : "flow",
-                   m->bond_num[cb], j0 ? "flow" : "effort");
+      bg_sb_printf(&sb, "type 2 conflict at %s: the %s its %d bonds set and the balance of its "
+                        "%s do not determine those bonds' %s (Equations 4.47, 4.48), so they "
+                        "constrain states or inputs: index above 1", j, j0 ? "efforts" : "flows",
+                   a->conflict_n[c], j0 ? "flows" : "efforts", j0 ? "flows" : "efforts");
   } else if ((l = singular_modulation_loop(a)) >= 0) {
     /* The analogue of a class 5 causal loop (Figure 4.18) for Equation 4.45. */
     a->index_predicted = 2;

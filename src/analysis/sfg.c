@@ -191,6 +191,7 @@ static void twoport_edges(builder *B, int e) {
   twoport_bonds(m, e, &a, &b);
   if (B->a->bond_stroke[a] == BG_STROKE_NONE || B->a->bond_stroke[b] == BG_STROKE_NONE) return;
   double n = bg_xeval(m, m->elem_expr[e], &B->op.env);
+  B->g->ratio[e] = n;
   const char *t = param_text(B, e);
   int ia = bg_paths_effort_in(m, B->a, e, a), ib = bg_paths_effort_in(m, B->a, e, b);
   int k = m->elem_kind[e];
@@ -497,6 +498,8 @@ void bg_sfg_build(const bg_model *m, const bg_analysis *a, bg_sfg *g) {
   B.a = a;
   B.g = g;
   op_init(m, &B.op);
+  g->ratio = bg_arena_alloc(&g->arena, sizeof *g->ratio * (size_t)(m->nelem + 1));
+  memset(g->ratio, 0, sizeof *g->ratio * (size_t)(m->nelem + 1));
   for (int e = 0; e < m->nelem; e++) element_edges(&B, e);
   for (int s = 0; s < m->nstate; s++) state_edges(&B, s);
   op_free(&B.op);

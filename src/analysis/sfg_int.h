@@ -34,6 +34,8 @@ typedef struct bg_sfg {
   int nnode, nbondsig, nedge;
   bg_sfg_edge *edge;
   int *adr, *n, *out; /* out edges of node v: edge ids out[adr[v] .. adr[v]+n[v]) */
+  double *ratio;      /* per element: a TF's or GY's modulus at the operating point,
+                       * in conflict too (form.c's conflict test reads it); else 0 */
   bg_arena arena;     /* owns everything above */
 } bg_sfg;
 

@@ -128,8 +128,16 @@ def _physics(res, m, cols, rows, an):
         res[c] = ("skip", "no simulation")
     if rows is None:
         return
-    idx = _col(m, rows)
     kinds = {x.name: x.kind for x in m.elems}
+    # the reasons a simulated model gives (the campaign tallies them)
+    has_r = any(k in ("R", "RF", "RLC") for k in kinds.values())
+    has_src = any(k in ("Se", "Sf", "MSe", "MSf") for k in kinds.values())
+    res["junction_power"] = ("skip", "no junction")
+    res["twoport_power"] = ("skip", "no two-port")
+    res["detector"] = ("skip", "no detector")
+    res["energy_lossless"] = ("skip", "sources" if has_src else "resistors" if has_r else "no store")
+    res["energy_passive"] = ("skip", "sources" if has_src else "no resistor" if not has_r else "no store")
+    idx = _col(m, rows)
     # power balance: at a junction the power in equals the power out; a
     # 0-junction's efforts are equal, a 1-junction's flows are equal
     bad = None
@@ -163,8 +171,6 @@ def _physics(res, m, cols, rows, an):
     _tellegen(res, m, rows, idx)
     _detectors(res, m, rows, idx)
     # energy: the stores' energy from their states and the generator's laws
-    has_r = any(k in ("R", "RF", "RLC") for k in kinds.values())
-    has_src = any(k in ("Se", "Sf", "MSe", "MSf") for k in kinds.values())
     stores = m.stores()
     if has_src or not stores:
         return
@@ -330,10 +336,14 @@ def _methods(res, bgdraw, m, text, workdir, an):
         j = json.load(open(r.files["json"]))
         s = _summary(j)
         for key in ("states", "predicted"):
-            if s[key] == ref[key] or (key == "predicted" and ix["numeric_status"] == "singular"):
+            if s[key] == ref[key] or (key == "predicted" and ix["numeric_status"] == "singular" and
+                                       (ref[key] or 0) < 2):
                 # a singular pencil: the equations have no index for the
-                # predictions to agree on; every method's run refuses with that
-                # reason (docs/property.md, finding 14)
+                # predictions to agree on, and every method's run refuses with
+                # that reason; but where SCAP predicts above 1, so must the
+                # others (seed 1088: relaxed causality's type 2 conflict
+                # predicted 1 until its test read Equations 4.47 and 4.48
+                # together; docs/property.md, finding 14)
                 continue
             res["methods_agree"] = ("fail", "%s: %s %s, scap %s" % (meth, key, s[key], ref[key]))
             return

@@ -327,18 +327,33 @@ def _step_response(res, bgdraw, m, workdir):
         compare(res, "step_response", "linear step response", w("st_sim.csv"), w("st_lin.csv"), cols=names)
 
 
+PARASITIC_SCALES = (1.0, 1e-2, 1e-4, 1e-6)  # the stated parameter times these, while needed
+PARASITIC_TOL = 1e-3                  # the slow states at the last value, of their range
+PARASITIC_RATE = 0.3                  # each of the last two steps of 100 at least this much closer
+PARASITIC_FLOOR = 1e-6                # the runs' own error (rtol 1e-9 over a few periods)
+
+
 def _parasitic(res, bgdraw, m, workdir, an, rows):
     """Index reduction against parasitic stores (the chapter's Section 4.3):
     for a model whose run reduced the index, `--transform parasitic` adds
     small stores where the analysis names the problem; run at the stated
-    value and at 1/100 of it (each new store starting at the reduced run's
-    value of its junction's variable, so neither starts off the constraint),
-    the deviation from the reduced run (largest over the columns, relative
-    to each column's range, after the first row: the fast stores' initial
-    layer, where variables that follow derivatives have not yet met the
-    reduced run's; each column against its range, at least 1e-3 of the
-    largest range) shrinks with the parameter (to 0.3 of the first or below
-    1e-5, the runs' own error) and ends below 1e-2."""
+    value and at 1/100 and 1/10 000 of it, and at 1/1 000 000 when the slow
+    states are still converging but not yet close (each new store at the
+    reduced run's value of its junction's variable, every store of the model
+    at the reduced run's first row, so no run starts off the constraint),
+    the slow variables converge to the reduced run's: the model's own stores'
+    states (Equations 4.13 -> 4.1 describe the limit of the slow subsystem;
+    the fast one, the new stores' states and the efforts or flows they set,
+    rings undamped about it with an amplitude that falls only as the square
+    root of the parameter, finding 16). The deviation of each is taken
+    against its range (at least 1e-3 of the largest range or value: a state
+    the reduced run holds still); over the last three values it must fall by
+    PARASITIC_RATE or more per factor 100 (the limit is O(parameter): 0.01
+    per step; seeds 1379 and 1725 at 30 elements, whose stated value is far
+    from small, 146 -> 4.9 -> 0.034 -> 3.4e-4) down to the runs' own error,
+    and be below PARASITIC_TOL at the last. A reduced
+    run with other dynamics than the model's (the indexred plant) stays at a
+    fixed distance from the parasitic runs, which converge to the model's."""
     red = ((an.get("index") or {}).get("reduction") or {}).get("status")
     if rows is None or red != "reduced":
         res["parasitic"] = ("skip", "the run did not reduce the index" if rows is not None else "no simulation")
@@ -365,17 +380,34 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
     bonds = re.findall(r"^bond (\d+) (\S+) -> (\S+)$", text, re.M)
     head, _ = ck.read_csv(w("m.csv"))
     orig = {b[0] for b in m.bonds}
+    slow = []
     for x in m.stores():  # every store from the reduced run's consistent start
         if x.kind not in ("C", "I", "CF"):
             res["parasitic"] = ("skip", "a store the check cannot restart (%s)" % x.kind)
             return
-        vals = [rows[0][head.index("%s.%s" % (x.name, st))] for st in x.states]
+        cols = [head.index("%s.%s" % (x.name, st)) for st in x.states]
+        slow += cols
+        vals = [rows[0][c] for c in cols]
         init = "[%s0 = %s]" % ("p" if x.kind == "I" else "q", "%.17g" % vals[0] if len(vals) == 1 else
                                "(%s)" % ", ".join("%.17g" % v for v in vals))
         pat = re.compile(r"^(%s\s+%s\b.*?)(\s*\[[qp]0 = [^\]]*\])?$" % (x.word, x.name), re.M)
         text = pat.sub(lambda mm: mm.group(1) + " " + init, text, count=1)
+    if not slow:
+        res["parasitic"] = ("skip", "no store of the model's own")
+        return
+    # each state against its range, but at least 1e-3 of the largest range or
+    # size of any: a state the reduced run holds (still, or all of them: seed
+    # 1328 at 30 elements is a locked mechanism, every flow 0) moves by
+    # O(parameter) with the parasitic stores
+    spans = {j: max(x[j] for x in rows) - min(x[j] for x in rows) for j in slow}
+    floor = 1e-3 * max(max(spans[j], max(abs(x[j]) for x in rows)) for j in slow) + 1e-12
     devs = []
-    for scale in (1.0, 0.01):
+
+    def converging():  # the last three values show it
+        return all(b[0] <= PARASITIC_RATE * a[0] or b[0] <= PARASITIC_FLOOR for a, b in zip(devs[-3:], devs[-2:]))
+    for scale in PARASITIC_SCALES:
+        if len(devs) >= 3 and (devs[-1][0] <= PARASITIC_TOL or not converging()):
+            break
         t = text
         for k, n, p in stores:
             j = [b[1] if b[2] == n else b[2] for b in bonds if n in (b[1], b[2])][0]
@@ -389,27 +421,18 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
             t = re.sub(r"^(%s\s+%s = %s)$" % (k, n, p), r"\1 [%s0 = %.17g]" % ("q" if k == "C" else "p",
                                                                              value * rows[0][col]), t, flags=re.M)
         r = _simulated(res, "parasitic", bgdraw, t, workdir, "m_par%d" % len(devs), ["csv"],
-                       "the parasitic model's run")
+                       "the parasitic model's run at %g of its parameter" % scale)
         if r is None:
             return
         h, pr = ck.read_csv(r.files["csv"])
         if h != head or len(pr) != len(rows):
             res["parasitic"] = ("fail", "columns or rows differ from the reduced run's")
             return
-        worst = (0.0, "")
-        # each column against its range, but at least 1e-3 of the largest
-        # range: a variable the reduced run holds at 0 (a hidden constraint)
-        # is O(parameter) with the parasitic stores (the campaign's seeds
-        # 1328, 1372: 1e-3 against a range of 1e-9)
-        spans = [max(x[j] for x in rows) - min(x[j] for x in rows) for j in range(len(head))]
-        floor = 1e-3 * max(spans[1:]) + 1e-12
-        for j in range(1, len(head)):
-            d = max(abs(a[j] - b[j]) for a, b in zip(rows[1:], pr[1:])) / max(spans[j], floor)
-            worst = max(worst, (d, head[j]))
-        devs.append(worst)
-    (d1, c1), (d2, c2) = devs
-    if d2 > 1e-2 or (d2 > 0.3 * d1 and d2 > 1e-5):  # 1e-5: the runs' own error at rtol 1e-9 (seed 1277)
-        res["parasitic"] = ("fail", "deviation from the reduced run %.3g (%s) at the stated value, %.3g (%s) "
-                            "at 1/100 of it" % (d1, c1, d2, c2))
+        devs.append(max((max(abs(a[j] - b[j]) for a, b in zip(rows, pr)) / max(spans[j], floor), head[j])
+                        for j in slow))
+    shown = ", ".join("%.3g (%s)" % d for d in devs)
+    if not converging() or devs[-1][0] > PARASITIC_TOL:
+        res["parasitic"] = ("fail", "the slow states' deviation from the reduced run at %s of the parasitic "
+                            "parameter: %s" % (", ".join("%g" % x for x in PARASITIC_SCALES[:len(devs)]), shown))
     else:
-        res["parasitic"] = ("pass", "%.3g -> %.3g" % (d1, d2))
+        res["parasitic"] = ("pass", shown)

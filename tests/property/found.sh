@@ -71,6 +71,28 @@ check "seed1710 relaxed: exit 0" '[ $? -eq 0 ]'
 check "seed1710 relaxed: three conflicts, predicted and numeric index 1" \
   'python3 -c "import json,sys; a=json.load(open(sys.argv[1])); sys.exit(not (len(a[\"conflicts\"]) == 3 and a[\"index\"][\"predicted\"] == 1 and a[\"index\"][\"numeric\"] == 1))" "$tmp/r6.json"'
 check "seed1710 relaxed: SCAP's trajectories to 1e-6" 'same_runs "$tmp/r6.csv" "$tmp/s6.csv" 1e-6'
+# Finding 13: SCAP's conflict at the TF T1 (both ports receive the same flow,
+# j1's, once through bond 2): T1's relation then reads (1 - n) L2's flow = 0,
+# a constraint on a state, and every method predicts index above 1, as the
+# numeric index (2) says; the index reduction simulates it. Before the fix the
+# prediction was 1 and the run stated the disagreement.
+m=$here/found/seed170_tf_conflict.bg
+for meth in scap relaxed vandijk; do
+  "$bg" "$m" --causality $meth --simulate -o "$tmp/t13.json" 2>/dev/null
+  check "seed170 $meth: exit 0, the conflict at T1 predicts index above 1, numeric 2, no disagreement" \
+    '[ $? -eq 0 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric\"] == 2 and i[\"disagreement\"] is None and \"two-port T1\" in i[\"reason\"]))" "$tmp/t13.json"'
+done
+# Finding 14: two 0-junctions joined by two bonds carry an undetermined
+# circulating flow (a singular pencil). Relaxed causality's type 2 conflict at
+# j1 now reads e3 - e6 = 0 against the flows (Equations 4.47, 4.48 with the
+# balance): it does not depend on them, index above 1, as SCAP and van Dijk
+# predict; every run refuses with the reason (exit 3). Before: relaxed 1.
+m=$here/found/seed1088_methods_agree.bg
+for meth in scap relaxed vandijk; do
+  "$bg" "$m" --causality $meth --simulate -o "$tmp/t14.json" 2>"$tmp/t14.err"
+  check "seed1088 $meth: exit 3, predicted index above 1, a singular pencil" \
+    '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$tmp/t14.json"'
+done
 # Finding 7: a DAE of dependent stores at rest driven by a step. The restart
 # after the step failed in IDACalcIC (exit 3); with the algebraic rows solved
 # at the input's new value first it runs, and the capacitor across the effort

@@ -140,8 +140,17 @@ def one(args):
             shrunk.append((name, len(small.elems), len(small.bonds), again[1]))
     res_ = {k: v[0] for k, v in res.items() if not k.startswith("_")}
     res_["_refused"] = res.get("_refused")
+    res_["_skipped"] = {k: skip_key(v[1]) for k, v in res.items() if not k.startswith("_") and v[0] == "skip"}
     return seed, len(m.elems), res_, \
         {k: v[1] for k, v in res.items() if v[0] == "fail"}, shrunk
+
+
+def skip_key(why):
+    """A skip's reason as a tally key: its first line without numbers and
+    store names (`the store C3 ...` and `C5` count as one reason)."""
+    import re
+    first = (why or "(no reason given)").splitlines()[0]
+    return re.sub(r"[A-Za-z_]*[0-9][0-9.e+-]*", "#", first)[:100]
 
 
 def self_test():
@@ -222,6 +231,14 @@ def print_table(table, out):
               file=out, flush=True)
 
 
+def print_skips(skips, out):
+    """Each check's skips by reason, most frequent first."""
+    print("Skipped, by reason:", file=out)
+    for c in check.CHECKS:
+        for why, n in sorted(skips[c].items(), key=lambda kv: (-kv[1], kv[0])):
+            print("  %-20s %6d  %s" % (c, n, why), file=out)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("bgdraw", nargs="?")
@@ -246,6 +263,7 @@ def main():
     if a.model:
         return check_files(bgdraw, a.model, a.seed, os.path.abspath(a.lib) if a.lib else None)
     table = {c: {"pass": 0, "fail": 0, "skip": 0} for c in check.CHECKS}
+    skips = {c: {} for c in check.CHECKS}
     sizes = []
     refused = {}
     nfail = 0
@@ -261,6 +279,9 @@ def main():
                 refused[res["_refused"]] = refused.get(res["_refused"], 0) + 1
             for c in check.CHECKS:
                 table[c][res.get(c, "skip")] += 1
+                if res.get(c, "skip") == "skip":
+                    r = res["_skipped"].get(c, "(not reached: the model stopped before this check)")
+                    skips[c][r] = skips[c].get(r, 0) + 1
             if set(why) & known:
                 nknown += 1
             why = {c: d for c, d in why.items() if c not in known}
@@ -282,6 +303,7 @@ def main():
     if known:
         print("%d models failed only known checks (%s): counted, not shrunk" % (nknown, ", ".join(sorted(known))))
     print_table(table, sys.stdout)
+    print_skips(skips, sys.stdout)
     return 1 if nfail else 0
 
 

@@ -135,9 +135,43 @@ static void test_conflict_index(void) {
   fx_free(&f);
 }
 
+/* An inline model's predicted index and reason under `method`. */
+static void inline_index(const char *text, int method, int index, const char *reason) {
+  bg_t_model mm = {NULL, text, "inline.bg", NULL, NULL, method, NULL, 0};
+  fx f;
+  memset(&f, 0, sizeof f);
+  f.run = bg_t_run(&mm, BG_STAGE_ANALYSIS);
+  if (!f.run || bg_t_view(f.run, &f.src, &f.dg, &f.m, &f.a)) { OK(0); if (f.run) fx_free(&f); return; }
+  INT_EQ(f.a.index_predicted, index);
+  BG_T_REPORT(strstr(f.a.index_reason, reason) != NULL, "reason \"%s\" lacks \"%s\"", f.a.index_reason,
+              reason);
+  fx_free(&f);
+}
+
+/* Conflicts the earlier tests missed (docs/property.md, findings 13, 14). A
+ * TF whose ports receive the same flow (j1's, once through bond 2): its
+ * relation f14 = n f27 reads (1 - n) L2's flow = 0, a constraint on a state,
+ * under every method (numeric index 2). Two 0-junctions joined by two bonds:
+ * relaxed causality's type 2 conflict at j1 sets e3 = e6, which Equations
+ * 4.47 and 4.48 with the balance show independent of the flows (a singular
+ * pencil): above 1, as SCAP predicts from its causal loop. */
+static void test_conflicts_missed(void) {
+  static const char *tf =
+      "model tf\n1 j1\n1 j2\nTF T1 = 0.827\nI L2 = 1 [p0 = 0.362]\n"
+      "bond 2 j1 -> j2\nbond 9 L2 -> j1\nbond 14 j1 -> T1\nbond 27 T1 -> j2\n";
+  static const char *pair =
+      "model pair\n0 j1\n0 j4\nR R1 : e = 0.77*f + 0.1*f^3\n"
+      "bond 3 j1 -> j4\nbond 6 j4 -> j1\nbond 7 R1 -> j4\n";
+  for (int meth = BG_METHOD_SCAP; meth <= BG_METHOD_VANDIJK; meth++)
+    inline_index(tf, meth, 2, "conflict at the two-port T1");
+  inline_index(pair, BG_METHOD_RELAXED, 2, "type 2 conflict at j1");
+  inline_index(pair, BG_METHOD_SCAP, 2, "gain +1");
+}
+
 int main(void) {
   test_forms();
   test_conflict_index();
+  test_conflicts_missed();
   test_estimates();
   test_incomplete();
   return bg_t_done();
