@@ -29,6 +29,7 @@ check "one row per run and the header" $?
 sed -n 2,3p "$tmp/one.csv" | cut -d, -f1-4 | tr '\n' ' ' | grep -qx '0,5,0.001,ok 1,5,0.002,ok '
 check "grid order" $?
 grep -q 'R0 = 80, L0 = 0.002' "$tmp/fam1.svg"; check "the family's legend" $?
+grep -q 'C1.e: 12 of 14 runs' "$tmp/fam1.svg"; check "the family's title: the runs drawn of the study's" $?
 grep -q 'C1.e:cross=0.5' "$tmp/one.svg"; check "the quantities' plot" $?
 
 # split and merge: GNU parallel runs the job list, the merge gives the same bytes
@@ -76,6 +77,7 @@ check "Monte Carlo" $?
 cmp -s "$tmp/mc1.csv" "$tmp/mc2.csv" && cmp -s "$tmp/mc1.svg" "$tmp/mc2.svg"
 check "Monte Carlo: same bytes from 1 and 2 threads" $?
 grep -q '95 % quantile' "$tmp/mc1.svg"; check "Monte Carlo envelope" $?
+grep -q 'mb.f: envelope of 40 runs' "$tmp/mc1.svg"; check "the envelope's title says it is one" $?
 "$BGDRAW" tests/data/quarter_car.bg --monte-carlo 40 --seed 4 --vary 'v0=normal(0.5,0.05)' \
   --vary 'ks=uniform(15000,17000)' --collect mb.f:max --study "$tmp/mc4.csv"
 ! cmp -s "$tmp/mc1.csv" "$tmp/mc4.csv"; check "another seed, other draws" $?

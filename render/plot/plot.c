@@ -163,7 +163,7 @@ static double xtick(const plot *P, int i) {
 
 /* Label of x tick i: the value, or 10 to the decade as markup. */
 static const char *xtick_label(const plot *P, int i, char *buf, size_t n) {
-  if (!xlog(P)) return bg_plot_tick_label(&P->x, i, 0, buf, n);
+  if (!xlog(P)) return bg_plot_tick_label(&P->x, i, buf, n);
   int k = (int)(P->x.k0 + i * P->x.step); /* |k| <= 324: x_axis_log keeps t0, t1 finite */
   if (k == 0 || k == 1) snprintf(buf, n, "%s", k ? "10" : "1");
   else /* a superscript in points: pango's <sup> scales from the default font, not the label's */
@@ -211,6 +211,16 @@ void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it) {
   }
 }
 
+/* The header's y label as markup: the panel's ylabel and its axis' scale
+ * ("x1 [m] ×10⁻³"; the scale alone without a ylabel); "" when neither. */
+static const char *ylabel_markup(const plot *P, const panel *q, bg_strbuf *b) {
+  char scale[128];
+  bg_plot_scale_markup(q->y.exp3, P->fs_label, scale, sizeof scale);
+  bg_markup_escapen(b, q->ylabel, strlen(q->ylabel));
+  if (*scale) bg_sb_printf(b, "%s%s", *q->ylabel ? " " : "", scale);
+  return bg_sb_str(b);
+}
+
 /* ---------------------------------------------------------------- legend */
 /* Lays out (draw = 0: counts the rows) or draws the legend of panel k:
  * entries flow into rows right-aligned at the plot area's right edge, left
@@ -218,12 +228,10 @@ void bg_plot_curve_style(const bg_style *st, int j, bg_scene_item *it) {
 static int legend_pass(plot *P, int k, int draw) {
   panel *q = &P->p[k];
   double x0 = P->left;
-  if (*q->ylabel) {
-    bg_strbuf b = {0};
-    bg_markup_escapen(&b, q->ylabel, strlen(q->ylabel));
-    x0 = fmax(x0, MARGIN + text_width(P, P->fs_label, bg_sb_str(&b)) + 16);
-    bg_sb_free(&b);
-  }
+  bg_strbuf yl = {0};
+  int has_ylabel = *ylabel_markup(P, q, &yl) != 0;
+  if (has_ylabel) x0 = fmax(x0, MARGIN + text_width(P, P->fs_label, bg_sb_str(&yl)) + 16);
+  bg_sb_free(&yl);
   double avail = P->right - x0, gap = 14, pad = 4;
   int n = q->nshown + (q->ncol > q->nshown), rows = 0, start = 0;
   if (P->spec && P->spec->legend_once && k > 0) n = 0; /* the first panel's says it */
@@ -262,7 +270,7 @@ static int legend_pass(plot *P, int k, int draw) {
   for (int j = 0; j < n; j++) bg_sb_free(&mk[j]);
   free(mk);
   free(w);
-  if (rows == 0 && *q->ylabel) rows = 1;
+  if (rows == 0 && has_ylabel) rows = 1;
   return rows;
 }
 
@@ -271,7 +279,7 @@ static double ytick_width(plot *P, const panel *q) {
   double wmax = 0;
   char buf[96];
   for (int i = 0; i < q->y.n; i++)
-    wmax = fmax(wmax, text_width(P, P->fs_tick, bg_plot_tick_label(&q->y, i, 1, buf, sizeof buf)));
+    wmax = fmax(wmax, text_width(P, P->fs_tick, bg_plot_tick_label(&q->y, i, buf, sizeof buf)));
   return wmax;
 }
 
@@ -289,7 +297,7 @@ static void x_axis(plot *P) {
     bg_plot_axis_make(P->t0, P->t1, maxn, 0, &P->x);
     double widest = 0;
     for (int i = 0; i < P->x.n; i++)
-      widest = fmax(widest, text_width(P, P->fs_tick, bg_plot_tick_label(&P->x, i, 0, buf, sizeof buf)));
+      widest = fmax(widest, text_width(P, P->fs_tick, bg_plot_tick_label(&P->x, i, buf, sizeof buf)));
     double px = map(P->x.step, 0, P->t1 - P->t0, 0, w);
     if (px >= widest + 12 || maxn == 1) break;
     int fit = (int)(w / (widest + 12));
@@ -355,8 +363,19 @@ static void layout(plot *P) {
   P->h_row = fmax(line_height(P, P->fs_legend, "0"), P->h_label) + 2;
   P->h_title = line_height(P, P->fs_title, "<b>0</b>") + 3;
   P->left = MARGIN + 30, P->right = P->W - MARGIN;
-  layout_pass(P); /* twice: the legend's room depends on the y labels' width */
+  int passes = 1;
+  /* twice: the legend's room depends on the y labels' width and the y axes'
+   * scales (by the y label); a third time in the rare case a scale changed */
   layout_pass(P);
+  int *exp3 = bg_xcalloc((size_t)P->np + 1, sizeof *exp3);
+  for (;;) {
+    for (int k = 0; k < P->np; k++) exp3[k] = P->p[k].y.exp3;
+    layout_pass(P);
+    int same = 1;
+    for (int k = 0; k < P->np; k++) same &= exp3[k] == P->p[k].y.exp3;
+    if (same || ++passes >= 3) break;
+  }
+  free(exp3);
   double y = MARGIN;
   for (int k = 0; k < P->np; k++) {
     panel *q = &P->p[k];
@@ -427,7 +446,7 @@ static void draw_yticks(plot *P, const panel *q, int k) {
   char buf[96], role[32];
   snprintf(role, sizeof role, "tick y %d", k + 1);
   for (int i = 0; i < q->y.n; i++)
-    text(P, bg_plot_tick_label(&q->y, i, 1, buf, sizeof buf), P->left - TICK_LEN - 2,
+    text(P, bg_plot_tick_label(&q->y, i, buf, sizeof buf), P->left - TICK_LEN - 2,
          Y(q, bg_plot_tick(&q->y, i)), P->fs_tick, 1, 0.5, role);
 }
 
@@ -478,8 +497,7 @@ static void draw_header(plot *P, const panel *q, int k) {
     text(P, bg_sb_str(&b), (P->left + P->right) / 2, q->top, P->fs_title, 0.5, 0, role);
     bg_sb_clear(&b);
   }
-  if (*q->ylabel) {
-    bg_markup_escapen(&b, q->ylabel, strlen(q->ylabel));
+  if (*ylabel_markup(P, q, &b)) {
     snprintf(role, sizeof role, "ylabel %d", k + 1);
     text(P, bg_sb_str(&b), MARGIN, q->top + (q->title ? P->h_title : 0) + P->h_row / 2,
          P->fs_label, 0, 0.5, role);

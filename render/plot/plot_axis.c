@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Axis maths of the simulation plots: 1-2-5 tick steps, axis limits that
- * survive zero-width, non-finite, tiny and huge ranges, and tick labels with
- * SI prefixes. Pure functions (no text measurement), tested directly. */
+ * survive zero-width, non-finite, tiny and huge ranges, tick labels scaled by
+ * a power of ten (an SI prefix on the time axis, x10^k by a value axis' name). Pure functions (no text measurement), tested directly. */
 #include "plot/plot_int.h"
 
 #include <float.h>
@@ -67,12 +67,15 @@ static void pad_range(double *lo, double *hi) {
   *hi = isfinite(b) ? b : DBL_MAX;
 }
 
-static void label_format(bg_plot_axis *ax) {
+/* The labels' power of ten: a multiple of 3 (the SI prefix of the time axis'
+ * unit); a value axis (plain) prints its numbers as they are from 0.01 to
+ * 9999 ("0.25", "1500") and takes a power of ten only outside. */
+static void label_format(bg_plot_axis *ax, int plain) {
   double a = fabs(bg_plot_tick(ax, 0)), b = fabs(bg_plot_tick(ax, ax->n - 1));
   double mag = fmax(a, b);
   if (!(mag > 0)) mag = ax->step;
   int e = (int)floor(log10(mag) + 1e-9), es = (int)floor(log10(ax->step) + 1e-9);
-  int exp3 = 3 * (int)floor(e / 3.0);
+  int exp3 = plain && e >= -2 && e <= 3 ? 0 : 3 * (int)floor(e / 3.0);
   if (exp3 < -24 || exp3 > 24) {
     ax->exp3 = BG_PLOT_NO_PREFIX;
     ax->decimals = e - es > 0 ? e - es : 0; /* significant digits after the first */
@@ -103,7 +106,7 @@ void bg_plot_axis_make(double lo, double hi, int maxn, int pad, bg_plot_axis *ax
   }
   ax->step = step, ax->k0 = k0, ax->n = (int)n;
   ax->lo = lo, ax->hi = hi;
-  label_format(ax);
+  label_format(ax, pad);
 }
 
 /* Angles: the step is 45 degrees, or 90 (and 180, 360, ... doubling) when
@@ -147,7 +150,7 @@ static void put_minus(char *buf, size_t n, const char *src) {
   buf[w] = 0;
 }
 
-char *bg_plot_tick_label(const bg_plot_axis *ax, int i, int with_prefix, char *buf, size_t n) {
+char *bg_plot_tick_label(const bg_plot_axis *ax, int i, char *buf, size_t n) {
   char tmp[96];
   double v = bg_plot_tick(ax, i);
   if (v == 0) snprintf(tmp, sizeof tmp, "0");
@@ -155,10 +158,23 @@ char *bg_plot_tick_label(const bg_plot_axis *ax, int i, int with_prefix, char *b
   else {
     double s = ax->exp3 >= 0 ? v / pow(10, ax->exp3) : v * pow(10, -ax->exp3);
     snprintf(tmp, sizeof tmp, "%.*f", ax->decimals, s);
-    const char *pre = bg_plot_si_prefix(ax->exp3);
-    if (with_prefix && *pre) snprintf(tmp + strlen(tmp), sizeof tmp - strlen(tmp), " %s", pre);
   }
   put_minus(buf, n, tmp);
+  return buf;
+}
+
+/* A value axis says its power of ten once, by its name, and its labels are
+ * plain numbers: a prefix on each label ("6 m" for 0.006) reads as a unit
+ * (6 metres) on the positions and lengths bond graphs plot. */
+char *bg_plot_scale_markup(int exp3, double fs, char *buf, size_t n) {
+  if (exp3 == 0 || exp3 == BG_PLOT_NO_PREFIX || exp3 < -24 || exp3 > 24) {
+    if (n) buf[0] = 0;
+    return buf;
+  }
+  /* a superscript in points, as the log axis' decades: pango's <sup> scales
+   * from the default font, not the label's */
+  snprintf(buf, n, "\xc3\x97" "10<span size=\"%d\" rise=\"%d\">%s%d</span>", (int)(0.72 * fs * 1024),
+           (int)(0.42 * fs * 1024), exp3 < 0 ? "\xe2\x88\x92" : "", exp3 < 0 ? -exp3 : exp3);
   return buf;
 }
 

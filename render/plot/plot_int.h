@@ -44,10 +44,15 @@ void bg_plot_axis_degrees(double lo, double hi, int maxn, bg_plot_axis *ax);
 double bg_plot_tick(const bg_plot_axis *ax, int i);
 
 /* Label of tick i: the value divided by 10^exp3 with ax->decimals digits,
- * U+2212 for minus, "0" for zero; with_prefix appends " " and the prefix
- * ("200 µ"), else the prefix belongs in the axis label ("t [ms]"). Returns
+ * U+2212 for minus, "0" for zero; the scale belongs in the axis' name (the
+ * time axis' prefix "t [ms]", a value axis' bg_plot_scale_markup). Returns
  * buf. */
-char *bg_plot_tick_label(const bg_plot_axis *ax, int i, int with_prefix, char *buf, size_t n);
+char *bg_plot_tick_label(const bg_plot_axis *ax, int i, char *buf, size_t n);
+
+/* A value axis' scale as pango markup for text of fs points: "×10" and the
+ * exponent exp3 as a superscript ("×10⁻³"); "" for exp3 0 or e-notation
+ * labels. Returns buf. */
+char *bg_plot_scale_markup(int exp3, double fs, char *buf, size_t n);
 
 /* "µ", "m", "", "k", ... for exp3 in -24 .. 24 (multiple of 3), else "". */
 const char *bg_plot_si_prefix(int exp3);

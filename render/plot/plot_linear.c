@@ -120,14 +120,19 @@ void bg_plot_xy_axes(bg_plot_xy *N, const char *xl, const char *yl) {
   bg_scene_line(N->s, N->right, N->bot), bg_scene_line(N->s, N->left, N->bot), bg_scene_close(N->s);
   double fs = 0.8 * N->st->font_size;
   for (int i = 0; i < N->x.n; i++)
-    bg_scene_text(N->s, bg_plot_tick_label(&N->x, i, 1, buf, sizeof buf), nx(N, bg_plot_tick(&N->x, i)),
+    bg_scene_text(N->s, bg_plot_tick_label(&N->x, i, buf, sizeof buf), nx(N, bg_plot_tick(&N->x, i)),
                   N->bot + 5, fs, 0.5, 0, N->st->fg, "tick x");
   for (int i = 0; i < N->y.n; i++)
-    bg_scene_text(N->s, bg_plot_tick_label(&N->y, i, 1, buf, sizeof buf), N->left - 5,
+    bg_scene_text(N->s, bg_plot_tick_label(&N->y, i, buf, sizeof buf), N->left - 5,
                   ny(N, bg_plot_tick(&N->y, i)), fs, 1, 0.5, N->st->fg, "tick y 1");
-  bg_scene_text(N->s, xl, (N->left + N->right) / 2, N->bot + 8 + fs * 1.4, 0.9 * N->st->font_size,
-                0.5, 0, N->st->fg, "xlabel");
-  bg_scene_text(N->s, yl, 8, N->top - 4, 0.9 * N->st->font_size, 0, 1, N->st->fg, "ylabel 1");
+  double fl = 0.9 * N->st->font_size;
+  char scale[128], lab[256];
+  bg_plot_scale_markup(N->x.exp3, fl, scale, sizeof scale); /* the axes' powers of ten by their names */
+  snprintf(lab, sizeof lab, "%s%s%s", xl, *scale ? " " : "", scale);
+  bg_scene_text(N->s, lab, (N->left + N->right) / 2, N->bot + 8 + fs * 1.4, fl, 0.5, 0, N->st->fg, "xlabel");
+  bg_plot_scale_markup(N->y.exp3, fl, scale, sizeof scale);
+  snprintf(lab, sizeof lab, "%s%s%s", yl, *scale ? " " : "", scale);
+  bg_scene_text(N->s, lab, 8, N->top - 4, fl, 0, 1, N->st->fg, "ylabel 1");
 }
 
 /* The visible points of one branch in screen coordinates, in the order of

@@ -27,7 +27,7 @@ typedef struct table {
   bg_model m;
   int *adr, *nexpr;
   const char **title, **ylabel, **xlabel;
-  char **names;
+  char **names, **own_title; /* own_title[k]: panel k's title when made here */
 } table;
 
 static void table_init(table *T, const char *name, int nrow, int ncurve, int npanel) {
@@ -41,6 +41,7 @@ static void table_init(table *T, const char *name, int nrow, int ncurve, int npa
   T->adr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
   T->nexpr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
   T->title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->own_title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
   T->ylabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
   T->xlabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
   T->m.name = name, T->m.title = name;
@@ -52,6 +53,8 @@ static void table_init(table *T, const char *name, int nrow, int ncurve, int npa
 
 static void table_free(table *T) {
   for (int k = 0; k < T->r.nout; k++) free(T->names[k]);
+  for (int k = 0; k < T->m.nplot; k++) free(T->own_title[k]);
+  free(T->own_title);
   free(T->names), free(T->r.t), free(T->r.values);
   free(T->adr), free(T->nexpr), free(T->title), free(T->ylabel), free(T->xlabel);
 }
@@ -117,7 +120,14 @@ static int family_table(const bg_study *st, table *T, char *why, size_t nwhy) {
   memcpy(T->r.t, ref->t, (size_t)rows * sizeof(double));
   double *col = bg_xcalloc((size_t)n + 1, sizeof(double));
   for (int c = 0; c < nc; c++) {
-    T->title[c] = st->curve_name[c];
+    /* the panel says what it shows: the figure may stand alone in a document */
+    bg_strbuf tb = {0};
+    bg_sb_printf(&tb, "%s: ", st->curve_name[c]);
+    if (mc) bg_sb_printf(&tb, "envelope of %d runs", n);
+    else if (ncurve < n) bg_sb_printf(&tb, "%d of %d runs", ncurve, n);
+    else bg_sb_printf(&tb, "%d run%s", n, n == 1 ? "" : "s");
+    if (n < st->count) bg_sb_printf(&tb, " (%ld in the study)", st->count); /* failed or off the grid */
+    T->title[c] = T->own_title[c] = tb.s;
     if (mc) {
       static const char *names[] = {"minimum", "5 % quantile", "mean", "95 % quantile", "maximum"};
       for (int j = 0; j < 5; j++) T->names[c * 5 + j] = strdup(names[j]);

@@ -158,7 +158,7 @@ static void check_axis(double lo, double hi, int maxn, int pad) {
   }
   char buf[96];
   for (int i = 0; i < ax.n; i++) /* every label is printable and short */
-    BG_T_REPORT(strlen(bg_plot_tick_label(&ax, i, 1, buf, sizeof buf)) < 40, "label %s", buf);
+    BG_T_REPORT(strlen(bg_plot_tick_label(&ax, i, buf, sizeof buf)) < 40, "label %s", buf);
 }
 
 static void test_axis_ranges(void) {
@@ -210,24 +210,41 @@ static void test_labels(void) {
   bg_plot_axis ax;
   bg_plot_axis_make(0, 2e-3, 5, 0, &ax); /* "t [ms]": 0, 0.5, ..., 2.0 */
   INT_EQ(ax.exp3, -3);
-  STR_EQ(bg_plot_tick_label(&ax, 0, 0, b, sizeof b), "0");
-  STR_EQ(bg_plot_tick_label(&ax, 1, 0, b, sizeof b), "0.5");
-  STR_EQ(bg_plot_tick_label(&ax, 4, 0, b, sizeof b), "2.0");
-  STR_EQ(bg_plot_tick_label(&ax, 1, 1, b, sizeof b), "0.5 m");
-  bg_plot_axis_make(0, 10, 5, 0, &ax);
-  STR_EQ(bg_plot_tick_label(&ax, 5, 1, b, sizeof b), "10");
-  bg_plot_axis_make(-1e-3, 1e-3, 4, 0, &ax); /* −1.0 m, −0.5 m, 0, 0.5 m, 1.0 m */
-  STR_EQ(bg_plot_tick_label(&ax, 0, 1, b, sizeof b), "\xe2\x88\x92" "1.0 m");
-  STR_EQ(bg_plot_tick_label(&ax, 2, 1, b, sizeof b), "0");
-  bg_plot_axis_make(0, 1500, 3, 0, &ax); /* 0, 0.5 k, 1.0 k, 1.5 k */
-  STR_EQ(bg_plot_tick_label(&ax, 3, 1, b, sizeof b), "1.5 k");
-  bg_plot_axis_make(0, 800, 4, 0, &ax); /* no prefix below 1000 */
-  STR_EQ(bg_plot_tick_label(&ax, 4, 1, b, sizeof b), "800");
-  bg_plot_axis_make(0, 4e-4, 2, 0, &ax); /* 0, 200 µ, 400 µ */
-  STR_EQ(bg_plot_tick_label(&ax, 1, 1, b, sizeof b), "200 \xc2\xb5");
-  bg_plot_axis_make(1e-300, 3e-300, 2, 0, &ax); /* beyond the prefixes: e-notation */
+  STR_EQ(bg_plot_tick_label(&ax, 0, b, sizeof b), "0");
+  STR_EQ(bg_plot_tick_label(&ax, 1, b, sizeof b), "0.5");
+  STR_EQ(bg_plot_tick_label(&ax, 4, b, sizeof b), "2.0");
+  bg_plot_axis_make(0, 1500, 3, 0, &ax); /* "t [ks]": 0, 0.5, 1.0, 1.5 */
+  STR_EQ(bg_plot_tick_label(&ax, 3, b, sizeof b), "1.5");
+  /* value axes (padded): plain numbers from 0.01 to 9999, else a power of ten
+   * said once by the axis' name, never a prefix on a label ("6 m" for 0.006
+   * reads as 6 metres) */
+  bg_plot_axis_make(0, 10, 5, 1, &ax); /* 0, 5, 10 */
+  STR_EQ(bg_plot_tick_label(&ax, 2, b, sizeof b), "10");
+  STR_EQ(bg_plot_scale_markup(ax.exp3, 9, b, sizeof b), ""); /* no scale at 10^0 */
+  bg_plot_axis_make(0, 1400, 3, 1, &ax); /* 0, 1000 */
+  STR_EQ(bg_plot_tick_label(&ax, 1, b, sizeof b), "1000");
+  INT_EQ(ax.exp3, 0);
+  bg_plot_axis_make(0, 0.3, 3, 1, &ax); /* 0, 0.2 */
+  STR_EQ(bg_plot_tick_label(&ax, 1, b, sizeof b), "0.2");
+  INT_EQ(ax.exp3, 0);
+  bg_plot_axis_make(0, 0.014, 3, 1, &ax); /* 0, 0.01 */
+  STR_EQ(bg_plot_tick_label(&ax, 1, b, sizeof b), "0.01");
+  bg_plot_axis_make(-0.006, 0.006, 4, 1, &ax); /* −5, 0, 5 ×10⁻³ */
+  INT_EQ(ax.exp3, -3);
+  STR_EQ(bg_plot_tick_label(&ax, 2, b, sizeof b), "5");
+  STR_EQ(bg_plot_tick_label(&ax, 0, b, sizeof b), "\xe2\x88\x92" "5");
+  STR_EQ(bg_plot_scale_markup(ax.exp3, 10, b, sizeof b),
+         "\xc3\x97" "10<span size=\"7372\" rise=\"4300\">\xe2\x88\x92" "3</span>");
+  bg_plot_axis_make(0, 4e-4, 2, 1, &ax); /* 0, 200, 400 ×10⁻⁶ */
+  STR_EQ(bg_plot_tick_label(&ax, 1, b, sizeof b), "200");
+  INT_EQ(ax.exp3, -6);
+  bg_plot_axis_make(0, 2.4e5, 3, 1, &ax); /* 0, 100, 200 ×10³ */
+  INT_EQ(ax.exp3, 3);
+  OK(strstr(bg_plot_scale_markup(ax.exp3, 10, b, sizeof b), ">3</span>") != NULL);
+  bg_plot_axis_make(1e-300, 3e-300, 2, 1, &ax); /* beyond the prefixes: e-notation */
   INT_EQ(ax.exp3, BG_PLOT_NO_PREFIX);
-  OK(strstr(bg_plot_tick_label(&ax, 0, 1, b, sizeof b), "e") != NULL);
+  OK(strstr(bg_plot_tick_label(&ax, 0, b, sizeof b), "e") != NULL);
+  STR_EQ(bg_plot_scale_markup(ax.exp3, 10, b, sizeof b), "");
   STR_EQ(bg_plot_format_value(0.772578, -3, b, sizeof b), "772.578 m");
   STR_EQ(bg_plot_format_value(-2, 0, b, sizeof b), "\xe2\x88\x92" "2 ");
 }
@@ -327,6 +344,43 @@ static void test_two_plots(void) {
   /* nothing overlaps between the panels: panel 1 ends above panel 2's header */
   const bg_scene_item *ti2 = find_item(&s, "title 2");
   OK(p1 && ti2 && s.op[p1->opadr + 2].y[0] < ti2->y);
+  bg_scene_free(&s);
+  fx_free(&f);
+}
+
+/* A millimetre-sized value: plain tick numbers and the power of ten once, by
+ * the y label (never "6 m" on a tick, which reads as 6 metres). */
+static const char *MILLI =
+    "model milli\n"
+    "Se U = 6e-3 * step(t)\n1 j\nR R1 = 1\nC C1 = 1\n"
+    "bond 1 U -> j\nbond 2 j -> R1\nbond 3 j -> C1\n"
+    "simulate t_end = 10, dt = 0.01\n"
+    "plot C1.e [ylabel = \"x [m]\"]\n"
+    "plot C1.q\n";
+
+static void test_value_scale(void) {
+  fx f;
+  if (fx_text(&f, "milli.bg", MILLI)) { OK(0); return; }
+  INT_EQ(f.rc, 0);
+  bg_scene s;
+  scene_of(f.m, &f.r, NULL, &s);
+  const char *scale = "\xc3\x97" "10<span"; /* ×10 and a superscript */
+  OK(has_text(&s, "ylabel 1", "x [m] \xc3\x97" "10<span"));
+  OK(has_text(&s, "ylabel 1", "\xe2\x88\x92" "3</span>"));
+  OK(has_text(&s, "ylabel 2", scale)); /* the scale alone where no ylabel is given */
+  int ticks = 0;
+  for (int i = 0; i < s.nitem; i++)
+    if (!strncmp(s.item[i].role, "tick y", 6) && s.item[i].text) {
+      ticks++;
+      BG_T_REPORT(!strchr(s.item[i].text, ' ') && !strchr(s.item[i].text, 'm'), "tick label %s",
+                  s.item[i].text);
+    }
+  OK(ticks >= 4);
+  /* the largest tick is a whole number of thousandths at most 6 */
+  double top = 0;
+  for (int i = 0; i < s.nitem; i++)
+    if (!strcmp(s.item[i].role, "tick y 1") && s.item[i].text) top = fmax(top, atof(s.item[i].text));
+  OK(top >= 4 && top <= 6);
   bg_scene_free(&s);
   fx_free(&f);
 }
@@ -467,6 +521,7 @@ int main(void) {
   test_labels();
   test_rlc();
   test_two_plots();
+  test_value_scale();
   test_no_plot_statement();
   test_partial();
   test_degenerate();

@@ -106,7 +106,7 @@ static void test_degrees(void) {
   ticks_are(&ax, (double[]){-360, -270, -180, -90, 0}, 5);
   char buf[32];
   bg_plot_axis_degrees(-1000, 10, 6, &ax);
-  STR_EQ(bg_plot_tick_label(&ax, 0, 1, buf, sizeof buf), "\xe2\x88\x92" "1080"); /* no SI prefix */
+  STR_EQ(bg_plot_tick_label(&ax, 0, buf, sizeof buf), "\xe2\x88\x92" "1080"); /* no SI prefix */
 }
 
 /* The Bode scene's phase panel: vC/U goes from 0 to -180, i/U from 90 to
