@@ -36,11 +36,36 @@ for page in "${pages[@]}"; do
   # the page names its pictures in comments (no broken image links where the pictures
   # are not built, docs/gallery.md "Where the pictures are"); beside them they are images
   # (and the links to built files, such as the tutorial's reports, links)
-  sed 's/^<!-- \(!\{0,1\}\[[^]]*\]('"$page"'\/[^)]*)\) -->$/\1/' "$root/docs/$page.md" >"$out/$page.md"
+  # and the links to the other docs lead to the repository's docs/ (relative, so the
+  # folder moves with the checkout); to the built pages beside it, and in the HTML to
+  # their HTML
+  python3 - "$root/docs/$page.md" "$out" "$page" "$(realpath -m --relative-to="$out" "$root/docs")" \
+    "${pages[@]}" <<'PY'
+import re, sys
+src, out, page, docs, built = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+text = open(src, encoding="utf-8").read()
+text = re.sub(r"^<!-- (!?\[[^]]*\]\(" + re.escape(page) + r"/[^)]*\)) -->$", r"\1", text, flags=re.M)
+def relink(html):
+    def one(m):
+        target = m.group(2)
+        if re.match(r"[a-z]+:|#|/", target) or target.startswith(page + "/"):
+            return m.group(0)
+        name, _, anchor = target.partition("#")
+        stem = name[:-3] if name.endswith(".md") else None
+        if stem in built:
+            name = stem + (".html" if html else ".md")
+        else:
+            name = docs + "/" + name
+        return m.group(1) + "(" + name + ("#" + anchor if anchor else "") + ")"
+    return re.sub(r"(\]|\]\s*)\(([^)\s]+)\)", one, text)
+open(f"{out}/{page}.md", "w", encoding="utf-8").write(relink(False))
+open(f"{out}/.{page}.html.md", "w", encoding="utf-8").write(relink(True))
+PY
   if command -v pandoc >/dev/null; then
     pandoc --standalone --metadata pagetitle="bgdraw $page" -f gfm -t html5 \
-      "$out/$page.md" -o "$out/$page.html"
+      "$out/.$page.html.md" -o "$out/$page.html"
   fi
+  rm -f "$out/.$page.html.md"
 done
 # README's picture of a gallery page, on request (GALLERY_SCREENSHOT=1, with Debian's
 # chromium): one entry, the thermostat, as the HTML shows it; it is

@@ -12,7 +12,7 @@ page_build() { # PAGE
   d=$tmp/out/$1
 }
 page_files() { # PAGE
-  local f img
+  local f img bad
   for f in examples/"$1"/*.bg examples/"$1"/*.c examples/"$1"/*.py examples/"$1"/*.yaml; do
     [ -f "$f" ] || continue
     cmp -s "$f" "$d/${f##*/}"; check "docs/$1.md shows $f as it is" $?
@@ -31,10 +31,26 @@ page_files() { # PAGE
     grep -v '^<!--' "$tmp/out/$1.md" | grep -qF "]($1/$img)"
     check "the built page shows $img" $?
   done
+  # every relative link of the built page (and of its HTML) leads to a file: the pages
+  # built beside it, the repository's docs for the others
+  bad=$(python3 - "$tmp/out" "$1" <<'EOF'
+import os, re, sys
+out, page = sys.argv[1], sys.argv[2]
+for name, pat in ((page + ".md", r"\]\(([^)\s]+)\)"), (page + ".html", r'href="([^"]+)"')):
+    path = os.path.join(out, name)
+    if not os.path.exists(path):
+        continue
+    for target in re.findall(pat, open(path, encoding="utf-8").read()):
+        if re.match(r"[a-z]+:|#", target):
+            continue
+        if not os.path.exists(os.path.join(out, target.split("#")[0])):
+            print(name + ": " + target)
+EOF
+)
+  [ -z "$bad" ]; check "the built page's links lead to files: ${bad:-all}" $?
   # the repository's page shows no picture and links no file that is not a file of the
   # repository (the built ones are named in comments: docs/gallery.md, "Where the
   # pictures are")
-  local bad
   bad=$(grep -v '^<!--' "docs/$1.md" | grep -o "]($1/[^)]*)" | sed 's/^](//; s/)$//' |
     while read -r img; do [ -f "docs/$img" ] || echo "$img"; done)
   [ -z "$bad" ]; check "docs/$1.md shows or links nothing the repository lacks: ${bad:-none}" $?
