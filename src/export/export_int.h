@@ -17,6 +17,7 @@ typedef struct bg_xlang {
   const char *indent;
   const char *fn[BG_FN_COUNT];
   const char *neg, *not_, *and_, *or_, *pow_;
+  const char *div_;            /* %0 / %1, or a helper where the language raises at 0 */
   const char *cmp;            /* comparison: %0 OP %1 as a number 0/1; %o is OP */
   const char *table;
   const char *eq, *ne;        /* spelling of == and != */

@@ -29,7 +29,7 @@ const bg_xlang bg_xlang_c = {
      /* memory: the value it starts with (an export with memory is refused: bg_export_refusal) */
      [BG_FN_HYST] = "(%0 >= %2 ? 1.0 : 0.0)", [BG_FN_STICK] = "(%0 == 0 && fabs(%1) <= %2 ? 1.0 : 0.0)"},
     "-%0", "(double)(%0 == 0)", "(double)(%0 != 0 && %1 != 0)", "(double)(%0 != 0 || %1 != 0)",
-    "pow(%0, %1)", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!=", bg_reserved_c};
+    "pow(%0, %1)", "%0 / %1", "(double)(%0 %o %1)", "bg_tab(%t, %0)", "==", "!=", bg_reserved_c};
 
 const bg_xlang bg_xlang_python = {
     0, "[", "]", "", "    ",
@@ -45,7 +45,8 @@ const bg_xlang bg_xlang_python = {
      [BG_FN_SAT] = "(%1 if %0 < %1 else %2 if %0 > %2 else %0)",
      [BG_FN_HYST] = "(1.0 if %0 >= %2 else 0.0)", [BG_FN_STICK] = "(1.0 if %0 == 0 and math.fabs(%1) <= %2 else 0.0)"},
     "-%0", "float(%0 == 0)", "float(%0 != 0 and %1 != 0)", "float(%0 != 0 or %1 != 0)",
-    "_pow(%0, %1)", "float(%0 %o %1)", "_tab(%t, %0)", "==", "!=", bg_reserved_python};
+    "_pow(%0, %1)", "_div(%0, %1)", /* Python raises on a division by 0, C gives inf or NaN */
+    "float(%0 %o %1)", "_tab(%t, %0)", "==", "!=", bg_reserved_python};
 
 const bg_xlang bg_xlang_octave = {
     1, "(", ")", ";", "  ",
@@ -55,7 +56,7 @@ const bg_xlang bg_xlang_octave = {
      [BG_FN_PULSE] = "double(%0 >= 0 && %0 < %1)", [BG_FN_SAT] = "bg_if(%0 < %1, %1, bg_if(%0 > %2, %2, %0))",
      [BG_FN_HYST] = "double(%0 >= %2)", [BG_FN_STICK] = "double(%0 == 0 && abs(%1) <= %2)"},
     "-%0", "double(%0 == 0)", "double(%0 ~= 0 && %1 ~= 0)", "double(%0 ~= 0 || %1 ~= 0)",
-    "%0 ^ %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~=", bg_reserved_octave};
+    "%0 ^ %1", "%0 / %1", "double(%0 %o %1)", "bg_tab(tables, %t, %0)", "==", "~=", bg_reserved_octave};
 
 void bg_xl_slot(const bg_xlang *L, bg_strbuf *o, const char *arr, int k) {
   bg_sb_printf(o, "%s%s%d%s", arr, L->open, k + L->base, L->close);
@@ -103,9 +104,7 @@ static void lin_value(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, con
 
 /* The value expression of tape instruction I (no assignment). */
 static void xl_expr(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const char *arr, bg_strbuf *o) {
-  static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1",
-                                [BG_X_MUL] = "%0 * %1", [BG_X_DIV] = "%0 / %1"};
-  static const char *py_div = "_div(%0, %1)"; /* Python raises on a division by 0, C gives inf or NaN */
+  static const char *arith[] = {[BG_X_ADD] = "%0 + %1", [BG_X_SUB] = "%0 - %1", [BG_X_MUL] = "%0 * %1"};
   const char *tpl;
   switch (I->op) {
   case T_LIN: lin_value(L, s, I, arr, o); return;
@@ -116,7 +115,7 @@ static void xl_expr(const bg_xlang *L, const bg_eqsys *s, const tinstr *I, const
   case BG_X_POW: tpl = L->pow_; break;
   case BG_X_AND: tpl = L->and_; break;
   case BG_X_OR: tpl = L->or_; break;
-  case BG_X_DIV: tpl = L == &bg_xlang_python ? py_div : arith[I->op]; break;
+  case BG_X_DIV: tpl = L->div_; break;
   case BG_X_ADD: case BG_X_SUB: case BG_X_MUL: tpl = arith[I->op]; break;
   default: tpl = L->cmp; break;
   }
