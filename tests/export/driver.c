@@ -15,21 +15,9 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "driver_times.h"
 #include "ode.h"
 #include "dae.h"
-
-static double times[200000];
-static int ntimes;
-
-static int read_times(const char *csv) {
-  FILE *f = fopen(csv, "r");
-  char line[65536];
-  if (!f || !fgets(line, sizeof line, f)) return -1;
-  while (ntimes < 200000 && fgets(line, sizeof line, f))
-    if (line[0] != '#') times[ntimes++] = strtod(line, NULL);
-  fclose(f);
-  return ntimes > 1 ? 0 : -1;
-}
 
 static void header(FILE *o, const char *const *names, int n) {
   fputs("t", o);

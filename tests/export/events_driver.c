@@ -15,23 +15,12 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "driver_times.h"
 #include "ev.h"
 
-static double times[200000];
-static int ntimes;
 static ev_params P;
 static ev_modes MD;
 static double W[EV_NWORK], JV[EV_NNZ + 1];
-
-static int read_times(const char *csv) {
-  FILE *f = fopen(csv, "r");
-  char line[65536];
-  if (!f || !fgets(line, sizeof line, f)) return -1;
-  while (ntimes < 200000 && fgets(line, sizeof line, f))
-    if (line[0] != '#') times[ntimes++] = strtod(line, NULL);
-  fclose(f);
-  return ntimes > 1 ? 0 : -1;
-}
 
 static int f_ode(sunrealtype t, N_Vector y, N_Vector yd, void *u) {
   (void)u;
