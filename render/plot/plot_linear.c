@@ -23,24 +23,33 @@ enum { BODE_POINTS = 400, TIME_POINTS = 401 };
 
 typedef bg_plot_table table;
 
-static void table_init(table *T, const bg_model *src, int nrow, int npair, int npanel) {
+void bg_plot_table_init(bg_plot_table *T, const char *name, const char *title, int nrow, int ncurve,
+                        int npanel) {
   memset(T, 0, sizeof *T);
   T->r.nrows = nrow;
-  T->r.nout = npair * npanel;
+  T->r.nout = ncurve * npanel;
   T->r.t = bg_xcalloc((size_t)nrow + 1, sizeof(double));
   T->r.values = bg_xcalloc((size_t)nrow * T->r.nout + 1, sizeof(double));
   T->names = bg_xcalloc((size_t)T->r.nout + 1, sizeof(char *));
   T->r.names = (const char **)T->names;
-  T->m.name = src->name, T->m.title = src->title;
+  T->expradr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
+  T->nexpr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
+  T->title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->own_title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->ylabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->xlabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
+  T->m.name = name, T->m.title = title;
   T->m.nplot = npanel, T->m.nplotexpr = T->r.nout;
-  for (int k = 0; k < npanel; k++) T->plot_expradr[k] = k * npair, T->plot_nexpr[k] = npair;
-  T->m.plot_expradr = T->plot_expradr, T->m.plot_nexpr = T->plot_nexpr;
+  for (int k = 0; k < npanel; k++) T->expradr[k] = k * ncurve, T->nexpr[k] = ncurve, T->ylabel[k] = "";
+  T->m.plot_expradr = T->expradr, T->m.plot_nexpr = T->nexpr;
   T->m.plot_title = T->title, T->m.plot_ylabel = T->ylabel, T->m.plot_xlabel = T->xlabel;
 }
 
 void bg_plot_table_free(bg_plot_table *T) {
   for (int k = 0; k < T->r.nout; k++) free(T->names[k]);
-  free(T->names), free(T->r.t), free(T->r.values);
+  for (int k = 0; k < T->m.nplot; k++) free(T->own_title[k]);
+  free(T->names), free(T->r.t), free(T->r.values), free(T->own_title);
+  free(T->expradr), free(T->nexpr), free(T->title), free(T->ylabel), free(T->xlabel);
 }
 
 /* "vC ← U" for pair p, in every panel. */
@@ -58,7 +67,7 @@ static int bode_table(const bg_model *m, const bg_linear *l, table *T) {
   int np = l->ny * l->nu, nw = BODE_POINTS;
   double *re = bg_xcalloc((size_t)nw * np + 1, sizeof *re), *im = bg_xcalloc((size_t)nw * np + 1, sizeof *im);
   double *ph = bg_xcalloc((size_t)nw + 1, sizeof *ph);
-  table_init(T, m, nw, np, 2);
+  bg_plot_table_init(T, m->name, m->title, nw, np, 2);
   bg_linear_freqs(l, m, nw, T->r.t);
   int rc = bg_linear_freqresp(l, nw, T->r.t, re, im);
   for (int p = 0; p < np && rc == 0; p++) {
@@ -79,7 +88,7 @@ static int step_table(const bg_model *m, const bg_linear *l, table *T) {
   int np = l->ny * l->nu, nt = TIME_POINTS;
   double t_end = bg_linear_t_end(l, m);
   double *y = bg_xcalloc((size_t)nt * np + 1, sizeof *y);
-  table_init(T, m, nt, np, 2);
+  bg_plot_table_init(T, m->name, m->title, nt, np, 2);
   int rc = 0;
   for (int imp = 0; imp < 2 && rc == 0; imp++) {
     rc = bg_linear_step(l, t_end, nt, imp, y);

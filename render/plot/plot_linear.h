@@ -18,10 +18,14 @@ enum { BG_PLOT_BODE, BG_PLOT_NYQUIST, BG_PLOT_STEP };
 typedef struct bg_plot_table {
   bg_simresult r;
   bg_model m;
-  int plot_expradr[2], plot_nexpr[2];
-  const char *title[2], *ylabel[2], *xlabel[2];
-  char **names;
+  int *expradr, *nexpr;                 /* panel k: curves expradr[k] .. + nexpr[k] */
+  const char **title, **ylabel, **xlabel; /* per panel; ylabel "" */
+  char **names, **own_title;            /* curve names; titles made for the table */
 } bg_plot_table;
+/* A table of npanel panels of ncurve curves each and nrow rows, as the plot
+ * code reads a model and its run (the linear plots, the studies' plots). */
+void bg_plot_table_init(bg_plot_table *T, const char *name, const char *title, int nrow, int ncurve,
+                        int npanel);
 /* 0 with T filled (free it with bg_plot_table_free), or -1: nothing drawn
  * (not linearised, no pair, Nyquist, no step response). */
 int bg_plot_linear_table(const bg_model *m, const bg_linear *l, int kind, bg_plot_table *T);

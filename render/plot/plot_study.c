@@ -22,42 +22,7 @@
 enum { FAMILY_MAX = 12, QUANTITY_CURVES_MAX = 12 };
 #define WIDTH 540.0
 
-typedef struct table {
-  bg_simresult r;
-  bg_model m;
-  int *adr, *nexpr;
-  const char **title, **ylabel, **xlabel;
-  char **names, **own_title; /* own_title[k]: panel k's title when made here */
-} table;
-
-static void table_init(table *T, const char *name, int nrow, int ncurve, int npanel) {
-  memset(T, 0, sizeof *T);
-  T->r.nrows = nrow;
-  T->r.nout = ncurve * npanel;
-  T->r.t = bg_xcalloc((size_t)nrow + 1, sizeof(double));
-  T->r.values = bg_xcalloc((size_t)nrow * T->r.nout + 1, sizeof(double));
-  T->names = bg_xcalloc((size_t)T->r.nout + 1, sizeof(char *));
-  T->r.names = (const char **)T->names;
-  T->adr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
-  T->nexpr = bg_xcalloc((size_t)npanel + 1, sizeof(int));
-  T->title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
-  T->own_title = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
-  T->ylabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
-  T->xlabel = bg_xcalloc((size_t)npanel + 1, sizeof(char *));
-  T->m.name = name, T->m.title = name;
-  T->m.nplot = npanel, T->m.nplotexpr = T->r.nout;
-  for (int k = 0; k < npanel; k++) T->adr[k] = k * ncurve, T->nexpr[k] = ncurve, T->ylabel[k] = "";
-  T->m.plot_expradr = T->adr, T->m.plot_nexpr = T->nexpr;
-  T->m.plot_title = T->title, T->m.plot_ylabel = T->ylabel, T->m.plot_xlabel = T->xlabel;
-}
-
-static void table_free(table *T) {
-  for (int k = 0; k < T->r.nout; k++) free(T->names[k]);
-  for (int k = 0; k < T->m.nplot; k++) free(T->own_title[k]);
-  free(T->own_title);
-  free(T->names), free(T->r.t), free(T->r.values);
-  free(T->adr), free(T->nexpr), free(T->title), free(T->ylabel), free(T->xlabel);
-}
+typedef bg_plot_table table;
 
 /* A param's value in a legend: six significant digits (a Monte Carlo
  * draw's full digits are in the table). */
@@ -116,7 +81,7 @@ static int family_table(const bg_study *st, table *T, char *why, size_t nwhy) {
   int ncurve = mc ? 5 : n < FAMILY_MAX ? n : FAMILY_MAX;
   const bg_study_run *ref = &st->runs[idx[0]];
   int rows = ref->nrows;
-  table_init(T, st->title, rows, ncurve, nc);
+  bg_plot_table_init(T, st->title, st->title, rows, ncurve, nc);
   memcpy(T->r.t, ref->t, (size_t)rows * sizeof(double));
   double *col = bg_xcalloc((size_t)n + 1, sizeof(double));
   for (int c = 0; c < nc; c++) {
@@ -169,7 +134,7 @@ static int quantity_table(const bg_study *st, table *T, char *why, size_t nwhy) 
   int nx = s->params[0].nvalues;
   long stride = st->nruns / nx;
   int ncurve = stride < QUANTITY_CURVES_MAX ? (int)stride : QUANTITY_CURVES_MAX;
-  table_init(T, st->title, nx, ncurve, st->ncollect);
+  bg_plot_table_init(T, st->title, st->title, nx, ncurve, st->ncollect);
   for (int x = 0; x < nx; x++) T->r.t[x] = s->params[0].values[x];
   for (int q = 0; q < st->ncollect; q++) {
     T->title[q] = st->collect[q].label;
@@ -193,7 +158,7 @@ static int bode_table(const bg_study *st, const bg_study_bode *b, table *T, char
     return -1;
   }
   int nr = b->nrun, np = b->npair, nw = b->nw;
-  table_init(T, st->title, nw, nr, 2 * np);
+  bg_plot_table_init(T, st->title, st->title, nw, nr, 2 * np);
   memcpy(T->r.t, b->w, (size_t)nw * sizeof(double));
   for (int p = 0; p < np; p++)
     for (int half = 0; half < 2; half++) {
@@ -229,7 +194,7 @@ int bg_study_plot_scene(const bg_study *st, int kind, const bg_study_bode *bode,
     for (int p = 0; p < bode->npair && 2 * p + 1 < 32; p++) spec.angle_mask |= 1u << (2 * p + 1);
   }
   bg_plot_scene_spec(&T.m, &T.r, &spec, sty, width, 0, out);
-  table_free(&T);
+  bg_plot_table_free(&T);
   return 0;
 }
 
