@@ -6,29 +6,9 @@
 #include "equations/equations.h"
 #include "export/export.h"
 #include "fuzz_common.h"
+#include "fuzz_exports.h"
 #include "json/json.h"
 #include "transform/transform.h"
-
-static void exports(fuzz_run *f, size_t size) {
-  bg_diags dg;
-  bg_diags_init(&dg, "fuzz", f->src, size);
-  bg_eqsys *s = bg_eqsys_build_export(f->model, &f->analysis, &dg);
-  bg_diags_free(&dg);
-  if (!s) return;
-  char prefix[80], guid[64];
-  bg_export_default_prefix(f->model, prefix, sizeof prefix);
-  bg_strbuf h = {0}, c = {0};
-  bg_export_c(s, prefix, "model.h", &h, &c);
-  bg_export_python(s, &c);
-  bg_export_octave(s, "model", &c);
-  bg_export_modelica(s, &c);
-  bg_export_fmu_guid(f->src, size, guid, sizeof guid);
-  bg_export_fmu_description(s, prefix, guid, &c);
-  bg_export_fmu_glue(s, prefix, "model.h", guid, &c);
-  bg_sb_free(&h);
-  bg_sb_free(&c);
-  bg_eqsys_free(s);
-}
 
 static void transforms(fuzz_run *f, size_t size) {
   static const char *const names[] = {"merge-stores", "parasitic", "relax-junction"};
@@ -60,7 +40,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         f.facts.numeric = NULL;
         bg_index_free(&ix);
       }
-      exports(&f, size);
+      fuzz_exports(&f, size, 1);
     }
     bg_json_write_analysis(f.model, &f.analysis, &f.facts, &sb);
     bg_sb_free(&sb);

@@ -7,6 +7,7 @@
  * (fuzz_common.h). */
 #include "export/export.h"
 #include "fuzz_common.h"
+#include "fuzz_exports.h"
 #include "json/json_linear.h"
 #include "linear/linear.h"
 #include "plot/plot_linear.h"
@@ -33,33 +34,12 @@ static void linear(fuzz_run *f, size_t size) {
   bg_linear_free(&l);
 }
 
-static void exports(fuzz_run *f, size_t size) {
-  bg_diags dg;
-  bg_diags_init(&dg, "fuzz", f->src, size);
-  bg_eqsys *s = bg_eqsys_build_export(f->model, &f->analysis, &dg);
-  bg_diags_free(&dg);
-  if (!s) return;
-  char prefix[80], guid[64];
-  bg_export_default_prefix(f->model, prefix, sizeof prefix);
-  bg_strbuf h = {0}, c = {0};
-  bg_export_c(s, prefix, NULL, &h, &c);
-  bg_export_python(s, &c);
-  bg_export_octave(s, prefix, &c);
-  bg_export_modelica(s, &c);
-  bg_export_fmu_guid(c.s ? c.s : "", c.len, guid, sizeof guid);
-  bg_export_fmu_description(s, prefix, guid, &c);
-  bg_export_fmu_glue(s, prefix, "model.h", guid, &c);
-  bg_sb_free(&h);
-  bg_sb_free(&c);
-  bg_eqsys_free(s);
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (size > FUZZ_MAX_LEN) return 0;
   fuzz_run f;
   if (fuzz_load(&f, data, size) == 0) {
     linear(&f, size);
-    exports(&f, size);
+    fuzz_exports(&f, size, 0);
   }
   fuzz_free(&f);
   return 0;
