@@ -50,13 +50,35 @@ static int new_eq(ir_work *W, int expr, int row, int ord, int anti) {
   return e;
 }
 
-/* Incidence of a new equation: its variables (original equations), or
- * Pantelides' rule for a derivative: the parent's variables and theirs. */
+/* Variables by the name of their unknown (natural order), then by order of
+ * derivative; equations by the name of the unknown of their row. Pantelides'
+ * searches go in these orders, not in the order of the unknowns and rows,
+ * which follows the statements (docs/property.md, finding 2c). */
+static int cmp_var_name(const void *a, const void *b, void *ctx) {
+  const ir_work *W = ctx;
+  int va = *(const int *)a, vb = *(const int *)b, ja = W->v_unk[va], jb = W->v_unk[vb];
+  int c = ja == jb ? 0 : bg_natural_cmp(bg_eqsys_name(W->s, ja), bg_eqsys_name(W->s, jb));
+  if (c) return c;
+  if (ja != jb) return ja < jb ? -1 : 1;
+  return (W->v_ord[va] > W->v_ord[vb]) - (W->v_ord[va] < W->v_ord[vb]);
+}
+
+static int cmp_eq_name(const void *a, const void *b, void *ctx) {
+  const ir_work *W = ctx;
+  int ra = W->e_row[*(const int *)a], rb = W->e_row[*(const int *)b];
+  int c = ra == rb ? 0 : bg_natural_cmp(bg_eqsys_name(W->s, ra), bg_eqsys_name(W->s, rb));
+  return c ? c : (ra > rb) - (ra < rb);
+}
+
+/* Incidence of a new equation: its variables (original equations, by name),
+ * or Pantelides' rule for a derivative: the parent's variables and theirs. */
 static void set_incidence(ir_work *W, int e) {
   W->inc_adr[e] = W->inc.n;
   int l = W->e_anti[e];
-  if (l < 0) ir_expr_vars(W, W->e_expr[e], &W->inc);
-  else
+  if (l < 0) {
+    ir_expr_vars(W, W->e_expr[e], &W->inc);
+    bg_sort(W->inc.v + W->inc_adr[e], (size_t)(W->inc.n - W->inc_adr[e]), sizeof(int), cmp_var_name, W);
+  } else
     for (int k = 0; k < W->inc_n[l]; k++) {
       int v = W->inc.v[W->inc_adr[l] + k];
       bg_ivec_push(&W->inc, v);
@@ -189,9 +211,11 @@ static void too_large(ir_work *W) {
 }
 
 static int pantelides(ir_work *W) {
-  int n0 = W->ne;
+  int n0 = W->ne, *order = bg_xmalloc((size_t)(n0 + 1) * sizeof(int));
+  for (int k = 0; k < n0; k++) order[k] = k;
+  bg_sort(order, (size_t)n0, sizeof(int), cmp_eq_name, W);
   for (int k = 0; k < n0; k++) {
-    for (int i = k;;) {
+    for (int i = order[k];;) {
       int cap = W->ne + W->nv + 1;
       colours C = {bg_xcalloc((size_t)cap, sizeof(int)), bg_xcalloc((size_t)cap, sizeof(int)), 1};
       int *st = bg_xmalloc((size_t)3 * cap * sizeof(int));
@@ -201,11 +225,13 @@ static int pantelides(ir_work *W) {
       if (ok) break;
       if (rc || bg_sym_full(W->S)) {
         if (!W->why[0]) too_large(W);
+        free(order);
         return -1;
       }
       i = W->e_der[i];
     }
   }
+  free(order);
   return 0;
 }
 
@@ -254,16 +280,16 @@ static int pref_group(const ir_work *W, int v) {
   return root < 0 ? 2 : 3;
 }
 
-/* The store's or state's name, or NULL (an algebraic unknown). */
+/* The store's or state's name, or the algebraic unknown's ("e4", "R1.e"). */
 static const char *pref_name(const ir_work *W, int v) {
   const bg_eqsys *s = W->s;
   int j = W->v_unk[v];
-  if (j >= s->nx) return NULL;
+  if (j >= s->nx) return bg_eqsys_name(s, j);
   return s->u_elem[j] >= 0 ? s->m->elem_name[s->u_elem[j]]
          : s->u_state[j] >= 0 ? s->m->state_name[s->u_state[j]] : NULL;
 }
 
-/* Within a group stores and states go by name (natural order), not by the
+/* Within a group stores, states and algebraic unknowns go by name (natural order), not by the
  * order of the unknowns, which follows the order of the statements: moving
  * a line must not move a dummy derivative (docs/causality.md, "Ties"). */
 static int cmp_pref(const void *a, const void *b, void *ctx) {
@@ -272,7 +298,7 @@ static int cmp_pref(const void *a, const void *b, void *ctx) {
   int ga = pref_group(W, va), gb = pref_group(W, vb);
   if (ga != gb) return ga < gb ? -1 : 1;
   const char *na = pref_name(W, va), *nb = pref_name(W, vb);
-  int c = na && nb ? bg_natural_cmp(na, nb) : 0;
+  int c = na && nb && W->v_unk[va] != W->v_unk[vb] ? bg_natural_cmp(na, nb) : 0;
   if (c) return c;
   int ja = W->v_unk[va], jb = W->v_unk[vb];
   if (ja != jb) return ja < jb ? -1 : 1;
