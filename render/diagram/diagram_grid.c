@@ -8,7 +8,8 @@
  * (the hub before it nearest in dot's order), the child with the longest
  * chain onward continues the parent's row (so the longest source-to-load
  * chain is the main row) and the other children's subtrees are stacked
- * above and below it, as near as their rows allow (assign_rows). Grid cells: hubs at even (gx, gy); their one-ports
+ * above and below it, as near as their rows allow (assign_rows); a part whose
+ * hubs form a rectangular mesh takes the mesh's lattice instead (mesh_rows). Grid cells: hubs at even (gx, gy); their one-ports
  * (leaves) go to a free side cell next to them (left, above, below, right, in
  * the order that best keeps dot's directions), else a diagonal one. A bond
  * between hubs is a straight run of free cells, else an elbow (one or two
@@ -35,6 +36,7 @@ typedef struct grid {
   int *deg;
   int *gx, *gy;       /* grid cell per node */
   unsigned char *placed, *hub, *sides;
+  unsigned char *mesh; /* hubs placed on a mesh's lattice (mesh_rows): their part is not folded */
   int *col, *row;     /* hubs: dot column, row */
   /* cells: open addressing, key (gx, gy), value the owner (node n, or -2 - edge) */
   long long *key;
@@ -295,6 +297,121 @@ static void assign_rows(grid *g, const int *h, int nh) {
   free(all.top), free(all.bot), free(cs), free(par), free(last), free(reach), free(cont), free(off), free(kids);
 }
 
+/* ---------------------------------------------------------------- meshes */
+/* Issue 31, grids recognised: a part whose hubs form a rectangular mesh
+ * (a 5 x 5 grid of RC cells: 0-junctions joined along rows and columns
+ * through 1-junctions) was drawn as a tree from its source, a 45-degree
+ * diamond of staircases. Such a part's hubs are put on the mesh's own
+ * lattice instead. Its four corners are the hubs with two hub bonds whose
+ * neighbours have two each (meshes of at least 3 x 3 junctions); from
+ * the corner nearest the source, A, and the one that ends its longer
+ * side, B, breadth-first distances give each hub its lattice point:
+ * x = (dA - dB + |AB|) / 2, y = (dA + dB - |AB|) / 2. The part counts as
+ * a mesh only when every hub gets a point of its own and every bond
+ * between hubs joins neighbouring points, so whatever passes is drawn
+ * with every hub bond straight; anything else keeps the tree drawing.
+ * Linear in the part's size. */
+static int hub_degree(const grid *g, int v) {
+  int k = 0;
+  for (int i = g->adr[v]; i < g->adr[v + 1]; i++) k += g->hub[other(g, g->adj[i], v)];
+  return k;
+}
+
+/* Breadth-first distances over hub bonds from s into dist (-1: not
+ * reached; reset by the caller); the hubs reached into q. Returns their count. */
+static int hub_bfs(const grid *g, int s, int *dist, int *q) {
+  int qh = 0, qt = 0;
+  dist[s] = 0, q[qt++] = s;
+  while (qh < qt) {
+    int v = q[qh++];
+    for (int i = g->adr[v]; i < g->adr[v + 1]; i++) {
+      int u = other(g, g->adj[i], v);
+      if (g->hub[u] && dist[u] < 0) dist[u] = dist[v] + 1, q[qt++] = u;
+    }
+  }
+  return qt;
+}
+
+/* The part of hubs q[0..n) as a mesh: col and row of each, or nothing.
+ * da, db, ds: per node, -1 for the part's hubs on entry (the caller
+ * resets them); qq: a queue. */
+static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, int *qq) {
+  int corner[4], nc = 0, src = -1;
+  for (int i = 0; i < n; i++) {
+    int v = q[i], hd = hub_degree(g, v);
+    if (hd > 4) return;
+    if (hd != 2) continue;
+    int both = 1;
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+      int u = other(g, g->adj[k], v);
+      if (g->hub[u] && hub_degree(g, u) != 2) both = 0;
+    }
+    if (both && nc == 4) return;
+    if (both) corner[nc++] = v;
+  }
+  if (nc != 4) return;
+  const bg_model *m = g->d->m;
+  for (int i = 0; i < n; i++) ds[q[i]] = 0; /* the part, to find the hub its first source hangs on */
+  for (int e = 0; e < m->nelem && src < 0; e++) {
+    int v = g->d->node_of[e];
+    if (!bg_elem_is_source(m->elem_kind[e]) || g->hub[v] || g->deg[v] != 1) continue;
+    int u = other(g, g->adj[g->adr[v]], v);
+    if (ds[u] == 0) src = u;
+  }
+  for (int i = 0; i < n; i++) ds[q[i]] = -1;
+  hub_bfs(g, src >= 0 ? src : q[0], ds, qq);
+  int a = corner[0];
+  for (int k = 1; k < 4; k++)
+    if (ds[corner[k]] < ds[a]) a = corner[k];
+  hub_bfs(g, a, da, qq);
+  int o[3], no = 0;
+  for (int k = 0; k < 4; k++)
+    if (corner[k] != a) o[no++] = corner[k];
+  for (int i = 0; i < 3; i++) /* by distance from A: the two ends of its sides, then the far corner */
+    for (int j = i + 1; j < 3; j++)
+      if (da[o[j]] < da[o[i]]) {
+        int t = o[i];
+        o[i] = o[j], o[j] = t;
+      }
+  if (da[o[0]] + da[o[1]] != da[o[2]]) return;
+  int b = da[o[1]] > da[o[0]] || (da[o[1]] == da[o[0]] && g->d->nx[o[1]] > g->d->nx[o[0]]) ? o[1] : o[0];
+  int L = da[b], H = da[o[2]] - L;
+  if ((long long)(L + 1) * (H + 1) > 4LL * n + 16) return;
+  hub_bfs(g, b, db, qq);
+  /* lattice point of v: x = (da - db + L) / 2, y = (da + db - L) / 2 */
+  int *at = bg_xcalloc((size_t)(L + 1) * (size_t)(H + 1), sizeof(int)), ok = 1;
+  for (int i = 0; i < n && ok; i++) {
+    int v = q[i], x2 = da[v] - db[v] + L, y2 = da[v] + db[v] - L;
+    ok = db[v] >= 0 && x2 >= 0 && y2 >= 0 && x2 % 2 == 0 && y2 % 2 == 0 && x2 / 2 <= L && y2 / 2 <= H;
+    if (ok) ok = !at[(y2 / 2) * (L + 1) + x2 / 2]++;
+  }
+  for (int i = 0; i < n && ok; i++)
+    for (int k = g->adr[q[i]]; k < g->adr[q[i] + 1] && ok; k++) {
+      int v = q[i], u = other(g, g->adj[k], v);
+      if (g->hub[u]) ok = abs((da[u] - db[u]) - (da[v] - db[v])) / 2 + abs((da[u] + db[u]) - (da[v] + db[v])) / 2 == 1;
+    }
+  if (ok)
+    for (int i = 0; i < n; i++) {
+      int v = q[i];
+      g->col[v] = (da[v] - db[v] + L) / 2, g->row[v] = (da[v] + db[v] - L) / 2, g->mesh[v] = 1;
+    }
+  free(at);
+}
+
+static void mesh_rows(grid *g, const int *h, int nh) {
+  size_t n = (size_t)g->n + 1;
+  int *seen = bg_xmalloc(n * sizeof(int)), *da = bg_xmalloc(n * sizeof(int)), *db = bg_xmalloc(n * sizeof(int));
+  int *ds = bg_xmalloc(n * sizeof(int)), *q = bg_xmalloc(n * sizeof(int)), *qq = bg_xmalloc(n * sizeof(int));
+  for (size_t v = 0; v < n; v++) seen[v] = da[v] = db[v] = ds[v] = -1;
+  for (int i = 0; i < nh; i++) {
+    if (seen[h[i]] >= 0) continue;
+    int k = hub_bfs(g, h[i], seen, q);
+    if (k >= 17) mesh_part(g, q, k, da, db, ds, qq); /* 3 x 3 junctions and their links at least */
+    for (int j = 0; j < k; j++) da[q[j]] = db[q[j]] = ds[q[j]] = -1;
+  }
+  free(seen), free(da), free(db), free(ds), free(q), free(qq);
+}
+
 /* ---------------------------------------------------------------- components, wrapping */
 static int find(int *up, int v) {
   while (up[v] != v) v = up[v] = up[up[v]];
@@ -371,6 +488,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     lo[c] = g->row[v] < lo[c] ? g->row[v] : lo[c];
     hi[c] = g->row[v] > hi[c] ? g->row[v] : hi[c];
     ncol[c] = g->col[v] + 1 > ncol[c] ? g->col[v] + 1 : ncol[c];
+    if (g->mesh[v]) nband[c] = -1; /* a mesh: one band, a grid is not folded */
   }
   if (ni) instance_columns(g, h, nh, up, ilo, ihi, icomp);
   /* between bands a free row, and with frames one more per level of
@@ -388,7 +506,8 @@ static void stack_components(grid *g, const int *h, int nh) {
     int c = find(up, v);
     if (lo[c] > hi[c] || base[c] < 0) continue;
     int span = hi[c] - lo[c] + 1, wrap = (int)ceil(sqrt((double)ncol[c] * (2 * span + 2)));
-    if (wrap < 16) wrap = 16;
+    if (nband[c] < 0) wrap = ncol[c] + 16;
+    else if (wrap < 16) wrap = 16;
     boff[c] = nstart;
     nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, start + nstart);
     /* each band's first column under the last one of the band before, the
@@ -770,7 +889,7 @@ static void grid_alloc(grid *g, bg_diagram_layout *d) {
   size_t n = (size_t)g->n + 1;
   g->gx = bg_xcalloc(n, sizeof(int)), g->gy = bg_xcalloc(n, sizeof(int));
   g->col = bg_xcalloc(n, sizeof(int)), g->row = bg_xcalloc(n, sizeof(int));
-  g->placed = bg_xcalloc(n, 1), g->hub = bg_xcalloc(n, 1), g->sides = bg_xcalloc(n, 1);
+  g->placed = bg_xcalloc(n, 1), g->hub = bg_xcalloc(n, 1), g->sides = bg_xcalloc(n, 1), g->mesh = bg_xcalloc(n, 1);
   g->bent = bg_xcalloc((size_t)g->ne + 1, sizeof(int));
   g->corner = bg_xcalloc((size_t)g->ne + 1, sizeof *g->corner);
   cell_grow(g);
@@ -779,7 +898,7 @@ static void grid_alloc(grid *g, bg_diagram_layout *d) {
 static void grid_free(grid *g) {
   free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg);
   free(g->gx), free(g->gy), free(g->col), free(g->row);
-  free(g->placed), free(g->hub), free(g->sides), free(g->bent), free(g->corner);
+  free(g->placed), free(g->hub), free(g->sides), free(g->mesh), free(g->bent), free(g->corner);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy);
 }
 
@@ -791,6 +910,7 @@ void bg_grid_place(bg_diagram_layout *d) {
   for (int v = 0; v < g.n; v++) g.placed[v] = !bg_node_shown(d, v); /* inside a box */
   int nh, *h = order_hubs(&g, &nh);
   assign_rows(&g, h, nh);
+  mesh_rows(&g, h, nh);
   stack_components(&g, h, nh);
   route_hub_bonds(&g);
   place_leaves(&g);
