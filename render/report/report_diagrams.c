@@ -352,8 +352,13 @@ static void place_legend(rp_doc *d, const bg_scene *s, const regions *g, double 
   int col = 0;
   for (double y = L[1]; y < end - 0.5;) {
     double room = (rp_room(d) - 4) / sc, left = end - y;
+    if (room < row && d->y > RP_MARGIN_TOP) { /* not a row's room left: the next page */
+      rp_new_page(d, land), top = bottom = d->y, x = rp_left(), col = 0;
+      continue;
+    }
     double cut = y + fmin(room, left > room ? left / (ncol - col) + row : left);
     cut = cut >= end ? end : legend_cut_at(s, y, cut);
+    if (cut < y + 0.5) cut = fmin(end, y + room); /* a row taller than a page: cut */
     rp_place(d, s, L[0], y, L[2], cut - y, x, top, sc);
     bottom = fmax(bottom, top + (cut - y) * sc + 4);
     if ((y = cut) >= end - 0.5) break;
