@@ -330,7 +330,7 @@ def _step_response(res, bgdraw, m, workdir):
 PARASITIC_SCALES = (1.0, 1e-2, 1e-4, 1e-6)  # the stated parameter times these, while needed
 PARASITIC_TOL = 1e-3                  # the slow states at the last value, of their range
 PARASITIC_RATE = 0.3                  # each of the last two steps of 100 at least this much closer
-PARASITIC_FLOOR = 1e-6                # the runs' own error (rtol 1e-9 over a few periods)
+PARASITIC_FLOOR = 1e-5                # the runs' own error (rtol 1e-9: seed 871 at 40 elements levels at 2e-6)
 
 
 def _parasitic(res, bgdraw, m, workdir, an, rows):
