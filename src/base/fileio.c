@@ -185,27 +185,44 @@ static int finish_tmp(const char *tmp, const char *target, int ok) {
   return rc;
 }
 
-/* A regular file or a new name: replaced atomically. */
-static int replace_file_locked(const char *target, const struct stat *old, const void *data,
-                               size_t len) {
-  char *tmpl = tmp_template(target);
-  int fd = create_tmp(tmpl, old);
+/* The temporary file of target's replacement, with the mode the result
+ * must have: its descriptor (its name in *tmp, freed by tmp_end), or -1.
+ * The caller holds replace_lock until tmp_end. */
+static int tmp_begin(const char *target, const struct stat *old, char **tmp) {
+  *tmp = tmp_template(target);
+  int fd = create_tmp(*tmp, old);
   if (fd < 0) {
-    free(tmpl);
-    return -1;
+    int e = errno;
+    free(*tmp);
+    *tmp = NULL;
+    errno = e;
   }
-  int ok = write_all(fd, data, len) == 0;
+  return fd;
+}
+
+/* Closes fd, then renames tmp onto target (ok) or removes it; frees tmp. 0,
+ * or -1 with errno set (a failed write's when not ok). */
+static int tmp_end(int fd, char *tmp, const char *target, int ok) {
   int e = errno;
   if (close(fd) != 0 && ok) {
     ok = 0;
     e = errno;
   }
-  if (ok && before_rename_hook) before_rename_hook(tmpl);
+  if (ok && before_rename_hook) before_rename_hook(tmp);
   errno = e;
-  int rc = finish_tmp(tmpl, target, ok);
+  int rc = finish_tmp(tmp, target, ok);
   if (!ok) errno = e;
-  free(tmpl);
+  free(tmp);
   return rc;
+}
+
+/* A regular file or a new name: replaced atomically. */
+static int replace_file_locked(const char *target, const struct stat *old, const void *data,
+                               size_t len) {
+  char *tmp;
+  int fd = tmp_begin(target, old, &tmp);
+  if (fd < 0) return -1;
+  return tmp_end(fd, tmp, target, write_all(fd, data, len) == 0);
 }
 
 static int replace_file(const char *target, const struct stat *old, const void *data, size_t len) {
@@ -257,6 +274,82 @@ int bg_write_file_atomic(const char *path, const void *data, size_t len) {
   else rc = replace_file(target, &st, data, len);
   int e = errno;
   free(target);
+  errno = e;
+  return rc;
+}
+
+/* ------------------------------------------------ outputs made in pieces */
+/* Where the first piece goes, decided as bg_write_file_atomic decides: 0
+ * with the temporary file open (replace_lock held until bg_stream_finish),
+ * 1 for a target that gets the whole text at the end, -1 with errno set for
+ * a refused target or a temporary file that cannot be made. */
+static int stream_open(bg_stream *st) {
+  if (open_fd_of(st->path) >= 0) return 1;
+  char *target = bg_resolve_links(st->path);
+  if (!target) return -1;
+  struct stat old;
+  int exists = stat(target, &old) == 0, rc = -1;
+  if (!exists && errno != ENOENT) rc = -1; /* stat's errno says why */
+  else if (exists && bg_path_is_input(target)) errno = BG_EISINPUT;
+  else if (exists && S_ISDIR(old.st_mode)) errno = EISDIR;
+  else if (exists && S_ISBLK(old.st_mode)) errno = BG_EBLOCKDEV;
+  else if (exists && !S_ISREG(old.st_mode)) rc = 1; /* a device, FIFO or socket */
+  else {
+    pthread_mutex_lock(&replace_lock);
+    st->fd = tmp_begin(target, exists ? &old : NULL, &st->tmp);
+    if (st->fd >= 0) {
+      st->target = target;
+      return 0;
+    }
+    int e = errno;
+    pthread_mutex_unlock(&replace_lock);
+    errno = e;
+  }
+  int e = errno;
+  free(target);
+  errno = e;
+  return rc;
+}
+
+static int stream_take(bg_sb_sink *k, const char *p, size_t n) {
+  bg_stream *st = (bg_stream *)k;
+  if (st->fd < 0) {
+    int rc = stream_open(st);
+    if (rc) return rc;
+  }
+  return write_all(st->fd, p, n);
+}
+
+void bg_stream_begin(bg_stream *st, bg_strbuf *b, const char *path) {
+  memset(st, 0, sizeof *st);
+  st->sink.take = stream_take;
+  st->sink.chunk = BG_STREAM_CHUNK;
+  st->path = path;
+  st->fd = -1;
+  b->sink = &st->sink;
+}
+
+int bg_stream_finish(bg_stream *st, bg_strbuf *b, int ok, size_t *bytes) {
+  b->sink = NULL;
+  if (bytes) *bytes = st->sink.passed + b->len;
+  int rc = 0, e = 0;
+  if (st->fd >= 0) { /* streamed: the rest, then the rename */
+    if (ok && !st->sink.err && write_all(st->fd, bg_sb_str(b), b->len) != 0) st->sink.err = errno;
+    rc = tmp_end(st->fd, st->tmp, st->target, ok && !st->sink.err);
+    e = errno;
+    pthread_mutex_unlock(&replace_lock);
+    if (st->sink.err) rc = -1, e = st->sink.err;
+    else if (!ok) rc = 0;
+  } else if (st->sink.err) { /* the target was refused */
+    rc = ok ? -1 : 0;
+    e = st->sink.err;
+  } else if (ok) { /* small, or a target written whole */
+    rc = bg_write_file_atomic(st->path, bg_sb_str(b), b->len);
+    e = errno;
+  }
+  free(st->target);
+  st->target = st->tmp = NULL;
+  st->fd = -1;
   errno = e;
   return rc;
 }

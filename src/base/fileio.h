@@ -22,6 +22,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "base/strbuf.h"
+
 /* The largest input file (model, table, style) bgdraw reads: 64 MiB. */
 #define BG_INPUT_MAX_BYTES ((size_t)64 << 20)
 
@@ -66,6 +68,42 @@ int bg_path_is_input(const char *path);
  *   (BG_EBLOCKDEV, EISDIR, BG_EISINPUT).
  * Returns 0, or -1 with errno set. */
 int bg_write_file_atomic(const char *path, const void *data, size_t len);
+/* An output written to its file while it is made (a 100 000-mass SVG is
+ * 500 MB of text, which bg_write_file_atomic needs whole in memory): a
+ * strbuf sink (strbuf.h) that goes where bg_write_file_atomic would put the
+ * whole text, with the same guarantees.
+ *     bg_stream st;
+ *     bg_stream_begin(&st, &sb, path);      // sb: an empty strbuf
+ *     int ok = writer(&sb) == 0;            // appends only
+ *     if (bg_stream_finish(&st, &sb, ok) != 0) report errno;
+ * Text under BG_STREAM_CHUNK bytes is written by bg_stream_finish with
+ * bg_write_file_atomic, exactly as before. Past that, the first piece decides:
+ * - a regular file or a new name gets its temporary file now and every piece
+ *   as it comes; bg_stream_finish renames it onto the target when the writer
+ *   succeeded, and removes it when the writer or a write failed, leaving the
+ *   old file as it was (SIGINT/SIGTERM/SIGHUP remove it too). Atomic writes
+ *   take turns (one temporary file at a time), so another thread's
+ *   bg_write_file_atomic waits until this one is finished, and the writer
+ *   itself must write no other file;
+ * - any other target (device, FIFO, socket, /dev/stdout, /dev/fd/N) gets
+ *   the whole text at the end, as from bg_write_file_atomic (the strbuf keeps
+ *   it);
+ * - a refused target (an input, a directory, a block device) or a temporary
+ *   file that cannot be made: the text is dropped and bg_stream_finish
+ *   reports the error, as bg_write_file_atomic would have after the writer. */
+#define BG_STREAM_CHUNK ((size_t)1 << 20)
+typedef struct bg_stream {
+  bg_sb_sink sink; /* first: the strbuf's sink */
+  const char *path; /* borrowed until bg_stream_finish */
+  char *target, *tmp;
+  int fd;           /* the temporary file, or -1 */
+} bg_stream;
+void bg_stream_begin(bg_stream *st, bg_strbuf *b, const char *path);
+/* ok: the writer succeeded. Writes the rest and renames, or (not ok, or a
+ * write failed) removes the temporary file. Detaches the sink from b; the
+ * bytes written are then in *bytes (nullable). 0, or -1 with errno set (a
+ * failed write or a refused target; not ok alone returns 0). */
+int bg_stream_finish(bg_stream *st, bg_strbuf *b, int ok, size_t *bytes);
 /* Follows symlinks at the last component of path, as bg_write_file_atomic
  * does: the name the bytes go to (which may not exist yet, e.g. a dangling
  * link's target) in a buffer the caller frees, or NULL (ELOOP, ...). */

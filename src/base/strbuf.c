@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include "base/strbuf.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -9,7 +10,24 @@
 
 #include "base/arena.h"
 
+/* Hands the text to the sink and starts again empty (strbuf.h). */
+static void pass_on(bg_strbuf *b) {
+  bg_sb_sink *k = b->sink;
+  if (!k->err) {
+    int rc = k->take(k, b->s, b->len);
+    if (rc > 0) { /* declined: the text stays whole here */
+      b->sink = NULL;
+      return;
+    }
+    if (rc < 0) k->err = errno ? errno : EIO;
+    else k->passed += b->len;
+  }
+  b->len = 0;
+  b->s[0] = '\0';
+}
+
 static void reserve(bg_strbuf *b, size_t extra) {
+  if (b->sink && b->len && b->len + extra + 1 > b->sink->chunk) pass_on(b);
   if (b->len + extra + 1 <= b->cap) return;
   size_t cap = b->cap ? b->cap * 2 : 64;
   while (cap < b->len + extra + 1) cap *= 2;

@@ -1,13 +1,31 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* strbuf: a growable NUL-terminated string. */
+/* strbuf: a growable NUL-terminated string, or (with a sink) the tail of
+ * a text that is passed on in pieces as it grows. */
 #ifndef BG_STRBUF_H
 #define BG_STRBUF_H
 #include <stdarg.h>
 #include <stddef.h>
 
+/* Where a strbuf's text goes in pieces (fileio.h's bg_stream is one): when
+ * an append would take the text past `chunk` bytes, the text so far is
+ * handed to take() and the strbuf starts again empty, so a writer that only
+ * appends holds about `chunk` bytes instead of its whole output (a 100 000-mass
+ * SVG is 500 MB). take() returns 0 when it took the bytes, 1 when it
+ * declines (the strbuf then keeps its whole text, as without a sink), -1
+ * on failure with errno set (the failure is kept in err and the text is
+ * dropped from then on). Only for writers that never read back or shorten
+ * what they appended: bg_sb_str sees the tail. */
+typedef struct bg_sb_sink {
+  int (*take)(struct bg_sb_sink *k, const char *p, size_t n);
+  size_t chunk;
+  size_t passed; /* bytes taken so far */
+  int err;       /* errno of the first failure, else 0 */
+} bg_sb_sink;
+
 typedef struct bg_strbuf {
   char *s; /* owned; NULL until the first append */
   size_t len, cap;
+  bg_sb_sink *sink; /* NULL: the whole text stays here */
 } bg_strbuf;
 
 void bg_sb_putc(bg_strbuf *b, char c);

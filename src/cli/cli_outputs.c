@@ -138,9 +138,32 @@ static void say(run *r) {
   bg_output_clear_messages(w);
 }
 
+/* An output whose writer only appends, going to a file: written to the
+ * file while it is made (fileio.h, bg_stream), so a 100 000-mass SVG is
+ * never whole in memory. */
+static int write_streamed(run *r, const char *kind, const char *form, const char *path) {
+  bg_strbuf sb = {0};
+  bg_stream st;
+  bg_stream_begin(&st, &sb, path);
+  int rc = (int)bg_output_write(&r->out, kind, form, path, &sb);
+  say(r);
+  size_t bytes;
+  int ok = rc == EXIT_OK && !r->out.nothing;
+  if (bg_stream_finish(&st, &sb, ok, &bytes) != 0) {
+    fprintf(stderr, "bgdraw: error: cannot write '%s': %s\n", path, bg_file_strerror(errno));
+    rc = EXIT_WRITE;
+  } else if (ok) {
+    bg_logf(&r->R->o.log, BG_LOG_PROGRESS, "wrote %s (%zu bytes)", path, bytes);
+  }
+  bg_sb_free(&sb);
+  return rc;
+}
+
 int cli_write_output(run *r, const char *kind, const char *form, const char *path) {
   if (!path) path = BG_CLI_STDOUT;
   int to_stdout = bg_cli_is_stdout(path);
+  const bg_output_kind *k = bg_output_find(kind);
+  if (!to_stdout && k && (k->flags & BG_OUTK_APPENDS)) return write_streamed(r, kind, form, path);
   bg_strbuf sb = {0};
   int rc = (int)bg_output_write(&r->out, kind, form, to_stdout ? NULL : path, &sb);
   say(r);

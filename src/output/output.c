@@ -162,12 +162,12 @@ static bg_output_status write_bgt_yaml(bg_output *w, const bg_output_kind *k, co
 /* ------------------------------------------------------------------ table */
 const bg_output_kind bg_output_kinds[] = {
     /* chosen by -o FILE.EXT, in --help's order */
-    {"svg", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, SVG"},
-    {"pdf", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, PDF"},
-    {"png", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "annotated diagram, PNG"},
+    {"svg", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS | BG_OUTK_APPENDS, write_diagram, "annotated diagram, SVG"},
+    {"pdf", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS | BG_OUTK_APPENDS, write_diagram, "annotated diagram, PDF"},
+    {"png", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS | BG_OUTK_APPENDS, write_diagram, "annotated diagram, PNG"},
     {"json", BG_STAGE_REDUCTION, BG_OUTK_EXT | BG_OUTK_MODEL_LIN, write_json,
      "the analysis (docs/json.md)"},
-    {"dot", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS, write_diagram, "graph with positions (Graphviz)"},
+    {"dot", BG_STAGE_ANALYSIS, BG_OUTK_EXT | BG_OUTK_DRAWS | BG_OUTK_APPENDS, write_diagram, "graph with positions (Graphviz)"},
     {"tex", BG_STAGE_EQUATIONS, BG_OUTK_EXT, write_tex, "equations in LaTeX"},
     {"c", BG_STAGE_EQUATIONS, BG_OUTK_EXT, bg_out_export_row, "equations as C, NAME.h beside it"},
     {"csv", BG_STAGE_SIMULATION, BG_OUTK_EXT, write_csv, "simulation results"},
@@ -183,7 +183,8 @@ const bg_output_kind bg_output_kinds[] = {
     {"check", BG_STAGE_REDUCTION, 0, write_check, "the --check summary"},
     {"equations", BG_STAGE_EQUATIONS, 0, write_equations, "the equations: text, latex, mathml, json or c"},
     {"plot", BG_STAGE_SIMULATION, BG_OUTK_DRAWS, write_plot, "the simulation plots: svg, pdf or png"},
-    {"report", BG_STAGE_REDUCTION, BG_OUTK_DRAWS | BG_OUTK_MODEL_SIM | BG_OUTK_MODEL_LIN, write_report,
+    {"report", BG_STAGE_REDUCTION,
+     BG_OUTK_DRAWS | BG_OUTK_MODEL_SIM | BG_OUTK_MODEL_LIN | BG_OUTK_APPENDS, write_report,
      "the report: multi-page PDF, or one HTML page (FILE.html or form html)"},
     {"linear", BG_STAGE_LINEAR, 0, bg_out_linear, "the linear analysis: text, latex, json, octave or python"},
     {"bode", BG_STAGE_LINEAR, BG_OUTK_DRAWS, bg_out_linear_plot, "Bode diagrams: svg, pdf or png"},

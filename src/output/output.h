@@ -26,7 +26,9 @@ enum {
   BG_OUTK_DRAWS = 1,      /* needs the renderers (Graphviz, cairo, pango) */
   BG_OUTK_MODEL_SIM = 2,  /* and the simulation when the model has a simulate block */
   BG_OUTK_MODEL_LIN = 4,  /* and the linear analysis when the model has a linearise statement */
-  BG_OUTK_EXT = 16        /* chosen by a file's extension (-o FILE.EXT) or -T */
+  BG_OUTK_EXT = 16,       /* chosen by a file's extension (-o FILE.EXT) or -T */
+  BG_OUTK_APPENDS = 32    /* its writer only appends to out, so out may pass its text on
+                             to the file in pieces (a strbuf sink, fileio.h's bg_stream) */
 };
 
 typedef struct bg_output bg_output;

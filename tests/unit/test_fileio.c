@@ -84,6 +84,96 @@ static void test_read_limits(const char *dir) {
   OK(bg_read_file("/dev/zero", NULL) == NULL && errno == BG_ENOTREG);
 }
 
+/* Appends n bytes of a numbered pattern to b, in lines as a writer does. */
+static void append_lines(bg_strbuf *b, size_t n, bg_strbuf *copy) {
+  for (size_t i = 0; copy->len < n; i++) {
+    char line[64];
+    int k = snprintf(line, sizeof line, "<path d=\"M%zu\"/>\n", i);
+    bg_sb_putn(b, line, (size_t)k);
+    bg_sb_putn(copy, line, (size_t)k);
+  }
+}
+
+static int file_is(const char *path, const bg_strbuf *want) {
+  size_t len = 0;
+  FILE *f = fopen(path, "rb");
+  char *got = f ? bg_read_stream(f, &len) : NULL;
+  if (f) fclose(f);
+  int same = got && len == want->len && !memcmp(got, bg_sb_str(want), len);
+  free(got);
+  return same;
+}
+
+/* bg_stream: text past the chunk size goes to the temporary file while it
+ * is made (the strbuf holds at most a chunk), the target keeps its old
+ * bytes until the rename; a failed writer leaves the old file and no
+ * temporary; small text and other targets are written whole at the end; a
+ * refused target is reported at the end. */
+static void test_stream(const char *dir) {
+  char target[4096];
+  snprintf(target, sizeof target, "%s/stream.svg", dir);
+  bg_strbuf old = {0};
+  bg_sb_puts(&old, "old");
+  OK(bg_write_file_atomic(target, "old", 3) == 0);
+  for (int ok = 0; ok < 2; ok++) {
+    int before = count_entries(dir);
+    bg_strbuf sb = {0}, copy = {0};
+    bg_stream st;
+    bg_stream_begin(&st, &sb, target);
+    append_lines(&sb, 3 * BG_STREAM_CHUNK + 12345, &copy);
+    OK(sb.cap <= 2 * BG_STREAM_CHUNK && st.sink.passed >= 2 * BG_STREAM_CHUNK);
+    INT_EQ(count_entries(dir), before + 1); /* the temporary file, beside the target */
+    OK(file_is(target, &old));              /* untouched while the text is made */
+    size_t bytes = 0;
+    INT_EQ(bg_stream_finish(&st, &sb, ok, &bytes), 0);
+    INT_EQ(count_entries(dir), before);
+    OK(bytes == copy.len && sb.sink == NULL);
+    OK(file_is(target, ok ? &copy : &old)); /* replaced only when the writer succeeded */
+    bg_sb_free(&sb);
+    bg_sb_free(&copy);
+  }
+  /* small: written at the end, as bg_write_file_atomic writes it */
+  bg_strbuf sb = {0}, copy = {0};
+  bg_stream st;
+  bg_stream_begin(&st, &sb, target);
+  append_lines(&sb, 1000, &copy);
+  OK(st.sink.passed == 0 && st.fd < 0);
+  INT_EQ(bg_stream_finish(&st, &sb, 1, NULL), 0);
+  OK(file_is(target, &copy));
+  bg_sb_free(&sb);
+  /* a character device takes the whole text at the end */
+  bg_stream_begin(&st, &sb, "/dev/null");
+  bg_sb_clear(&copy);
+  append_lines(&sb, 2 * BG_STREAM_CHUNK, &copy);
+  OK(sb.len >= 2 * BG_STREAM_CHUNK && sb.sink == NULL); /* declined: kept whole */
+  INT_EQ(bg_stream_finish(&st, &sb, 1, NULL), 0);
+  bg_sb_free(&sb);
+  /* a refused target: the text dropped, the error at the end */
+  bg_stream_begin(&st, &sb, dir);
+  bg_sb_clear(&copy);
+  append_lines(&sb, 4 * BG_STREAM_CHUNK, &copy);
+  OK(sb.cap <= 2 * BG_STREAM_CHUNK);
+  errno = 0;
+  OK(bg_stream_finish(&st, &sb, 1, NULL) == -1 && errno == EISDIR);
+  bg_sb_free(&sb);
+  bg_sb_free(&old);
+  /* a signal while the text is made removes the temporary file */
+  int before = count_entries(dir);
+  pid_t pid = fork();
+  if (pid == 0) {
+    bg_stream_begin(&st, &sb, target);
+    append_lines(&sb, 2 * BG_STREAM_CHUNK, &copy);
+    raise(SIGINT);
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  OK(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
+  INT_EQ(count_entries(dir), before);
+  bg_sb_free(&copy);
+  unlink(target);
+}
+
 int main(void) {
   char dir[] = "/tmp/bg_fileio_XXXXXX";
   if (!mkdtemp(dir)) return 1;
@@ -92,6 +182,7 @@ int main(void) {
   test_signal_removes_tmp(dir, SIGINT);
   test_signal_removes_tmp(dir, SIGHUP);
   test_read_limits(dir);
+  test_stream(dir);
   char cmd[4200];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
   if (system(cmd) != 0) return 1;
