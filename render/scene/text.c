@@ -16,6 +16,7 @@
 #include <pthread.h>
 #include <string.h>
 
+#include "base/arena.h"
 #include "scene/scene.h"
 #include "scene/surface.h"
 
@@ -99,46 +100,76 @@ void bg_text_layout_size(PangoLayout *lay, double *w, double *h) {
 /* Measurements remembered for the process (under text_lock): a diagram measures every label,
  * and each redraw (the report's highlights) and each report table measures
  * the same strings again; pango's layout is the cost. Keyed by font, size
- * and markup; open addressing, grown at half full. */
+ * and markup. A 100 000-mass chain has a million distinct labels, so the
+ * memo is kept compact: the entries in one array, an open-addressing table
+ * of their indices (grown at half full), the markup in an arena and each
+ * font once (an entry of 48 bytes and a slot of 4, where a table of whole
+ * entries and two strdups a label were a sixth of the SVG's memory). */
 typedef struct measured {
-  char *font, *markup; /* g_strdup'd; markup NULL: empty slot */
+  const char *markup; /* in memo_text */
   double size, w, h, base;
+  unsigned font;      /* index into memo_fonts */
   unsigned char has_size, has_base; /* which of w, h and base are known */
 } measured;
-static measured *memo;
-static size_t memo_cap, memo_n;
+static measured *memo;               /* the entries, memo_n of them */
+static size_t memo_n, memo_capn;
+static unsigned *memo_slot_of;       /* per slot: entry index + 1, 0 empty */
+static size_t memo_nslot;
+static bg_arena memo_text;
+static char **memo_fonts;
+static unsigned memo_nfont;
 
-static size_t key_hash(const char *font, double size, const char *markup) { /* FNV-1a */
+static size_t key_hash(unsigned font, double size, const char *markup) { /* FNV-1a */
   size_t h = 1469598103934665603u;
-  for (const char *s = font; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211u;
+  h = (h ^ font) * 1099511628211u;
   h = (h ^ (size_t)(size * 64)) * 1099511628211u;
   for (const char *s = markup; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211u;
   return h;
 }
 
-static measured *memo_slot(measured *tab, size_t cap, const char *font, double size,
-                           const char *markup) {
-  size_t i = key_hash(font, size, markup) & (cap - 1);
-  while (tab[i].markup &&
-         (tab[i].size != size || strcmp(tab[i].markup, markup) || strcmp(tab[i].font, font)))
-    i = (i + 1) & (cap - 1);
-  return &tab[i];
+/* The index of font among the fonts seen (added when new). */
+static unsigned font_index(const char *font) {
+  for (unsigned i = 0; i < memo_nfont; i++)
+    if (!strcmp(memo_fonts[i], font)) return i;
+  memo_fonts = bg_xrealloc(memo_fonts, (memo_nfont + 1) * sizeof *memo_fonts);
+  memo_fonts[memo_nfont] = bg_arena_strdup(&memo_text, font);
+  return memo_nfont++;
+}
+
+/* The slot of (font, size, markup): its entry's, or the empty one where it goes. */
+static unsigned *memo_slot(unsigned font, double size, const char *markup) {
+  size_t i = key_hash(font, size, markup) & (memo_nslot - 1);
+  for (;; i = (i + 1) & (memo_nslot - 1)) {
+    unsigned k = memo_slot_of[i];
+    if (!k) return &memo_slot_of[i];
+    const measured *m = &memo[k - 1];
+    if (m->size == size && m->font == font && !strcmp(m->markup, markup)) return &memo_slot_of[i];
+  }
 }
 
 static void memo_grow(void) {
-  size_t cap = memo_cap ? 2 * memo_cap : 1024;
-  measured *tab = g_new0(measured, cap);
-  for (size_t i = 0; i < memo_cap; i++)
-    if (memo[i].markup) *memo_slot(tab, cap, memo[i].font, memo[i].size, memo[i].markup) = memo[i];
-  g_free(memo);
-  memo = tab, memo_cap = cap;
+  size_t nslot = memo_nslot ? 2 * memo_nslot : 1024;
+  free(memo_slot_of);
+  memo_slot_of = bg_xcalloc(nslot, sizeof *memo_slot_of);
+  memo_nslot = nslot;
+  for (size_t i = 0; i < memo_n; i++)
+    *memo_slot(memo[i].font, memo[i].size, memo[i].markup) = (unsigned)i + 1;
 }
 
 /* The entry of (font, size, markup), made when missing. */
 static measured *memo_entry(const char *font, double size, const char *markup) {
-  if (2 * (memo_n + 1) > memo_cap) memo_grow();
-  measured *m = memo_slot(memo, memo_cap, font, size, markup);
-  if (!m->markup) m->font = g_strdup(font), m->markup = g_strdup(markup), m->size = size, memo_n++;
+  if (2 * (memo_n + 1) > memo_nslot) memo_grow();
+  unsigned f = font_index(font);
+  unsigned *slot = memo_slot(f, size, markup);
+  if (*slot) return &memo[*slot - 1];
+  if (memo_n == memo_capn) {
+    memo_capn = memo_capn ? 2 * memo_capn : 512;
+    memo = bg_xrealloc(memo, memo_capn * sizeof *memo);
+  }
+  measured *m = &memo[memo_n++];
+  memset(m, 0, sizeof *m);
+  m->markup = bg_arena_strdup(&memo_text, markup), m->size = size, m->font = f;
+  *slot = (unsigned)memo_n;
   return m;
 }
 
