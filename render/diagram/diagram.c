@@ -233,10 +233,11 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
 }
 
 /* ---------------------------------------------------------------- highlight */
-static void hot_bond(bg_diagram *d, int b) {
-  d->hot_bond[b] = 1;
-  d->hot_elem[d->m->bond_tail[b]] = d->hot_elem[d->m->bond_head[b]] = 1;
-  d->hot_elem[d->L->node_of[d->m->bond_tail[b]]] = d->hot_elem[d->L->node_of[d->m->bond_head[b]]] = 1;
+static void hot_bond(const bg_diagram_layout *L, int b, unsigned char *hb, unsigned char *he) {
+  const bg_model *m = L->m;
+  hb[b] = 1;
+  he[m->bond_tail[b]] = he[m->bond_head[b]] = 1;
+  he[L->node_of[m->bond_tail[b]]] = he[L->node_of[m->bond_head[b]]] = 1;
 }
 
 static int count_of(const bg_analysis *a, int kind) {
@@ -257,23 +258,23 @@ static int check_highlight(const bg_diagram *d, bg_diags *dg) {
   return 0;
 }
 
-/* Marks what the highlighted item (checked) touches; everything when there is none. */
-static void mark_hot(bg_diagram *d) {
-  const bg_model *m = d->m;
-  const bg_analysis *a = d->a;
-  int kind = d->o.highlight_kind, k = d->o.highlight_index - 1;
+void bg_diagram_hot(const bg_diagram_layout *L, int kind, int index, unsigned char *hb,
+                    unsigned char *he) {
+  const bg_model *m = L->m;
+  const bg_analysis *a = L->a;
+  int k = index - 1;
   if (!kind) {
-    memset(d->hot_bond, 1, (size_t)m->nbond + 1);
-    memset(d->hot_elem, 1, (size_t)d->L->nnode + 1);
+    memset(hb, 1, (size_t)m->nbond + 1);
+    memset(he, 1, (size_t)L->nnode + 1);
     return;
   }
   if (kind == 'p')
-    for (int i = 0; i < a->path_n[k]; i++) hot_bond(d, a->path_bonds[a->path_adr[k] + i]);
+    for (int i = 0; i < a->path_n[k]; i++) hot_bond(L, a->path_bonds[a->path_adr[k] + i], hb, he);
   if (kind == 'l')
-    for (int i = 0; i < a->tloop_n[k]; i++) hot_bond(d, a->tloop_signals[a->tloop_adr[k] + i] / 2);
+    for (int i = 0; i < a->tloop_n[k]; i++) hot_bond(L, a->tloop_signals[a->tloop_adr[k] + i] / 2, hb, he);
   if (kind == 'c') {
-    d->hot_elem[a->conflict_node[k]] = 1;
-    for (int i = 0; i < a->conflict_n[k]; i++) hot_bond(d, a->conflict_bonds[a->conflict_adr[k] + i]);
+    he[a->conflict_node[k]] = 1;
+    for (int i = 0; i < a->conflict_n[k]; i++) hot_bond(L, a->conflict_bonds[a->conflict_adr[k] + i], hb, he);
   }
 }
 
@@ -409,7 +410,7 @@ static void draw_scene(bg_diagram *d) {
   d->hot_elem = bg_arena_alloc(&d->arena, (size_t)d->L->nnode + 1);
   d->hot_bond = bg_arena_alloc(&d->arena, (size_t)m->nbond + 1);
   d->side_use = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 1) * sizeof(int));
-  mark_hot(d);
+  bg_diagram_hot(d->L, d->o.highlight_kind, d->o.highlight_index, d->hot_bond, d->hot_elem);
   bg_scene_init(&d->scene, d->st.font);
   d->scene.background = d->st.background;
   d->scene.title = bg_arena_strdup(&d->scene.arena, m->title ? m->title : m->name ? m->name : "");

@@ -102,6 +102,12 @@ struct bg_diagram {
  *   diagram.c  the driver: layout stage, then the scene stage calling each pass
  *   render.c   the front door (render.h) */
 
+/* What highlight kind/index (checked; kind 0: none, everything) keeps in
+ * colour: hot_bond (nbond + 1 bytes) and hot_elem (nnode + 1), zeroed by the
+ * caller (diagram.c; the report's large highlights use it too). */
+void bg_diagram_hot(const bg_diagram_layout *L, int kind, int index, unsigned char *hot_bond,
+                    unsigned char *hot_elem);
+
 /* ---- shared helpers (diagram_base.c): calls nothing of the diagram */
 bg_vec bg_v(double x, double y);
 bg_vec bg_vadd(bg_vec a, bg_vec b);

@@ -56,17 +56,19 @@ static bg_diagram *build_full(rp_ctx *c) {
  * where they are in section 2. Not kept: its pages place only the part of
  * its scene that keep_cropped keeps. */
 static bg_diagram *build_highlight(rp_ctx *c, int kind, int index) {
-  bg_diagram *d = c->full ? bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg) : NULL;
+  bg_diagram *d = !c->full ? NULL
+                  : rp_hl_from_full(c) ? rp_hl_view(c, kind, index) /* a large diagram */
+                  : bg_diagram_redraw(c->full, BG_SHOW_DEFAULT, kind, index, c->dg);
   if (!d) c->failed = 1;
   return d;
 }
 
-/* Keeps the items of s that pages placing rectangles inside r (x, y, w, h)
+/* Keeps the items of dg's scene that pages placing rectangles inside r (x, y, w, h)
  * replay: those meeting r grown by the cull margin (BG_PLACE_CULL_PAD), so
  * the PDF is the same as with all of s. A highlight of a large diagram shows
  * a small part of it, and thirteen whole scenes kept until the PDF is
  * written were most of a large report's memory. */
-static const bg_scene *keep_cropped(rp_ctx *c, const bg_scene *s, const double r[4]) {
+static const bg_scene *keep_cropped(rp_ctx *c, const bg_diagram *dg, const double r[4]) {
   if (c->nhl == c->caphl) {
     c->caphl = c->caphl ? 2 * c->caphl : 16;
     c->hl = bg_xrealloc(c->hl, (size_t)c->caphl * sizeof *c->hl);
@@ -74,7 +76,8 @@ static const bg_scene *keep_cropped(rp_ctx *c, const bg_scene *s, const double r
   const double pad = BG_PLACE_CULL_PAD;
   const double clip[4] = {r[0] - pad, r[1] - pad, r[0] + r[2] + pad, r[1] + r[3] + pad};
   bg_scene *k = bg_xmalloc(sizeof *k);
-  bg_scene_crop(s, clip, k);
+  if (rp_hl_from_full(c)) rp_hl_crop(dg, clip, k);
+  else bg_scene_crop(&dg->scene, clip, k);
   k->background.a = 0; /* as rp_keep: the page's own items stay visible */
   return c->hl[c->nhl++] = k;
 }
@@ -646,7 +649,7 @@ static void show_one(rp_ctx *c, const hl *h) {
   hl_text(c, h, &x);
   if (cropped) bg_sb_puts(&x, " The diagram is cropped to the highlighted item.");
   if (sc >= smin) {
-    const bg_scene *k = keep_cropped(c, s, r);
+    const bg_scene *k = keep_cropped(c, dg, r);
     rp_subsection(d, bg_sb_str(&t), 16 + r[3] * sc);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
     d->y += 4;
@@ -655,7 +658,7 @@ static void show_one(rp_ctx *c, const hl *h) {
   } else {
     tiling tl; /* planned on the whole scene, as before the crop */
     plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, 1, MAX_HL_TILES, &tl);
-    const bg_scene *k = keep_cropped(c, s, r); /* every tile lies inside r */
+    const bg_scene *k = keep_cropped(c, dg, r); /* every tile lies inside r */
     rp_subsection(d, bg_sb_str(&t), 30);
     if (tl.nused == 1) bg_sb_puts(&x, " It follows on a page of its own.");
     else bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
@@ -664,7 +667,7 @@ static void show_one(rp_ctx *c, const hl *h) {
   }
   bg_sb_free(&t);
   bg_sb_free(&x);
-  bg_diagram_free(dg);
+  rp_hl_done(c, dg);
 }
 
 static void rest_note(rp_ctx *c, const hl *h, int from, int n) {

@@ -227,6 +227,8 @@ typedef struct rp_ctx {
   int nstudy_plot;
   bg_diags *dg;
   int failed;        /* a diagram could not be built (errors in dg) */
+  int hl_full_items; /* highlights seen in section 2's scene above this many of its
+                        items; 0: RP_HL_FULL_ITEMS (tests set less) */
 } rp_ctx;
 
 /* Shared with the HTML report (render/html): the one-sentence verdict (plain
@@ -255,6 +257,17 @@ bg_diagram *rp_keep(rp_ctx *c, bg_diagram *d);
 void rp_sec_diagram(rp_ctx *c);
 /* Highlighted diagrams of paths, loops and conflicts worth showing. */
 void rp_sec_highlights(rp_ctx *c);
+/* report_highlight.c: above RP_HL_FULL_ITEMS items of section 2's scene (a
+ * diagram whose map is an image, report_diagrams.c) a highlight is a view of
+ * section 2's diagram, not a redraw: rp_hl_view (only its hot bonds and
+ * elements its own), its page's items by rp_hl_crop (the highlighted item in
+ * colour, the rest muted, other paths, loops and the legend left out),
+ * rp_hl_done frees a view or a redrawn diagram. */
+#define RP_HL_FULL_ITEMS 20000
+int rp_hl_from_full(const rp_ctx *c);
+bg_diagram *rp_hl_view(const rp_ctx *c, int kind, int index);
+void rp_hl_crop(const bg_diagram *view, const double clip[4], bg_scene *dst);
+void rp_hl_done(const rp_ctx *c, bg_diagram *d);
 /* report_analysis.c */
 void rp_sec_trace(rp_ctx *c);
 /* report_components.c: instances and bond origins (models with submodels only) */

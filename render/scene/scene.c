@@ -119,6 +119,11 @@ void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) 
 }
 
 void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst) {
+  bg_scene_crop_keep(src, clip, NULL, NULL, dst);
+}
+
+void bg_scene_crop_keep(const bg_scene *src, const double clip[4], bg_scene_keep_fn keep, void *ctx,
+                        bg_scene *dst) {
   bg_scene_init(dst, src->font);
   dst->width = src->width, dst->height = src->height, dst->background = src->background;
   dst->title = src->title ? bg_arena_strdup(&dst->arena, src->title) : NULL;
@@ -135,8 +140,10 @@ void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst) {
       dst->capop = dst->capop ? 2 * dst->capop : 256;
       dst->op = bg_xrealloc(dst->op, (size_t)dst->capop * sizeof *dst->op);
     }
-    bg_scene_item *d = &dst->item[dst->nitem++];
+    bg_scene_item *d = &dst->item[dst->nitem];
     *d = *it;
+    if (keep && !keep(ctx, src, i, d)) continue;
+    dst->nitem++;
     d->opadr = dst->nop;
     if (it->nop) memcpy(dst->op + dst->nop, src->op + it->opadr, (size_t)it->nop * sizeof *dst->op);
     dst->nop += it->nop;

@@ -86,6 +86,12 @@ void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]);
  * clip draws what src draws there: the report keeps only this much of a
  * highlighted diagram that shows one part of a large one. */
 void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst);
+/* The same with a say over each item that meets clip: keep(ctx, src, i,
+ * copy) returns 0 to leave item i out, 1 to keep its copy (whose colours it
+ * may change; its path and strings are src's until the crop copies them). */
+typedef int (*bg_scene_keep_fn)(void *ctx, const bg_scene *src, int i, bg_scene_item *copy);
+void bg_scene_crop_keep(const bg_scene *src, const double clip[4], bg_scene_keep_fn keep, void *ctx,
+                        bg_scene *dst);
 /* Moves everything so the bounding box starts at (margin, margin) and sets
  * the page size to the box plus margins. */
 void bg_scene_fit(bg_scene *s, double margin);

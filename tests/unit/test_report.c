@@ -263,13 +263,43 @@ static int lines_within(const char *part, const char *whole) {
   return 1;
 }
 
+/* Sections 2 and 3 alone into c (hl_full_items as in rp_ctx); in and o
+ * hold what c borrows. */
+static void sections_2_3(efx *f, bg_render_opts *o, bg_report_input *in, bg_diags *dg, rp_ctx *c,
+                         int hl_full_items) {
+  memset(o, 0, sizeof *o);
+  o->style_dir = BG_SOURCE_DIR "/styles";
+  static const bg_index_facts none;
+  *in = (bg_report_input){f->m, &f->a, f->s, NULL, &none, NULL, NULL, NULL, 0, o, NULL, NULL, NULL, NULL, NULL};
+  bg_diags_init(dg, "test", NULL, 0);
+  memset(c, 0, sizeof *c);
+  c->in = in, c->m = f->m, c->a = &f->a, c->dg = dg, c->hl_full_items = hl_full_items;
+  OK(bg_style_load(&c->st, NULL, o->style_dir, dg) == 0);
+  rp_doc_init(&c->body, c->st.font);
+  c->body.section = 1;
+  rp_sec_diagram(c);
+  rp_sec_highlights(c);
+  OK(!c->failed && c->ndiag == 1 && c->full == c->diag[0]);
+}
+
+static void sections_free(rp_ctx *c, bg_diags *dg) {
+  INT_EQ(dg->nerrors, 0);
+  for (int i = 0; i < c->ndiag; i++) bg_diagram_free(c->diag[i]);
+  free(c->diag);
+  for (int i = 0; i < c->nhl; i++) bg_scene_free(c->hl[i]), free(c->hl[i]);
+  free(c->hl);
+  rp_doc_free(&c->body);
+  bg_diags_free(dg);
+}
+
 /* Sections 2 and 3 alone: the full diagram is the one layout; every
  * highlighted diagram is drawn from it, on its page, with every node it
  * keeps where it is there; want highlights are drawn (at most 12, whatever
  * the size); cropped of them keep only part of the nodes (what their pages
- * show), the others all. */
+ * show), the others all. hl_full_items: as in rp_ctx (1: every highlight
+ * seen in section 2's scene, as for a large diagram). */
 static void test_highlights_share_layout(const char *name, const char *text, int want,
-                                         int cropped) {
+                                         int cropped, int hl_full_items) {
   efx f;
   OK(efx_load(&f, name, text, -1, NULL, 0) == 0);
   OK(f.m != NULL);
@@ -277,21 +307,11 @@ static void test_highlights_share_layout(const char *name, const char *text, int
     efx_free(&f);
     return;
   }
-  bg_render_opts o = {0};
-  o.style_dir = BG_SOURCE_DIR "/styles";
-  static const bg_index_facts none;
-  bg_report_input in = {f.m, &f.a, f.s, NULL, &none, NULL, NULL, NULL, 0, &o, NULL, NULL, NULL, NULL, NULL};
+  bg_render_opts o;
+  bg_report_input in;
   bg_diags dg;
-  bg_diags_init(&dg, "test", NULL, 0);
   rp_ctx c;
-  memset(&c, 0, sizeof c);
-  c.in = &in, c.m = f.m, c.a = &f.a, c.dg = &dg;
-  OK(bg_style_load(&c.st, NULL, o.style_dir, &dg) == 0);
-  rp_doc_init(&c.body, c.st.font);
-  c.body.section = 1;
-  rp_sec_diagram(&c);
-  rp_sec_highlights(&c);
-  OK(!c.failed && c.ndiag == 1 && c.full == c.diag[0]);
+  sections_2_3(&f, &o, &in, &dg, &c, hl_full_items);
   const char *what = name ? name : "inline";
   BG_T_REPORT(c.nhl == want, "%s: %d highlighted diagrams, %d expected", what, c.nhl, want);
   bg_strbuf full = {0};
@@ -309,13 +329,72 @@ static void test_highlights_share_layout(const char *name, const char *text, int
   }
   BG_T_REPORT(ncropped == cropped, "%s: %d highlights cropped, %d expected", what, ncropped, cropped);
   bg_sb_free(&full);
-  INT_EQ(dg.nerrors, 0);
-  for (int i = 0; i < c.ndiag; i++) bg_diagram_free(c.diag[i]);
-  free(c.diag);
-  for (int i = 0; i < c.nhl; i++) bg_scene_free(c.hl[i]), free(c.hl[i]);
-  free(c.hl);
-  rp_doc_free(&c.body);
-  bg_diags_free(&dg);
+  sections_free(&c, &dg);
+  efx_free(&f);
+}
+
+static int cmp_str(const void *a, const void *b) {
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The roles of s's bonds, strokes, numbers and nodes drawn in colour (not
+ * in muted), sorted, one a line. */
+static void coloured_roles(const bg_scene *s, bg_rgba muted, bg_strbuf *out) {
+  static const char *const kinds[] = {"bond ", "stroke bond=", "number bond=", "node ", NULL};
+  char **r = malloc(((size_t)s->nitem + 1) * sizeof *r);
+  int n = 0;
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    bg_rgba c = it->kind == BG_ITEM_FILL ? it->fill : it->color;
+    int ours = 0;
+    for (int k = 0; kinds[k]; k++) ours |= !strncmp(it->role, kinds[k], strlen(kinds[k]));
+    if (ours && (c.r != muted.r || c.g != muted.g || c.b != muted.b)) r[n++] = (char *)it->role;
+  }
+  qsort(r, (size_t)n, sizeof *r, cmp_str);
+  for (int i = 0; i < n; i++) bg_sb_printf(out, "%s\n", r[i]);
+  free(r);
+}
+
+/* Highlights seen in section 2's scene (a large diagram's, docs/report.md)
+ * against highlights drawn again: the same bonds, strokes, numbers and
+ * nodes in colour, everything else muted, no other path's or loop's line
+ * and no legend on the page. */
+static void test_large_highlights(const char *name, const char *text) {
+  efx f;
+  OK(efx_load(&f, name, text, -1, NULL, 0) == 0);
+  if (!f.m) {
+    efx_free(&f);
+    return;
+  }
+  bg_render_opts o[2];
+  bg_report_input in[2];
+  bg_diags dg[2];
+  rp_ctx c[2];
+  sections_2_3(&f, &o[0], &in[0], &dg[0], &c[0], 0); /* small: drawn again */
+  sections_2_3(&f, &o[1], &in[1], &dg[1], &c[1], 1); /* seen in section 2's scene */
+  OK(!rp_hl_from_full(&c[0]) && rp_hl_from_full(&c[1]));
+  INT_EQ(c[1].nhl, c[0].nhl);
+  bg_rgba muted = c[1].st.muted;
+  for (int i = 0; i < c[0].nhl && i < c[1].nhl; i++) {
+    bg_strbuf redrawn = {0}, seen = {0};
+    coloured_roles(c[0].hl[i], muted, &redrawn);
+    coloured_roles(c[1].hl[i], muted, &seen);
+    BG_T_REPORT(redrawn.len > 0 && !strcmp(bg_sb_str(&redrawn), bg_sb_str(&seen)),
+                "highlight %d: the same items in colour as drawn again:\n%s-- seen:\n%s", i,
+                bg_sb_str(&redrawn), bg_sb_str(&seen));
+    int layers = 0, legend = 0, lines = 0;
+    for (int k = 0; k < c[1].hl[i]->nitem; k++) {
+      const char *r = c[1].hl[i]->item[k].role;
+      legend += !strncmp(r, "legend", 6);
+      if (!strncmp(r, "path ", 5) || !strncmp(r, "loop ", 5)) layers |= 1 << (r[0] == 'l'), lines++;
+    }
+    /* one line: the highlighted path's or loop's (a conflict's page has none) */
+    BG_T_REPORT(legend == 0 && lines <= 1 && layers != 3, "highlight %d: %d layer lines, %d legend items",
+                i, lines, legend);
+    bg_sb_free(&redrawn);
+    bg_sb_free(&seen);
+  }
+  for (int k = 0; k < 2; k++) sections_free(&c[k], &dg[k]);
   efx_free(&f);
 }
 
@@ -343,10 +422,14 @@ int main(void) {
   test_doc();
   test_report("bond_loop");
   test_report("hydraulic_bridge");
-  test_highlights_share_layout("hydraulic_bridge", NULL, 8, 8);
-  test_highlights_share_layout("bond_loop", NULL, 3, 0);
+  test_highlights_share_layout("hydraulic_bridge", NULL, 8, 8, 0);
+  test_highlights_share_layout("bond_loop", NULL, 3, 0, 0);
   char *chain = chain_model(200); /* 401 elements: no lower cap for large models */
-  test_highlights_share_layout(NULL, chain, 12, 12);
+  test_highlights_share_layout(NULL, chain, 12, 12, 0);
+  test_highlights_share_layout(NULL, chain, 12, 12, 1);
+  test_large_highlights(NULL, chain);
   free(chain);
+  test_large_highlights("hydraulic_bridge", NULL);
+  test_large_highlights("bond_loop", NULL);
   return bg_t_done();
 }
