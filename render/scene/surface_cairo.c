@@ -75,7 +75,8 @@ static void replay_text(cairo_t *cr, PangoContext *ctx, const bg_scene *s,
 }
 
 /* The caller holds the text lock (text_int.h). */
-static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip, double min_text) {
+static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip, double min_text,
+                         const double *boxes) {
   cairo_font_options_t *fo = bg_text_font_options();
   cairo_set_font_options(cr, fo);
   cairo_font_options_destroy(fo);
@@ -87,8 +88,9 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip, dou
   for (int i = 0; i < s->nitem; i++) {
     const bg_scene_item *it = &s->item[i];
     if (clip) {
-      double b[4];
-      bg_scene_item_box(s, it, b);
+      double own[4];
+      const double *b = boxes ? boxes + 4 * (size_t)i : own;
+      if (!boxes) bg_scene_item_box(s, it, own);
       if (b[2] < clip[0] || b[0] > clip[2] || b[3] < clip[1] || b[1] > clip[3]) continue;
     }
     if (it->kind == BG_ITEM_TEXT) {
@@ -103,9 +105,9 @@ static void replay_items(cairo_t *cr, const bg_scene *s, const double *clip, dou
 const char *bg_surface_cairo_version(void) { return CAIRO_VERSION_STRING; }
 const char *bg_surface_pango_version(void) { return PANGO_VERSION_STRING; }
 
-void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL, 0); }
+void bg_surface_replay(cairo_t *cr, const bg_scene *s) { replay_items(cr, s, NULL, 0, NULL); }
 
 void bg_surface_replay_clipped_text(cairo_t *cr, const bg_scene *s, const double clip[4],
-                                    double min_text) {
-  replay_items(cr, s, clip, min_text);
+                                    double min_text, const double *box) {
+  replay_items(cr, s, clip, min_text, box);
 }

@@ -49,7 +49,7 @@ int bg_surface_pdf_write(const bg_scene *s, bg_strbuf *out) {
 /* A placement drawn as an image (surface.h): its items are rasterised at
  * p->raster pixels per page point, text too small to read left out, and the
  * page gets one image instead of every path and glyph of the region. */
-static void draw_place_raster(cairo_t *cr, const bg_surface_place *p) {
+static void draw_place_raster(cairo_t *cr, const bg_surface_place *p, const double *box) {
   double k = p->raster, px = p->scale * k; /* pixels per point of the placed scene */
   int w = (int)ceil(p->sw * px), h = (int)ceil(p->sh * px);
   if (w < 1 || h < 1 || w > 32000 || h > 32000) return;
@@ -58,7 +58,7 @@ static void draw_place_raster(cairo_t *cr, const bg_surface_place *p) {
   cairo_scale(ic, px, px);
   cairo_translate(ic, -p->sx, -p->sy);
   const double pad = BG_PLACE_CULL_PAD, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
-  bg_surface_replay_clipped_text(ic, p->scene, clip, BG_RASTER_MIN_TEXT / px);
+  bg_surface_replay_clipped_text(ic, p->scene, clip, BG_RASTER_MIN_TEXT / px, box);
   cairo_destroy(ic);
   cairo_surface_flush(img);
   cairo_save(cr);
@@ -72,9 +72,9 @@ static void draw_place_raster(cairo_t *cr, const bg_surface_place *p) {
   cairo_surface_destroy(img);
 }
 
-static void draw_place(cairo_t *cr, const bg_surface_place *p) {
+static void draw_place(cairo_t *cr, const bg_surface_place *p, const double *box) {
   if (p->raster > 0) {
-    draw_place_raster(cr, p);
+    draw_place_raster(cr, p, box);
     return;
   }
   cairo_save(cr);
@@ -85,7 +85,7 @@ static void draw_place(cairo_t *cr, const bg_surface_place *p) {
   cairo_translate(cr, -p->sx, -p->sy);
   /* a tile of a large diagram draws only what reaches into it (surface.h) */
   const double pad = BG_PLACE_CULL_PAD, clip[4] = {p->sx - pad, p->sy - pad, p->sx + p->sw + pad, p->sy + p->sh + pad};
-  bg_surface_replay_clipped_text(cr, p->scene, clip, BG_PLACE_MIN_TEXT / p->scale);
+  bg_surface_replay_clipped_text(cr, p->scene, clip, BG_PLACE_MIN_TEXT / p->scale, box);
   cairo_restore(cr);
 }
 
@@ -104,9 +104,45 @@ static void add_outlines(cairo_surface_t *sf, const bg_surface_outline *ol, int 
   }
 }
 
+/* Item boxes of the scenes placed on many pages, each computed once: the
+ * 48 tiles and the map of a 100 000-mass diagram each tested all of its two
+ * million items' boxes. */
+#define BOXED_PLACES 8
+typedef struct boxed {
+  const bg_scene *scene;
+  double *box;
+} boxed;
+
+static int boxed_scenes(const bg_surface_page *pages, int npage, boxed *bx) {
+  int n = 0;
+  for (int i = 0; i < npage; i++)
+    for (int k = 0; k < pages[i].nplace; k++) {
+      const bg_scene *s = pages[i].place[k].scene;
+      int uses = 0, known = 0;
+      for (int j = 0; j < n; j++) known |= bx[j].scene == s;
+      if (known || n == BOXED_PLACES || s->nitem < 1000) continue;
+      for (int a = i; a < npage; a++)
+        for (int b = 0; b < pages[a].nplace; b++) uses += pages[a].place[b].scene == s;
+      if (uses < 4) continue;
+      bx[n].scene = s;
+      bx[n].box = bg_xmalloc(4 * (size_t)s->nitem * sizeof *bx[n].box);
+      for (int j = 0; j < s->nitem; j++) bg_scene_item_box(s, &s->item[j], bx[n].box + 4 * (size_t)j);
+      n++;
+    }
+  return n;
+}
+
+static const double *boxes_of(const boxed *bx, int n, const bg_scene *s) {
+  for (int i = 0; i < n; i++)
+    if (bx[i].scene == s) return bx[i].box;
+  return NULL;
+}
+
 int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surface_outline *ol,
                          int nol, const char *title, bg_strbuf *out) {
   if (npage < 1) return -1;
+  boxed bx[BOXED_PLACES];
+  int nbx = boxed_scenes(pages, npage, bx);
   bg_text_lock();
   const bg_scene *first = pages[0].scene;
   cairo_surface_t *sf = pdf_open(out, first->width, first->height, title);
@@ -114,11 +150,13 @@ int bg_surface_pdf_pages(const bg_surface_page *pages, int npage, const bg_surfa
   for (int i = 0; i < npage && cairo_status(cr) == CAIRO_STATUS_SUCCESS; i++) {
     cairo_pdf_surface_set_size(sf, pages[i].scene->width, pages[i].scene->height);
     bg_surface_replay(cr, pages[i].scene);
-    for (int k = 0; k < pages[i].nplace; k++) draw_place(cr, &pages[i].place[k]);
+    for (int k = 0; k < pages[i].nplace; k++)
+      draw_place(cr, &pages[i].place[k], boxes_of(bx, nbx, pages[i].place[k].scene));
     cairo_show_page(cr);
   }
   add_outlines(sf, ol, nol);
   int rc = bg_surface_close(cr, sf);
   bg_text_unlock();
+  for (int i = 0; i < nbx; i++) free(bx[i].box);
   return rc;
 }
