@@ -166,9 +166,7 @@ static const char *xtick_label(const plot *P, int i, char *buf, size_t n) {
   if (!xlog(P)) return bg_plot_tick_label(&P->x, i, buf, n);
   int k = (int)(P->x.k0 + i * P->x.step); /* |k| <= 324: x_axis_log keeps t0, t1 finite */
   if (k == 0 || k == 1) snprintf(buf, n, "%s", k ? "10" : "1");
-  else /* a superscript in points: pango's <sup> scales from the default font, not the label's */
-    snprintf(buf, n, "10<span size=\"%d\" rise=\"%d\">%s%d</span>", (int)(0.72 * P->fs_tick * 1024),
-             (int)(0.42 * P->fs_tick * 1024), k < 0 ? "\xe2\x88\x92" : "", k < 0 ? -k : k);
+  else bg_plot_power_markup("", k, P->fs_tick, buf, n);
   return buf;
 }
 

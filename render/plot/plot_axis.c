@@ -171,10 +171,13 @@ char *bg_plot_scale_markup(int exp3, double fs, char *buf, size_t n) {
     if (n) buf[0] = 0;
     return buf;
   }
-  /* a superscript in points, as the log axis' decades: pango's <sup> scales
-   * from the default font, not the label's */
-  snprintf(buf, n, "\xc3\x97" "10<span size=\"%d\" rise=\"%d\">%s%d</span>", (int)(0.72 * fs * 1024),
-           (int)(0.42 * fs * 1024), exp3 < 0 ? "\xe2\x88\x92" : "", exp3 < 0 ? -exp3 : exp3);
+  return bg_plot_power_markup("\xc3\x97", exp3, fs, buf, n);
+}
+
+char *bg_plot_power_markup(const char *before, int k, double fs, char *buf, size_t n) {
+  /* a superscript in points: pango's <sup> scales from the default font, not the label's */
+  snprintf(buf, n, "%s10<span size=\"%d\" rise=\"%d\">%s%d</span>", before, (int)(0.72 * fs * 1024),
+           (int)(0.42 * fs * 1024), k < 0 ? "\xe2\x88\x92" : "", k < 0 ? -k : k);
   return buf;
 }
 

@@ -54,6 +54,10 @@ char *bg_plot_tick_label(const bg_plot_axis *ax, int i, char *buf, size_t n);
  * labels. Returns buf. */
 char *bg_plot_scale_markup(int exp3, double fs, char *buf, size_t n);
 
+/* before, "10" and k as a superscript for text of fs points (a log axis'
+ * decade "10⁻³", a value axis' scale "×10⁻³"). Returns buf. */
+char *bg_plot_power_markup(const char *before, int k, double fs, char *buf, size_t n);
+
 /* "µ", "m", "", "k", ... for exp3 in -24 .. 24 (multiple of 3), else "". */
 const char *bg_plot_si_prefix(int exp3);
 
