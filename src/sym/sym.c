@@ -222,6 +222,25 @@ static int monomial(bg_sym *S, int x, double *coef) {
   return intern(S, SYM_MUL, 0, 1, nd->n, S->arg + nd->adr, S->w + nd->adr);
 }
 
+/* Sorts the terms, merges equal ones and drops those whose weight became 0; returns how
+ * many are left. A sum's like terms add their coefficients with xsum (so a cancellation
+ * leaves an exact 0); a product's equal bases add their exponents plainly. */
+static int tv_collect(bg_sym *S, tv *v, int like_terms) {
+  tv_sort(S, v);
+  int m = 0;
+  for (int i = 0; i < v->n; i++) {
+    if (m > 0 && v->t[m - 1] == v->t[i]) {
+      v->w[m - 1] = like_terms ? xsum(v->w[m - 1], v->w[i], NULL) : v->w[m - 1] + v->w[i];
+      continue;
+    }
+    v->t[m] = v->t[i], v->w[m++] = v->w[i];
+  }
+  int k = 0;
+  for (int i = 0; i < m; i++)
+    if (v->w[i] != 0) v->t[k] = v->t[i], v->w[k++] = v->w[i];
+  return k;
+}
+
 int bg_sym_sum(bg_sym *S, double c0, int n, const int *t, const double *w) {
   tv v = {0};
   double cst = c0, cmag = fabs(c0);
@@ -241,18 +260,7 @@ int bg_sym_sum(bg_sym *S, double c0, int n, const int *t, const double *w) {
       tv_push(&v, mono, wk * c);
     }
   }
-  tv_sort(S, &v);
-  int m = 0;
-  for (int i = 0; i < v.n; i++) { /* merge like terms */
-    if (m > 0 && v.t[m - 1] == v.t[i]) {
-      v.w[m - 1] = xsum(v.w[m - 1], v.w[i], NULL);
-      continue;
-    }
-    v.t[m] = v.t[i], v.w[m++] = v.w[i];
-  }
-  int k2 = 0;
-  for (int i = 0; i < m; i++)
-    if (v.w[i] != 0) v.t[k2] = v.t[i], v.w[k2++] = v.w[i];
+  int k2 = tv_collect(S, &v, 1);
   int r;
   if (k2 == 0) r = bg_sym_num(S, cst);
   else if (k2 == 1 && cst == 0) r = bg_sym_scale(S, v.w[0], v.t[0]);
@@ -309,18 +317,7 @@ int bg_sym_prod(bg_sym *S, double c, int n, const int *b, const double *e) {
     tv_free(&v);
     return bg_sym_num(S, c);
   }
-  tv_sort(S, &v);
-  int m = 0;
-  for (int i = 0; i < v.n; i++) { /* merge equal bases */
-    if (m > 0 && v.t[m - 1] == v.t[i]) {
-      v.w[m - 1] += v.w[i];
-      continue;
-    }
-    v.t[m] = v.t[i], v.w[m++] = v.w[i];
-  }
-  int k2 = 0;
-  for (int i = 0; i < m; i++)
-    if (v.w[i] != 0) v.t[k2] = v.t[i], v.w[k2++] = v.w[i];
+  int k2 = tv_collect(S, &v, 0);
   int r;
   if (k2 == 0) r = bg_sym_num(S, c);
   else if (k2 == 1 && v.w[0] == 1 && c == 1) r = v.t[0];
