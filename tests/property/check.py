@@ -760,28 +760,13 @@ def _dc_gain(res, bgdraw, m, workdir):
     m = v
     src = [x for x in m.elems if x.kind in ("Se", "Sf")]
     u = {x.name: float(x.decl[2:]) for x in src}
-    kinds = {x.name: x.kind for x in m.elems}
-    outs = []
-    for b in m.bonds:
-        if "R" in (kinds.get(b[1]), kinds.get(b[2])):
-            outs += ["e%d" % b[0], "f%d" % b[0]]
+    outs = resistor_ports(m)
     if not outs:
         res["dc_gain"] = ("skip", "no resistor")
         return
-    names = ["y%d" % i for i in range(len(outs))]
-    base_text = m.text()
-    text = re.sub(r"\nplot .*\n", "\noutput " + ", ".join("%s = %s" % (n, o) for n, o in zip(names, outs)) +
-                  "\nplot " + ", ".join(outs) + "\n", base_text)
-    lin = run(bgdraw, text, workdir, "m_dc", ["--linear", "json"], [])
-    if not _robust(res, lin, "linear"):
-        res["dc_gain"] = ("fail", "crashed or hung")
-        return
-    try:
-        L = json.loads(lin.out)
-    except ValueError:
-        L = None
-    if lin.status != 0 or not L or L.get("status") != "ok" or not L.get("poles") or not L.get("transfer_functions"):
-        res["dc_gain"] = ("skip", "no linear analysis")
+    text, names = with_outputs(m.text(), outs)
+    L = linear_json(res, "dc_gain", bgdraw, text, workdir, "m_dc", ("poles", "transfer_functions"))
+    if L is None:
         return
     slow = max(p["re"] for p in L["poles"])
     if not slow < -1e-3:
@@ -820,6 +805,40 @@ def _dc_gain(res, bgdraw, m, workdir):
                 n, outs[k], last[0], last[1 + k], want[n]))
             return
     res["dc_gain"] = ("pass", "")
+
+
+def resistor_ports(m):
+    """The effort and flow of every bond at a resistor (e3, f3, ...): the
+    linear checks' outputs."""
+    kinds = {x.name: x.kind for x in m.elems}
+    return [v % b[0] for b in m.bonds if "R" in (kinds.get(b[1]), kinds.get(b[2])) for v in ("e%d", "f%d")]
+
+
+def with_outputs(text, outs):
+    """The model's text with its plot replaced by outs, each also an output
+    y0, y1, ... (the names `--linear json` gives its outputs); and the names."""
+    import re
+    names = ["y%d" % i for i in range(len(outs))]
+    return re.sub(r"\nplot .*\n", "\noutput " + ", ".join("%s = %s" % (n, o) for n, o in zip(names, outs)) +
+                  "\nplot " + ", ".join(outs) + "\n", text), names
+
+
+def linear_json(res, name, bgdraw, text, workdir, tag, need):
+    """`--linear json` of a variant: its JSON when bgdraw gives a linear
+    analysis with every key of need, else None, with a crash or hang recorded
+    as a failure of name and anything else as a skip (the run's note why)."""
+    lin = run(bgdraw, text, workdir, tag, ["--linear", "json"], [])
+    if not _robust(res, lin, "linear"):
+        res[name] = ("fail", "crashed or hung")
+        return None
+    try:
+        L = json.loads(lin.out)
+    except ValueError:
+        L = None
+    if lin.status != 0 or not L or L.get("status") != "ok" or not all(L.get(k) for k in need):
+        res[name] = ("skip", "no linear analysis" + (": " + L["reduce_note"] if L and L.get("reduce_note") else ""))
+        return None
+    return L
 
 
 def _variant_ok(res, name, r, rows, ref=None):

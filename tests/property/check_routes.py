@@ -53,26 +53,34 @@ def compare(res, name, what, ref_path, path, rel=1e-5, cols=None):
     """Every column of path against the same-named column of the reference
     CSV on the same times, to rel of the reference column's range (plus
     1e-9): records pass or fail under name."""
+    worst, why = deviation(what, ref_path, path, 1e-9 / rel, cols)
+    res[name] = ("pass", "") if worst <= rel else ("fail", why)
+
+
+def deviation(what, ref_path, path, absolute=0.0, cols=None):
+    """The largest difference of a column of path from the same-named column
+    of the reference CSV on the same times, less `absolute`, against the
+    reference column's range, and where it is (inf when the rows or columns
+    do not match)."""
     rh, rr = ck.read_csv(ref_path)
     h, rows = ck.read_csv(path)
     if len(rows) != len(rr) or any(abs(a[0] - b[0]) > 1e-9 * (1 + abs(b[0])) for a, b in zip(rows, rr)):
-        res[name] = ("fail", "%s: %d rows, bgdraw's %d" % (what, len(rows), len(rr)))
-        return
+        return float("inf"), "%s: %d rows, bgdraw's %d" % (what, len(rows), len(rr))
+    worst, why = 0.0, ""
     for j, c in enumerate(h):
         if j == 0 or (cols is not None and c not in cols):
             continue
         if c not in rh:
-            res[name] = ("fail", "%s: column %s not in bgdraw's CSV" % (what, c))
-            return
+            return float("inf"), "%s: column %s not in bgdraw's CSV" % (what, c)
         k = rh.index(c)
         col = [r[k] for r in rr]
         span = max(col) - min(col) + 1e-9 * max(1.0, max(abs(v) for v in col))
         for a, b in zip(rows, rr):
-            if not abs(a[j] - b[k]) <= rel * span + 1e-9:
-                res[name] = ("fail", "%s at t = %g: %s %.12g, bgdraw %.12g (range %.3g)" % (
-                    c, b[0], what, a[j], b[k], span))
-                return
-    res[name] = ("pass", "")
+            d = (abs(a[j] - b[k]) - absolute) / span
+            if not d <= worst:  # a NaN counts
+                worst = d if d == d else float("inf")
+                why = "%s at t = %g: %s %.12g, bgdraw %.12g (range %.3g)" % (c, b[0], what, a[j], b[k], span)
+    return worst, why
 
 
 def _simulated(res, name, bgdraw, text, workdir, tag, outs, what):
@@ -220,11 +228,13 @@ def _reduced_form(res, bgdraw, workdir, an, rows):
         compare(res, "reduced_form", "reduced form", w("m.csv"), w("red.csv"))
 
 
-STEP = 1e-3  # the small step: cubic laws stay linear to 1e-6 of it
+STEPS = (1e-3, 1e-4, 1e-5)  # the small step, smaller while a law's higher terms show (finding 17e)
+STEP_TOL = 1e-5             # of each output's range
+STEP_RATE = 0.2             # the deviation at a step 10 times smaller at least this much smaller
 
 
-def _step_variant(m):
-    """The model at rest with every source 0 but one, which steps by STEP at
+def _step_variant(m, size=STEPS[0]):
+    """The model at rest with every source 0 but one, which steps by size at
     T1 (between two output rows): switching laws take their first slope (a
     kink at rest has no linearisation), time-modulated two-ports their
     constant part; cubic laws, tables (linear near 0) and modulation by
@@ -254,54 +264,44 @@ def _step_variant(m):
         x = v.elem(src)
         k = v.elems.index(x)
         v.elems[k] = copy.copy(x)
-        v.elems[k].decl = "= %g*step(t - %.17g)" % (STEP, t1)
+        v.elems[k].decl = "= %g*step(t - %.17g)" % (size, t1)
     else:
         juncs = [x for x in v.elems if x.kind in ("0", "1")]
         if not juncs:
             return None
         src = "Uprop"
-        v.elems.append(Elem("Se", src, "= %g*step(t - %.17g)" % (STEP, t1)))
+        v.elems.append(Elem("Se", src, "= %g*step(t - %.17g)" % (size, t1)))
         v.bonds.append([max(b[0] for b in v.bonds) + 1, src, juncs[0].name])
-    kinds = {x.name: x.kind for x in v.elems}
-    outs = ["%s.%s" % (x.name, x.states[0]) for x in v.elems if x.kind in ("C", "I")]
-    for b in v.bonds:
-        if "R" in (kinds.get(b[1]), kinds.get(b[2])):
-            outs += ["e%d" % b[0], "f%d" % b[0]]
-    outs = outs[:40]
+    outs = (["%s.%s" % (x.name, x.states[0]) for x in v.elems if x.kind in ("C", "I")] + ck.resistor_ports(v))[:40]
     if not outs:
         return None
-    names = ["y%d" % i for i in range(len(outs))]
-    text = v.text()
     text = re.sub(r"\nsimulate .*\n", "\nsimulate t_end = %g, dt = %.17g, rtol = 1e-10, atol = 1e-15\n" % (
-        t_end, dt), text)
-    text = re.sub(r"\nplot .*\n", "\noutput " + ", ".join("%s = %s" % (n, o) for n, o in zip(names, outs)) +
-                  "\nplot " + ", ".join(outs) + "\n", text)
+        t_end, dt), v.text())
+    text, names = ck.with_outputs(text, outs)
     return text, src, t1, names
 
 
 def _step_response(res, bgdraw, m, workdir):
     """The linear model's step response is the simulation of a small step:
-    the model at rest, one source stepping by STEP (_step_variant), simulated
-    by bgdraw, against the step response of the state space of its
+    the model at rest, one source stepping by STEPS[0] (_step_variant),
+    simulated by bgdraw, against the step response of the state space of its
     `--linear json` at the initial point (rest: A, B, C, D) computed exactly
     (scipy_run.py step), at every output (stores' states, resistors' effort
-    and flow) to 1e-5 of its range."""
+    and flow) to STEP_TOL of its range. A law's higher terms make the
+    simulation differ from the linear response by O(step) of the range (a
+    quadratic term) or O(step^2) (a cubic one: seed 3269, e = 0.278 f +
+    0.347 f^3, 1.6e-5 at 1e-3), so above the tolerance the step is made 10
+    and 100 times smaller: the deviation must fall by STEP_RATE or more per
+    step down to the tolerance. A wrong linear model (or simulation) keeps
+    its deviation, a fixed fraction of the response, at every size."""
     sv = _step_variant(m)
     if sv is None:
         res["step_response"] = ("skip", "no junction for a source")
         return
     text, src, t1, names = sv
     w = lambda n: os.path.join(workdir, n)
-    lin = ck.run(bgdraw, text, workdir, "m_st", ["--linear", "json"], [])
-    if not ck._robust(res, lin, "linear"):
-        res["step_response"] = ("fail", "crashed or hung")
-        return
-    try:
-        L = json.loads(lin.out)
-    except ValueError:
-        L = None
-    if lin.status != 0 or not L or L.get("status") != "ok" or not L.get("state_space"):
-        res["step_response"] = ("skip", "no linear analysis" + (": " + L["reduce_note"] if L and L.get("reduce_note") else ""))
+    L = ck.linear_json(res, "step_response", bgdraw, text, workdir, "m_st", ("state_space",))
+    if L is None:
         return
     if src not in L["inputs"] or [o for o in L["outputs"] if o in names] != names:  # detectors add outputs
         res["step_response"] = ("fail", "inputs %s, outputs %s" % (L["inputs"], L["outputs"][:4]))
@@ -309,28 +309,49 @@ def _step_response(res, bgdraw, m, workdir):
     if any(p["re"] > 1e-9 for p in L.get("poles") or []):
         res["step_response"] = ("skip", "unstable: the response leaves the small-signal range")
         return
-    r = _simulated(res, "step_response", bgdraw, text, workdir, "m_st", ["csv", "json"], "the step's run")
-    if r is None:
-        return
-    if ck._dae_repaired(json.load(open(r.files["json"]))):
-        res["step_response"] = ("skip", "index reduced or initial values made consistent")
-        return
-    head, rows = ck.read_csv(r.files["csv"])
-    with open(w("st_sim.csv"), "w") as f:  # the plot's columns under the outputs' names
-        f.write(",".join(["t"] + names) + "\n")
-        for row in rows:
-            f.write(",".join("%.17g" % v for v in row) + "\n")
-    with open(w("st_lin.json"), "wb") as f:
-        f.write(lin.out)
-    if _scipy(res, "step_response", ["step", w("st_lin.json"), w("st_sim.csv"), w("st_lin.csv"), src,
-                                     "%.17g" % STEP, "%.17g" % t1]):
-        compare(res, "step_response", "linear step response", w("st_sim.csv"), w("st_lin.csv"), cols=names)
+    devs = []
+
+    def falling(devs):  # by STEP_RATE per step, or to the runs' own error
+        return all(b[0] <= STEP_RATE * a[0] or b[0] <= 0.1 * STEP_TOL for a, b in zip(devs, devs[1:]))
+    for size in STEPS:
+        if devs and (devs[-1][0] <= STEP_TOL or not falling(devs)):
+            break
+        r = _simulated(res, "step_response", bgdraw, _step_variant(m, size)[0] if devs else text, workdir,
+                       "m_st", ["csv", "json"], "the step's run")
+        if r is None:
+            return
+        if ck._dae_repaired(json.load(open(r.files["json"]))):
+            res["step_response"] = ("skip", "index reduced or initial values made consistent")
+            return
+        head, rows = ck.read_csv(r.files["csv"])
+        with open(w("st_sim.csv"), "w") as f:  # the plot's columns under the outputs' names
+            f.write(",".join(["t"] + names) + "\n")
+            for row in rows:
+                f.write(",".join("%.17g" % v for v in row) + "\n")
+        if not devs:
+            with open(w("st_lin.json"), "w") as f:
+                json.dump(L, f)
+            if not _scipy(res, "step_response", ["step", w("st_lin.json"), w("st_sim.csv"), w("st_lin0.csv"),
+                                                 src, "%.17g" % size, "%.17g" % t1]):
+                return
+        lh, lrows = ck.read_csv(w("st_lin0.csv"))  # the linear response is linear in the step
+        with open(w("st_lin.csv"), "w") as f:
+            f.write(",".join(lh) + "\n")
+            for row in lrows:
+                f.write(",".join("%.17g" % v for v in row[:1] + [x * size / STEPS[0] for x in row[1:]]) + "\n")
+        devs.append(deviation("linear step response", w("st_sim.csv"), w("st_lin.csv"), 1e-6 * size, names))
+    shown = "; ".join("step %g: %.3g" % (z, d[0]) for z, d in zip(STEPS, devs))
+    if devs[-1][0] <= STEP_TOL and falling(devs):
+        res["step_response"] = ("pass", shown if len(devs) > 1 else "")
+    else:
+        res["step_response"] = ("fail", "%s (%s)" % (devs[-1][1], shown))
 
 
 PARASITIC_SCALES = (1.0, 1e-2, 1e-4, 1e-6)  # the stated parameter times these, while needed
 PARASITIC_TOL = 1e-3                  # the slow states at the last value, of their range
 PARASITIC_RATE = 0.3                  # each of the last two steps of 100 at least this much closer
 PARASITIC_FLOOR = 1e-5                # the runs' own error (rtol 1e-9: seed 871 at 40 elements levels at 2e-6)
+PARASITIC_LIMIT = 0.05                # a last step this much closer is the O(parameter) limit's regime
 
 
 def _parasitic(res, bgdraw, m, workdir, an, rows):
@@ -375,8 +396,17 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
         return
     text = open(w("par.bg")).read()
     params = dict(re.findall(r"^param (\w+) = ([0-9.e+-]+)", text, re.M))
-    stores = re.findall(r"^([CI])\s+(\w+) = (\w+)$", text, re.M)
+    # the new stores, `I Ip_j8 = Ip_j8_0 [p0 = Ip_j8_0*-0.157]`: the start
+    # clause, when the transformation writes one, is replaced below (seeds 421
+    # and 563: a pattern without it found no store, so every run was at the
+    # stated parameter and the deviation could not fall, finding 17b)
+    start = r"(?:\s*\[[qp]0 = [^\]]*\])?\s*$"
+    stores = re.findall(r"^([CI])\s+(\w+) = (\w+)" + start, text, re.M)
     stores = [(k, n, p) for k, n, p in stores if p in params]
+    if len(stores) != len(params):
+        res["parasitic"] = ("fail", "the transformed model's parameters %s, its stores read %s" % (
+            sorted(params), sorted(p for _, _, p in stores)))
+        return
     bonds = re.findall(r"^bond (\d+) (\S+) -> (\S+)$", text, re.M)
     head, _ = ck.read_csv(w("m.csv"))
     orig = {b[0] for b in m.bonds}
@@ -418,8 +448,11 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
             col = head.index(("e%d" if k == "C" else "f%d") % nums[0])
             value = float(params[p]) * scale
             t = re.sub(r"^param %s = [0-9.e+-]+" % p, "param %s = %.17g" % (p, value), t, flags=re.M)
-            t = re.sub(r"^(%s\s+%s = %s)$" % (k, n, p), r"\1 [%s0 = %.17g]" % ("q" if k == "C" else "p",
-                                                                             value * rows[0][col]), t, flags=re.M)
+            t, subs = re.subn(r"^(%s\s+%s = %s)%s" % (k, n, p, start), r"\1 [%s0 = %.17g]" % (
+                "q" if k == "C" else "p", value * rows[0][col]), t, flags=re.M)
+            if subs != 1:
+                res["parasitic"] = ("fail", "the store %s's line not found in the transformed model" % n)
+                return
         r = _simulated(res, "parasitic", bgdraw, t, workdir, "m_par%d" % len(devs), ["csv"],
                        "the parasitic model's run at %g of its parameter" % scale)
         if r is None:
@@ -431,7 +464,15 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
         devs.append(max((max(abs(a[j] - b[j]) for a, b in zip(rows, pr)) / max(spans[j], floor), head[j])
                         for j in slow))
     shown = ", ".join("%.3g (%s)" % d for d in devs)
-    if not converging() or devs[-1][0] > PARASITIC_TOL:
+    # above the tolerance at 1/10^6 but already falling as the parameter
+    # (seed 5141 at 100 elements: a loop of a TF of 1.22 and an MTF of 1.23 +
+    # 0.469 sin(t) makes the parasitic mode 10^4 times softer than stated,
+    # 108 -> 8.3 -> 0.37 -> 0.0060; at 1/10^8 its undamped ringing exhausts
+    # the solver): the next factor of 100 at the last step's rate is below it
+    ratio = devs[-1][0] / devs[-2][0] if len(devs) >= 2 and devs[-2][0] > 0 else 1.0
+    near = devs[-1][0] <= PARASITIC_TOL or (
+        len(devs) == len(PARASITIC_SCALES) and ratio <= PARASITIC_LIMIT and devs[-1][0] * ratio <= PARASITIC_TOL)
+    if not converging() or not near:
         res["parasitic"] = ("fail", "the slow states' deviation from the reduced run at %s of the parasitic "
                             "parameter: %s" % (", ".join("%g" % x for x in PARASITIC_SCALES[:len(devs)]), shown))
     else:

@@ -37,7 +37,7 @@ f, old, new = {
     "integrator": ("src/simulate/simulate_run.c",
                    "  if (bg_eqsys_rhs(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) == 0) return 0;",
                    "  if (bg_eqsys_rhs(R->s, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) == 0) "
-                   "{ N_VScale(1.001, ydot, ydot); return 0; }"),
+                   "{ for (int i = 0; i < R->n; i++) N_VGetArrayPointer(ydot)[i] *= 1.001; return 0; }"),
     "indexred": ("src/equations/indexred.c",
                  "    t[k++] = bg_sym_mul(S, d, ir_var_leaf(W, W->v_der[v]));",
                  "    t[k++] = bg_sym_mul(S, bg_sym_mul(S, bg_sym_num(S, 1.01), d), ir_var_leaf(W, W->v_der[v]));"),
