@@ -761,10 +761,15 @@ static int conflict_nodes_solvable(const bg_model *m, const bg_analysis *a, lind
  * variables, or -1. A type 1 conflict at a junction: its balance must depend
  * on its common variable; a type 2 conflict or one at a two-port: its own
  * equations must determine what it puts out (conflict_nodes_solvable; an
- * undecided test counts as solvable). A conflict that fails its own test
- * counts only when the equations of all conflict nodes together do not
- * determine their variables either (undecided: they do not). */
-static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g) {
+ * undecided test counts as solvable). The equations of all conflict nodes
+ * together decide when that test is decided: a conflict that fails its own
+ * test counts only when they do not determine their variables either
+ * (seed 1710, finding 6), and conflicts that each pass their own test count
+ * when together they do not (seed 7596: two type 2 conflicts at 0-junctions
+ * of a triangle of 0-junctions each read the third one's effort, the same
+ * equation twice; its circulating flow is undetermined, the pencil singular:
+ * *together is set and the first testable conflict returned). */
+static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg_sfg *g, int *together) {
   size_t nn = (size_t)g->nnode + 1;
   lindep L = {g, bg_xcalloc(nn, sizeof(int)), bg_xcalloc(2 * nn, sizeof(int)),
               bg_xcalloc(nn, sizeof(int)), 0, bg_xcalloc(nn, sizeof(double)),
@@ -796,7 +801,13 @@ static int conflict_unsolvable(const bg_model *m, const bg_analysis *a, const bg
     if (r == 0) found = c;
     if (L.work > LINDEP_BUDGET) break; /* out of budget: the rest taken as solvable */
   }
-  if (found >= 0 && conflict_nodes_solvable(m, a, &L, node, nj) == 1) found = -1;
+  int all = nj > 1 || found >= 0 ? conflict_nodes_solvable(m, a, &L, node, nj) : -1;
+  if (found >= 0 && all == 1) found = -1;
+  if (found < 0 && all == 0) {
+    for (int c = 0; c < a->nconflict && found < 0; c++)
+      if (conflict_node_testable(m, a->conflict_node[c])) found = c;
+    *together = 1;
+  }
   free(L.stamp), free(L.queue), free(L.indeg), free(L.d), free(L.abs_d);
   free(from), free(to), free(w), free(node);
   return found;
@@ -851,7 +862,7 @@ static int cloops_constrain_states(const bg_model *m, const bg_analysis *a, cons
 
 static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nblocks) {
   bg_strbuf sb = {0};
-  int p = 0, l = 0, c = a->complete ? conflict_unsolvable(m, a, g) : -1;
+  int p = 0, l = 0, together = 0, c = a->complete ? conflict_unsolvable(m, a, g, &together) : -1;
   /* Lagrange causality: each artificial flow source's velocity is an
    * algebraic unknown whose balance is a Lagrange equation (Section 4.10) */
   int inv = 0, dae = a->ndependent || nblocks || a->nconflict || a->ncloop || a->nlag ||
@@ -876,7 +887,18 @@ static void fill_form(const bg_model *m, bg_analysis *a, const bg_sfg *g, int nb
     a->index_predicted = 2;
     int n = a->conflict_node[c], k = m->elem_kind[n], j0 = k == BG_ELEM_J0;
     const char *j = m->elem_name[n];
-    if (k != BG_ELEM_J0 && k != BG_ELEM_J1)
+    if (together) {
+      bg_sb_puts(&sb, "conflicts at ");
+      for (int q = 0, said = 0; q < a->nconflict; q++) {
+        int nq = a->conflict_node[q], dup = 0;
+        for (int r = 0; r < q; r++) dup |= a->conflict_node[r] == nq;
+        if (dup || !conflict_node_testable(m, nq)) continue;
+        bg_sb_printf(&sb, "%s%s", said++ ? ", " : "", m->elem_name[nq]);
+      }
+      bg_sb_puts(&sb, ": the equations of each determine the variables it puts out, but together "
+                      "they do not (their linearised equations are singular), so they constrain "
+                      "states or inputs: index above 1");
+    } else if (k != BG_ELEM_J0 && k != BG_ELEM_J1)
       bg_sb_printf(&sb, "conflict at the two-port %s: its two relations do not determine the "
                         "variables it puts out on its bonds, so they constrain states or inputs: "
                         "index above 1", j);

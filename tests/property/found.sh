@@ -93,6 +93,21 @@ for meth in scap relaxed vandijk; do
   check "seed1088 $meth: exit 3, predicted index above 1, a singular pencil" \
     '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$tmp/t14.json"'
 done
+# Finding 18: three 0-junctions in a triangle (j7, j17, j18) carry an
+# undetermined circulating flow (a singular pencil). Relaxed causality puts
+# type 2 conflicts at j7 and j18; each one's equations alone determine what
+# it puts out, but both read j17's effort (e51 = e17 twice), so together
+# they do not: index above 1, as SCAP and van Dijk predict, and every run
+# refuses with the singular pencil. Before the fix relaxed predicted 1.
+m=$here/found/seed7596_methods_agree.bg
+for meth in scap relaxed vandijk; do
+  "$bg" "$m" --causality $meth --simulate -o "$tmp/t18.json" 2>/dev/null
+  check "seed7596 $meth: exit 3, predicted index above 1, a singular pencil" \
+    '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$tmp/t18.json"'
+done
+"$bg" "$m" --causality relaxed -o "$tmp/t18.json" 2>/dev/null
+check "seed7596 relaxed: the conflicts at j7 and j18 together" \
+  'python3 -c "import json,sys; a=json.load(open(sys.argv[1])); sys.exit(not ([c[\"node\"] for c in a[\"conflicts\"]] == [\"j7\", \"j18\"] and a[\"index\"][\"reason\"].startswith(\"conflicts at j7, j18: \")))" "$tmp/t18.json"'
 # Finding 7: a DAE of dependent stores at rest driven by a step. The restart
 # after the step failed in IDACalcIC (exit 3); with the algebraic rows solved
 # at the input's new value first it runs, and the capacitor across the effort

@@ -168,10 +168,28 @@ static void test_conflicts_missed(void) {
   inline_index(pair, BG_METHOD_SCAP, 2, "gain +1");
 }
 
+/* Conflicts that pass their own tests but not together (docs/property.md,
+ * finding 18, seed 7596): three 0-junctions in a triangle carry an
+ * undetermined circulating flow (a singular pencil). Relaxed causality's
+ * type 2 conflicts at j7 and j18 each determine what they put out, but both
+ * set their effort from j17's (e51 = e20 at j7, e51 = e19 at j18: one
+ * equation twice): above 1, as SCAP predicts from its class 5 loop. */
+static void test_conflicts_together(void) {
+  static const char *tri =
+      "model tri\n0 j7\n0 j17\n0 j18\nI L1 = 1 [p0 = 0.3]\n"
+      "R R6 : e = 1.78*f + 0.229*f^3\nR R7 : e = 1.58*f + 0.2*f^3\n"
+      "bond 19 j17 -> j18\nbond 20 j7 -> j17\nbond 51 j7 -> j18\nbond 63 j7 -> L1\n"
+      "bond 64 R7 -> j18\nbond 72 j17 -> R6\n";
+  inline_index(tri, BG_METHOD_RELAXED, 2, "conflicts at j7, j18: the equations of each determine");
+  inline_index(tri, BG_METHOD_SCAP, 2, "gain +1");
+  inline_index(tri, BG_METHOD_VANDIJK, 2, "gain +1");
+}
+
 int main(void) {
   test_forms();
   test_conflict_index();
   test_conflicts_missed();
+  test_conflicts_together();
   test_estimates();
   test_incomplete();
   return bg_t_done();
