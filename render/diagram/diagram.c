@@ -304,7 +304,7 @@ static int alloc_nodes(bg_diagram_layout *d, bg_diags *dg) {
 /* Moves everything drawn by v. */
 static void move_scene(bg_scene *s, bg_vec v) {
   for (int i = 0; i < s->nop; i++)
-    for (int k = 0; k < 3; k++) s->op[i].x[k] += v.x, s->op[i].y[k] += v.y;
+    s->pt[i].x += v.x, s->pt[i].y += v.y;
   for (int i = 0; i < s->nitem; i++)
     if (s->item[i].kind == BG_ITEM_TEXT) s->item[i].x += v.x, s->item[i].y += v.y;
 }

@@ -29,15 +29,17 @@ struct bg_obstacles {
   int *head;            /* per hash bucket: first entry, -1 */
   unsigned nhash;       /* buckets, a power of two */
   int *enext, *eob;     /* entries: next in bucket, obstacle */
-  int *ecx, *ecy;       /* entries: the cell */
+  unsigned *ekey;       /* entries: the cell's hash before the mask (not the cell: 4 bytes less an
+                           entry; a query that meets another cell's entry of the same key tests it,
+                           and it scores only where it also has an entry in a queried cell) */
   int nent, capent;
 };
 
 static int cell_of(double v) { return (int)floor(v / CELL); }
 
-static unsigned bucket(const bg_obstacles *o, int cx, int cy) {
-  return ((unsigned)cx * 73856093u ^ (unsigned)cy * 19349663u) & (o->nhash - 1);
-}
+static unsigned cell_key(int cx, int cy) { return (unsigned)cx * 73856093u ^ (unsigned)cy * 19349663u; }
+
+static unsigned bucket(const bg_obstacles *o, int cx, int cy) { return cell_key(cx, cy) & (o->nhash - 1); }
 
 /* Four times the buckets, every entry rechained; the score of a query does
  * not depend on the order of a chain. */
@@ -47,7 +49,7 @@ static void rehash(bg_obstacles *o) {
   o->head = bg_xmalloc(o->nhash * sizeof(int));
   for (unsigned i = 0; i < o->nhash; i++) o->head[i] = -1;
   for (int e = 0; e < o->nent; e++) {
-    unsigned h = bucket(o, o->ecx[e], o->ecy[e]);
+    unsigned h = o->ekey[e] & (o->nhash - 1);
     o->enext[e] = o->head[h], o->head[h] = e;
   }
 }
@@ -65,7 +67,7 @@ static bg_obstacles *obstacles(bg_diagram *d) {
 void bg_obstacles_free(bg_obstacles *o) {
   if (!o) return;
   free(o->box), free(o->seg), free(o->owner), free(o->stamp), free(o->head);
-  free(o->enext), free(o->eob), free(o->ecx), free(o->ecy);
+  free(o->enext), free(o->eob), free(o->ekey);
   free(o);
 }
 
@@ -74,13 +76,12 @@ static void add_entry(bg_obstacles *o, int ob, int cx, int cy) {
     o->capent = o->capent ? 2 * o->capent : 1024;
     o->enext = bg_xrealloc(o->enext, (size_t)o->capent * sizeof(int));
     o->eob = bg_xrealloc(o->eob, (size_t)o->capent * sizeof(int));
-    o->ecx = bg_xrealloc(o->ecx, (size_t)o->capent * sizeof(int));
-    o->ecy = bg_xrealloc(o->ecy, (size_t)o->capent * sizeof(int));
+    o->ekey = bg_xrealloc(o->ekey, (size_t)o->capent * sizeof(unsigned));
   }
   if ((unsigned)o->nent >= 2 * o->nhash) rehash(o);
   unsigned h = bucket(o, cx, cy);
   int e = o->nent++;
-  o->eob[e] = ob, o->ecx[e] = cx, o->ecy[e] = cy, o->enext[e] = o->head[h];
+  o->eob[e] = ob, o->ekey[e] = cell_key(cx, cy), o->enext[e] = o->head[h];
   o->head[h] = e;
 }
 
@@ -123,8 +124,9 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
   const bg_scene *s = &d->scene;
   const bg_scene_item *it = &s->item[i];
   double px = 0, py = 0, sx = 0, sy = 0;
-  for (int k = 0; k < it->nop; k++) {
-    const bg_scene_op *op = &s->op[it->opadr + k];
+  bg_scene_op op_;
+  for (int k = 0; bg_scene_next_op(s, it, &k, &op_);) {
+    const bg_scene_op *op = &op_;
     if (op->code == BG_OP_MOVE) {
       px = sx = op->x[0], py = sy = op->y[0];
     } else if (op->code == BG_OP_LINE || op->code == BG_OP_CLOSE) {
@@ -173,10 +175,11 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
   int score = 0;
   o->query++;
   for (int cy = cell_of(y0); cy <= cell_of(y1); cy++)
-    for (int cx = cell_of(x0); cx <= cell_of(x1); cx++)
-      for (int e = o->head[bucket(o, cx, cy)]; e >= 0; e = o->enext[e]) {
+    for (int cx = cell_of(x0); cx <= cell_of(x1); cx++) {
+      unsigned key = cell_key(cx, cy);
+      for (int e = o->head[key & (o->nhash - 1)]; e >= 0; e = o->enext[e]) {
         int k = o->eob[e];
-        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        if (o->ekey[e] != key || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
         if (owner < 0 && o->seg[k]) continue;
         if (owner > 0 && (o->owner[k] <= 0 || o->owner[k] == owner)) continue;
@@ -185,6 +188,7 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
           score += o->seg[k] ? 1 : 10; /* covering text is worse than crossing lines */
       }
+    }
   return score;
 }
 
@@ -209,16 +213,18 @@ int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
   double best_d = r;
   o->query++;
   for (int cy = cell_of(p.y - r); cy <= cell_of(p.y + r); cy++)
-    for (int cx = cell_of(p.x - r); cx <= cell_of(p.x + r); cx++)
-      for (int e = o->head[bucket(o, cx, cy)]; e >= 0; e = o->enext[e]) {
+    for (int cx = cell_of(p.x - r); cx <= cell_of(p.x + r); cx++) {
+      unsigned key = cell_key(cx, cy);
+      for (int e = o->head[key & (o->nhash - 1)]; e >= 0; e = o->enext[e]) {
         int k = o->eob[e];
-        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        if (o->ekey[e] != key || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
         if (o->owner[k] >= 0) continue;
         double dk = seg_dist(o->box + 4 * k, p);
         if (dk < best_d || (dk == best_d && best >= 0 && -1 - o->owner[k] < best))
           best_d = dk, best = -1 - o->owner[k];
       }
+    }
   return best;
 }
 
@@ -240,15 +246,17 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
   *bonds = *lines = 0;
   o->query++;
   for (int cy = cell_of(fmin(a.y, b.y)); cy <= cell_of(fmax(a.y, b.y)); cy++)
-    for (int cx = cell_of(fmin(a.x, b.x)); cx <= cell_of(fmax(a.x, b.x)); cx++)
-      for (int e = o->head[bucket(o, cx, cy)]; e >= 0; e = o->enext[e]) {
+    for (int cx = cell_of(fmin(a.x, b.x)); cx <= cell_of(fmax(a.x, b.x)); cx++) {
+      unsigned key = cell_key(cx, cy);
+      for (int e = o->head[key & (o->nhash - 1)]; e >= 0; e = o->enext[e]) {
         int k = o->eob[e];
-        if (o->ecx[e] != cx || o->ecy[e] != cy || o->stamp[k] == o->query) continue;
+        if (o->ekey[e] != key || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
         const double *r = o->box + 4 * k;
         if (!o->seg[k]) boxes += seg_hits_box(s, r[0], r[1], r[2], r[3]);
         else if (o->owner[k] != owner && segs_meet(s, r)) ++*(o->owner[k] < 0 ? bonds : lines);
       }
+    }
   return boxes;
 }
 

@@ -122,8 +122,9 @@ static void item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) {
     b[2] = fmax(b[2], x + it->tw), b[3] = fmax(b[3], y + it->th);
     return;
   }
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
+  bg_scene_op o_;
+  for (int i = 0; bg_scene_next_op(s, it, &i, &o_);) {
+    const bg_scene_op *o = &o_;
     int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
     for (int k = 0; k < npt; k++) {
       b[0] = fmin(b[0], o->x[k]), b[1] = fmin(b[1], o->y[k]);
@@ -223,8 +224,9 @@ static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
       mark_box(t, rb);
       continue;
     }
-    for (int i = 0; i < it->nop; i++) {
-      const bg_scene_op *o = &s->op[it->opadr + i];
+    bg_scene_op o_;
+    for (int i = 0; bg_scene_next_op(s, it, &i, &o_);) {
+      const bg_scene_op *o = &o_;
       int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
       for (int q = 0; q < npt; q++) {
         double rb[4] = {o->x[q] - r[0], o->y[q] - r[1], o->x[q] - r[0], o->y[q] - r[1]};

@@ -16,7 +16,8 @@ void bg_scene_init(bg_scene *s, const char *font) {
 
 void bg_scene_free(bg_scene *s) {
   free(s->item);
-  free(s->op);
+  free(s->pt);
+  free(s->code);
   bg_arena_free(&s->arena);
   memset(s, 0, sizeof *s);
 }
@@ -36,42 +37,38 @@ bg_scene_item *bg_scene_begin(bg_scene *s, int kind, const char *role_fmt, ...) 
   it->kind = kind;
   it->opadr = s->nop;
   it->color = (bg_rgba){0, 0, 0, 1};
-  it->width = 1;
+  if (kind != BG_ITEM_TEXT) it->width = 1; /* text's anchor and size share its bytes */
   it->role = bg_arena_strdup(&s->arena, role);
   return it;
 }
 
-/* Appends an operation to the last item. */
-static bg_scene_op *add_op(bg_scene *s, int code) {
+/* Appends n slots with code to the last item's path; returns the first. */
+static bg_scene_pt *add_slots(bg_scene *s, int code, int n) {
   if (!s->nitem) BG_FATAL("scene path operation without an item");
-  if (s->nop == s->capop) {
+  while (s->nop + n > s->capop) {
     s->capop = s->capop ? 2 * s->capop : 256;
-    s->op = bg_xrealloc(s->op, (size_t)s->capop * sizeof *s->op);
+    s->pt = bg_xrealloc(s->pt, (size_t)s->capop * sizeof *s->pt);
+    s->code = bg_xrealloc(s->code, (size_t)s->capop);
   }
-  bg_scene_op *o = &s->op[s->nop++];
-  memset(o, 0, sizeof *o);
-  o->code = code;
-  s->item[s->nitem - 1].nop++;
-  return o;
+  bg_scene_pt *p = &s->pt[s->nop];
+  memset(p, 0, (size_t)n * sizeof *p);
+  memset(s->code + s->nop, code, (size_t)n);
+  s->nop += n;
+  s->item[s->nitem - 1].nop += n;
+  return p;
 }
 
-void bg_scene_move(bg_scene *s, double x, double y) {
-  bg_scene_op *o = add_op(s, BG_OP_MOVE);
-  o->x[0] = x, o->y[0] = y;
-}
+void bg_scene_move(bg_scene *s, double x, double y) { *add_slots(s, BG_OP_MOVE, 1) = (bg_scene_pt){x, y}; }
 
-void bg_scene_line(bg_scene *s, double x, double y) {
-  bg_scene_op *o = add_op(s, BG_OP_LINE);
-  o->x[0] = x, o->y[0] = y;
-}
+void bg_scene_line(bg_scene *s, double x, double y) { *add_slots(s, BG_OP_LINE, 1) = (bg_scene_pt){x, y}; }
 
 void bg_scene_curve(bg_scene *s, double x1, double y1, double x2, double y2, double x3,
                     double y3) {
-  bg_scene_op *o = add_op(s, BG_OP_CURVE);
-  o->x[0] = x1, o->y[0] = y1, o->x[1] = x2, o->y[1] = y2, o->x[2] = x3, o->y[2] = y3;
+  bg_scene_pt *p = add_slots(s, BG_OP_CURVE, 3);
+  p[0] = (bg_scene_pt){x1, y1}, p[1] = (bg_scene_pt){x2, y2}, p[2] = (bg_scene_pt){x3, y3};
 }
 
-void bg_scene_close(bg_scene *s) { add_op(s, BG_OP_CLOSE); }
+void bg_scene_close(bg_scene *s) { add_slots(s, BG_OP_CLOSE, 1); }
 
 void bg_scene_circle(bg_scene *s, double x, double y, double r) {
   double k = 0.5523 * r; /* the control distance of a quarter circle */
@@ -111,11 +108,8 @@ void bg_scene_item_box(const bg_scene *s, const bg_scene_item *it, double b[4]) 
     return;
   }
   double pad = (it->round ? 0.5 : 5) * it->width;
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
-    int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
-    for (int k = 0; k < npt; k++) grow(b, o->x[k], o->y[k], pad);
-  }
+  for (int i = it->opadr; i < it->opadr + it->nop; i++)
+    if (s->code[i] != BG_OP_CLOSE) grow(b, s->pt[i].x, s->pt[i].y, pad);
 }
 
 void bg_scene_crop(const bg_scene *src, const double clip[4], bg_scene *dst) {
@@ -138,14 +132,18 @@ void bg_scene_crop_keep(const bg_scene *src, const double clip[4], bg_scene_keep
     }
     while (dst->nop + it->nop > dst->capop) {
       dst->capop = dst->capop ? 2 * dst->capop : 256;
-      dst->op = bg_xrealloc(dst->op, (size_t)dst->capop * sizeof *dst->op);
+      dst->pt = bg_xrealloc(dst->pt, (size_t)dst->capop * sizeof *dst->pt);
+      dst->code = bg_xrealloc(dst->code, (size_t)dst->capop);
     }
     bg_scene_item *d = &dst->item[dst->nitem];
     *d = *it;
     if (keep && !keep(ctx, src, i, d)) continue;
     dst->nitem++;
     d->opadr = dst->nop;
-    if (it->nop) memcpy(dst->op + dst->nop, src->op + it->opadr, (size_t)it->nop * sizeof *dst->op);
+    if (it->nop) {
+      memcpy(dst->pt + dst->nop, src->pt + it->opadr, (size_t)it->nop * sizeof *dst->pt);
+      memcpy(dst->code + dst->nop, src->code + it->opadr, (size_t)it->nop);
+    }
     dst->nop += it->nop;
     d->role = bg_arena_strdup(&dst->arena, it->role);
     if (it->text) d->text = bg_arena_strdup(&dst->arena, it->text);
@@ -159,11 +157,8 @@ static void grow_item(const bg_scene *s, const bg_scene_item *it, double b[4]) {
     grow(b, x + it->tw, y + it->th, 0);
     return;
   }
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
-    int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
-    for (int k = 0; k < npt; k++) grow(b, o->x[k], o->y[k], it->width / 2);
-  }
+  for (int i = it->opadr; i < it->opadr + it->nop; i++)
+    if (s->code[i] != BG_OP_CLOSE) grow(b, s->pt[i].x, s->pt[i].y, it->width / 2);
 }
 
 int bg_scene_bbox(const bg_scene *s, double *x0, double *y0, double *x1, double *y1) {
@@ -178,8 +173,7 @@ void bg_scene_fit(bg_scene *s, double margin) {
   double x0, y0, x1, y1;
   bg_scene_bbox(s, &x0, &y0, &x1, &y1);
   double dx = margin - x0, dy = margin - y0;
-  for (int i = 0; i < s->nop; i++)
-    for (int k = 0; k < 3; k++) s->op[i].x[k] += dx, s->op[i].y[k] += dy;
+  for (int i = 0; i < s->nop; i++) s->pt[i].x += dx, s->pt[i].y += dy;
   for (int i = 0; i < s->nitem; i++)
     if (s->item[i].kind == BG_ITEM_TEXT) s->item[i].x += dx, s->item[i].y += dy;
   /* whole points: page sizes and PNG pixel sizes stay stable */
@@ -196,8 +190,9 @@ static void dump_color(bg_strbuf *b, bg_rgba c) {
 
 static void dump_ops(const bg_scene *s, const bg_scene_item *it, bg_strbuf *b) {
   static const char code[] = "MLCZ";
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
+  bg_scene_op op;
+  for (int i = 0; bg_scene_next_op(s, it, &i, &op);) {
+    const bg_scene_op *o = &op;
     int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
     bg_sb_printf(b, " %c", code[o->code]);
     for (int k = 0; k < npt; k++) bg_sb_printf(b, " %.1f,%.1f", o->x[k], o->y[k]);

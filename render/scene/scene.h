@@ -16,7 +16,16 @@ typedef struct bg_rgba {
 
 typedef enum { BG_OP_MOVE, BG_OP_LINE, BG_OP_CURVE, BG_OP_CLOSE } bg_scene_opcode;
 
-/* One path operation; CURVE uses all three points (two controls, the end). */
+/* A path is stored as slots, one point each (16 bytes and a code byte: a
+ * line of two points takes 34 bytes, not the 112 of two whole operations):
+ * MOVE, LINE and CLOSE take one slot (CLOSE's point is unused), CURVE three
+ * (two controls, the end), all three with the code CURVE. */
+typedef struct bg_scene_pt {
+  double x, y;
+} bg_scene_pt;
+
+/* One path operation as read back from its slots (bg_scene_next_op): CURVE
+ * uses all three points (two controls, the end), MOVE and LINE the first. */
 typedef struct bg_scene_op {
   int code; /* bg_scene_opcode */
   double x[3], y[3];
@@ -30,18 +39,27 @@ typedef enum {
 
 typedef struct bg_scene_item {
   int kind;         /* bg_item_kind */
-  int opadr, nop;   /* path operations, into bg_scene.op */
-  bg_rgba color;    /* line or text colour */
-  bg_rgba fill;     /* FILL only */
-  double width;     /* line width; FILL: outline width, 0 = none */
-  double dash[2];   /* on, off lengths; dash[0] == 0: solid */
   int round;        /* round caps and joins (else butt caps, miter joins) */
-  const char *text; /* TEXT: pango markup, owned by the scene */
-  double x, y;      /* TEXT: anchor */
-  double size;      /* TEXT: font size in points */
-  double halign, valign; /* TEXT: 0 left/top, 0.5 centre, 1 right/bottom */
-  double tw, th;    /* TEXT: measured size, points */
+  int opadr, nop;   /* path slots, into bg_scene.pt and .code (a text item has none) */
+  bg_rgba color;    /* line or text colour */
+  const char *text; /* TEXT: pango markup, owned by the scene; NULL for paths */
   const char *role; /* owned by the scene */
+  /* What only paths and what only text need share their bytes (120 bytes an
+   * item instead of 184: a 100 000-mass diagram has two million items). Read
+   * a field of the other kind's part and you read the other part's bytes. */
+  union {
+    struct {          /* STROKE and FILL */
+      bg_rgba fill;   /* FILL only */
+      double width;   /* line width; FILL: outline width, 0 = none */
+      double dash[2]; /* on, off lengths; dash[0] == 0: solid */
+    };
+    struct {               /* TEXT */
+      double x, y;         /* anchor */
+      double size;         /* font size in points */
+      double halign, valign; /* 0 left/top, 0.5 centre, 1 right/bottom */
+      double tw, th;       /* measured size, points */
+    };
+  };
 } bg_scene_item;
 
 typedef struct bg_scene {
@@ -51,8 +69,9 @@ typedef struct bg_scene {
   const char *title;    /* nullable; owned */
   bg_scene_item *item;
   int nitem, capitem;
-  bg_scene_op *op;
-  int nop, capop;
+  bg_scene_pt *pt;      /* path slots: points */
+  unsigned char *code;  /* path slots: bg_scene_opcode */
+  int nop, capop;       /* slots used, allocated */
   bg_arena arena;       /* strings */
 } bg_scene;
 
@@ -62,6 +81,16 @@ void bg_scene_free(bg_scene *s);
  * The returned pointer is valid until the next bg_scene_begin. */
 bg_scene_item *bg_scene_begin(bg_scene *s, int kind, const char *role_fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* Reads the operation at slot *k of item it's path into o and moves *k past
+ * it; returns 0 past the last: for (int k = 0; bg_scene_next_op(s, it, &k, &o);). */
+static inline int bg_scene_next_op(const bg_scene *s, const bg_scene_item *it, int *k, bg_scene_op *o) {
+  if (*k >= it->nop) return 0;
+  int a = it->opadr + *k, n = s->code[a] == BG_OP_CURVE ? 3 : 1;
+  o->code = s->code[a];
+  for (int j = 0; j < n; j++) o->x[j] = s->pt[a + j].x, o->y[j] = s->pt[a + j].y;
+  *k += n;
+  return 1;
+}
 void bg_scene_move(bg_scene *s, double x, double y);
 void bg_scene_line(bg_scene *s, double x, double y);
 void bg_scene_curve(bg_scene *s, double x1, double y1, double x2, double y2, double x3,

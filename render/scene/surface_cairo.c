@@ -24,8 +24,9 @@ static void set_color(cairo_t *cr, bg_rgba c) { cairo_set_source_rgba(cr, c.r, c
 
 static void replay_path(cairo_t *cr, const bg_scene *s, const bg_scene_item *it) {
   cairo_new_path(cr);
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
+  bg_scene_op o_;
+  for (int i = 0; bg_scene_next_op(s, it, &i, &o_);) {
+    const bg_scene_op *o = &o_;
     switch (o->code) {
     case BG_OP_MOVE: cairo_move_to(cr, o->x[0], o->y[0]); break;
     case BG_OP_LINE: cairo_line_to(cr, o->x[0], o->y[0]); break;

@@ -68,8 +68,9 @@ static void color_attr(bg_strbuf *b, const char *name, bg_rgba c) {
 static void path_data(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it) {
   static const char code[] = "MLCZ";
   bg_sb_puts(b, " d=\"");
-  for (int i = 0; i < it->nop; i++) {
-    const bg_scene_op *o = &s->op[it->opadr + i];
+  bg_scene_op o_;
+  for (int i = 0; bg_scene_next_op(s, it, &i, &o_);) {
+    const bg_scene_op *o = &o_;
     int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
     bg_sb_putc(b, code[o->code]);
     for (int k = 0; k < npt; k++) {

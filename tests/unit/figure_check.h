@@ -131,8 +131,9 @@ static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) 
   int cap = 16 * it->nop + 1, n = 0;
   fc_seg *seg = malloc((size_t)cap * sizeof *seg);
   double px = 0, py = 0, sx = 0, sy = 0;
-  for (int k = 0; k < it->nop; k++) {
-    const bg_scene_op *o = &s->op[it->opadr + k];
+  bg_scene_op o_;
+  for (int k = 0; bg_scene_next_op(s, it, &k, &o_);) {
+    const bg_scene_op *o = &o_;
     if (o->code == BG_OP_MOVE) {
       px = sx = o->x[0], py = sy = o->y[0];
     } else if (o->code == BG_OP_LINE || o->code == BG_OP_CLOSE) {

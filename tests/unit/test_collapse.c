@@ -52,10 +52,10 @@ static rect box_of(const bg_scene *s, const char *name) {
   rect r = {1e300, 1e300, -1e300, -1e300};
   const bg_scene_item *it = item(s, role);
   for (int k = 0; it && k < it->nop; k++) {
-    const bg_scene_op *o = &s->op[it->opadr + k];
-    if (o->code == BG_OP_CLOSE) continue;
-    r.x0 = fmin(r.x0, o->x[0]), r.x1 = fmax(r.x1, o->x[0]);
-    r.y0 = fmin(r.y0, o->y[0]), r.y1 = fmax(r.y1, o->y[0]);
+    const bg_scene_pt *o = &s->pt[it->opadr + k];
+    if (s->code[it->opadr + k] == BG_OP_CLOSE) continue;
+    r.x0 = fmin(r.x0, o->x), r.x1 = fmax(r.x1, o->x);
+    r.y0 = fmin(r.y0, o->y), r.y1 = fmax(r.y1, o->y);
   }
   return r;
 }
@@ -103,14 +103,14 @@ static void test_boxes(void) {
       if (it == ih || !bi) continue;
       /* a port bond: its inner end on the box's border */
       ports++;
-      const bg_scene_op *end = &s->op[bi->opadr + (it ? 0 : bi->nop - 2)];
-      OK(border_dist(box[k], end->x[0], end->y[0]) < 0.5);
+      const bg_scene_pt *end = &s->pt[bi->opadr + (it ? 0 : bi->nop - 2)];
+      OK(border_dist(box[k], end->x, end->y) < 0.5);
       snprintf(role, sizeof role, "stroke bond=%d", m->bond_num[b]);
       const bg_scene_item *st = item(s, role);
       OK(st != NULL); /* every bond of this model has a stroke */
       if (!st) continue;
-      const bg_scene_op *a = &s->op[st->opadr], *z = &s->op[st->opadr + 1];
-      double cx = (a->x[0] + z->x[0]) / 2, cy = (a->y[0] + z->y[0]) / 2;
+      const bg_scene_pt *a = &s->pt[st->opadr], *z = &s->pt[st->opadr + 1];
+      double cx = (a->x + z->x) / 2, cy = (a->y + z->y) / 2;
       int at_inner = (f.a.bond_stroke[b] == BG_STROKE_HEAD) == ih;
       if (at_inner) {
         strokes_at_box++;
@@ -209,9 +209,9 @@ static void test_nested(void) {
     rect fr = {1e300, 1e300, -1e300, -1e300}, bx = box_of(s, "P.X");
     const bg_scene_item *it = item(s, "frame P");
     for (int k = 0; it && k < it->nop; k++)
-      if (s->op[it->opadr + k].code != BG_OP_CLOSE)
-        fr.x0 = fmin(fr.x0, s->op[it->opadr + k].x[0]), fr.x1 = fmax(fr.x1, s->op[it->opadr + k].x[0]),
-        fr.y0 = fmin(fr.y0, s->op[it->opadr + k].y[0]), fr.y1 = fmax(fr.y1, s->op[it->opadr + k].y[0]);
+      if (s->code[it->opadr + k] != BG_OP_CLOSE)
+        fr.x0 = fmin(fr.x0, s->pt[it->opadr + k].x), fr.x1 = fmax(fr.x1, s->pt[it->opadr + k].x),
+        fr.y0 = fmin(fr.y0, s->pt[it->opadr + k].y), fr.y1 = fmax(fr.y1, s->pt[it->opadr + k].y);
     OK(bx.x0 > fr.x0 && bx.x1 < fr.x1 && bx.y0 > fr.y0 && bx.y1 < fr.y1); /* inside P's frame */
     INT_EQ(count_role(s, "bond"), f.m->nbond - 2);
   }
@@ -251,9 +251,9 @@ static void test_detector(void) {
     if (t && l) {
       /* the line runs from the 0-junction n towards the detector's label */
       const bg_scene_item *n = item(s, "node n");
-      const bg_scene_op *p0 = &s->op[l->opadr], *p1 = &s->op[l->opadr + l->nop - 1];
-      OK(n && hypot(p0->x[0] - n->x, p0->y[0] - n->y) < 15);
-      OK(hypot(p1->x[0] - t->x, p1->y[0] - t->y) < hypot(p0->x[0] - t->x, p0->y[0] - t->y));
+      const bg_scene_pt *p0 = &s->pt[l->opadr], *p1 = &s->pt[l->opadr + l->nop - 1];
+      OK(n && hypot(p0->x - n->x, p0->y - n->y) < 15);
+      OK(hypot(p1->x - t->x, p1->y - t->y) < hypot(p0->x - t->x, p0->y - t->y));
     }
   }
   bg_diagram_free(d), bg_diagram_free(e);

@@ -402,22 +402,22 @@ static void test_lagrange(void) {
       const bg_scene_item *barb = item(s, r); /* the half arrow drawn again, solid */
       OK(barb && barb->nop == 2 && barb->dash[0] == 0);
       if (barb && bond && bond->nop == 3) {
-        const bg_scene_op *bo = s->op + barb->opadr, *lo = s->op + bond->opadr;
-        BG_T_REPORT(hypot(bo[0].x[0] - lo[1].x[0], bo[0].y[0] - lo[1].y[0]) < 1e-9 &&
-                        hypot(bo[1].x[0] - lo[2].x[0], bo[1].y[0] - lo[2].y[0]) < 1e-9,
+        const bg_scene_pt *bo = s->pt + barb->opadr, *lo = s->pt + bond->opadr;
+        BG_T_REPORT(hypot(bo[0].x - lo[1].x, bo[0].y - lo[1].y) < 1e-9 &&
+                        hypot(bo[1].x - lo[2].x, bo[1].y - lo[2].y) < 1e-9,
                     "Sf* %d: the solid barb over the dashed bond's", i);
       }
       OK(box && bond && stroke && bond->nop == 3);
       if (!box || !bond || !stroke) continue;
-      const bg_scene_op *o = s->op + bond->opadr, *b0 = s->op + box->opadr, *b2 = b0 + 2;
-      double x0 = fmin(b0->x[0], b2->x[0]), x1 = fmax(b0->x[0], b2->x[0]);
-      double y0 = fmin(b0->y[0], b2->y[0]), y1 = fmax(b0->y[0], b2->y[0]);
-      double tx = o[1].x[0], ty = o[1].y[0]; /* the tip: where the barb starts */
+      const bg_scene_pt *o = s->pt + bond->opadr, *b0 = s->pt + box->opadr, *b2 = b0 + 2;
+      double x0 = fmin(b0->x, b2->x), x1 = fmax(b0->x, b2->x);
+      double y0 = fmin(b0->y, b2->y), y1 = fmax(b0->y, b2->y);
+      double tx = o[1].x, ty = o[1].y; /* the tip: where the barb starts */
       int on_box = (fabs(tx - x0) < 0.01 || fabs(tx - x1) < 0.01 || fabs(ty - y0) < 0.01 || fabs(ty - y1) < 0.01) &&
                    tx > x0 - 0.01 && tx < x1 + 0.01 && ty > y0 - 0.01 && ty < y1 + 0.01;
       BG_T_REPORT(on_box, "Sf* %d: the half arrow's tip on the Sf* box (%.1f,%.1f)", i, tx, ty);
-      const bg_scene_op *so = s->op + stroke->opadr;
-      double sx = (so[0].x[0] + so[1].x[0]) / 2, sy = (so[0].y[0] + so[1].y[0]) / 2;
+      const bg_scene_pt *so = s->pt + stroke->opadr;
+      double sx = (so[0].x + so[1].x) / 2, sy = (so[0].y + so[1].y) / 2;
       BG_T_REPORT(hypot(sx - tx, sy - ty) < 0.01, "Sf* %d: the stroke at the source", i);
       bg_rgba want = hi ? (bg_rgba){0xc8 / 255.0, 0xc8 / 255.0, 0xc8 / 255.0, 1} : (bg_rgba){0, 0, 0, 1};
       BG_T_REPORT(same_rgb(box->color, want) && same_rgb(bond->color, want) && same_rgb(stroke->color, want),

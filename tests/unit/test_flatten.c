@@ -249,8 +249,9 @@ static int frame_box(const bg_scene *s, const char *role, double *x0, double *y0
     const bg_scene_item *it = &s->item[i];
     if (!it->role || strcmp(it->role, role) != 0 || it->kind != BG_ITEM_STROKE) continue;
     *x0 = *y0 = 1e300, *x1 = *y1 = -1e300;
-    for (int k = 0; k < it->nop; k++) {
-      const bg_scene_op *op = &s->op[it->opadr + k];
+    bg_scene_op op_;
+    for (int k = 0; bg_scene_next_op(s, it, &k, &op_);) {
+      const bg_scene_op *op = &op_;
       if (op->code == BG_OP_CLOSE) continue;
       *x0 = fmin(*x0, op->x[0]), *x1 = fmax(*x1, op->x[0]);
       *y0 = fmin(*y0, op->y[0]), *y1 = fmax(*y1, op->y[0]);

@@ -102,7 +102,7 @@ static const bg_scene_item *find_item(const bg_scene *s, const char *role) {
 
 static int count_ops(const bg_scene *s, const bg_scene_item *it, int code) {
   int n = 0;
-  for (int i = 0; it && i < it->nop; i++) n += s->op[it->opadr + i].code == code;
+  for (int i = 0; it && i < it->nop; i++) n += s->code[it->opadr + i] == code;
   return n;
 }
 
@@ -335,15 +335,15 @@ static void test_two_plots(void) {
   /* tick marks under both panels, labels under the last only */
   INT_EQ(bg_scene_count(&s, "ticks x"), 2);
   const bg_scene_item *p2 = find_item(&s, "panel 2"), *t = find_item(&s, "tick x");
-  OK(p2 && t && t->y > s.op[p2->opadr + 2].y[0]);
+  OK(p2 && t && t->y > s.pt[p2->opadr + 2].y);
   OK(bg_scene_count(&s, "tick y 1") >= 2 && bg_scene_count(&s, "tick y 2") >= 2);
   /* the panels share the x extent */
   const bg_scene_item *p1 = find_item(&s, "panel 1");
-  OK(p1 && p2 && s.op[p1->opadr].x[0] == s.op[p2->opadr].x[0] &&
-     s.op[p1->opadr + 1].x[0] == s.op[p2->opadr + 1].x[0]);
+  OK(p1 && p2 && s.pt[p1->opadr].x == s.pt[p2->opadr].x &&
+     s.pt[p1->opadr + 1].x == s.pt[p2->opadr + 1].x);
   /* nothing overlaps between the panels: panel 1 ends above panel 2's header */
   const bg_scene_item *ti2 = find_item(&s, "title 2");
-  OK(p1 && ti2 && s.op[p1->opadr + 2].y[0] < ti2->y);
+  OK(p1 && ti2 && s.pt[p1->opadr + 2].y < ti2->y);
   bg_scene_free(&s);
   fx_free(&f);
 }
@@ -419,8 +419,8 @@ static void test_partial(void) {
   /* the axis spans the simulate block: the mark sits at 0.77 / 2 of the width */
   const bg_scene_item *p = find_item(&s, "partial 1"), *fr = find_item(&s, "panel 1");
   if (p && fr) {
-    double x0 = s.op[fr->opadr].x[0], x1 = s.op[fr->opadr + 1].x[0];
-    DBL_NEAR((s.op[p->opadr].x[0] - x0) / (x1 - x0), f.r.t_reached / 2, 1e-9);
+    double x0 = s.pt[fr->opadr].x, x1 = s.pt[fr->opadr + 1].x;
+    DBL_NEAR((s.pt[p->opadr].x - x0) / (x1 - x0), f.r.t_reached / 2, 1e-9);
   } else {
     OK(0);
   }

@@ -131,7 +131,7 @@ static int item_points(const bg_scene *s, int i, double *x, double *y, int max) 
   const bg_scene_item *it = &s->item[i];
   int n = 0;
   for (int k = 0; k < it->nop && n < max; k++)
-    if (s->op[it->opadr + k].code != BG_OP_CLOSE) x[n] = s->op[it->opadr + k].x[0], y[n++] = s->op[it->opadr + k].y[0];
+    if (s->code[it->opadr + k] != BG_OP_CLOSE) x[n] = s->pt[it->opadr + k].x, y[n++] = s->pt[it->opadr + k].y;
   return n;
 }
 

@@ -48,8 +48,9 @@ static int part_box(const bg_scene *s, int legend, double b[4], double *minsz) {
       if (*minsz == 0 || it->size < *minsz) *minsz = it->size;
       continue;
     }
-    for (int k = 0; k < it->nop; k++) {
-      const bg_scene_op *o = &s->op[it->opadr + k];
+    bg_scene_op o_;
+    for (int k = 0; bg_scene_next_op(s, it, &k, &o_);) {
+      const bg_scene_op *o = &o_;
       int npt = o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1;
       for (int q = 0; q < npt; q++) grow(b, o->x[q], o->y[q], o->x[q], o->y[q]);
     }
@@ -95,12 +96,14 @@ static int legend_cut(const bg_surface_place *p, const rp_page *pg) {
     if (it->kind == BG_ITEM_TEXT) {
       double x = it->x - it->halign * it->tw, y = it->y - it->valign * it->th;
       grow(L, x, y, x + it->tw, y + it->th);
-    } else
-      for (int k = 0; k < it->nop; k++) {
-        const bg_scene_op *o = &s->op[it->opadr + k];
+    } else {
+      bg_scene_op o_;
+      for (int k = 0; bg_scene_next_op(s, it, &k, &o_);) {
+        const bg_scene_op *o = &o_;
         for (int q = 0; q < (o->code == BG_OP_CURVE ? 3 : o->code == BG_OP_CLOSE ? 0 : 1); q++)
           grow(L, o->x[q], o->y[q], o->x[q], o->y[q]);
       }
+    }
     if (!(L[0] < r[2] - e && L[2] > r[0] + e && L[1] < r[3] - e && L[3] > r[1] + e)) continue;
     int inside = L[0] >= r[0] - e && L[2] <= r[2] + e && L[1] >= r[1] - e && L[3] <= r[3] + e;
     double px1 = p->x + (L[2] - p->sx) * p->scale, py1 = p->y + (L[3] - p->sy) * p->scale;

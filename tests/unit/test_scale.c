@@ -182,8 +182,8 @@ static void test_obstacle_segments(void) {
     if (i % 11 == 0) seg[i][2] = seg[i][0]; /* some vertical */
     line_item(&d.scene, 0, 0, "segment");
     bg_scene_item *it = &d.scene.item[d.scene.nitem - 1];
-    d.scene.op[it->opadr].x[0] = seg[i][0], d.scene.op[it->opadr].y[0] = seg[i][1];
-    d.scene.op[it->opadr + 1].x[0] = seg[i][2], d.scene.op[it->opadr + 1].y[0] = seg[i][3];
+    d.scene.pt[it->opadr].x = seg[i][0], d.scene.pt[it->opadr].y = seg[i][1];
+    d.scene.pt[it->opadr + 1].x = seg[i][2], d.scene.pt[it->opadr + 1].y = seg[i][3];
     bg_obstacle_item(&d, d.scene.nitem - 1);
   }
   int same = 1;
@@ -238,7 +238,7 @@ static void test_crop(void) {
   bg_scene_crop(&a, clip, &k);
   INT_EQ(k.nitem, 3);
   OK(k.nitem == 3 && !strcmp(k.item[0].role, "inside") && !strcmp(k.item[1].role, "within the margin") &&
-     !strcmp(k.item[2].text, "near") && k.item[1].nop == 2 && k.op[k.item[1].opadr].x[0] == 120);
+     !strcmp(k.item[2].text, "near") && k.item[1].nop == 2 && k.pt[k.item[1].opadr].x == 120);
   OK(k.width == a.width && k.height == a.height && !strcmp(k.title, "crop"));
   bg_strbuf pa = {0}, pk = {0};
   page_pdf(&a, 0, &pa);
@@ -278,7 +278,7 @@ static void test_raster_place(void) {
     int n = k ? 4000 : 200;
     for (int i = 0; i < n; i++) { /* lines at scattered heights, so they do not compress away */
       line_item(&a, (i * 37) % 90, (i * 37) % 90 + 10, "line");
-      a.op[a.nop - 1].y[0] = a.op[a.nop - 2].y[0] = (i * 7919) % 1000 / 10.0;
+      a.pt[a.nop - 1].y = a.pt[a.nop - 2].y = (i * 7919) % 1000 / 10.0;
     }
     bg_scene_text(&a, "big", 50, 20, 11, 0.5, 0, (bg_rgba){0, 0, 0, 1}, "text");
     bg_strbuf pv = {0}, pr = {0}, p0 = {0}, pp = {0};
