@@ -50,30 +50,34 @@ void bg_ivec_push(bg_ivec *x, int value) {
   x->v[x->n++] = value;
 }
 
-static size_t round_up(size_t n) {
-  size_t a = sizeof(max_align_t);
-  return (n + a - 1) / a * a;
-}
-
-void *bg_arena_alloc(bg_arena *a, size_t size) {
-  size = round_up(size ? size : 1);
+/* size bytes at the first multiple of align in the newest block, or in a
+ * new block when they do not fit there. Strings are packed at byte
+ * alignment: rounded up to max_align_t, a diagram's two million short roles
+ * and labels took 30 MB more at 100 000 masses. */
+static void *take(bg_arena *a, size_t size, size_t align) {
   bg_arena_block *b = a->head;
-  if (!b || b->size - b->used < size) {
+  size_t at = b ? (b->used + align - 1) / align * align : 0;
+  if (!b || at > b->size || b->size - at < size) {
     size_t cap = size > BLOCK_MIN ? size : BLOCK_MIN;
     b = bg_xmalloc(sizeof *b + cap);
     b->prev = a->head;
     b->size = cap;
-    b->used = 0;
     a->head = b;
+    at = 0;
   }
-  void *p = (char *)b->data + b->used;
-  b->used += size;
+  b->used = at + size;
+  return (char *)b->data + at;
+}
+
+void *bg_arena_alloc(bg_arena *a, size_t size) {
+  if (!size) size = 1;
+  void *p = take(a, size, sizeof(max_align_t));
   memset(p, 0, size);
   return p;
 }
 
 char *bg_arena_strndup(bg_arena *a, const char *s, size_t len) {
-  char *d = bg_arena_alloc(a, len + 1);
+  char *d = take(a, len + 1, 1);
   memcpy(d, s, len);
   d[len] = '\0';
   return d;

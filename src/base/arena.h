@@ -13,7 +13,8 @@ typedef struct bg_arena {
 /* Zero-filled memory from the arena, aligned for any type; never NULL
  * (aborts on out-of-memory through bg_fatal). */
 void *bg_arena_alloc(bg_arena *a, size_t size);
-/* A copy of s (len bytes, NUL added) owned by the arena. */
+/* A copy of s (len bytes, NUL added) owned by the arena, packed at byte
+ * alignment (strings need no more). */
 char *bg_arena_strndup(bg_arena *a, const char *s, size_t len);
 char *bg_arena_strdup(bg_arena *a, const char *s);
 void bg_arena_free(bg_arena *a);
