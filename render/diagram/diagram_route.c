@@ -7,7 +7,9 @@
  * crossed bond, a crossed or shared signal and a run through a node box
  * each cost. A run through a box or along a bond costs so much that the
  * search takes any other way, round the outside of the figure when the
- * window has none; so the search never fails, and a route is never drawn
+ * window has none, and when the whole figure's grid is too coarse, over a
+ * grid of the lanes near the two ends and a ring outside the figure
+ * (route_outside); so the search never fails, and a route is never drawn
  * through a node unless the figure leaves no gap at all.
  *
  * Work is bounded per signal: the grid has at most MAXLINES lines each way
@@ -26,7 +28,7 @@ enum { MAXLINES = 72 };
 #define COST_CROSS_BOND 160.0 /* a detour of 160 pt is better than a crossed bond */
 #define COST_CROSS_SIGNAL 6.0
 #define COST_SHARE 900.0      /* running on another signal: read as one line */
-#define COST_BLOCK 20000.0    /* through a node box or along a bond */
+#define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
 #define COST_HUG 1.5          /* per pt beside a bond, nearer than HUG: read as a doubled bond */
 #define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
@@ -660,16 +662,10 @@ static heap_entry heap_pop(bg_router *r) {
   return top;
 }
 
-/* The grid over window [wx0,wx1]×[wy0,wy1]: the ports' lines, the lanes
- * beside every node box in it, the lines between neighbouring lanes, and a
- * ring round the window. */
-static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double wy1, const port *ps, int nps,
-                       const port *pt, int npt) {
+/* The lanes beside every node box in window [wx0,wx1]×[wy0,wy1] as
+ * candidate lines. */
+static void add_lanes(bg_router *r, double wx0, double wy0, double wx1, double wy1) {
   const bg_diagram_layout *L = r->L;
-  r->ncx = r->ncy = 0;
-  for (int i = 0; i < nps; i++) add_cand(r, ps[i].stub.x, ps[i].stub.y, 1);
-  for (int i = 0; i < npt; i++) add_cand(r, pt[i].stub.x, pt[i].stub.y, 1);
-  add_cand(r, wx0, wy0, 0), add_cand(r, wx1, wy1, 0);
   /* the nodes in the window's cells; in a window of more than 1 024 cells
    * those of every stride-th cell each way (the lines are thinned to
    * MAXLINES anyway), so the work per signal stays bounded */
@@ -697,6 +693,11 @@ static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double 
     if (bx1 < wx0 || bx0 > wx1 || by1 < wy0 || by0 > wy1) continue;
     add_cand(r, bx0 - LANE, by0 - LANE, 0), add_cand(r, bx1 + LANE, by1 + LANE, 0);
   }
+}
+
+/* The grid's lines from the candidates: sorted, merged, thinned to
+ * MAXLINES each way, the channels' middles added (r->gap: the gap used). */
+static void make_lines(bg_router *r) {
   if (r->cap_lines < r->ncx + r->ncy + 2 * MAXLINES) {
     r->cap_lines = 2 * (r->ncx + r->ncy) + 2 * MAXLINES;
     r->X = bg_xrealloc(r->X, (size_t)r->cap_lines * sizeof *r->X), r->Y = bg_xrealloc(r->Y, (size_t)r->cap_lines * sizeof *r->Y);
@@ -706,6 +707,24 @@ static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double 
   r->nxl = axis_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x, &gx);
   r->nyl = axis_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y, &gy);
   r->gap = fmax(gx, gy);
+}
+
+/* The ports' lines as candidates (a port's line is kept whole). */
+static void add_ports(bg_router *r, const port *ps, int nps, const port *pt, int npt) {
+  r->ncx = r->ncy = 0;
+  for (int i = 0; i < nps; i++) add_cand(r, ps[i].stub.x, ps[i].stub.y, 1);
+  for (int i = 0; i < npt; i++) add_cand(r, pt[i].stub.x, pt[i].stub.y, 1);
+}
+
+/* The grid over window [wx0,wx1]×[wy0,wy1]: the ports' lines, the lanes
+ * beside every node box in it, the lines between neighbouring lanes, and a
+ * ring round the window. */
+static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double wy1, const port *ps, int nps,
+                       const port *pt, int npt) {
+  add_ports(r, ps, nps, pt, npt);
+  add_cand(r, wx0, wy0, 0), add_cand(r, wx1, wy1, 0);
+  add_lanes(r, wx0, wy0, wx1, wy1);
+  make_lines(r);
 }
 
 /* A* from the source ports to the target ports over the grid; the states
@@ -826,9 +845,10 @@ static void snap_ports(const bg_router *r, port *p, int n) {
   }
 }
 
-static int route_in(bg_router *r, port *ps, int nps, port *pt, int npt, double wx0, double wy0, double wx1,
-                    double wy1, double max_gap, bg_vec *pts, int cap, double *cost) {
-  build_grid(r, wx0, wy0, wx1, wy1, ps, nps, pt, npt);
+/* The search over the grid built (route_in, route_outside), refused when
+ * its lines were merged more than max_gap apart. */
+static int route_grid(bg_router *r, port *ps, int nps, port *pt, int npt, double max_gap, bg_vec *pts, int cap,
+                      double *cost) {
   *cost = INFINITY;
   if (r->gap > max_gap) return 0;
   snap_ports(r, ps, nps), snap_ports(r, pt, npt);
@@ -837,6 +857,32 @@ static int route_in(bg_router *r, port *ps, int nps, port *pt, int npt, double w
   int n = 0;
   *cost = search(r, ps, nps, pt, npt, pts, cap, &n);
   return n;
+}
+
+static int route_in(bg_router *r, port *ps, int nps, port *pt, int npt, double wx0, double wy0, double wx1,
+                    double wy1, double max_gap, bg_vec *pts, int cap, double *cost) {
+  build_grid(r, wx0, wy0, wx1, wy1, ps, nps, pt, npt);
+  return route_grid(r, ps, nps, pt, npt, max_gap, pts, cap, cost);
+}
+
+/* Round the outside, when the window's search found no way clear of the
+ * boxes and the whole figure's grid is too coarse to search: a grid of the
+ * lanes near each end (OUT_NEAR pt round its box) and a ring OUT_RING pt
+ * outside the figure's box. The lanes' lines run across the figure, so the
+ * route leaves along a channel next to its source, runs round the ring and
+ * comes in along a channel next to its target; the grid's edges are costed
+ * as any, so a run through a box still costs COST_BLOCK and is taken only
+ * when no channel leads out. */
+#define OUT_NEAR (6 * LANE)
+#define OUT_RING (2 * LANE)
+static int route_outside(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
+                         bg_vec *pts, int cap, double *cost) {
+  add_ports(r, ps, nps, pt, npt);
+  add_cand(r, r->fx0 - OUT_RING, r->fy0 - OUT_RING, 0), add_cand(r, r->fx1 + OUT_RING, r->fy1 + OUT_RING, 0);
+  add_lanes(r, a[0] - OUT_NEAR, a[1] - OUT_NEAR, a[2] + OUT_NEAR, a[3] + OUT_NEAR);
+  add_lanes(r, b[0] - OUT_NEAR, b[1] - OUT_NEAR, b[2] + OUT_NEAR, b[3] + OUT_NEAR);
+  make_lines(r);
+  return route_grid(r, ps, nps, pt, npt, INFINITY, pts, cap, cost);
 }
 
 /* Whether p lies on bond b's line (within 0.5 pt), its half arrow not counted. */
@@ -892,7 +938,16 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
     bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
     int n2 = route_in(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
                       r->fy1 + 2 * LANE, FALLBACK_GAP, alt, cap, &c2);
-    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2;
+    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2, cost = c2;
+    free(alt);
+  }
+  if (!(cost < COST_BLOCK)) { /* still through a box: round the outside */
+    double c3 = INFINITY, ends[2][4] = {{ax0, ay0, ax1, ay1},
+                                        {L->nx[to] - L->nw[to] / 2, L->ny[to] - L->nh[to] / 2,
+                                         L->nx[to] + L->nw[to] / 2, L->ny[to] + L->nh[to] / 2}};
+    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
+    int n3 = route_outside(r, ps, nps, pt, npt, ends[0], ends[1], alt, cap, &c3);
+    if (n3 >= 2 && c3 < cost) memcpy(pts, alt, (size_t)n3 * sizeof *pts), n = n3, cost = c3;
     free(alt);
   }
   if (n < 2) { /* no grid at all (cannot happen: the grid holds every port) */

@@ -44,6 +44,8 @@ typedef struct fc_stats {
   int arrangement;           /* element label pairs in another order than in the default style (fc_arrangement) */
   int layer_oblique;         /* path/loop line × bond pairs crossing more than 5 degrees off a right angle */
   int spine_bent;            /* bonds of the longest source-to-load chain drawn with a corner (fc_spine_bent) */
+  int sig_through;           /* of lines_through, signals × element labels (a route through a node) */
+  int bond_overlaps;         /* of overlaps, the pairs with a bond (a bond drawn on another line) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -584,8 +586,10 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
       }
       if (k > j && (l->kind == FC_BOND || l->kind == FC_SIGNAL) && (m->kind == FC_BOND || m->kind == FC_SIGNAL) &&
           fc_lines_overlap(l, m)) {
-        st->overlaps++;
-        if (fc_explain) printf("  overlap: line kind %d id %d and kind %d id %d\n", l->kind, l->id, m->kind, m->id);
+        st->overlaps++, st->bond_overlaps += l->kind == FC_BOND || m->kind == FC_BOND;
+        if (fc_explain)
+          printf("  overlap: line kind %d id %d (%s) and kind %d id %d (%s)\n", l->kind, l->id, l->name, m->kind, m->id,
+                 m->name);
       }
     }
     if (l->kind != FC_FRAME) continue;
@@ -640,7 +644,9 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
     if (b->kind == FC_TAG) st->tags++, st->tags_far += fc_tag_far(&f, b), st->crowded += fc_crowded(&f, i);
   }
   st->through += fc_through(&f, FC_OVERLAY) + fc_through(&f, FC_LEADER);
-  st->lines_through += fc_through(&f, FC_BOND) + fc_through(&f, FC_SIGNAL);
+  int sig_through = fc_through(&f, FC_SIGNAL);
+  st->sig_through += sig_through;
+  st->lines_through += fc_through(&f, FC_BOND) + sig_through;
   fc_count_31(s, &f, st);
   fc_free(&f);
 }

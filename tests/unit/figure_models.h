@@ -120,6 +120,23 @@ static void fm_reactions(bg_strbuf *b, int n) {
   }
 }
 
+/* The layout benchmark's reaction network (bench/gen_layout_models.py):
+ * n reactions, each modulated by a species' concentration, on a ring of
+ * 3n/4 species; the reactions beyond the ring's join a species to the one
+ * opposite, from neighbouring species (their chords side by side). */
+__attribute__((unused)) static void fm_reactions_bench(bg_strbuf *b, int n) {
+  int ns = 3 * n / 4 > 4 ? 3 * n / 4 : 4;
+  bg_sb_printf(b, "model reactions%d\nSf feed = 1\n", n);
+  for (int i = 0; i < ns; i++) bg_sb_printf(b, "0 s%d\nC c%d = 1\n", i, i);
+  for (int k = 0; k < n; k++) bg_sb_printf(b, "1 r%d\nR k%d : f = (1 + c%d.e) * e\n", k, k, (k * 7 + 3) % ns);
+  bg_sb_puts(b, "bond feed -> s0\n");
+  for (int i = 0; i < ns; i++) bg_sb_printf(b, "bond s%d -> c%d\n", i, i);
+  for (int k = 0; k < n; k++) {
+    int from = k % ns, to = k < ns ? (from + 1) % ns : (from + ns / 2) % ns;
+    bg_sb_printf(b, "bond s%d -> r%d\nbond r%d -> k%d\nbond r%d -> s%d\n", from, k, k, k, k, to);
+  }
+}
+
 /* A held-out signal model (not used to tune the router): an RC ladder of k
  * sections whose resistors are each modulated by the voltage two sections
  * on (a C's effort) and, every third section, by the source's flow (a bond

@@ -174,12 +174,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -201,24 +201,24 @@ static const fc_stats limits[3][2] = {
  * (their C on a diagonal cell). docs/drawing.md has the tables before and
  * after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 64, 2, 0, 0, 3, 14, 0, 0, 2767, 0, 0, 0, 0},
-     {1384, 19, 1384, 3, 2311, 1, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 75, 9, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 51, 0}},
-    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 66, 2, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0},
-     {1384, 19, 1384, 3, 2311, 0, 1384, 0, 913, 0, 1, 6, 3, 10, 0, 75, 8, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 76, 0}},
-    {{1384, 19, 1384, 3, 1398, 0, 1384, 1, 0, 0, 0, 0, 4, 9, 5, 70, 4, 0, 1, 4, 14, 0, 0, 2767, 0, 0, 0, 0},
-     {1384, 19, 1384, 4, 2311, 2, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 77, 10, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 80, 0}},
+    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 64, 2, 0, 0, 3, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 19, 1384, 3, 2311, 1, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 75, 9, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 51, 0, 0, 0}},
+    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 66, 2, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 19, 1384, 3, 2311, 0, 1384, 0, 913, 0, 1, 6, 3, 10, 0, 75, 8, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 76, 0, 0, 0}},
+    {{1384, 19, 1384, 3, 1398, 0, 1384, 1, 0, 0, 0, 0, 4, 9, 5, 70, 4, 0, 1, 4, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 19, 1384, 4, 2311, 2, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 77, 10, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 80, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
-         t->small_text, t->arrangement, t->layer_oblique, t->spine_bent);
+         t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -308,6 +308,16 @@ static const fm_model generated[] = {
 
 };
 
+/* With BG_FIGURES_DUMP=DIR, the generated model written there as NAME.bg. */
+static void dump_model(const char *name, const bg_strbuf *src) {
+  const char *dump = getenv("BG_FIGURES_DUMP");
+  if (!dump) return;
+  char path[512];
+  snprintf(path, sizeof path, "%s/%s.bg", dump, name);
+  FILE *fp = fopen(path, "w");
+  if (fp) fputs(bg_sb_str(src), fp), fclose(fp);
+}
+
 static void test_generated(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
@@ -315,13 +325,7 @@ static void test_generated(void) {
   for (size_t g = 0; g < sizeof generated / sizeof generated[0]; g++) {
     bg_strbuf src = {0};
     generated[g].make(&src, generated[g].n);
-    const char *dump = getenv("BG_FIGURES_DUMP"); /* a folder: the models written there as .bg */
-    if (dump) {
-      char path[512];
-      snprintf(path, sizeof path, "%s/%s.bg", dump, generated[g].name);
-      FILE *fp = fopen(path, "w");
-      if (fp) fputs(bg_sb_str(&src), fp), fclose(fp);
-    }
+    dump_model(generated[g].name, &src);
     fx f;
     int rc = fm_load(&f, generated[g].name, bg_sb_str(&src));
     BG_T_REPORT(rc == 0, "generated model %s compiles", generated[g].name);
@@ -331,6 +335,55 @@ static void test_generated(void) {
   }
   printf("%-34s %s\n", "", header);
   check_limits("generated", tot, limits_generated);
+}
+
+/* Large figures (issue 31: a failed route is never drawn through nodes):
+ * generated models far larger than the figure tests' others, where the
+ * router's window is boxed in and the whole figure's grid too coarse to
+ * search, in the default style with the default layers; lines (bonds and
+ * signals) through element labels and lines drawn on other lines, at 0. */
+static const struct {
+  fm_model model;
+  const char *layout; /* the engine: rows, as a model of more than 2 000 nodes gets it */
+  int bonds_through, fan_out; /* limits: bonds through labels, signals on signals */
+} large[] = {
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 130, 110},
+    {{"modladder120", fm_modladder, 120}, "rows", 11, 136},
+    {{"reactions60", fm_reactions, 60}, NULL, 9, 0},
+};
+
+static void test_large_figures(void) {
+  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
+  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  printf("%-34s %s\n", "", header);
+  for (size_t g = 0; g < sizeof large / sizeof large[0]; g++) {
+    bg_strbuf src = {0};
+    const fm_model *lm = &large[g].model;
+    lm->make(&src, lm->n);
+    dump_model(lm->name, &src);
+    fx f;
+    int rc = fm_load(&f, lm->name, bg_sb_str(&src));
+    BG_T_REPORT(rc == 0, "large model %s compiles", lm->name);
+    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles",
+                        .layout = large[g].layout};
+    bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
+    OK(rc != 0 || d != NULL);
+    if (d) {
+      fc_stats st = {0};
+      if (fc_explain) printf("%s:\n", lm->name);
+      fc_count(bg_diagram_scene(d), &st);
+      print_row(lm->name, &st);
+      BG_T_REPORT(st.sig_through == 0, "%s: %d signals through element labels", lm->name, st.sig_through);
+      BG_T_REPORT(st.bond_overlaps == 0, "%s: %d bonds on other lines", lm->name, st.bond_overlaps);
+      BG_T_REPORT(st.lines_through - st.sig_through <= large[g].bonds_through, "%s: %d bonds through labels (<= %d)",
+                  lm->name, st.lines_through - st.sig_through, large[g].bonds_through);
+      BG_T_REPORT(st.overlaps - st.bond_overlaps <= large[g].fan_out, "%s: %d signals on signals (<= %d)", lm->name,
+                  st.overlaps - st.bond_overlaps, large[g].fan_out);
+      bg_diagram_free(d);
+    }
+    fx_free(&f);
+    bg_sb_free(&src);
+  }
 }
 
 /* A held-out model with frames (fm_stages, not used to tune the fold
@@ -592,12 +645,12 @@ static void test_long_chain(void) {
  * label and one oblique path crossing (actuator, enzyme). The field-controlled
  * motor (MGY, MSe and their two signals) added counts only, no fault. */
 static const fc_stats limits_pages[3][2] = {
-    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0},
-     {190, 12, 190, 0, 308, 0, 190, 1, 108, 6, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0}},
-    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0},
-     {190, 12, 190, 0, 308, 0, 190, 1, 108, 5, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0}},
-    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0},
-     {190, 12, 190, 0, 308, 2, 190, 2, 108, 9, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0}},
+    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0},
+     {190, 12, 190, 0, 308, 0, 190, 1, 108, 6, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0, 0, 0}},
+    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0},
+     {190, 12, 190, 0, 308, 0, 190, 1, 108, 5, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0, 0, 0}},
+    {{190, 12, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0},
+     {190, 12, 190, 0, 308, 2, 190, 2, 108, 9, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 1, 0, 0, 0}},
 };
 
 static int list_page_models(const char *folder, char **names, int cap) {
@@ -646,6 +699,7 @@ int main(void) {
   test_pages();
   test_generated();
   test_frames_held_out();
+  test_large_figures();
   test_lagrange();
   test_print_conventions();
   test_layer_styles();
