@@ -29,14 +29,14 @@ CHECKS = ["robust", "accepted", "junction_power", "twoport_power", "tellegen", "
 
 
 class Run:
-    def __init__(self, status, out, err, files):
-        self.status, self.out, self.err, self.files = status, out, err, files
+    def __init__(self, status, out, err, files, limit=TIME_LIMIT):
+        self.status, self.out, self.err, self.files, self.limit = status, out, err, files, limit
 
 
-def run(bgdraw, text, workdir, tag, args, outs):
+def run(bgdraw, text, workdir, tag, args, outs, limit=TIME_LIMIT):
     """Writes the model, runs bgdraw with args and -o for each of outs
-    (extensions), returns a Run (status None: killed at the time limit;
-    negative: a signal)."""
+    (extensions), returns a Run (status None: killed at the time limit, limit
+    seconds; negative: a signal)."""
     path = os.path.join(workdir, tag + ".bg")
     with open(path, "w") as f:
         f.write(text)
@@ -48,10 +48,10 @@ def run(bgdraw, text, workdir, tag, args, outs):
     for p in files.values():
         cmd += ["-o", p]
     try:
-        p = subprocess.run(cmd, capture_output=True, timeout=TIME_LIMIT)
+        p = subprocess.run(cmd, capture_output=True, timeout=limit)
     except subprocess.TimeoutExpired:
-        return Run(None, b"", b"", files)
-    return Run(p.returncode, p.stdout, p.stderr.decode("utf-8", "replace"), files)
+        return Run(None, b"", b"", files, limit)
+    return Run(p.returncode, p.stdout, p.stderr.decode("utf-8", "replace"), files, limit)
 
 
 def read_csv(path):
@@ -64,7 +64,7 @@ def read_csv(path):
 def _robust(res, r, what):
     """Records a crash, a hang or an undocumented exit status."""
     if r.status is None:
-        res["robust"] = ("fail", "%s: no answer within %d s" % (what, TIME_LIMIT))
+        res["robust"] = ("fail", "%s: no answer within %d s" % (what, r.limit))
     elif r.status not in DOCUMENTED_EXITS:
         res["robust"] = ("fail", "%s: exit status %s\n%s" % (what, r.status, r.err[-2000:]))
     elif "robust" not in res:

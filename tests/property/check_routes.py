@@ -83,11 +83,12 @@ def deviation(what, ref_path, path, absolute=0.0, cols=None):
     return worst, why
 
 
-def _simulated(res, name, bgdraw, text, workdir, tag, outs, what):
+def _simulated(res, name, bgdraw, text, workdir, tag, outs, what, limit=None):
     """bgdraw --simulate on a variant: the Run when it ran to the end; else
-    None, with a failure recorded for a crash or hang, a skip (what stops)
-    for a stated stop."""
-    r = ck.run(bgdraw, text, workdir, tag, ["--simulate"], outs)
+    None, with a failure recorded for a crash or hang (no answer within
+    limit seconds, default check.TIME_LIMIT), a skip (what stops) for a
+    stated stop."""
+    r = ck.run(bgdraw, text, workdir, tag, ["--simulate"], outs, limit or ck.TIME_LIMIT)
     if not ck._robust(res, r, name):
         res[name] = ("fail", "crashed or hung")
     elif r.status != 0:
@@ -352,6 +353,9 @@ PARASITIC_TOL = 1e-3                  # the slow states at the last value, of th
 PARASITIC_RATE = 0.3                  # each of the last two steps of 100 at least this much closer
 PARASITIC_FLOOR = 1e-5                # the runs' own error (rtol 1e-9: seed 871 at 40 elements levels at 2e-6)
 PARASITIC_LIMIT = 0.05                # a last step this much closer is the O(parameter) limit's regime
+# seconds for a parasitic run (4 check.TIME_LIMIT): stiff on purpose (seed 5041
+# at 77 elements: 10.4 s of CPU at 1/10 000 of its parameter)
+PARASITIC_TIME = 120
 
 
 def _parasitic(res, bgdraw, m, workdir, an, rows):
@@ -454,7 +458,7 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
                 res["parasitic"] = ("fail", "the store %s's line not found in the transformed model" % n)
                 return
         r = _simulated(res, "parasitic", bgdraw, t, workdir, "m_par%d" % len(devs), ["csv"],
-                       "the parasitic model's run at %g of its parameter" % scale)
+                       "the parasitic model's run at %g of its parameter" % scale, PARASITIC_TIME)
         if r is None:
             return
         h, pr = ck.read_csv(r.files["csv"])
