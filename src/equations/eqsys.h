@@ -124,10 +124,11 @@ int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp,
  * a constraint (it reads no rate): the algebraic rows solved with the states
  * held (bg_eqsys_consistent), then the rates and the algebraic unknowns
  * from every row that reads a rate and the constraints' time derivatives
- * (the partial derivative in t one-sided from the right, step h), the states
- * held. 0 with y and yp set; -1 (nothing changed) without dependent stores,
- * above 1000 unknowns, when a constraint reads an algebraic unknown, or when
- * Newton fails. */
+ * (the partial derivative in t one-sided from the right, step h; from the
+ * left for h < 0), the states held. Also the output rows of an IDA run
+ * (simulate_run.c, record). 0 with y and yp set; -1 (nothing changed)
+ * without dependent stores, above 1000 unknowns, when a constraint reads an
+ * algebraic unknown, or when Newton fails. */
 int bg_eqsys_restart_rates(bg_eqsys *s, double t, double *y, double *yp, double h);
 /* The algebraic unknowns' rates at a consistent point (IDACalcIC leaves
  * them as guessed): the algebraic rows solved at t + h and t + 2h with the

@@ -54,7 +54,8 @@ static double max_abs(const double *v, int n) {
 }
 
 /* The constraints' partial derivative in time at fixed y, one-sided from
- * the right (a restart sits at an input's jump), second order. */
+ * the right (a restart sits at an input's jump), second order; from the
+ * left for h < 0 (an output row just before a jump). */
 static int constraints_dt(rates *W, double h) {
   int n = W->n;
   double *r0 = bg_xmalloc((size_t)n * sizeof(double)), *r1 = bg_xmalloc((size_t)n * sizeof(double));
@@ -96,7 +97,7 @@ static int solve(rates *W) {
 int bg_eqsys_restart_rates(bg_eqsys *s, double t, double *y, double *yp, double h) {
   int n = s->n, nd = 0;
   for (int i = 0; i < s->nx && !s->reduced; i++) nd += s->row_kind[i] == 1;
-  if (nd == 0 || n > 1000 || !(h > 0)) return -1;
+  if (nd == 0 || n > 1000 || !(h != 0) || !isfinite(h)) return -1;
   size_t nn = (size_t)n * n;
   rates W = {s, n, s->nx, t, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
   W.y = bg_xmalloc((size_t)n * sizeof(double)), W.yp = bg_xmalloc((size_t)n * sizeof(double));

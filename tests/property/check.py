@@ -393,8 +393,9 @@ def _invariance(res, bgdraw, m, workdir, seed, an, rows):
     # reordered statements, names and bond numbers kept: the same analysis
     # (reorder_strokes: strokes and states; reorder: counts, trajectories)
     # A model whose run reduced the index or made the initial values
-    # consistent is counted under reorder_reduced: there the numerics still
-    # follow the order of the equations (docs/property.md, finding 2)
+    # consistent is counted under reorder_reduced (docs/property.md, findings
+    # 2 and 19: a known check until the rows' dependent rates were taken from
+    # the constraints instead of IDA's estimate)
     r = run(bgdraw, m.text(order=order), workdir, "m_ro", ["--simulate"], ["json", "csv"])
     j = _load(r)
     dae = _dae_repaired(an) or (j is not None and _dae_repaired(j))
