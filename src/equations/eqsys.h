@@ -42,6 +42,10 @@ int bg_eqsys_is_ode(const bg_eqsys *s);     /* nz == 0 and every state independe
 /* 1 for the system of an index reduction (equations/indexred.h). */
 int bg_eqsys_is_reduced(const bg_eqsys *s);
 const char *bg_eqsys_name(const bg_eqsys *s, int i); /* "L1.p", "phi", "e4", "R1.e" */
+/* The order of two unknowns' names that an order-keeping renaming of the
+ * elements keeps: names of elements' and user states' unknowns first, in
+ * natural order, then bonds' variables ("e4", "f12") in natural order. */
+int bg_eqsys_name_cmp(const char *a, const char *b);
 /* 1 for unknowns whose derivative appears (IDASetId), 0 for algebraic ones. */
 int bg_eqsys_is_differential(const bg_eqsys *s, int i);
 

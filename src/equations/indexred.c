@@ -57,7 +57,7 @@ static int new_eq(ir_work *W, int expr, int row, int ord, int anti) {
 static int cmp_var_name(const void *a, const void *b, void *ctx) {
   const ir_work *W = ctx;
   int va = *(const int *)a, vb = *(const int *)b, ja = W->v_unk[va], jb = W->v_unk[vb];
-  int c = ja == jb ? 0 : bg_natural_cmp(bg_eqsys_name(W->s, ja), bg_eqsys_name(W->s, jb));
+  int c = ja == jb ? 0 : bg_eqsys_name_cmp(bg_eqsys_name(W->s, ja), bg_eqsys_name(W->s, jb));
   if (c) return c;
   if (ja != jb) return ja < jb ? -1 : 1;
   return (W->v_ord[va] > W->v_ord[vb]) - (W->v_ord[va] < W->v_ord[vb]);
@@ -66,7 +66,7 @@ static int cmp_var_name(const void *a, const void *b, void *ctx) {
 static int cmp_eq_name(const void *a, const void *b, void *ctx) {
   const ir_work *W = ctx;
   int ra = W->e_row[*(const int *)a], rb = W->e_row[*(const int *)b];
-  int c = ra == rb ? 0 : bg_natural_cmp(bg_eqsys_name(W->s, ra), bg_eqsys_name(W->s, rb));
+  int c = ra == rb ? 0 : bg_eqsys_name_cmp(bg_eqsys_name(W->s, ra), bg_eqsys_name(W->s, rb));
   return c ? c : (ra > rb) - (ra < rb);
 }
 
@@ -298,7 +298,7 @@ static int cmp_pref(const void *a, const void *b, void *ctx) {
   int ga = pref_group(W, va), gb = pref_group(W, vb);
   if (ga != gb) return ga < gb ? -1 : 1;
   const char *na = pref_name(W, va), *nb = pref_name(W, vb);
-  int c = na && nb && W->v_unk[va] != W->v_unk[vb] ? bg_natural_cmp(na, nb) : 0;
+  int c = na && nb && W->v_unk[va] != W->v_unk[vb] ? bg_eqsys_name_cmp(na, nb) : 0;
   if (c) return c;
   int ja = W->v_unk[va], jb = W->v_unk[vb];
   if (ja != jb) return ja < jb ? -1 : 1;
