@@ -134,6 +134,19 @@ int bg_eqsys_dependent_rates(bg_eqsys *s, double t, const double *y, double *yp,
  * without dependent stores, above 1000 unknowns, when a constraint reads an
  * algebraic unknown, or when Newton fails. */
 int bg_eqsys_restart_rates(bg_eqsys *s, double t, double *y, double *yp, double h);
+/* The start of a DAE with dependent stores, after IDACalcIC: it holds the
+ * states and solves the rows that read rates, but a constraint reads none,
+ * so the rates it leaves need not satisfy the constraints' time derivatives
+ * (a store tied to a time-varying input whose rate another row reads: IDA's
+ * first step then failed its error test at t0, docs/property.md finding 17d).
+ * When some constraint's time derivative is violated by more than
+ * BG_EQSYS_RATE_TOL of the size of its terms, the rates and algebraic
+ * unknowns are solved as in bg_eqsys_restart_rates (the states and algebraic
+ * rows kept). 0: nothing to do, or nothing known (the equations cannot be
+ * evaluated a moment later, or a constraint reads an algebraic unknown, whose
+ * rate the check lacks); 1: y and yp set; -1: violated and Newton failed. */
+#define BG_EQSYS_RATE_TOL 1e-6
+int bg_eqsys_start_rates(bg_eqsys *s, double t, double *y, double *yp, double h);
 /* The algebraic unknowns' rates at a consistent point (IDACalcIC leaves
  * them as guessed): the algebraic rows solved at t + h and t + 2h with the
  * differential states moved along yp, the one-sided difference of second

@@ -94,28 +94,92 @@ static int solve(rates *W) {
   return -1;
 }
 
-int bg_eqsys_restart_rates(bg_eqsys *s, double t, double *y, double *yp, double h) {
-  int n = s->n, nd = 0;
-  for (int i = 0; i < s->nx && !s->reduced; i++) nd += s->row_kind[i] == 1;
-  if (nd == 0 || n > 1000 || !(h != 0) || !isfinite(h)) return -1;
+static void rates_open(rates *W, bg_eqsys *s, double t, const double *y, const double *yp) {
+  int n = s->n;
   size_t nn = (size_t)n * n;
-  rates W = {s, n, s->nx, t, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
-  W.y = bg_xmalloc((size_t)n * sizeof(double)), W.yp = bg_xmalloc((size_t)n * sizeof(double));
-  memcpy(W.y, y, (size_t)n * sizeof(double)), memcpy(W.yp, yp, (size_t)n * sizeof(double));
-  W.J0 = bg_xmalloc(nn * sizeof(double)), W.J1 = bg_xmalloc(nn * sizeof(double)), W.M = bg_xmalloc(nn * sizeof(double));
-  W.dgdt = bg_xmalloc((size_t)n * sizeof(double)), W.G = bg_xmalloc((size_t)n * sizeof(double));
-  W.du = bg_xmalloc((size_t)n * sizeof(double)), W.piv = bg_xmalloc((size_t)n * sizeof(int));
-  int rc = bg_eqsys_consistent(s, t, W.y, 30);
+  *W = (rates){s, n, s->nx, t, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+  W->y = bg_xmalloc((size_t)n * sizeof(double)), W->yp = bg_xmalloc((size_t)n * sizeof(double));
+  memcpy(W->y, y, (size_t)n * sizeof(double)), memcpy(W->yp, yp, (size_t)n * sizeof(double));
+  W->J0 = bg_xmalloc(nn * sizeof(double)), W->J1 = bg_xmalloc(nn * sizeof(double)), W->M = bg_xmalloc(nn * sizeof(double));
+  W->dgdt = bg_xmalloc((size_t)n * sizeof(double)), W->G = bg_xmalloc((size_t)n * sizeof(double));
+  W->du = bg_xmalloc((size_t)n * sizeof(double)), W->piv = bg_xmalloc((size_t)n * sizeof(int));
+}
+
+static void rates_close(rates *W) {
+  free(W->y), free(W->yp), free(W->J0), free(W->J1), free(W->M), free(W->dgdt), free(W->G), free(W->du), free(W->piv);
+  W->s->has_err = 0;
+}
+
+static int dependent_stores(const bg_eqsys *s) {
+  int nd = 0;
+  for (int i = 0; i < s->nx && !s->reduced; i++) nd += s->row_kind[i] == 1;
+  return nd;
+}
+
+/* 1 when a constraint reads an algebraic unknown (W->J0 at the point): its
+ * time derivative needs that unknown's rate too, which these solves lack. */
+static int constraint_reads_algebraic(const rates *W) {
+  for (int i = 0; i < W->nx; i++)
+    for (int j = W->nx; j < W->n && is_constraint(W, i); j++)
+      if (W->J0[(size_t)j * W->n + i] != 0) return 1;
+  return 0;
+}
+
+/* The rates and algebraic unknowns from the rows that read a rate and the
+ * constraints' time derivatives, the states held; 0 when Newton converged. */
+static int solve_rates(rates *W, double h) {
   /* a constraint that reads an algebraic unknown would need its rate too:
    * not this solve's (IDACalcIC's failure stands) */
-  if (!rc) rc = bg_eqsys_jac_dense(s, t, W.y, W.yp, 0.0, W.J0);
-  for (int i = 0; i < W.nx && !rc; i++)
-    for (int j = W.nx; j < n && is_constraint(&W, i); j++)
-      if (W.J0[(size_t)j * n + i] != 0) rc = -1;
-  if (!rc) rc = constraints_dt(&W, h);
-  if (!rc) rc = solve(&W);
+  int rc = bg_eqsys_jac_dense(W->s, W->t, W->y, W->yp, 0.0, W->J0);
+  if (!rc && constraint_reads_algebraic(W)) rc = -1;
+  if (!rc) rc = constraints_dt(W, h);
+  if (!rc) rc = solve(W);
+  return rc;
+}
+
+int bg_eqsys_restart_rates(bg_eqsys *s, double t, double *y, double *yp, double h) {
+  int n = s->n;
+  if (dependent_stores(s) == 0 || n > 1000 || !(h != 0) || !isfinite(h)) return -1;
+  rates W;
+  rates_open(&W, s, t, y, yp);
+  int rc = bg_eqsys_consistent(s, t, W.y, 30);
+  if (!rc) rc = solve_rates(&W, h);
   if (!rc) memcpy(y, W.y, (size_t)n * sizeof(double)), memcpy(yp, W.yp, (size_t)n * sizeof(double));
-  free(W.y), free(W.yp), free(W.J0), free(W.J1), free(W.M), free(W.dgdt), free(W.G), free(W.du), free(W.piv);
-  s->has_err = 0;
+  rates_close(&W);
   return rc ? -1 : 0;
+}
+
+/* The largest violation of a constraint's time derivative, against the
+ * size of its terms: |dg/dt + dg/dy y'| / (|dg/dt| + sum_j |dg/dy_j y'_j|). */
+static double worst_rate_violation(rates *W) {
+  int n = W->n;
+  double worst = 0;
+  for (int i = 0; i < n; i++) {
+    if (!is_constraint(W, i)) continue;
+    double d = W->dgdt[i], size = fabs(d);
+    for (int j = 0; j < W->nx; j++) {
+      double term = W->J0[(size_t)j * n + i] * W->yp[j];
+      d += term, size += fabs(term);
+    }
+    worst = fmax(worst, fabs(d) / (size + 1e-300));
+  }
+  return worst;
+}
+
+int bg_eqsys_start_rates(bg_eqsys *s, double t, double *y, double *yp, double h) {
+  int n = s->n;
+  if (dependent_stores(s) == 0 || n > 1000 || !(h > 0)) return 0;
+  rates W;
+  rates_open(&W, s, t, y, yp);
+  /* where the equations cannot be evaluated a moment later nothing is known
+   * (0: the solver's own evaluation says why), nor where a constraint reads an
+   * algebraic unknown (its time derivative reads that unknown's rate) */
+  int rc = 0;
+  if (bg_eqsys_jac_dense(s, t, W.y, W.yp, 0.0, W.J0) == 0 && !constraint_reads_algebraic(&W) &&
+      constraints_dt(&W, h) == 0 && worst_rate_violation(&W) > BG_EQSYS_RATE_TOL) {
+    rc = solve_rates(&W, h) == 0 ? 1 : -1;
+    if (rc > 0) memcpy(y, W.y, (size_t)n * sizeof(double)), memcpy(yp, W.yp, (size_t)n * sizeof(double));
+  }
+  rates_close(&W);
+  return rc;
 }

@@ -147,7 +147,15 @@ static void say_numeric(const bg_analysis *a, const bg_index_facts *f, bg_strbuf
                  "gets an integration (Section 4.3).");
 }
 
-static int singular_tloop(const bg_analysis *a) {
+/* An algebraic loop of gain 1 at the initial point makes its own loop
+ * equation singular, but the algebraic equations are singular only when
+ * the determinant of all the loops that touch it is (Mason's rule: two
+ * open loops through one gyrator, of gains +1 and -1, cancel: property
+ * seed 8, docs/property.md finding 17a). The numeric index, from the
+ * equations linearised at the same point, decides: 0 or 1 computed there
+ * means the algebraic rows are regular, and nothing is refused for the loop. */
+static int singular_tloop(const bg_analysis *a, const bg_index_facts *f) {
+  if (f && bg_index_facts_numeric_set(f) && f->numeric->index >= 0 && f->numeric->index <= 1) return -1;
   for (int t = 0; t < a->ntloop; t++) {
     /* the open loop of a class 5 causal loop the analysis found harmless
      * (class5_loop): its constraint determines the other loop variable */
@@ -185,7 +193,7 @@ static int structurally_singular(const bg_index_facts *f) {
  * gain +1, a predicted or numeric index above 1. */
 int bg_simulate_index_problem(const bg_analysis *a, const bg_index_facts *f) {
   if (!a->complete || a->form == BG_FORM_INCOMPLETE) return 0;
-  return class5_loop(a) >= 0 || singular_tloop(a) >= 0 || a->index_predicted >= 2 ||
+  return class5_loop(a) >= 0 || singular_tloop(a, f) >= 0 || a->index_predicted >= 2 ||
          numeric_above_1(a, f);
 }
 
@@ -201,7 +209,7 @@ char *bg_simulate_refusal_reduced(const bg_model *m, const bg_analysis *a, const
     return NULL;
   else if ((l = class5_loop(a)) >= 0)
     say_class5(m, a, l, structurally_singular(f), &sb);
-  else if ((t = singular_tloop(a)) >= 0) /* before the index: its own remedies */
+  else if ((t = singular_tloop(a, f)) >= 0) /* before the index: its own remedies */
     say_tloop(a, t, &sb);
   else if (a->index_predicted >= 2)
     say_index2(m, a, &sb);

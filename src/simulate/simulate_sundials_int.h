@@ -58,7 +58,7 @@
   X(IDA, IDAGetReturnFlagName) X(IDA, IDAGetRootInfo) X(IDA, IDAInit) X(IDA, IDAReInit)        \
   X(IDA, IDARootInit) X(IDA, IDASVtolerances) X(IDA, IDASetId) X(IDA, IDASetJacFn)             \
   X(IDA, IDASetLinearSolver) X(IDA, IDASetMaxNumSteps) X(IDA, IDASetMaxStep)                   \
-  X(IDA, IDASetStopTime) X(IDA, IDASetUserData) X(IDA, IDASolve)                               \
+  X(IDA, IDASetStopTime) X(IDA, IDASetSuppressAlg) X(IDA, IDASetUserData) X(IDA, IDASolve)     \
   X(NVECSERIAL, N_VConst) X(NVECSERIAL, N_VDestroy) X(NVECSERIAL, N_VGetArrayPointer)          \
   X(NVECSERIAL, N_VNew_Serial)                                                                 \
   X(SUNMATRIXDENSE, SUNDenseMatrix) X(SUNMATRIXDENSE, SUNDenseMatrix_Data)                     \
@@ -137,6 +137,7 @@ const bg_sundials_table *bg_sundials(void);
 #define IDASetMaxNumSteps(...) (bg_sundials()->IDASetMaxNumSteps(__VA_ARGS__))
 #define IDASetMaxStep(...) (bg_sundials()->IDASetMaxStep(__VA_ARGS__))
 #define IDASetStopTime(...) (bg_sundials()->IDASetStopTime(__VA_ARGS__))
+#define IDASetSuppressAlg(...) (bg_sundials()->IDASetSuppressAlg(__VA_ARGS__))
 #define IDASetUserData(...) (bg_sundials()->IDASetUserData(__VA_ARGS__))
 #define IDASolve(...) (bg_sundials()->IDASolve(__VA_ARGS__))
 #define N_VConst(...) (bg_sundials()->N_VConst(__VA_ARGS__))

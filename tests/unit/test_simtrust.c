@@ -175,10 +175,41 @@ static void test_first_row(void) {
             "plot C1.q, C1.f, U.f\n", 2, 2.5);
 }
 
+/* Issue 30, finding 17d: a store tied to another through a time-varying
+ * modulus (C2.q = n(t) C1.q, n = 1 + sin(t)/2) whose rate another row reads
+ * (C1.q' = -n C2.q'). IDACalcIC's rates satisfied dg/dy y' = 0, not the
+ * constraint's time derivative dg/dt + dg/dy y' = 0: the first row read
+ * f1 = 0, and from a start at rest IDA's first step failed its error test.
+ * Exact: C1.q' = -n n' C1.q / (1 + n^2), so C1.q = sqrt(2 / (1 + n^2)), and
+ * at t = 0 C1.f = -0.25. */
+static void test_first_row_modulated(void) {
+  fx f;
+  if (fx_text(&f, "0 j1\n0 j2\nMTF T1 = 1 + 0.5*sin(t)\nC C1 = 1 [q0 = 1]\nC C2 = 1\n"
+                  "bond 1 j1 -> C1\nbond 2 j1 -> T1\nbond 3 T1 -> j2\nbond 4 j2 -> C2\n"
+                  "simulate t_end = 1, dt = 0.025, rtol = 1e-10, atol = 1e-12\nplot C1.q, C2.q, f1\n", NULL)) {
+    OK(0);
+    return;
+  }
+  INT_EQ(f.rc, 0);
+  int k1 = col(&f.r, "C1.q"), k2 = col(&f.r, "C2.q"), kf = col(&f.r, "f1");
+  OK(k1 >= 0 && k2 >= 0 && kf >= 0 && f.r.nrows == 41);
+  if (k1 >= 0 && k2 >= 0 && kf >= 0 && f.r.nrows == 41) {
+    DBL_NEAR(val(&f.r, 0, kf), -0.25, 1e-9);
+    for (int i = 0; i < f.r.nrows; i++) {
+      double t = f.r.t[i], n = 1 + 0.5 * sin(t), q = sqrt(2 / (1 + n * n));
+      DBL_NEAR(val(&f.r, i, k1), q, 1e-8);
+      DBL_NEAR(val(&f.r, i, k2), n * q, 1e-8);
+      DBL_NEAR(val(&f.r, i, kf), -n * 0.5 * cos(t) * q / (1 + n * n), 1e-6);
+    }
+  }
+  fx_free(&f);
+}
+
 int main(void) {
   test_diode_sine();
   test_diode_bump();
   test_row_warning();
   test_first_row();
+  test_first_row_modulated();
   return bg_t_done();
 }
