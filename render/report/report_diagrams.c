@@ -200,21 +200,26 @@ static void tile_range(double a, double b, double step, double size, int n, int 
   if (*hi > n - 1) *hi = n - 1;
 }
 
-/* Marks a box (region coordinates) in every tile it reaches. */
+/* Marks a box (region coordinates) in every tile it reaches, counting the
+ * tiles newly marked in t->nused. */
 static void mark_box(tiling *t, const double b[4]) {
   int i0, i1, j0, j1;
   tile_range(b[0], b[2], t->stepx, t->tw, t->nx, &i0, &i1);
   tile_range(b[1], b[3], t->stepy, t->th, t->ny, &j0, &j1);
   for (int j = j0; j <= j1; j++)
-    for (int i = i0; i <= i1; i++) t->num[j * t->nx + i] = 1;
+    for (int i = i0; i <= i1; i++)
+      if (!t->num[j * t->nx + i]) t->num[j * t->nx + i] = 1, t->nused++;
 }
 
 /* Numbers the tiles of region r that show something: a text or a path
  * point of the scene (its legend aside: placed on its own) beyond the
- * overlap. Returns the count. */
-static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
+ * overlap. Returns the count; stops counting once it is above max (a scale
+ * plan_tiles refuses: most of its steps on a large diagram, each of which
+ * went through every item). */
+static int number_tiles(const bg_scene *s, const double r[4], int max, tiling *t) {
   memset(t->num, 0, sizeof t->num);
-  for (int k = 0; k < s->nitem; k++) {
+  t->nused = 0;
+  for (int k = 0; k < s->nitem && t->nused <= max; k++) {
     const bg_scene_item *it = &s->item[k];
     if (is_legend(it)) continue;
     if (it->kind == BG_ITEM_TEXT) {
@@ -234,6 +239,7 @@ static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
       }
     }
   }
+  if (t->nused > max) return t->nused;
   t->nused = 0;
   for (int i = 0; i < t->nx * t->ny; i++)
     if (t->num[i]) t->num[i] = ++t->nused;
@@ -246,7 +252,7 @@ static int number_tiles(const bg_scene *s, const double r[4], tiling *t) {
 static void plan_tiles(const bg_scene *s, const double r[4], double cw, double ch, double scale,
                        double cap, int max, tiling *t) {
   for (;; scale *= 0.92)
-    if (tiles_for(r[2], r[3], cw, ch, scale, cap, t) <= MAX_GRID && number_tiles(s, r, t) <= max) return;
+    if (tiles_for(r[2], r[3], cw, ch, scale, cap, t) <= MAX_GRID && number_tiles(s, r, max, t) <= max) return;
 }
 
 /* A map of the tiles: the whole region shrunk onto the page with the parts
