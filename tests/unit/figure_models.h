@@ -237,6 +237,55 @@ static void fm_branchy(bg_strbuf *b, int n, unsigned seed) {
   bg_sb_printf(b, "bond j%d -> load\n", n - 1);
 }
 
+/* Disconnected parts (issue 31: parts packed side by side, not stacked
+ * with gaps or placed diagonally): k parts of random shapes and sizes,
+ * each a chain of 2-12 elements, a ladder of 1-5 sections or a tree of
+ * 3-12 junctions, names prefixed per part. */
+__attribute__((unused)) static void fm_parts(bg_strbuf *b, int k) {
+  static const char *kind[] = {"R", "I", "C"};
+  unsigned seed = 91u + (unsigned)k;
+  bg_sb_printf(b, "model parts%d\n", k);
+  for (int p = 0; p < k; p++) {
+    int shape = (int)(fm_rand(&seed) % 3), n = 0;
+    bg_sb_printf(b, "Se U%d = 1\n", p);
+    if (shape == 0) { /* a chain */
+      n = 2 + (int)(fm_rand(&seed) % 11);
+      for (int i = 0; i < n; i++) bg_sb_printf(b, "%d p%dj%d\n%s p%dw%d = 1\n", i % 2, p, i, kind[i % 3], p, i);
+      bg_sb_printf(b, "bond U%d -> p%dj0\n", p, p);
+      for (int i = 0; i < n; i++) {
+        bg_sb_printf(b, "bond p%dj%d -> p%dw%d\n", p, i, p, i);
+        if (i + 1 < n) bg_sb_printf(b, "bond p%dj%d -> p%dj%d\n", p, i, p, i + 1);
+      }
+    } else if (shape == 1) { /* a ladder */
+      n = 1 + (int)(fm_rand(&seed) % 5);
+      bg_sb_printf(b, "R p%dload = 1\n", p);
+      for (int i = 0; i < n; i++) bg_sb_printf(b, "1 p%ds%d\nR p%dR%d = 1\n0 p%dn%d\nC p%dC%d = 1\n", p, i, p, i, p, i, p, i);
+      bg_sb_printf(b, "bond U%d -> p%ds0\n", p, p);
+      for (int i = 0; i < n; i++) {
+        bg_sb_printf(b, "bond p%ds%d -> p%dR%d\nbond p%ds%d -> p%dn%d\nbond p%dn%d -> p%dC%d\n", p, i, p, i, p, i, p, i, p, i,
+                     p, i);
+        if (i + 1 < n) bg_sb_printf(b, "bond p%dn%d -> p%ds%d\n", p, i, p, i + 1);
+      }
+      bg_sb_printf(b, "bond p%dn%d -> p%dload\n", p, n - 1, p);
+    } else { /* a tree */
+      n = 3 + (int)(fm_rand(&seed) % 10);
+      int par[12], deg[12] = {1}, type[12] = {0};
+      for (int i = 1; i < n; i++) {
+        int q;
+        do q = (int)(fm_rand(&seed) % (unsigned)i);
+        while (deg[q] >= 4);
+        par[i] = q, deg[q]++, deg[i] = 1, type[i] = !type[q];
+      }
+      for (int i = 0; i < n; i++) {
+        bg_sb_printf(b, "%d p%dj%d\n", type[i], p, i);
+        if (deg[i] < 3) bg_sb_printf(b, "%s p%dw%d = 1\nbond p%dj%d -> p%dw%d\n", kind[fm_rand(&seed) % 3], p, i, p, i, p, i);
+      }
+      bg_sb_printf(b, "bond U%d -> p%dj0\n", p, p);
+      for (int i = 1; i < n; i++) bg_sb_printf(b, "bond p%dj%d -> p%dj%d\n", p, par[i], p, i);
+    }
+  }
+}
+
 /* A generated model for a table of them: its name and its maker with n. */
 typedef struct fm_model {
   const char *name;
