@@ -15,7 +15,7 @@
  * between hubs is a straight run of free cells, else an elbow (one or two
  * corners) through free cells, else a straight slanted line. Cells hold one
  * thing each, so routed bonds neither cross nor overlap. Components are
- * stacked; a component wider than its wrap width snakes into bands. Then
+ * packed in shelves; a component wider than its wrap width snakes into bands. Then
  * the cells become points: each grid column as wide as its widest node plus a
  * gap, each row likewise. Everything is linear in the graph size but the
  * sorts. */
@@ -467,9 +467,42 @@ static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo,
   return nb;
 }
 
+/* Issue 31, disconnected parts packed side by side: the parts (part[],
+ * their width in columns and height in rows, the free ones after them
+ * included) go into shelves, the tallest first (of equal height, model
+ * order), left to right with a free column between them, a new shelf
+ * below the tallest part of the one before when the next does not fit;
+ * a shelf is the square root of the parts' summed area columns wide (a
+ * column is wider than a row, so the page comes out landscape), the
+ * widest part at least. Sets each part's row
+ * offset (base, as -1 - row) and column offset (xoff). */
+static int by_height(const void *a, const void *b, void *ctx) {
+  const int *height = ctx, p = *(const int *)a, q = *(const int *)b;
+  return height[p] != height[q] ? height[q] - height[p] : p - q;
+}
+
+static void shelve_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff) {
+  double area = 0;
+  int widest = 0;
+  for (int i = 0; i < nparts; i++) {
+    area += (double)(width[part[i]] + 1) * height[part[i]];
+    widest = width[part[i]] > widest ? width[part[i]] : widest;
+  }
+  int shelf_w = (int)ceil(sqrt(area)), x = 0, y = 0, shelf_h = 0;
+  if (shelf_w < widest) shelf_w = widest;
+  bg_sort(part, (size_t)nparts, sizeof *part, by_height, height);
+  for (int i = 0; i < nparts; i++) {
+    int c = part[i];
+    if (x > 0 && x + width[c] > shelf_w) y += shelf_h, x = 0, shelf_h = 0;
+    xoff[c] = x, base[c] = -1 - y;
+    x += width[c] + 1;
+    shelf_h = height[c] > shelf_h ? height[c] : shelf_h;
+  }
+}
+
 /* Each component's hubs snake into bands of at most `wrap` columns when it is
  * wider than that (a long chain becomes rows), and the components are stacked
- * top to bottom in the order of their first node. A band runs back from
+ * in shelves (shelve_parts). A band runs back from
  * under the end of the band before it. */
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
@@ -501,7 +534,9 @@ static void stack_components(grid *g, const int *h, int nh) {
     depth = dk > depth ? dk : depth;
   }
   int sep = 1 + depth;
-  int next = 0, nstart = 0;
+  int nstart = 0, nparts = 0;
+  int *xoff = bg_xcalloc((size_t)n + 1, sizeof(int)), *width = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *height = bg_xcalloc((size_t)n + 1, sizeof(int)), *part = bg_xcalloc((size_t)n + 1, sizeof(int));
   for (int v = 0; v < n; v++) {
     int c = find(up, v);
     if (lo[c] > hi[c] || base[c] < 0) continue;
@@ -519,11 +554,17 @@ static void stack_components(grid *g, const int *h, int nh) {
       x += (b % 2 ? -1 : 1) * (w - 1);
       minx = x < minx ? x : minx;
     }
-    for (int b = 0; b < nband[c]; b++) bx[nstart + b] -= minx;
+    for (int b = 0; b < nband[c]; b++) {
+      bx[nstart + b] -= minx;
+      int w = (b + 1 < nband[c] ? start[nstart + b + 1] : ncol[c]) - start[nstart + b];
+      width[c] = bx[nstart + b] + w > width[c] ? bx[nstart + b] + w : width[c];
+    }
+    height[c] = nband[c] * (span + sep);
     nstart += nband[c];
-    base[c] = -1 - next; /* marks the component done; the row offset */
-    next += nband[c] * (span + sep);
+    base[c] = -1, part[nparts++] = c; /* marks the component done */
   }
+  shelve_parts(part, nparts, width, height, base, xoff);
+  free(width), free(height), free(part);
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;
     const int *st = start + boff[c];
@@ -533,13 +574,13 @@ static void stack_components(grid *g, const int *h, int nh) {
       else z = mid - 1;
     }
     int k = g->col[v] - st[a], span = hi[c] - lo[c] + 1;
-    g->gx[v] = 2 * (bx[boff[c] + a] + (a % 2 ? -k : k));
+    g->gx[v] = 2 * (xoff[c] + bx[boff[c] + a] + (a % 2 ? -k : k));
     g->gy[v] = 2 * ((-1 - base[c]) + a * (span + sep) + g->row[v] - lo[c]);
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
   free(up), free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
-  free(ilo), free(ihi), free(icomp);
+  free(ilo), free(ihi), free(icomp), free(xoff);
 }
 
 /* ---------------------------------------------------------------- routing bonds between hubs */
