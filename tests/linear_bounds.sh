@@ -41,6 +41,13 @@ check "25 decades: Bode exits 0 within 20 s of CPU (got $st)" $st
 labels=$(grep -o '<text class="tick" [^>]*><tspan>10</tspan><tspan[^>]*>[^<]*' deep.svg | sed 's/.*>//' | tr '\n' ' ')
 [ "$labels" = "−200 −197 −194 −191 −188 −185 −182 −179 −176 " ]
 check "25 decades: a decade label every third decade, 10^-200 .. 10^-176 (got $labels)" $?
+# the exponent is a superscript in the SVG too: raised by a few points (pango's rise is in
+# 1/1024 pt: read as points it put the exponent 3 784 pt above its 10) and smaller
+sup=$(grep -o '<text class="tick" [^>]*font-size="\([0-9.]*\)"[^>]*><tspan>10</tspan><tspan[^>]*>' deep.svg | head -1)
+fs=$(echo "$sup" | sed 's/.*<text[^>]*font-size="\([0-9.]*\)".*/\1/')
+dy=$(echo "$sup" | sed -n 's/.*<tspan dy="\([-0-9.]*\)" font-size="\([0-9.]*\)">$/\1 \2/p')
+awk -v fs="$fs" -v d="$dy" 'BEGIN { split(d, a, " "); exit !(a[1] < -0.2 * fs && a[1] > -fs && a[2] > 0.5 * fs && a[2] < fs) }'
+check "25 decades: the exponent raised by less than its font size and smaller (font $fs, dy and size: $dy)" $?
 grep -q '<tspan>magnitude \[dB\]' deep.svg && grep -q '<text class="tick t1" [^>]*><tspan>0<' deep.svg
 check "25 decades: the magnitude panel is drawn (|H| = 1: around 0 dB)" $?
 cpu "$BGDRAW" deep.bg --report deep.pdf 2>err; st=$?

@@ -160,24 +160,35 @@ static void shape(bg_strbuf *b, const bg_scene *s, const bg_scene_item *it, bg_s
 
 /* ---------------------------------------------------------------- text */
 /* Pango markup as bgdraw writes it: spans with size="P%" and rise="Rpt",
- * <b>, <i>, <sub>, <sup>, entities. Each run becomes a <tspan>. */
+ * <b>, <i>, <sub>, <sup>, entities; the plots write spans in pango units (size and
+ * rise in 1/1024 pt). Each run becomes a <tspan>. */
 typedef struct run_style {
   double scale, rise; /* font size factor; baseline shift up, points */
   int bold, italic;
 } run_style;
 
-static double attr_num(const char *tag, const char *name, double dflt) {
+/* An attribute's unit as pango reads it: "70%", "3.5pt", or a bare number in pango
+ * units (1/1024 pt). Returns the unit's first character, 'u' for pango units, 0 when
+ * the attribute is absent. */
+static char attr_unit(const char *tag, const char *name, double *v) {
   char key[32];
   snprintf(key, sizeof key, " %s=\"", name);
   const char *p = strstr(tag, key);
-  return p ? strtod(p + strlen(key), NULL) : dflt;
+  if (!p) return 0;
+  char *end;
+  *v = strtod(p + strlen(key), &end);
+  return *end == '%' ? '%' : *end == 'p' ? 'p' : 'u';
 }
 
 static run_style open_tag(const char *tag, run_style cur, double size) {
   if (!strncmp(tag, "<span", 5)) {
-    double pct = attr_num(tag, "size", -1);
-    if (pct > 0 && strchr(tag, '%')) cur.scale *= pct / 100;
-    cur.rise += attr_num(tag, "rise", 0);
+    double v;
+    char u = attr_unit(tag, "size", &v); /* the plots write absolute sizes, the diagrams % */
+    if (u == '%' && v > 0) cur.scale *= v / 100;
+    else if (u == 'p' && v > 0) cur.scale = v / size;
+    else if (u == 'u' && v > 0) cur.scale = v / 1024 / size;
+    u = attr_unit(tag, "rise", &v);
+    if (u) cur.rise += u == 'u' ? v / 1024 : v;
     if (strstr(tag, "weight=\"bold\"")) cur.bold = 1;
     if (strstr(tag, "style=\"italic\"")) cur.italic = 1;
   } else if (!strcmp(tag, "<b>")) cur.bold = 1;
