@@ -226,7 +226,7 @@ void bg_export_python(const bg_eqsys *s, bg_strbuf *o) {
   bg_xl_code(L, s, s->nout_code, s->ncode, "v", o);
   bg_sb_puts(o, "    y0 = [0.0] * N\n");
   initial_stmts(L, s, o);
-  bg_sb_puts(o, "    return np.array(y0)\n\n\n");
+  bg_sb_puts(o, "    return np.array(y0, dtype=float)\n\n\n"); /* integer literals alone made an int array that truncated the algebraic unknowns */
   if (s->nev) bg_xev_python(s, o); /* modes, root functions, the event driver */
   else bg_sb_puts(o, py_api);
 }
