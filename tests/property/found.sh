@@ -82,17 +82,22 @@ for meth in scap relaxed vandijk; do
   check "seed170 $meth: exit 0, the conflict at T1 predicts index above 1, numeric 2, no disagreement" \
     '[ $? -eq 0 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric\"] == 2 and i[\"disagreement\"] is None and \"two-port T1\" in i[\"reason\"]))" "$tmp/t13.json"'
 done
+# Every method predicts index above 1 and every run refuses with the singular
+# pencil (exit 3): findings 14 and 18.
+refuses_singular() { # SEED MODEL
+  local out=$tmp/s$1.json # check evaluates its condition with its own $1
+  for meth in scap relaxed vandijk; do
+    "$bg" "$2" --causality $meth --simulate -o "$out" 2>/dev/null
+    check "seed$1 $meth: exit 3, predicted index above 1, a singular pencil" \
+      '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$out"'
+  done
+}
 # Finding 14: two 0-junctions joined by two bonds carry an undetermined
 # circulating flow (a singular pencil). Relaxed causality's type 2 conflict at
 # j1 now reads e3 - e6 = 0 against the flows (Equations 4.47, 4.48 with the
 # balance): it does not depend on them, index above 1, as SCAP and van Dijk
 # predict; every run refuses with the reason (exit 3). Before: relaxed 1.
-m=$here/found/seed1088_methods_agree.bg
-for meth in scap relaxed vandijk; do
-  "$bg" "$m" --causality $meth --simulate -o "$tmp/t14.json" 2>"$tmp/t14.err"
-  check "seed1088 $meth: exit 3, predicted index above 1, a singular pencil" \
-    '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$tmp/t14.json"'
-done
+refuses_singular 1088 "$here/found/seed1088_methods_agree.bg"
 # Finding 18: three 0-junctions in a triangle (j7, j17, j18) carry an
 # undetermined circulating flow (a singular pencil). Relaxed causality puts
 # type 2 conflicts at j7 and j18; each one's equations alone determine what
@@ -100,11 +105,7 @@ done
 # they do not: index above 1, as SCAP and van Dijk predict, and every run
 # refuses with the singular pencil. Before the fix relaxed predicted 1.
 m=$here/found/seed7596_methods_agree.bg
-for meth in scap relaxed vandijk; do
-  "$bg" "$m" --causality $meth --simulate -o "$tmp/t18.json" 2>/dev/null
-  check "seed7596 $meth: exit 3, predicted index above 1, a singular pencil" \
-    '[ $? -eq 3 ] && python3 -c "import json,sys; i=json.load(open(sys.argv[1]))[\"index\"]; sys.exit(not (i[\"predicted\"] == 2 and i[\"numeric_status\"] == \"singular\"))" "$tmp/t18.json"'
-done
+refuses_singular 7596 "$m"
 "$bg" "$m" --causality relaxed -o "$tmp/t18.json" 2>/dev/null
 check "seed7596 relaxed: the conflicts at j7 and j18 together" \
   'python3 -c "import json,sys; a=json.load(open(sys.argv[1])); sys.exit(not ([c[\"node\"] for c in a[\"conflicts\"]] == [\"j7\", \"j18\"] and a[\"index\"][\"reason\"].startswith(\"conflicts at j7, j18: \")))" "$tmp/t18.json"'
