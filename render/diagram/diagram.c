@@ -401,6 +401,8 @@ static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
   bg_fields_prepare(d);
   if (run_layout(d, dg) != 0) return -1;
   bg_geom_bonds(d);
+  /* a straight bond never through another node's label (issue 31) */
+  if (bg_route_blocked_bonds(d)) bg_geom_bonds(d);
   return 0;
 }
 

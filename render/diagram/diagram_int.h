@@ -184,6 +184,10 @@ bg_router *bg_router_new(const bg_diagram_layout *L, int nbond);
  * the last the arrow's tip. Later routes keep off it. */
 int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, bg_vec *pts, int cap);
 void bg_router_free(bg_router *r);
+/* Bonds whose line runs through another node's box routed again,
+ * orthogonally round the boxes (their corners into L->lay); returns how
+ * many. Call bg_geom_bonds again when it did any. */
+int bg_route_blocked_bonds(bg_diagram_layout *L);
 
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */

@@ -93,14 +93,20 @@ static void item_box(const bg_diagram_layout *L, const near_index *ix, int k, do
   b[0] = fmin(a.x, c.x), b[1] = fmin(a.y, c.y), b[2] = fmax(a.x, c.x), b[3] = fmax(a.y, c.y);
 }
 
-static void near_build(const bg_diagram_layout *L, int nbond, near_index *ix) {
+/* Whether bond b's legs are left out of the index: hidden in a collapsed
+ * box, or about to be routed again (skip, nullable). */
+static int leg_skipped(const bg_diagram_layout *L, const unsigned char *skip, int b) {
+  return (L->bond_hidden && L->bond_hidden[b]) || (skip && skip[b]);
+}
+
+static void near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, near_index *ix) {
   memset(ix, 0, sizeof *ix);
   ix->nnode = L->nnode;
-  for (int b = 0; b < nbond; b++) ix->nleg += L->bond_hidden && L->bond_hidden[b] ? 0 : L->bg[b].bendn + 1;
+  for (int b = 0; b < nbond; b++) ix->nleg += leg_skipped(L, skip, b) ? 0 : L->bg[b].bendn + 1;
   ix->la = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->la), ix->lb = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lb);
   ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
   for (int b = 0, k = 0; b < nbond; b++) {
-    for (int i = 0; !(L->bond_hidden && L->bond_hidden[b]) && i <= L->bg[b].bendn; i++, k++) {
+    for (int i = 0; !leg_skipped(L, skip, b) && i <= L->bg[b].bendn; i++, k++) {
       ix->la[k] = leg_end(L, b, i - 1), ix->lb[k] = leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
       double dx = ix->lb[k].x - ix->la[k].x, dy = ix->lb[k].y - ix->la[k].y, l2 = dx * dx + dy * dy;
       double t = l2 > 0 ? ((L->bg[b].mid.x - ix->la[k].x) * dx + (L->bg[b].mid.y - ix->la[k].y) * dy) / l2 : 0;
@@ -287,10 +293,10 @@ struct bg_router {
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
 };
 
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) {
+static bg_router *router_make(const bg_diagram_layout *L, int nbond, const unsigned char *skip) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
   r->L = L;
-  near_build(L, nbond, &r->ix);
+  near_build(L, nbond, skip, &r->ix);
   r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
   for (int k = 0; k < L->nnode; k++)
     if (node_drawn(L, k)) {
@@ -305,6 +311,8 @@ bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) {
   }
   return r;
 }
+
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) { return router_make(L, nbond, NULL); }
 
 void bg_router_free(bg_router *r) {
   if (!r) return;
@@ -582,6 +590,7 @@ typedef struct port {
   int dir;      /* the normal: 0 +x, 1 -x, 2 +y, 3 -y */
   double base;  /* of the port itself (a corner) */
   double cost;  /* and of its stub */
+  int diag;     /* a bond's diagonal way out of a box whose sides are taken: at is stub */
 } port;
 
 static const bg_vec DIRV[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -624,13 +633,13 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
       bg_vec at = dir < 2 ? bg_v(c.x + (dir == 0 ? hw : -hw), c.y + off) : bg_v(c.x + off, c.y + (dir == 2 ? hh : -hh));
       if (!side_clear(L, m, n, at)) continue;
       at = bg_vadd(at, bg_vscale(DIRV[dir], gap));
-      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, k >= 3 ? COST_CORNER : 0, 0};
+      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, k >= 3 ? COST_CORNER : 0, 0, 0};
     }
   }
   if (!np) /* every side taken by bonds: the sides' middles all the same */
     for (int dir = 0; dir < 4; dir++) {
       bg_vec at = bg_vadd(c, bg_v(DIRV[dir].x * (hw + gap), DIRV[dir].y * (hh + gap)));
-      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0};
+      out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0, 0};
     }
   return np;
 }
@@ -842,6 +851,7 @@ static void snap_ports(const bg_router *r, port *p, int n) {
     if (p[i].dir < 2) p[i].at.y = y;
     else p[i].at.x = x;
     p[i].stub = bg_v(x, y);
+    if (p[i].diag) p[i].at = p[i].stub;
   }
 }
 
@@ -892,6 +902,44 @@ static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
   return 0;
 }
 
+/* The route between the ports ps and pt, whose boxes are a and b: the
+ * cheapest in a window round both ends (their boxes with a margin that
+ * grows with their distance); boxed in, over the whole figure with a ring
+ * round it, where its grid keeps the lanes (the window's grid, over less of
+ * the figure, was as fine); still through a box, round the outside. The
+ * route is simplified and remembered, so later routes keep off it. Returns
+ * the number of points: pts[0] on a source port, the last on a target's. */
+static int route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
+                       bg_vec *pts, int cap) {
+  double wx0 = fmin(a[0], b[0]), wx1 = fmax(a[2], b[2]), wy0 = fmin(a[1], b[1]), wy1 = fmax(a[3], b[3]);
+  double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
+  double cost = INFINITY;
+  int n = route_in(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, INFINITY, pts, cap,
+                   &cost);
+  if (!(cost < COST_BLOCK) && r->gap <= FALLBACK_GAP) {
+    double c2 = INFINITY;
+    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
+    int n2 = route_in(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
+                      r->fy1 + 2 * LANE, FALLBACK_GAP, alt, cap, &c2);
+    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2, cost = c2;
+    free(alt);
+  }
+  if (!(cost < COST_BLOCK)) {
+    double c3 = INFINITY;
+    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
+    int n3 = route_outside(r, ps, nps, pt, npt, a, b, alt, cap, &c3);
+    if (n3 >= 2 && c3 < cost) memcpy(pts, alt, (size_t)n3 * sizeof *pts), n = n3, cost = c3;
+    free(alt);
+  }
+  if (n < 2) { /* no grid at all (cannot happen: the grid holds every port) */
+    pts[0] = ps[0].at, pts[1] = pt[0].at;
+    n = 2;
+  }
+  n = simplify(pts, n);
+  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1]);
+  return n;
+}
+
 /* Routes a signal to node `to` from node from_node or, when that is < 0,
  * from bond from_bond's middle (or 8 pt either side of it). pts receives the polyline,
  * its first point on the source, its last the arrow's tip 1.5 pt off the
@@ -914,47 +962,188 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
       if (j && !on_bond(L, from_bond, at)) continue;
       for (int k = 0; k < 2; k++) {
         int dir = along_x ? (k ? 3 : 2) : (k ? 1 : 0);
-        ps[nps++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, j ? COST_CORNER / 4 : 0, 0};
+        ps[nps++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, j ? COST_CORNER / 4 : 0, 0, 0};
       }
     }
     from_pt = mid;
   }
-  /* the window: both ends' boxes with a margin that grows with the distance */
   double ax0 = from_pt.x, ay0 = from_pt.y, ax1 = from_pt.x, ay1 = from_pt.y;
   if (from_node >= 0) {
     ax0 = L->nx[from_node] - L->nw[from_node] / 2, ax1 = L->nx[from_node] + L->nw[from_node] / 2;
     ay0 = L->ny[from_node] - L->nh[from_node] / 2, ay1 = L->ny[from_node] + L->nh[from_node] / 2;
   }
-  double wx0 = fmin(ax0, L->nx[to] - L->nw[to] / 2), wx1 = fmax(ax1, L->nx[to] + L->nw[to] / 2);
-  double wy0 = fmin(ay0, L->ny[to] - L->nh[to] / 2), wy1 = fmax(ay1, L->ny[to] + L->nh[to] / 2);
-  double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
-  double cost = INFINITY;
-  int n = route_in(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, INFINITY, pts, cap,
-                   &cost);
-  /* boxed in: the whole figure, with a ring round it, where its grid keeps
-   * the lanes (the window's grid, over less of the figure, was as fine) */
-  if (!(cost < COST_BLOCK) && r->gap <= FALLBACK_GAP) {
-    double c2 = INFINITY;
-    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
-    int n2 = route_in(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
-                      r->fy1 + 2 * LANE, FALLBACK_GAP, alt, cap, &c2);
-    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2, cost = c2;
-    free(alt);
+  double ends[2][4] = {{ax0, ay0, ax1, ay1},
+                       {L->nx[to] - L->nw[to] / 2, L->ny[to] - L->nh[to] / 2, L->nx[to] + L->nw[to] / 2,
+                        L->ny[to] + L->nh[to] / 2}};
+  return route_ports(r, ps, nps, pt, npt, ends[0], ends[1], pts, cap);
+}
+
+/* ---------------------------------------------------------------- bonds round the labels */
+/* A bond is drawn straight between its nodes' centres by the rows layout
+ * and the other engines, and where the grid pass finds no free cells; such
+ * a line can run through another node's label (issue 31: 130 of the
+ * 300-signal reaction network's bonds in the rows layout, the reaction
+ * rings' chords). Those bonds are routed like the signals, orthogonally
+ * round the boxes: out of a free side's middle, so the first and last legs
+ * run straight out of the centre as a bond's do, or, from a box whose four
+ * sides are taken, out of a corner on a short diagonal. */
+#define COST_DIAG 60.0 /* a bond's diagonal way out: a slanted leg */
+
+/* Whether segment a-b meets the box [x0,x1]×[y0,y1] (Liang-Barsky). */
+static int seg_box(bg_vec a, bg_vec b, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
+  double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+  for (int i = 0; i < 4; i++) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return 0;
+      continue;
+    }
+    double t = q[i] / p[i];
+    if (p[i] < 0 && t > t0) t0 = t;
+    if (p[i] > 0 && t < t1) t1 = t;
+    if (t0 >= t1) return 0;
   }
-  if (!(cost < COST_BLOCK)) { /* still through a box: round the outside */
-    double c3 = INFINITY, ends[2][4] = {{ax0, ay0, ax1, ay1},
-                                        {L->nx[to] - L->nw[to] / 2, L->ny[to] - L->nh[to] / 2,
-                                         L->nx[to] + L->nw[to] / 2, L->ny[to] + L->nh[to] / 2}};
-    bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
-    int n3 = route_outside(r, ps, nps, pt, npt, ends[0], ends[1], alt, cap, &c3);
-    if (n3 >= 2 && c3 < cost) memcpy(pts, alt, (size_t)n3 * sizeof *pts), n = n3, cost = c3;
-    free(alt);
+  return 1;
+}
+
+/* The node a bond's end is drawn at: a collapsed box, a field's node. */
+static int end_node(const bg_diagram_layout *L, int e) {
+  int n = L->node_of[e];
+  return L->rep ? L->rep[n] : n;
+}
+
+/* Whether bond b's line runs through a node box other than its ends' (the
+ * box 0.5 pt inside, so a line along its edge is clear). */
+static int bond_blocked(bg_router *r, const bg_model *m, int b) {
+  const bg_diagram_layout *L = r->L;
+  if ((L->bond_hidden && L->bond_hidden[b]) || L->bg[b].spln) return 0;
+  int t = end_node(L, m->bond_tail[b]), h = end_node(L, m->bond_head[b]);
+  for (int i = 0; i <= L->bg[b].bendn; i++) {
+    bg_vec a = leg_end(L, b, i - 1), c = leg_end(L, b, i);
+    near_box(&r->ix, fmin(a.x, c.x), fmin(a.y, c.y), fmax(a.x, c.x), fmax(a.y, c.y), &r->nl);
+    for (int j = 0; j < r->nl.n; j++) {
+      int k = r->nl.k[j];
+      if (k >= L->nnode || k == t || k == h || (L->rep && L->rep[k] != k)) continue;
+      double hw = L->nw[k] / 2 - 0.5, hh = L->nh[k] / 2 - 0.5;
+      if (hw > 0 && hh > 0 && seg_box(a, c, L->nx[k] - hw, L->ny[k] - hh, L->nx[k] + hw, L->ny[k] + hh)) return 1;
+    }
   }
-  if (n < 2) { /* no grid at all (cannot happen: the grid holds every port) */
-    pts[0] = ps[0].at, pts[1] = pt[0].at;
-    n = 2;
+  return 0;
+}
+
+/* Whether side dir of node n is clear of the node's other bonds: none
+ * leaves its centre within 30 degrees of the side's normal (by direction,
+ * not by where it ends: a junction's end circle can lie far out). Bonds to
+ * be routed again (blocked) do not count: they move. */
+static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
+                          int dir) {
+  int nb = n < m->nelem ? m->elem_nbond[n] : m->nbond;
+  for (int i = 0; i < nb; i++) {
+    int ob = n < m->nelem ? m->elem_bonds[m->elem_bondadr[n] + i] : i;
+    if (ob == b || blocked[ob] || (L->bond_hidden && L->bond_hidden[ob])) continue;
+    const bg_bond_geom *g = &L->bg[ob];
+    int t = L->node_of[m->bond_tail[ob]], h = L->node_of[m->bond_head[ob]];
+    for (int k = 0; k < 2; k++) {
+      if ((k ? h : t) != n) continue;
+      bg_vec u = k ? bg_vscale(g->hdir, -1) : g->tdir;
+      if (u.x * DIRV[dir].x + u.y * DIRV[dir].y > 0.866) return 0;
+    }
   }
-  n = simplify(pts, n);
-  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1]);
-  return n;
+  return 1;
+}
+
+/* The ways out of node n for bond b: the middles of its free sides (not
+ * taken by another bond's end or an earlier route, taken: a bit per side),
+ * else its four corners on a diagonal, COST_DIAG dearer. */
+static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsigned char *blocked,
+                      const unsigned char *taken, port *out) {
+  const bg_diagram_layout *L = r->L;
+  double hw = L->nw[n] / 2, hh = L->nh[n] / 2;
+  bg_vec c = bg_v(L->nx[n], L->ny[n]);
+  int np = 0;
+  for (int dir = 0; dir < 4; dir++) {
+    bg_vec at = bg_vadd(c, bg_v(DIRV[dir].x * hw, DIRV[dir].y * hh));
+    if ((taken[n] >> dir & 1) || !bond_side_free(L, m, n, b, blocked, dir)) continue;
+    out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0, 0};
+  }
+  for (int k = 0; !np && k < 4; k++) {
+    double sx = k & 1 ? -1 : 1, sy = k & 2 ? -1 : 1;
+    bg_vec q = bg_vadd(c, bg_v(sx * (hw + STUB), sy * (hh + STUB)));
+    double base = COST_DIAG + seg_cost(r, c, q, n) - bg_vlen(bg_vsub(q, c));
+    out[np++] = (port){q, q, sx > 0 ? 0 : 1, base, 0, 1};
+    out[np++] = (port){q, q, sy > 0 ? 2 : 3, base, 0, 1};
+  }
+  return np;
+}
+
+/* Puts the route's end at node n straight out of its centre: a side port's
+ * first leg moved onto the centre's line (the grid may have snapped it
+ * off), the side marked taken. end: pts[0] (next: pts[1]) or the last
+ * point. Returns whether the end is a diagonal way out (a corner of its own). */
+static int bond_end(const bg_diagram_layout *L, int n, bg_vec *end, bg_vec *next, unsigned char *taken) {
+  double dx = end->x - L->nx[n], dy = end->y - L->ny[n], hw = L->nw[n] / 2, hh = L->nh[n] / 2;
+  if (fabs(dx) > hw + 0.01 || fabs(dy) > hh + 0.01) return 1;
+  if (fabs(dx) >= hw - 0.01) {
+    end->y = next->y = L->ny[n];
+    taken[n] |= (unsigned char)(1 << (dx > 0 ? 0 : 1));
+  } else {
+    end->x = next->x = L->nx[n];
+    taken[n] |= (unsigned char)(1 << (dy > 0 ? 2 : 3));
+  }
+  return 0;
+}
+
+/* Routes bond b round the boxes; its corners into bx, by (at most cap).
+ * Returns their number. */
+static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned char *blocked, unsigned char *taken,
+                      double *bx, double *by, int cap) {
+  const bg_diagram_layout *L = r->L;
+  int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
+  port ps[8], pt[8];
+  r->from_node = t, r->to_node = h;
+  int nps = bond_ports(r, m, t, b, blocked, taken, ps), npt = bond_ports(r, m, h, b, blocked, taken, pt);
+  double a[4] = {L->nx[t] - L->nw[t] / 2, L->ny[t] - L->nh[t] / 2, L->nx[t] + L->nw[t] / 2, L->ny[t] + L->nh[t] / 2};
+  double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
+  bg_vec pts[256];
+  int n = route_ports(r, ps, nps, pt, npt, a, z, pts, 256), nc = 0;
+  if (n < 3) return 0; /* one straight leg: the centres in line */
+  int dt = bond_end(L, t, &pts[0], &pts[1], taken), dh = bond_end(L, h, &pts[n - 1], &pts[n - 2], taken);
+  for (int i = dt ? 0 : 1; i <= (dh ? n - 1 : n - 2) && nc < cap; i++) bx[nc] = pts[i].x, by[nc++] = pts[i].y;
+  return nc;
+}
+
+int bg_route_blocked_bonds(bg_diagram_layout *L) {
+  const bg_model *m = L->m;
+  int nb = m->nbond, nblocked = 0;
+  unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
+  bg_router *all = router_make(L, nb, NULL);
+  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, m, b);
+  bg_router_free(all);
+  if (!nblocked) {
+    free(blocked);
+    return 0;
+  }
+  bg_router *r = router_make(L, nb, blocked);
+  unsigned char *taken = bg_xcalloc((size_t)L->nnode + 1, 1);
+  bg_layout *lay = &L->lay;
+  int nedge = lay->nedge > nb ? lay->nedge : nb, cap = lay->nbend + 64 * nblocked;
+  int *adr = bg_xcalloc((size_t)nedge + 1, sizeof *adr), *cnt = bg_xcalloc((size_t)nedge + 1, sizeof *cnt);
+  double *bx = bg_xcalloc((size_t)cap + 1, sizeof *bx), *by = bg_xcalloc((size_t)cap + 1, sizeof *by);
+  int used = 0;
+  for (int b = 0; b < nb; b++) {
+    adr[b] = used;
+    if (blocked[b]) {
+      cnt[b] = route_bond(r, m, b, blocked, taken, bx + used, by + used, 64);
+    } else {
+      const bg_bond_geom *g = &L->bg[b];
+      for (int i = 0; i < g->bendn; i++) bx[used + i] = lay->bendx[g->bendadr + i], by[used + i] = lay->bendy[g->bendadr + i];
+      cnt[b] = g->bendn;
+    }
+    used += cnt[b];
+  }
+  bg_router_free(r);
+  free(lay->bendadr), free(lay->bendn), free(lay->bendx), free(lay->bendy);
+  lay->bendadr = adr, lay->bendn = cnt, lay->bendx = bx, lay->bendy = by, lay->nbend = used;
+  free(blocked), free(taken);
+  return nblocked;
 }

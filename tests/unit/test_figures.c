@@ -198,15 +198,19 @@ static const fc_stats limits[3][2] = {
  * with 1 bend, and the grid's strokes touched 1 / 0 / 1 more). Since the rows are a tree drawing (issue 31, the
  * spine) the trees have no slanted or crossing bond; the reaction rings
  * drawn as trees have more signal crossings and 3 tiny one-port bonds
- * (their C on a diagonal cell). docs/drawing.md has the tables before and
- * after. */
+ * (their C on a diagonal cell). Lines through element labels are 0 since a
+ * bond drawn straight through another node's box (the rings' chords) is
+ * routed round the boxes (bg_route_blocked_bonds): its slanted, touching
+ * and tiny bonds and oblique layers went down with it, its signal
+ * crossings (at right angles) and bond crossings up. docs/drawing.md has
+ * the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 64, 2, 0, 0, 3, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
-     {1384, 19, 1384, 3, 2311, 1, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 75, 9, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 51, 0, 0, 0}},
-    {{1384, 19, 1384, 2, 1398, 0, 1384, 0, 0, 0, 0, 0, 3, 10, 4, 66, 2, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
-     {1384, 19, 1384, 3, 2311, 0, 1384, 0, 913, 0, 1, 6, 3, 10, 0, 75, 8, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 76, 0, 0, 0}},
-    {{1384, 19, 1384, 3, 1398, 0, 1384, 1, 0, 0, 0, 0, 4, 9, 5, 70, 4, 0, 1, 4, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
-     {1384, 19, 1384, 4, 2311, 2, 1384, 0, 913, 0, 0, 6, 3, 10, 0, 77, 10, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 80, 0, 0, 0}},
+    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 12, 1, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 1, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 12, 0, 82, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 34, 0, 0, 0}},
+    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 12, 1, 82, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 2, 0, 12, 0, 83, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 55, 0, 0, 0}},
+    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 12, 2, 82, 0, 0, 0, 1, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 2, 2311, 2, 1384, 0, 913, 0, 0, 0, 0, 12, 0, 85, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 59, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
@@ -341,15 +345,17 @@ static void test_generated(void) {
  * generated models far larger than the figure tests' others, where the
  * router's window is boxed in and the whole figure's grid too coarse to
  * search, in the default style with the default layers; lines (bonds and
- * signals) through element labels and lines drawn on other lines, at 0. */
+ * signals) through element labels and bonds drawn on other lines, at 0
+ * (bonds through labels were 130, 11 and 9 while the rows layout and the
+ * grid pass's failed routes drew them straight). */
 static const struct {
   fm_model model;
   const char *layout; /* the engine: rows, as a model of more than 2 000 nodes gets it */
-  int bonds_through, fan_out; /* limits: bonds through labels, signals on signals */
+  int fan_out; /* limit: signals on signals */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 130, 110},
-    {{"modladder120", fm_modladder, 120}, "rows", 11, 136},
-    {{"reactions60", fm_reactions, 60}, NULL, 9, 0},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 107},
+    {{"modladder120", fm_modladder, 120}, "rows", 136},
+    {{"reactions60", fm_reactions, 60}, NULL, 0},
 };
 
 static void test_large_figures(void) {
@@ -375,8 +381,8 @@ static void test_large_figures(void) {
       print_row(lm->name, &st);
       BG_T_REPORT(st.sig_through == 0, "%s: %d signals through element labels", lm->name, st.sig_through);
       BG_T_REPORT(st.bond_overlaps == 0, "%s: %d bonds on other lines", lm->name, st.bond_overlaps);
-      BG_T_REPORT(st.lines_through - st.sig_through <= large[g].bonds_through, "%s: %d bonds through labels (<= %d)",
-                  lm->name, st.lines_through - st.sig_through, large[g].bonds_through);
+      BG_T_REPORT(st.lines_through - st.sig_through == 0, "%s: %d bonds through element labels", lm->name,
+                  st.lines_through - st.sig_through);
       BG_T_REPORT(st.overlaps - st.bond_overlaps <= large[g].fan_out, "%s: %d signals on signals (<= %d)", lm->name,
                   st.overlaps - st.bond_overlaps, large[g].fan_out);
       bg_diagram_free(d);
