@@ -12,12 +12,11 @@ import csv
 import json
 import os
 import random
-import subprocess
 
 from gen import Elem as gen_Elem
 import check_routes
+import limits
 
-TIME_LIMIT = 30          # seconds per bgdraw run; beyond it: a hang
 SAMPLE = True            # the costly checks on one model in N by seed; prop.py --model: every one
 DOCUMENTED_EXITS = {0, 1, 2, 3, 4}
 
@@ -29,14 +28,22 @@ CHECKS = ["robust", "accepted", "junction_power", "twoport_power", "tellegen", "
 
 
 class Run:
-    def __init__(self, status, out, err, files, limit=TIME_LIMIT):
-        self.status, self.out, self.err, self.files, self.limit = status, out, err, files, limit
+    """status None: stopped at a bound (over says which: limits.py);
+    negative: a signal."""
+
+    def __init__(self, status, out, err, files, over=None):
+        self.status, self.out, self.err, self.files, self.over = status, out, err, files, over
 
 
-def run(bgdraw, text, workdir, tag, args, outs, limit=TIME_LIMIT):
+# the costliest bgdraw run of the model being checked: (CPU s, its bound, tag)
+COSTLIEST = [(0.0, 0.0, "")]
+
+
+def run(bgdraw, text, workdir, tag, args, outs, stiff=False):
     """Writes the model, runs bgdraw with args and -o for each of outs
-    (extensions), returns a Run (status None: killed at the time limit, limit
-    seconds; negative: a signal)."""
+    (extensions), bounded by the CPU time limits.py gives for the text's
+    size (stiff: a parasitic run's), returns a Run (status None: stopped at
+    the bound; negative: a signal)."""
     path = os.path.join(workdir, tag + ".bg")
     with open(path, "w") as f:
         f.write(text)
@@ -47,11 +54,14 @@ def run(bgdraw, text, workdir, tag, args, outs, limit=TIME_LIMIT):
     cmd = [bgdraw, path] + args
     for p in files.values():
         cmd += ["-o", p]
-    try:
-        p = subprocess.run(cmd, capture_output=True, timeout=limit)
-    except subprocess.TimeoutExpired:
-        return Run(None, b"", b"", files, limit)
-    return Run(p.returncode, p.stdout, p.stderr.decode("utf-8", "replace"), files, limit)
+    bound = limits.cpu_bound(limits.bonds_of(text), stiff)
+    p = limits.run(cmd, bound)
+    if p.cpu / bound > COSTLIEST[0][0] / max(COSTLIEST[0][1], 1e-9):
+        COSTLIEST[0] = (p.cpu, bound, tag)
+    if os.environ.get("PROP_CPU_LOG"):  # every run's cost, for measuring the bound (docs/property.md)
+        with open(os.environ["PROP_CPU_LOG"], "a") as f:
+            f.write("%s %d %.3f %.1f\n" % (tag, limits.bonds_of(text), p.cpu, bound))
+    return Run(p.status, p.out, p.err.decode("utf-8", "replace"), files, p.over)
 
 
 def read_csv(path):
@@ -64,7 +74,7 @@ def read_csv(path):
 def _robust(res, r, what):
     """Records a crash, a hang or an undocumented exit status."""
     if r.status is None:
-        res["robust"] = ("fail", "%s: no answer within %d s" % (what, r.limit))
+        res["robust"] = ("fail", "%s: %s" % (what, r.over))
     elif r.status not in DOCUMENTED_EXITS:
         res["robust"] = ("fail", "%s: exit status %s\n%s" % (what, r.status, r.err[-2000:]))
     elif "robust" not in res:
@@ -78,6 +88,15 @@ def close(a, b, scale, rel=1e-6, abs_=1e-9):
 
 def check(bgdraw, m, workdir, seed=0, lib=None):
     res = {}
+    COSTLIEST[0] = (0.0, 0.0, "")
+    try:
+        _check(res, bgdraw, m, workdir, seed, lib)
+    finally:
+        res["_cpu"] = COSTLIEST[0]
+    return res
+
+
+def _check(res, bgdraw, m, workdir, seed, lib):
     text = m.text()
     base = run(bgdraw, text, workdir, "m", ["--simulate"], ["json", "csv"])
     if not _robust(res, base, "simulate"):
@@ -257,15 +276,14 @@ def _library(res, lib, base, workdir):
     for p in (lj, lc):
         if os.path.exists(p):
             os.remove(p)
-    try:
-        p = subprocess.run([lib, path, lj, lc], capture_output=True, timeout=TIME_LIMIT)
-    except subprocess.TimeoutExpired:
-        res["robust"] = ("fail", "library: no answer within %d s" % TIME_LIMIT)
+    p = limits.run([lib, path, lj, lc], limits.file_bound(path))
+    if p.status is None:
+        res["robust"] = ("fail", "library: %s" % p.over)
         res["library"] = ("fail", "hung")
         return
-    if p.returncode != base.status:
+    if p.status != base.status:
         res["library"] = ("fail", "status %d, the command line's %d\n%s" % (
-            p.returncode, base.status, p.stderr.decode("utf-8", "replace")[-1000:]))
+            p.status, base.status, p.err.decode("utf-8", "replace")[-1000:]))
         return
     for mine, theirs, what in ((lj, base.files["json"], "JSON"), (lc, base.files["csv"], "CSV")):
         a = open(mine, "rb").read() if os.path.exists(mine) else None
@@ -574,16 +592,19 @@ def _export_c(res, bgdraw, m, workdir, seed, an, rows):
               "-lsundials_sunmatrixdense", "-lsundials_sunlinsoldense", "-lm"],
              [w("driver")] + ([w("m.csv"), w("other.csv")] if ode_model else [w("other.csv"), w("m.csv")]) +
              [w("d_ode.csv"), w("d_dae.csv")]]
-    if _run_steps(res, steps):
+    if _run_steps(res, steps, workdir):
         _export_c_compare(res, workdir, w("d_%s.csv" % mine_c), rows)
 
 
-def _run_steps(res, steps):
+def _run_steps(res, steps, workdir):
+    """The export's steps (bgdraw, cc, the driver), each bounded by four
+    times a bgdraw run's CPU for the model's size."""
     for cmd in steps:
-        p = subprocess.run(cmd, capture_output=True, timeout=TIME_LIMIT * 4)
-        if p.returncode != 0:
-            res["export_c"] = ("fail", "%s: exit status %d\n%s" % (
-                os.path.basename(cmd[0]), p.returncode, p.stderr.decode("utf-8", "replace")[-1000:]))
+        p = limits.run(cmd, limits.file_bound(os.path.join(workdir, "m.bg"), stiff=True))
+        if p.status != 0:
+            res["export_c"] = ("fail", "%s: %s\n%s" % (
+                os.path.basename(cmd[0]), p.over or "exit status %d" % p.status,
+                p.err.decode("utf-8", "replace")[-1000:]))
             return False
     return True
 
@@ -595,7 +616,7 @@ def _export_c_events(res, bgdraw, workdir, rows):
               w("ev.c"), "-o", w("evdriver"), "-lsundials_ida", "-lsundials_cvode", "-lsundials_nvecserial",
               "-lsundials_sunmatrixdense", "-lsundials_sunlinsoldense", "-lm"],
              [w("evdriver"), w("m.csv"), w("d_ev.csv"), w("d_ev.txt")]]
-    if _run_steps(res, steps):
+    if _run_steps(res, steps, workdir):
         _export_c_compare(res, workdir, w("d_ev.csv"), rows)
 
 

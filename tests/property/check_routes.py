@@ -13,11 +13,11 @@ import copy
 import json
 import os
 import re
-import subprocess
 import xml.etree.ElementTree as ET
 import zipfile
 
 import check as ck
+import limits
 from gen import Elem
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -33,20 +33,33 @@ def scipy_python():
     return os.environ.get("PROP_PYTHON", "/usr/bin/python3")
 
 
-def _scipy(res, name, args):
+def _scipy(res, name, args, workdir):
     """Runs scipy_run.py; True when it wrote its CSV (exit 0), else records
     a skip (exit 2: the route does not apply) or a failure."""
-    try:
-        p = subprocess.run([scipy_python(), SCIPY_RUN] + args, capture_output=True, timeout=ck.TIME_LIMIT * 4)
-    except subprocess.TimeoutExpired:
-        res[name] = ("fail", "scipy_run.py %s: no answer within %d s" % (args[0], ck.TIME_LIMIT * 4))
+    p = limits.run([scipy_python(), SCIPY_RUN] + args, _bound(workdir, stiff=True))
+    if p.status is None:
+        res[name] = ("fail", "scipy_run.py %s: %s" % (args[0], p.over))
         return False
-    err = p.stderr.decode("utf-8", "replace").strip()
-    if p.returncode == 2:
+    err = p.err.decode("utf-8", "replace").strip()
+    if p.status == 2:
         res[name] = ("skip", err.splitlines()[-1] if err else "does not apply")
-    elif p.returncode != 0:
-        res[name] = ("fail", "scipy_run.py %s: exit status %d\n%s" % (args[0], p.returncode, err[-1500:]))
-    return p.returncode == 0
+    elif p.status != 0:
+        res[name] = ("fail", "scipy_run.py %s: exit status %d\n%s" % (args[0], p.status, err[-1500:]))
+    return p.status == 0
+
+
+def _bound(workdir, stiff=False):
+    """The CPU bound (limits.py) for the model in workdir/m.bg."""
+    return limits.file_bound(os.path.join(workdir, "m.bg"), stiff)
+
+
+def _bgdraw(res, cmd, workdir, stiff=False):
+    """bgdraw (cmd) on the model in workdir, bounded by its size's CPU time;
+    past the bound `robust` fails too."""
+    p = limits.run(cmd, _bound(workdir, stiff))
+    if p.status is None:
+        res["robust"] = ("fail", "%s: %s" % (" ".join(os.path.basename(c) for c in cmd[1:3]), p.over))
+    return p
 
 
 def compare(res, name, what, ref_path, path, rel=1e-5, cols=None):
@@ -83,12 +96,12 @@ def deviation(what, ref_path, path, absolute=0.0, cols=None):
     return worst, why
 
 
-def _simulated(res, name, bgdraw, text, workdir, tag, outs, what, limit=None):
+def _simulated(res, name, bgdraw, text, workdir, tag, outs, what, stiff=False):
     """bgdraw --simulate on a variant: the Run when it ran to the end; else
-    None, with a failure recorded for a crash or hang (no answer within
-    limit seconds, default check.TIME_LIMIT), a skip (what stops) for a
-    stated stop."""
-    r = ck.run(bgdraw, text, workdir, tag, ["--simulate"], outs, limit or ck.TIME_LIMIT)
+    None, with a failure recorded for a crash or hang (past its CPU bound,
+    limits.py; stiff: a parasitic run's), a skip (what stops) for a stated
+    stop."""
+    r = ck.run(bgdraw, text, workdir, tag, ["--simulate"], outs, stiff)
     if not ck._robust(res, r, name):
         res[name] = ("fail", "crashed or hung")
     elif r.status != 0:
@@ -134,11 +147,11 @@ def _export_py(res, bgdraw, m, workdir, seed, an, rows):
         res["export_py"] = ("skip", why)
         return
     w = lambda n: os.path.join(workdir, n)
-    p = subprocess.run([bgdraw, w("m.bg"), "-q", "-o", w("prop_model.py")], capture_output=True, timeout=ck.TIME_LIMIT)
-    if p.returncode != 0:
-        res["export_py"] = ("fail", "the export: exit status %d\n%s" % (p.returncode, p.stderr.decode()[-500:]))
+    p = _bgdraw(res, [bgdraw, w("m.bg"), "-q", "-o", w("prop_model.py")], workdir)
+    if p.status != 0:
+        res["export_py"] = ("fail", "the export: %s\n%s" % (p.over or "exit status %d" % p.status, p.err.decode()[-500:]))
         return
-    if _scipy(res, "export_py", ["pyexport", workdir, "prop_model", w("m.csv"), w("py.csv")]):
+    if _scipy(res, "export_py", ["pyexport", workdir, "prop_model", w("m.csv"), w("py.csv")], workdir):
         compare(res, "export_py", "Python export", w("m.csv"), w("py.csv"))
 
 
@@ -159,13 +172,12 @@ def _fmu(res, bgdraw, m, workdir, seed, an, rows):
         res["fmu"] = ("skip", why)
         return
     w = lambda n: os.path.join(workdir, n)
-    p = subprocess.run([bgdraw, w("m.bg"), "-q", "--prefix", "pfmu", "-o", w("m.fmu")], capture_output=True,
-                       timeout=ck.TIME_LIMIT * 4)
-    if p.returncode == 3:
-        res["fmu"] = ("skip", "refused: " + p.stderr.decode()[-200:].strip())
+    p = _bgdraw(res, [bgdraw, w("m.bg"), "-q", "--prefix", "pfmu", "-o", w("m.fmu")], workdir, stiff=True)
+    if p.status == 3:
+        res["fmu"] = ("skip", "refused: " + p.err.decode()[-200:].strip())
         return
-    if p.returncode != 0:
-        res["fmu"] = ("fail", "the export: exit status %d\n%s" % (p.returncode, p.stderr.decode()[-500:]))
+    if p.status != 0:
+        res["fmu"] = ("fail", "the export: %s\n%s" % (p.over or "exit status %d" % p.status, p.err.decode()[-500:]))
         return
     z = zipfile.ZipFile(w("m.fmu"))
     z.extract("binaries/linux64/pfmu.so", w("fmu"))
@@ -191,10 +203,10 @@ def _fmu(res, bgdraw, m, workdir, seed, an, rows):
              [w("fmu_import"), w("fmu/binaries/linux64/pfmu.so"), md.get("guid"), str(nx), w("fmu_ref.csv"),
               w("fmu.csv"), ",".join(vr for _, vr in outs), "nz=%d" % nz]]
     for cmd in steps:
-        p = subprocess.run(cmd, capture_output=True, timeout=ck.TIME_LIMIT * 4)
-        if p.returncode != 0:
-            res["fmu"] = ("fail", "%s: exit status %d\n%s" % (os.path.basename(cmd[0]), p.returncode,
-                                                              p.stderr.decode("utf-8", "replace")[-800:]))
+        p = limits.run(cmd, _bound(workdir, stiff=True))
+        if p.status != 0:
+            res["fmu"] = ("fail", "%s: %s\n%s" % (os.path.basename(cmd[0]), p.over or "exit status %d" % p.status,
+                                                  p.err.decode("utf-8", "replace")[-800:]))
             return
     compare(res, "fmu", "FMU", w("fmu_ref.csv"), w("fmu.csv"))
 
@@ -219,13 +231,13 @@ def _reduced_form(res, bgdraw, workdir, an, rows):
         res["reduced_form"] = ("skip", why)
         return
     w = lambda n: os.path.join(workdir, n)
-    p = subprocess.run([bgdraw, w("m.bg"), "-q", "--equations", "json"], capture_output=True, timeout=ck.TIME_LIMIT)
-    if p.returncode != 0:
-        res["reduced_form"] = ("fail", "--equations json: exit status %d" % p.returncode)
+    p = _bgdraw(res, [bgdraw, w("m.bg"), "-q", "--equations", "json"], workdir)
+    if p.status != 0:
+        res["reduced_form"] = ("fail", "--equations json: %s" % (p.over or "exit status %d" % p.status))
         return
     with open(w("eq.json"), "wb") as f:
-        f.write(p.stdout)
-    if _scipy(res, "reduced_form", ["reduced", w("eq.json"), w("m.csv"), w("red.csv")]):
+        f.write(p.out)
+    if _scipy(res, "reduced_form", ["reduced", w("eq.json"), w("m.csv"), w("red.csv")], workdir):
         compare(res, "reduced_form", "reduced form", w("m.csv"), w("red.csv"))
 
 
@@ -333,7 +345,7 @@ def _step_response(res, bgdraw, m, workdir):
             with open(w("st_lin.json"), "w") as f:
                 json.dump(L, f)
             if not _scipy(res, "step_response", ["step", w("st_lin.json"), w("st_sim.csv"), w("st_lin0.csv"),
-                                                 src, "%.17g" % size, "%.17g" % t1]):
+                                                 src, "%.17g" % size, "%.17g" % t1], workdir):
                 return
         lh, lrows = ck.read_csv(w("st_lin0.csv"))  # the linear response is linear in the step
         with open(w("st_lin.csv"), "w") as f:
@@ -353,9 +365,6 @@ PARASITIC_TOL = 1e-3                  # the slow states at the last value, of th
 PARASITIC_RATE = 0.3                  # each of the last two steps of 100 at least this much closer
 PARASITIC_FLOOR = 1e-5                # the runs' own error (rtol 1e-9: seed 871 at 40 elements levels at 2e-6)
 PARASITIC_LIMIT = 0.05                # a last step this much closer is the O(parameter) limit's regime
-# seconds for a parasitic run (4 check.TIME_LIMIT): stiff on purpose (seed 5041
-# at 77 elements: 10.4 s of CPU at 1/10 000 of its parameter)
-PARASITIC_TIME = 120
 
 
 def _parasitic(res, bgdraw, m, workdir, an, rows):
@@ -458,7 +467,7 @@ def _parasitic(res, bgdraw, m, workdir, an, rows):
                 res["parasitic"] = ("fail", "the store %s's line not found in the transformed model" % n)
                 return
         r = _simulated(res, "parasitic", bgdraw, t, workdir, "m_par%d" % len(devs), ["csv"],
-                       "the parasitic model's run at %g of its parameter" % scale, PARASITIC_TIME)
+                       "the parasitic model's run at %g of its parameter" % scale, stiff=True)
         if r is None:
             return
         h, pr = ck.read_csv(r.files["csv"])

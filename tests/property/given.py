@@ -21,10 +21,10 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import tempfile
 
 import check
+import limits
 
 
 class _Elem:
@@ -82,14 +82,12 @@ def _tight(text):
     return re.sub(r"^(\s*simulate\b[^#\n]*?)(\s*#.*)?$", tighten, text, flags=re.M)
 
 
-def _run(bgdraw, path, text, args, timeout=check.TIME_LIMIT):
-    """bgdraw on text read from stdin as if it were the file path."""
-    try:
-        p = subprocess.run([bgdraw, "-", "--stdin-name", path] + args, input=text.encode(),
-                           capture_output=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return check.Run(None, b"", b"", {})
-    return check.Run(p.returncode, p.stdout, p.stderr.decode("utf-8", "replace"), {})
+def _run(bgdraw, path, text, args):
+    """bgdraw on text read from stdin as if it were the file path, bounded
+    by the CPU time for its size (limits.py)."""
+    p = limits.run([bgdraw, "-", "--stdin-name", path] + args, limits.cpu_bound(limits.bonds_of(text)),
+                   stdin=text.encode())
+    return check.Run(p.status, p.out, p.err.decode("utf-8", "replace"), {}, p.over)
 
 
 def check_file(bgdraw, path):

@@ -22,6 +22,7 @@ check failed.
 """
 import argparse
 import os
+import resource
 import sys
 import tempfile
 from concurrent.futures import ProcessPoolExecutor
@@ -123,7 +124,10 @@ def one(args):
     bgdraw, seed, max_elems, found, known, lib = args
     m = gen.generate(seed, max_elems)
     with tempfile.TemporaryDirectory() as wd:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         res = check.check(bgdraw, m, wd, seed, lib)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
         failed = [k for k, v in res.items() if v[0] == "fail" and k not in known]
         shrunk = []
         for name in failed[:1]:  # the first failing check of the model
@@ -140,6 +144,7 @@ def one(args):
             shrunk.append((name, len(small.elems), len(small.bonds), again[1]))
     res_ = {k: v[0] for k, v in res.items() if not k.startswith("_")}
     res_["_refused"] = res.get("_refused")
+    res_["_cpu"] = res["_cpu"] + (cpu,)  # the costliest run (s, bound, tag), the checks' CPU
     res_["_skipped"] = {k: skip_key(v[1]) for k, v in res.items() if not k.startswith("_") and v[0] == "skip"}
     return seed, len(m.elems), res_, \
         {k: v[1] for k, v in res.items() if v[0] == "fail"}, shrunk
@@ -265,6 +270,8 @@ def main():
     table = {c: {"pass": 0, "fail": 0, "skip": 0} for c in check.CHECKS}
     skips = {c: {} for c in check.CHECKS}
     sizes = []
+    costliest = (0.0, 1.0, "", 0, 0)  # CPU s, its bound, tag, seed, size
+    cpu_total = 0.0
     refused = {}
     nfail = 0
     known = set(a.known or [])
@@ -275,6 +282,10 @@ def main():
     with ProcessPoolExecutor(max_workers=a.jobs) as ex:
         for k, (seed, size, res, why, shrunk) in enumerate(ex.map(one, jobs, chunksize=4)):
             sizes.append(size)
+            run_cpu, bound, tag, cpu = res["_cpu"]
+            cpu_total += cpu
+            if run_cpu / max(bound, 1e-9) > costliest[0] / costliest[1]:
+                costliest = (run_cpu, bound, tag, seed, size)
             if res.get("_refused"):
                 refused[res["_refused"]] = refused.get(res["_refused"], 0) + 1
             for c in check.CHECKS:
@@ -299,6 +310,10 @@ def main():
     print("%d models (seeds %s), %d to %d elements (mean %.1f), %d with a failure" % (
         len(seeds), a.seeds or "%d..%d" % (a.seed, a.seed + a.count - 1), min(sizes), max(sizes),
         sum(sizes) / len(sizes), nfail))
+    print("CPU (bgdraw, SciPy, the compilers; shrinking not counted): %.1f s, %.3f s a model; the run "
+          "closest to its bound (limits.py): %.2f s of %.1f s (seed %d, %d elements, %s)" % (
+              cpu_total, cpu_total / len(sizes), costliest[0], costliest[1], costliest[3], costliest[4],
+              costliest[2] or "-"))
     print("%d models not simulated (exit status 3, the reason stated):" % sum(refused.values()))
     for k, v in sorted(refused.items(), key=lambda kv: -kv[1]):
         print("  %5d  %s" % (v, k))
