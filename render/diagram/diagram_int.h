@@ -181,8 +181,14 @@ bg_router *bg_router_new(const bg_diagram_layout *L, int nbond);
 /* The route from node from_node (or, when it is < 0, from the middle of
  * bond from_bond or near it) to node `to`: a polyline of horizontal and
  * vertical legs into pts (at most cap points), the first on the source,
- * the last the arrow's tip. Later routes keep off it. */
-int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, bg_vec *pts, int cap);
+ * the last the arrow's tip. Later routes keep off it, but for those of the
+ * same group (>= 0: the same source), which may run on it and branch off. */
+int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, int group, bg_vec *pts,
+             int cap);
+/* Where the last route leaves the earlier routes of its group that it
+ * starts on: the index k of the segment pts[k]-pts[k+1] it leaves them on,
+ * and the point (*at); -1 when it does not share its start. */
+int bg_route_branch(const bg_router *r, bg_vec *at);
 void bg_router_free(bg_router *r);
 /* Bonds whose line runs through another node's box routed again,
  * orthogonally round the boxes (their corners into L->lay); returns how
@@ -234,6 +240,9 @@ void bg_draw_lagrange(bg_diagram *d);
 typedef struct bg_signal_route {
   int from, from_bond, to, n;
   bg_vec *pts;
+  int branch_k;    /* >= 0: drawn from branch_at on segment branch_k, where it leaves the line
+                      of an earlier signal from the same source (a branch point, with a dot) */
+  bg_vec branch_at;
 } bg_signal_route;
 /* Routes every signal drawn (into d->routes), before the path and loop
  * layers, whose loops closed by a modulation follow them. */

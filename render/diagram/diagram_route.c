@@ -59,6 +59,7 @@ typedef struct near_index {
   /* routed signal segments: per cell a chain through sig_next */
   int *sig_head, *sig_next, *sig_seg, nsig, capsig;
   bg_vec *sa, *sb;
+  int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none */
   int nseg, capseg;
   int *seg_stamp, capstamp;
 } near_index;
@@ -160,7 +161,7 @@ static void near_build(const bg_diagram_layout *L, int nbond, const unsigned cha
 
 static void near_free(near_index *ix) {
   free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lmid), free(ix->mid), free(ix->stamp);
-  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->seg_stamp);
+  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->seg_stamp);
 }
 
 /* Calls visit for every item listed in the cells the box [x0,x1]×[y0,y1]
@@ -209,14 +210,15 @@ static void near_signals(near_index *ix, double x0, double y0, double x1, double
       }
 }
 
-static void near_add_signal(near_index *ix, bg_vec a, bg_vec b) {
+static void near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
   if (ix->nseg == ix->capseg) {
     ix->capseg = 2 * ix->capseg + 16;
     ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
     ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
+    ix->sgrp = bg_xrealloc(ix->sgrp, (size_t)ix->capseg * sizeof *ix->sgrp);
   }
   int s = ix->nseg++;
-  ix->sa[s] = a, ix->sb[s] = b;
+  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group;
   int r[4];
   cell_range(ix, fmin(a.x, b.x), fmin(a.y, b.y), fmax(a.x, b.x), fmax(a.y, b.y), r);
   for (int cy = r[1]; cy <= r[3]; cy++)
@@ -291,11 +293,15 @@ struct bg_router {
   int ncx, ncy, capc;
   double gap;             /* the grid's lines: candidates nearer than this were merged */
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
+  int group;              /* the current route's source: routes of the same one may share
+                             its lines (a signal branching), -1: none */
+  int branch_k;           /* the last route's shared stretch (bg_route_branch) */
+  bg_vec branch_at;
 };
 
 static bg_router *router_make(const bg_diagram_layout *L, int nbond, const unsigned char *skip) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
-  r->L = L;
+  r->L = L, r->group = r->branch_k = -1;
   near_build(L, nbond, skip, &r->ix);
   r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
   for (int k = 0; k < L->nnode; k++)
@@ -431,6 +437,7 @@ static double seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];
+    if (r->group >= 0 && r->ix.sgrp[s] == r->group) continue; /* its own source's: a branch */
     int hit = seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL);
     cost += hit == 1 ? COST_CROSS_SIGNAL : hit == 2 ? COST_SHARE : 0;
   }
@@ -574,6 +581,7 @@ static void grid_costs(bg_router *r) {
   }
   near_signals(&r->ix, X[0] - 3, Y[0] - 3, X[nx - 1] + 3, Y[ny - 1] + 3, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
+    if (r->group >= 0 && r->ix.sgrp[r->nl.k[jj]] == r->group) continue; /* its own source's: a branch */
     bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
     int j0, j1;
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
@@ -725,12 +733,31 @@ static void add_ports(bg_router *r, const port *ps, int nps, const port *pt, int
   for (int i = 0; i < npt; i++) add_cand(r, pt[i].stub.x, pt[i].stub.y, 1);
 }
 
+/* The lines of the earlier routes of the current route's source in the
+ * window, kept whole like a port's (at most GROUP_LINES, the earliest:
+ * the trunk nearest the source), so a route can run on them and branch
+ * off. */
+enum { GROUP_LINES = 24 };
+static void add_group_lines(bg_router *r, double wx0, double wy0, double wx1, double wy1) {
+  if (r->group < 0) return;
+  near_signals(&r->ix, wx0, wy0, wx1, wy1, &r->nl);
+  int added = 0;
+  for (int j = 0; j < r->nl.n && added < GROUP_LINES; j++) {
+    int s = r->nl.k[j];
+    if (r->ix.sgrp[s] != r->group) continue;
+    bg_vec a = r->ix.sa[s], b = r->ix.sb[s];
+    if (fabs(a.y - b.y) < 1e-9) add_cand(r, NAN, a.y, 1), added++;
+    else if (fabs(a.x - b.x) < 1e-9) add_cand(r, a.x, NAN, 1), added++;
+  }
+}
+
 /* The grid over window [wx0,wx1]×[wy0,wy1]: the ports' lines, the lanes
  * beside every node box in it, the lines between neighbouring lanes, and a
  * ring round the window. */
 static void build_grid(bg_router *r, double wx0, double wy0, double wx1, double wy1, const port *ps, int nps,
                        const port *pt, int npt) {
   add_ports(r, ps, nps, pt, npt);
+  add_group_lines(r, wx0, wy0, wx1, wy1);
   add_cand(r, wx0, wy0, 0), add_cand(r, wx1, wy1, 0);
   add_lanes(r, wx0, wy0, wx1, wy1);
   make_lines(r);
@@ -902,6 +929,75 @@ static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
   return 0;
 }
 
+/* How far along segment p-q, from p, the earlier routes of the current
+ * route's source cover it (collinear, within 0.01 pt), in pt. */
+static double group_reach(bg_router *r, bg_vec p, bg_vec q) {
+  double len = bg_vlen(bg_vsub(q, p)), reach = 0;
+  if (len <= 0) return 0;
+  bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len);
+  near_signals(&r->ix, fmin(p.x, q.x) - 1, fmin(p.y, q.y) - 1, fmax(p.x, q.x) + 1, fmax(p.y, q.y) + 1, &r->nl);
+  for (int grew = 1; grew;) {
+    grew = 0;
+    for (int j = 0; j < r->nl.n; j++) {
+      int s = r->nl.k[j];
+      if (r->ix.sgrp[s] != r->group) continue;
+      bg_vec a = bg_vsub(r->ix.sa[s], p), b = bg_vsub(r->ix.sb[s], p);
+      if (fabs(a.x * u.y - a.y * u.x) > 0.01 || fabs(b.x * u.y - b.y * u.x) > 0.01) continue;
+      double t0 = fmin(a.x * u.x + a.y * u.y, b.x * u.x + b.y * u.y), t1 = fmax(a.x * u.x + a.y * u.y, b.x * u.x + b.y * u.y);
+      if (t0 <= reach + 0.01 && fmin(t1, len) > reach + 0.01) reach = fmin(t1, len), grew = 1;
+    }
+  }
+  return reach;
+}
+
+/* Whether segment p-q runs on an earlier route of the current source for
+ * more than 1 pt anywhere (collinear, within 0.01 pt). */
+static int group_runs_on(bg_router *r, bg_vec p, bg_vec q) {
+  double len = bg_vlen(bg_vsub(q, p));
+  if (len <= 1) return 0;
+  bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len);
+  near_signals(&r->ix, fmin(p.x, q.x) - 1, fmin(p.y, q.y) - 1, fmax(p.x, q.x) + 1, fmax(p.y, q.y) + 1, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    if (r->ix.sgrp[s] != r->group) continue;
+    bg_vec a = bg_vsub(r->ix.sa[s], p), b = bg_vsub(r->ix.sb[s], p);
+    if (fabs(a.x * u.y - a.y * u.x) > 0.01 || fabs(b.x * u.y - b.y * u.x) > 0.01) continue;
+    double ta = a.x * u.x + a.y * u.y, tb = b.x * u.x + b.y * u.y;
+    if (fmin(len, fmax(ta, tb)) - fmax(0, fmin(ta, tb)) > 1) return 1;
+  }
+  return 0;
+}
+
+/* Whether the route, after where it leaves its source's earlier routes
+ * (k, at from shared_prefix; k -1: from its start), runs on them again:
+ * then it cannot be drawn as a branch. */
+static int group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec at) {
+  if (r->group < 0) return 0;
+  for (int i = k < 0 ? 0 : k; i + 1 < n; i++)
+    if (group_runs_on(r, i == k ? at : pts[i], pts[i + 1])) return 1;
+  return 0;
+}
+
+/* Where route pts[0..n-1] of the current source leaves the routes of that
+ * source before it, when it starts on them (a signal branching off the
+ * line of another from the same source, as block diagrams draw it): the
+ * index k of the segment it leaves on and the point *at, or -1 when it
+ * does not start on them or keeps on them to within 10 pt of its tip
+ * (then it is drawn whole). */
+static int shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at) {
+  if (r->group < 0 || n < 2) return -1;
+  for (int i = 0; i + 1 < n; i++) {
+    double len = bg_vlen(bg_vsub(pts[i + 1], pts[i])), reach = group_reach(r, pts[i], pts[i + 1]);
+    if (reach >= len - 0.01) continue;
+    if (i == 0 && reach <= 0.01) return -1;
+    *at = bg_vadd(pts[i], bg_vscale(bg_vsub(pts[i + 1], pts[i]), reach / len));
+    double rest = len - reach;
+    for (int k = i + 1; k + 1 < n; k++) rest += bg_vlen(bg_vsub(pts[k + 1], pts[k]));
+    return rest >= 10 ? i : -1;
+  }
+  return -1;
+}
+
 /* The route between the ports ps and pt, whose boxes are a and b: the
  * cheapest in a window round both ends (their boxes with a margin that
  * grows with their distance); boxed in, over the whole figure with a ring
@@ -936,7 +1032,12 @@ static int route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const
     n = 2;
   }
   n = simplify(pts, n);
-  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1]);
+  r->branch_k = shared_prefix(r, pts, n, &r->branch_at);
+  if (group_rejoins(r, pts, n, r->branch_k, r->branch_at)) { /* not a branch: again, keeping off them */
+    r->group = -1;
+    return route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
+  }
+  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1], r->group);
   return n;
 }
 
@@ -945,11 +1046,12 @@ static int route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const
  * its first point on the source, its last the arrow's tip 1.5 pt off the
  * target's box; returns the number of points. The route is remembered, so
  * later signals keep off it. */
-int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, bg_vec *pts, int cap) {
+int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int to, int group, bg_vec *pts,
+             int cap) {
   const bg_diagram_layout *L = r->L;
   bg_vec from_pt = bg_v(0, 0);
   port ps[20], pt[20];
-  r->from_node = from_node, r->to_node = to;
+  r->from_node = from_node, r->to_node = to, r->group = group;
   int nps = 0, npt = node_ports(r, m, to, 1.5, pt);
   if (from_node >= 0) {
     nps = node_ports(r, m, from_node, 0, ps);
@@ -1100,7 +1202,7 @@ static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned cha
   const bg_diagram_layout *L = r->L;
   int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
   port ps[8], pt[8];
-  r->from_node = t, r->to_node = h;
+  r->from_node = t, r->to_node = h, r->group = -1;
   int nps = bond_ports(r, m, t, b, blocked, taken, ps), npt = bond_ports(r, m, h, b, blocked, taken, pt);
   double a[4] = {L->nx[t] - L->nw[t] / 2, L->ny[t] - L->nh[t] / 2, L->nx[t] + L->nw[t] / 2, L->ny[t] + L->nh[t] / 2};
   double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
@@ -1146,4 +1248,9 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   lay->bendadr = adr, lay->bendn = cnt, lay->bendx = bx, lay->bendy = by, lay->nbend = used;
   free(blocked), free(taken);
   return nblocked;
+}
+
+int bg_route_branch(const bg_router *r, bg_vec *at) {
+  if (r->branch_k >= 0) *at = r->branch_at;
+  return r->branch_k;
 }

@@ -52,22 +52,44 @@ static void signal_polyline(bg_diagram *d, sigrole role, const bg_vec *pts, int 
 /* The route of the next signal: with a router, found and kept in
  * d->routes (the routing pass, bg_route_signals); without, the one kept
  * for it (the drawing pass, which walks the signals in the same order). */
-static const bg_signal_route *route_of(bg_diagram *d, bg_router *rt, int from, int from_bond, int to) {
+static const bg_signal_route *route_of(bg_diagram *d, bg_router *rt, int from, int from_bond, int to, int group) {
   if (!rt) return d->route_next < d->nroutes ? &d->routes[d->route_next++] : NULL;
   bg_vec pts[256];
-  int n = bg_route(rt, d->m, from, from_bond, to, pts, 256);
+  int n = bg_route(rt, d->m, from, from_bond, to, group, pts, 256);
   if (d->nroutes % 16 == 0)
     d->routes = bg_xrealloc(d->routes, (size_t)(d->nroutes + 16) * sizeof *d->routes);
   bg_signal_route *r = &d->routes[d->nroutes++];
-  *r = (bg_signal_route){from, from_bond, to, n, bg_arena_alloc(&d->arena, (size_t)n * sizeof *pts)};
+  *r = (bg_signal_route){from, from_bond, to, n, bg_arena_alloc(&d->arena, (size_t)n * sizeof *pts), -1, {0, 0}};
   memcpy(r->pts, pts, (size_t)n * sizeof *pts);
+  r->branch_k = bg_route_branch(rt, &r->branch_at);
   return r;
+}
+
+/* A routed signal drawn: where it branches off the line of an earlier
+ * signal from the same source, from a dot there (as block diagrams draw a
+ * signal taken off another), so no two lines are drawn on top of each
+ * other (issue 31: modladder120's 40 signals of f1 shared their stretches
+ * out of six ports); else whole. */
+static void signal_routed(bg_diagram *d, sigrole role, const bg_signal_route *r, int hot) {
+  if (r->branch_k < 0) {
+    signal_polyline(d, role, r->pts, r->n, hot);
+    return;
+  }
+  int k = r->branch_k, n = r->n - k;
+  bg_vec *pts = bg_xcalloc((size_t)n, sizeof *pts);
+  pts[0] = r->branch_at;
+  memcpy(pts + 1, r->pts + k + 1, (size_t)(n - 1) * sizeof *pts);
+  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-branch %s", role.kind, role.name);
+  it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
+  bg_scene_circle(&d->scene, pts[0].x, pts[0].y, 1.6);
+  signal_polyline(d, role, pts, n, hot);
+  free(pts);
 }
 
 /* Between two nodes, along the route from `from` to `to`. */
 static void signal_between(bg_diagram *d, bg_router *rt, sigrole role, int from, int to, int hot) {
-  const bg_signal_route *r = route_of(d, rt, from, -1, to);
-  if (!rt && r) signal_polyline(d, role, r->pts, r->n, hot);
+  const bg_signal_route *r = route_of(d, rt, from, -1, to, from);
+  if (!rt && r) signal_routed(d, role, r, hot);
 }
 
 /* Self-modulation: a loop leaving the box and coming back, on its free side. */
@@ -94,12 +116,13 @@ static int signal_from_bond(bg_diagram *d, bg_router *rt, sigrole role, const ch
   long num = strtol(var + 1, &end, 10);
   int b = *end ? -1 : bg_model_find_bond(m, (int)num);
   if (b < 0) return -1;
-  const bg_signal_route *r = route_of(d, rt, -1, b, to);
+  /* the group of a bond variable: after the nodes, two per bond (e, f) */
+  const bg_signal_route *r = route_of(d, rt, -1, b, to, d->L->nnode + 2 * b + (var[0] == 'f'));
   if (rt || !r) return 0;
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
   it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
   bg_scene_circle(&d->scene, r->pts[0].x, r->pts[0].y, 1.6);
-  signal_polyline(d, role, r->pts, r->n, hot);
+  signal_routed(d, role, r, hot);
   return 0;
 }
 

@@ -46,6 +46,7 @@ typedef struct fc_stats {
   int spine_bent;            /* bonds of the longest source-to-load chain drawn with a corner (fc_spine_bent) */
   int sig_through;           /* of lines_through, signals × element labels (a route through a node) */
   int bond_overlaps;         /* of overlaps, the pairs with a bond (a bond drawn on another line) */
+  int bare_branches;         /* signals starting on another signal's line without a branch dot (fc_bare_branches) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -561,7 +562,50 @@ static inline int fc_arrangement(const bg_scene *a, const bg_scene *b) {
   return n;
 }
 
+/* Issue 31, signals branching: a signal line that starts on another
+ * signal's line, more than 0.5 pt from that line's start, is a signal
+ * taken off the other (as block diagrams draw one signal splitting); it
+ * needs a dot there (a "signal-branch" or "state-input-branch" fill
+ * centred within 1 pt), else it reads as a line ending on a line. */
+static int fc_bare_branches(const bg_scene *s, const fc_scene *f) {
+  int ndot = 0, bare = 0;
+  double(*dot)[2] = malloc(((size_t)s->nitem + 1) * sizeof *dot);
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    if (it->kind != BG_ITEM_FILL || !(fc_starts(it->role, "signal-branch") || fc_starts(it->role, "state-input-branch")))
+      continue;
+    fc_seg *seg;
+    int n = fc_flatten(s, it, &seg);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (int k = 0; k < n; k++)
+      x0 = fmin(x0, fmin(seg[k].x0, seg[k].x1)), x1 = fmax(x1, fmax(seg[k].x0, seg[k].x1)),
+      y0 = fmin(y0, fmin(seg[k].y0, seg[k].y1)), y1 = fmax(y1, fmax(seg[k].y0, seg[k].y1));
+    free(seg);
+    if (n) dot[ndot][0] = (x0 + x1) / 2, dot[ndot++][1] = (y0 + y1) / 2;
+  }
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *l = &f->line[j];
+    if (l->kind != FC_SIGNAL || l->nseg < 1) continue;
+    double x = l->seg[0].x0, y = l->seg[0].y0;
+    int on = 0;
+    for (int k = 0; k < f->nline && !on; k++) {
+      const fc_line *m = &f->line[k];
+      if (k == j || m->kind != FC_SIGNAL || m->nseg < 1 || hypot(x - m->seg[0].x0, y - m->seg[0].y0) <= 0.5) continue;
+      for (int q = 0; q < m->nseg && !on; q++) on = fc_pt_seg(x, y, &m->seg[q]) < 0.5;
+    }
+    int marked = 0;
+    for (int d = 0; on && d < ndot && !marked; d++) marked = hypot(x - dot[d][0], y - dot[d][1]) <= 1;
+    if (on && !marked) {
+      bare++;
+      if (fc_explain) printf("  signal %s starts on another signal's line without a branch dot\n", l->name);
+    }
+  }
+  free(dot);
+  return bare;
+}
+
 static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
+  st->bare_branches += fc_bare_branches(s, f);
   for (int j = 0; j < f->nline; j++) {
     const fc_line *l = &f->line[j];
     if (l->kind == FC_BOND) st->tiny_bonds += fc_tiny(l);
