@@ -117,17 +117,22 @@ static void eq_junction(derive *d, int e) {
   bg_eqsys *s = d->s;
   const bg_model *m = s->m;
   int zero = m->elem_kind[e] == BG_ELEM_J0, fl = zero ? 1 : 0, common = 1 - fl;
-  int s0 = -1;
+  /* The strong bond that computes the balance (the others' balances are
+   * residuals: a type 2 conflict) and, without one, the bond whose variable
+   * is solved implicitly: the lowest bond number, not the first bond
+   * statement, so reordering the statements keeps the equations (the
+   * analysis names the same ones; docs/property.md, finding 20). */
+  int s0 = -1, w0 = -1;
   for (int i = 0; i < m->elem_nbond[e]; i++) {
     int b = m->elem_bonds[m->elem_bondadr[e] + i];
-    if (recv_e(s, e, b) == zero && s0 < 0) s0 = b;
+    if (recv_e(s, e, b) == zero && (s0 < 0 || m->bond_num[b] < m->bond_num[s0])) s0 = b;
+    if (w0 < 0 || m->bond_num[b] < m->bond_num[w0]) w0 = b;
   }
   if (s0 < 0) { /* type 1 conflict: no strong bond; balance solved implicitly */
-    int w0 = m->elem_bonds[m->elem_bondadr[e]];
     set_eq(d, 2 * w0 + common, EQF_IMPLICIT, junction_sum(s, e, fl, -1, 1), e, "balance");
-    for (int i = 1; i < m->elem_nbond[e]; i++) {
+    for (int i = 0; i < m->elem_nbond[e]; i++) {
       int w = m->elem_bonds[m->elem_bondadr[e] + i];
-      set_eq(d, 2 * w + common, EQF_EXPLICIT, n_sig(s, 2 * w0 + common), e, "junction");
+      if (w != w0) set_eq(d, 2 * w + common, EQF_EXPLICIT, n_sig(s, 2 * w0 + common), e, "junction");
     }
     return;
   }

@@ -74,26 +74,41 @@ static int solve(lagnewton *L, double t, int maxit) {
 }
 
 /* Newton's rounding leaves a component whose solution is 0 (a store that a
- * constraint fixes at 0) at values like 1e-49 rather than 0, different for
- * each order of the equations; a cubic law's slope there is 1e-98, which
- * the scaling of the index check at the initial point took for a real
- * entry: one order of a model reduced its index and the other failed
- * (docs/property.md, finding 2c). Components below 1e-30 of the largest are
- * set to 0, kept when the residual stays as small. */
+ * constraint fixes at 0) at values like 1e-27 or 1e-49 rather than 0,
+ * different for each order of the equations; a cubic law's slope there is
+ * 1e-53 or 1e-98, which the scaling of the index check at the initial point
+ * took for a real entry: one order of a model reduced its index and the
+ * other failed (docs/property.md, findings 2c and 20). Newton stops when
+ * its step is below 1e-12 of the largest unknown, so a component below
+ * that is not known to differ from 0. The components below a level are set
+ * to 0 together when the residual stays as small (within the rows'
+ * rounding), the levels from Newton's own tolerance down (1e-12, 1e-18,
+ * 1e-24, 1e-30 of the largest): the first that holds decides. A level is a
+ * set of components, the same in every order of the equations; one
+ * component that the residual needs (a rate of 1e-13 that is real) keeps
+ * the level's others too, and the next level down is tried. */
 static void snap_zeros(lagnewton *L, double t) {
-  int n = L->n, nsnap = 0;
+  static const double level[] = {1e-12, 1e-18, 1e-24, 1e-30};
+  int n = L->n;
   double umax = 0, r0 = max_abs(L->r, n);
   for (int k = 0; k < n; k++) umax = fmax(umax, fabs(*unknown(L, k)));
-  double *keep = bg_xmalloc((size_t)n * sizeof(double));
-  for (int k = 0; k < n; k++) {
-    double *u = unknown(L, k);
-    keep[k] = *u;
-    if (*u != 0 && fabs(*u) <= 1e-30 * (1 + umax)) *u = 0, nsnap++;
+  double *keep = bg_xmalloc((size_t)n * sizeof(double)), tol = fmax(r0, 1e-15 * (1 + umax));
+  for (int k = 0; k < n; k++) keep[k] = *unknown(L, k);
+  for (size_t q = 0; q < sizeof level / sizeof *level; q++) {
+    int nsnap = 0;
+    for (int k = 0; k < n; k++) {
+      double *u = unknown(L, k);
+      *u = keep[k];
+      if (*u != 0 && fabs(*u) <= level[q] * (1 + umax)) *u = 0, nsnap++;
+    }
+    if (!nsnap) break;
+    if (!bg_eqsys_residual(L->s, t, L->y, L->yp, L->r) && max_abs(L->r, n) <= tol) {
+      free(keep);
+      return;
+    }
   }
-  if (nsnap && (bg_eqsys_residual(L->s, t, L->y, L->yp, L->r) || max_abs(L->r, n) > fmax(r0, 1e-15 * (1 + umax)))) {
-    for (int k = 0; k < n; k++) *unknown(L, k) = keep[k];
-    bg_eqsys_residual(L->s, t, L->y, L->yp, L->r);
-  }
+  for (int k = 0; k < n; k++) *unknown(L, k) = keep[k];
+  bg_eqsys_residual(L->s, t, L->y, L->yp, L->r);
   free(keep);
 }
 

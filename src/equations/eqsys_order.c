@@ -74,7 +74,18 @@ static int self_dep(const bg_eqsys *s, int v) {
   return 0;
 }
 
-/* The vertex with the most edges inside its component. */
+/* Signal v before signal u in a tie: by bond number, the effort first. The
+ * signals' indices follow the order of the bond statements, and a tie
+ * broken by them tore e4 in one order of a model and e9 in another: the
+ * equations differed by the conflict's constraint, a switching condition
+ * identically 0 read rounding noise in one order and chattered
+ * (docs/property.md, finding 20). */
+static int sig_before(const bg_eqsys *s, int v, int u) {
+  int bv = s->m->bond_num[v / 2], bu = s->m->bond_num[u / 2];
+  return bv != bu ? bv < bu : v % 2 < u % 2;
+}
+
+/* The vertex with the most edges inside its component; ties by bond number. */
 static int best_tear(const bg_eqsys *s, const tarjan *T, int k, int *cnt) {
   int a0 = T->cadr[k], a1 = T->cadr[k + 1], best = -1, bestc = -1;
   for (int i = a0; i < a1; i++) cnt[T->ord[i]] = 0;
@@ -87,7 +98,7 @@ static int best_tear(const bg_eqsys *s, const tarjan *T, int k, int *cnt) {
   }
   for (int i = a0; i < a1; i++) {
     int v = T->ord[i];
-    if (cnt[v] > bestc || (cnt[v] == bestc && v < best)) best = v, bestc = cnt[v];
+    if (cnt[v] > bestc || (cnt[v] == bestc && sig_before(s, v, best))) best = v, bestc = cnt[v];
   }
   return best;
 }

@@ -194,6 +194,56 @@ reordered "$m" 38 >"$tmp/r38.bg"
 "$bg" "$tmp/r38.bg" -o "$tmp/r38.csv" 2>/dev/null
 check "seed38 reordered: exit 0 (was 3 at the step, t = 0.967)" '[ $? -eq 0 ]'
 check "seed38 reordered: the same trajectories to 1e-6" 'same_runs "$tmp/a38.csv" "$tmp/r38.csv" 1e-6'
+# Finding 20: four models that reduced their index in their own order and
+# refused in the campaign's other one (exit 3, "a singular pencil at the
+# initial point", or chattering at a switch). Seeds 1726 and 6348: Newton
+# left components whose solution is 0 at 1e-27 and 1e-30 (not 0) in one
+# order, and their cubic laws' slopes there (1e-53) upset the index check's
+# scaling; seeds 5817 and 6752: the junction of a type 2 conflict took its
+# first bond statement's balance, so the orders tore f4 or f9 (f3 or f29),
+# and in one order R2's flow, identically 0, read rounding noise and its
+# law's switch chattered. Both orders: exit 0, the same dummy derivatives,
+# the same constraints differentiated (the same torn variables) and the
+# same trajectories (to the runs' accuracy: 2e-7 of a range at most);
+# the statements reversed too (r: the campaign's order, exit 3 before the
+# fix; v: reversed, exit 3 before it for 5817 and 6752).
+same_reduction() { # A.json B.json: the same dummy derivatives and differentiated equations
+  python3 - "$1" "$2" <<'PY'
+import json, re, sys
+def red(p):
+    r = json.load(open(p))["index"]["reduction"]
+    # what was differentiated (the constraint's store, the conflict's torn
+    # variable), without the causal paths (numbered and listed in the order
+    # of the statements) and the printed product's order of factors
+    return sorted(r["dummy_derivatives"]), sorted(re.sub(r"; causal path [^;:]*", "", d.split(": 0 = ")[0])
+                                                  for d in r["differentiated"])
+sys.exit(not (red(sys.argv[1]) == red(sys.argv[2]) and red(sys.argv[1])[0]))
+PY
+}
+reversed_lines() { # the statements between the last `end` (or `model`) and `simulate` reversed
+  python3 - "$1" <<'PY'
+import sys
+L = open(sys.argv[1]).read().split("\n")
+a = max(i for i, l in enumerate(L) if l.startswith("end") or l.startswith("model")) + 1
+b = next(i for i, l in enumerate(L) if l.startswith("simulate"))
+sys.stdout.write("\n".join(L[:a] + L[a:b][::-1] + L[b:]))
+PY
+}
+for sd in 1726:1e-9 5817:1e-7 6348:1e-6 6752:1e-9; do
+  s=${sd%%:*} tol=${sd#*:}
+  m=$here/found/seed${s}_reorder_reduced.bg
+  "$bg" "$m" --simulate -o "$tmp/a$s.json" -o "$tmp/a$s.csv" 2>/dev/null
+  check "seed$s: exit 0, the index reduced" '[ $? -eq 0 ] && same_reduction "$tmp/a$s.json" "$tmp/a$s.json"'
+  reordered "$m" "$s" >"$tmp/r$s.bg"
+  reversed_lines "$m" >"$tmp/v$s.bg"
+  for o in r v; do
+    "$bg" "$tmp/$o$s.bg" --simulate -o "$tmp/$o$s.json" -o "$tmp/$o$s.csv" 2>/dev/null
+    check "seed$s $o: exit 0" '[ $? -eq 0 ]'
+    check "seed$s $o: the same dummy derivatives and differentiated equations" \
+      'same_reduction "$tmp/a$s.json" "$tmp/$o$s.json"'
+    check "seed$s $o: the same trajectories to $tol" 'same_runs "$tmp/a$s.csv" "$tmp/$o$s.csv" $tol'
+  done
+done
 # Finding 17c: seeds 897 and 5582, every element renamed x0.. in the natural
 # order of the old names: the numbers bit for bit. The index reduction's
 # searches went by the unknowns' text, which puts a bond's variable "e20"

@@ -223,6 +223,29 @@ static void test_error_message(void) {
   efx_free(&f);
 }
 
+/* A type 2 conflict at a 0-junction (relaxed causality: the nonlinear R1
+ * keeps its law's causality and imposes the effort the source imposes): the
+ * balance goes to the strong bond of lowest number (bond 3, R1), so S1's flow
+ * is the torn unknown whichever bond statement comes first. Before, the
+ * first statement's bond took the balance: R1.f in this order, S1.f in the
+ * other (issue 30, docs/property.md finding 20). */
+static void test_conflict_order(void) {
+  const char *head = "model conflict_order\nSe S1 = 1\n0 j\nR R1 : e = 2*f + 0.1*f^3\nC C1 = 1\n";
+  const char *bonds[2] = {"bond 7 S1 -> j\nbond 3 j -> R1\nbond 5 j -> C1\n",
+                          "bond 3 j -> R1\nbond 5 j -> C1\nbond 7 S1 -> j\n"};
+  for (int o = 0; o < 2; o++) {
+    char src[512];
+    snprintf(src, sizeof src, "%s%ssimulate t_end = 1\n", head, bonds[o]);
+    efx f;
+    OK(efx_load(&f, NULL, src, BG_METHOD_RELAXED, NULL, 0) == 0);
+    if (f.s) {
+      BG_T_REPORT(efx_u(&f, "S1.f") >= 0 && efx_u(&f, "R1.f") < 0, "order %d: S1.f torn, not R1.f", o);
+      INT_EQ(bg_eqsys_n(f.s), 2);
+    }
+    efx_free(&f);
+  }
+}
+
 static void test_all_build(void) {
   const char *ex[] = {"rlc", "bond_loop", "bridge_compliance", "class12_paths", "delta",
                       "hydraulic_bridge", "internal_mod_r", "internal_mod_tf", "loop_class1",
@@ -249,6 +272,7 @@ int main(void) {
   test_hydraulic_bridge();
   test_exact_singular();
   test_error_message();
+  test_conflict_order();
   test_all_build();
   return bg_t_done();
 }
