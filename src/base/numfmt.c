@@ -163,8 +163,14 @@ static uint64_t scaled_floor(const bn *S, uint64_t c, const bn *D, int d_shift, 
 /* %g's text for the p-digit decimal q 10^(E - p + 1) (q of exactly p
  * digits), written by hand: snprintf would cost more than the rest. */
 static void put_g(char *buf, size_t size, int neg, uint64_t q, int p, int E) {
+  static const char two_digits[201] =
+      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+      "8081828384858687888990919293949596979899";
   char dig[24], out[48];
-  for (int i = p - 1; i >= 0; i--) dig[i] = (char)('0' + q % 10), q /= 10;
+  int i = p;
+  for (; i >= 2; i -= 2) memcpy(dig + i - 2, two_digits + 2 * (q % 100), 2), q /= 100;
+  if (i == 1) dig[0] = (char)('0' + q);
   int nd = p;
   while (nd > 1 && dig[nd - 1] == '0') nd--; /* trailing zeros go */
   size_t o = 0;
