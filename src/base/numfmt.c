@@ -38,7 +38,7 @@ static const uint64_t pow10_u64[18] = {
 
 /* A non-negative integer in 64-bit limbs, least significant first; n limbs
  * used, the top one non-zero (n = 0 is zero). The numerators c S stay below
- * 2^850 (5^341 4m at the smallest subnormal, k one above log10's guess), the
+ * 2^850 (5^341 4m: 5^340 at the smallest subnormal and a margin of one), the
  * denominators below 2^690 (4 5^293 near DBL_MAX): 20 limbs (1 280 bits)
  * leave room for the products and shifts in bn_div. */
 enum { BN_LIMBS = 20 };
@@ -169,8 +169,14 @@ static void put_g(char *buf, size_t size, int neg, uint64_t q, int p, int E) {
       "8081828384858687888990919293949596979899";
   char dig[24], out[48];
   int i = p;
-  for (; i >= 2; i -= 2) memcpy(dig + i - 2, two_digits + 2 * (q % 100), 2), q /= 100;
-  if (i == 1) dig[0] = (char)('0' + q);
+  if (i > 8) { /* the low 8 digits in 32 bits: cheaper divisions */
+    uint32_t low = (uint32_t)(q % 100000000);
+    q /= 100000000;
+    for (int j = 0; j < 4; j++, i -= 2) memcpy(dig + i - 2, two_digits + 2 * (low % 100), 2), low /= 100;
+  }
+  uint32_t high = (uint32_t)q; /* below 10^9 */
+  for (; i >= 2; i -= 2) memcpy(dig + i - 2, two_digits + 2 * (high % 100), 2), high /= 100;
+  if (i == 1) dig[0] = (char)('0' + high);
   int nd = p;
   while (nd > 1 && dig[nd - 1] == '0') nd--; /* trailing zeros go */
   size_t o = 0;
@@ -204,12 +210,16 @@ static void num_format_exact(char *buf, size_t size, double v, int min_digits) {
   if (bexp) m |= 1ull << 52; /* normal: the hidden bit; subnormal: 2^-1074 units */
   int e = (bexp ? bexp : 1) - 1075;
   int pow2 = bexp > 1 && m == (1ull << 52); /* the double below is half as far */
-  int k = 16 - (int)floor(log10(fabs(v)));
+  /* 2^e2 <= |v| < 2^(e2+1), so floor(log10 |v|) is L or L + 1; L from a
+   * double, exact since e2 log10(2) is never within 1e-4 of an integer but
+   * at e2 = 0 (cheaper than log10 of v) */
+  int e2 = 63 - __builtin_clzll(m) + e;
+  int k = 16 - (int)floor(e2 * 0.30102999566398120);
   bn S, D;
   uint64_t X;
   int d_shift;
   int x_exact, x_half;
-  for (;;) { /* log10 may be one off: k moves (once) until 1e16 <= X < 1e17 */
+  for (;;) { /* k moves (once) until 1e16 <= X < 1e17 */
     int t = k + e; /* |v| 10^k = m 5^k 2^t = 4m S / D */
     bn_set(&S, 1), bn_set(&D, 4);
     bn_mul_pow5(k >= 0 ? &S : &D, k >= 0 ? k : -k);
