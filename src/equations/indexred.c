@@ -429,6 +429,7 @@ static int reduce(ir_work *W, bg_indexred *out) {
   if (setup(W) || structurally_regular(W) || pantelides(W)) return -1;
   for (int e = 0; e < W->ne; e++) out->ndiff += W->e_anti[e] >= 0;
   if (out->ndiff == 0) {
+    out->structural_le1 = 1;
     snprintf(W->why, sizeof W->why, "the structure of the equations has index 1 or 0 (Pantelides "
              "differentiates nothing), so the index above 1 comes from values the structure "
              "does not show; no structural reduction applies");

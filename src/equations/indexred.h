@@ -19,6 +19,8 @@ typedef struct bg_indexred {
   bg_eqsys *reduced;  /* owned; NULL unless status 1; borrows s's model and analysis */
   int index;          /* numeric index of the reduced system (Algorithm 4.1), or < 0 */
   int ndiff;          /* differentiations (an equation differentiated twice counts 2) */
+  int structural_le1; /* failed because Pantelides differentiated nothing: the
+                       * structure of the equations has index 0 or 1 */
   int nconstraint;    /* the original equations that were differentiated, in words */
   char **constraint;
   int nlost;          /* stores and states that lost their state, in words */
