@@ -147,6 +147,12 @@ static void say_numeric(const bg_analysis *a, const bg_index_facts *f, bg_strbuf
                  "gets an integration (Section 4.3).");
 }
 
+/* The equations linearised at the initial point have numeric index 0 or 1
+ * (computed, not skipped): the fact both exceptions below rest on. */
+static int numeric_at_most_1(const bg_index_facts *f) {
+  return f && bg_index_facts_numeric_set(f) && f->numeric->index >= 0 && f->numeric->index <= 1;
+}
+
 /* An algebraic loop of gain 1 at the initial point makes its own loop
  * equation singular, but the algebraic equations are singular only when
  * the determinant of all the loops that touch it is (Mason's rule: two
@@ -155,7 +161,7 @@ static void say_numeric(const bg_analysis *a, const bg_index_facts *f, bg_strbuf
  * equations linearised at the same point, decides: 0 or 1 computed there
  * means the algebraic rows are regular, and nothing is refused for the loop. */
 static int singular_tloop(const bg_analysis *a, const bg_index_facts *f) {
-  if (f && bg_index_facts_numeric_set(f) && f->numeric->index >= 0 && f->numeric->index <= 1) return -1;
+  if (numeric_at_most_1(f)) return -1;
   for (int t = 0; t < a->ntloop; t++) {
     /* the open loop of a class 5 causal loop the analysis found harmless
      * (class5_loop): its constraint determines the other loop variable */
@@ -202,8 +208,7 @@ static int structurally_singular(const bg_index_facts *f) {
  * numeric index not computed) the prediction stands. */
 static int prediction_contradicted(const bg_index_facts *f) {
   const bg_indexred *ir = f ? f->reduction : NULL;
-  return ir && ir->status < 0 && ir->structural_le1 && bg_index_facts_numeric_set(f) &&
-         f->numeric->index >= 0 && f->numeric->index <= 1;
+  return ir && ir->status < 0 && ir->structural_le1 && numeric_at_most_1(f);
 }
 
 /* Refusals an index reduction can lift: a class 5 loop, an algebraic loop of
