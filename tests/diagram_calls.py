@@ -11,7 +11,8 @@ LEVELS = [
     ["diagram_geom", "diagram_place", "diagram_route", "layout_rows"],  # helpers
     ["layout"],                                                # Graphviz
     ["diagram_grid", "diagram_layers", "diagram_marks", "diagram_signals", "diagram_parts",
-     "diagram_fields", "diagram_frames", "diagram_dot", "diagram_tips", "diagram_bonds"],  # passes
+     "diagram_fields", "diagram_frames", "diagram_dot", "diagram_tips", "diagram_bonds",
+     "diagram_route_bonds"],  # passes
     ["diagram"],                                               # the driver
     ["render", "render_versions"],                             # the front door
 ]

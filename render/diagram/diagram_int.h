@@ -98,7 +98,7 @@ struct bg_diagram {
  *   diagram_geom.c, diagram_place.c, diagram_route.c  where bonds run; text placement; signal routes
  *   passes: diagram_grid.c (layout stage), diagram_bonds.c, diagram_layers.c, diagram_marks.c,
  *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
- *           diagram_frames.c, diagram_dot.c, diagram_tips.c
+ *           diagram_frames.c, diagram_dot.c, diagram_tips.c, diagram_route_bonds.c
  *   diagram.c  the driver: layout stage, then the scene stage calling each pass
  *   render.c   the front door (render.h) */
 
@@ -175,9 +175,10 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
 
 
 /* Orthogonal signal routes (diagram_route.c): a router holds the layout's
- * nodes and bond legs in a grid of cells and the routes given so far. */
+ * nodes and bond legs in a grid of cells and the routes given so far; the
+ * legs of bonds marked in skip (nullable) are left out, as if not drawn. */
 typedef struct bg_router bg_router;
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond);
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip);
 /* The route from node from_node (or, when it is < 0, from the middle of
  * bond from_bond or near it) to node `to`: a polyline of horizontal and
  * vertical legs into pts (at most cap points), the first on the source,
@@ -190,8 +191,8 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
  * and the point (*at); -1 when it does not share its start. */
 int bg_route_branch(const bg_router *r, bg_vec *at);
 void bg_router_free(bg_router *r);
-/* Bonds whose line runs through another node's box routed again,
- * orthogonally round the boxes (their corners into L->lay); returns how
+/* Bonds whose line runs through another node's box routed again
+ * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how
  * many. Call bg_geom_bonds again when it did any. */
 int bg_route_blocked_bonds(bg_diagram_layout *L);
 

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diagram/diagram_int.h"
+#include "diagram/diagram_route_int.h"
 
 enum { MAXLINES = 72 };
 /* Costs in points of line length. */
@@ -34,7 +34,6 @@ enum { MAXLINES = 72 };
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
 #define LANE 10.0             /* the channel lines' distance from a box */
-#define STUB 10.0
 /* The whole figure's grid is searched only where thinning it to MAXLINES
  * merged no candidate lines further apart than this: a coarser grid's
  * lines run through the boxes (the 1 000-signal network's whole-figure
@@ -43,32 +42,6 @@ enum { MAXLINES = 72 };
 #define FALLBACK_GAP (4 * LANE)             /* the straight run off a port, and onto one */
 
 /* ---------------------------------------------------------------- the near index */
-/* A uniform grid of cells over the layout, each listing the nodes whose box
- * (grown by 3 pt) and the bond legs whose bounding box meet it, so a query
- * tests what is near a segment instead of every node and bond. Routed
- * signal segments are added as they are drawn (a list per cell). */
-typedef struct near_index {
-  double x0, y0, cell;
-  int nx, ny;
-  int *adr, *item; /* per cell (CSR): nodes k as k, legs as nnode + leg */
-  int nnode, nleg;
-  bg_vec *la, *lb; /* legs' ends */
-  unsigned char *lmid; /* the leg holds its bond's middle (where the number goes) */
-  bg_vec *mid;
-  int *stamp, tick;
-  /* routed signal segments: per cell a chain through sig_next */
-  int *sig_head, *sig_next, *sig_seg, nsig, capsig;
-  bg_vec *sa, *sb;
-  int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none */
-  int nseg, capseg;
-  int *seg_stamp, capstamp;
-} near_index;
-
-static bg_vec leg_end(const bg_diagram_layout *L, int b, int i) {
-  const bg_bond_geom *g = &L->bg[b];
-  if (i < 0) return g->tail;
-  return i == g->bendn ? g->head : bg_v(L->lay.bendx[g->bendadr + i], L->lay.bendy[g->bendadr + i]);
-}
 
 static void cell_range(const near_index *ix, double x0, double y0, double x1, double y1, int r[4]) {
   r[0] = (int)floor((x0 - ix->x0) / ix->cell), r[1] = (int)floor((y0 - ix->y0) / ix->cell);
@@ -108,7 +81,7 @@ static void near_build(const bg_diagram_layout *L, int nbond, const unsigned cha
   ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
   for (int b = 0, k = 0; b < nbond; b++) {
     for (int i = 0; !leg_skipped(L, skip, b) && i <= L->bg[b].bendn; i++, k++) {
-      ix->la[k] = leg_end(L, b, i - 1), ix->lb[k] = leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
+      ix->la[k] = bg_route_leg_end(L, b, i - 1), ix->lb[k] = bg_route_leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
       double dx = ix->lb[k].x - ix->la[k].x, dy = ix->lb[k].y - ix->la[k].y, l2 = dx * dx + dy * dy;
       double t = l2 > 0 ? ((L->bg[b].mid.x - ix->la[k].x) * dx + (L->bg[b].mid.y - ix->la[k].y) * dy) / l2 : 0;
       t = t < 0 ? 0 : t > 1 ? 1 : t;
@@ -164,13 +137,8 @@ static void near_free(near_index *ix) {
   free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->seg_stamp);
 }
 
-/* Calls visit for every item listed in the cells the box [x0,x1]×[y0,y1]
- * (grown by `grow`) meets, each once. */
-typedef struct near_list {
-  int *k, n, cap;
-} near_list;
 
-static void near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
+void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
   int r[4];
   cell_range(ix, x0, y0, x1, y1, r);
   ix->tick++;
@@ -266,40 +234,9 @@ static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double 
 }
 
 /* ---------------------------------------------------------------- the router */
-typedef struct heap_entry {
-  double f, g; /* estimate, cost so far */
-  int s;       /* state */
-} heap_entry;
 
-struct bg_router {
-  const bg_diagram_layout *L;
-  near_index ix;
-  near_list nl;
-  double fx0, fy0, fx1, fy1; /* the figure's box */
-  /* the current search */
-  double *X, *Y;
-  int nxl, nyl;
-  unsigned char *prio_x, *prio_y;
-  double *hcost, *vcost; /* per edge (grid_costs) */
-  double *hv;            /* per vertex: the search's estimate, NAN until asked */
-  double *g;
-  int *parent;
-  struct heap_entry *heap;
-  int nheap, capheap;
-  int cap_states, cap_lines;
-  /* candidates */
-  double *cx, *cy;
-  unsigned char *cpx, *cpy;
-  int ncx, ncy, capc;
-  double gap;             /* the grid's lines: candidates nearer than this were merged */
-  int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
-  int group;              /* the current route's source: routes of the same one may share
-                             its lines (a signal branching), -1: none */
-  int branch_k;           /* the last route's shared stretch (bg_route_branch) */
-  bg_vec branch_at;
-};
 
-static bg_router *router_make(const bg_diagram_layout *L, int nbond, const unsigned char *skip) {
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
   r->L = L, r->group = r->branch_k = -1;
   near_build(L, nbond, skip, &r->ix);
@@ -317,8 +254,6 @@ static bg_router *router_make(const bg_diagram_layout *L, int nbond, const unsig
   }
   return r;
 }
-
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond) { return router_make(L, nbond, NULL); }
 
 void bg_router_free(bg_router *r) {
   if (!r) return;
@@ -410,10 +345,10 @@ static double point_seg(bg_vec c, bg_vec p, bg_vec q) {
 }
 
 /* What a segment p-q costs: its length, and the penalties for what it meets. */
-static double seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
+double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   const bg_diagram_layout *L = r->L;
   double cost = bg_vlen(bg_vsub(q, p)), x0 = fmin(p.x, q.x), x1 = fmax(p.x, q.x), y0 = fmin(p.y, q.y), y1 = fmax(p.y, q.y);
-  near_box(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  bg_near_box(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int k = r->nl.k[j];
     if (k < L->nnode) {
@@ -539,7 +474,7 @@ static void grid_costs(bg_router *r) {
     for (int i = 0; i + 1 < nx; i++) r->hcost[j * nx + i] = X[i + 1] - X[i];
   for (int j = 0; j < nx; j++)
     for (int i = 0; i + 1 < ny; i++) r->vcost[j * ny + i] = Y[i + 1] - Y[i];
-  near_box(&r->ix, X[0] - HUG, Y[0] - HUG, X[nx - 1] + HUG, Y[ny - 1] + HUG, &r->nl);
+  bg_near_box(&r->ix, X[0] - HUG, Y[0] - HUG, X[nx - 1] + HUG, Y[ny - 1] + HUG, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) {
     int k = r->nl.k[jj], j0, j1, i0, i1;
     if (k < L->nnode) { /* a box grown by 2 pt: the lines through it */
@@ -591,17 +526,7 @@ static void grid_costs(bg_router *r) {
   }
 }
 
-/* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */
-typedef struct port {
-  bg_vec at;    /* on the box (or the bond) */
-  bg_vec stub;  /* STUB pt out along the normal: a grid vertex */
-  int dir;      /* the normal: 0 +x, 1 -x, 2 +y, 3 -y */
-  double base;  /* of the port itself (a corner) */
-  double cost;  /* and of its stub */
-  int diag;     /* a bond's diagonal way out of a box whose sides are taken: at is stub */
-} port;
 
-static const bg_vec DIRV[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 /* Whether a point of node n's box side is clear of the bonds that end there
  * (6 pt from a bond's end on the box). */
@@ -889,8 +814,8 @@ static int route_grid(bg_router *r, port *ps, int nps, port *pt, int npt, double
   *cost = INFINITY;
   if (r->gap > max_gap) return 0;
   snap_ports(r, ps, nps), snap_ports(r, pt, npt);
-  for (int i = 0; i < nps; i++) ps[i].cost = ps[i].base + seg_cost(r, ps[i].at, ps[i].stub, r->from_node);
-  for (int i = 0; i < npt; i++) pt[i].cost = pt[i].base + seg_cost(r, pt[i].stub, pt[i].at, r->to_node);
+  for (int i = 0; i < nps; i++) ps[i].cost = ps[i].base + bg_route_seg_cost(r, ps[i].at, ps[i].stub, r->from_node);
+  for (int i = 0; i < npt; i++) pt[i].cost = pt[i].base + bg_route_seg_cost(r, pt[i].stub, pt[i].at, r->to_node);
   int n = 0;
   *cost = search(r, ps, nps, pt, npt, pts, cap, &n);
   return n;
@@ -925,7 +850,7 @@ static int route_outside(bg_router *r, port *ps, int nps, port *pt, int npt, con
 /* Whether p lies on bond b's line (within 0.5 pt), its half arrow not counted. */
 static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
   for (int i = 0; i <= L->bg[b].bendn; i++)
-    if (point_seg(p, leg_end(L, b, i - 1), leg_end(L, b, i)) < 0.5) return 1;
+    if (point_seg(p, bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i)) < 0.5) return 1;
   return 0;
 }
 
@@ -1005,7 +930,7 @@ static int shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at) {
  * the figure, was as fine); still through a box, round the outside. The
  * route is simplified and remembered, so later routes keep off it. Returns
  * the number of points: pts[0] on a source port, the last on a target's. */
-static int route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
+int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
                        bg_vec *pts, int cap) {
   double wx0 = fmin(a[0], b[0]), wx1 = fmax(a[2], b[2]), wy0 = fmin(a[1], b[1]), wy1 = fmax(a[3], b[3]);
   double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
@@ -1035,7 +960,7 @@ static int route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const
   r->branch_k = shared_prefix(r, pts, n, &r->branch_at);
   if (group_rejoins(r, pts, n, r->branch_k, r->branch_at)) { /* not a branch: again, keeping off them */
     r->group = -1;
-    return route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
+    return bg_route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
   }
   for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1], r->group);
   return n;
@@ -1077,177 +1002,7 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
   double ends[2][4] = {{ax0, ay0, ax1, ay1},
                        {L->nx[to] - L->nw[to] / 2, L->ny[to] - L->nh[to] / 2, L->nx[to] + L->nw[to] / 2,
                         L->ny[to] + L->nh[to] / 2}};
-  return route_ports(r, ps, nps, pt, npt, ends[0], ends[1], pts, cap);
-}
-
-/* ---------------------------------------------------------------- bonds round the labels */
-/* A bond is drawn straight between its nodes' centres by the rows layout
- * and the other engines, and where the grid pass finds no free cells; such
- * a line can run through another node's label (issue 31: 130 of the
- * 300-signal reaction network's bonds in the rows layout, the reaction
- * rings' chords). Those bonds are routed like the signals, orthogonally
- * round the boxes: out of a free side's middle, so the first and last legs
- * run straight out of the centre as a bond's do, or, from a box whose four
- * sides are taken, out of a corner on a short diagonal. */
-#define COST_DIAG 60.0 /* a bond's diagonal way out: a slanted leg */
-
-/* Whether segment a-b meets the box [x0,x1]×[y0,y1] (Liang-Barsky). */
-static int seg_box(bg_vec a, bg_vec b, double x0, double y0, double x1, double y1) {
-  double t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
-  double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
-  for (int i = 0; i < 4; i++) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return 0;
-      continue;
-    }
-    double t = q[i] / p[i];
-    if (p[i] < 0 && t > t0) t0 = t;
-    if (p[i] > 0 && t < t1) t1 = t;
-    if (t0 >= t1) return 0;
-  }
-  return 1;
-}
-
-/* The node a bond's end is drawn at: a collapsed box, a field's node. */
-static int end_node(const bg_diagram_layout *L, int e) {
-  int n = L->node_of[e];
-  return L->rep ? L->rep[n] : n;
-}
-
-/* Whether bond b's line runs through a node box other than its ends' (the
- * box 0.5 pt inside, so a line along its edge is clear). */
-static int bond_blocked(bg_router *r, const bg_model *m, int b) {
-  const bg_diagram_layout *L = r->L;
-  if ((L->bond_hidden && L->bond_hidden[b]) || L->bg[b].spln) return 0;
-  int t = end_node(L, m->bond_tail[b]), h = end_node(L, m->bond_head[b]);
-  for (int i = 0; i <= L->bg[b].bendn; i++) {
-    bg_vec a = leg_end(L, b, i - 1), c = leg_end(L, b, i);
-    near_box(&r->ix, fmin(a.x, c.x), fmin(a.y, c.y), fmax(a.x, c.x), fmax(a.y, c.y), &r->nl);
-    for (int j = 0; j < r->nl.n; j++) {
-      int k = r->nl.k[j];
-      if (k >= L->nnode || k == t || k == h || (L->rep && L->rep[k] != k)) continue;
-      double hw = L->nw[k] / 2 - 0.5, hh = L->nh[k] / 2 - 0.5;
-      if (hw > 0 && hh > 0 && seg_box(a, c, L->nx[k] - hw, L->ny[k] - hh, L->nx[k] + hw, L->ny[k] + hh)) return 1;
-    }
-  }
-  return 0;
-}
-
-/* Whether side dir of node n is clear of the node's other bonds: none
- * leaves its centre within 30 degrees of the side's normal (by direction,
- * not by where it ends: a junction's end circle can lie far out). Bonds to
- * be routed again (blocked) do not count: they move. */
-static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
-                          int dir) {
-  int nb = n < m->nelem ? m->elem_nbond[n] : m->nbond;
-  for (int i = 0; i < nb; i++) {
-    int ob = n < m->nelem ? m->elem_bonds[m->elem_bondadr[n] + i] : i;
-    if (ob == b || blocked[ob] || (L->bond_hidden && L->bond_hidden[ob])) continue;
-    const bg_bond_geom *g = &L->bg[ob];
-    int t = L->node_of[m->bond_tail[ob]], h = L->node_of[m->bond_head[ob]];
-    for (int k = 0; k < 2; k++) {
-      if ((k ? h : t) != n) continue;
-      bg_vec u = k ? bg_vscale(g->hdir, -1) : g->tdir;
-      if (u.x * DIRV[dir].x + u.y * DIRV[dir].y > 0.866) return 0;
-    }
-  }
-  return 1;
-}
-
-/* The ways out of node n for bond b: the middles of its free sides (not
- * taken by another bond's end or an earlier route, taken: a bit per side),
- * else its four corners on a diagonal, COST_DIAG dearer. */
-static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsigned char *blocked,
-                      const unsigned char *taken, port *out) {
-  const bg_diagram_layout *L = r->L;
-  double hw = L->nw[n] / 2, hh = L->nh[n] / 2;
-  bg_vec c = bg_v(L->nx[n], L->ny[n]);
-  int np = 0;
-  for (int dir = 0; dir < 4; dir++) {
-    bg_vec at = bg_vadd(c, bg_v(DIRV[dir].x * hw, DIRV[dir].y * hh));
-    if ((taken[n] >> dir & 1) || !bond_side_free(L, m, n, b, blocked, dir)) continue;
-    out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0, 0};
-  }
-  for (int k = 0; !np && k < 4; k++) {
-    double sx = k & 1 ? -1 : 1, sy = k & 2 ? -1 : 1;
-    bg_vec q = bg_vadd(c, bg_v(sx * (hw + STUB), sy * (hh + STUB)));
-    double base = COST_DIAG + seg_cost(r, c, q, n) - bg_vlen(bg_vsub(q, c));
-    out[np++] = (port){q, q, sx > 0 ? 0 : 1, base, 0, 1};
-    out[np++] = (port){q, q, sy > 0 ? 2 : 3, base, 0, 1};
-  }
-  return np;
-}
-
-/* Puts the route's end at node n straight out of its centre: a side port's
- * first leg moved onto the centre's line (the grid may have snapped it
- * off), the side marked taken. end: pts[0] (next: pts[1]) or the last
- * point. Returns whether the end is a diagonal way out (a corner of its own). */
-static int bond_end(const bg_diagram_layout *L, int n, bg_vec *end, bg_vec *next, unsigned char *taken) {
-  double dx = end->x - L->nx[n], dy = end->y - L->ny[n], hw = L->nw[n] / 2, hh = L->nh[n] / 2;
-  if (fabs(dx) > hw + 0.01 || fabs(dy) > hh + 0.01) return 1;
-  if (fabs(dx) >= hw - 0.01) {
-    end->y = next->y = L->ny[n];
-    taken[n] |= (unsigned char)(1 << (dx > 0 ? 0 : 1));
-  } else {
-    end->x = next->x = L->nx[n];
-    taken[n] |= (unsigned char)(1 << (dy > 0 ? 2 : 3));
-  }
-  return 0;
-}
-
-/* Routes bond b round the boxes; its corners into bx, by (at most cap).
- * Returns their number. */
-static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned char *blocked, unsigned char *taken,
-                      double *bx, double *by, int cap) {
-  const bg_diagram_layout *L = r->L;
-  int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
-  port ps[8], pt[8];
-  r->from_node = t, r->to_node = h, r->group = -1;
-  int nps = bond_ports(r, m, t, b, blocked, taken, ps), npt = bond_ports(r, m, h, b, blocked, taken, pt);
-  double a[4] = {L->nx[t] - L->nw[t] / 2, L->ny[t] - L->nh[t] / 2, L->nx[t] + L->nw[t] / 2, L->ny[t] + L->nh[t] / 2};
-  double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
-  bg_vec pts[256];
-  int n = route_ports(r, ps, nps, pt, npt, a, z, pts, 256), nc = 0;
-  if (n < 3) return 0; /* one straight leg: the centres in line */
-  int dt = bond_end(L, t, &pts[0], &pts[1], taken), dh = bond_end(L, h, &pts[n - 1], &pts[n - 2], taken);
-  for (int i = dt ? 0 : 1; i <= (dh ? n - 1 : n - 2) && nc < cap; i++) bx[nc] = pts[i].x, by[nc++] = pts[i].y;
-  return nc;
-}
-
-int bg_route_blocked_bonds(bg_diagram_layout *L) {
-  const bg_model *m = L->m;
-  int nb = m->nbond, nblocked = 0;
-  unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
-  bg_router *all = router_make(L, nb, NULL);
-  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, m, b);
-  bg_router_free(all);
-  if (!nblocked) {
-    free(blocked);
-    return 0;
-  }
-  bg_router *r = router_make(L, nb, blocked);
-  unsigned char *taken = bg_xcalloc((size_t)L->nnode + 1, 1);
-  bg_layout *lay = &L->lay;
-  int nedge = lay->nedge > nb ? lay->nedge : nb, cap = lay->nbend + 64 * nblocked;
-  int *adr = bg_xcalloc((size_t)nedge + 1, sizeof *adr), *cnt = bg_xcalloc((size_t)nedge + 1, sizeof *cnt);
-  double *bx = bg_xcalloc((size_t)cap + 1, sizeof *bx), *by = bg_xcalloc((size_t)cap + 1, sizeof *by);
-  int used = 0;
-  for (int b = 0; b < nb; b++) {
-    adr[b] = used;
-    if (blocked[b]) {
-      cnt[b] = route_bond(r, m, b, blocked, taken, bx + used, by + used, 64);
-    } else {
-      const bg_bond_geom *g = &L->bg[b];
-      for (int i = 0; i < g->bendn; i++) bx[used + i] = lay->bendx[g->bendadr + i], by[used + i] = lay->bendy[g->bendadr + i];
-      cnt[b] = g->bendn;
-    }
-    used += cnt[b];
-  }
-  bg_router_free(r);
-  free(lay->bendadr), free(lay->bendn), free(lay->bendx), free(lay->bendy);
-  lay->bendadr = adr, lay->bendn = cnt, lay->bendx = bx, lay->bendy = by, lay->nbend = used;
-  free(blocked), free(taken);
-  return nblocked;
+  return bg_route_ports(r, ps, nps, pt, npt, ends[0], ends[1], pts, cap);
 }
 
 int bg_route_branch(const bg_router *r, bg_vec *at) {

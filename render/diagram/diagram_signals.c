@@ -173,7 +173,7 @@ static void walk_signals(bg_diagram *d, bg_router *rt) {
 }
 
 void bg_route_signals(bg_diagram *d) {
-  bg_router *rt = bg_router_new(d->L, d->m->nbond);
+  bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL);
   walk_signals(d, rt);
   bg_router_free(rt);
 }

@@ -1,0 +1,175 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Bonds round the labels (issue 31). A bond is drawn straight between its
+ * nodes' centres by the rows layout and the other engines, and where the
+ * grid pass finds no free cells; such a line can run through another node's
+ * label (issue 31: 130 of the
+ * 300-signal reaction network's bonds in the rows layout, the reaction
+ * rings' chords). Those bonds are routed like the signals, orthogonally
+ * round the boxes: out of a free side's middle, so the first and last legs
+ * run straight out of the centre as a bond's do, or, from a box whose four
+ * sides are taken, out of a corner on a short diagonal. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "diagram/diagram_route_int.h"
+
+#define COST_DIAG 60.0 /* a bond's diagonal way out: a slanted leg */
+
+/* Whether segment a-b meets the box [x0,x1]×[y0,y1] (Liang-Barsky). */
+static int seg_box(bg_vec a, bg_vec b, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
+  double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+  for (int i = 0; i < 4; i++) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return 0;
+      continue;
+    }
+    double t = q[i] / p[i];
+    if (p[i] < 0 && t > t0) t0 = t;
+    if (p[i] > 0 && t < t1) t1 = t;
+    if (t0 >= t1) return 0;
+  }
+  return 1;
+}
+
+/* The node a bond's end is drawn at: a collapsed box, a field's node. */
+static int end_node(const bg_diagram_layout *L, int e) {
+  int n = L->node_of[e];
+  return L->rep ? L->rep[n] : n;
+}
+
+/* Whether bond b's line runs through a node box other than its ends' (the
+ * box 0.5 pt inside, so a line along its edge is clear). */
+static int bond_blocked(bg_router *r, const bg_model *m, int b) {
+  const bg_diagram_layout *L = r->L;
+  if ((L->bond_hidden && L->bond_hidden[b]) || L->bg[b].spln) return 0;
+  int t = end_node(L, m->bond_tail[b]), h = end_node(L, m->bond_head[b]);
+  for (int i = 0; i <= L->bg[b].bendn; i++) {
+    bg_vec a = bg_route_leg_end(L, b, i - 1), c = bg_route_leg_end(L, b, i);
+    bg_near_box(&r->ix, fmin(a.x, c.x), fmin(a.y, c.y), fmax(a.x, c.x), fmax(a.y, c.y), &r->nl);
+    for (int j = 0; j < r->nl.n; j++) {
+      int k = r->nl.k[j];
+      if (k >= L->nnode || k == t || k == h || (L->rep && L->rep[k] != k)) continue;
+      double hw = L->nw[k] / 2 - 0.5, hh = L->nh[k] / 2 - 0.5;
+      if (hw > 0 && hh > 0 && seg_box(a, c, L->nx[k] - hw, L->ny[k] - hh, L->nx[k] + hw, L->ny[k] + hh)) return 1;
+    }
+  }
+  return 0;
+}
+
+/* Whether side dir of node n is clear of the node's other bonds: none
+ * leaves its centre within 30 degrees of the side's normal (by direction,
+ * not by where it ends: a junction's end circle can lie far out). Bonds to
+ * be routed again (blocked) do not count: they move. */
+static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
+                          int dir) {
+  int nb = n < m->nelem ? m->elem_nbond[n] : m->nbond;
+  for (int i = 0; i < nb; i++) {
+    int ob = n < m->nelem ? m->elem_bonds[m->elem_bondadr[n] + i] : i;
+    if (ob == b || blocked[ob] || (L->bond_hidden && L->bond_hidden[ob])) continue;
+    const bg_bond_geom *g = &L->bg[ob];
+    int t = L->node_of[m->bond_tail[ob]], h = L->node_of[m->bond_head[ob]];
+    for (int k = 0; k < 2; k++) {
+      if ((k ? h : t) != n) continue;
+      bg_vec u = k ? bg_vscale(g->hdir, -1) : g->tdir;
+      if (u.x * DIRV[dir].x + u.y * DIRV[dir].y > 0.866) return 0;
+    }
+  }
+  return 1;
+}
+
+/* The ways out of node n for bond b: the middles of its free sides (not
+ * taken by another bond's end or an earlier route, taken: a bit per side),
+ * else its four corners on a diagonal, COST_DIAG dearer. */
+static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsigned char *blocked,
+                      const unsigned char *taken, port *out) {
+  const bg_diagram_layout *L = r->L;
+  double hw = L->nw[n] / 2, hh = L->nh[n] / 2;
+  bg_vec c = bg_v(L->nx[n], L->ny[n]);
+  int np = 0;
+  for (int dir = 0; dir < 4; dir++) {
+    bg_vec at = bg_vadd(c, bg_v(DIRV[dir].x * hw, DIRV[dir].y * hh));
+    if ((taken[n] >> dir & 1) || !bond_side_free(L, m, n, b, blocked, dir)) continue;
+    out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0, 0};
+  }
+  for (int k = 0; !np && k < 4; k++) {
+    double sx = k & 1 ? -1 : 1, sy = k & 2 ? -1 : 1;
+    bg_vec q = bg_vadd(c, bg_v(sx * (hw + STUB), sy * (hh + STUB)));
+    double base = COST_DIAG + bg_route_seg_cost(r, c, q, n) - bg_vlen(bg_vsub(q, c));
+    out[np++] = (port){q, q, sx > 0 ? 0 : 1, base, 0, 1};
+    out[np++] = (port){q, q, sy > 0 ? 2 : 3, base, 0, 1};
+  }
+  return np;
+}
+
+/* Puts the route's end at node n straight out of its centre: a side port's
+ * first leg moved onto the centre's line (the grid may have snapped it
+ * off), the side marked taken. end: pts[0] (next: pts[1]) or the last
+ * point. Returns whether the end is a diagonal way out (a corner of its own). */
+static int bond_end(const bg_diagram_layout *L, int n, bg_vec *end, bg_vec *next, unsigned char *taken) {
+  double dx = end->x - L->nx[n], dy = end->y - L->ny[n], hw = L->nw[n] / 2, hh = L->nh[n] / 2;
+  if (fabs(dx) > hw + 0.01 || fabs(dy) > hh + 0.01) return 1;
+  if (fabs(dx) >= hw - 0.01) {
+    end->y = next->y = L->ny[n];
+    taken[n] |= (unsigned char)(1 << (dx > 0 ? 0 : 1));
+  } else {
+    end->x = next->x = L->nx[n];
+    taken[n] |= (unsigned char)(1 << (dy > 0 ? 2 : 3));
+  }
+  return 0;
+}
+
+/* Routes bond b round the boxes; its corners into bx, by (at most cap).
+ * Returns their number. */
+static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned char *blocked, unsigned char *taken,
+                      double *bx, double *by, int cap) {
+  const bg_diagram_layout *L = r->L;
+  int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
+  port ps[8], pt[8];
+  r->from_node = t, r->to_node = h, r->group = -1;
+  int nps = bond_ports(r, m, t, b, blocked, taken, ps), npt = bond_ports(r, m, h, b, blocked, taken, pt);
+  double a[4] = {L->nx[t] - L->nw[t] / 2, L->ny[t] - L->nh[t] / 2, L->nx[t] + L->nw[t] / 2, L->ny[t] + L->nh[t] / 2};
+  double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
+  bg_vec pts[256];
+  int n = bg_route_ports(r, ps, nps, pt, npt, a, z, pts, 256), nc = 0;
+  if (n < 3) return 0; /* one straight leg: the centres in line */
+  int dt = bond_end(L, t, &pts[0], &pts[1], taken), dh = bond_end(L, h, &pts[n - 1], &pts[n - 2], taken);
+  for (int i = dt ? 0 : 1; i <= (dh ? n - 1 : n - 2) && nc < cap; i++) bx[nc] = pts[i].x, by[nc++] = pts[i].y;
+  return nc;
+}
+
+int bg_route_blocked_bonds(bg_diagram_layout *L) {
+  const bg_model *m = L->m;
+  int nb = m->nbond, nblocked = 0;
+  unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
+  bg_router *all = bg_router_new(L, nb, NULL);
+  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, m, b);
+  bg_router_free(all);
+  if (!nblocked) {
+    free(blocked);
+    return 0;
+  }
+  bg_router *r = bg_router_new(L, nb, blocked);
+  unsigned char *taken = bg_xcalloc((size_t)L->nnode + 1, 1);
+  bg_layout *lay = &L->lay;
+  int nedge = lay->nedge > nb ? lay->nedge : nb, cap = lay->nbend + 64 * nblocked;
+  int *adr = bg_xcalloc((size_t)nedge + 1, sizeof *adr), *cnt = bg_xcalloc((size_t)nedge + 1, sizeof *cnt);
+  double *bx = bg_xcalloc((size_t)cap + 1, sizeof *bx), *by = bg_xcalloc((size_t)cap + 1, sizeof *by);
+  int used = 0;
+  for (int b = 0; b < nb; b++) {
+    adr[b] = used;
+    if (blocked[b]) {
+      cnt[b] = route_bond(r, m, b, blocked, taken, bx + used, by + used, 64);
+    } else {
+      const bg_bond_geom *g = &L->bg[b];
+      for (int i = 0; i < g->bendn; i++) bx[used + i] = lay->bendx[g->bendadr + i], by[used + i] = lay->bendy[g->bendadr + i];
+      cnt[b] = g->bendn;
+    }
+    used += cnt[b];
+  }
+  bg_router_free(r);
+  free(lay->bendadr), free(lay->bendn), free(lay->bendx), free(lay->bendy);
+  lay->bendadr = adr, lay->bendn = cnt, lay->bendx = bx, lay->bendy = by, lay->nbend = used;
+  free(blocked), free(taken);
+  return nblocked;
+}
