@@ -78,38 +78,55 @@ static int solve(lagnewton *L, double t, int maxit) {
  * different for each order of the equations; a cubic law's slope there is
  * 1e-53 or 1e-98, which the scaling of the index check at the initial point
  * took for a real entry: one order of a model reduced its index and the
- * other failed (docs/property.md, findings 2c and 20). Newton stops when
- * its step is below 1e-12 of the largest unknown, so a component below
- * that is not known to differ from 0. The components below a level are set
- * to 0 together when the residual stays as small (within the rows'
- * rounding), the levels from Newton's own tolerance down (1e-12, 1e-18,
- * 1e-24, 1e-30 of the largest): the first that holds decides. A level is a
- * set of components, the same in every order of the equations; one
- * component that the residual needs (a rate of 1e-13 that is real) keeps
- * the level's others too, and the next level down is tried. */
-static void snap_zeros(lagnewton *L, double t) {
+ * other failed (docs/property.md, findings 2c and 20); a switching law read
+ * a flow of 1e-32 instead of 0 and chattered in one order (finding 26).
+ * Newton stops when its step is below 1e-12 of the largest unknown, so a
+ * component below that is not known to differ from 0. The components below
+ * a level are set to 0 together when the residual stays as small (within
+ * the rows' rounding), the levels from Newton's own tolerance down (1e-12,
+ * 1e-18, 1e-24, 1e-30 of the largest): the first that holds decides. A
+ * level is a set of components, the same in every order of the equations;
+ * one component that the residual needs (a rate of 1e-13 that is real)
+ * keeps the level's others too, and the next level down is tried. A
+ * caller whose Newton resolves more than 1e-12 starts lower (first). */
+static double rows_max(const double *r, const int *rows, int nrows) {
+  double mx = 0;
+  for (int i = 0; i < nrows; i++) mx = fmax(mx, fabs(r[rows ? rows[i] : i]));
+  return mx;
+}
+
+void bg_eqs_snap_zeros(bg_eqsys *s, double t, double *y, double *yp, double *r, double *const *u, int nu,
+                       const int *rows, int nrows, double first) {
   static const double level[] = {1e-12, 1e-18, 1e-24, 1e-30};
-  int n = L->n;
-  double umax = 0, r0 = max_abs(L->r, n);
-  for (int k = 0; k < n; k++) umax = fmax(umax, fabs(*unknown(L, k)));
-  double *keep = bg_xmalloc((size_t)n * sizeof(double)), tol = fmax(r0, 1e-15 * (1 + umax));
-  for (int k = 0; k < n; k++) keep[k] = *unknown(L, k);
+  double umax = 0;
+  if (bg_eqsys_residual(s, t, y, yp, r)) return;
+  double r0 = rows_max(r, rows, nrows);
+  for (int k = 0; k < nu; k++) umax = fmax(umax, fabs(*u[k]));
+  double *keep = bg_xmalloc((size_t)(nu ? nu : 1) * sizeof(double)), tol = fmax(r0, 1e-15 * (1 + umax));
+  for (int k = 0; k < nu; k++) keep[k] = *u[k];
   for (size_t q = 0; q < sizeof level / sizeof *level; q++) {
+    if (level[q] > first) continue;
     int nsnap = 0;
-    for (int k = 0; k < n; k++) {
-      double *u = unknown(L, k);
-      *u = keep[k];
-      if (*u != 0 && fabs(*u) <= level[q] * (1 + umax)) *u = 0, nsnap++;
+    for (int k = 0; k < nu; k++) {
+      *u[k] = keep[k];
+      if (*u[k] != 0 && fabs(*u[k]) <= level[q] * (1 + umax)) *u[k] = 0, nsnap++;
     }
     if (!nsnap) break;
-    if (!bg_eqsys_residual(L->s, t, L->y, L->yp, L->r) && max_abs(L->r, n) <= tol) {
+    if (!bg_eqsys_residual(s, t, y, yp, r) && rows_max(r, rows, nrows) <= tol) {
       free(keep);
       return;
     }
   }
-  for (int k = 0; k < n; k++) *unknown(L, k) = keep[k];
-  bg_eqsys_residual(L->s, t, L->y, L->yp, L->r);
+  for (int k = 0; k < nu; k++) *u[k] = keep[k];
+  bg_eqsys_residual(s, t, y, yp, r);
   free(keep);
+}
+
+static void snap_zeros(lagnewton *L, double t) {
+  double **u = bg_xmalloc((size_t)L->n * sizeof(double *));
+  for (int k = 0; k < L->n; k++) u[k] = unknown(L, k);
+  bg_eqs_snap_zeros(L->s, t, L->y, L->yp, L->r, u, L->n, NULL, L->n, 1e-12);
+  free(u);
 }
 
 int bg_eqs_lagrange_start(bg_eqsys *s, double t, double *y, double *yp, int maxit) {
