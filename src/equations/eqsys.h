@@ -210,6 +210,21 @@ void bg_eqsys_modes_reset(bg_eqsys *s);
 /* Where mode e's instruction sits ("value of heater", "law of F") and what
  * it is ("hyst(e2, lo, hi)"), appended to where and what. */
 void bg_eqsys_mode_describe(const bg_eqsys *s, int e, bg_strbuf *where, bg_strbuf *what);
+/* Continuous switches (docs/simulation.md, "Continuous switches"): mode e,
+ * whose switching function just crossed 0 and back, is let loose when its
+ * two sides (the mode it holds and other) give rows at (t, y, yp) (yp NULL:
+ * an ODE's right-hand side) that differ by at most tol[i] in each row (one
+ * law here: a continuous piecewise law) and its switching function sits
+ * within band = 100 (atol + rtol |operands|) of 0. Loose, it is evaluated
+ * as compiled, its mode is not updated, and its root functions are band -
+ * |g|: they cross 0 only where the switching function leaves the band, and
+ * the caller then tightens it (a mode again, set by the next update). The
+ * solver must restart after either. Returns 1 when let loose. */
+int bg_eqsys_mode_loosen(bg_eqsys *s, int e, double other, double t, const double *y, const double *yp,
+                         const double *tol, double rtol, double atol);
+int bg_eqsys_mode_loose(const bg_eqsys *s, int e);
+void bg_eqsys_mode_tighten(bg_eqsys *s, int e);
+int bg_eqsys_root_mode(const bg_eqsys *s, int i); /* the mode root function i belongs to */
 void bg_eqsys_modes_get(const bg_eqsys *s, double *modes); /* bg_eqsys_nmodes values */
 void bg_eqsys_modes_set(bg_eqsys *s, const double *modes);
 #endif

@@ -8,7 +8,12 @@
  * see the kink; at a root the simulation stops, sets the modes from the
  * values there and restarts. Conditions of t shifted by a constant in
  * step, ramp, pulse and tables are input breakpoints (bg_eqsys_breakpoints),
- * not events; other conditions of t (step(sin(t)), t > 1) are events. */
+ * not events; other conditions of t (step(sin(t)), t > 1) are events.
+ * A mode whose two sides are one law where it switches (a continuous
+ * piecewise law) and whose switching function chatters in the solver's
+ * noise is let loose: evaluated as compiled until that function leaves a
+ * band round 0 (bg_eqsys_mode_loosen; docs/simulation.md, "Continuous
+ * switches"). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -144,6 +149,8 @@ void bg_eqs_events_find(bg_eqsys *s) {
   s->ev_zero = bg_arena_alloc(&s->arena, (size_t)nev);
   s->ev_free = bg_arena_alloc(&s->arena, (size_t)nev);
   memset(s->ev_free, 0, (size_t)nev);
+  s->ev_band = bg_arena_alloc(&s->arena, (size_t)nev * sizeof(double));
+  memset(s->ev_band, 0, (size_t)nev * sizeof(double));
   s->ev_mem = bg_arena_alloc(&s->arena, (size_t)nev);
   s->ev_y = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
   s->ev_yp = bg_arena_alloc(&s->arena, (size_t)(s->n + 1) * sizeof(double));
@@ -280,7 +287,10 @@ int bg_eqsys_mode_direction(const bg_eqsys *s, int e, double before, double afte
 
 int bg_eqsys_mode_memory(const bg_eqsys *s, int e) { return s->ev_mem[e]; }
 int bg_eqsys_has_memory(const bg_eqsys *s) { return s->nmem; }
-void bg_eqsys_modes_reset(bg_eqsys *s) { s->ev_fresh = 1; }
+void bg_eqsys_modes_reset(bg_eqsys *s) {
+  s->ev_fresh = 1;
+  if (s->nev) memset(s->ev_band, 0, (size_t)s->nev * sizeof(double)); /* each run starts with every mode held */
+}
 
 int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first) {
   int cond;
@@ -290,7 +300,13 @@ int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first) {
 void bg_eqsys_modes_freeze(bg_eqsys *s, int on) { s->ev_frozen = on && s->nev; }
 
 static int roots_finite(bg_eqsys *s, double *g) {
-  for (int e = 0; e < s->nev; e++) ev_roots(s, e, s->v, g + s->ev_root0[e]);
+  for (int e = 0; e < s->nev; e++) {
+    double *ge = g + s->ev_root0[e];
+    ev_roots(s, e, s->v, ge);
+    /* loose: crosses 0 where the switching function leaves its band */
+    for (int j = 0, c; s->ev_band[e] > 0 && j < roots_of(s, &s->code[s->ev_code[e]], &c); j++)
+      ge[j] = s->ev_band[e] - fabs(ge[j]);
+  }
   for (int i = 0; i < s->nroot; i++)
     if (!isfinite(g[i])) return 0;
   return 1;
@@ -356,7 +372,8 @@ static void modes_pass(bg_eqsys *s, double t, const double *y, const double *yp,
   else memset(v + s->slot_yp, 0, (size_t)s->n * sizeof *v);
   for (int k = 0; k < s->nmain; k++) {
     int e = s->code_ev[k];
-    if (e >= 0 && (!only || only[e])) s->ev_mode[e] = ev_mode_of(s, e, v, dir ? dir + s->ev_root0[e] : NULL);
+    if (e >= 0 && (!only || only[e]) && !(s->ev_band[e] > 0))
+      s->ev_mode[e] = ev_mode_of(s, e, v, dir ? dir + s->ev_root0[e] : NULL);
     v[s->code[k].out] = e >= 0 ? bg_eqs_ev_value(s, e, v) : bg_eqs_ins_value(s, k, v);
   }
 }
@@ -400,7 +417,7 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
    * held, and the root finder will not report its leaving 0 (SUNDIALS
    * deactivates a root function that is 0 at the start and then takes its
    * sign silently). Evaluated as compiled until its next root. */
-  for (int e = 0; e < s->nev; e++) s->ev_free[e] = zero[e] && nzero;
+  for (int e = 0; e < s->nev; e++) s->ev_free[e] = (zero[e] && nzero) || s->ev_band[e] > 0;
   s->ev_frozen = was;
   for (int e = 0; e < s->nev; e++) changed += s->ev_prev[e] != s->ev_mode[e];
   return changed;
@@ -421,7 +438,7 @@ int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *y
   if (!s->nev || !(delta > 0)) return 0;
   int was = s->ev_frozen, rc = 1;
   s->ev_frozen = 1;
-  memset(s->ev_free, 0, (size_t)s->nev);
+  for (int e = 0; e < s->nev; e++) s->ev_free[e] = s->ev_band[e] > 0;
   for (int k = 0; k < maxit && rc == 1; k++) {
     for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * yp[i];
     if (bg_eqsys_consistent(s, t + delta, s->ev_y, 30)) { rc = -1; break; }
@@ -440,4 +457,48 @@ int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *y
   s->ev_frozen = was;
   s->has_err = 0;
   return rc;
+}
+
+/* ------------------------------------------------------------ loose modes
+ * docs/simulation.md, "Continuous switches". */
+int bg_eqsys_root_mode(const bg_eqsys *s, int i) { return s->root_ev[i]; }
+int bg_eqsys_mode_loose(const bg_eqsys *s, int e) { return s->ev_band[e] > 0; }
+void bg_eqsys_mode_tighten(bg_eqsys *s, int e) { s->ev_band[e] = 0; }
+
+/* The rows at (t, y, yp) (yp NULL: the right-hand side) with mode e held at
+ * mode, into out; 0, or -1 when they are not finite. */
+static int rows_in_mode(bg_eqsys *s, int e, double mode, double t, const double *y, const double *yp, double *out) {
+  double keep = s->ev_mode[e];
+  s->ev_mode[e] = mode;
+  int rc = yp ? bg_eqsys_residual(s, t, y, yp, out) : bg_eqsys_rhs(s, t, y, out);
+  s->ev_mode[e] = keep;
+  return rc;
+}
+
+int bg_eqsys_mode_loosen(bg_eqsys *s, int e, double other, double t, const double *y, const double *yp,
+                         const double *tol, double rtol, double atol) {
+  const tinstr *I = &s->code[s->ev_code[e]];
+  if (s->ev_mem[e] || s->ev_band[e] > 0 || other == s->ev_mode[e]) return 0;
+  int n = yp ? s->n : s->nx, was = s->ev_frozen, agree = 1;
+  unsigned char free_was = s->ev_free[e];
+  double *a = bg_xmalloc((size_t)(2 * n + 1) * sizeof(double)), *b = a + n;
+  s->ev_frozen = 1, s->ev_free[e] = 0; /* both sides as held, not as compiled */
+  if (rows_in_mode(s, e, s->ev_mode[e], t, y, yp, a) || rows_in_mode(s, e, other, t, y, yp, b)) agree = 0;
+  for (int i = 0; agree && i < n; i++) agree = fabs(a[i] - b[i]) <= tol[i];
+  free(a);
+  /* the band: the solver's tolerance of the switching function's operands
+   * (a and b of a > b, x of abs(x)), with the row check's margin */
+  double size = 0, g[2] = {0, 0};
+  int cond, nr = roots_of(s, I, &cond);
+  bg_eqs_eval_raw(s, t, y, yp);
+  for (int q = 0; q < I->na && q < 3; q++)
+    if (cond >> q & 1) size += fabs(s->v[I->a[q]]);
+  double band = 100 * (atol + rtol * size);
+  ev_roots(s, e, s->v, g);
+  int near = 0; /* it sits in the band now (a table: at one end of its segment) */
+  for (int j = 0; j < nr; j++) near |= fabs(g[j]) < band;
+  s->ev_frozen = was, s->ev_free[e] = free_was;
+  if (!agree || !near) return 0;
+  s->ev_band[e] = band, s->ev_free[e] = 1;
+  return 1;
 }

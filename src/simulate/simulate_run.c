@@ -50,6 +50,7 @@ typedef struct simrun {
   int starting;  /* 1 until the start is consistent (run_start): no row before */
   int exact_rows; /* IDA steps to each output time (first_step_again) */
   double tstop, *modes_last, *modes_before, *modes_ev;
+  unsigned char *back; /* per root: crossed back at this event (continuous switches) */
   double tseg; /* the end of the segment being run (an input's breakpoint), INFINITY on the last */
   bg_simresult *r;
 } simrun;
@@ -304,6 +305,7 @@ static int run_open(simrun *R, bg_eqsys *s, const bg_simplan *p) {
     R->modes_last = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
     R->modes_before = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
     R->modes_ev = bg_xcalloc((size_t)bg_eqsys_nmodes(s), sizeof(double));
+    R->back = bg_xcalloc((size_t)R->nroot, 1);
   }
   return p->kind == BG_SIM_IDA ? setup_ida(R) : setup_cvode(R);
 }
@@ -323,7 +325,7 @@ static void run_close(simrun *R) {
   free(R->rowind);
   free(R->diagpos);
   free(R->alg), free(R->res), free(R->ylast), free(R->yplast), free(R->coef);
-  free(R->rootsfound), free(R->modes_last), free(R->modes_before), free(R->modes_ev);
+  free(R->rootsfound), free(R->modes_last), free(R->modes_before), free(R->modes_ev), free(R->back);
   bg_eqsys_modes_freeze(R->s, 0); /* later users of the eqsys evaluate it as compiled */
   if (R->ctx) SUNContext_Free(&R->ctx);
 }
@@ -421,6 +423,7 @@ static int run_calcic(simrun *R, double tnext) {
  * switching function, the modes are set from the values there, and it
  * starts again (CVodeReInit; IDA: IDAReInit and consistent values again,
  * until the modes agree with them). */
+#define SIM_ROW_TOL 100.0 /* allowed residual, in units of rtol |y_i| + atol_i (docs/simulation.md) */
 #define SIM_EVENTS_PER_INTERVAL 1000 /* more in one output interval: chattering */
 #define SIM_EVENTS_SHOWN 100         /* -v prints the first ones */
 #define SIM_MODE_SETTLE 8            /* IDA: consistent values and modes, rounds at most */
@@ -493,13 +496,15 @@ static void unlog(bg_simresult *r, int k) {
   memmove(r->event_dir + k, r->event_dir + k + 1, (size_t)(r->nevents - k));
 }
 
-static void log_event(simrun *R, int i, int dir) {
+/* Logs root i's crossing; 1 when it crossed back (an entry cancelled). */
+static int log_event(simrun *R, int i, int dir) {
   bg_simresult *r = R->r;
   double near = SIM_EVENT_SAME * (R->p->t_end - R->p->t0);
   for (int k = r->nevents - 1; k >= 0 && R->tcur - r->event_t[k] <= near; k--)
     if (r->event_cond[k] == i) {
-      if ((r->event_dir[k] > 0) != (dir > 0)) unlog(r, k); /* there and back at once: no switching */
-      return;
+      if ((r->event_dir[k] > 0) == (dir > 0)) return 0;
+      unlog(r, k); /* there and back at once: no switching */
+      return 1;
     }
   if (r->nevents == R->evcap) {
     R->evcap = R->evcap ? 2 * R->evcap : 64;
@@ -509,6 +514,7 @@ static void log_event(simrun *R, int i, int dir) {
   }
   r->event_t[r->nevents] = R->tcur, r->event_cond[r->nevents] = i;
   r->event_dir[r->nevents++] = (signed char)(dir > 0 ? 1 : -1);
+  return 0;
 }
 
 /* -v: the events logged since the last call (a redone interval logs its
@@ -553,18 +559,53 @@ static void unlog_memory(simrun *R, int nlogged) {
   }
 }
 
-/* At a root: log what fired, set the modes, restart there. */
+/* Continuous switches (docs/simulation.md): a mode whose switching
+ * function crossed back at once is let loose when its two sides are one law
+ * here, to the rows' tolerance: an algebraic row within the row check's
+ * SIM_ROW_TOL units of its unknown's tolerance, a rate row by so little that
+ * over the whole span it moves its state by less than that. */
+static void loosen_continuous(simrun *R) {
+  int n = R->n, ida = R->p->kind == BG_SIM_IDA;
+  const double *y = N_VGetArrayPointer(R->y), *atol = N_VGetArrayPointer(R->atol);
+  double *tol = NULL, amax = 0, span = R->p->t_end - R->p->t0;
+  for (int i = 0; i < R->nroot; i++) {
+    int e = bg_eqsys_root_mode(R->s, i);
+    if (!R->back[i] || bg_eqsys_mode_loose(R->s, e)) continue;
+    if (!tol) {
+      tol = bg_xmalloc((size_t)n * sizeof(double));
+      for (int k = 0; k < n; k++) {
+        double u = SIM_ROW_TOL * (R->p->rtol * fabs(y[k]) + atol[k]);
+        tol[k] = ida && bg_eqsys_is_algebraic_row(R->s, k) ? u * R->coef[k] : u / span;
+        amax = fmax(amax, atol[k]);
+      }
+    }
+    /* the crossing back set its mode; the other side is the one held before */
+    bg_eqsys_mode_loosen(R->s, e, R->modes_before[e], R->tcur, y, ida ? N_VGetArrayPointer(R->yp) : NULL, tol,
+                         R->p->rtol, amax);
+  }
+  free(tol);
+}
+
+/* At a root: log what fired, set the modes, restart there. A loose mode's
+ * root is its switching function leaving its band: a mode again, set from
+ * the values here and logged by log_silent if it switched. */
 static int on_event(simrun *R, double tnext) {
   int ida = R->p->kind == BG_SIM_IDA, f;
   f = ida ? IDAGetRootInfo(R->mem, R->rootsfound) : CVodeGetRootInfo(R->mem, R->rootsfound);
   if (f < 0) return f;
   int nlogged = R->r->nevents;
   bg_eqsys_modes_get(R->s, R->modes_before);
-  for (int i = 0; i < R->nroot; i++)
-    if (R->rootsfound[i]) log_event(R, i, R->rootsfound[i]), R->last_root = i;
+  for (int i = 0; i < R->nroot; i++) {
+    R->back[i] = 0;
+    if (R->rootsfound[i] && bg_eqsys_mode_loose(R->s, bg_eqsys_root_mode(R->s, i)))
+      bg_eqsys_mode_tighten(R->s, bg_eqsys_root_mode(R->s, i)), R->rootsfound[i] = 0;
+    else if (R->rootsfound[i])
+      R->back[i] = (unsigned char)log_event(R, i, R->rootsfound[i]), R->last_root = i;
+  }
   if (++R->nev_interval > SIM_EVENTS_PER_INTERVAL) return SIM_CHATTER;
   stats_now(R, R->st); /* ReInit resets the counters */
   modes_now(R, R->rootsfound);
+  loosen_continuous(R);
   if (!ida) f = CVodeReInit(R->mem, R->tcur, R->y);
   else if ((f = IDAReInit(R->mem, R->tcur, R->y, R->yp)) >= 0) f = settle(R, tnext);
   bg_eqsys_modes_get(R->s, R->modes_ev);
@@ -778,7 +819,6 @@ static void progress(simrun *R, double t) {
  * their unknown; a row beyond it is integrated again from the last row with
  * steps of at most a tenth of the interval, and what still fails is counted
  * and reported, never silent. */
-#define SIM_ROW_TOL 100.0 /* allowed residual, in units of rtol |y_i| + atol_i (docs/simulation.md) */
 #define SIM_REDO_STEPS 10 /* a redone interval takes at least this many steps */
 
 /* Largest residual of the algebraic rows at the current point, in units of
