@@ -78,6 +78,116 @@ static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, 
   return 1;
 }
 
+/* ---------------------------------------------------------------- a one-port moved aside */
+/* A routed bond whose end node has no free side towards the other end
+ * enters it from the far side and crosses the node's own row next to it
+ * (issue 31: reactions20's bonds 94 and 87 crossed bonds 57 and 60 beside
+ * their 0-junctions). Two bonds of one node never need to cross: when a
+ * one-port (an element with this one bond, drawn straight) takes the side
+ * facing the other end and the opposite side is free, the one-port is
+ * mirrored through the node's centre to that side, where it is clear of
+ * every box, line and moved one-port, and the bond takes its side. A
+ * one-port whose signals go more to the old side than to the new stays:
+ * they would cross the row instead. */
+typedef struct signal_ends {
+  int *adr, *other; /* per element (CSR): the other ends of its signals */
+} signal_ends;
+
+static void signal_ends_make(const bg_model *m, signal_ends *se) {
+  se->adr = bg_xcalloc((size_t)m->nelem + 2, sizeof *se->adr);
+  se->other = bg_xcalloc((size_t)2 * m->nsignal + 1, sizeof *se->other);
+  for (int i = 0; i < m->nsignal; i++)
+    if (m->signal_from[i] >= 0 && m->signal_to[i] >= 0) se->adr[m->signal_from[i] + 1]++, se->adr[m->signal_to[i] + 1]++;
+  for (int e = 0; e < m->nelem; e++) se->adr[e + 1] += se->adr[e];
+  int *fill = bg_xcalloc((size_t)m->nelem + 1, sizeof *fill);
+  for (int i = 0; i < m->nsignal; i++) {
+    int a = m->signal_from[i], z = m->signal_to[i];
+    if (a < 0 || z < 0) continue;
+    se->other[se->adr[a] + fill[a]++] = z, se->other[se->adr[z] + fill[z]++] = a;
+  }
+  free(fill);
+}
+
+/* Whether element e's signals go to side dir of c at least as much as to
+ * the other (and it has some). */
+static int signals_stay(const bg_diagram_layout *L, const signal_ends *se, int e, bg_vec c, int dir) {
+  int score = 0;
+  for (int j = se->adr[e]; j < se->adr[e + 1]; j++) {
+    int o = L->node_of[se->other[j]];
+    double d = (L->nx[o] - c.x) * DIRV[dir].x + (L->ny[o] - c.y) * DIRV[dir].y;
+    score += d > 0 ? 1 : d < 0 ? -1 : 0;
+  }
+  return score > 0 || (score == 0 && se->adr[e + 1] > se->adr[e]);
+}
+typedef struct moved_box {
+  double b[4];
+} moved_box;
+
+static int boxes_meet(const double a[4], const double b[4]) {
+  return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+}
+
+/* Whether the box b is clear of the nodes (but n and e) and legs the index
+ * holds, of the one-ports moved so far, and inside the figure. */
+static int place_clear(bg_router *all, int n, int e, const double b[4], const moved_box *mv, int nmv) {
+  const bg_diagram_layout *L = all->L;
+  if (b[0] < all->fx0 || b[1] < all->fy0 || b[2] > all->fx1 || b[3] > all->fy1) return 0;
+  for (int i = 0; i < nmv; i++)
+    if (boxes_meet(b, mv[i].b)) return 0;
+  bg_near_box(&all->ix, b[0], b[1], b[2], b[3], &all->nl);
+  for (int j = 0; j < all->nl.n; j++) {
+    int k = all->nl.k[j];
+    if (k < L->nnode) {
+      if (k == n || k == e || !bg_node_shown(L, k) || L->nw[k] <= 0) continue;
+      double o[4] = {L->nx[k] - L->nw[k] / 2, L->ny[k] - L->nh[k] / 2, L->nx[k] + L->nw[k] / 2, L->ny[k] + L->nh[k] / 2};
+      if (boxes_meet(b, o)) return 0;
+    } else if (seg_box(all->ix.la[k - L->nnode], all->ix.lb[k - L->nnode], b[0], b[1], b[2], b[3])) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+/* At end n of blocked bond b (its other end o): the one-port moved off the
+ * side facing o when no side facing o is free. Returns whether it moved. */
+static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b, const unsigned char *blocked,
+                         const signal_ends *se, moved_box *mv, int *nmv) {
+  bg_diagram_layout *L = (bg_diagram_layout *)all->L;
+  if (n >= m->nelem || (L->rep && L->rep[n] != n)) return 0;
+  bg_vec to = bg_vsub(bg_v(L->nx[o], L->ny[o]), bg_v(L->nx[n], L->ny[n]));
+  for (int dir = 0; dir < 4; dir++)
+    if (to.x * DIRV[dir].x + to.y * DIRV[dir].y > 1 && bond_side_free(L, m, n, b, blocked, dir)) return 0;
+  int best = -1;
+  double best_dot = 1;
+  for (int i = 0; i < m->elem_nbond[n]; i++) {
+    int ob = m->elem_bonds[m->elem_bondadr[n] + i];
+    const bg_bond_geom *g = &L->bg[ob];
+    if (blocked[ob] || (L->bond_hidden && L->bond_hidden[ob]) || g->spln || g->bendn) continue;
+    int tail = m->bond_tail[ob] == n, e = tail ? m->bond_head[ob] : m->bond_tail[ob];
+    if (m->elem_nbond[e] != 1 || L->node_of[e] != e || (L->rep && L->rep[e] != e) || !bg_node_shown(L, e)) continue;
+    bg_vec u = tail ? g->tdir : bg_vscale(g->hdir, -1);
+    for (int dir = 0; dir < 4; dir++) {
+      double facing = to.x * DIRV[dir].x + to.y * DIRV[dir].y;
+      if (u.x * DIRV[dir].x + u.y * DIRV[dir].y <= 0.866 || facing <= best_dot) continue;
+      if (!bond_side_free(L, m, n, ob, blocked, dir) || !bond_side_free(L, m, n, ob, blocked, dir ^ 1)) continue;
+      if (signals_stay(L, se, e, bg_v(L->nx[n], L->ny[n]), dir)) continue;
+      best = ob, best_dot = facing;
+    }
+  }
+  if (best < 0) return 0;
+  int e = m->bond_tail[best] == n ? m->bond_head[best] : m->bond_tail[best];
+  bg_vec c = bg_v(L->nx[n], L->ny[n]), at = bg_vsub(bg_vscale(c, 2), bg_v(L->nx[e], L->ny[e]));
+  moved_box nb = {{at.x - L->nw[e] / 2 - 3, at.y - L->nh[e] / 2 - 3, at.x + L->nw[e] / 2 + 3, at.y + L->nh[e] / 2 + 3}};
+  if (!place_clear(all, n, e, nb.b, mv, *nmv)) return 0;
+  L->nx[e] = at.x, L->ny[e] = at.y;
+  bg_bond_geom *g = &L->bg[best]; /* mirrored through c: every point, every direction turned */
+  g->tail = bg_vsub(bg_vscale(c, 2), g->tail), g->head = bg_vsub(bg_vscale(c, 2), g->head);
+  g->mid = bg_vsub(bg_vscale(c, 2), g->mid);
+  g->tdir = bg_vscale(g->tdir, -1), g->hdir = bg_vscale(g->hdir, -1), g->mdir = bg_vscale(g->mdir, -1);
+  mv[(*nmv)++] = nb;
+  return 1;
+}
+
 /* The ways out of node n for bond b: the middles of its free sides (not
  * taken by another bond's end or an earlier route, taken: a bit per side),
  * else its four corners on a diagonal, COST_DIAG dearer. */
@@ -144,6 +254,17 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
   bg_router *all = bg_router_new(L, nb, NULL);
   for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, m, b);
+  moved_box *mv = bg_xcalloc((size_t)2 * nblocked + 1, sizeof *mv);
+  signal_ends se;
+  signal_ends_make(m, &se);
+  int nmv = 0;
+  for (int b = 0; b < nb; b++) {
+    if (!blocked[b]) continue;
+    int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
+    move_one_port(all, m, t, h, b, blocked, &se, mv, &nmv);
+    move_one_port(all, m, h, t, b, blocked, &se, mv, &nmv);
+  }
+  free(mv), free(se.adr), free(se.other);
   bg_router_free(all);
   if (!nblocked) {
     free(blocked);

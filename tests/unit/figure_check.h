@@ -47,6 +47,7 @@ typedef struct fc_stats {
   int sig_through;           /* of lines_through, signals × element labels (a route through a node) */
   int bond_overlaps;         /* of overlaps, the pairs with a bond (a bond drawn on another line) */
   int bare_branches;         /* signals starting on another signal's line without a branch dot (fc_bare_branches) */
+  int adjacent;              /* of crossings and signal × bond, those of lines sharing an end (fc_adjacent) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -760,6 +761,60 @@ static inline int fc_spine_bent(const bg_model *m, const bg_scene *s) {
   free(dist), free(reach), free(queue), free(corner);
   fc_free(&f);
   return bent;
+}
+
+/* The element a signal's end names ("signal FROM->TO", side 0 FROM, 1 TO),
+ * -1 when it is none (a bond variable, an integrator). */
+static int fc_signal_end(const bg_model *m, const char *name, int side) {
+  const char *arrow = name ? strstr(name, "->") : NULL;
+  if (!arrow) return -1;
+  const char *a = side ? arrow + 2 : name;
+  size_t n = side ? strcspn(a, " ") : (size_t)(arrow - name);
+  for (int v = 0; v < m->nelem; v++)
+    if (strlen(m->elem_name[v]) == n && !strncmp(m->elem_name[v], a, n)) return v;
+  return -1;
+}
+
+/* Issue 31, crossings the graph does not force: pairs of bonds that cross
+ * and share an end element, and signals crossing a bond of their own
+ * source or target element. Two lines out of one node can always be
+ * drawn without crossing each other (the node's sides taken in the other
+ * order, or the one-port moved to the other side), so such a crossing is
+ * avoidable at a bounded cost, a few points of length round the node. */
+static inline int fc_adjacent(const bg_model *m, const bg_scene *s) {
+  fc_scene f;
+  fc_read(s, &f);
+  int nb = m->nbond, n = 0;
+  int *bond = malloc(((size_t)f.nline + 1) * sizeof(int));
+  for (int j = 0; j < f.nline; j++) {
+    bond[j] = -1;
+    if (f.line[j].kind == FC_BOND && f.line[j].id > 0)
+      for (int b = 0; b < nb; b++)
+        if (m->bond_num[b] == f.line[j].id) bond[j] = b;
+  }
+  for (int j = 0; j < f.nline; j++)
+    for (int k = 0; k < f.nline; k++) {
+      int b = bond[k];
+      if (b < 0 || k == j) continue;
+      int ends[2] = {-1, -1};
+      if (f.line[j].kind == FC_BOND && bond[j] >= 0 && k > j)
+        ends[0] = m->bond_tail[bond[j]], ends[1] = m->bond_head[bond[j]];
+      else if (f.line[j].kind == FC_SIGNAL)
+        ends[0] = fc_signal_end(m, f.line[j].name, 0), ends[1] = fc_signal_end(m, f.line[j].name, 1);
+      else
+        continue;
+      int shared = 0;
+      for (int e = 0; e < 2; e++) shared |= ends[e] >= 0 && (ends[e] == m->bond_tail[b] || ends[e] == m->bond_head[b]);
+      if (!shared || !fc_crosses(&f.line[j], &f.line[k])) continue;
+      n++;
+      if (fc_explain)
+        printf("  adjacent: %s %d (%s) crosses bond %d, a bond of its own end\n",
+               f.line[j].kind == FC_BOND ? "bond" : "signal", f.line[j].id, f.line[j].name ? f.line[j].name : "",
+               f.line[k].id);
+    }
+  free(bond);
+  fc_free(&f);
+  return n;
 }
 
 static inline void fc_add(fc_stats *sum, const fc_stats *s) {
