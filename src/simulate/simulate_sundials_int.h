@@ -56,7 +56,8 @@
   X(IDA, IDAGetCurrentStep) X(IDA, IDAGetNumErrTestFails) X(IDA, IDAGetNumJacEvals)            \
   X(IDA, IDAGetNumNonlinSolvIters) X(IDA, IDAGetNumResEvals) X(IDA, IDAGetNumSteps)            \
   X(IDA, IDAGetReturnFlagName) X(IDA, IDAGetRootInfo) X(IDA, IDAInit) X(IDA, IDAReInit)        \
-  X(IDA, IDARootInit) X(IDA, IDASVtolerances) X(IDA, IDASetId) X(IDA, IDASetJacFn)             \
+  X(IDA, IDARootInit) X(IDA, IDASVtolerances) X(IDA, IDAWFtolerances) X(IDA, IDASetId)         \
+  X(IDA, IDASetJacFn)                                                                          \
   X(IDA, IDASetLinearSolver) X(IDA, IDASetMaxNumSteps) X(IDA, IDASetMaxStep)                   \
   X(IDA, IDASetStopTime) X(IDA, IDASetSuppressAlg) X(IDA, IDASetUserData) X(IDA, IDASolve)     \
   X(NVECSERIAL, N_VConst) X(NVECSERIAL, N_VDestroy) X(NVECSERIAL, N_VGetArrayPointer)          \
@@ -131,6 +132,7 @@ const bg_sundials_table *bg_sundials(void);
 #define IDAReInit(...) (bg_sundials()->IDAReInit(__VA_ARGS__))
 #define IDARootInit(...) (bg_sundials()->IDARootInit(__VA_ARGS__))
 #define IDASVtolerances(...) (bg_sundials()->IDASVtolerances(__VA_ARGS__))
+#define IDAWFtolerances(...) (bg_sundials()->IDAWFtolerances(__VA_ARGS__))
 #define IDASetId(...) (bg_sundials()->IDASetId(__VA_ARGS__))
 #define IDASetJacFn(...) (bg_sundials()->IDASetJacFn(__VA_ARGS__))
 #define IDASetLinearSolver(...) (bg_sundials()->IDASetLinearSolver(__VA_ARGS__))
