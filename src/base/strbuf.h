@@ -38,7 +38,8 @@ void bg_sb_vprintf(bg_strbuf *b, const char *fmt, va_list ap);
 /* Appends s as a JSON string literal, quotes included. */
 void bg_sb_json_str(bg_strbuf *b, const char *s);
 /* The one number printer: the shortest "%.Ng" with N from min_digits to 17
- * that reads back as the same double (finite v; buf of at least 32 bytes).
+ * that reads back as the same double (buf of at least 32 bytes; a v that is
+ * not finite prints as printf's "%.17g" does: nan, inf, -inf).
  * Every number bgdraw writes for a program to read (JSON, CSV, equations,
  * generated C, re-parsable expressions) goes through it; min_digits 15 is the
  * usual choice (the digits of the shortest decimal that round-trips), 6 gives

@@ -431,8 +431,9 @@ static int reduce(ir_work *W, bg_indexred *out) {
   if (out->ndiff == 0) {
     out->structural_le1 = 1;
     snprintf(W->why, sizeof W->why, "the structure of the equations has index 1 or 0 (Pantelides "
-             "differentiates nothing), so the index above 1 comes from values the structure "
-             "does not show; no structural reduction applies");
+             "differentiates nothing), so no structural reduction applies; an index above 1 "
+             "could only come from values the structure does not show, and the numeric "
+             "index at the initial point decides");
     return -1;
   }
   initial_values(W);
