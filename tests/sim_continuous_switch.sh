@@ -122,4 +122,48 @@ M
 [ $st -eq 3 ] && grep -q "simulation failed at t = 1.65[56].*more than 1000 state events.*chattering" "$tmp/err"; ok=$?
 check "friction with a jump at rest: exit 3 at t = 1.6566, chattering stated (got $st: $(head -c 300 "$tmp/err"))" $ok
 
+
+# The same jump from rest (docs/simulation.md, "Starting on a switching
+# point"): the push 0.2 sin 2t is weaker than the friction's 0.3, so the
+# mass must stay at rest, which no mode of the law holds (under f > 0 the
+# rate points to f < 0 and back). It ran with exit 0 and M.p = -0.0212 at
+# t = 0.075 (the f > 0 side held while f < 0); now refused at t = 0.
+# A push stronger than the friction from rest moves the mass, on the exact
+# solution of the side it moves to: M f' = +-0.5 -+ 0.3 - s f.
+rest() { # PUSH
+  cat <<M
+model rest
+Se P = $1
+1 v
+I M = 1 [p0 = 0]
+R F : e = if(f > 0, 0.221*f + 0.3, 0.327*f - 0.3)
+bond P -> v
+bond v -> M
+bond v -> F
+simulate t_end = 1, rtol = 1e-9, atol = 1e-12
+plot M.f
+M
+}
+rest "0.2*sin(2*t)" >"$tmp/rest.bg"
+"$BGDRAW" "$tmp/rest.bg" --simulate -o "$tmp/rest.csv" 2>"$tmp/err"; st=$?
+[ $st -eq 3 ] && [ ! -e "$tmp/rest.csv" ] &&
+  grep -q "simulation failed at t = 0: the switching condition law of F: .* neither side holds.*sliding mode" "$tmp/err"
+ok=$? # before the check's words run head
+check "friction stronger than the push from rest: refused at t = 0, sliding stated, no CSV (got $st: $(head -c 300 "$tmp/err"))" $ok
+for push in 0.5 -0.5; do
+  rest "$push" >"$tmp/rest.bg"
+  "$BGDRAW" "$tmp/rest.bg" --simulate -o "$tmp/rest.csv" 2>"$tmp/err"; st=$?
+  check "push $push from rest: exit 0 (got $st: $(head -c 300 "$tmp/err"))" $st
+  python3 - "$tmp/rest.csv" "$push" <<'PY'
+import csv, math, sys
+push = float(sys.argv[2])
+s, c = (0.221, push - 0.3) if push > 0 else (0.327, push + 0.3)
+rows = [[float(v) for v in r] for r in list(csv.reader(open(sys.argv[1])))[1:] if r and not r[0].startswith("#")]
+worst = max(abs(f - c / s * (1 - math.exp(-s * t))) for t, f in rows)
+print("push %g: largest error %.2g" % (push, worst))
+sys.exit(not (len(rows) > 10 and worst <= 1e-8))
+PY
+  check "push $push from rest: the exact solution of the side it moves to, to 1e-8" $?
+done
+
 finish

@@ -187,6 +187,10 @@ int bg_eqsys_roots(bg_eqsys *s, double t, const double *y, const double *yp, dou
  * zero at a root just found; one still undecided is decided by the point
  * y + delta y' (y' = yp, or the right-hand side when yp is NULL). Returns
  * how many modes changed. */
+/* After an ODE's bg_eqsys_modes_update: the event whose switching function
+ * sat exactly at 0 and that no mode holds (each side's rate points to the
+ * other: a sliding mode at its start), or -1. */
+int bg_eqsys_mode_sliding(const bg_eqsys *s);
 int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
                           double delta);
 /* The modes of the limit from the right of (t, y, yp): the algebraic

@@ -389,8 +389,37 @@ static int undecided(const bg_eqsys *s, int e, const int *dir) {
   return 0;
 }
 
+/* An ODE's look-ahead chose the modes of the switching functions exactly
+ * zero at (t, y) from where the right-hand side moves y a moment later under
+ * the modes as they were. Looked ahead again under the chosen modes: when a
+ * function decided that way lands on the other side (a law with a jump
+ * whose two sides each push the state to the other, e.g. friction stronger
+ * than the push on a mass at rest) no mode holds there, a sliding mode at
+ * its start; holding the chosen mode would be wrong from the first step
+ * (SUNDIALS deactivates a root function that is 0 at the start and lets it
+ * take its sign silently). Returns 1 + the first such event, or 0. The
+ * modes are left as the first look-ahead chose them. */
+static int sliding(bg_eqsys *s, double t, const double *y, double delta, const unsigned char *decided) {
+  double *chosen = bg_xmalloc((size_t)s->nev * sizeof(double));
+  int nd = 0, found = 0;
+  for (int e = 0; e < s->nev; e++) nd += decided[e];
+  memcpy(chosen, s->ev_mode, (size_t)s->nev * sizeof(double));
+  if (nd && bg_eqsys_rhs(s, t, y, s->ev_yp) == 0) {
+    for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * s->ev_yp[i];
+    modes_pass(s, t + delta, s->ev_y, NULL, NULL, decided);
+    for (int e = 0; e < s->nev && !found; e++)
+      if (decided[e] && !undecided(s, e, NULL) && s->ev_mode[e] != chosen[e]) found = 1 + e;
+  }
+  memcpy(s->ev_mode, chosen, (size_t)s->nev * sizeof(double));
+  free(chosen);
+  return found;
+}
+
+int bg_eqsys_mode_sliding(const bg_eqsys *s) { return s->ev_sliding - 1; }
+
 int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *yp, const int *dir,
                           double delta) {
+  s->ev_sliding = 0;
   if (!s->nev) return 0;
   unsigned char *zero = s->ev_zero;
   int changed = 0, nzero = 0, was = s->ev_frozen;
@@ -408,8 +437,12 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
     if (!yp && bg_eqsys_rhs(s, t, y, s->ev_yp) == 0) ydot = s->ev_yp;
     if (ydot) {
       for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * ydot[i];
+      unsigned char *decided = bg_xmalloc((size_t)s->nev);
+      memcpy(decided, zero, (size_t)s->nev);
       modes_pass(s, t + delta, s->ev_y, yp, NULL, zero);
-      for (int e = 0; e < s->nev; e++) zero[e] = zero[e] && undecided(s, e, NULL);
+      for (int e = 0; e < s->nev; e++) zero[e] = zero[e] && undecided(s, e, NULL), decided[e] &= !zero[e];
+      if (!yp) s->ev_sliding = sliding(s, t, y, delta, decided);
+      free(decided);
     }
   }
   /* Still zero a moment later (hydraulic_lift's throttle: its pressure drop

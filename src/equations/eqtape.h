@@ -135,6 +135,7 @@ struct bg_eqsys {
   unsigned char *ev_zero;     /* per event: a switching function exactly zero */
   unsigned char *ev_free;     /* per event: undecided at the last update, evaluated as compiled */
   double *ev_band;            /* per event: > 0 while loose, the half-width of its band (continuous switches) */
+  int ev_sliding;             /* 1 + the event the last update found sliding at its switching point, or 0 */
   int nroot, *root_ev;
   const char **root_text;
   unsigned char *slot_dep; /* per slot: reads y or yp (bit 1), t (bit 2) */

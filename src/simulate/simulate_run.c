@@ -438,6 +438,7 @@ static int run_calcic(simrun *R, double tnext) {
 #define SIM_MODE_SETTLE 8            /* IDA: consistent values and modes, rounds at most */
 #define SIM_CHATTER (-1000)          /* run_to's flag: too many events */
 #define SIM_UNSETTLED (-1001)        /* the modes and consistent values disagree */
+#define SIM_SLIDING (-1002)          /* an ODE's switching function at 0 that no mode holds */
 
 /* The look-ahead of a switching function exactly zero at a restart. */
 static double ev_delta(const simrun *R) { return 1e-9 * (R->p->t_end - R->p->t0); }
@@ -447,6 +448,16 @@ static int modes_now(simrun *R, const int *dir) {
   int ida = R->p->kind == BG_SIM_IDA;
   return bg_eqsys_modes_update(R->s, R->tcur, N_VGetArrayPointer(R->y), ida ? N_VGetArrayPointer(R->yp) : NULL,
                                dir, ev_delta(R));
+}
+
+/* After modes_now of an ODE: SIM_SLIDING when a switching function sat at 0
+ * and neither side holds (bg_eqsys_mode_sliding; R->last_root names it), else 0. */
+static int sliding_now(simrun *R) {
+  int e = R->nroot && R->p->kind != BG_SIM_IDA ? bg_eqsys_mode_sliding(R->s) : -1, first;
+  if (e < 0) return 0;
+  bg_eqsys_mode_roots(R->s, e, &first);
+  R->last_root = first;
+  return SIM_SLIDING;
 }
 
 /* IDA, when the modes from the values at t flip back and forth (switching
@@ -614,6 +625,7 @@ static int on_event(simrun *R, double tnext) {
   if (++R->nev_interval > SIM_EVENTS_PER_INTERVAL) return SIM_CHATTER;
   stats_now(R, R->st); /* ReInit resets the counters */
   modes_now(R, R->rootsfound);
+  if ((f = sliding_now(R))) return f;
   loosen_continuous(R);
   if (!ida) f = CVodeReInit(R->mem, R->tcur, R->y);
   else if ((f = IDAReInit(R->mem, R->tcur, R->y, R->yp)) >= 0) f = settle(R, tnext);
@@ -647,6 +659,7 @@ static int run_restart(simrun *R, double tb, double tnext) {
   stats_now(R, R->st);
   R->tcur = tb;
   modes_now(R, NULL);
+  if (sliding_now(R)) return SIM_SLIDING;
   if (R->p->kind != BG_SIM_IDA) return CVodeReInit(R->mem, tb, R->y);
   /* the algebraic rows at the inputs' new values first, as at the start
    * (bg_eqsys_initial): IDACalcIC's Newton has no rate of a dependent store
@@ -700,6 +713,11 @@ static void fail_events(simrun *R, bg_simresult *r, int flag) {
                       "the last at %s: the condition switches back and forth (chattering, a sliding "
                       "mode such as friction at rest) and the equations have no mode that holds there",
                  R->tcur, SIM_EVENTS_PER_INTERVAL, what);
+  else if (flag == SIM_SLIDING)
+    bg_sb_printf(&sb, "simulation failed at t = %.9g: the switching condition %s sits exactly at its "
+                      "switching point and neither side holds (under each, the rates move the state to "
+                      "the other side: a sliding mode such as friction at rest, which the equations "
+                      "have no mode for)", R->tcur, what);
   else
     bg_sb_printf(&sb, "simulation failed at t = %.9g: at a switching point (%s) no modes of the conditions "
                       "agree with consistent values, neither at t (%d rounds of IDACalcIC) nor a moment later "
@@ -761,7 +779,7 @@ static int time_axis_words(simrun *R, double t, bg_strbuf *sb) {
 }
 
 static void fail(simrun *R, bg_simresult *r, int flag, const char *during) {
-  if (flag == SIM_CHATTER || flag == SIM_UNSETTLED) { fail_events(R, r, flag); return; }
+  if (flag == SIM_CHATTER || flag == SIM_UNSETTLED || flag == SIM_SLIDING) { fail_events(R, r, flag); return; }
   if (flag == SIM_RATES) {
     bg_strbuf sb = {0};
     bg_sb_printf(&sb, "simulation failed at t = %.9g%s: the rates found there do not satisfy the time derivative "
@@ -1051,7 +1069,11 @@ static int run_start(simrun *R, bg_simresult *r) {
     modes_now(R, NULL);
     bg_eqsys_modes_freeze(R->s, 1);
   }
-  if (R->p->kind != BG_SIM_IDA) { keep_start(R, r); return 0; }
+  if (R->p->kind != BG_SIM_IDA) {
+    keep_start(R, r);
+    if (sliding_now(R)) { fail(R, r, SIM_SLIDING, ""); return -1; }
+    return 0;
+  }
   R->starting = 1;
   int n = R->n, nz = 0;
   double *y0 = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double));
