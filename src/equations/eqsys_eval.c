@@ -100,11 +100,14 @@ int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit) {
   }
   /* a component whose solution is 0 at 0, not at Newton's 1e-32, whatever
    * the order of the equations (eqsys_lagstart.c; docs/property.md, finding
-   * 26); this Newton steps down to 1e-15 of the largest, so from 1e-18 */
+   * 26); this Newton steps down to 1e-15 of the largest, so from 1e-18,
+   * of the largest alone: from rest every value a moment later is small, and
+   * an absolute floor set the switching functions the modes' look-ahead
+   * reads to 0 (finding 29: a law held on the wrong side for a whole run) */
   if (ok && na) {
     double **u = malloc((size_t)na * sizeof(double *));
     for (int a = 0; a < na; a++) u[a] = &y[ix[a]];
-    bg_eqs_snap_zeros(s, t, y, yp, r, u, na, ix, na, 1e-18);
+    bg_eqs_snap_zeros(s, t, y, yp, r, u, na, ix, na, 1e-18, 0.0);
     free(u);
   }
   free(ix), free(piv), free(yp), free(r), free(J), free(M), free(y1), free(rb);

@@ -18,11 +18,13 @@ void bg_eqs_sym_lookups(bg_eqsys *s);
  * y and yp updated only on success (0). */
 int bg_eqs_lagrange_start(bg_eqsys *s, double t, double *y, double *yp, int maxit);
 /* Sets to 0 the unknowns u[0..nu) (pointers into y or yp) below Newton's
- * resolution (levels from first of the largest down) when the residual of
- * the rows (NULL: rows 0..nrows) stays within its rounding; r is left the
- * residual at the result. */
+ * resolution (levels from first of unit + the largest down) when the
+ * residual of the rows (NULL: rows 0..nrows) stays within its rounding; r is
+ * left the residual at the result. unit 0: relative to the largest alone, so
+ * values that are all small (a moment after a start from rest, where the
+ * modes' look-ahead reads them) are kept (docs/property.md, finding 29). */
 void bg_eqs_snap_zeros(bg_eqsys *s, double t, double *y, double *yp, double *r, double *const *u, int nu,
-                       const int *rows, int nrows, double first);
+                       const int *rows, int nrows, double first, double unit);
 /* eqsys_tape.c */
 void bg_eqs_compile(bg_eqsys *s);
 /* Tape building blocks for systems compiled from other trees (indexred_tape.c):

@@ -96,7 +96,7 @@ static double rows_max(const double *r, const int *rows, int nrows) {
 }
 
 void bg_eqs_snap_zeros(bg_eqsys *s, double t, double *y, double *yp, double *r, double *const *u, int nu,
-                       const int *rows, int nrows, double first) {
+                       const int *rows, int nrows, double first, double unit) {
   static const double level[] = {1e-12, 1e-18, 1e-24, 1e-30};
   double umax = 0;
   if (bg_eqsys_residual(s, t, y, yp, r)) return;
@@ -109,7 +109,7 @@ void bg_eqs_snap_zeros(bg_eqsys *s, double t, double *y, double *yp, double *r, 
     int nsnap = 0;
     for (int k = 0; k < nu; k++) {
       *u[k] = keep[k];
-      if (*u[k] != 0 && fabs(*u[k]) <= level[q] * (1 + umax)) *u[k] = 0, nsnap++;
+      if (*u[k] != 0 && fabs(*u[k]) <= level[q] * (unit + umax)) *u[k] = 0, nsnap++;
     }
     if (!nsnap) break;
     if (!bg_eqsys_residual(s, t, y, yp, r) && rows_max(r, rows, nrows) <= tol) {
@@ -125,7 +125,7 @@ void bg_eqs_snap_zeros(bg_eqsys *s, double t, double *y, double *yp, double *r, 
 static void snap_zeros(lagnewton *L, double t) {
   double **u = bg_xmalloc((size_t)L->n * sizeof(double *));
   for (int k = 0; k < L->n; k++) u[k] = unknown(L, k);
-  bg_eqs_snap_zeros(L->s, t, L->y, L->yp, L->r, u, L->n, NULL, L->n, 1e-12);
+  bg_eqs_snap_zeros(L->s, t, L->y, L->yp, L->r, u, L->n, NULL, L->n, 1e-12, 1.0);
   free(u);
 }
 
