@@ -24,6 +24,20 @@ sys.exit(worst > float(sys.argv[3]))
 PY
 }
 
+# reordered FILE SEED: the model with its statements in the order of
+# check.py's `reorder` variant for SEED (its first shuffle)
+reordered() {
+  python3 - "$here" "$1" "$2" <<'PY'
+import random, sys
+sys.path.insert(0, sys.argv[1])
+import gen
+m = gen.parse(open(sys.argv[2]).read())
+order = list(range(len(m.elems) + len(m.bonds)))
+random.Random(int(sys.argv[3]) * 7919 + 1).shuffle(order)
+sys.stdout.write(m.text(order=order))
+PY
+}
+
 for f in "$here"/found/*.bg; do
   seed=$(basename "$f" | sed -n 's/^seed\([0-9]*\)_.*/\1/p')
   python3 "$here/prop.py" "$bg" --model "$f" --seed "${seed:-1}" > "$tmp/out.txt"; st=$?
@@ -116,16 +130,7 @@ check "seed7596 relaxed: the conflicts at j7 and j18 together" \
 # take them from the constraints' time derivatives and the orders agree to
 # the states' accuracy (1.2e-7).
 m=$here/found/seed488_reorder_reduced.bg
-python3 - "$here" "$m" 488 >"$tmp/r488.bg" <<'PY'
-import random, sys
-sys.path.insert(0, sys.argv[1])
-import gen
-m = gen.parse(open(sys.argv[2]).read())
-rng = random.Random(int(sys.argv[3]) * 7919 + 1)  # check.py's order for the seed
-order = list(range(len(m.elems) + len(m.bonds)))
-rng.shuffle(order)
-sys.stdout.write(m.text(order=order))
-PY
+reordered "$m" 488 >"$tmp/r488.bg"
 "$bg" "$m" -o "$tmp/a488.csv" 2>/dev/null && "$bg" "$tmp/r488.bg" -o "$tmp/b488.csv" 2>/dev/null
 check "seed488: both orders exit 0" '[ $? -eq 0 ]'
 check "seed488: the other order's trajectories to 1e-6" 'same_runs "$tmp/a488.csv" "$tmp/b488.csv" 1e-6'
@@ -157,19 +162,6 @@ sed -e 's|^I   L2 : f = p/1.2 + 0.36\*p^3|I   L2 = 1.2|' -e 's|^plot .*|plot e2,
 check "seed439 merge-stores: refused, the kept store's state is read" \
   '[ $? -eq 3 ] && grep -q "reads the state of L1, which the merge makes the sum" "$tmp/e439" && [ ! -e "$tmp/m439.bg" ]'
 # Findings 2c, 4 and 9: the same physics in another order of the equations.
-# reordered FILE SEED: the model with its statements in the order of
-# check.py's `reorder` variant for SEED (its first shuffle)
-reordered() {
-  python3 - "$here" "$1" "$2" <<'PY'
-import random, sys
-sys.path.insert(0, sys.argv[1])
-import gen
-m = gen.parse(open(sys.argv[2]).read())
-order = list(range(len(m.elems) + len(m.bonds)))
-random.Random(int(sys.argv[3]) * 7919 + 1).shuffle(order)
-sys.stdout.write(m.text(order=order))
-PY
-}
 # Finding 2c: seed 32's 26-element model reduces its index (5 dummy
 # derivatives) in both orders; the reordered one failed ("singular pencil at
 # the initial point": Newton left C6.q at 7e-49, not 0, and its cubic law's
@@ -474,16 +466,7 @@ done
 # rtol 1e-11, the global error of rtol 1e-9. The check compared each value
 # to its own size; now to its column's range (the other checks' rule).
 m=$here/found/seed3993_reorder_reduced.bg
-python3 - "$here" "$m" 3993 >"$tmp/r3993.bg" <<'PY'
-import random, sys
-sys.path.insert(0, sys.argv[1])
-import gen
-m = gen.parse(open(sys.argv[2]).read())
-rng = random.Random(int(sys.argv[3]) * 7919 + 1)  # check.py's order for the seed
-order = list(range(len(m.elems) + len(m.bonds)))
-rng.shuffle(order)
-sys.stdout.write(m.text(order=order))
-PY
+reordered "$m" 3993 >"$tmp/r3993.bg"
 sed 's/rtol = 1e-9, atol = 1e-11/rtol = 1e-11, atol = 1e-16/' "$m" >"$tmp/x3993.bg"
 "$bg" "$m" -o "$tmp/a3993.csv" 2>/dev/null && "$bg" "$tmp/r3993.bg" -o "$tmp/b3993.csv" 2>/dev/null &&
   "$bg" "$tmp/x3993.bg" -o "$tmp/x3993.csv" 2>/dev/null
