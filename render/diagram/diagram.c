@@ -67,6 +67,7 @@ static void label_nodes(bg_diagram_layout *d) {
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] >= 0) d->nlabel[d->state_node[s]] = state_markup(d, s);
   bg_parts_labels(d);
+  bg_fields_labels(d);
 }
 
 static void measure_nodes(bg_diagram_layout *d) {
@@ -179,7 +180,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
    * style (issue 31: print's serif font swapped nodes in 9 of 69 models);
    * the grid pass spaces them with the style's own sizes. */
   const char *engine = choose_engine(d), *rd = m->layout.rankdir;
-  int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR")) && !d->rep;
+  int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR"));
   bg_style ref;
   bg_style_default(&ref);
   const bg_style *lst = grid ? &ref : &d->st;
@@ -226,7 +227,6 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;
-  /* the grid pass places one node per element: not for fields (one node, several elements) */
   if (grid) bg_grid_place(d);
   bg_parts_spread(d);
   return 0;
@@ -379,10 +379,10 @@ static void draw_all(bg_diagram *d) {
   if (show & BG_SHOW_SIGNALS) bg_draw_signals(d);
   bg_draw_lagrange(d);
   for (int i = 0; i < d->npoly; i++) bg_obstacle_owned(d, d->poly[i], i + 1);
+  if (d->m->nfield) bg_draw_field_ports(d);
   bg_draw_numbers(d);
   bg_draw_nodes(d);
   bg_draw_parts(d);
-  if (d->m->nfield) bg_draw_field_ports(d);
   if (d->a && ((show & BG_SHOW_CONFLICTS) || hk == 'c')) bg_draw_conflicts(d);
   drawing_fence(d);
   bg_place_layer_labels(d);

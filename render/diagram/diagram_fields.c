@@ -28,6 +28,12 @@ static char *field_markup(bg_diagram_layout *d, int f) {
   return s;
 }
 
+/* The field's label on its first port's node, in d's style (the layout's
+ * reference style too: diagram.c measures it like every label). */
+void bg_fields_labels(bg_diagram_layout *d) {
+  for (int f = 0; f < d->m->nfield; f++) d->nlabel[d->m->field_elemadr[f]] = field_markup(d, f);
+}
+
 void bg_fields_prepare(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   if (!m->nfield) return;
@@ -35,11 +41,6 @@ void bg_fields_prepare(bg_diagram_layout *d) {
   for (int n = 0; n < d->nnode; n++) d->rep[n] = n;
   for (int f = 0; f < m->nfield; f++) {
     int p1 = m->field_elemadr[f];
-    d->nlabel[p1] = field_markup(d, f);
-    double w, h;
-    bg_text_measure(d->st.font, d->st.font_size, d->nlabel[p1], &w, &h);
-    d->nw[p1] = w + 2 * d->st.node_pad;
-    d->nh[p1] = 0.8 * h + 2 * d->st.node_pad;
     for (int k = 1; k < m->field_nport[f]; k++) {
       d->rep[p1 + k] = p1;
       d->nw[p1 + k] = d->nw[p1], d->nh[p1 + k] = d->nh[p1];
@@ -113,7 +114,8 @@ void bg_fields_expand(bg_diagram_layout *d, bg_fields_lay *L) {
 
 /* ---------------------------------------------------------------- port names */
 /* Each port's name beside its bond, just outside the field's box ("el",
- * "[2]" for a numbered port). */
+ * "[2]" for a numbered port); drawn before the bond numbers, which keep off
+ * it (on the grid's short bonds a number sat on "[1]"). */
 void bg_draw_field_ports(bg_diagram *d) {
   const bg_model *m = d->m;
   double size = d->st.font_size * d->st.number_scale;
@@ -137,5 +139,8 @@ void bg_draw_field_ports(bg_diagram *d) {
       bg_scene_text(&d->scene, bg_sb_str(&t), p.x, p.y, size, 0.5, 0.5,
                     bg_diagram_ink(d, d->st.fg, d->hot_elem[pe]), role);
       bg_sb_free(&t);
+      double box[4]; /* the bond numbers, placed after, keep off it */
+      bg_scene_item_box(&d->scene, &d->scene.item[d->scene.nitem - 1], box);
+      bg_obstacle_rect(d, box[0], box[1], box[2], box[3]);
     }
 }

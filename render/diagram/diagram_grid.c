@@ -88,14 +88,20 @@ static void cell_take(grid *g, int x, int y, int owner) {
 }
 
 /* ---------------------------------------------------------------- graph */
+/* The node that draws v: a collapsed instance's element its box, a field's
+ * other port the field's node (its first port's), else v itself. */
+static int drawn_by(const bg_diagram_layout *d, int v) { return d->node_of[d->rep ? d->rep[v] : v]; }
+
+static int own_node(const bg_diagram_layout *d, int v) { return drawn_by(d, v) == v; }
+
 static void build_edges(grid *g) {
   const bg_model *m = g->d->m;
   const bg_analysis *a = g->d->a;
   int nlag = a ? a->nlag : 0;
   g->et = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
   g->eh = bg_xcalloc((size_t)(m->nbond + nlag + 1), sizeof(int));
-  const int *of = g->d->node_of; /* a collapsed instance's elements: its box */
-  for (int b = 0; b < m->nbond; b++) g->et[g->ne] = of[m->bond_tail[b]], g->eh[g->ne++] = of[m->bond_head[b]];
+  for (int b = 0; b < m->nbond; b++)
+    g->et[g->ne] = drawn_by(g->d, m->bond_tail[b]), g->eh[g->ne++] = drawn_by(g->d, m->bond_head[b]);
   for (int i = 0; i < nlag; i++)
     if (g->d->lag_node[i] >= 0) g->et[g->ne] = g->d->lag_node[i], g->eh[g->ne++] = a->lag_junction[i];
   g->adr = bg_xcalloc((size_t)g->n + 2, sizeof(int));
@@ -353,7 +359,7 @@ static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, i
   const bg_model *m = g->d->m;
   for (int i = 0; i < n; i++) ds[q[i]] = 0; /* the part, to find the hub its first source hangs on */
   for (int e = 0; e < m->nelem && src < 0; e++) {
-    int v = g->d->node_of[e];
+    int v = drawn_by(g->d, e);
     if (!bg_elem_is_source(m->elem_kind[e]) || g->hub[v] || g->deg[v] != 1) continue;
     int u = other(g, g->adj[g->adr[v]], v);
     if (ds[u] == 0) src = u;
@@ -813,12 +819,12 @@ static int float_anchor(const grid *g, int v) {
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] == v)
       for (int i = 0; i < m->nsignal; i++)
-        if (bg_signal_state(m, i) == s && g->placed[m->signal_to[i]]) return m->signal_to[i];
+        if (bg_signal_state(m, i) == s && g->placed[drawn_by(d, m->signal_to[i])]) return drawn_by(d, m->signal_to[i]);
   int best = -1;
   double bd = 1e300;
   for (int u = 0; u < g->n; u++) {
     double dd = hypot(d->nx[u] - d->nx[v], d->ny[u] - d->ny[v]);
-    if (g->placed[u] && dd < bd) bd = dd, best = u;
+    if (g->placed[u] && own_node(d, u) && dd < bd) bd = dd, best = u;
   }
   return best;
 }
@@ -846,7 +852,7 @@ static double *line_centres(const grid *g, const int *cell, const double *size, 
   int n = hi - lo + 1;
   double *w = bg_xcalloc((size_t)n + 1, sizeof(double)), *c = bg_xcalloc((size_t)n + 1, sizeof(double));
   for (int v = 0; v < g->n; v++)
-    if (bg_node_shown(g->d, v) && size[v] > w[cell[v] - lo]) w[cell[v] - lo] = size[v];
+    if (own_node(g->d, v) && size[v] > w[cell[v] - lo]) w[cell[v] - lo] = size[v];
   c[0] = w[0] / 2;
   for (int k = 1; k < n; k++) c[k] = c[k - 1] + w[k - 1] / 2 + gap + w[k] / 2;
   free(w);
@@ -856,7 +862,7 @@ static double *line_centres(const grid *g, const int *cell, const double *size, 
 static void range(const grid *g, const int *cell, int *lo, int *hi) {
   *lo = 1 << 30, *hi = -(1 << 30);
   for (int v = 0; v < g->n; v++)
-    if (bg_node_shown(g->d, v)) *lo = cell[v] < *lo ? cell[v] : *lo, *hi = cell[v] > *hi ? cell[v] : *hi;
+    if (own_node(g->d, v)) *lo = cell[v] < *lo ? cell[v] : *lo, *hi = cell[v] > *hi ? cell[v] : *hi;
   for (int e = 0; e < g->ne; e++)
     for (int k = 0; k < g->bent[e]; k++) {
       int c = cell == g->gx ? g->corner[e][2 * k] : g->corner[e][2 * k + 1];
@@ -897,11 +903,13 @@ static void to_points(grid *g) {
   double *cx = line_centres(g, g->gx, d->nw, x0, x1, fmax(d->st.rank_sep / 2, least) + band);
   double *cy = line_centres(g, g->gy, d->nh, y0, y1, fmax(d->st.node_sep * 0.75, least) + band);
   for (int v = 0; v < g->n; v++)
-    if (bg_node_shown(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
+    if (own_node(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
+  for (int v = 0; v < g->n; v++) /* a field's other ports where their field is (boxes: bg_parts_spread) */
+    if (!own_node(d, v)) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];
   bg_layout *l = &d->lay;
   l->width = l->height = 0;
   for (int v = 0; v < g->n; v++) {
-    if (!bg_node_shown(d, v)) continue; /* placed with its box afterwards */
+    if (!own_node(d, v)) continue; /* drawn by its box or field */
     l->width = fmax(l->width, d->nx[v] + d->nw[v] / 2);
     l->height = fmax(l->height, d->ny[v] + d->nh[v] / 2);
   }
@@ -948,7 +956,7 @@ void bg_grid_place(bg_diagram_layout *d) {
   grid g;
   grid_alloc(&g, d);
   classify(&g);
-  for (int v = 0; v < g.n; v++) g.placed[v] = !bg_node_shown(d, v); /* inside a box */
+  for (int v = 0; v < g.n; v++) g.placed[v] = !own_node(d, v); /* inside a box, a field's other port */
   int nh, *h = order_hubs(&g, &nh);
   assign_rows(&g, h, nh);
   mesh_rows(&g, h, nh);

@@ -280,6 +280,7 @@ void bg_draw_frames(bg_diagram *d);
 
 /* multiport fields (diagram_fields.c): one node per field, ports labelled */
 typedef struct bg_fields_lay bg_fields_lay;
+void bg_fields_labels(bg_diagram_layout *d);             /* each field's label on its first port */
 void bg_fields_prepare(bg_diagram_layout *d);            /* after the nodes are measured */
 /* Leaves the hidden ports out of the layout input (NULL: nothing to do), and
  * gives them their field's position after it (frees what compact made). */
