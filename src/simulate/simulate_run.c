@@ -438,7 +438,7 @@ static int run_calcic(simrun *R, double tnext) {
 #define SIM_MODE_SETTLE 8            /* IDA: consistent values and modes, rounds at most */
 #define SIM_CHATTER (-1000)          /* run_to's flag: too many events */
 #define SIM_UNSETTLED (-1001)        /* the modes and consistent values disagree */
-#define SIM_SLIDING (-1002)          /* an ODE's switching function at 0 that no mode holds */
+#define SIM_SLIDING (-1002)          /* a switching function at 0 that no mode holds */
 
 /* The look-ahead of a switching function exactly zero at a restart. */
 static double ev_delta(const simrun *R) { return 1e-9 * (R->p->t_end - R->p->t0); }
@@ -473,18 +473,27 @@ static int settle_right(simrun *R, double tnext) {
    * that (the bridge at rtol 1e-9: 1e-7 V in 4e-11 s against 1e-8 V of
    * error, and the modes cycled) */
   int nm = bg_eqsys_nmodes(R->s), g = 1;
-  double *m0 = bg_xmalloc((size_t)nm * sizeof(double));
+  double *m0 = bg_xmalloc((size_t)nm * sizeof(double)), d, used = 0;
   bg_eqsys_modes_get(R->s, m0);
-  for (double d = ev_delta(R); g && d <= 1e4 * ev_delta(R); d *= 100) {
+  for (d = ev_delta(R); g && d <= 1e4 * ev_delta(R); d *= 100) {
     bg_eqsys_modes_set(R->s, m0);
     g = bg_eqsys_modes_right(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), d,
                              SIM_MODE_SETTLE + 2 * nm);
+    used = d;
   }
   free(m0);
   if (g) return SIM_UNSETTLED;
   stats_now(R, R->st);
-  int f = IDAReInit(R->mem, R->tcur, R->y, R->yp);
+  int f = IDAReInit(R->mem, R->tcur, R->y, R->yp), e;
   f = f < 0 ? f : run_calcic(R, tnext);
+  /* the modes chosen from the rates under the modes before: do their own
+   * rates keep them? (a sliding mode at its start has no mode that does) */
+  if (f >= 0 && (e = bg_eqsys_modes_slide(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), used)) > 0) {
+    int first;
+    bg_eqsys_mode_roots(R->s, e - 1, &first);
+    R->last_root = first;
+    return SIM_SLIDING;
+  }
   return f;
 }
 
@@ -1087,7 +1096,8 @@ static int run_start(simrun *R, bg_simresult *r) {
   int nerr0 = R->nfunc_err;
   memcpy(msg0, R->sunmsg, sizeof msg0);
   memcpy(err0, R->err, sizeof err0);
-  for (k = 1; f < 0 && nz > 0 && k <= IC_GUESSES; k++) f = run_calcic_guess(R, y0, tnext, k);
+  /* (a sliding mode is no failure of the guess) */
+  for (k = 1; f < 0 && f != SIM_SLIDING && nz > 0 && k <= IC_GUESSES; k++) f = run_calcic_guess(R, y0, tnext, k);
   if (f < 0) {
     memcpy(R->sunmsg, msg0, sizeof msg0);
     memcpy(R->err, err0, sizeof err0);
