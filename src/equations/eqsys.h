@@ -200,10 +200,12 @@ int bg_eqsys_modes_update(bg_eqsys *s, double t, const double *y, const double *
  * "Starting on a switching point"). */
 int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *yp, double delta, int maxit);
 /* After a DAE's limit from the right and consistent values under its
- * modes: 1 + the event whose switching function sits exactly at 0 and whose
- * chosen mode its own rates leave (a sliding mode at its start), 0 when
- * every such mode holds, -1 when the solve a moment later failed. */
-int bg_eqsys_modes_slide(bg_eqsys *s, double t, const double *y, const double *yp, double delta);
+ * modes: 1 + the event whose switching function sits exactly at 0, whose
+ * chosen mode its own rates leave and whose law jumps there (its two
+ * sides' rows differ by more than tol, one per row): a sliding mode at its
+ * start; 0 when there is none, -1 when the solve a moment later failed. */
+int bg_eqsys_modes_slide(bg_eqsys *s, double t, const double *y, const double *yp, double delta,
+                         const double *tol);
 /* The root functions of mode e: how many, *first the index of the first. */
 int bg_eqsys_mode_roots(const bg_eqsys *s, int e, int *first);
 /* How the root function of mode e crossed 0 when the mode went from before

@@ -492,42 +492,6 @@ int bg_eqsys_modes_right(bg_eqsys *s, double t, const double *y, const double *y
   return rc;
 }
 
-/* A DAE's counterpart of sliding(): the limit from the right chose the
- * modes (bg_eqsys_modes_right, from rates consistent under the modes before
- * it) and IDACalcIC then gave rates yp consistent under the chosen ones.
- * Looked ahead along those rates (the algebraic unknowns solved at
- * t + delta under the chosen modes): a switching function exactly zero at
- * (t, y) that lands on the other side has no mode that holds (friction
- * stronger than the push on a mass at rest whose velocity is a dependent
- * store's: the settle rounds flip between the sides, and holding the one
- * chosen ran the whole span on it while the function had the other sign,
- * exit 0). Returns 1 + the first such event, or 0, or -1 when the solve
- * failed; the modes are left as they are. */
-int bg_eqsys_modes_slide(bg_eqsys *s, double t, const double *y, const double *yp, double delta) {
-  if (!s->nev || !(delta > 0)) return 0;
-  unsigned char *zero = bg_xmalloc((size_t)s->nev);
-  double *chosen = bg_xmalloc((size_t)s->nev * sizeof(double));
-  int nz = 0, found = 0, was = s->ev_frozen;
-  memcpy(chosen, s->ev_mode, (size_t)s->nev * sizeof(double));
-  s->ev_frozen = 1; /* every mode as held, not as compiled */
-  bg_eqs_eval_raw(s, t, y, yp);
-  for (int e = 0; e < s->nev; e++) nz += zero[e] = (unsigned char)(!(s->ev_band[e] > 0) && undecided(s, e, NULL));
-  if (nz) {
-    for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * yp[i];
-    if (bg_eqsys_consistent(s, t + delta, s->ev_y, 30)) found = -1;
-    else {
-      modes_pass(s, t + delta, s->ev_y, yp, NULL, zero);
-      for (int e = 0; e < s->nev && !found; e++)
-        if (zero[e] && !undecided(s, e, NULL) && s->ev_mode[e] != chosen[e]) found = 1 + e;
-    }
-  }
-  memcpy(s->ev_mode, chosen, (size_t)s->nev * sizeof(double));
-  s->ev_frozen = was;
-  s->has_err = 0;
-  free(zero), free(chosen);
-  return found;
-}
-
 /* ------------------------------------------------------------ loose modes
  * docs/simulation.md, "Continuous switches". */
 int bg_eqsys_root_mode(const bg_eqsys *s, int i) { return s->root_ev[i]; }
@@ -542,6 +506,56 @@ static int rows_in_mode(bg_eqsys *s, int e, double mode, double t, const double 
   int rc = yp ? bg_eqsys_residual(s, t, y, yp, out) : bg_eqsys_rhs(s, t, y, out);
   s->ev_mode[e] = keep;
   return rc;
+}
+
+/* A DAE's counterpart of sliding(): the limit from the right chose the
+ * modes (bg_eqsys_modes_right, from rates consistent under the modes before
+ * it) and IDACalcIC then gave rates yp consistent under the chosen ones.
+ * Looked ahead along those rates (the algebraic unknowns solved at
+ * t + delta under the chosen modes): a switching function exactly zero at
+ * (t, y) that lands on the other side, of a law with a jump there (its two
+ * sides' rows differ by more than tol), has no mode that holds (friction
+ * stronger than the push on a mass at rest whose velocity is a dependent
+ * store's: the settle rounds flip between the sides, and holding the one
+ * chosen ran the whole span on it while the function had the other sign,
+ * exit 0). A continuous law is one law there (either side holds at t; its
+ * look-ahead from rest reads second-order values and rounding: seed 6101's
+ * model flipped with the statements' order). Returns 1 + the first such
+ * event, or 0, or -1 when the solve failed; the modes are left as they are. */
+int bg_eqsys_modes_slide(bg_eqsys *s, double t, const double *y, const double *yp, double delta,
+                         const double *tol) {
+  if (!s->nev || !(delta > 0)) return 0;
+  unsigned char *zero = bg_xmalloc((size_t)s->nev);
+  double *chosen = bg_xmalloc((size_t)s->nev * sizeof(double));
+  int nz = 0, found = 0, was = s->ev_frozen;
+  memcpy(chosen, s->ev_mode, (size_t)s->nev * sizeof(double));
+  s->ev_frozen = 1; /* every mode as held, not as compiled */
+  bg_eqs_eval_raw(s, t, y, yp);
+  for (int e = 0; e < s->nev; e++) nz += zero[e] = (unsigned char)(!(s->ev_band[e] > 0) && undecided(s, e, NULL));
+  if (nz) {
+    for (int i = 0; i < s->n; i++) s->ev_y[i] = y[i] + delta * yp[i];
+    if (bg_eqsys_consistent(s, t + delta, s->ev_y, 30)) found = -1;
+    else {
+      modes_pass(s, t + delta, s->ev_y, yp, NULL, zero);
+      double *ahead = bg_xmalloc((size_t)s->nev * sizeof(double));
+      memcpy(ahead, s->ev_mode, (size_t)s->nev * sizeof(double));
+      for (int e = 0; e < s->nev; e++) zero[e] = zero[e] && !undecided(s, e, NULL) && ahead[e] != chosen[e];
+      memcpy(s->ev_mode, chosen, (size_t)s->nev * sizeof(double));
+      double *a = bg_xmalloc((size_t)(2 * s->n + 1) * sizeof(double)), *b = a + s->n;
+      for (int e = 0; e < s->nev && !found; e++) {
+        if (!zero[e]) continue;
+        int jump = rows_in_mode(s, e, chosen[e], t, y, yp, a) || rows_in_mode(s, e, ahead[e], t, y, yp, b);
+        for (int i = 0; !jump && i < s->n; i++) jump = !(fabs(a[i] - b[i]) <= tol[i]);
+        if (jump) found = 1 + e;
+      }
+      free(a), free(ahead);
+    }
+  }
+  memcpy(s->ev_mode, chosen, (size_t)s->nev * sizeof(double));
+  s->ev_frozen = was;
+  s->has_err = 0;
+  free(zero), free(chosen);
+  return found;
 }
 
 int bg_eqsys_mode_loosen(bg_eqsys *s, int e, double other, double t, const double *y, const double *yp,

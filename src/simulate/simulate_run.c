@@ -460,6 +460,22 @@ static int sliding_now(simrun *R) {
   return SIM_SLIDING;
 }
 
+/* How far the rows of two sides of a switch may differ and still be one
+ * law (docs/simulation.md, "Continuous switches"): an algebraic row within
+ * the row check's SIM_ROW_TOL units of its unknown's tolerance (times
+ * |dF_i/dy_i|, 1 before the start's coefficients exist), a rate row by so
+ * little that over the whole span it moves its state by less than that. */
+static double *row_tolerances(const simrun *R) {
+  int n = R->n, ida = R->p->kind == BG_SIM_IDA;
+  const double *y = N_VGetArrayPointer(R->y), *atol = N_VGetArrayPointer(R->atol);
+  double *tol = bg_xmalloc((size_t)(n > 0 ? n : 1) * sizeof(double)), span = R->p->t_end - R->p->t0;
+  for (int k = 0; k < n; k++) {
+    double u = SIM_ROW_TOL * (R->p->rtol * fabs(y[k]) + atol[k]);
+    tol[k] = ida && bg_eqsys_is_algebraic_row(R->s, k) ? u * (R->coef ? R->coef[k] : 1) : u / span;
+  }
+  return tol;
+}
+
 /* IDA, when the modes from the values at t flip back and forth (switching
  * functions at 0 together: a diode bridge at a zero of its source): the
  * modes of the limit from the right (the algebraic equations solved a
@@ -488,7 +504,10 @@ static int settle_right(simrun *R, double tnext) {
   f = f < 0 ? f : run_calcic(R, tnext);
   /* the modes chosen from the rates under the modes before: do their own
    * rates keep them? (a sliding mode at its start has no mode that does) */
-  if (f >= 0 && (e = bg_eqsys_modes_slide(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), used)) > 0) {
+  double *tol = f >= 0 ? row_tolerances(R) : NULL;
+  e = tol ? bg_eqsys_modes_slide(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), used, tol) : 0;
+  free(tol);
+  if (e > 0) {
     int first;
     bg_eqsys_mode_roots(R->s, e - 1, &first);
     R->last_root = first;
@@ -596,17 +615,13 @@ static void unlog_memory(simrun *R, int nlogged) {
 static void loosen_continuous(simrun *R) {
   int n = R->n, ida = R->p->kind == BG_SIM_IDA;
   const double *y = N_VGetArrayPointer(R->y), *atol = N_VGetArrayPointer(R->atol);
-  double *tol = NULL, amax = 0, span = R->p->t_end - R->p->t0;
+  double *tol = NULL, amax = 0;
   for (int i = 0; i < R->nroot; i++) {
     int e = bg_eqsys_root_mode(R->s, i);
     if (!R->back[i] || bg_eqsys_mode_loose(R->s, e)) continue;
     if (!tol) {
-      tol = bg_xmalloc((size_t)n * sizeof(double));
-      for (int k = 0; k < n; k++) {
-        double u = SIM_ROW_TOL * (R->p->rtol * fabs(y[k]) + atol[k]);
-        tol[k] = ida && bg_eqsys_is_algebraic_row(R->s, k) ? u * R->coef[k] : u / span;
-        amax = fmax(amax, atol[k]);
-      }
+      tol = row_tolerances(R);
+      for (int k = 0; k < n; k++) amax = fmax(amax, atol[k]);
     }
     /* the crossing back set its mode; the other side is the one held before */
     bg_eqsys_mode_loosen(R->s, e, R->modes_before[e], R->tcur, y, ida ? N_VGetArrayPointer(R->yp) : NULL, tol,
