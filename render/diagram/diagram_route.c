@@ -26,6 +26,9 @@ enum { MAXLINES = 72 };
 /* Costs in points of line length. */
 #define COST_BEND 14.0
 #define COST_CROSS_BOND 160.0 /* a detour of 160 pt is better than a crossed bond */
+#define COST_CROSS_OWN 480.0  /* a bond of the route's own end element: two lines out of one
+                                 element never need to cross (a detour past two other bonds
+                                 is better) */
 #define COST_CROSS_SIGNAL 6.0
 #define COST_SHARE 900.0      /* running on another signal: read as one line */
 #define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
@@ -79,8 +82,10 @@ static void near_build(const bg_diagram_layout *L, int nbond, const unsigned cha
   for (int b = 0; b < nbond; b++) ix->nleg += leg_skipped(L, skip, b) ? 0 : L->bg[b].bendn + 1;
   ix->la = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->la), ix->lb = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lb);
   ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
+  ix->lbond = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lbond);
   for (int b = 0, k = 0; b < nbond; b++) {
     for (int i = 0; !leg_skipped(L, skip, b) && i <= L->bg[b].bendn; i++, k++) {
+      ix->lbond[k] = b;
       ix->la[k] = bg_route_leg_end(L, b, i - 1), ix->lb[k] = bg_route_leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
       double dx = ix->lb[k].x - ix->la[k].x, dy = ix->lb[k].y - ix->la[k].y, l2 = dx * dx + dy * dy;
       double t = l2 > 0 ? ((L->bg[b].mid.x - ix->la[k].x) * dx + (L->bg[b].mid.y - ix->la[k].y) * dy) / l2 : 0;
@@ -133,7 +138,7 @@ static void near_build(const bg_diagram_layout *L, int nbond, const unsigned cha
 }
 
 static void near_free(near_index *ix) {
-  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lmid), free(ix->mid), free(ix->stamp);
+  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid), free(ix->stamp);
   free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->seg_stamp);
 }
 
@@ -238,7 +243,7 @@ static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double 
 
 bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
-  r->L = L, r->group = r->branch_k = -1;
+  r->L = L, r->group = r->branch_k = r->bond = -1;
   near_build(L, nbond, skip, &r->ix);
   r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
   for (int k = 0; k < L->nnode; k++)
@@ -344,6 +349,31 @@ static double point_seg(bg_vec c, bg_vec p, bg_vec q) {
   return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
 }
 
+/* Whether bond b is one of the current route's own: a bond of its source's
+ * or target's node (not the routed bond itself). */
+static int own_bond(const bg_router *r, int b) {
+  if (b < 0 || b == r->bond) return 0;
+  for (int k = 0; k < 2; k++) {
+    int n = bg_route_end_node(r->L, b, k);
+    if (n >= 0 && (n == r->from_node || n == r->to_node)) return 1;
+  }
+  return 0;
+}
+
+/* What crossing leg k of the near index costs the current route. */
+static double leg_cross_cost(const bg_router *r, int leg) {
+  bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
+  int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
+  return (own_bond(r, r->ix.lbond[leg]) ? COST_CROSS_OWN : COST_CROSS_BOND) * (slanted ? COST_OBLIQUE : 1);
+}
+
+/* What crossing routed segment s costs: a signal's, or a bond routed
+ * before this one (group -2 - b), the route's own bond's dearest. */
+static double seg_cross_cost(const bg_router *r, int s) {
+  int g = r->ix.sgrp[s];
+  return g <= -2 && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
+}
+
 /* What a segment p-q costs: its length, and the penalties for what it meets. */
 double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   const bg_diagram_layout *L = r->L;
@@ -361,11 +391,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     }
     double run = 0;
     int hit = seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run);
-    if (hit == 1) {
-      bg_vec a = r->ix.la[k - L->nnode], b = r->ix.lb[k - L->nnode];
-      int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
-      cost += COST_CROSS_BOND * (slanted ? COST_OBLIQUE : 1);
-    }
+    if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
     cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
     if (r->ix.lmid[k - L->nnode] && point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
   }
@@ -374,7 +400,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     int s = r->nl.k[j];
     if (r->group >= 0 && r->ix.sgrp[s] == r->group) continue; /* its own source's: a branch */
     int hit = seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL);
-    cost += hit == 1 ? COST_CROSS_SIGNAL : hit == 2 ? COST_SHARE : 0;
+    cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
   }
   return cost;
 }
@@ -492,8 +518,7 @@ static void grid_costs(bg_router *r) {
     }
     int leg = k - L->nnode;
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
-    int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
-    double cross = COST_CROSS_BOND * (slanted ? COST_OBLIQUE : 1);
+    double cross = leg_cross_cost(r, leg);
     line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
     for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
@@ -518,11 +543,12 @@ static void grid_costs(bg_router *r) {
   for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
     if (r->group >= 0 && r->ix.sgrp[r->nl.k[jj]] == r->group) continue; /* its own source's: a branch */
     bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
+    double cross = seg_cross_cost(r, r->nl.k[jj]);
     int j0, j1;
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, COST_CROSS_SIGNAL, COST_SHARE, 0, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, COST_CROSS_SIGNAL, COST_SHARE, 0, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, &r->vcost[j * ny]);
   }
 }
 
@@ -962,7 +988,7 @@ int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const dou
     r->group = -1;
     return bg_route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
   }
-  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1], r->group);
+  for (int i = 0; i + 1 < n; i++) near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group);
   return n;
 }
 
@@ -976,7 +1002,7 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
   const bg_diagram_layout *L = r->L;
   bg_vec from_pt = bg_v(0, 0);
   port ps[20], pt[20];
-  r->from_node = from_node, r->to_node = to, r->group = group;
+  r->from_node = from_node, r->to_node = to, r->group = group, r->bond = -1;
   int nps = 0, npt = node_ports(r, m, to, 1.5, pt);
   if (from_node >= 0) {
     nps = node_ports(r, m, from_node, 0, ps);

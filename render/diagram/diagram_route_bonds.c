@@ -32,18 +32,12 @@ static int seg_box(bg_vec a, bg_vec b, double x0, double y0, double x1, double y
   return 1;
 }
 
-/* The node a bond's end is drawn at: a collapsed box, a field's node. */
-static int end_node(const bg_diagram_layout *L, int e) {
-  int n = L->node_of[e];
-  return L->rep ? L->rep[n] : n;
-}
-
 /* Whether bond b's line runs through a node box other than its ends' (the
  * box 0.5 pt inside, so a line along its edge is clear). */
-static int bond_blocked(bg_router *r, const bg_model *m, int b) {
+static int bond_blocked(bg_router *r, int b) {
   const bg_diagram_layout *L = r->L;
   if ((L->bond_hidden && L->bond_hidden[b]) || L->bg[b].spln) return 0;
-  int t = end_node(L, m->bond_tail[b]), h = end_node(L, m->bond_head[b]);
+  int t = bg_route_end_node(L, b, 0), h = bg_route_end_node(L, b, 1);
   for (int i = 0; i <= L->bg[b].bendn; i++) {
     bg_vec a = bg_route_leg_end(L, b, i - 1), c = bg_route_leg_end(L, b, i);
     bg_near_box(&r->ix, fmin(a.x, c.x), fmin(a.y, c.y), fmax(a.x, c.x), fmax(a.y, c.y), &r->nl);
@@ -86,39 +80,10 @@ static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, 
  * one-port (an element with this one bond, drawn straight) takes the side
  * facing the other end and the opposite side is free, the one-port is
  * mirrored through the node's centre to that side, where it is clear of
- * every box, line and moved one-port, and the bond takes its side. A
- * one-port whose signals go more to the old side than to the new stays:
- * they would cross the row instead. */
-typedef struct signal_ends {
-  int *adr, *other; /* per element (CSR): the other ends of its signals */
-} signal_ends;
-
-static void signal_ends_make(const bg_model *m, signal_ends *se) {
-  se->adr = bg_xcalloc((size_t)m->nelem + 2, sizeof *se->adr);
-  se->other = bg_xcalloc((size_t)2 * m->nsignal + 1, sizeof *se->other);
-  for (int i = 0; i < m->nsignal; i++)
-    if (m->signal_from[i] >= 0 && m->signal_to[i] >= 0) se->adr[m->signal_from[i] + 1]++, se->adr[m->signal_to[i] + 1]++;
-  for (int e = 0; e < m->nelem; e++) se->adr[e + 1] += se->adr[e];
-  int *fill = bg_xcalloc((size_t)m->nelem + 1, sizeof *fill);
-  for (int i = 0; i < m->nsignal; i++) {
-    int a = m->signal_from[i], z = m->signal_to[i];
-    if (a < 0 || z < 0) continue;
-    se->other[se->adr[a] + fill[a]++] = z, se->other[se->adr[z] + fill[z]++] = a;
-  }
-  free(fill);
-}
-
-/* Whether element e's signals go to side dir of c at least as much as to
- * the other (and it has some). */
-static int signals_stay(const bg_diagram_layout *L, const signal_ends *se, int e, bg_vec c, int dir) {
-  int score = 0;
-  for (int j = se->adr[e]; j < se->adr[e + 1]; j++) {
-    int o = L->node_of[se->other[j]];
-    double d = (L->nx[o] - c.x) * DIRV[dir].x + (L->ny[o] - c.y) * DIRV[dir].y;
-    score += d > 0 ? 1 : d < 0 ? -1 : 0;
-  }
-  return score > 0 || (score == 0 && se->adr[e + 1] > se->adr[e]);
-}
+ * every box, line and moved one-port, and the bond takes its side. Its
+ * signals move with it: one going to the old side then crosses the row
+ * (a signal across a bond, which the graph may need) instead of the bond
+ * crossing its own junction's (which it never needs). */
 typedef struct moved_box {
   double b[4];
 } moved_box;
@@ -151,7 +116,7 @@ static int place_clear(bg_router *all, int n, int e, const double b[4], const mo
 /* At end n of blocked bond b (its other end o): the one-port moved off the
  * side facing o when no side facing o is free. Returns whether it moved. */
 static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b, const unsigned char *blocked,
-                         const signal_ends *se, moved_box *mv, int *nmv) {
+                         moved_box *mv, int *nmv) {
   bg_diagram_layout *L = (bg_diagram_layout *)all->L;
   if (n >= m->nelem || (L->rep && L->rep[n] != n)) return 0;
   bg_vec to = bg_vsub(bg_v(L->nx[o], L->ny[o]), bg_v(L->nx[n], L->ny[n]));
@@ -170,7 +135,6 @@ static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b,
       double facing = to.x * DIRV[dir].x + to.y * DIRV[dir].y;
       if (u.x * DIRV[dir].x + u.y * DIRV[dir].y <= 0.866 || facing <= best_dot) continue;
       if (!bond_side_free(L, m, n, ob, blocked, dir) || !bond_side_free(L, m, n, ob, blocked, dir ^ 1)) continue;
-      if (signals_stay(L, se, e, bg_v(L->nx[n], L->ny[n]), dir)) continue;
       best = ob, best_dot = facing;
     }
   }
@@ -236,7 +200,7 @@ static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned cha
   const bg_diagram_layout *L = r->L;
   int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
   port ps[8], pt[8];
-  r->from_node = t, r->to_node = h, r->group = -1;
+  r->from_node = t, r->to_node = h, r->group = -1, r->bond = b;
   int nps = bond_ports(r, m, t, b, blocked, taken, ps), npt = bond_ports(r, m, h, b, blocked, taken, pt);
   double a[4] = {L->nx[t] - L->nw[t] / 2, L->ny[t] - L->nh[t] / 2, L->nx[t] + L->nw[t] / 2, L->ny[t] + L->nh[t] / 2};
   double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
@@ -253,18 +217,16 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   int nb = m->nbond, nblocked = 0;
   unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
   bg_router *all = bg_router_new(L, nb, NULL);
-  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, m, b);
+  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, b);
   moved_box *mv = bg_xcalloc((size_t)2 * nblocked + 1, sizeof *mv);
-  signal_ends se;
-  signal_ends_make(m, &se);
   int nmv = 0;
   for (int b = 0; b < nb; b++) {
     if (!blocked[b]) continue;
     int t = L->node_of[m->bond_tail[b]], h = L->node_of[m->bond_head[b]];
-    move_one_port(all, m, t, h, b, blocked, &se, mv, &nmv);
-    move_one_port(all, m, h, t, b, blocked, &se, mv, &nmv);
+    move_one_port(all, m, t, h, b, blocked, mv, &nmv);
+    move_one_port(all, m, h, t, b, blocked, mv, &nmv);
   }
-  free(mv), free(se.adr), free(se.other);
+  free(mv);
   bg_router_free(all);
   if (!nblocked) {
     free(blocked);

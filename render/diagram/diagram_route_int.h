@@ -19,13 +19,16 @@ typedef struct near_index {
   int *adr, *item; /* per cell (CSR): nodes k as k, legs as nnode + leg */
   int nnode, nleg;
   bg_vec *la, *lb; /* legs' ends */
+  int *lbond;      /* legs' bonds */
   unsigned char *lmid; /* the leg holds its bond's middle (where the number goes) */
   bg_vec *mid;
   int *stamp, tick;
   /* routed signal segments: per cell a chain through sig_next */
   int *sig_head, *sig_next, *sig_seg, nsig, capsig;
   bg_vec *sa, *sb;
-  int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none */
+  int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none;
+                a routed bond b's: -2 - b (seg_cross_cost: dear when it is one of
+                the current route's own) */
   int nseg, capseg;
   int *seg_stamp, capstamp;
 } near_index;
@@ -61,7 +64,9 @@ struct bg_router {
   unsigned char *cpx, *cpy;
   int ncx, ncy, capc;
   double gap;             /* the grid's lines: candidates nearer than this were merged */
-  int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none) */
+  int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none);
+                             their bonds are the route's own (COST_CROSS_OWN) */
+  int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
   int group;              /* the current route's source: routes of the same one may share
                              its lines (a signal branching), -1: none */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
@@ -85,6 +90,12 @@ static inline bg_vec bg_route_leg_end(const bg_diagram_layout *L, int b, int i) 
   const bg_bond_geom *g = &L->bg[b];
   if (i < 0) return g->tail;
   return i == g->bendn ? g->head : bg_v(L->lay.bendx[g->bendadr + i], L->lay.bendy[g->bendadr + i]);
+}
+
+/* The node bond b's end (0 tail, 1 head) is drawn at: a collapsed box, a field's node. */
+static inline int bg_route_end_node(const bg_diagram_layout *L, int b, int head) {
+  int n = L->node_of[head ? L->m->bond_head[b] : L->m->bond_tail[b]];
+  return L->rep ? L->rep[n] : n;
 }
 
 /* The items (node k as k, leg j as nnode + j) in the cells the box meets. */
