@@ -190,6 +190,11 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
  * starts on: the index k of the segment pts[k]-pts[k+1] it leaves them on,
  * and the point (*at); -1 when it does not share its start. */
 int bg_route_branch(const bg_router *r, bg_vec *at);
+/* Route k (the k-th bg_route), pts[0..n-1] as kept, after all are routed:
+ * each crossing of a one-port's bond on its segments from `first` on that
+ * a short U round the one-port avoids, taken (at most cap points; the
+ * index follows). Returns the new number of points. */
+int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap);
 void bg_router_free(bg_router *r);
 /* Bonds whose line runs through another node's box routed again
  * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how

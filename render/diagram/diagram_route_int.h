@@ -71,6 +71,13 @@ struct bg_router {
                              its lines (a signal branching), -1: none */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
   bg_vec branch_at;
+  /* every route so far (bg_route_detour): its segments in the index, ends, group */
+  struct routed {
+    int seg0, seg1, from, to, group;
+  } *route;
+  int nroute, caproute;
+  int skip0, skip1, skip2; /* index segments of the current route (bg_route_detour): skip0
+                              to skip1, and from skip2 on (INT_MAX: none) */
 };
 
 /* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */

@@ -172,9 +172,30 @@ static void walk_signals(bg_diagram *d, bg_router *rt) {
   for (int i = 0; i < d->m->nsignal; i++) draw_signal(d, rt, i);
 }
 
+/* Once every signal is routed, each route round the one-ports whose bonds
+ * a short U avoids (bg_route_detour; issue 31, crossings a detour of
+ * bounded length avoids): against the finished routes, so the U keeps off
+ * every other signal and later routes are not pushed aside. A branch's
+ * shared stretch (drawn by an earlier signal) is left as it is. */
+static void detour_routes(bg_diagram *d, bg_router *rt) {
+  for (int k = 0; k < d->nroutes; k++) {
+    bg_signal_route *r = &d->routes[k];
+    int cap = r->n + 64;
+    bg_vec *pts = bg_xcalloc((size_t)cap, sizeof *pts);
+    memcpy(pts, r->pts, (size_t)r->n * sizeof *pts);
+    int n = bg_route_detour(rt, k, r->branch_k + 1, pts, r->n, cap);
+    if (n != r->n) {
+      r->pts = bg_arena_alloc(&d->arena, (size_t)n * sizeof *pts);
+      memcpy(r->pts, pts, (size_t)n * sizeof *pts), r->n = n;
+    }
+    free(pts);
+  }
+}
+
 void bg_route_signals(bg_diagram *d) {
   bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL);
   walk_signals(d, rt);
+  detour_routes(d, rt);
   bg_router_free(rt);
 }
 

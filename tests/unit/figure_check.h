@@ -8,8 +8,9 @@
  * arrow; and (issue 31) signals crossing bonds, lines drawn on top of each
  * other, bond ends on another bond (false T-junctions), bonds shorter than
  * their half arrow, crossing frames and elements inside a foreign frame,
- * text below 6 pt, and the arrangement a style changed
- * (fc_arrangement). Used by test_figures.c; the
+ * text below 6 pt, the arrangement a style changed
+ * (fc_arrangement), crossings of one element's lines (fc_adjacent) and
+ * crossings a short detour avoids (fc_avoidable). Used by test_figures.c; the
  * definitions are in docs/drawing.md ("Measured geometry"). */
 #ifndef BG_TEST_FIGURE_CHECK_H
 #define BG_TEST_FIGURE_CHECK_H
@@ -48,6 +49,7 @@ typedef struct fc_stats {
   int bond_overlaps;         /* of overlaps, the pairs with a bond (a bond drawn on another line) */
   int bare_branches;         /* signals starting on another signal's line without a branch dot (fc_bare_branches) */
   int adjacent;              /* of crossings and signal × bond, those of lines sharing an end (fc_adjacent) */
+  int avoidable;             /* of crossings and signal × bond, those a short detour avoids (fc_avoidable) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -775,6 +777,19 @@ static int fc_signal_end(const bg_model *m, const char *name, int side) {
   return -1;
 }
 
+/* Per line of f: the model's bond it draws (by its number), -1 for any
+ * other line; the caller frees it. */
+static int *fc_model_bonds(const bg_model *m, const fc_scene *f) {
+  int *bond = malloc(((size_t)f->nline + 1) * sizeof(int));
+  for (int j = 0; j < f->nline; j++) {
+    bond[j] = -1;
+    if (f->line[j].kind == FC_BOND && f->line[j].id > 0)
+      for (int b = 0; b < m->nbond; b++)
+        if (m->bond_num[b] == f->line[j].id) bond[j] = b;
+  }
+  return bond;
+}
+
 /* Issue 31, crossings the graph does not force: pairs of bonds that cross
  * and share an end element, and signals crossing a bond of their own
  * source or target element. Two lines out of one node can always be
@@ -784,14 +799,7 @@ static int fc_signal_end(const bg_model *m, const char *name, int side) {
 static inline int fc_adjacent(const bg_model *m, const bg_scene *s) {
   fc_scene f;
   fc_read(s, &f);
-  int nb = m->nbond, n = 0;
-  int *bond = malloc(((size_t)f.nline + 1) * sizeof(int));
-  for (int j = 0; j < f.nline; j++) {
-    bond[j] = -1;
-    if (f.line[j].kind == FC_BOND && f.line[j].id > 0)
-      for (int b = 0; b < nb; b++)
-        if (m->bond_num[b] == f.line[j].id) bond[j] = b;
-  }
+  int n = 0, *bond = fc_model_bonds(m, &f);
   for (int j = 0; j < f.nline; j++)
     for (int k = 0; k < f.nline; k++) {
       int b = bond[k];
@@ -813,6 +821,129 @@ static inline int fc_adjacent(const bg_model *m, const bg_scene *s) {
                f.line[k].id);
     }
   free(bond);
+  fc_free(&f);
+  return n;
+}
+
+/* Issue 31, crossings a route of bounded extra length avoids. Bond B is
+ * crossed by line L (a signal or a bond) at a right angle at X, and B runs
+ * straight from X to its end at a one-port E (an element with this one
+ * bond: the bond leads nowhere else). Then L can go round E instead: a
+ * U-turn off L's crossing segment, along B past E's label (6 pt clear: a
+ * node's 3 pt pad round its label and the 2 pt the router keeps off a box),
+ * across and back onto L, which crosses nothing. It counts when that U
+ * lies within L's segment, crosses no bond (nor, for a bond L, a signal),
+ * runs on no line (within 3 pt), runs through no element label, and adds at most FC_DETOUR pt (the two
+ * legs along B): the router's price for a crossed bond (160 pt) less its
+ * two bends (14 pt each) and a margin, so a detour its own costs prefer.
+ * For two bonds either may go round the other's one-port. Counts pairs of
+ * lines (as the crossings and signal × bond do). */
+#define FC_DETOUR 160.0
+
+typedef struct fc_pt {
+  double x, y;
+} fc_pt;
+
+/* Whether segments a and b run side by side within 3 pt for more than 2
+ * pt (read as one line; the router's own measure of running on a line). */
+static int fc_seg_along(const fc_seg *a, const fc_seg *b) {
+  double la = fc_seg_len(a), lb = fc_seg_len(b);
+  if (la < 2 || lb < 2) return 0;
+  double ux = (a->x1 - a->x0) / la, uy = (a->y1 - a->y0) / la, vx = (b->x1 - b->x0) / lb, vy = (b->y1 - b->y0) / lb;
+  if (fabs(ux * vy - uy * vx) > 0.0175) return 0;
+  if (fabs((b->x0 - a->x0) * uy - (b->y0 - a->y0) * ux) >= 3) return 0;
+  double t0 = (b->x0 - a->x0) * ux + (b->y0 - a->y0) * uy, t1 = (b->x1 - a->x0) * ux + (b->y1 - a->y0) * uy;
+  return fmin(la, fmax(t0, t1)) - fmax(0, fmin(t0, t1)) > 2;
+}
+
+/* Whether seg crosses (or runs through) anything the U must keep off. */
+static int fc_detour_blocked(const fc_scene *f, const fc_seg *seg, int nseg, int lj, int bk, int bond_l) {
+  for (int j = 0; j < f->nline; j++) {
+    const fc_line *o = &f->line[j];
+    if (j == lj || j == bk || !(o->kind == FC_BOND || o->kind == FC_SIGNAL)) continue;
+    for (int p = 0; p < nseg; p++)
+      for (int q = 0; q < o->nseg - o->barb; q++)
+        if (((o->kind == FC_BOND || bond_l) && fc_cross(&seg[p], &o->seg[q])) || fc_seg_along(&seg[p], &o->seg[q]))
+          return 1;
+  }
+  for (int i = 0; i < f->nbox; i++) {
+    if (f->box[i].kind != FC_NODE) continue;
+    fc_box b = fc_shrink(&f->box[i], 1);
+    for (int p = 0; b.x0 < b.x1 && b.y0 < b.y1 && p < nseg; p++)
+      if (fc_seg_box(&seg[p], &b) == 0) return 1;
+  }
+  return 0;
+}
+
+/* Whether line L (index lj) avoids bond B (index bk, model bond b) by a U
+ * round B's one-port end; ends: L's end elements (-1 none). */
+static int fc_detour(const bg_model *m, const fc_scene *f, const int *elem_box, int lj, int bk, int b, const int ends[2]) {
+  const fc_line *L = &f->line[lj], *B = &f->line[bk];
+  int nb = B->nseg - B->barb;
+  for (int side = 0; side < 2; side++) {
+    int e = side ? m->bond_head[b] : m->bond_tail[b];
+    if (m->elem_nbond[e] != 1 || elem_box[e] < 0 || e == ends[0] || e == ends[1]) continue;
+    const fc_box *E = &f->box[elem_box[e]];
+    const fc_seg *q = &B->seg[side ? nb - 1 : 0]; /* B's leg at E */
+    fc_pt tip = side ? (fc_pt){B->seg[B->nseg - 1].x1, B->seg[B->nseg - 1].y1} : (fc_pt){q->x0, q->y0};
+    for (int p = 0; p < L->nseg - L->barb; p++) {
+      const fc_seg *s = &L->seg[p];
+      if (!fc_cross(s, q)) continue;
+      double lu = fc_seg_len(s), lv = fc_seg_len(q);
+      fc_pt u = {(s->x1 - s->x0) / lu, (s->y1 - s->y0) / lu}, w = {(q->x1 - q->x0) / lv, (q->y1 - q->y0) / lv};
+      if (fabs(u.x * w.x + u.y * w.y) > 0.01) continue; /* not at a right angle */
+      if (!side) w.x = -w.x, w.y = -w.y;                /* from the crossing towards E */
+      double den = u.x * w.y - u.y * w.x;
+      double t = ((q->x0 - s->x0) * w.y - (q->y0 - s->y0) * w.x) / den; /* X along s */
+      fc_pt X = {s->x0 + t * u.x, s->y0 + t * u.y};
+      double nw = -u.y * w.x + u.x * w.y; /* the U's legs square to L (B may be off by 0.6 degrees) */
+      w = nw > 0 ? (fc_pt){-u.y, u.x} : (fc_pt){u.y, -u.x};
+      /* what the U must hold: E's label, B from X to its end, the half arrow */
+      double a0 = 1e300, a1 = -1e300, depth = 0;
+      double cx[6] = {E->x0, E->x1, E->x0, E->x1, tip.x, side ? B->seg[nb - 1].x1 : q->x0};
+      double cy[6] = {E->y0, E->y0, E->y1, E->y1, tip.y, side ? B->seg[nb - 1].y1 : q->y0};
+      for (int k = 0; k < 6; k++) {
+        double du = (cx[k] - X.x) * u.x + (cy[k] - X.y) * u.y, dw = (cx[k] - X.x) * w.x + (cy[k] - X.y) * w.y;
+        a0 = fmin(a0, du), a1 = fmax(a1, du), depth = fmax(depth, dw);
+      }
+      a0 -= 6, a1 += 6, depth += 6;
+      if (t + a0 < 0 || t + a1 > lu || 2 * depth > FC_DETOUR) continue;
+      fc_pt A = {X.x + a0 * u.x, X.y + a0 * u.y}, C = {X.x + a1 * u.x, X.y + a1 * u.y};
+      fc_seg U[3] = {{A.x, A.y, A.x + depth * w.x, A.y + depth * w.y},
+                     {A.x + depth * w.x, A.y + depth * w.y, C.x + depth * w.x, C.y + depth * w.y},
+                     {C.x + depth * w.x, C.y + depth * w.y, C.x, C.y}};
+      if (fc_detour_blocked(f, U, 3, lj, bk, L->kind == FC_BOND)) continue;
+      if (fc_explain)
+        printf("  avoidable: %s %d (%s) crosses bond %d at (%.0f,%.0f): round %s, %.0f pt more\n",
+               L->kind == FC_BOND ? "bond" : "signal", L->id, L->name ? L->name : "", B->id, X.x, X.y,
+               m->elem_name[e], 2 * depth);
+      return 1;
+    }
+  }
+  return 0;
+}
+
+static inline int fc_avoidable(const bg_model *m, const bg_scene *s) {
+  fc_scene f;
+  fc_read(s, &f);
+  int n = 0, *bond = fc_model_bonds(m, &f), *elem_box = malloc(((size_t)m->nelem + 1) * sizeof(int));
+  for (int e = 0; e < m->nelem; e++) elem_box[e] = -1;
+  for (int i = 0; i < f.nbox; i++)
+    if (f.box[i].elem)
+      for (int e = 0; e < m->nelem; e++)
+        if (elem_box[e] < 0 && !strcmp(m->elem_name[e], f.box[i].name)) elem_box[e] = i;
+  for (int j = 0; j < f.nline; j++)
+    for (int k = 0; k < f.nline; k++) {
+      const fc_line *L = &f.line[j];
+      if (bond[k] < 0 || k == j || !(L->kind == FC_SIGNAL || (L->kind == FC_BOND && bond[j] >= 0 && k > j))) continue;
+      if (L->kind == FC_SIGNAL ? !fc_sig_cross(L, &f.line[k], &(int){0}) : !fc_crosses(L, &f.line[k])) continue;
+      int ends[2] = {-1, -1}, kends[2] = {m->bond_tail[bond[k]], m->bond_head[bond[k]]};
+      if (L->kind == FC_BOND) ends[0] = m->bond_tail[bond[j]], ends[1] = m->bond_head[bond[j]];
+      else ends[0] = fc_signal_end(m, L->name, 0), ends[1] = fc_signal_end(m, L->name, 1);
+      n += fc_detour(m, &f, elem_box, j, k, bond[k], ends) ||
+           (L->kind == FC_BOND && fc_detour(m, &f, elem_box, k, j, bond[j], kends));
+    }
+  free(bond), free(elem_box);
   fc_free(&f);
   return n;
 }

@@ -119,6 +119,36 @@ static void test_checker_adjacent(void) {
   fx_free(&f);
 }
 
+/* Crossings a short detour avoids (fc_avoidable, issue 31) on a hand-made
+ * scene: the signal u->d crosses bond 2 (j -> C a, a one-port) 30 pt above
+ * C's label: a U round the label, 78 pt longer, crosses nothing: counted;
+ * the signal crossing bond 3 (j -> k, two junctions) has no way round:
+ * not; with a label in the U's way, neither. */
+static void test_checker_avoidable(void) {
+  static const char *src = "model av\nSe u = 1\n0 j\nC a = 1\n1 k\nR d = 1\n"
+                           "bond u -> j\nbond j -> a\nbond j -> k\nbond k -> d\n";
+  fx f;
+  OK(fm_load(&f, "av", src) == 0);
+  if (!f.m) return;
+  bg_rgba ink = {0, 0, 0, 1};
+  for (int blocked = 0; blocked < 2; blocked++) {
+    bg_scene s;
+    bg_scene_init(&s, "DejaVu Sans");
+    bond(&s, 1, 0, 0, 90, 0);
+    bond(&s, 2, 100, 10, 100, 50);
+    bond(&s, 3, 110, 0, 200, 0);
+    bond(&s, 4, 210, 0, 280, 0);
+    bg_scene_text(&s, "C : a", 100, 60, 11, 0.5, 0.5, ink, "node a");
+    bg_scene_text(&s, "R : d", 310, 0, 11, 0.5, 0.5, ink, "node d");
+    line(&s, "signal u->d", 40, 30, 180, 30);
+    line(&s, "signal u->d", 150, -30, 150, 20);
+    if (blocked) bg_scene_text(&s, "X", 100, 70, 11, 0.5, 0.5, ink, "node u");
+    INT_EQ(fc_avoidable(f.m, &s), !blocked);
+    bg_scene_free(&s);
+  }
+  fx_free(&f);
+}
+
 /* The counters of issue 31 on a hand-made scene with each fault once (or
  * twice where the kinds differ). */
 static void test_checker_31(void) {
@@ -218,12 +248,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -252,28 +282,31 @@ static const fc_stats limits[3][2] = {
  * 1 -> 0 since it moves with its signals (reactions20's c12: its signal
  * now crosses the row, 1 more signal crossing per style, 5 more in slides
  * where the chord's new route pushes c18's signal across 3 bonds; bond
- * crossings 11 -> 10).
+ * crossings 11 -> 10). After it (every table): crossings a short U round
+ * a one-port avoids (fc_avoidable), 0 here before and after the routes
+ * took them (bg_route_detour: the generated models' crossings are of bonds
+ * between junctions, which no short detour avoids).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 1, 74, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 1, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 80, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 34, 0, 0, 0, 0, 0}},
-    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 1, 77, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 55, 0, 0, 0, 0, 0}},
-    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 2, 78, 0, 0, 0, 1, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 2, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 59, 0, 0, 0, 0, 0}},
+    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 1, 74, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 1, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 80, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 34, 0, 0, 0, 0, 0, 0}},
+    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 1, 77, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 55, 0, 0, 0, 0, 0, 0}},
+    {{1384, 16, 1384, 1, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 2, 78, 0, 0, 0, 1, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 17, 1384, 2, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 59, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent);
+         t->bare_branches, t->adjacent, t->avoidable);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -306,6 +339,7 @@ static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbo
       fc_count(bg_diagram_scene(d), &st);
       st.spine_bent = fc_spine_bent(f->m, bg_diagram_scene(d));
       st.adjacent = fc_adjacent(f->m, bg_diagram_scene(d));
+      st.avoidable = fc_avoidable(f->m, bg_diagram_scene(d));
       if (first) st.arrangement = fc_arrangement(bg_diagram_scene(first), bg_diagram_scene(d));
       fc_add(&tot[si][k], &st);
       if (verbose) print_row(what, &st);
@@ -407,10 +441,12 @@ static const struct {
                   six ports before a signal branched off another from its source) */
   int adjacent; /* limit: crossings of two lines out of one element (fc_adjacent; 22, 2, 7
                    before a route paid COST_CROSS_OWN to cross its own ends' bonds) */
+  int avoidable; /* limit: crossings a short U round a one-port avoids (fc_avoidable; 319,
+                    0, 0 before the routes took them, bg_route_detour) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 77, 6},
-    {{"modladder120", fm_modladder, 120}, "rows", 9, 2},
-    {{"reactions60", fm_reactions, 60}, NULL, 0, 4},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 77, 6, 6},
+    {{"modladder120", fm_modladder, 120}, "rows", 9, 2, 0},
+    {{"reactions60", fm_reactions, 60}, NULL, 0, 4, 0},
 };
 
 static void test_large_figures(void) {
@@ -434,11 +470,14 @@ static void test_large_figures(void) {
       if (fc_explain) printf("%s:\n", lm->name);
       fc_count(bg_diagram_scene(d), &st);
       st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
+      st.avoidable = fc_avoidable(f.m, bg_diagram_scene(d));
       print_row(lm->name, &st);
       BG_T_REPORT(st.sig_through == 0, "%s: %d signals through element labels", lm->name, st.sig_through);
       BG_T_REPORT(st.bond_overlaps == 0, "%s: %d bonds on other lines", lm->name, st.bond_overlaps);
       BG_T_REPORT(st.lines_through - st.sig_through == 0, "%s: %d bonds through element labels", lm->name,
                   st.lines_through - st.sig_through);
+      BG_T_REPORT(st.avoidable <= large[g].avoidable, "%s: %d avoidable crossings (<= %d)", lm->name, st.avoidable,
+                  large[g].avoidable);
       BG_T_REPORT(st.adjacent <= large[g].adjacent, "%s: %d crossings of one element's lines (<= %d)", lm->name,
                   st.adjacent, large[g].adjacent);
       BG_T_REPORT(st.overlaps - st.bond_overlaps <= large[g].fan_out, "%s: %d signals on signals (<= %d)", lm->name,
@@ -776,12 +815,12 @@ static void test_long_chain(void) {
  * the grid pass places a field as one node (issue 31; it had left models
  * with fields to dot's positions) every fault column is 0. */
 static const fc_stats limits_pages[3][2] = {
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static int list_page_models(const char *folder, char **names, int cap) {
@@ -826,6 +865,7 @@ int main(void) {
   test_checker();
   test_checker_31();
   test_checker_adjacent();
+  test_checker_avoidable();
   test_long_chain();
   test_examples();
   test_pages();
