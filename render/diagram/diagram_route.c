@@ -211,11 +211,13 @@ static void near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
 /* Segment p-q (axis-parallel, from the grid) against segment a-b: 1 when
  * they cross at a point inside a-b (not within 0.5 pt of its ends) and in
  * p-q's half-open extent [lower end, upper end), so a crossing at a grid
- * vertex counts for one edge only; 2 when they run on one line (parallel,
- * nearer than `near` pt, sharing more than 1 pt); 3 when they run side by
- * side within HUG pt (*run: for how long); else 0. */
+ * vertex counts for one edge only (ends: also through a-b's ends and
+ * 0.5 pt past them, as a routed bond must not pass another bond's end:
+ * it would read as that bond ending on it, a false T); 2 when they run on
+ * one line (parallel, nearer than `near` pt, sharing more than 1 pt); 3
+ * when they run side by side within HUG pt (*run: for how long); else 0. */
 #define HUG 12.0
-static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run) {
+static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends) {
   bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
   double lu = bg_vlen(u), lv = bg_vlen(v);
   if (lu <= 0 || lv <= 0) return 0;
@@ -232,7 +234,8 @@ static int seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double 
   bg_vec w = bg_vsub(a, p);
   double t = (w.x * v.y - w.y * v.x) / den; /* along p-q */
   double s = (w.x * u.y - w.y * u.x) / den; /* along a-b */
-  if (s * lv < 0.5 || (1 - s) * lv < 0.5) return 0;
+  double keep = ends ? -0.5 : 0.5;
+  if (s * lv < keep || (1 - s) * lv < keep) return 0;
   /* half-open along the grid edge, by coordinate: [min, max) */
   int forward = u.x > 0 || (u.x == 0 && u.y > 0);
   double tl = forward ? t : 1 - t;
@@ -397,7 +400,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
       continue;
     }
     double run = 0;
-    int hit = seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run);
+    int hit = seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, r->bond >= 0);
     if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
     cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
     if (r->ix.lmid[k - L->nnode] && point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
@@ -407,7 +410,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     int s = r->nl.k[j];
     if (r->group >= 0 && r->ix.sgrp[s] == r->group) continue; /* its own source's: a branch */
     if (own_segment(r, s)) continue;                           /* the route itself (bg_route_detour) */
-    int hit = seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL);
+    int hit = seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL, 0);
     cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
   }
   return cost;
@@ -449,11 +452,11 @@ static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
 
 /* Segment a-b against grid line (horizontal when horiz) at `at` over the
  * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
- * open, as seg_meet counts it); a parallel run within HUG pt adds to each
+ * open, as seg_meet counts it, ends as there); a parallel run within HUG pt adds to each
  * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
  * `hug` per pt of the shared run. */
 static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
-                      double hug, double *out) {
+                      double hug, int ends, double *out) {
   double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
   double lv = sqrt(va * va + vc * vc);
   if (lv <= 0) return;
@@ -469,8 +472,8 @@ static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg
     }
     return;
   }
-  double s = (at - across(a, horiz)) / vc;
-  if (s * lv < 0.5 || (1 - s) * lv < 0.5) return;
+  double s = (at - across(a, horiz)) / vc, keep = ends ? -0.5 : 0.5;
+  if (s * lv < keep || (1 - s) * lv < keep) return;
   int i = edge_at(A, n, along(a, horiz) + s * va);
   if (i >= 0) out[i] += cross;
 }
@@ -528,9 +531,9 @@ static void grid_costs(bg_router *r) {
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
     double cross = leg_cross_cost(r, leg);
     line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->vcost[j * ny]);
     if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
       bg_vec mid = r->ix.mid[leg];
       line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);
@@ -554,9 +557,9 @@ static void grid_costs(bg_router *r) {
     double cross = seg_cross_cost(r, r->nl.k[jj]);
     int j0, j1;
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, 0, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, 0, &r->vcost[j * ny]);
   }
 }
 
@@ -1001,7 +1004,7 @@ static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) 
   for (int j = 0; j < nk && !found; j++) {
     int leg = legs[j] - L->nnode;
     bg_vec w;
-    if (leg < 0 || seg_meet(p, q, r->ix.la[leg], r->ix.lb[leg], 3, NULL) != 1) continue;
+    if (leg < 0 || seg_meet(p, q, r->ix.la[leg], r->ix.lb[leg], 3, NULL, 0) != 1) continue;
     int e = leg_one_port(r, leg, &w);
     if (e < 0 || fabs(u.x * w.x + u.y * w.y) > 0.01 || (fabs(u.x) > 1e-9 && fabs(u.y) > 1e-9)) continue;
     bg_vec a = r->ix.la[leg], z = r->ix.lb[leg];
