@@ -266,7 +266,10 @@ static int fc_boxes_meet(const fc_box *a, const fc_box *b) {
 static int fc_slanted(const fc_line *l) {
   for (int k = 0; k < l->nseg - l->barb; k++) {
     const fc_seg *s = &l->seg[k];
-    if (fmin(fabs(s->x1 - s->x0), fabs(s->y1 - s->y0)) > 0.05) return 1;
+    if (fmin(fabs(s->x1 - s->x0), fabs(s->y1 - s->y0)) > 0.05) {
+      if (fc_explain) printf("  slanted: bond %d\n", l->id);
+      return 1;
+    }
   }
   return 0;
 }
@@ -290,7 +293,10 @@ static int fc_touching(const fc_scene *f, const fc_line *st) {
     if (b->kind != FC_BOND || b->id == st->id) continue;
     for (int p = 0; p < st->nseg; p++)
       for (int q = 0; q < b->nseg; q++)
-        if (fc_seg_seg(&st->seg[p], &b->seg[q]) < (st->width + b->width) / 2) return 1;
+        if (fc_seg_seg(&st->seg[p], &b->seg[q]) < (st->width + b->width) / 2) {
+          if (fc_explain) printf("  touching: the stroke of bond %d meets bond %d\n", st->id, b->id);
+          return 1;
+        }
   }
   return 0;
 }
