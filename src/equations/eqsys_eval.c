@@ -104,8 +104,8 @@ int bg_eqsys_consistent(bg_eqsys *s, double t, double *y, int maxit) {
    * of the largest alone: from rest every value a moment later is small, and
    * an absolute floor set the switching functions the modes' look-ahead
    * reads to 0 (finding 29: a law held on the wrong side for a whole run) */
-  if (ok && na) {
-    double **u = malloc((size_t)na * sizeof(double *));
+  if (ok && na > 0) { /* (na > 0: GCC's -O1 could not see that a count is not negative) */
+    double **u = bg_xmalloc((size_t)na * sizeof(double *));
     for (int a = 0; a < na; a++) u[a] = &y[ix[a]];
     bg_eqs_snap_zeros(s, t, y, yp, r, u, na, ix, na, 1e-18, 0.0);
     free(u);
