@@ -452,12 +452,17 @@ static int modes_now(simrun *R, const int *dir) {
 
 /* After modes_now of an ODE: SIM_SLIDING when a switching function sat at 0
  * and neither side holds (bg_eqsys_mode_sliding; R->last_root names it), else 0. */
-static int sliding_now(simrun *R) {
-  int e = R->nroot && R->p->kind != BG_SIM_IDA ? bg_eqsys_mode_sliding(R->s) : -1, first;
-  if (e < 0) return 0;
+/* SIM_SLIDING for mode e; R->last_root its first root, which the failure names. */
+static int slid(simrun *R, int e) {
+  int first;
   bg_eqsys_mode_roots(R->s, e, &first);
   R->last_root = first;
   return SIM_SLIDING;
+}
+
+static int sliding_now(simrun *R) {
+  int e = R->nroot && R->p->kind != BG_SIM_IDA ? bg_eqsys_mode_sliding(R->s) : -1;
+  return e < 0 ? 0 : slid(R, e);
 }
 
 /* How far the rows of two sides of a switch may differ and still be one
@@ -489,9 +494,9 @@ static int settle_right(simrun *R, double tnext) {
    * that (the bridge at rtol 1e-9: 1e-7 V in 4e-11 s against 1e-8 V of
    * error, and the modes cycled) */
   int nm = bg_eqsys_nmodes(R->s), g = 1;
-  double *m0 = bg_xmalloc((size_t)nm * sizeof(double)), d, used = 0;
+  double *m0 = bg_xmalloc((size_t)nm * sizeof(double)), used = 0;
   bg_eqsys_modes_get(R->s, m0);
-  for (d = ev_delta(R); g && d <= 1e4 * ev_delta(R); d *= 100) {
+  for (double d = ev_delta(R); g && d <= 1e4 * ev_delta(R); d *= 100) {
     bg_eqsys_modes_set(R->s, m0);
     g = bg_eqsys_modes_right(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), d,
                              SIM_MODE_SETTLE + 2 * nm);
@@ -507,13 +512,7 @@ static int settle_right(simrun *R, double tnext) {
   double *tol = f >= 0 ? row_tolerances(R) : NULL;
   e = tol ? bg_eqsys_modes_slide(R->s, R->tcur, N_VGetArrayPointer(R->y), N_VGetArrayPointer(R->yp), used, tol) : 0;
   free(tol);
-  if (e > 0) {
-    int first;
-    bg_eqsys_mode_roots(R->s, e - 1, &first);
-    R->last_root = first;
-    return SIM_SLIDING;
-  }
-  return f;
+  return e > 0 ? slid(R, e - 1) : f;
 }
 
 /* IDA: consistent values under the current modes, then the modes from
