@@ -382,6 +382,25 @@ static int run_to(simrun *R, double tout) {
 
 #define SIM_RATES (-1002) /* run_calcic: the start's rates break a constraint's time derivative */
 
+/* A restart of a DAE with dependent stores whose IDACalcIC failed and whose
+ * constraints' time derivatives could not be used (bg_eqsys_restart_rates refuses a constraint that reads
+ * an algebraic unknown): IDACalcIC moves a dependent store's rate, not its
+ * value, so it cannot reduce a constraint's residual, which after a step is
+ * the solver's tolerance, not 0 (property seed 7607, docs/property.md
+ * finding 31). As at the start (bg_eqsys_initial): the algebraic rows
+ * solved first with the states held, then IDACalcIC for the rest. Returns
+ * IDACalcIC's flag, or f (the first failure) when Newton could not. */
+static int constraints_then_calcic(simrun *R, double tnext, int f) {
+  int nd = 0;
+  for (int i = 0; i < R->n && !bg_eqsys_is_reduced(R->s); i++)
+    nd += bg_eqsys_is_differential(R->s, i) && bg_eqsys_is_algebraic_row(R->s, i);
+  double *y = N_VGetArrayPointer(R->y);
+  if (nd == 0 || bg_eqsys_consistent(R->s, R->tcur, y, 30)) return f;
+  stats_now(R, R->st); /* IDAReInit resets the counters */
+  if (IDAReInit(R->mem, R->tcur, R->y, R->yp) < 0) return f;
+  return IDACalcIC(R->mem, IDA_YA_YDP_INIT, tnext);
+}
+
 /* IDA: consistent algebraic values and derivatives at R->tcur, looking
  * ahead to tnext. Returns the IDA flag. */
 static int run_calcic(simrun *R, double tnext) {
@@ -396,6 +415,7 @@ static int run_calcic(simrun *R, double tnext) {
     stats_now(R, R->st); /* IDAReInit resets the counters */
     return IDAReInit(R->mem, R->tcur, R->y, R->yp);
   }
+  if (f < 0 && R->tcur > R->p->t0) f = constraints_then_calcic(R, tnext, f);
   if (f >= 0) f = IDAGetConsistentIC(R->mem, R->y, R->yp);
   /* IDACalcIC cannot see a dependent store's rate (its row holds no yp):
    * from the constraints' time derivative, then IDA restarts from it */
