@@ -1088,7 +1088,7 @@ static void keep_start(simrun *R, bg_simresult *r) {
  * constraint reads no rate), so from an unsolved constraint it must fail;
  * and Newton's damped steps toward a far solution of a cubic law are short
  * (property seed 7724's renaming: the capacitor's charge from -0.488 to
- * -3.70 took 36 steps, the residual falling at each; docs/property.md,
+ * -3.70 took 35 steps, the residual falling at each; docs/property.md,
  * finding 31). 1 when y0 moved (y0 updated), else 0. */
 #define IC_NEWTON_STEPS 300
 static int constraints_further(simrun *R, double *y0) {
