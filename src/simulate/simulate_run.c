@@ -383,11 +383,11 @@ static int run_to(simrun *R, double tout) {
 #define SIM_RATES (-1002) /* run_calcic: the start's rates break a constraint's time derivative */
 
 /* A restart of a DAE with dependent stores whose IDACalcIC failed and whose
- * constraints' time derivatives could not be used (bg_eqsys_restart_rates refuses a constraint that reads
- * an algebraic unknown): IDACalcIC moves a dependent store's rate, not its
- * value, so it cannot reduce a constraint's residual, which after a step is
- * the solver's tolerance, not 0 (property seed 7607, docs/property.md
- * finding 31). As at the start (bg_eqsys_initial): the algebraic rows
+ * constraints' time derivatives could not be used (bg_eqsys_restart_rates
+ * refuses a constraint that reads an algebraic unknown): IDACalcIC moves a
+ * dependent store's rate, not its value, so it cannot reduce a constraint's
+ * residual, which after a step is the solver's tolerance, not 0 (property
+ * seed 7607, docs/property.md finding 31). As at the start (bg_eqsys_initial): the algebraic rows
  * solved first with the states held, then IDACalcIC for the rest. Returns
  * IDACalcIC's flag, or f (the first failure) when Newton could not. */
 static int constraints_then_calcic(simrun *R, double tnext, int f) {
