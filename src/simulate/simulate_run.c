@@ -54,6 +54,13 @@ typedef struct simrun {
   int last_root; /* the root function that fired last (-1 none): for the words of a failure */
   int starting;  /* 1 until the start is consistent (run_start): no row before */
   int exact_rows; /* IDA steps to each output time (first_step_again) */
+  /* IDA: the statistics at the last row, and the remedies of an interval
+   * whose error test failed at most of its steps (untrap) */
+  long st_row[5];
+  int trapped; /* remedies taken (untrap): 0, 1 (mask, terms_always), 2 (growth limited) */
+  int terms_always; /* ewt_rows: every algebraic unknown held to its largest term */
+  int trap_hit;     /* ewt_rows stopped IDA in a trapped interval (untrap) */
+  N_Vector mask;    /* IDASetSuppressAlg's id while IDACalcIC is not running (untrap) */
   double tstop, *modes_last, *modes_before, *modes_ev;
   unsigned char *back; /* per root: crossed back at this event (continuous switches) */
   double tseg; /* the end of the segment being run (an input's breakpoint), INFINITY on the last */
@@ -326,8 +333,8 @@ static void run_close(simrun *R) {
   if (R->NLS) SUNNonlinSolFree(R->NLS);
   if (R->LS) SUNLinSolFree(R->LS);
   if (R->A) SUNMatDestroy(R->A);
-  N_Vector v[] = {R->y, R->yp, R->atol, R->id};
-  for (int i = 0; i < 4; i++)
+  N_Vector v[] = {R->y, R->yp, R->atol, R->id, R->mask};
+  for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
     if (v[i]) N_VDestroy(v[i]);
   free(R->colptr);
   free(R->rowind);
@@ -404,7 +411,9 @@ static int constraints_then_calcic(simrun *R, double tnext, int f) {
 /* IDA: consistent algebraic values and derivatives at R->tcur, looking
  * ahead to tnext. Returns the IDA flag. */
 static int run_calcic(simrun *R, double tnext) {
+  if (R->mask) IDASetId(R->mem, R->id); /* which unknowns are algebraic, for IDACalcIC */
   int f = IDACalcIC(R->mem, IDA_YA_YDP_INIT, tnext);
+  if (R->mask) IDASetId(R->mem, R->mask); /* which are in the error test (untrap) */
   double h = 1e-5 * (R->p->t_end - R->p->t0);
   /* a restart of a DAE with dependent stores: IDACalcIC cannot reduce a
    * constraint's residual (it reads no rate) and failed or not by rounding,
@@ -948,8 +957,12 @@ static void row_coefficients(simrun *R) {
  * times less accurate, 7.7e-9 instead of 1.2e-10). IDA calls this at every
  * step. */
 #define SIM_NOISE_RTOLS 100.0
+static int trapped_now(simrun *R);
 static int ewt_rows(N_Vector yv, N_Vector wv, void *ud) {
   simrun *R = ud;
+  /* a trapped interval is stopped here, at the start of a step, rather
+   * than at its row or at IDA's limit of steps (untrap) */
+  if (trapped_now(R)) return R->trap_hit = 1, -1;
   const double *y = N_VGetArrayPointer(yv), *atol = N_VGetArrayPointer(R->atol);
   double *w = N_VGetArrayPointer(wv), rtol = R->p->rtol;
   for (int i = 0; i < R->n; i++) {
@@ -958,7 +971,7 @@ static int ewt_rows(N_Vector yv, N_Vector wv, void *ud) {
       double t = R->term_c[q] * fabs(y[R->term_j[q]]);
       if (t > big) big = t;
     }
-    if (m < SIM_NOISE_RTOLS * rtol * big) m = big;
+    if (m < (R->terms_always ? big : SIM_NOISE_RTOLS * rtol * big)) m = big;
     double d = rtol * m + atol[i];
     if (!(d > 0)) return -1;
     w[i] = 1.0 / d;
@@ -996,6 +1009,7 @@ static void row_terms(simrun *R, const double *J) {
 
 static void keep_last(simrun *R) {
   R->nev_interval = 0;
+  if (R->p->kind == BG_SIM_IDA) stats_now(R, R->st_row);
   if (!R->nalg) return;
   if (R->nroot) bg_eqsys_modes_get(R->s, R->modes_last), R->nev_last = R->r->nevents;
   memcpy(R->ylast, N_VGetArrayPointer(R->y), (size_t)R->n * sizeof(double));
@@ -1003,8 +1017,8 @@ static void keep_last(simrun *R) {
   R->tlast = R->tcur;
 }
 
-/* The interval from the last row to tout again, with short steps. */
-static int redo_interval(simrun *R, double tout, double tstop) {
+/* The interval from the last row to tout again, with short steps or not. */
+static int redo_interval(simrun *R, double tout, double tstop, int short_steps) {
   stats_now(R, R->st);
   memcpy(N_VGetArrayPointer(R->y), R->ylast, (size_t)R->n * sizeof(double));
   memcpy(N_VGetArrayPointer(R->yp), R->yplast, (size_t)R->n * sizeof(double));
@@ -1014,7 +1028,7 @@ static int redo_interval(simrun *R, double tout, double tstop) {
   int f = IDAReInit(R->mem, R->tlast, R->y, R->yp);
   if (f >= 0) f = run_calcic(R, tout);
   double h = (tout - R->tlast) / SIM_REDO_STEPS;
-  if (f >= 0) f = IDASetMaxStep(R->mem, R->p->max_step > 0 && R->p->max_step < h ? R->p->max_step : h);
+  if (f >= 0 && short_steps) f = IDASetMaxStep(R->mem, R->p->max_step > 0 && R->p->max_step < h ? R->p->max_step : h);
   if (f >= 0) f = run_stop_at(R, tstop);
   if (f >= 0) f = run_to_events(R, tout);
   int g = IDASetMaxStep(R->mem, R->p->max_step > 0 ? R->p->max_step : 0.0);
@@ -1028,7 +1042,7 @@ static int check_row(simrun *R, bg_simresult *r, double tout, double tstop) {
   if (!R->nalg || R->tcur <= R->tlast) return 0;
   double v = row_violation(R, &row);
   if (v <= SIM_ROW_TOL) return 0;
-  f = redo_interval(R, tout, tstop);
+  f = redo_interval(R, tout, tstop, 1);
   if (f < 0) return f;
   r->rows_redone++;
   v = row_violation(R, &row);
@@ -1038,6 +1052,92 @@ static int check_row(simrun *R, bg_simresult *r, double tout, double tstop) {
     r->row_worst_unknown = row >= 0 ? bg_eqsys_name(R->s, row) : NULL;
   }
   return 0;
+}
+
+/* The trap of a reduced DAE (docs/simulation.md, "Steps that cannot grow";
+ * docs/property.md, finding 30): an algebraic unknown computed from the
+ * states' rates (a dummy derivative) carries the BDF rates' error, of order
+ * h at order 1, which cancels in IDA's error estimate while the step stays
+ * the same and shows up whole when it changes. Every step twice the last
+ * then failed the test; back at the last size it passed, and the step and
+ * the order never grew (seed 5044's variant: 306 180 steps with 305 509
+ * failures, 37 s, 2.9e-5 of the range off). An interval of at least
+ * SIM_TRAP_STEPS steps that failed the test at half of them or more is run
+ * again from the last row with a remedy, and so is the rest of the run:
+ * first (rate_readers) the unknowns whose rows read the states' rates out of
+ * the error test, which cannot hold them, and every algebraic unknown held
+ * to its largest term (ewt_rows); trapped again, the growth of each step
+ * limited to SIM_TRAP_GROWTH. A run never trapped is not touched. */
+#define SIM_TRAP_STEPS 500
+#define SIM_TRAP_GROWTH 1.2
+
+/* The mask of the algebraic unknowns whose rows read a state's rate
+ * (dF_i/dy'_j != 0: J with cj = 1 against cj = 0, dense, at the point
+ * reached), then those whose rows read one of them, and so on (a queue: each
+ * column looked at once): 0 out of the error test, 1 in. NULL when there is
+ * none or the Jacobian cannot be had. */
+static N_Vector rate_readers(simrun *R) {
+  int n = R->n, nq = 0;
+  if (n > 1000) return NULL; /* dense n x n, twice (16 MB at 1000) */
+  size_t nn = (size_t)n * (size_t)n;
+  double *J0 = bg_xmalloc(nn * sizeof(double)), *J1 = bg_xmalloc(nn * sizeof(double));
+  int *queue = bg_xmalloc((size_t)n * sizeof(int));
+  N_Vector mask = N_VNew_Serial(n, R->ctx);
+  double *m = N_VGetArrayPointer(mask), *y = N_VGetArrayPointer(R->y), *yp = N_VGetArrayPointer(R->yp);
+  N_VConst(1.0, mask);
+  if (bg_eqsys_jac_dense(R->s, R->tcur, y, yp, 0.0, J0) == 0 && bg_eqsys_jac_dense(R->s, R->tcur, y, yp, 1.0, J1) == 0)
+    for (int i = 0; i < n; i++)
+      for (int j = 0; j < n && !bg_eqsys_is_differential(R->s, i); j++)
+        if (bg_eqsys_is_differential(R->s, j) && J1[(size_t)j * (size_t)n + (size_t)i] != J0[(size_t)j * (size_t)n + (size_t)i]) {
+          m[i] = 0, queue[nq++] = i;
+          break;
+        }
+  for (int k = 0; k < nq; k++) {
+    size_t col = (size_t)queue[k] * (size_t)n;
+    for (int i = 0; i < n; i++)
+      if (m[i] != 0 && !bg_eqsys_is_differential(R->s, i) && J0[col + (size_t)i] != 0) m[i] = 0, queue[nq++] = i;
+  }
+  free(J0), free(J1), free(queue);
+  if (!nq) N_VDestroy(mask), mask = NULL;
+  return mask;
+}
+
+/* 1 when the steps since the last row are trapped: at least SIM_TRAP_STEPS,
+ * the error test failed at half of them or more (IDA's counters since its
+ * last ReInit on top of R->st) and a remedy is left. */
+static int trapped_now(simrun *R) {
+  if (R->p->kind != BG_SIM_IDA || R->trapped == 2 || !R->nalg || R->exact_rows || R->starting) return 0;
+  long ns = 0, ne = 0;
+  if (IDAGetNumSteps(R->mem, &ns) < 0 || IDAGetNumErrTestFails(R->mem, &ne) < 0) return 0;
+  long steps = R->st[0] + ns - R->st_row[0], fails = R->st[3] + ne - R->st_row[3];
+  return steps >= SIM_TRAP_STEPS && 2 * fails >= steps;
+}
+
+/* f: the interval's flag (a trapped interval ends where ewt_rows stopped
+ * it, at IDA's limit of steps, or at its row); returns it, or the flag of
+ * the interval run again. */
+static int untrap(simrun *R, double tout, double tstop, int f) {
+  int hit = R->trap_hit;
+  R->trap_hit = 0;
+  /* (stopped by ewt_rows: IDASolve's flag, or IDACalcIC's at an event) */
+  if ((f < 0 && f != IDA_TOO_MUCH_WORK && !hit) || R->tcur <= R->tlast || !trapped_now(R))
+    return f;
+  R->sunmsg[0] = 0; /* (the stop's words) */
+  long st[5];
+  stats_now(R, st);
+  long steps = st[0] - R->st_row[0], fails = st[3] - R->st_row[3];
+  N_Vector mask = R->trapped == 0 && R->row_ewt ? rate_readers(R) : NULL;
+  if (mask && (IDASetId(R->mem, mask) < 0 || IDASetSuppressAlg(R->mem, SUNTRUE) < 0)) N_VDestroy(mask), mask = NULL;
+  R->trapped = mask ? 1 : 2;
+  if (mask) R->mask = mask, R->terms_always = 1;
+  else if ((f = IDASetEtaMax(R->mem, SIM_TRAP_GROWTH)) < 0) return f;
+  if (R->p->verbose)
+    bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: from t = %.6g to %.6g the error test failed at %ld of %ld steps "
+            "(the step could not grow); again with %s", R->tlast, tout, fails, steps,
+            mask ? "the unknowns computed from the states' rates out of the error test"
+                 : "each step at most 1.2 times the last");
+  stats_now(R, R->st_row); /* the interval run again counts from here */
+  return redo_interval(R, tout, tstop, 0);
 }
 
 /* ------------------------------------------------------------------ the run */
@@ -1054,7 +1154,7 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) 
   while (f >= 0 && *k < p->nrows && (last || p->times[*k] < tstop)) {
     double tout = last && *k == p->nrows - 1 ? p->t_end : p->times[*k];
     if (tout > R->tcur + 1e-14 * span) {
-      f = run_to_events(R, tout);
+      f = untrap(R, tout, tstop, run_to_events(R, tout));
       if (f >= 0) f = check_row(R, r, tout, tstop);
       if (f < 0) { fail(R, r, f, ""); return -1; }
     }
