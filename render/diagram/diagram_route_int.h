@@ -1,13 +1,33 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The router's insides, shared by the signal router (diagram_route.c) and
- * the bond router built on it (diagram_route_bonds.c); nothing else in the
- * diagram stage reads them (its interface is diagram_int.h's bg_router). */
+/* The router's insides, shared by the signal router's files and the bond
+ * router built on it (diagram_route_bonds.c); nothing else in the diagram
+ * stage reads them (its interface is diagram_int.h's bg_router). The signal
+ * router: diagram_route.c (the ports, the routes tried in turn, the router),
+ * diagram_route_near.c (the near index), diagram_route_cost.c (what a
+ * segment and the grid's edges cost), diagram_route_grid.c (the grid of
+ * channel lines), diagram_route_search.c (the A* search over it),
+ * diagram_route_branch.c (a route branching off its source's earlier ones),
+ * diagram_route_detour.c (a U round a one-port instead of crossing its bond). */
 #ifndef BG_DIAGRAM_ROUTE_INT_H
 #define BG_DIAGRAM_ROUTE_INT_H
 
 #include "diagram/diagram_int.h"
 
 #define STUB 10.0 /* a port's straight run out of its box, to its grid vertex */
+/* Costs in points of line length. */
+#define COST_BEND 14.0
+#define COST_CROSS_BOND 160.0 /* a detour of 160 pt is better than a crossed bond */
+#define COST_CROSS_OWN 480.0  /* a bond of the route's own end element: two lines out of one
+                                 element never need to cross (a detour past two other bonds
+                                 is better) */
+#define COST_CROSS_SIGNAL 6.0
+#define COST_SHARE 900.0      /* running on another signal: read as one line */
+#define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
+#define COST_HUG 1.5          /* per pt beside a bond, nearer than HUG: read as a doubled bond */
+#define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
+#define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
+#define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
+#define LANE 10.0             /* the channel lines' distance from a box */
 
 /* A uniform grid of cells over the layout, each listing the nodes whose box
  * (grown by 3 pt) and the bond legs whose bounding box meet it, so a query
@@ -105,11 +125,72 @@ static inline int bg_route_end_node(const bg_diagram_layout *L, int b, int head)
   return L->rep ? L->rep[n] : n;
 }
 
+/* The near index (diagram_route_near.c). */
+/* The cells r[0]..r[2] by r[1]..r[3] that box [x0,x1]×[y0,y1] meets, clamped to the grid. */
+void bg_near_cells(const near_index *ix, double x0, double y0, double x1, double y1, int r[4]);
+/* Whether node n is an obstacle: drawn, with a box. */
+int bg_route_node_drawn(const bg_diagram_layout *L, int n);
+/* Item k's box: node k's grown by 3 pt, or leg k - nnode's bounding box. */
+void bg_near_item_box(const bg_diagram_layout *L, const near_index *ix, int k, double b[4]);
+/* The index of the drawn nodes and the legs of bonds 0..nbond-1, but those
+ * hidden or marked in skip (nullable). */
+void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, near_index *ix);
+void bg_near_free(near_index *ix);
 /* The items (node k as k, leg j as nnode + j) in the cells the box meets. */
 void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);
+/* The routed signal segments listed in the cells box meets, each once. */
+void bg_near_signals(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);
+/* A routed segment a-b added, of source group (sgrp). */
+void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
+
+/* What a route costs (diagram_route_cost.c). */
+/* Segment p-q against segment a-b: 1 crossing, 2 on one line, 3 side by
+ * side (*run: for how long), else 0 (in full at its definition). */
+int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends);
+/* The distance from point c to segment p-q. */
+double bg_route_point_seg(bg_vec c, bg_vec p, bg_vec q);
+/* Whether index segment s is the current route's own (bg_route_detour). */
+int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's
  * box no obstacle). */
 double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip);
+/* Every edge of the grid's cost into r->hcost and r->vcost. */
+void bg_route_grid_costs(bg_router *r);
+
+/* The grid of channel lines (diagram_route_grid.c). */
+/* Candidate lines x and y (NAN: none), a port's (prio) kept whole. */
+void bg_route_add_cand(bg_router *r, double x, double y, int prio);
+/* The index of the line of the sorted a[0..n-1] nearest v. */
+int bg_route_nearest_line(const double *a, int n, double v);
+/* The lanes beside every node box in window [wx0,wx1]×[wy0,wy1] as candidate lines. */
+void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double wy1);
+/* The grid's lines r->X, r->Y from the candidates (r->gap: the gap used). */
+void bg_route_make_lines(bg_router *r);
+/* The ports' lines as the first candidates. */
+void bg_route_add_ports(bg_router *r, const port *ps, int nps, const port *pt, int npt);
+/* The grid over window [wx0,wx1]×[wy0,wy1]. */
+void bg_route_build_grid(bg_router *r, double wx0, double wy0, double wx1, double wy1, const port *ps, int nps,
+                         const port *pt, int npt);
+/* The ports' stubs snapped onto the grid's lines. */
+void bg_route_snap_ports(const bg_router *r, port *p, int n);
+
+/* The search (diagram_route_search.c): the cheapest route over the grid of
+ * window [wx0,wx1]×[wy0,wy1], or round the outside of the figure (a and b:
+ * the ends' boxes); 0 points when the grid's lines were merged more than
+ * max_gap apart. Returns the number of points, *cost the route's cost. */
+int bg_route_in_window(bg_router *r, port *ps, int nps, port *pt, int npt, double wx0, double wy0, double wx1,
+                       double wy1, double max_gap, bg_vec *pts, int cap, double *cost);
+int bg_route_outside(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
+                     bg_vec *pts, int cap, double *cost);
+
+/* A route branching off its source's earlier routes (diagram_route_branch.c). */
+/* Whether segment p-q runs on an earlier route of the current source. */
+int bg_route_group_runs_on(bg_router *r, bg_vec p, bg_vec q);
+/* Whether route pts[0..n-1], after it leaves them (k, at), runs on them again. */
+int bg_route_group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec at);
+/* Where route pts[0..n-1] leaves them: the segment k, the point *at; -1: it is drawn whole. */
+int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at);
+
 /* The cheapest route between ports ps and pt whose boxes are a and b (see
  * diagram_route.c), remembered for later routes; returns its points. */
 int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],

@@ -1,0 +1,260 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* What a route costs (issue 31; the costs in diagram_route_int.h): a
+ * segment against the node boxes, bond legs and routed signals near it
+ * (bg_route_seg_cost), and every edge of the search's grid at once, the
+ * same as segment by segment (bg_route_grid_costs). */
+#include <math.h>
+
+#include "diagram/diagram_route_int.h"
+
+/* ---------------------------------------------------------------- segment tests */
+/* Segment p-q (axis-parallel, from the grid) against segment a-b: 1 when
+ * they cross at a point inside a-b (not within 0.5 pt of its ends) and in
+ * p-q's half-open extent [lower end, upper end), so a crossing at a grid
+ * vertex counts for one edge only (ends: also through a-b's ends and
+ * 0.5 pt past them, as a routed bond must not pass another bond's end:
+ * it would read as that bond ending on it, a false T); 2 when they run on
+ * one line (parallel, nearer than `near` pt, sharing more than 1 pt); 3
+ * when they run side by side within HUG pt (*run: for how long); else 0. */
+#define HUG 12.0
+int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends) {
+  bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
+  double lu = bg_vlen(u), lv = bg_vlen(v);
+  if (lu <= 0 || lv <= 0) return 0;
+  double den = u.x * v.y - u.y * v.x;
+  if (fabs(den) < 0.02 * lu * lv) { /* parallel: on one line? */
+    double dist = fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / lu;
+    if (dist >= HUG) return 0;
+    double t0 = ((a.x - p.x) * u.x + (a.y - p.y) * u.y) / lu, t1 = ((b.x - p.x) * u.x + (b.y - p.y) * u.y) / lu;
+    double lo = fmax(0, fmin(t0, t1)), hi = fmin(lu, fmax(t0, t1));
+    if (hi - lo <= 1) return 0;
+    if (run) *run = hi - lo;
+    return dist < near ? 2 : 3;
+  }
+  bg_vec w = bg_vsub(a, p);
+  double t = (w.x * v.y - w.y * v.x) / den; /* along p-q */
+  double s = (w.x * u.y - w.y * u.x) / den; /* along a-b */
+  double keep = ends ? -0.5 : 0.5;
+  if (s * lv < keep || (1 - s) * lv < keep) return 0;
+  /* half-open along the grid edge, by coordinate: [min, max) */
+  int forward = u.x > 0 || (u.x == 0 && u.y > 0);
+  double tl = forward ? t : 1 - t;
+  return tl >= 0 && tl < 1 ? 1 : 0;
+}
+
+double bg_route_point_seg(bg_vec c, bg_vec p, bg_vec q) {
+  bg_vec u = bg_vsub(q, p);
+  double l2 = u.x * u.x + u.y * u.y, t = l2 > 0 ? ((c.x - p.x) * u.x + (c.y - p.y) * u.y) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
+}
+
+/* Whether bond b is one of the current route's own: a bond of its source's
+ * or target's node (not the routed bond itself). */
+static int own_bond(const bg_router *r, int b) {
+  if (b < 0 || b == r->bond) return 0;
+  for (int k = 0; k < 2; k++) {
+    int n = bg_route_end_node(r->L, b, k);
+    if (n >= 0 && (n == r->from_node || n == r->to_node)) return 1;
+  }
+  return 0;
+}
+
+/* What crossing leg k of the near index costs the current route. */
+static double leg_cross_cost(const bg_router *r, int leg) {
+  bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
+  int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
+  return (own_bond(r, r->ix.lbond[leg]) ? COST_CROSS_OWN : COST_CROSS_BOND) * (slanted ? COST_OBLIQUE : 1);
+}
+
+/* Whether index segment s is the current route's own (bg_route_detour:
+ * its first segments and those it added since). */
+int bg_route_own_segment(const bg_router *r, int s) {
+  return (s >= r->skip0 && s < r->skip1) || s >= r->skip2;
+}
+
+/* What crossing routed segment s costs: a signal's, or a bond routed
+ * before this one (group -2 - b), the route's own bond's dearest. */
+static double seg_cross_cost(const bg_router *r, int s) {
+  int g = r->ix.sgrp[s];
+  return g <= -2 && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
+}
+
+/* What a segment p-q costs: its length, and the penalties for what it meets. */
+double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
+  const bg_diagram_layout *L = r->L;
+  double cost = bg_vlen(bg_vsub(q, p)), x0 = fmin(p.x, q.x), x1 = fmax(p.x, q.x), y0 = fmin(p.y, q.y), y1 = fmax(p.y, q.y);
+  bg_near_box(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int k = r->nl.k[j];
+    if (k < L->nnode) {
+      if (k == skip) continue;
+      /* a box grown by 2 pt: the segment runs through it */
+      double bx0 = L->nx[k] - L->nw[k] / 2 - 2, bx1 = L->nx[k] + L->nw[k] / 2 + 2;
+      double by0 = L->ny[k] - L->nh[k] / 2 - 2, by1 = L->ny[k] + L->nh[k] / 2 + 2;
+      if (x0 < bx1 && x1 > bx0 && y0 < by1 && y1 > by0) cost += COST_BLOCK;
+      continue;
+    }
+    double run = 0;
+    int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, r->bond >= 0);
+    if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
+    cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
+    if (r->ix.lmid[k - L->nnode] && bg_route_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
+  }
+  bg_near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    if (r->group >= 0 && r->ix.sgrp[s] == r->group) continue; /* its own source's: a branch */
+    if (bg_route_own_segment(r, s)) continue;                           /* the route itself (bg_route_detour) */
+    int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL, 0);
+    cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
+  }
+  return cost;
+}
+
+/* The edges of one grid line that overlap the open interval (lo, hi) along
+ * it: *i0 .. *i1 (empty when *i0 > *i1). A: the line's vertices, n of them. */
+static void edge_range(const double *A, int n, double lo, double hi, int *i0, int *i1) {
+  int a = 0, b = n - 1; /* first edge i with A[i + 1] > lo */
+  while (a < b) {
+    int mid = (a + b) / 2;
+    if (A[mid + 1] > lo) b = mid;
+    else a = mid + 1;
+  }
+  int c = -1, d = n - 2; /* last edge i with A[i] < hi */
+  while (c < d) {
+    int mid = (c + d + 1) / 2;
+    if (A[mid] < hi) c = mid;
+    else d = mid - 1;
+  }
+  *i0 = a, *i1 = c;
+}
+
+/* The edge i whose half-open extent [A[i], A[i+1]) holds v, or -1. */
+static int edge_at(const double *A, int n, double v) {
+  if (n < 2 || v < A[0] || v >= A[n - 1]) return -1;
+  int a = 0, b = n - 2;
+  while (a < b) {
+    int mid = (a + b + 1) / 2;
+    if (A[mid] <= v) a = mid;
+    else b = mid - 1;
+  }
+  return a;
+}
+
+/* A point's coordinates along a grid line and across it. */
+static double along(bg_vec p, int horiz) { return horiz ? p.x : p.y; }
+static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
+
+/* Segment a-b against grid line (horizontal when horiz) at `at` over the
+ * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
+ * open, as bg_route_seg_meet counts it, ends as there); a parallel run within HUG pt adds to each
+ * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
+ * `hug` per pt of the shared run. */
+static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
+                      double hug, int ends, double *out) {
+  double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
+  double lv = sqrt(va * va + vc * vc);
+  if (lv <= 0) return;
+  if (fabs(vc) < 0.02 * lv) { /* parallel: on one line? */
+    double dist = fabs(across(a, horiz) - at);
+    if (dist >= HUG || (dist >= 3 && hug <= 0)) return;
+    double t0 = fmin(along(a, horiz), along(b, horiz)), t1 = fmax(along(a, horiz), along(b, horiz));
+    int i0, i1;
+    edge_range(A, n, t0, t1, &i0, &i1);
+    for (int i = i0; i <= i1; i++) {
+      double run = fmin(A[i + 1], t1) - fmax(A[i], t0);
+      if (run > 1) out[i] += dist < 3 ? block : hug * run;
+    }
+    return;
+  }
+  double s = (at - across(a, horiz)) / vc, keep = ends ? -0.5 : 0.5;
+  if (s * lv < keep || (1 - s) * lv < keep) return;
+  int i = edge_at(A, n, along(a, horiz) + s * va);
+  if (i >= 0) out[i] += cross;
+}
+
+/* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
+static void line_range(const double *A, int n, double lo, double hi, int *j0, int *j1) {
+  int a = 0, b = n; /* first j with A[j] >= lo */
+  while (a < b) {
+    int mid = (a + b) / 2;
+    if (A[mid] >= lo) b = mid;
+    else a = mid + 1;
+  }
+  int c = -1, d = n - 1; /* last j with A[j] <= hi */
+  while (c < d) {
+    int mid = (c + d + 1) / 2;
+    if (A[mid] <= hi) c = mid;
+    else d = mid - 1;
+  }
+  *j0 = a, *j1 = c;
+}
+
+/* What every edge of the grid costs, the same as seg_cost would say edge by
+ * edge: the edges' lengths, then each item near the grid (from one query of
+ * the near index over the whole window) added to the lines it comes near
+ * and there to the edges it meets (found by bisection). One pass over the
+ * window's items instead of a query per edge: an item is looked at once,
+ * not once for every edge near it. hcost holds the horizontal lines' edges
+ * (line j's edge i at j * nx + i), vcost the vertical ones' (line j's edge
+ * i at j * ny + i). */
+void bg_route_grid_costs(bg_router *r) {
+  const bg_diagram_layout *L = r->L;
+  const double *X = r->X, *Y = r->Y;
+  int nx = r->nxl, ny = r->nyl;
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i + 1 < nx; i++) r->hcost[j * nx + i] = X[i + 1] - X[i];
+  for (int j = 0; j < nx; j++)
+    for (int i = 0; i + 1 < ny; i++) r->vcost[j * ny + i] = Y[i + 1] - Y[i];
+  bg_near_box(&r->ix, X[0] - HUG, Y[0] - HUG, X[nx - 1] + HUG, Y[ny - 1] + HUG, &r->nl);
+  for (int jj = 0; jj < r->nl.n; jj++) {
+    int k = r->nl.k[jj], j0, j1, i0, i1;
+    if (k < L->nnode) { /* a box grown by 2 pt: the lines through it */
+      double bx0 = L->nx[k] - L->nw[k] / 2 - 2, bx1 = L->nx[k] + L->nw[k] / 2 + 2;
+      double by0 = L->ny[k] - L->nh[k] / 2 - 2, by1 = L->ny[k] + L->nh[k] / 2 + 2;
+      line_range(Y, ny, by0, by1, &j0, &j1);
+      edge_range(X, nx, bx0, bx1, &i0, &i1);
+      for (int j = j0; j <= j1; j++)
+        for (int i = i0; Y[j] > by0 && Y[j] < by1 && i <= i1; i++) r->hcost[j * nx + i] += COST_BLOCK;
+      line_range(X, nx, bx0, bx1, &j0, &j1);
+      edge_range(Y, ny, by0, by1, &i0, &i1);
+      for (int j = j0; j <= j1; j++)
+        for (int i = i0; X[j] > bx0 && X[j] < bx1 && i <= i1; i++) r->vcost[j * ny + i] += COST_BLOCK;
+      continue;
+    }
+    int leg = k - L->nnode;
+    bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
+    double cross = leg_cross_cost(r, leg);
+    line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->vcost[j * ny]);
+    if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
+      bg_vec mid = r->ix.mid[leg];
+      line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);
+      for (int j = j0; j <= j1; j++) {
+        double dc = fabs(mid.y - Y[j]), half = dc < 10 ? sqrt(100 - dc * dc) : 0;
+        edge_range(X, nx, mid.x - half, mid.x + half, &i0, &i1);
+        for (int i = i0; half > 0 && i <= i1; i++) r->hcost[j * nx + i] += COST_NUMBER;
+      }
+      line_range(X, nx, mid.x - 10, mid.x + 10, &j0, &j1);
+      for (int j = j0; j <= j1; j++) {
+        double dc = fabs(mid.x - X[j]), half = dc < 10 ? sqrt(100 - dc * dc) : 0;
+        edge_range(Y, ny, mid.y - half, mid.y + half, &i0, &i1);
+        for (int i = i0; half > 0 && i <= i1; i++) r->vcost[j * ny + i] += COST_NUMBER;
+      }
+    }
+  }
+  bg_near_signals(&r->ix, X[0] - 3, Y[0] - 3, X[nx - 1] + 3, Y[ny - 1] + 3, &r->nl);
+  for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
+    if (r->group >= 0 && r->ix.sgrp[r->nl.k[jj]] == r->group) continue; /* its own source's: a branch */
+    bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
+    double cross = seg_cross_cost(r, r->nl.k[jj]);
+    int j0, j1;
+    line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, 0, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, 0, &r->vcost[j * ny]);
+  }
+}
