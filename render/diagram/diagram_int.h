@@ -95,7 +95,9 @@ struct bg_diagram {
 
 /* The files call down this list, never a sibling or up (docs/developer.md):
  *   diagram_base.c, diagram_words.c  leaves: vectors, ink, colours, queries; markup
- *   diagram_geom.c, diagram_place.c, diagram_route.c  where bonds run; text placement; signal routes
+ *   diagram_route_near.c, then _cost.c and _grid.c, then _search.c and _branch.c  the router's insides
+ *   diagram_geom.c, diagram_place.c, diagram_route.c, diagram_route_detour.c  where bonds run; text
+ *           placement; signal routes (diagram_route_int.h); detours round one-ports
  *   passes: diagram_grid.c (layout stage), diagram_bonds.c, diagram_layers.c, diagram_marks.c,
  *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
  *           diagram_frames.c, diagram_dot.c, diagram_tips.c, diagram_route_bonds.c
@@ -174,7 +176,7 @@ bg_vec bg_free_direction(const bg_diagram_layout *d, int n);
 void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid);
 
 
-/* Orthogonal signal routes (diagram_route.c): a router holds the layout's
+/* Orthogonal signal routes (diagram_route.c, its insides in diagram_route_*.c): a router holds the layout's
  * nodes and bond legs in a grid of cells and the routes given so far; the
  * legs of bonds marked in skip (nullable) are left out, as if not drawn. */
 typedef struct bg_router bg_router;

@@ -32,7 +32,7 @@
  * lines run through the boxes (the 1 000-signal network's whole-figure
  * searches merged lines up to 80 pt apart and found a way for 3 % of its
  * boxed-in signals, at six times a window's work). */
-#define FALLBACK_GAP (4 * LANE)             /* the straight run off a port, and onto one */
+#define FALLBACK_GAP (4 * LANE)
 
 /* ---------------------------------------------------------------- the router */
 

@@ -191,7 +191,7 @@ static void line_range(const double *A, int n, double lo, double hi, int *j0, in
   *j0 = a, *j1 = c;
 }
 
-/* What every edge of the grid costs, the same as seg_cost would say edge by
+/* What every edge of the grid costs, the same as bg_route_seg_cost would say edge by
  * edge: the edges' lengths, then each item near the grid (from one query of
  * the near index over the whole window) added to the lines it comes near
  * and there to the edges it meets (found by bisection). One pass over the
