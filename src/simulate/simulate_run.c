@@ -60,6 +60,7 @@ typedef struct simrun {
   int trapped; /* remedies taken (untrap): 0, 1 (mask, terms_always), 2 (growth limited) */
   int terms_always; /* ewt_rows: every algebraic unknown held to its largest term */
   int trap_hit;     /* ewt_rows stopped IDA in a trapped interval (untrap) */
+  int trap_watch;   /* 1 while an output interval runs under untrap: ewt_rows may stop it */
   N_Vector mask;    /* IDASetSuppressAlg's id while IDACalcIC is not running (untrap) */
   double tstop, *modes_last, *modes_before, *modes_ev;
   unsigned char *back; /* per root: crossed back at this event (continuous switches) */
@@ -1106,7 +1107,8 @@ static N_Vector rate_readers(simrun *R) {
  * the error test failed at half of them or more (IDA's counters since its
  * last ReInit on top of R->st) and a remedy is left. */
 static int trapped_now(simrun *R) {
-  if (R->p->kind != BG_SIM_IDA || R->trapped == 2 || !R->nalg || R->exact_rows || R->starting) return 0;
+  if (!R->trap_watch || R->p->kind != BG_SIM_IDA || R->trapped == 2 || !R->nalg || R->exact_rows || R->starting)
+    return 0;
   long ns = 0, ne = 0;
   if (IDAGetNumSteps(R->mem, &ns) < 0 || IDAGetNumErrTestFails(R->mem, &ne) < 0) return 0;
   long steps = R->st[0] + ns - R->st_row[0], fails = R->st[3] + ne - R->st_row[3];
@@ -1115,29 +1117,36 @@ static int trapped_now(simrun *R) {
 
 /* f: the interval's flag (a trapped interval ends where ewt_rows stopped
  * it, at IDA's limit of steps, or at its row); returns it, or the flag of
- * the interval run again. */
-static int untrap(simrun *R, double tout, double tstop, int f) {
-  int hit = R->trap_hit;
-  R->trap_hit = 0;
-  /* (stopped by ewt_rows: IDASolve's flag, or IDACalcIC's at an event) */
-  if ((f < 0 && f != IDA_TOO_MUCH_WORK && !hit) || R->tcur <= R->tlast || !trapped_now(R))
-    return f;
-  R->sunmsg[0] = 0; /* (the stop's words) */
-  long st[5];
-  stats_now(R, st);
-  long steps = st[0] - R->st_row[0], fails = st[3] - R->st_row[3];
-  N_Vector mask = R->trapped == 0 && R->row_ewt ? rate_readers(R) : NULL;
-  if (mask && (IDASetId(R->mem, mask) < 0 || IDASetSuppressAlg(R->mem, SUNTRUE) < 0)) N_VDestroy(mask), mask = NULL;
-  R->trapped = mask ? 1 : 2;
-  if (mask) R->mask = mask, R->terms_always = 1;
-  else if ((f = IDASetEtaMax(R->mem, SIM_TRAP_GROWTH)) < 0) return f;
-  if (R->p->verbose)
-    bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: from t = %.6g to %.6g the error test failed at %ld of %ld steps "
-            "(the step could not grow); again with %s", R->tlast, tout, fails, steps,
-            mask ? "the unknowns computed from the states' rates out of the error test"
-                 : "each step at most 1.2 times the last");
-  stats_now(R, R->st_row); /* the interval run again counts from here */
-  return redo_interval(R, tout, tstop, 0);
+ * the interval run again: with the next remedy while one is left and the
+ * run is trapped again. Watched (trap_watch) only here: a restart at an
+ * input's breakpoint or a row's redo is never stopped. */
+static int untrap(simrun *R, double tout, double tstop) {
+  R->trap_watch = 1;
+  int f = run_to_events(R, tout);
+  for (;;) {
+    int hit = R->trap_hit;
+    R->trap_hit = 0;
+    /* (stopped by ewt_rows: IDASolve's flag, or IDACalcIC's at an event) */
+    if ((f < 0 && f != IDA_TOO_MUCH_WORK && !hit) || R->tcur <= R->tlast || !trapped_now(R)) break;
+    R->sunmsg[0] = 0; /* (the stop's words) */
+    long st[5];
+    stats_now(R, st);
+    long steps = st[0] - R->st_row[0], fails = st[3] - R->st_row[3];
+    N_Vector mask = R->trapped == 0 && R->row_ewt ? rate_readers(R) : NULL;
+    if (mask && (IDASetId(R->mem, mask) < 0 || IDASetSuppressAlg(R->mem, SUNTRUE) < 0)) N_VDestroy(mask), mask = NULL;
+    R->trapped = mask ? 1 : 2;
+    if (mask) R->mask = mask, R->terms_always = 1;
+    else if ((f = IDASetEtaMax(R->mem, SIM_TRAP_GROWTH)) < 0) break;
+    if (R->p->verbose)
+      bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: from t = %.6g to %.6g the error test failed at %ld of %ld steps "
+              "(the step could not grow); again with %s", R->tlast, tout, fails, steps,
+              mask ? "the unknowns computed from the states' rates out of the error test"
+                   : "each step at most 1.2 times the last");
+    stats_now(R, R->st_row); /* the interval run again counts from here */
+    f = redo_interval(R, tout, tstop, 0);
+  }
+  R->trap_watch = 0;
+  return f;
 }
 
 /* ------------------------------------------------------------------ the run */
@@ -1154,7 +1163,7 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) 
   while (f >= 0 && *k < p->nrows && (last || p->times[*k] < tstop)) {
     double tout = last && *k == p->nrows - 1 ? p->t_end : p->times[*k];
     if (tout > R->tcur + 1e-14 * span) {
-      f = untrap(R, tout, tstop, run_to_events(R, tout));
+      f = untrap(R, tout, tstop); /* run_to_events, watched */
       if (f >= 0) f = check_row(R, r, tout, tstop);
       if (f < 0) { fail(R, r, f, ""); return -1; }
     }
