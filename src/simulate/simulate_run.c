@@ -57,7 +57,7 @@ typedef struct simrun {
   /* IDA: the statistics at the last row, and the remedies of an interval
    * whose error test failed at most of its steps (untrap) */
   long st_row[5];
-  int trapped; /* remedies taken (untrap): 0, 1 (mask, terms_always), 2 (growth limited) */
+  int trapped; /* untrap's remedy taken (mask, terms_always): once a run */
   int terms_always; /* ewt_rows: every algebraic unknown held to its largest term */
   int trap_hit;     /* ewt_rows stopped IDA in a trapped interval (untrap) */
   int trap_watch;   /* 1 while an output interval runs under untrap: ewt_rows may stop it */
@@ -1064,13 +1064,11 @@ static int check_row(simrun *R, bg_simresult *r, double tout, double tstop) {
  * the order never grew (seed 5044's variant: 306 180 steps with 305 509
  * failures, 37 s, 2.9e-5 of the range off). An interval of at least
  * SIM_TRAP_STEPS steps that failed the test at half of them or more is run
- * again from the last row with a remedy, and so is the rest of the run:
- * first (rate_readers) the unknowns whose rows read the states' rates out of
- * the error test, which cannot hold them, and every algebraic unknown held
- * to its largest term (ewt_rows); trapped again, the growth of each step
- * limited to SIM_TRAP_GROWTH. A run never trapped is not touched. */
+ * again from the last row with the remedy, kept for the rest of the run:
+ * the unknowns whose rows read the states' rates out of the error test
+ * (rate_readers), which cannot hold them, and every algebraic unknown held
+ * to its largest term (ewt_rows). A run never trapped is not touched. */
 #define SIM_TRAP_STEPS 500
-#define SIM_TRAP_GROWTH 1.2
 
 /* The mask of the algebraic unknowns whose rows read a state's rate
  * (dF_i/dy'_j != 0: J with cj = 1 against cj = 0, dense, at the point
@@ -1107,7 +1105,7 @@ static N_Vector rate_readers(simrun *R) {
  * the error test failed at half of them or more (IDA's counters since its
  * last ReInit on top of R->st) and a remedy is left. */
 static int trapped_now(simrun *R) {
-  if (!R->trap_watch || R->p->kind != BG_SIM_IDA || R->trapped == 2 || !R->nalg || R->exact_rows || R->starting)
+  if (!R->trap_watch || R->p->kind != BG_SIM_IDA || R->trapped || !R->row_ewt || R->exact_rows || R->starting)
     return 0;
   long ns = 0, ne = 0;
   if (IDAGetNumSteps(R->mem, &ns) < 0 || IDAGetNumErrTestFails(R->mem, &ne) < 0) return 0;
@@ -1115,35 +1113,34 @@ static int trapped_now(simrun *R) {
   return steps >= SIM_TRAP_STEPS && 2 * fails >= steps;
 }
 
-/* f: the interval's flag (a trapped interval ends where ewt_rows stopped
- * it, at IDA's limit of steps, or at its row); returns it, or the flag of
- * the interval run again: with the next remedy while one is left and the
- * run is trapped again. Watched (trap_watch) only here: a restart at an
- * input's breakpoint or a row's redo is never stopped. */
+/* Runs the interval to tout, watched (trap_watch: ewt_rows may stop it;
+ * a restart at an input's breakpoint or a row's redo never is). Trapped (it
+ * ends where ewt_rows stopped it, at IDA's limit of steps, or at its row),
+ * it is run again with the remedy, once a run; with none to take (no
+ * unknown reads a rate, or more than 1 000 unknowns) the run goes on as it
+ * would have. Returns the solver flag. */
 static int untrap(simrun *R, double tout, double tstop) {
   R->trap_watch = 1;
-  int f = run_to_events(R, tout);
-  for (;;) {
-    int hit = R->trap_hit;
-    R->trap_hit = 0;
-    /* (stopped by ewt_rows: IDASolve's flag, or IDACalcIC's at an event) */
-    if ((f < 0 && f != IDA_TOO_MUCH_WORK && !hit) || R->tcur <= R->tlast || !trapped_now(R)) break;
-    R->sunmsg[0] = 0; /* (the stop's words) */
+  int f = run_to_events(R, tout), hit = R->trap_hit;
+  R->trap_hit = 0;
+  /* (stopped by ewt_rows: IDASolve's flag, or IDACalcIC's at an event) */
+  if ((f >= 0 || f == IDA_TOO_MUCH_WORK || hit) && R->tcur > R->tlast && trapped_now(R)) {
+    N_Vector mask = rate_readers(R);
+    if (mask && (IDASetId(R->mem, mask) < 0 || IDASetSuppressAlg(R->mem, SUNTRUE) < 0))
+      IDASetId(R->mem, R->id), N_VDestroy(mask), mask = NULL;
+    R->trapped = 1;
     long st[5];
     stats_now(R, st);
-    long steps = st[0] - R->st_row[0], fails = st[3] - R->st_row[3];
-    N_Vector mask = R->trapped == 0 && R->row_ewt ? rate_readers(R) : NULL;
-    if (mask && (IDASetId(R->mem, mask) < 0 || IDASetSuppressAlg(R->mem, SUNTRUE) < 0)) N_VDestroy(mask), mask = NULL;
-    R->trapped = mask ? 1 : 2;
-    if (mask) R->mask = mask, R->terms_always = 1;
-    else if ((f = IDASetEtaMax(R->mem, SIM_TRAP_GROWTH)) < 0) break;
-    if (R->p->verbose)
+    if (mask && R->p->verbose)
       bg_logf(R->p->log, BG_LOG_PROGRESS, "simulate: from t = %.6g to %.6g the error test failed at %ld of %ld steps "
-              "(the step could not grow); again with %s", R->tlast, tout, fails, steps,
-              mask ? "the unknowns computed from the states' rates out of the error test"
-                   : "each step at most 1.2 times the last");
-    stats_now(R, R->st_row); /* the interval run again counts from here */
-    f = redo_interval(R, tout, tstop, 0);
+              "(the step could not grow); again with the unknowns computed from the states' rates out of the "
+              "error test", R->tlast, tout, st[3] - R->st_row[3], st[0] - R->st_row[0]);
+    if (mask) R->mask = mask, R->terms_always = 1;
+    if (mask || hit) {
+      R->sunmsg[0] = 0; /* (the stop's words) */
+      stats_now(R, R->st_row); /* the interval run again counts from here */
+      f = redo_interval(R, tout, tstop, 0);
+    }
   }
   R->trap_watch = 0;
   return f;

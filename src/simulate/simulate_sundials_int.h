@@ -57,7 +57,7 @@
   X(IDA, IDAGetNumNonlinSolvIters) X(IDA, IDAGetNumResEvals) X(IDA, IDAGetNumSteps)            \
   X(IDA, IDAGetReturnFlagName) X(IDA, IDAGetRootInfo) X(IDA, IDAInit) X(IDA, IDAReInit)        \
   X(IDA, IDARootInit) X(IDA, IDASVtolerances) X(IDA, IDAWFtolerances) X(IDA, IDASetId)         \
-  X(IDA, IDASetJacFn) X(IDA, IDASetEtaMax)                                                     \
+  X(IDA, IDASetJacFn)                                                                          \
   X(IDA, IDASetLinearSolver) X(IDA, IDASetMaxNumSteps) X(IDA, IDASetMaxStep)                   \
   X(IDA, IDASetStopTime) X(IDA, IDASetSuppressAlg) X(IDA, IDASetUserData) X(IDA, IDASolve)     \
   X(NVECSERIAL, N_VConst) X(NVECSERIAL, N_VDestroy) X(NVECSERIAL, N_VGetArrayPointer)          \
@@ -135,7 +135,6 @@ const bg_sundials_table *bg_sundials(void);
 #define IDAWFtolerances(...) (bg_sundials()->IDAWFtolerances(__VA_ARGS__))
 #define IDASetId(...) (bg_sundials()->IDASetId(__VA_ARGS__))
 #define IDASetJacFn(...) (bg_sundials()->IDASetJacFn(__VA_ARGS__))
-#define IDASetEtaMax(...) (bg_sundials()->IDASetEtaMax(__VA_ARGS__))
 #define IDASetLinearSolver(...) (bg_sundials()->IDASetLinearSolver(__VA_ARGS__))
 #define IDASetMaxNumSteps(...) (bg_sundials()->IDASetMaxNumSteps(__VA_ARGS__))
 #define IDASetMaxStep(...) (bg_sundials()->IDASetMaxStep(__VA_ARGS__))
