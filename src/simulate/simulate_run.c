@@ -1171,7 +1171,11 @@ static int run_segment(simrun *R, bg_simresult *r, int *k, double tb, int last) 
   }
   if (last) return 0;
   if (R->tcur < tstop && (f = run_to_events(R, tstop)) < 0) { fail(R, r, f, ""); return -1; }
-  double tnext = *k < p->nrows && p->times[*k] > tb ? p->times[*k] : tb + 1e-3 * span;
+  /* IDACalcIC's look-ahead: the next row, unless it is the breakpoint itself
+   * but for rounding (rows at multiples of dt: 0.15000000000000002 after an
+   * input's step at 0.15; IDA refuses a tout1 that close, "too close to t0",
+   * and the run stopped there: property seeds 1423, 1731, 6951) */
+  double tnext = *k < p->nrows && p->times[*k] > tb + 1e-9 * span ? p->times[*k] : tb + 1e-3 * span;
   f = run_restart(R, tb, tnext);
   if (f < 0) { fail(R, r, f, " (restarting after an input discontinuity)"); return -1; }
   keep_last(R);
