@@ -18,7 +18,7 @@ model=$root/tests/property/found/seed1731_breakpoint_row.bg
 sed 's/dt = 0.025/dt = 0.05/' "$model" >"$tmp/coarse.bg"
 sed 's/dt = 0.025/dt = 0.02/' "$model" >"$tmp/ref.bg"
 "$BGDRAW" "$model" --simulate -o "$tmp/run.csv" 2>"$tmp/run.err"
-check "rows every 0.025: exit 0 ($(tail -1 "$tmp/run.err" | cut -c1-80))" $?
+check "rows every 0.025: exit 0" $?
 "$BGDRAW" "$tmp/coarse.bg" --simulate -o "$tmp/coarse.csv" 2>/dev/null
 check "rows every 0.05: exit 0" $?
 "$BGDRAW" "$tmp/ref.bg" --simulate -o "$tmp/ref.csv" 2>/dev/null
