@@ -175,13 +175,17 @@ int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const dou
     r->group = -1;
     return bg_route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
   }
+  bg_route_keep(r, pts, n);
+  return n;
+}
+
+void bg_route_keep(bg_router *r, const bg_vec *pts, int n) {
   if (r->nroute == r->caproute) {
     r->caproute = 2 * r->caproute + 16;
     r->route = bg_xrealloc(r->route, (size_t)r->caproute * sizeof *r->route);
   }
   r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group};
   for (int i = 0; i + 1 < n; i++) bg_near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group);
-  return n;
 }
 
 /* Routes a signal to node `to` from node from_node or, when that is < 0,

@@ -90,8 +90,10 @@ int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap)
   for (int i = first < 0 ? 0 : first; i + 1 < n && n + 4 <= cap; i++) {
     bg_vec u4[4];
     if (!detour_segment(r, pts, i, u4)) continue;
-    /* the index: the crossing segment cut short at the U, the rest added */
-    for (int s = rt->seg0; s < rt->seg1; s++)
+    /* the index: the crossing segment cut short at the U, the rest added;
+     * that segment is the route's own or, for a second U on one segment,
+     * the rest the first U added (from skip2 on) */
+    for (int s = rt->seg0; s < r->ix.nseg; s = s + 1 == rt->seg1 ? r->skip2 : s + 1)
       if (bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9) {
         r->ix.sb[s] = u4[0];
         break;

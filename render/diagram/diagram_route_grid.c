@@ -34,15 +34,21 @@ static int cand_cmp(const void *a, const void *b) {
 
 /* Lines from sorted candidates: those nearer than `gap` to a kept one
  * dropped (a port's line is always kept), the gap grown until at most
- * MAXLINES remain (*gap_used). */
+ * MAXLINES remain (*gap_used). The ports' and the group's lines are at most
+ * 2 * 20 + GROUP_LINES = 64 a way today, so keeping them whole always
+ * ends; should more ever come, once the gap spans every candidate (no
+ * larger gap changes anything) they are merged like the others, the gap
+ * starting again, so the loop ends for any input (the result for every
+ * input that ended before is unchanged). */
 static int merge_lines(const cand *c, int n, double *out, unsigned char *oprio, double *gap_used) {
-  int m = 0;
+  double span = n ? c[n - 1].v - c[0].v : 0;
+  int whole = 1; /* ports' lines kept whole */
   for (double gap = 1.5;; gap *= 1.6) {
-    m = 0;
+    int m = 0;
     for (int i = 0; i < n; i++) {
       if (m && c[i].v - out[m - 1] < gap) {
         if (c[i].prio && !oprio[m - 1]) out[m - 1] = c[i].v, oprio[m - 1] = 1; /* the port's line wins */
-        else if (c[i].prio && c[i].v - out[m - 1] >= 0.01) out[m] = c[i].v, oprio[m++] = 1;
+        else if (whole && c[i].prio && c[i].v - out[m - 1] >= 0.01) out[m] = c[i].v, oprio[m++] = 1;
         continue;
       }
       out[m] = c[i].v, oprio[m++] = (unsigned char)c[i].prio;
@@ -51,6 +57,7 @@ static int merge_lines(const cand *c, int n, double *out, unsigned char *oprio, 
       *gap_used = gap;
       return m;
     }
+    if (whole && gap > span) whole = 0, gap = 1.5 / 1.6; /* more ports' lines than MAXLINES */
   }
 }
 
@@ -58,8 +65,8 @@ static int merge_lines(const cand *c, int n, double *out, unsigned char *oprio, 
  * lines, then again with the channels' middles between neighbouring lines
  * added. The candidates are sorted once; the middles come sorted and are
  * merged in. Returns the number of lines, *gap_used the final gap. */
-static int axis_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio,
-                      double *gap_used) {
+int bg_route_axis_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio,
+                        double *gap_used) {
   cand *c = bg_xcalloc((size_t)n + 1, sizeof *c), *all = bg_xcalloc((size_t)n + MAXLINES + 1, sizeof *all);
   for (int i = 0; i < n; i++) c[i] = (cand){v[i], pr[i]};
   qsort(c, (size_t)n, sizeof *c, cand_cmp);
@@ -127,8 +134,8 @@ void bg_route_make_lines(bg_router *r) {
     r->prio_x = bg_xrealloc(r->prio_x, (size_t)r->cap_lines), r->prio_y = bg_xrealloc(r->prio_y, (size_t)r->cap_lines);
   }
   double gx = 0, gy = 0;
-  r->nxl = axis_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x, &gx);
-  r->nyl = axis_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y, &gy);
+  r->nxl = bg_route_axis_lines(r->cx, r->cpx, r->ncx, r->X, r->prio_x, &gx);
+  r->nyl = bg_route_axis_lines(r->cy, r->cpy, r->ncy, r->Y, r->prio_y, &gy);
   r->gap = fmax(gx, gy);
 }
 

@@ -162,6 +162,12 @@ void bg_route_grid_costs(bg_router *r);
 void bg_route_add_cand(bg_router *r, double x, double y, int prio);
 /* The index of the line of the sorted a[0..n-1] nearest v. */
 int bg_route_nearest_line(const double *a, int n, double v);
+/* One axis's lines from n candidates v (pr: a port's, kept whole while at
+ * most MAXLINES = 72 lines remain), merged and thinned to at most 72 with
+ * the channels' middles added, sorted, into out (room for n + 72; oprio:
+ * which are ports'); *gap_used the merging gap. Ends for any input. */
+int bg_route_axis_lines(const double *v, const unsigned char *pr, int n, double *out, unsigned char *oprio,
+                        double *gap_used);
 /* The lanes beside every node box in window [wx0,wx1]×[wy0,wy1] as candidate lines. */
 void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double wy1);
 /* The grid's lines r->X, r->Y from the candidates (r->gap: the gap used). */
@@ -195,5 +201,9 @@ int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at);
  * diagram_route.c), remembered for later routes; returns its points. */
 int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
                    bg_vec *pts, int cap);
+/* Remembers route pts[0..n-1] (from r->from_node to r->to_node, of
+ * r->group, or bond r->bond's) in the index, so later routes keep off it,
+ * and among the routes bg_route_detour takes. */
+void bg_route_keep(bg_router *r, const bg_vec *pts, int n);
 
 #endif

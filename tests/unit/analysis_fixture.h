@@ -38,7 +38,7 @@ __attribute__((unused)) static void fx_init_analysis(bg_analysis *a, const bg_mo
 
 /* method < 0: the model's own; edit: optional (from, to) text replacement in
  * the source, for variants */
-static int fx_load(fx *f, const char *name, int method, const char *set_name, double set_value,
+__attribute__((unused)) static int fx_load(fx *f, const char *name, int method, const char *set_name, double set_value,
                    const char *from, const char *to) {
   memset(f, 0, sizeof *f);
   bg_t_model mm = {name, NULL, NULL, from, to, method, set_name, set_value};

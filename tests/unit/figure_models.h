@@ -30,7 +30,7 @@ static int fm_load(fx *f, const char *name, const char *text) {
 
 /* A source, then n elements, each on its own junction (1, 0, 1, ...): R, I,
  * C in turn. */
-static void fm_chain(bg_strbuf *b, int n) {
+__attribute__((unused)) static void fm_chain(bg_strbuf *b, int n) {
   static const char *kind[] = {"R r", "I m", "C c"};
   bg_sb_printf(b, "model chain%d\nSe U = 1\n", n);
   for (int i = 0; i < n; i++) bg_sb_printf(b, "%d j%d\n%s%d = 1\n", i % 2 ? 0 : 1, i, kind[i % 3], i);
@@ -107,7 +107,7 @@ static void fm_tree(bg_strbuf *b, int n, unsigned seed) {
  * 1-junction between neighbours, every third reaction across the ring),
  * each reaction's rate modulated by the concentration of another species:
  * as many modulating signals as reactions. */
-static void fm_reactions(bg_strbuf *b, int n) {
+__attribute__((unused)) static void fm_reactions(bg_strbuf *b, int n) {
   bg_sb_printf(b, "model reactions%d\nSf feed = 1\n", n);
   for (int i = 0; i < n; i++) bg_sb_printf(b, "0 s%d\nC c%d = 1\n", i, i);
   int nr = n + n / 3;
@@ -141,7 +141,7 @@ __attribute__((unused)) static void fm_reactions_bench(bg_strbuf *b, int n) {
  * sections whose resistors are each modulated by the voltage two sections
  * on (a C's effort) and, every third section, by the source's flow (a bond
  * variable): signals that run along the ladder against the power. */
-static void fm_modladder(bg_strbuf *b, int k) {
+__attribute__((unused)) static void fm_modladder(bg_strbuf *b, int k) {
   bg_sb_printf(b, "model modladder%d\nSe U = 1\nR load = 10\n", k);
   for (int i = 0; i < k; i++) {
     bg_sb_printf(b, "1 s%d\n0 n%d\nC C%d = 1\n", i, i, i);
@@ -194,7 +194,7 @@ static void fm_stages(bg_strbuf *b, int n) {
  * resistance, then per section a shunt branch (a 1-junction with a C and
  * its series resistance) on a 0-junction and a series inductor on a
  * 1-junction, a last shunt and a load. */
-static void fm_pifilter(bg_strbuf *b, int n) {
+__attribute__((unused)) static void fm_pifilter(bg_strbuf *b, int n) {
   bg_sb_printf(b, "model pifilter%d\nSe U = 1\n1 src\nR Rs = 1\nR load = 10\n", n);
   for (int i = 0; i <= n; i++) {
     bg_sb_printf(b, "0 p%d\n1 h%d\nC Cp%d = 1\nR Re%d = 0.1\n", i, i, i, i);

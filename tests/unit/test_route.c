@@ -1,0 +1,123 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* The signal router's parts (render/diagram/diagram_route_*.c), white-box:
+ * the grid's lines are thinned to at most 72 a way for any candidates,
+ * however many of them are ports' lines kept whole (before, more than 72
+ * distinct port lines in one window looped for ever); and the detour pass
+ * keeps its index equal to what it draws when two U's fall on one segment
+ * (before, the first U's remainder stayed whole in the index, so later
+ * detours paid for a line that is not drawn). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "analysis_fixture.h"
+#include "figure_models.h"
+#include "diagram/diagram_int.h"
+#include "diagram/diagram_route_int.h"
+
+enum { MAXL = 72 };
+
+/* Sorted, at most 72, and every line within the candidates' range. */
+static int lines_sane(const double *out, int m, double lo, double hi) {
+  int ok = m >= 1 && m <= MAXL;
+  for (int i = 0; i < m; i++) ok &= out[i] >= lo - 1e-9 && out[i] <= hi + 1e-9 && (i == 0 || out[i] > out[i - 1]);
+  return ok;
+}
+
+static void test_axis_lines_bounded(void) {
+  enum { N = 400 };
+  double v[N], out[N + MAXL], gap = 0;
+  unsigned char pr[N], op[N + MAXL];
+  /* 64 ports' lines (today's most: 20 ports each end, 24 group lines)
+   * among 300 lanes: every port's line kept exactly */
+  for (int i = 0; i < 300; i++) v[i] = (i * 7919 % 300) * 0.37, pr[i] = 0;
+  for (int i = 0; i < 64; i++) v[300 + i] = 3.3 + 1.5 * i, pr[300 + i] = 1;
+  int m = bg_route_axis_lines(v, pr, 364, out, op, &gap);
+  OK(lines_sane(out, m, 0, 299 * 0.37));
+  int kept = 0;
+  for (int i = 0; i < 64; i++)
+    for (int j = 0; j < m; j++) kept += out[j] == v[300 + i] && op[j];
+  INT_EQ(kept, 64);
+  /* 100, then 400 ports' lines 1 pt apart, and 400 at one place but for
+   * 0.02 pt: more than the grid holds, thinned all the same */
+  for (int i = 0; i < N; i++) v[i] = i, pr[i] = 1;
+  m = bg_route_axis_lines(v, pr, 100, out, op, &gap);
+  OK(lines_sane(out, m, 0, 99));
+  m = bg_route_axis_lines(v, pr, N, out, op, &gap);
+  OK(lines_sane(out, m, 0, N - 1));
+  OK(gap > 1);
+  for (int i = 0; i < N; i++) v[i] = 10 + 0.02 * (i % 200), pr[i] = 1;
+  m = bg_route_axis_lines(v, pr, N, out, op, &gap);
+  OK(lines_sane(out, m, 10, 10 + 0.02 * 199));
+  /* ports' lines and lanes mixed, the ports' many: a port's line wins
+   * where they merge, so every line left is a port's */
+  for (int i = 0; i < N; i++) v[i] = (i * 37 % N) * 0.5, pr[i] = i % 3 != 0;
+  m = bg_route_axis_lines(v, pr, N, out, op, &gap);
+  OK(lines_sane(out, m, 0, (N - 1) * 0.5));
+  int ports = 0;
+  for (int j = 0; j < m; j++) ports += op[j];
+  OK(ports >= m - 1); /* the channels' middles merge into ports' lines too */
+  /* no candidate: no line, no hang */
+  INT_EQ(bg_route_axis_lines(v, pr, 0, out, op, &gap), 0);
+}
+
+/* Does the index hold segment a-b of group g (either way)? */
+static int indexed(const bg_router *r, int g, bg_vec a, bg_vec b) {
+  for (int s = 0; s < r->ix.nseg; s++) {
+    if (r->ix.sgrp[s] != g) continue;
+    bg_vec p = r->ix.sa[s], q = r->ix.sb[s];
+    if ((bg_vlen(bg_vsub(p, a)) < 1e-6 && bg_vlen(bg_vsub(q, b)) < 1e-6) ||
+        (bg_vlen(bg_vsub(p, b)) < 1e-6 && bg_vlen(bg_vsub(q, a)) < 1e-6))
+      return 1;
+  }
+  return 0;
+}
+
+/* A straight route across two one-ports' bonds of an RC ladder (the R's
+ * and C's above the junction row) goes round both; the index then holds
+ * exactly the drawn segments of the route's group, none else. */
+static void test_two_detours_on_one_segment(void) {
+  bg_strbuf src = {0};
+  fm_ladder(&src, 4);
+  fx f;
+  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
+  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+  OK(d != NULL);
+  const bg_diagram_layout *L = d->L;
+  int c0 = bg_model_find_elem(f.m, "C0"), r1 = bg_model_find_elem(f.m, "R1");
+  int n0 = bg_model_find_elem(f.m, "n0"), s2 = bg_model_find_elem(f.m, "s2");
+  OK(c0 >= 0 && r1 >= 0 && n0 >= 0 && s2 >= 0);
+  /* the layout this test is written for: C0 and R1 above their junctions */
+  OK(L->ny[c0] < L->ny[n0] - 20 && fabs(L->ny[r1] - L->ny[c0]) < 1 && L->nx[r1] > L->nx[c0] + 60);
+  double y = (L->ny[c0] + L->nh[c0] / 2 + L->ny[n0] - L->nh[n0] / 2) / 2; /* between the boxes */
+  bg_vec pts[16] = {bg_v(L->nx[c0] - 30, y), bg_v(L->nx[r1] + 30, y)};
+  bg_router *r = bg_router_new(L, f.m->nbond, NULL);
+  const int g = 5;
+  r->from_node = n0, r->to_node = s2, r->group = g, r->bond = -1;
+  bg_route_keep(r, pts, 2);
+  int n = bg_route_detour(r, 0, 0, pts, 2, 16);
+  INT_EQ(n, 10); /* two U's of four points each */
+  if (n == 10) {
+    /* each U lies above its element's box */
+    OK(pts[2].y < L->ny[c0] - L->nh[c0] / 2 && pts[6].y < L->ny[r1] - L->nh[r1] / 2);
+    OK(pts[1].x < L->nx[c0] && pts[4].x > L->nx[c0] && pts[5].x < L->nx[r1] && pts[8].x > L->nx[r1]);
+    int drawn = 0, live = 0;
+    for (int i = 0; i + 1 < n; i++) drawn += indexed(r, g, pts[i], pts[i + 1]);
+    for (int s = 0; s < r->ix.nseg; s++) live += r->ix.sgrp[s] == g && bg_vlen(bg_vsub(r->ix.sa[s], r->ix.sb[s])) > 1e-9;
+    INT_EQ(drawn, 9);
+    INT_EQ(live, 9); /* not the first U's remainder whole besides */
+    OK(!indexed(r, g, pts[4], pts[9]));
+  }
+  bg_router_free(r);
+  bg_diagram_free(d);
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
+int main(void) {
+  test_axis_lines_bounded();
+  test_two_detours_on_one_segment();
+  return bg_t_done();
+}
