@@ -6,7 +6,8 @@
  * order the search reached its nodes, and the columns are cut into bands
  * that stack top to bottom, alternately left to right and right to left,
  * so a long chain folds into a roughly A4-landscape page with short bonds
- * at the folds. Bonds are straight lines. */
+ * at the folds. A one-port hangs above or below its junction, in its column
+ * (hang_leaves). Bonds are straight lines. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,30 +15,86 @@
 #include "base/arena.h"
 #include "diagram/layout.h"
 
+/* One-ports hang off their junction, as books draw them: a node with one
+ * edge (not a rank's first, such as a root), whose neighbour has more, is
+ * placed directly above that neighbour, in its column, with a vertical bond;
+ * a second such node below it. A third and further stay in the next column
+ * as other nodes (stacked on one side, a bond would run through the nearer
+ * one's box). host[v]: the node v hangs off, or -1; side[v]: -1 above, 1 below;
+ * above[u], below[u]: what hangs off u, or -1. */
+typedef struct hangers {
+  int *host, *side, *above, *below;
+} hangers;
+
+static void hang_leaves(const bg_layout_in *in, const int *depth, const int *order, hangers *hg) {
+  int n = in->nnode;
+  int *deg = bg_xcalloc((size_t)n + 1, sizeof *deg), *nb = bg_xcalloc((size_t)n + 1, sizeof *nb);
+  hg->host = bg_xcalloc((size_t)n + 1, sizeof *hg->host), hg->side = bg_xcalloc((size_t)n + 1, sizeof *hg->side);
+  hg->above = bg_xcalloc((size_t)n + 1, sizeof *hg->above), hg->below = bg_xcalloc((size_t)n + 1, sizeof *hg->below);
+  for (int e = 0; e < in->nedge; e++) {
+    int t = in->tail[e], h = in->head[e];
+    deg[t]++, deg[h]++, nb[t] = h, nb[h] = t;
+  }
+  for (int v = 0; v < n; v++) hg->host[v] = hg->above[v] = hg->below[v] = -1;
+  for (int k = 0; k < n; k++) { /* in search order: the same choice every run */
+    int v = order[k], u = nb[v];
+    if (deg[v] != 1 || depth[v] == 0 || u == v || deg[u] < 2) continue;
+    if (hg->above[u] < 0) hg->above[u] = v, hg->host[v] = u, hg->side[v] = -1;
+    else if (hg->below[u] < 0) hg->below[u] = v, hg->host[v] = u, hg->side[v] = 1;
+  }
+  free(deg), free(nb);
+}
+
+static void hangers_free(hangers *hg) { free(hg->host), free(hg->side), free(hg->above), free(hg->below); }
+
+/* A node's slot in its column: its own box and those hanging off it, each
+ * node_sep apart (the hangers' bonds as long as the gap between nodes). */
+static double slot_height(const bg_layout_in *in, const hangers *hg, int v) {
+  double h = in->h[v];
+  if (hg->above[v] >= 0) h += in->h[hg->above[v]] + in->node_sep;
+  if (hg->below[v] >= 0) h += in->h[hg->below[v]] + in->node_sep;
+  return h;
+}
+
 typedef struct rank_cols {
   int nrank;
-  int *adr, *node;  /* nodes of rank r: node[adr[r] .. adr[r+1]) in search order */
+  int *adr, *node;  /* nodes of rank r: node[adr[r] .. adr[r+1]) in search order (hung nodes not) */
   double *w, *h;    /* column width (widest node) and stacked height */
+  double *mid;      /* the middle of the column's nodes' centres, from the column's top */
 } rank_cols;
 
-static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, rank_cols *c) {
+static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
+                         rank_cols *c) {
   int n = in->nnode;
   c->nrank = 0;
-  for (int v = 0; v < n; v++) c->nrank = depth[v] + 1 > c->nrank ? depth[v] + 1 : c->nrank;
+  for (int v = 0; v < n; v++)
+    if (hg->host[v] < 0) c->nrank = depth[v] + 1 > c->nrank ? depth[v] + 1 : c->nrank;
   c->adr = bg_xcalloc((size_t)c->nrank + 2, sizeof *c->adr);
   c->node = bg_xcalloc((size_t)n + 1, sizeof *c->node);
   c->w = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->w);
   c->h = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->h);
-  for (int v = 0; v < n; v++) c->adr[depth[v] + 1]++;
+  c->mid = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->mid);
+  double *first = bg_xcalloc((size_t)c->nrank + 1, sizeof *first), *last = bg_xcalloc((size_t)c->nrank + 1, sizeof *last);
+  for (int v = 0; v < n; v++)
+    if (hg->host[v] < 0) c->adr[depth[v] + 1]++;
   for (int r = 0; r < c->nrank; r++) c->adr[r + 1] += c->adr[r];
   int *fill = bg_xcalloc((size_t)c->nrank + 1, sizeof *fill);
   for (int k = 0; k < n; k++) { /* search order keeps a node near its parent's row */
     int v = order[k], r = depth[v];
+    if (hg->host[v] >= 0) continue;
     c->node[c->adr[r] + fill[r]++] = v;
-    if (in->w[v] > c->w[r]) c->w[r] = in->w[v];
-    c->h[r] += in->h[v] + (fill[r] > 1 ? in->node_sep : 0);
+    for (int j = 0; j < 3; j++) {
+      int u = j == 0 ? v : j == 1 ? hg->above[v] : hg->below[v];
+      if (u >= 0 && in->w[u] > c->w[r]) c->w[r] = in->w[u];
+    }
+    if (fill[r] > 1) c->h[r] += in->node_sep;
+    double centre = c->h[r] + (hg->above[v] >= 0 ? in->h[hg->above[v]] + in->node_sep : 0) + in->h[v] / 2;
+    if (fill[r] == 1) first[r] = centre;
+    last[r] = centre;
+    c->h[r] += slot_height(in, hg, v);
   }
-  free(fill);
+  for (int r = 0; r < c->nrank; r++) c->mid[r] = (first[r] + last[r]) / 2;
+  free(fill), free(first), free(last);
 }
 
 /* Band width: the columns' total length folded so that the page is about
@@ -53,15 +110,18 @@ static double band_width(const bg_layout_in *in, const rank_cols *c) {
   return bw < widest ? widest : bw > len ? len : bw;
 }
 
-static void place(const bg_layout_in *in, const rank_cols *c, bg_layout *out) {
+/* Columns cut into bands; in a band the columns' middles (of their nodes'
+ * centres, hangers not counted) on one line, so a chain runs straight
+ * along it with its one-ports above and below. */
+static void place(const bg_layout_in *in, const hangers *hg, const rank_cols *c, bg_layout *out) {
   double bw = band_width(in, c), top = 0, maxw = 0;
   int band = 0;
   for (int r0 = 0; r0 < c->nrank; band++) {
-    double len = 0, bh = 0;
+    double len = 0, up = 0, down = 0;
     int r1 = r0;
     while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= bw)) {
       len += c->w[r1] + in->rank_sep;
-      bh = c->h[r1] > bh ? c->h[r1] : bh;
+      up = fmax(up, c->mid[r1]), down = fmax(down, c->h[r1] - c->mid[r1]);
       r1++;
     }
     len -= in->rank_sep;
@@ -69,16 +129,19 @@ static void place(const bg_layout_in *in, const rank_cols *c, bg_layout *out) {
     double x = 0;
     for (int r = r0; r < r1; r++) {
       double cx = band % 2 ? bw - x - c->w[r] / 2 : x + c->w[r] / 2;
-      double y = top + (bh - c->h[r]) / 2; /* columns centred in the band */
+      double y = top + up - c->mid[r];
       for (int k = c->adr[r]; k < c->adr[r + 1]; k++) {
-        int v = c->node[k];
+        int v = c->node[k], a = hg->above[v], b = hg->below[v];
+        if (a >= 0) out->x[a] = cx, out->y[a] = y + in->h[a] / 2, y += in->h[a] + in->node_sep;
         out->x[v] = cx;
         out->y[v] = y + in->h[v] / 2;
-        y += in->h[v] + in->node_sep;
+        y += in->h[v];
+        if (b >= 0) out->x[b] = cx, out->y[b] = y + in->node_sep + in->h[b] / 2, y += in->node_sep + in->h[b];
+        y += in->node_sep;
       }
       x += c->w[r] + in->rank_sep;
     }
-    top += bh + 2 * in->rank_sep;
+    top += up + down + 2 * in->rank_sep;
     r0 = r1;
   }
   out->width = band > 1 ? bw : maxw;
@@ -101,15 +164,18 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   int n = in->nnode;
   int *order = bg_xcalloc((size_t)n + 1, sizeof *order);
   int *depth = bg_layout_depths(in, order);
+  hangers hg;
+  hang_leaves(in, depth, order, &hg);
   rank_cols c;
-  rank_columns(in, depth, order, &c);
+  rank_columns(in, depth, order, &hg, &c);
   out->x = bg_xcalloc((size_t)n + 1, sizeof *out->x);
   out->y = bg_xcalloc((size_t)n + 1, sizeof *out->y);
   out->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spladr);
   out->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spln);
-  place(in, &c, out);
+  place(in, &hg, &c, out);
   fit_box(in, out);
-  free(c.adr), free(c.node), free(c.w), free(c.h);
+  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid);
+  hangers_free(&hg);
   free(order), free(depth);
   return 0;
 }

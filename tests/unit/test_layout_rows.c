@@ -2,7 +2,8 @@
 /* The "rows" layout (render/diagram/layout_rows.c): every node placed once,
  * no two boxes overlapping, everything inside the reported box, columns by
  * breadth-first rank, long chains folded into a page of sensible shape, the
- * same result every run; and the diagram of a model above 2000 nodes is laid
+ * same result every run, one-ports hung above their junctions, the junctions
+ * of a band on one line; and the diagram of a model above 2000 nodes is laid
  * out with rows unless another engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
@@ -61,10 +62,21 @@ static void test_chain(void) {
   STR_EQ(l.engine, "rows");
   INT_EQ(overlapping(&in, &l), 0);
   INT_EQ(outside(&in, &l), 0);
-  /* a one-port shares the column of its junction's successor (same rank) */
-  int depth_ok = 1;
-  for (int v = 1; v + 1 < N; v += 2) depth_ok &= fabs(l.x[v] - l.x[v + 1]) < 1e-9;
-  OK(depth_ok);
+  /* a one-port hangs straight above its junction (the node before it), a
+   * node's gap away, as books draw it: its bond vertical */
+  int hung = 1;
+  for (int v = 1; v < N; v += 2)
+    hung &= fabs(l.x[v] - l.x[v - 1]) < 1e-9 &&
+            fabs(l.y[v - 1] - l.y[v] - (h[v] + h[v - 1]) / 2 - in.node_sep) < 1e-9;
+  OK(hung);
+  /* the junctions of a band on one line, whatever the nodes' sizes: the
+   * next junction lies on the same line but at the folds, where it lies
+   * lower (the next band) */
+  int folds = 0, lower = 1;
+  for (int v = 0; v + 2 < N; v += 2)
+    if (fabs(l.y[v + 2] - l.y[v]) > 1e-9) folds++, lower &= l.y[v + 2] > l.y[v];
+  OK(lower);
+  OK(folds >= 2 && folds <= N / 16); /* at least 8 junctions a band (13 bands of about 15) */
   /* 200 ranks folded: neither one row nor one column */
   OK(l.width > 0.5 * l.height && l.width < 3 * l.height);
   int spl = 0;
