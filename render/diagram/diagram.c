@@ -154,6 +154,30 @@ static void first_sources(const bg_diagram_layout *d, const int *tail, const int
   free(up), free(has);
 }
 
+/* The modulating signals as pairs of layout nodes (rows hangs a one-port on
+ * the side facing them): from the element, the user state's node, or a
+ * bond variable's bond (its head's node), to the modulated element.
+ * Returns the count; *a and *b are allocated. */
+static int signal_links(const bg_diagram_layout *d, int **a, int **b) {
+  const bg_model *m = d->m;
+  int n = 0;
+  *a = bg_xcalloc((size_t)m->nsignal + 1, sizeof **a), *b = bg_xcalloc((size_t)m->nsignal + 1, sizeof **b);
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->node_of[m->signal_to[i]];
+    if (from >= 0) from = d->node_of[from];
+    else if (s >= 0) from = d->state_node[s];
+    else {
+      const char *var = m->signal_var[i];
+      char *end = NULL;
+      long num = (var[0] == 'e' || var[0] == 'f') && var[1] ? strtol(var + 1, &end, 10) : -1;
+      int bond = num >= 0 && !*end ? bg_model_find_bond(m, (int)num) : -1;
+      from = bond >= 0 ? d->node_of[m->bond_head[bond]] : -1;
+    }
+    if (from >= 0 && from != to) (*a)[n] = from, (*b)[n++] = to;
+  }
+  return n;
+}
+
 static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int *tail, *head, ne = layout_edges(d, &tail, &head);
@@ -191,7 +215,9 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   }
   bg_layout_in in = {d->nnode, gw, gh, pinned, px, py, ne, tail, head,
                      engine, rd, lst->node_sep, lst->rank_sep,
-                     d->st.splines, root, weight, 0, NULL, NULL, NULL};
+                     d->st.splines, root, weight, 0, NULL, NULL, NULL, 0, NULL, NULL};
+  int *link_a = NULL, *link_b = NULL;
+  if (!strcmp(engine, "rows")) in.nlink = signal_links(d, &link_a, &link_b), in.link_a = link_a, in.link_b = link_b;
   /* submodel instances: one frame (cluster) each, around its elements */
   int *cluster = NULL;
   double *label_h = NULL;
@@ -213,7 +239,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     bg_diag_error(dg, (bg_srcloc){0}, "--collapse cannot draw a model with multiport fields yet; "
                   "draw it without --collapse");
     free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
-    free(cluster), free(label_h);
+    free(cluster), free(label_h), free(link_a), free(link_b);
     if (grid) free(gw), free(gh);
     return -1;
   }
@@ -222,7 +248,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   bg_fields_expand(d, fields);
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
-  free(cluster), free(label_h);
+  free(cluster), free(label_h), free(link_a), free(link_b);
   if (grid) free(gw), free(gh);
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;

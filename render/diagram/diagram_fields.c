@@ -56,6 +56,7 @@ struct bg_fields_lay {
   double *w, *h, *px, *py;
   int *pinned, *tail, *head, *cluster;
   unsigned char *root;
+  int *link_a, *link_b; /* the links (rows), in the compacted numbering */
 };
 
 static int lay_node(const bg_diagram_layout *d, const bg_fields_lay *L, int n) { return L->vis[d->rep[n]]; }
@@ -85,6 +86,10 @@ bg_fields_lay *bg_fields_compact(const bg_diagram_layout *d, bg_layout_in *in) {
   L->tail = malloc(ne * sizeof(int)), L->head = malloc(ne * sizeof(int));
   for (int i = 0; i < in->nedge; i++)
     L->tail[i] = lay_node(d, L, in->tail[i]), L->head[i] = lay_node(d, L, in->head[i]);
+  L->link_a = malloc(((size_t)in->nlink + 1) * sizeof(int)), L->link_b = malloc(((size_t)in->nlink + 1) * sizeof(int));
+  for (int i = 0; i < in->nlink; i++)
+    L->link_a[i] = lay_node(d, L, in->link_a[i]), L->link_b[i] = lay_node(d, L, in->link_b[i]);
+  if (in->nlink) in->link_a = L->link_a, in->link_b = L->link_b;
   in->nnode = L->n, in->w = L->w, in->h = L->h, in->tail = L->tail, in->head = L->head;
   if (in->pinned) in->pinned = L->pinned, in->px = L->px, in->py = L->py;
   if (in->root) in->root = L->root;
@@ -109,6 +114,7 @@ void bg_fields_expand(bg_diagram_layout *d, bg_fields_lay *L) {
   } else free(x), free(y);
   free(L->vis), free(L->back), free(L->w), free(L->h), free(L->px), free(L->py);
   free(L->pinned), free(L->tail), free(L->head), free(L->cluster), free(L->root);
+  free(L->link_a), free(L->link_b);
   free(L);
 }
 

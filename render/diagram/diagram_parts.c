@@ -243,13 +243,19 @@ int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layou
     for (int v = 0; v < in->nnode; v++)
       if (c.lay_of[v] >= 0) root[c.lay_of[v]] = in->root[v];
   }
+  int *la = bg_xcalloc((size_t)in->nlink + 1, sizeof *la), *lb = bg_xcalloc((size_t)in->nlink + 1, sizeof *lb);
+  k.nlink = 0; /* the links between shown nodes */
+  for (int i = 0; i < in->nlink; i++)
+    if (c.lay_of[in->link_a[i]] >= 0 && c.lay_of[in->link_b[i]] >= 0)
+      la[k.nlink] = c.lay_of[in->link_a[i]], lb[k.nlink++] = c.lay_of[in->link_b[i]];
+  k.link_a = la, k.link_b = lb;
   k.nnode = c.n, k.nedge = c.ne, k.tail = t, k.head = h, k.weight = w, k.root = root;
   k.w = pick_d(in->w, &c, in->nnode), k.h = pick_d(in->h, &c, in->nnode);
   k.px = pick_d(in->px, &c, in->nnode), k.py = pick_d(in->py, &c, in->nnode);
   k.pinned = pick_i(in->pinned, &c, in->nnode), k.cluster = pick_i(in->cluster, &c, in->nnode);
   int rc = bg_layout_run(&k, out, err, errn);
   if (rc == 0) expand(in, &c, out);
-  free(t), free(h), free(w), free(root), free((void *)k.w), free((void *)k.h), free((void *)k.px);
+  free(la), free(lb), free(t), free(h), free(w), free(root), free((void *)k.w), free((void *)k.h), free((void *)k.px);
   free((void *)k.py), free((void *)k.pinned), free((void *)k.cluster), free(c.lay_of), free(c.edge_of);
   return rc;
 }

@@ -26,6 +26,10 @@ typedef struct bg_layout_in {
   const int *cluster;        /* nullable; per node: its innermost cluster, -1 none */
   const int *cluster_parent; /* per cluster: the enclosing one, -1 none */
   const double *cluster_label_h; /* per cluster: height kept for its label, points */
+  /* rows only: pairs of nodes joined by lines the layout does not place by
+   * (modulating signals); a hung one-port goes to the side facing them */
+  int nlink;
+  const int *link_a, *link_b;
 } bg_layout_in;
 
 typedef struct bg_layout {

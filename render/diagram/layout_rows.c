@@ -24,6 +24,7 @@
  * above[u], below[u]: what hangs off u, or -1. */
 typedef struct hangers {
   int *host, *side, *above, *below;
+  double *gap; /* per junction: between it and what hangs off it */
 } hangers;
 
 static void hang_leaves(const bg_layout_in *in, const int *depth, const int *order, hangers *hg) {
@@ -35,6 +36,13 @@ static void hang_leaves(const bg_layout_in *in, const int *depth, const int *ord
     int t = in->tail[e], h = in->head[e];
     deg[t]++, deg[h]++, nb[t] = h, nb[h] = t;
   }
+  /* A junction of more than three bonds draws its bonds' ends on a circle
+   * that grows, up to its box's size, when two bonds leave it at a small
+   * angle (diagram_geom.c, junction_radii), which the layout does not
+   * control here: the gap grows by that much, so a hung bond keeps at
+   * least node_sep of line. */
+  hg->gap = bg_xcalloc((size_t)n + 1, sizeof *hg->gap);
+  for (int v = 0; v < n; v++) hg->gap[v] = in->node_sep + (deg[v] > 3 ? fmax(in->w[v], in->h[v]) : 0);
   for (int v = 0; v < n; v++) hg->host[v] = hg->above[v] = hg->below[v] = -1;
   for (int k = 0; k < n; k++) { /* in search order: the same choice every run */
     int v = order[k], u = nb[v];
@@ -45,14 +53,48 @@ static void hang_leaves(const bg_layout_in *in, const int *depth, const int *ord
   free(deg), free(nb);
 }
 
-static void hangers_free(hangers *hg) { free(hg->host), free(hg->side), free(hg->above), free(hg->below); }
+/* Each one-port to the side facing most of the nodes it has links with
+ * (its signals): a partner lower than its junction by more than the
+ * junction's height counts for below, higher for above, a hung partner by
+ * its own junction's place (out: the layout with every one-port above, the
+ * first below). A junction's two one-ports swap when the lower one wants
+ * up more; a lone one-port goes below only when more of its partners lie
+ * below than above, so a chain's one-ports stay on one side unless their
+ * signals lead across a row (a fold), where crossing it is what the
+ * signal would otherwise pay. */
+static void face_links(const bg_layout_in *in, const bg_layout *out, hangers *hg) {
+  int n = in->nnode;
+  int *vote = bg_xcalloc((size_t)n + 1, sizeof *vote); /* below minus above */
+  for (int k = 0; k < in->nlink; k++)
+    for (int e = 0; e < 2; e++) {
+      int v = e ? in->link_b[k] : in->link_a[k], p = e ? in->link_a[k] : in->link_b[k];
+      if (v < 0 || p < 0 || v >= n || p >= n || hg->host[v] < 0) continue;
+      int u = hg->host[v], pu = hg->host[p] >= 0 ? hg->host[p] : p;
+      if (pu == u) continue;
+      double d = out->y[pu] - out->y[u];
+      vote[v] += d > in->h[u] ? 1 : d < -in->h[u] ? -1 : 0;
+    }
+  for (int u = 0; u < n; u++) {
+    int a = hg->above[u], b = hg->below[u];
+    if (a < 0) continue;
+    if (b < 0 ? vote[a] > 0 : vote[a] > vote[b]) {
+      hg->above[u] = b, hg->below[u] = a, hg->side[a] = 1;
+      if (b >= 0) hg->side[b] = -1;
+    }
+  }
+  free(vote);
+}
+
+static void hangers_free(hangers *hg) {
+  free(hg->host), free(hg->side), free(hg->above), free(hg->below), free(hg->gap);
+}
 
 /* A node's slot in its column: its own box and those hanging off it, each
- * node_sep apart (the hangers' bonds as long as the gap between nodes). */
+ * its gap apart (the hangers' bonds as long as the gap between nodes). */
 static double slot_height(const bg_layout_in *in, const hangers *hg, int v) {
   double h = in->h[v];
-  if (hg->above[v] >= 0) h += in->h[hg->above[v]] + in->node_sep;
-  if (hg->below[v] >= 0) h += in->h[hg->below[v]] + in->node_sep;
+  if (hg->above[v] >= 0) h += in->h[hg->above[v]] + hg->gap[v];
+  if (hg->below[v] >= 0) h += in->h[hg->below[v]] + hg->gap[v];
   return h;
 }
 
@@ -88,7 +130,7 @@ static void rank_columns(const bg_layout_in *in, const int *depth, const int *or
       if (u >= 0 && in->w[u] > c->w[r]) c->w[r] = in->w[u];
     }
     if (fill[r] > 1) c->h[r] += in->node_sep;
-    double centre = c->h[r] + (hg->above[v] >= 0 ? in->h[hg->above[v]] + in->node_sep : 0) + in->h[v] / 2;
+    double centre = c->h[r] + (hg->above[v] >= 0 ? in->h[hg->above[v]] + hg->gap[v] : 0) + in->h[v] / 2;
     if (fill[r] == 1) first[r] = centre;
     last[r] = centre;
     c->h[r] += slot_height(in, hg, v);
@@ -132,11 +174,11 @@ static void place(const bg_layout_in *in, const hangers *hg, const rank_cols *c,
       double y = top + up - c->mid[r];
       for (int k = c->adr[r]; k < c->adr[r + 1]; k++) {
         int v = c->node[k], a = hg->above[v], b = hg->below[v];
-        if (a >= 0) out->x[a] = cx, out->y[a] = y + in->h[a] / 2, y += in->h[a] + in->node_sep;
+        if (a >= 0) out->x[a] = cx, out->y[a] = y + in->h[a] / 2, y += in->h[a] + hg->gap[v];
         out->x[v] = cx;
         out->y[v] = y + in->h[v] / 2;
         y += in->h[v];
-        if (b >= 0) out->x[b] = cx, out->y[b] = y + in->node_sep + in->h[b] / 2, y += in->node_sep + in->h[b];
+        if (b >= 0) out->x[b] = cx, out->y[b] = y + hg->gap[v] + in->h[b] / 2, y += hg->gap[v] + in->h[b];
         y += in->node_sep;
       }
       x += c->w[r] + in->rank_sep;
@@ -173,6 +215,12 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   out->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spladr);
   out->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spln);
   place(in, &hg, &c, out);
+  if (in->nlink > 0) { /* again with the one-ports facing their signals (the bands stay) */
+    face_links(in, out, &hg);
+    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid);
+    rank_columns(in, depth, order, &hg, &c);
+    place(in, &hg, &c, out);
+  }
   fit_box(in, out);
   free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid);
   hangers_free(&hg);

@@ -440,21 +440,20 @@ static const struct {
   int fan_out; /* limit: signals on signals (modladder120's 136 were f1's 40 signals out of
                   six ports before a signal branched off another from its source;
                   bench_reactions300's 70 -> 84 since a routed bond keeps off other bonds'
-                  ends, its false T 29 -> 0; 84 -> 29 and modladder120's 9 -> 5 when rows
-                  hung one-ports on their junctions) */
+                  ends, its false T 29 -> 0; 84 -> 13 and modladder120's 9 -> 1 when rows
+                  hung one-ports on their junctions, on the side facing their signals) */
   int adjacent; /* limit: crossings of two lines out of one element (fc_adjacent; 22, 2, 7
                    before a route paid COST_CROSS_OWN to cross its own ends' bonds;
-                   bench_reactions300 5 -> 9 when rows hung one-ports on their junctions:
-                   a bond routed to a junction crosses the one-port's bond above it) */
+                   bench_reactions300 5 -> 4, modladder120 2 -> 1 with the one-ports hung) */
   int avoidable; /* limit: crossings a short U round a one-port avoids (fc_avoidable; 319,
                     0, 0 before the routes took them, bg_route_detour; bench_reactions300
-                    7 -> 11 with the one-ports hung) */
+                    7 -> 5 with the one-ports hung) */
   int slanted; /* limit: slanted bonds (836 and 241 of 1 126 and 481 in rows before it hung
                   one-ports straight above or below their junctions: now only bonds between
                   junctions of different rows slant) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 29, 9, 11, 470},
-    {{"modladder120", fm_modladder, 120}, "rows", 5, 1, 0, 0},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 13, 4, 5, 574},
+    {{"modladder120", fm_modladder, 120}, "rows", 1, 1, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 4, 0, 21},
 };
 

@@ -2,8 +2,8 @@
 /* The "rows" layout (render/diagram/layout_rows.c): every node placed once,
  * no two boxes overlapping, everything inside the reported box, columns by
  * breadth-first rank, long chains folded into a page of sensible shape, the
- * same result every run, one-ports hung above their junctions, the junctions
- * of a band on one line; and the diagram of a model above 2000 nodes is laid
+ * same result every run, one-ports hung above their junctions (below when
+ * their signals lead there), the junctions of a band on one line; and the diagram of a model above 2000 nodes is laid
  * out with rows unless another engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
@@ -88,6 +88,37 @@ static void test_chain(void) {
   bg_layout_free(&l2);
 }
 
+/* A one-port hangs on the side facing its signals (the layout's links): one
+ * at a band's last junction whose signal goes to a one-port in the next
+ * band hangs below its junction, the other stays above (its partner's
+ * junction lies higher), and one whose partner is on its own row stays above. */
+static void test_links(void) {
+  double w[N], h[N];
+  int tail[N], head[N];
+  unsigned char root[N];
+  bg_layout_in in;
+  chain_graph(&in, w, h, tail, head, root);
+  bg_layout l0, l;
+  char err[128];
+  INT_EQ(bg_layout_run(&in, &l0, err, sizeof err), 0);
+  int v = 0; /* the first fold: junction v ends a band, v + 2 starts the next */
+  while (v + 2 < N && fabs(l0.y[v + 2] - l0.y[v]) < 1e-9) v += 2;
+  OK(v + 6 < N && l0.y[v + 2] > l0.y[v]);
+  int la[2] = {v + 1, 1}, lb[2] = {v + 5, 3};
+  in.nlink = 2, in.link_a = la, in.link_b = lb;
+  INT_EQ(bg_layout_run(&in, &l, err, sizeof err), 0);
+  OK(l.y[v + 1] > l.y[v] && fabs(l.x[v + 1] - l.x[v]) < 1e-9); /* below, in its column */
+  OK(l.y[v + 5] < l.y[v + 4] && fabs(l.x[v + 5] - l.x[v + 4]) < 1e-9);
+  OK(l.y[1] < l.y[0] && l.y[3] < l.y[2]);
+  int others_above = 1;
+  for (int u = 1; u < N; u += 2) others_above &= u == v + 1 || l.y[u] < l.y[u - 1];
+  OK(others_above);
+  INT_EQ(overlapping(&in, &l), 0);
+  INT_EQ(outside(&in, &l), 0);
+  bg_layout_free(&l0);
+  bg_layout_free(&l);
+}
+
 /* A mass chain of about 2000 nodes lays out with rows by default, with dot
  * when asked, and with rows when the model asks for rows. */
 static char *mass_chain(int n) {
@@ -140,6 +171,7 @@ static void test_engine_choice(void) {
 
 int main(void) {
   test_chain();
+  test_links();
   test_engine_choice();
   return bg_t_done();
 }
