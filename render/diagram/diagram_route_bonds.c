@@ -7,7 +7,9 @@
  * rings' chords). Those bonds are routed like the signals, orthogonally
  * round the boxes: out of a free side's middle, so the first and last legs
  * run straight out of the centre as a bond's do, or, from a box whose four
- * sides are taken, out of a corner on a short diagonal. */
+ * sides are taken, out of a corner on a short diagonal. Where two bonds of
+ * one node then cross, a second pass routes a slanted one of them too
+ * (second_pass). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -166,7 +168,7 @@ static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsig
     if ((taken[n] >> dir & 1) || !bond_side_free(L, m, n, b, blocked, dir)) continue;
     out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, 0, 0, 0};
   }
-  for (int k = 0; !np && k < 4; k++) {
+  for (int k = 0, sides = np; !sides && k < 4; k++) { /* all four (the loop once stopped at the first) */
     double sx = k & 1 ? -1 : 1, sy = k & 2 ? -1 : 1;
     bg_vec q = bg_vadd(c, bg_v(sx * (hw + STUB), sy * (hh + STUB)));
     double base = COST_DIAG + bg_route_seg_cost(r, c, q, n) - bg_vlen(bg_vsub(q, c));
@@ -212,6 +214,170 @@ static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned cha
   return nc;
 }
 
+/* ---------------------------------------------------------------- the routes of a pass */
+/* Where every bond runs after a pass: its corners (the layout's for a bond
+ * not routed), as the layout holds them (lay.bendadr, bendn, bendx, bendy). */
+typedef struct bond_routes {
+  int *adr, *cnt, used;
+  double *bx, *by;
+} bond_routes;
+
+static void routes_free(bond_routes *p) { free(p->adr), free(p->cnt), free(p->bx), free(p->by); }
+
+/* Routes kept CLEAR pt off bond b, a diagonal the second pass drew
+ * straight: b's line, 6 pt short of either end, added to the router twice
+ * more, CLEAR pt either side, as a route of b's (group -2 - b), so passing
+ * nearer costs what crossing does (COST_CROSS_OWN for a route of one of
+ * b's nodes). The router prices a crossing only, and the route of a bond
+ * of b's node put its corner 1.0 pt beside such a diagonal (reactions60's
+ * bond 256 beside bond 284), where the two read as touching. */
+#define CLEAR 4.0
+static void keep_clear(bg_router *r, int b) {
+  bg_vec t = r->L->bg[b].tail, h = r->L->bg[b].head, d = bg_vsub(h, t);
+  double len = bg_vlen(d);
+  if (len <= 12) return;
+  bg_vec u = bg_vscale(d, 1 / len), n = bg_v(-u.y * CLEAR, u.x * CLEAR);
+  bg_vec a = bg_vadd(t, bg_vscale(u, 6)), z = bg_vsub(h, bg_vscale(u, 6));
+  for (int k = -1; k <= 1; k += 2)
+    bg_near_add_signal(&r->ix, bg_vadd(a, bg_vscale(n, k)), bg_vadd(z, bg_vscale(n, k)), -2 - b);
+}
+
+/* Routes the bonds marked in route[]: those marked 1 in the bonds' order,
+ * then those marked 2 (the second pass's: they keep off the others'
+ * routes), kept off the bonds marked in clear (nullable, keep_clear); the
+ * others keep the layout's corners. */
+static void route_pass(bg_diagram_layout *L, const unsigned char *route, const unsigned char *clear, bond_routes *out) {
+  const bg_model *m = L->m;
+  int nb = m->nbond, nroute = 0;
+  for (int b = 0; b < nb; b++) nroute += route[b] != 0;
+  bg_router *r = nroute ? bg_router_new(L, nb, route) : NULL;
+  for (int b = 0; r && clear && b < nb; b++)
+    if (clear[b]) keep_clear(r, b);
+  unsigned char *taken = bg_xcalloc((size_t)L->nnode + 1, 1);
+  const bg_layout *lay = &L->lay;
+  int nedge = lay->nedge > nb ? lay->nedge : nb, cap = lay->nbend + 64 * nroute;
+  int *padr = bg_xcalloc((size_t)nb + 1, sizeof *padr), *pcnt = bg_xcalloc((size_t)nb + 1, sizeof *pcnt), pused = 0;
+  double *px = bg_xcalloc((size_t)64 * nroute + 1, sizeof *px), *py = bg_xcalloc((size_t)64 * nroute + 1, sizeof *py);
+  for (int pass = 1; pass <= 2; pass++)
+    for (int b = 0; b < nb; b++)
+      if (route[b] == pass) {
+        padr[b] = pused;
+        pcnt[b] = route_bond(r, m, b, route, taken, px + pused, py + pused, 64);
+        pused += pcnt[b];
+      }
+  bg_router_free(r);
+  out->adr = bg_xcalloc((size_t)nedge + 1, sizeof *out->adr);
+  out->cnt = bg_xcalloc((size_t)nedge + 1, sizeof *out->cnt);
+  out->bx = bg_xcalloc((size_t)cap + 1, sizeof *out->bx), out->by = bg_xcalloc((size_t)cap + 1, sizeof *out->by);
+  int used = 0;
+  for (int b = 0; b < nb; b++) {
+    out->adr[b] = used;
+    if (route[b]) {
+      for (int i = 0; i < pcnt[b]; i++) out->bx[used + i] = px[padr[b] + i], out->by[used + i] = py[padr[b] + i];
+      out->cnt[b] = pcnt[b];
+    } else {
+      const bg_bond_geom *g = &L->bg[b];
+      for (int i = 0; i < g->bendn; i++)
+        out->bx[used + i] = lay->bendx[g->bendadr + i], out->by[used + i] = lay->bendy[g->bendadr + i];
+      out->cnt[b] = g->bendn;
+    }
+    used += out->cnt[b];
+  }
+  out->used = used;
+  free(padr), free(pcnt), free(px), free(py), free(taken);
+}
+
+/* ---------------------------------------------------------------- the second pass */
+/* Routes p put in the layout, its bonds' geometry computed again. */
+static void install(bg_diagram_layout *L, const bond_routes *p) {
+  bg_layout *lay = &L->lay;
+  lay->bendadr = p->adr, lay->bendn = p->cnt, lay->bendx = p->bx, lay->bendy = p->by, lay->nbend = p->used;
+  bg_geom_bonds(L);
+}
+
+/* Whether bond b is drawn differently in the layout than by corners p and ends t, h. */
+static int drawn_apart(const bg_diagram_layout *L, const bond_routes *p, const bg_vec *t, const bg_vec *h, int b) {
+  const bg_bond_geom *g = &L->bg[b];
+  if (g->bendn != p->cnt[b] || bg_vlen(bg_vsub(g->tail, t[b])) > 1e-6 || bg_vlen(bg_vsub(g->head, h[b])) > 1e-6)
+    return 1;
+  for (int i = 0; i < g->bendn; i++)
+    if (L->lay.bendx[g->bendadr + i] != p->bx[p->adr[b] + i] || L->lay.bendy[g->bendadr + i] != p->by[p->adr[b] + i])
+      return 1;
+  return 0;
+}
+
+/* The layout's own corners (orig) with the bonds marked BG_STRAIGHTEN drawn
+ * straight, put in the layout; a bond whose straight line would run
+ * through another node's label keeps its corners. */
+static void straighten(bg_diagram_layout *L, const bond_routes *orig, unsigned char *todo, int *cnt) {
+  int nb = L->m->nbond;
+  bond_routes o = *orig;
+  for (int b = 0; b < nb; b++) cnt[b] = todo[b] == BG_STRAIGHTEN || !orig->cnt ? 0 : orig->cnt[b];
+  o.cnt = cnt;
+  install(L, &o);
+  bg_router *chk = bg_router_new(L, nb, NULL);
+  int back = 0;
+  for (int b = 0; b < nb; b++)
+    if (todo[b] == BG_STRAIGHTEN && bond_blocked(chk, b))
+      todo[b] = BG_KEEP, cnt[b] = orig->cnt ? orig->cnt[b] : 0, back = 1;
+  bg_router_free(chk);
+  if (back) install(L, &o);
+}
+
+/* Issue 31, two bonds of one node crossing after the first pass (routes p,
+ * its routed bonds marked in blocked, the layout holding them). The first
+ * pass routes against the other bonds' lines as drawn before it, from a
+ * junction's end circle that a blocked bond's straight line at a small
+ * angle had grown (to 24 pt in modladder120): the route passed just beyond
+ * such a line's end, and once routed the circle shrank and the line
+ * reached into the route. Where one bond of such a pair is a slanted
+ * straight line, it is routed too, after the others, in a second pass from
+ * the layout's own corners (orig); where the other is a layout's elbow
+ * (the grid pass's diagonal beside its own elbow, reactions60), the elbow
+ * is drawn straight instead, so the diagonal changes hands
+ * (bg_route_adjacent_crossings). The second pass is kept when fewer bonds
+ * of one node cross and the bonds it draws differently cross no more
+ * bonds than before. Returns the routes kept, which the layout holds;
+ * *nmore: the bonds it routed or straightened besides p's. */
+static bond_routes second_pass(bg_diagram_layout *L, const unsigned char *blocked, bond_routes p,
+                               const bond_routes *orig, int *nmore) {
+  int nb = L->m->nbond, ntodo = 0;
+  unsigned char *todo = bg_xcalloc((size_t)nb + 1, 1);
+  int adj = bg_route_adjacent_crossings(L, blocked, todo);
+  for (int b = 0; b < nb; b++) ntodo += todo[b] != BG_KEEP;
+  *nmore = 0;
+  if (!ntodo) {
+    free(todo);
+    return p;
+  }
+  unsigned char *route = bg_xcalloc((size_t)nb + 1, 1), *changed = bg_xcalloc((size_t)nb + 1, 1);
+  bg_vec *t = bg_xcalloc((size_t)nb + 1, sizeof *t), *h = bg_xcalloc((size_t)nb + 1, sizeof *h);
+  int *cnt = bg_xcalloc((size_t)nb + 1, sizeof *cnt);
+  for (int b = 0; b < nb; b++) t[b] = L->bg[b].tail, h[b] = L->bg[b].head;
+  straighten(L, orig, todo, cnt);
+  for (int b = 0; b < nb; b++) route[b] = blocked[b] ? 1 : todo[b] == BG_ROUTE ? 2 : 0;
+  bond_routes q = {0};
+  for (int b = 0; b < nb; b++) changed[b] = todo[b] == BG_STRAIGHTEN;
+  route_pass(L, route, changed, &q);
+  install(L, &q);
+  int adj2 = bg_route_adjacent_crossings(L, route, NULL);
+  for (int b = 0; b < nb; b++) changed[b] = (unsigned char)drawn_apart(L, &p, t, h, b);
+  int cross2 = bg_route_crossings_of(L, changed);
+  install(L, &p);
+  int keep = adj2 < adj && cross2 <= bg_route_crossings_of(L, changed);
+  if (keep) {
+    install(L, &q);
+    for (int b = 0; b < nb; b++) *nmore += todo[b] != BG_KEEP;
+  }
+  free(todo), free(route), free(changed), free(t), free(h), free(cnt);
+  if (!keep) {
+    routes_free(&q);
+    return p;
+  }
+  if (p.adr != orig->adr) routes_free(&p);
+  return q;
+}
+
 int bg_route_blocked_bonds(bg_diagram_layout *L) {
   const bg_model *m = L->m;
   int nb = m->nbond, nblocked = 0;
@@ -228,31 +394,15 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   }
   free(mv);
   bg_router_free(all);
-  if (!nblocked) {
-    free(blocked);
-    return 0;
-  }
-  bg_router *r = bg_router_new(L, nb, blocked);
-  unsigned char *taken = bg_xcalloc((size_t)L->nnode + 1, 1);
   bg_layout *lay = &L->lay;
-  int nedge = lay->nedge > nb ? lay->nedge : nb, cap = lay->nbend + 64 * nblocked;
-  int *adr = bg_xcalloc((size_t)nedge + 1, sizeof *adr), *cnt = bg_xcalloc((size_t)nedge + 1, sizeof *cnt);
-  double *bx = bg_xcalloc((size_t)cap + 1, sizeof *bx), *by = bg_xcalloc((size_t)cap + 1, sizeof *by);
-  int used = 0;
-  for (int b = 0; b < nb; b++) {
-    adr[b] = used;
-    if (blocked[b]) {
-      cnt[b] = route_bond(r, m, b, blocked, taken, bx + used, by + used, 64);
-    } else {
-      const bg_bond_geom *g = &L->bg[b];
-      for (int i = 0; i < g->bendn; i++) bx[used + i] = lay->bendx[g->bendadr + i], by[used + i] = lay->bendy[g->bendadr + i];
-      cnt[b] = g->bendn;
-    }
-    used += cnt[b];
+  bond_routes orig = {lay->bendadr, lay->bendn, lay->nbend, lay->bendx, lay->bendy}, p = orig;
+  if (nblocked) {
+    route_pass(L, blocked, NULL, &p);
+    install(L, &p);
   }
-  bg_router_free(r);
-  free(lay->bendadr), free(lay->bendn), free(lay->bendx), free(lay->bendy);
-  lay->bendadr = adr, lay->bendn = cnt, lay->bendx = bx, lay->bendy = by, lay->nbend = used;
-  free(blocked), free(taken);
-  return nblocked;
+  int nlifted = 0;
+  p = second_pass(L, blocked, p, &orig, &nlifted);
+  free(blocked);
+  if (p.adr != orig.adr) routes_free(&orig);
+  return nblocked + nlifted;
 }

@@ -7,7 +7,9 @@
  * segment and the grid's edges cost), diagram_route_grid.c (the grid of
  * channel lines), diagram_route_search.c (the A* search over it),
  * diagram_route_branch.c (a route branching off its source's earlier ones),
- * diagram_route_detour.c (a U round a one-port instead of crossing its bond). */
+ * diagram_route_detour.c (a U round a one-port instead of crossing its bond),
+ * diagram_route_adjacent.c (crossings of one node's bonds, for the bond
+ * router's second pass). */
 #ifndef BG_DIAGRAM_ROUTE_INT_H
 #define BG_DIAGRAM_ROUTE_INT_H
 
@@ -196,6 +198,16 @@ int bg_route_group_runs_on(bg_router *r, bg_vec p, bg_vec q);
 int bg_route_group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec at);
 /* Where route pts[0..n-1] leaves them: the segment k, the point *at; -1: it is drawn whole. */
 int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at);
+
+/* Crossings of two bonds of one node (diagram_route_adjacent.c). */
+/* What the bond router's second pass does to a bond (todo[] below). */
+enum { BG_KEEP, BG_ROUTE, BG_STRAIGHTEN };
+/* The pairs of bonds of one node that cross as the layout draws them;
+ * todo (nullable): of each pair, a slanted straight bond not routed
+ * (route[] 0) marked BG_ROUTE, its partner with corners BG_STRAIGHTEN. */
+int bg_route_adjacent_crossings(const bg_diagram_layout *L, const unsigned char *route, unsigned char *todo);
+/* The pairs of crossing bonds as drawn of which one is marked in changed. */
+int bg_route_crossings_of(const bg_diagram_layout *L, const unsigned char *changed);
 
 /* The cheapest route between ports ps and pt whose boxes are a and b (see
  * diagram_route.c), remembered for later routes; returns its points. */

@@ -1,0 +1,88 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Crossings of two bonds of one node as the layout draws them (issue 31:
+ * never needed; the checker's fc_adjacent counts them in the scene), for
+ * the bond router's second pass (diagram_route_bonds.c): which pairs cross,
+ * which bond of a pair to route or draw straight, and how many bonds a set
+ * of changed bonds crosses. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "diagram/diagram_route_int.h"
+
+/* Whether segments a-b and c-d cross at a point inside both (not within
+ * 0.5 pt of an end). */
+static int segs_cross(bg_vec a, bg_vec b, bg_vec c, bg_vec d) {
+  bg_vec u = bg_vsub(b, a), v = bg_vsub(d, c), w = bg_vsub(c, a);
+  double lu = bg_vlen(u), lv = bg_vlen(v), den = u.x * v.y - u.y * v.x;
+  if (lu <= 0 || lv <= 0 || fabs(den) < 1e-9 * lu * lv) return 0;
+  double t = (w.x * v.y - w.y * v.x) / den, s = (w.x * u.y - w.y * u.x) / den;
+  return t * lu > 0.5 && (1 - t) * lu > 0.5 && s * lv > 0.5 && (1 - s) * lv > 0.5;
+}
+
+/* Whether bonds b and c cross as drawn (their lines from tail to head over
+ * the corners, the half arrow not counted; a Graphviz curve not looked at). */
+static int bonds_cross(const bg_diagram_layout *L, int b, int c) {
+  const bg_bond_geom *gb = &L->bg[b], *gc = &L->bg[c];
+  if (gb->spln || gc->spln || (L->bond_hidden && (L->bond_hidden[b] || L->bond_hidden[c]))) return 0;
+  for (int i = 0; i <= gb->bendn; i++)
+    for (int j = 0; j <= gc->bendn; j++)
+      if (segs_cross(bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i), bg_route_leg_end(L, c, j - 1),
+                     bg_route_leg_end(L, c, j)))
+        return 1;
+  return 0;
+}
+
+/* Whether bond b, drawn straight, runs off the axes (as the router's costs
+ * tell a slanted line: the smaller extent more than 9 % of the larger). */
+static int slanted(const bg_diagram_layout *L, int b) {
+  bg_vec d = bg_vsub(L->bg[b].head, L->bg[b].tail);
+  return fmin(fabs(d.x), fabs(d.y)) > 0.09 * fmax(fabs(d.x), fabs(d.y));
+}
+
+/* The crossings of two bonds of one node as the layout draws them (issue
+ * 31: never needed). todo (nullable): of each such pair, a bond not routed
+ * (route[] 0) drawn straight and slanted marked ROUTE, to be routed in the
+ * second pass, and the other, when the layout drew it with corners and did
+ * not route it, STRAIGHTEN: it takes the diagonal, the routed one its way
+ * out (the number of slanted bonds stays). A straight bond along an axis
+ * is a row of the layout, kept. */
+int bg_route_adjacent_crossings(const bg_diagram_layout *L, const unsigned char *route, unsigned char *todo) {
+  int nb = L->m->nbond, nn = L->nnode, n = 0;
+  int *adr = bg_xcalloc((size_t)nn + 2, sizeof *adr), *at = bg_xcalloc((size_t)2 * nb + 1, sizeof *at);
+  int *fill = bg_xcalloc((size_t)nn + 1, sizeof *fill);
+  for (int b = 0; b < nb; b++) /* the bonds of each node */
+    for (int e = 0; e < 2; e++) adr[bg_route_end_node(L, b, e) + 1]++;
+  for (int k = 0; k < nn; k++) adr[k + 1] += adr[k];
+  for (int b = 0; b < nb; b++)
+    for (int e = 0; e < 2; e++) {
+      int k = bg_route_end_node(L, b, e);
+      at[adr[k] + fill[k]++] = b;
+    }
+  for (int k = 0; k < nn; k++)
+    for (int i = adr[k]; i < adr[k + 1]; i++)
+      for (int j = i + 1; j < adr[k + 1]; j++) {
+        int b = at[i], c = at[j];
+        if (b == c || !bonds_cross(L, b, c)) continue;
+        n++;
+        if (!todo) continue;
+        for (int swap = 0; swap < 2; swap++) {
+          int s = swap ? c : b, o = swap ? b : c;
+          if (route[s] || L->bg[s].bendn || !slanted(L, s)) continue;
+          todo[s] = BG_ROUTE;
+          if (!route[o] && L->bg[o].bendn && todo[o] == BG_KEEP) todo[o] = BG_STRAIGHTEN;
+          break;
+        }
+      }
+  free(adr), free(at), free(fill);
+  return n;
+}
+
+/* The pairs of crossing bonds as the layout draws them of which one is
+ * marked in changed. */
+int bg_route_crossings_of(const bg_diagram_layout *L, const unsigned char *changed) {
+  int nb = L->m->nbond, n = 0;
+  for (int b = 0; b < nb; b++)
+    for (int c = 0; changed[b] && c < nb; c++)
+      if (c != b && (!changed[c] || c > b)) n += bonds_cross(L, b, c);
+  return n;
+}
