@@ -444,18 +444,57 @@ static const struct {
                   hung one-ports on their junctions, on the side facing their signals) */
   int adjacent; /* limit: crossings of two lines out of one element (fc_adjacent; 22, 2, 7
                    before a route paid COST_CROSS_OWN to cross its own ends' bonds;
-                   bench_reactions300 5 -> 4, modladder120 2 -> 1 with the one-ports hung) */
+                   bench_reactions300 5 -> 4, modladder120 2 -> 1 with the one-ports hung;
+                   reactions60 4 -> 0 and modladder120 1 -> 0 with the bond router's
+                   second pass) */
   int avoidable; /* limit: crossings a short U round a one-port avoids (fc_avoidable; 319,
                     0, 0 before the routes took them, bg_route_detour; bench_reactions300
                     7 -> 5 with the one-ports hung) */
   int slanted; /* limit: slanted bonds (836 and 241 of 1 126 and 481 in rows before it hung
                   one-ports straight above or below their junctions: now only bonds between
                   junctions of different rows slant) */
+  int by_diagonal; /* limit: corners within 3 pt of a diagonal bond of their node
+                      (corners_by_diagonals, from the bond router's first pass) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 13, 4, 5, 574},
-    {{"modladder120", fm_modladder, 120}, "rows", 1, 1, 0, 0},
-    {{"reactions60", fm_reactions, 60}, NULL, 0, 4, 0, 21},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 13, 4, 5, 574, 1},
+    {{"modladder120", fm_modladder, 120}, "rows", 1, 0, 0, 0, 0},
+    {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0},
 };
+
+/* Issue 31, the bond router's second pass (diagram_route_bonds.c): where a
+ * diagonal bond (one straight slanted line) and a bond with corners leave
+ * one node, no corner of the one lies within 3 pt of the other's line, so
+ * the two never read as touching (reactions60: its chords' routes, drawn by
+ * that pass, put a corner 1.0 pt beside the elbow it drew straight, bonds
+ * 250, 253, 256 beside 278, 281, 284, before the routes were kept 4 pt off
+ * it). Returns the corners found. */
+static int corners_by_diagonals(const bg_model *m, const bg_scene *s) {
+  fc_scene f;
+  fc_read(s, &f);
+  int n = 0, *bond = fc_model_bonds(m, &f);
+  for (int j = 0; j < f.nline; j++) {
+    const fc_line *d = &f.line[j];
+    if (d->kind != FC_BOND || bond[j] < 0 || fc_body(d) != 1) continue;
+    if (fmin(fabs(d->seg[0].x1 - d->seg[0].x0), fabs(d->seg[0].y1 - d->seg[0].y0)) <= 0.05) continue; /* straight */
+    for (int k = 0; k < f.nline; k++) {
+      const fc_line *c = &f.line[k];
+      int a = bond[j], b = bond[k];
+      if (k == j || c->kind != FC_BOND || b < 0) continue;
+      if (m->bond_tail[a] != m->bond_tail[b] && m->bond_tail[a] != m->bond_head[b] &&
+          m->bond_head[a] != m->bond_tail[b] && m->bond_head[a] != m->bond_head[b])
+        continue;
+      for (int i = 0; i + 1 < fc_body(c); i++) {
+        if (fc_pt_seg(c->seg[i].x1, c->seg[i].y1, &d->seg[0]) >= 3) continue;
+        n++;
+        if (fc_explain) printf("  corner of bond %d %.1f pt from diagonal bond %d\n", c->id,
+                               fc_pt_seg(c->seg[i].x1, c->seg[i].y1, &d->seg[0]), d->id);
+      }
+    }
+  }
+  free(bond);
+  fc_free(&f);
+  return n;
+}
 
 static void test_large_figures(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
@@ -491,6 +530,9 @@ static void test_large_figures(void) {
                   large[g].avoidable);
       BG_T_REPORT(st.adjacent <= large[g].adjacent, "%s: %d crossings of one element's lines (<= %d)", lm->name,
                   st.adjacent, large[g].adjacent);
+      int near = corners_by_diagonals(f.m, bg_diagram_scene(d));
+      BG_T_REPORT(near <= large[g].by_diagonal, "%s: %d corners within 3 pt of a diagonal bond of their node (<= %d)",
+                  lm->name, near, large[g].by_diagonal);
       BG_T_REPORT(st.overlaps - st.bond_overlaps <= large[g].fan_out, "%s: %d signals on signals (<= %d)", lm->name,
                   st.overlaps - st.bond_overlaps, large[g].fan_out);
       bg_diagram_free(d);
