@@ -457,7 +457,7 @@ static const struct {
                       (corners_by_diagonals, from the bond router's first pass) */
 } large[] = {
     {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 13, 4, 5, 574, 1},
-    {{"modladder120", fm_modladder, 120}, "rows", 1, 0, 0, 0, 0},
+    {{"modladder120", fm_modladder, 120}, "rows", 1, 1, 0, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0},
 };
 
