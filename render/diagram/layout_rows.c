@@ -53,38 +53,6 @@ static void hang_leaves(const bg_layout_in *in, const int *depth, const int *ord
   free(deg), free(nb);
 }
 
-/* Each one-port to the side facing most of the nodes it has links with
- * (its signals): a partner lower than its junction by more than the
- * junction's height counts for below, higher for above, a hung partner by
- * its own junction's place (out: the layout with every one-port above, the
- * first below). A junction's two one-ports swap when the lower one wants
- * up more; a lone one-port goes below only when more of its partners lie
- * below than above, so a chain's one-ports stay on one side unless their
- * signals lead across a row (a fold), where crossing it is what the
- * signal would otherwise pay. */
-static void face_links(const bg_layout_in *in, const bg_layout *out, hangers *hg) {
-  int n = in->nnode;
-  int *vote = bg_xcalloc((size_t)n + 1, sizeof *vote); /* below minus above */
-  for (int k = 0; k < in->nlink; k++)
-    for (int e = 0; e < 2; e++) {
-      int v = e ? in->link_b[k] : in->link_a[k], p = e ? in->link_a[k] : in->link_b[k];
-      if (v < 0 || p < 0 || v >= n || p >= n || hg->host[v] < 0) continue;
-      int u = hg->host[v], pu = hg->host[p] >= 0 ? hg->host[p] : p;
-      if (pu == u) continue;
-      double d = out->y[pu] - out->y[u];
-      vote[v] += d > in->h[u] ? 1 : d < -in->h[u] ? -1 : 0;
-    }
-  for (int u = 0; u < n; u++) {
-    int a = hg->above[u], b = hg->below[u];
-    if (a < 0) continue;
-    if (b < 0 ? vote[a] > 0 : vote[a] > vote[b]) {
-      hg->above[u] = b, hg->below[u] = a, hg->side[a] = 1;
-      if (b >= 0) hg->side[b] = -1;
-    }
-  }
-  free(vote);
-}
-
 static void hangers_free(hangers *hg) {
   free(hg->host), free(hg->side), free(hg->above), free(hg->below), free(hg->gap);
 }
@@ -103,6 +71,7 @@ typedef struct rank_cols {
   int *adr, *node;  /* nodes of rank r: node[adr[r] .. adr[r+1]) in search order (hung nodes not) */
   double *w, *h;    /* column width (widest node) and stacked height */
   double *mid;      /* the middle of the column's nodes' centres, from the column's top */
+  int *band;        /* the band the column went to (place) */
 } rank_cols;
 
 static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
@@ -116,6 +85,7 @@ static void rank_columns(const bg_layout_in *in, const int *depth, const int *or
   c->w = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->w);
   c->h = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->h);
   c->mid = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->mid);
+  c->band = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->band);
   double *first = bg_xcalloc((size_t)c->nrank + 1, sizeof *first), *last = bg_xcalloc((size_t)c->nrank + 1, sizeof *last);
   for (int v = 0; v < n; v++)
     if (hg->host[v] < 0) c->adr[depth[v] + 1]++;
@@ -155,13 +125,19 @@ static double band_width(const bg_layout_in *in, const rank_cols *c) {
 /* Columns cut into bands; in a band the columns' middles (of their nodes'
  * centres, hangers not counted) on one line, so a chain runs straight
  * along it with its one-ports above and below. */
-static void place(const bg_layout_in *in, const hangers *hg, const rank_cols *c, bg_layout *out) {
-  double bw = band_width(in, c), top = 0, maxw = 0;
+static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, bg_layout *out) {
+  double bw = band_width(in, c), top = 0, maxw = 0, edge = -1;
   int band = 0;
   for (int r0 = 0; r0 < c->nrank; band++) {
+    /* a band starts under the previous one's last column (edge: its
+     * centre), so the bond of the fold runs straight down, and runs the
+     * other way as far as the page's width allows */
+    int rtl = band % 2;
+    double first = edge < 0 ? c->w[r0] / 2 : edge;
+    double outer = rtl ? first + c->w[r0] / 2 : first - c->w[r0] / 2, room = rtl ? outer : bw - outer;
     double len = 0, up = 0, down = 0;
     int r1 = r0;
-    while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= bw)) {
+    while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= room)) {
       len += c->w[r1] + in->rank_sep;
       up = fmax(up, c->mid[r1]), down = fmax(down, c->h[r1] - c->mid[r1]);
       r1++;
@@ -170,7 +146,8 @@ static void place(const bg_layout_in *in, const hangers *hg, const rank_cols *c,
     maxw = len > maxw ? len : maxw;
     double x = 0;
     for (int r = r0; r < r1; r++) {
-      double cx = band % 2 ? bw - x - c->w[r] / 2 : x + c->w[r] / 2;
+      double cx = rtl ? outer - x - c->w[r] / 2 : outer + x + c->w[r] / 2;
+      edge = cx, c->band[r] = band;
       double y = top + up - c->mid[r];
       for (int k = c->adr[r]; k < c->adr[r + 1]; k++) {
         int v = c->node[k], a = hg->above[v], b = hg->below[v];
@@ -188,6 +165,53 @@ static void place(const bg_layout_in *in, const hangers *hg, const rank_cols *c,
   }
   out->width = band > 1 ? bw : maxw;
   out->height = top > 2 * in->rank_sep ? top - 2 * in->rank_sep : 0;
+}
+
+/* Each one-port to the side where it is out of its junction's other
+ * bonds' way and faces its signals (out: the layout with every one-port
+ * above, the second below). A junction whose other bond comes in steeply
+ * from above (from a node higher by more than it lies aside: a fold's bond
+ * from the band before) hangs a lone one-port below, one whose bond leaves
+ * steeply downwards (to the next band) above: on that side the bond would
+ * run through the one-port's label. Otherwise the side facing most of the
+ * nodes its links (signals) join: a partner lower than its junction by
+ * more than the junction's height counts for below, higher for above, a
+ * hung partner by its own junction's place. A junction's two one-ports swap
+ * when the lower one wants up more; a lone one-port goes below only when
+ * more of its partners lie below than above, so a chain's one-ports stay
+ * on one side unless their signals lead across a row (a fold), where
+ * crossing it is what the signal would otherwise pay. */
+static void face_hangers(const bg_layout_in *in, const int *depth, const rank_cols *c, const bg_layout *out,
+                         hangers *hg) {
+  int n = in->nnode;
+  int *vote = bg_xcalloc((size_t)n + 1, sizeof *vote); /* below minus above */
+  unsigned char *steep = bg_xcalloc((size_t)n + 1, 1);  /* 1: a bond from above, 2: one below */
+  for (int k = 0; k < in->nlink; k++)
+    for (int e = 0; e < 2; e++) {
+      int v = e ? in->link_b[k] : in->link_a[k], p = e ? in->link_a[k] : in->link_b[k];
+      if (v < 0 || p < 0 || v >= n || p >= n || hg->host[v] < 0) continue;
+      int u = hg->host[v], pu = hg->host[p] >= 0 ? hg->host[p] : p;
+      if (pu == u) continue;
+      double d = out->y[pu] - out->y[u];
+      vote[v] += d > in->h[u] ? 1 : d < -in->h[u] ? -1 : 0;
+    }
+  for (int e = 0; e < in->nedge; e++)
+    for (int k = 0; k < 2; k++) {
+      int u = k ? in->head[e] : in->tail[e], v = k ? in->tail[e] : in->head[e];
+      if (hg->host[u] >= 0 || hg->host[v] >= 0 || u == v || c->band[depth[u]] == c->band[depth[v]]) continue;
+      double dy = out->y[v] - out->y[u], dx = fabs(out->x[v] - out->x[u]);
+      if (fabs(dy) > in->h[u] && fabs(dy) > dx) steep[u] |= dy < 0 ? 1 : 2;
+    }
+  for (int u = 0; u < n; u++) {
+    int a = hg->above[u], b = hg->below[u];
+    if (a < 0) continue;
+    int down = b < 0 && steep[u] != 3 && steep[u] ? steep[u] == 1 : b < 0 ? vote[a] > 0 : vote[a] > vote[b];
+    if (down) {
+      hg->above[u] = b, hg->below[u] = a, hg->side[a] = 1;
+      if (b >= 0) hg->side[b] = -1;
+    }
+  }
+  free(vote), free(steep);
 }
 
 /* Moves the nodes so their boxes start at (0, 0) and sets the box size. */
@@ -215,14 +239,14 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   out->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spladr);
   out->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spln);
   place(in, &hg, &c, out);
-  if (in->nlink > 0) { /* again with the one-ports facing their signals (the bands stay) */
-    face_links(in, out, &hg);
-    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid);
+  { /* again with the one-ports out of their bonds' way and facing their signals (the bands stay) */
+    face_hangers(in, depth, &c, out, &hg);
+    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
     rank_columns(in, depth, order, &hg, &c);
     place(in, &hg, &c, out);
   }
   fit_box(in, out);
-  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid);
+  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
   hangers_free(&hg);
   free(order), free(depth);
   return 0;

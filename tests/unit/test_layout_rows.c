@@ -3,7 +3,8 @@
  * no two boxes overlapping, everything inside the reported box, columns by
  * breadth-first rank, long chains folded into a page of sensible shape, the
  * same result every run, one-ports hung above their junctions (below when
- * their signals lead there), the junctions of a band on one line; and the diagram of a model above 2000 nodes is laid
+ * their signals lead there or a fold's bond comes from above), the
+ * junctions of a band on one line, each band under the last one's end; and the diagram of a model above 2000 nodes is laid
  * out with rows unless another engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
@@ -62,21 +63,25 @@ static void test_chain(void) {
   STR_EQ(l.engine, "rows");
   INT_EQ(overlapping(&in, &l), 0);
   INT_EQ(outside(&in, &l), 0);
-  /* a one-port hangs straight above its junction (the node before it), a
-   * node's gap away, as books draw it: its bond vertical */
-  int hung = 1;
-  for (int v = 1; v < N; v += 2)
-    hung &= fabs(l.x[v] - l.x[v - 1]) < 1e-9 &&
-            fabs(l.y[v - 1] - l.y[v] - (h[v] + h[v - 1]) / 2 - in.node_sep) < 1e-9;
-  OK(hung);
   /* the junctions of a band on one line, whatever the nodes' sizes: the
    * next junction lies on the same line but at the folds, where it lies
-   * lower (the next band) */
+   * straight below (the next band starts under the last column), so the
+   * fold's bond is vertical */
   int folds = 0, lower = 1;
   for (int v = 0; v + 2 < N; v += 2)
-    if (fabs(l.y[v + 2] - l.y[v]) > 1e-9) folds++, lower &= l.y[v + 2] > l.y[v];
+    if (fabs(l.y[v + 2] - l.y[v]) > 1e-9) folds++, lower &= l.y[v + 2] > l.y[v] && fabs(l.x[v + 2] - l.x[v]) < 1e-9;
   OK(lower);
   OK(folds >= 2 && folds <= N / 16); /* at least 8 junctions a band (13 bands of about 15) */
+  /* a one-port hangs straight above its junction (the node before it), a
+   * node's gap away, as books draw it: its bond vertical; below at a band's
+   * first junction, out of the way of the fold's bond from above */
+  int hung = 1;
+  for (int v = 1; v < N; v += 2) {
+    int start = v >= 3 && l.y[v - 3] < l.y[v - 1] - 1e-9, sign = start ? -1 : 1;
+    hung &= fabs(l.x[v] - l.x[v - 1]) < 1e-9 &&
+            fabs(sign * (l.y[v - 1] - l.y[v]) - (h[v] + h[v - 1]) / 2 - in.node_sep) < 1e-9;
+  }
+  OK(hung);
   /* 200 ranks folded: neither one row nor one column */
   OK(l.width > 0.5 * l.height && l.width < 3 * l.height);
   int spl = 0;
@@ -88,10 +93,12 @@ static void test_chain(void) {
   bg_layout_free(&l2);
 }
 
-/* A one-port hangs on the side facing its signals (the layout's links): one
- * at a band's last junction whose signal goes to a one-port in the next
- * band hangs below its junction, the other stays above (its partner's
- * junction lies higher), and one whose partner is on its own row stays above. */
+/* A one-port hangs on the side facing its signals (the layout's links):
+ * one near a band's end whose signal goes to a one-port in the next band
+ * hangs below its junction, the other stays above (its partner's junction
+ * lies higher), one whose partner is on its own row stays above; and the
+ * fold's bonds win over the signals: the band's last junction keeps its
+ * one-port above, the next band's first hangs it below. */
 static void test_links(void) {
   double w[N], h[N];
   int tail[N], head[N];
@@ -103,16 +110,18 @@ static void test_links(void) {
   INT_EQ(bg_layout_run(&in, &l0, err, sizeof err), 0);
   int v = 0; /* the first fold: junction v ends a band, v + 2 starts the next */
   while (v + 2 < N && fabs(l0.y[v + 2] - l0.y[v]) < 1e-9) v += 2;
-  OK(v + 6 < N && l0.y[v + 2] > l0.y[v]);
-  int la[2] = {v + 1, 1}, lb[2] = {v + 5, 3};
-  in.nlink = 2, in.link_a = la, in.link_b = lb;
+  OK(v >= 4 && v + 6 < N && l0.y[v + 2] > l0.y[v]);
+  int la[3] = {v - 1, 1, v + 1}, lb[3] = {v + 5, 3, v + 7};
+  in.nlink = 3, in.link_a = la, in.link_b = lb;
   INT_EQ(bg_layout_run(&in, &l, err, sizeof err), 0);
-  OK(l.y[v + 1] > l.y[v] && fabs(l.x[v + 1] - l.x[v]) < 1e-9); /* below, in its column */
-  OK(l.y[v + 5] < l.y[v + 4] && fabs(l.x[v + 5] - l.x[v + 4]) < 1e-9);
-  OK(l.y[1] < l.y[0] && l.y[3] < l.y[2]);
-  int others_above = 1;
-  for (int u = 1; u < N; u += 2) others_above &= u == v + 1 || l.y[u] < l.y[u - 1];
-  OK(others_above);
+  int sides = 1; /* below: v - 1 (its signal) and v + 3 (the band's first junction's) */
+  for (int u = 1; u < N; u += 2) {
+    int start = u >= 3 && l.y[u - 3] < l.y[u - 1] - 1e-9, below = u == v - 1 || start;
+    sides &= fabs(l.x[u] - l.x[u - 1]) < 1e-9 && (below ? l.y[u] > l.y[u - 1] : l.y[u] < l.y[u - 1]);
+  }
+  OK(sides);
+  OK(l.y[v - 1] > l.y[v - 2] && l.y[v + 5] < l.y[v + 4] && l.y[1] < l.y[0] && l.y[3] < l.y[2]);
+  OK(l.y[v + 1] < l.y[v] && l.y[v + 3] > l.y[v + 2]); /* the fold's: its signal to v + 7 not heeded */
   INT_EQ(overlapping(&in, &l), 0);
   INT_EQ(outside(&in, &l), 0);
   bg_layout_free(&l0);
