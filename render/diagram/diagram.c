@@ -154,6 +154,23 @@ static void first_sources(const bg_diagram_layout *d, const int *tail, const int
   free(up), free(has);
 }
 
+/* The rows layout of the default style's boxes (rw, rh) stretched, across
+ * and down apart, by the most any of the style's own boxes is larger: a
+ * stretch keeps every left/right and above/below order, so every style
+ * draws the same arrangement (issue 31), and no two boxes that were apart
+ * can meet (each grows by at most the stretch, the space between them by
+ * as much). A smaller style keeps the default's places. */
+static void scale_rows(bg_diagram_layout *d, const double *rw, const double *rh) {
+  double kx = 1, ky = 1;
+  for (int v = 0; v < d->nnode; v++) {
+    if (rw[v] > 0) kx = fmax(kx, d->nw[v] / rw[v]);
+    if (rh[v] > 0) ky = fmax(ky, d->nh[v] / rh[v]);
+  }
+  if (kx == 1 && ky == 1) return;
+  for (int v = 0; v < d->lay.nnode; v++) d->lay.x[v] *= kx, d->lay.y[v] *= ky;
+  d->lay.width *= kx, d->lay.height *= ky;
+}
+
 /* The modulating signals as pairs of layout nodes (rows hangs a one-port on
  * the side facing them): from the element, the user state's node, or a
  * bond variable's bond (its head's node), to the modulated element.
@@ -205,11 +222,14 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
    * the grid pass spaces them with the style's own sizes. */
   const char *engine = choose_engine(d), *rd = m->layout.rankdir;
   int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR"));
+  /* rows likewise lays out the default style's boxes, and the result is
+   * stretched to fit the style's own (scale_rows) */
+  int rows = !strcmp(engine, "rows") && !any_pinned, refsized = grid || rows;
   bg_style ref;
   bg_style_default(&ref);
-  const bg_style *lst = grid ? &ref : &d->st;
+  const bg_style *lst = refsized ? &ref : &d->st;
   double *gw = d->nw, *gh = d->nh;
-  if (grid) {
+  if (refsized) {
     gw = bg_xcalloc((size_t)d->nnode + 1, sizeof *gw), gh = bg_xcalloc((size_t)d->nnode + 1, sizeof *gh);
     reference_boxes(d, &ref, gw, gh);
   }
@@ -240,7 +260,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
                   "draw it without --collapse");
     free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
     free(cluster), free(label_h), free(link_a), free(link_b);
-    if (grid) free(gw), free(gh);
+    if (refsized) free(gw), free(gh);
     return -1;
   }
   bg_fields_lay *fields = bg_fields_compact(d, &in);
@@ -249,7 +269,8 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h), free(link_a), free(link_b);
-  if (grid) free(gw), free(gh);
+  if (rc == 0 && rows) scale_rows(d, gw, gh);
+  if (refsized) free(gw), free(gh);
   if (rc) return -1;
   d->nx = d->lay.x, d->ny = d->lay.y;
   d->splx = d->lay.splx, d->sply = d->lay.sply;

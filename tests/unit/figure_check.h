@@ -545,8 +545,18 @@ static double fc_smallest_size(const bg_scene_item *it) {
 }
 
 /* Pairs of element labels placed in a different order (left/right or
- * above/below, by more than 1 pt) in two drawings of the same model: the
- * arrangement a style changed. Labels are matched by their role. */
+ * above/below) in two drawings of the same model: the arrangement a style
+ * changed. Labels are matched by their role. A pair counts when it is
+ * reversed (more than 1 pt apart each way), or level (within 1 pt) in one
+ * drawing and more than 4 pt apart in the other (moved into or out of the
+ * other's row or column): a stretch of the whole drawing, which keeps every
+ * order, can take two labels 0.9 pt apart to 1.4 pt, and that is no change
+ * of arrangement. */
+static inline int fc_order_changed(double d, double D) {
+  int s = d > 1 ? 1 : d < -1 ? -1 : 0, S = D > 1 ? 1 : D < -1 ? -1 : 0;
+  if (s * S < 0) return 1;
+  return (s == 0 && fabs(D) > 4) || (S == 0 && fabs(d) > 4);
+}
 static inline int fc_arrangement(const bg_scene *a, const bg_scene *b) {
   int n = 0, *match = calloc((size_t)a->nitem + 1, sizeof *match);
   for (int i = 0; i < a->nitem; i++) {
@@ -560,9 +570,7 @@ static inline int fc_arrangement(const bg_scene *a, const bg_scene *b) {
       if (match[k] < 0) continue;
       const bg_scene_item *p = &a->item[i], *q = &a->item[k], *P = &b->item[match[i]], *Q = &b->item[match[k]];
       double dx = q->x - p->x, dy = q->y - p->y, DX = Q->x - P->x, DY = Q->y - P->y;
-      int sx = dx > 1 ? 1 : dx < -1 ? -1 : 0, sy = dy > 1 ? 1 : dy < -1 ? -1 : 0;
-      int SX = DX > 1 ? 1 : DX < -1 ? -1 : 0, SY = DY > 1 ? 1 : DY < -1 ? -1 : 0;
-      if (sx != SX || sy != SY) {
+      if (fc_order_changed(dx, DX) || fc_order_changed(dy, DY)) {
         n++;
         if (fc_explain) printf("  arrangement: %s and %s\n", p->role, q->role);
       }

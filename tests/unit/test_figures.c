@@ -201,6 +201,18 @@ static void test_checker_31(void) {
   }
   INT_EQ(fc_arrangement(&a, &b), 2);
   INT_EQ(fc_arrangement(&a, &a), 0);
+  /* a stretch keeps the arrangement, though it takes labels 0.9 pt apart
+   * to 1.35 pt; a label moved from another's row to 6 pt below it does not */
+  bg_scene c, e;
+  bg_scene_init(&c, "DejaVu Sans"), bg_scene_init(&e, "DejaVu Sans");
+  const char *who4[] = {"node P", "node Q", "node R", "node S"};
+  double pc[4][2] = {{0, 0}, {100, 0.9}, {50, 50}, {150, 0}};
+  for (int i = 0; i < 4; i++) {
+    bg_scene_text(&c, "n", pc[i][0], pc[i][1], 11, 0.5, 0.5, ink, who4[i]);
+    bg_scene_text(&e, "n", 1.5 * pc[i][0], i == 3 ? 6 : 1.5 * pc[i][1], 11, 0.5, 0.5, ink, who4[i]);
+  }
+  INT_EQ(fc_arrangement(&c, &e), 2); /* S against P and Q (R lay below S in both) */
+  bg_scene_free(&c), bg_scene_free(&e);
   bg_scene_free(&a), bg_scene_free(&b), bg_scene_free(&s);
   /* signals branching: u->w and u->z start on u->v's line, u->z at a
    * branch dot; u->y starts where u->v does (same port): not a branch */
@@ -537,6 +549,15 @@ static void test_large_figures(void) {
                   lm->name, near, large[g].by_diagonal);
       BG_T_REPORT(st.overlaps - st.bond_overlaps <= large[g].fan_out, "%s: %d signals on signals (<= %d)", lm->name,
                   st.overlaps - st.bond_overlaps, large[g].fan_out);
+      for (int si = 1; si < 3; si++) { /* the same arrangement in the other styles */
+        bg_render_opts os = o;
+        os.style = styles[si];
+        bg_diagram *ds = bg_diagram_build(f.m, &f.a, &os, &f.dg);
+        OK(ds != NULL);
+        int arr = ds ? fc_arrangement(bg_diagram_scene(d), bg_diagram_scene(ds)) : -1;
+        BG_T_REPORT(arr == 0, "%s: %d element label pairs in another order in the %s style", lm->name, arr, styles[si]);
+        bg_diagram_free(ds);
+      }
       bg_diagram_free(d);
     }
     fx_free(&f);
