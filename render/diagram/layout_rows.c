@@ -125,8 +125,8 @@ static double band_width(const bg_layout_in *in, const rank_cols *c) {
 /* Columns cut into bands; in a band the columns' middles (of their nodes'
  * centres, hangers not counted) on one line, so a chain runs straight
  * along it with its one-ports above and below. */
-static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, bg_layout *out) {
-  double bw = band_width(in, c), top = 0, maxw = 0, edge = -1;
+static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, double bw, bg_layout *out) {
+  double top = 0, maxw = 0, edge = -1;
   int band = 0;
   for (int r0 = 0; r0 < c->nrank; band++) {
     /* a band starts under the previous one's last column (edge: its
@@ -165,6 +165,27 @@ static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, bg_la
   }
   out->width = band > 1 ? bw : maxw;
   out->height = top > 2 * in->rank_sep ? top - 2 * in->rank_sep : 0;
+  return band;
+}
+
+/* The bands' width: first from the columns' stacked area (band_width);
+ * placed, the page's real height (the gaps between bands, the one-ports
+ * hung above and below) gives the width for a page 1.4 times as wide as
+ * high; then the columns are spread evenly over as many bands as that
+ * width needs, so the last band is about as long as the others (not a
+ * stub of a column or two). */
+static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, bg_layout *out) {
+  double total = -in->rank_sep, widest = 0;
+  for (int r = 0; r < c->nrank; r++) total += c->w[r] + in->rank_sep, widest = fmax(widest, c->w[r]);
+  double bw = band_width(in, c);
+  int nb = place_bands(in, hg, c, bw, out);
+  if (nb < 2) return;
+  double shaped = bw;
+  for (int extra = 0; extra < 4; extra++) { /* even bands: the least width that needs no more than nb */
+    double even = total / nb + extra * widest / 2;
+    if (place_bands(in, hg, c, even + 1e-9, out) <= nb) return;
+  }
+  place_bands(in, hg, c, shaped, out);
 }
 
 /* Each one-port to the side where it is out of its junction's other

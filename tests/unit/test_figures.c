@@ -455,7 +455,7 @@ static const struct {
                   ends, its false T 29 -> 0; 84 -> 13 and modladder120's 9 -> 1 when rows
                   hung one-ports on their junctions, on the side facing their signals;
                   16 and 2 with a band starting under the last one's end and a fold's
-                  one-ports out of its bond's way) */
+                  one-ports out of its bond's way; 11 and 0 with even bands) */
   int adjacent; /* limit: crossings of two lines out of one element (fc_adjacent; 22, 2, 7
                    before a route paid COST_CROSS_OWN to cross its own ends' bonds;
                    bench_reactions300 5 -> 4, modladder120 2 -> 1 with the one-ports hung;
@@ -463,15 +463,15 @@ static const struct {
                    1 -> 0 and bench_reactions300 3 -> 5 with the folds' one-ports moved) */
   int avoidable; /* limit: crossings a short U round a one-port avoids (fc_avoidable; 319,
                     0, 0 before the routes took them, bg_route_detour; bench_reactions300
-                    7 -> 5 with the one-ports hung) */
+                    7 -> 5 with the one-ports hung, 5 -> 7 with even bands) */
   int slanted; /* limit: slanted bonds (836 and 241 of 1 126 and 481 in rows before it hung
                   one-ports straight above or below their junctions: now only bonds between
                   junctions of different rows slant) */
   int by_diagonal; /* limit: corners within 3 pt of a diagonal bond of their node
                       (corners_by_diagonals, from the bond router's first pass) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 16, 5, 5, 572, 1},
-    {{"modladder120", fm_modladder, 120}, "rows", 2, 0, 0, 0, 0},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 11, 5, 7, 572, 1},
+    {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0},
 };
 

@@ -4,7 +4,8 @@
  * breadth-first rank, long chains folded into a page of sensible shape, the
  * same result every run, one-ports hung above their junctions (below when
  * their signals lead there or a fold's bond comes from above), the
- * junctions of a band on one line, each band under the last one's end; and the diagram of a model above 2000 nodes is laid
+ * junctions of a band on one line, each band under the last one's end, the
+ * bands even; and the diagram of a model above 2000 nodes is laid
  * out with rows unless another engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
@@ -72,6 +73,11 @@ static void test_chain(void) {
     if (fabs(l.y[v + 2] - l.y[v]) > 1e-9) folds++, lower &= l.y[v + 2] > l.y[v] && fabs(l.x[v + 2] - l.x[v]) < 1e-9;
   OK(lower);
   OK(folds >= 2 && folds <= N / 16); /* at least 8 junctions a band (13 bands of about 15) */
+  /* even bands: the last holds about as many junctions as the first (no
+   * stub of a column or two) */
+  int first_band = 0, last_band = 0;
+  for (int v = 0; v < N; v += 2) first_band += fabs(l.y[v] - l.y[0]) < 1e-9, last_band += fabs(l.y[v] - l.y[N - 2]) < 1e-9;
+  OK(last_band >= first_band - 2 && last_band <= first_band + 2);
   /* a one-port hangs straight above its junction (the node before it), a
    * node's gap away, as books draw it: its bond vertical; below at a band's
    * first junction, out of the way of the fold's bond from above */
