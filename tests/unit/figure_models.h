@@ -53,6 +53,19 @@ static void fm_ladder(bg_strbuf *b, int k) {
   bg_sb_printf(b, "bond n%d -> load\n", k - 1);
 }
 
+/* A chain of n masses (a 1-junction with an I and an R, then a
+ * 0-junction with a C: the spring to the next), from a force: 5 n + 1
+ * nodes, so above 400 masses a model the rows layout draws by default. */
+__attribute__((unused)) static void fm_masses(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model masses%d\nSe F = 1\n", n);
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "1 v%d\nI m%d = 1\nR r%d = 1\n0 s%d\nC k%d = 1\n", i, i, i, i, i);
+  bg_sb_puts(b, "bond F -> v0\n");
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "bond v%d -> m%d\nbond v%d -> r%d\nbond v%d -> s%d\nbond s%d -> k%d\n", i, i, i, i, i, i, i, i);
+    if (i + 1 < n) bg_sb_printf(b, "bond s%d -> v%d\n", i, i + 1);
+  }
+}
+
 /* r × c nodes (0-junctions with a C each), joined along rows and columns by
  * resistors on 1-junctions; a source at the first node. */
 static void fm_grid(bg_strbuf *b, int r, int c) {

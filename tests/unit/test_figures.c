@@ -473,6 +473,7 @@ static const struct {
     {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 11, 5, 7, 572, 1},
     {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0},
+    {{"masses520", fm_masses, 520}, NULL, 0, 0, 0, 0, 0}, /* 2 601 nodes: rows by default */
 };
 
 /* Issue 31, the bond router's second pass (diagram_route_bonds.c): where a
