@@ -168,16 +168,17 @@ static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, 
   return band;
 }
 
-/* The bands' width: first from the columns' stacked area (band_width);
+/* The bands' width: the page's when given (page > 0), else first from the
+ * columns' stacked area (band_width);
  * placed, the page's real height (the gaps between bands, the one-ports
  * hung above and below) gives the width for a page 1.4 times as wide as
  * high; then the columns are spread evenly over as many bands as that
  * width needs, so the last band is about as long as the others (not a
  * stub of a column or two). */
-static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, bg_layout *out) {
+static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, double page, bg_layout *out) {
   double total = -in->rank_sep, widest = 0;
   for (int r = 0; r < c->nrank; r++) total += c->w[r] + in->rank_sep, widest = fmax(widest, c->w[r]);
-  double bw = band_width(in, c);
+  double bw = page > 0 ? fmax(widest, fmin(page, total)) : band_width(in, c);
   int nb = place_bands(in, hg, c, bw, out);
   if (nb < 2) return;
   double shaped = bw;
@@ -247,7 +248,10 @@ static void fit_box(const bg_layout_in *in, bg_layout *out) {
   out->width = x1 - x0, out->height = y1 - y0;
 }
 
-int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
+/* One connected graph (or any graph, its parts mixed in the columns): the
+ * positions into out->x, out->y (allocated), its box from (0, 0); its
+ * bands at most `page` wide when that is given (> 0). */
+static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
   int n = in->nnode;
   int *order = bg_xcalloc((size_t)n + 1, sizeof *order);
   int *depth = bg_layout_depths(in, order);
@@ -255,20 +259,122 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   hang_leaves(in, depth, order, &hg);
   rank_cols c;
   rank_columns(in, depth, order, &hg, &c);
-  out->x = bg_xcalloc((size_t)n + 1, sizeof *out->x);
-  out->y = bg_xcalloc((size_t)n + 1, sizeof *out->y);
-  out->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spladr);
-  out->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spln);
-  place(in, &hg, &c, out);
+  place(in, &hg, &c, page, out);
   { /* again with the one-ports out of their bonds' way and facing their signals (the bands stay) */
     face_hangers(in, depth, &c, out, &hg);
     free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
     rank_columns(in, depth, order, &hg, &c);
-    place(in, &hg, &c, out);
+    place(in, &hg, &c, page, out);
   }
   fit_box(in, out);
   free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
   hangers_free(&hg);
   free(order), free(depth);
+}
+
+/* Each node's connected part, numbered by its lowest node; returns the count. */
+static int parts_of(const bg_layout_in *in, int *part) {
+  int n = in->nnode, *up = bg_xcalloc((size_t)n + 1, sizeof *up), np = 0;
+  for (int v = 0; v < n; v++) up[v] = v;
+  for (int e = 0; e < in->nedge; e++) {
+    int a = in->tail[e], b = in->head[e];
+    while (up[a] != a) a = up[a] = up[up[a]];
+    while (up[b] != b) b = up[b] = up[up[b]];
+    if (a != b) up[a > b ? a : b] = a < b ? a : b; /* the lower stays the root */
+  }
+  for (int v = 0; v < n; v++) {
+    int r = v;
+    while (up[r] != r) r = up[r] = up[up[r]];
+    part[v] = r == v ? np++ : part[r]; /* a root is its part's lowest node: numbered first */
+  }
+  free(up);
+  return np;
+}
+
+typedef struct part_box {
+  double w, h;
+  int k;
+} part_box;
+
+static int taller_first(const void *a, const void *b) {
+  const part_box *p = a, *q = b;
+  if (p->h != q->h) return p->h > q->h ? -1 : 1;
+  return p->k - q->k;
+}
+
+/* Disconnected parts are laid out each on its own (in one set of columns
+ * their bands would interleave, and a part's folds cross the other's rows)
+ * and packed in shelves: the tallest first, left to right, 2 × rank_sep
+ * apart, a new shelf when a part would pass the shelf's width, which makes
+ * the page about 1.4 times as wide as high (at least the widest part). */
+int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
+  int n = in->nnode;
+  out->x = bg_xcalloc((size_t)n + 1, sizeof *out->x);
+  out->y = bg_xcalloc((size_t)n + 1, sizeof *out->y);
+  out->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spladr);
+  out->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *out->spln);
+  int *part = bg_xcalloc((size_t)n + 1, sizeof *part), np = parts_of(in, part);
+  if (np <= 1) {
+    free(part);
+    rows_one(in, 0, out);
+    return 0;
+  }
+  /* each part's nodes, edges and links, in order (CSR by part) */
+  int *nadr = bg_xcalloc((size_t)np + 2, sizeof *nadr), *eadr = bg_xcalloc((size_t)np + 2, sizeof *eadr);
+  int *ladr = bg_xcalloc((size_t)np + 2, sizeof *ladr), *local = bg_xcalloc((size_t)n + 1, sizeof *local);
+  for (int v = 0; v < n; v++) local[v] = nadr[part[v] + 1]++;
+  for (int e = 0; e < in->nedge; e++) eadr[part[in->tail[e]] + 1]++;
+  for (int k = 0; k < in->nlink; k++)
+    if (part[in->link_a[k]] == part[in->link_b[k]]) ladr[part[in->link_a[k]] + 1]++;
+  for (int p = 0; p < np; p++) nadr[p + 1] += nadr[p], eadr[p + 1] += eadr[p], ladr[p + 1] += ladr[p];
+  int *node = bg_xcalloc((size_t)n + 1, sizeof *node), *edge = bg_xcalloc((size_t)in->nedge + 1, sizeof *edge);
+  int *link = bg_xcalloc((size_t)in->nlink + 1, sizeof *link), *fill = bg_xcalloc((size_t)np + 1, sizeof *fill);
+  for (int v = 0; v < n; v++) node[nadr[part[v]] + local[v]] = v;
+  for (int e = 0; e < in->nedge; e++) edge[eadr[part[in->tail[e]]] + fill[part[in->tail[e]]]++] = e;
+  for (int p = 0; p < np; p++) fill[p] = 0;
+  for (int k = 0; k < in->nlink; k++)
+    if (part[in->link_a[k]] == part[in->link_b[k]]) link[ladr[part[in->link_a[k]]] + fill[part[in->link_a[k]]]++] = k;
+  part_box *box = bg_xcalloc((size_t)np + 1, sizeof *box);
+  double area = 0, widest = 0, gap = 2 * in->rank_sep, page = 0;
+  for (int pass = 0; pass < 2; pass++)
+  for (int p = 0; p < np; p++) {
+    if (p == 0) area = widest = 0;
+    int pn = nadr[p + 1] - nadr[p], pe = eadr[p + 1] - eadr[p], pl = ladr[p + 1] - ladr[p];
+    double *w = bg_xcalloc((size_t)pn + 1, sizeof *w), *h = bg_xcalloc((size_t)pn + 1, sizeof *h);
+    int *t = bg_xcalloc((size_t)pe + 1, sizeof *t), *hd = bg_xcalloc((size_t)pe + 1, sizeof *hd);
+    int *la = bg_xcalloc((size_t)pl + 1, sizeof *la), *lb = bg_xcalloc((size_t)pl + 1, sizeof *lb);
+    unsigned char *root = in->root ? bg_xcalloc((size_t)pn + 1, 1) : NULL;
+    for (int i = 0; i < pn; i++) {
+      int v = node[nadr[p] + i];
+      w[i] = in->w[v], h[i] = in->h[v];
+      if (root) root[i] = in->root[v];
+    }
+    for (int i = 0; i < pe; i++) t[i] = local[in->tail[edge[eadr[p] + i]]], hd[i] = local[in->head[edge[eadr[p] + i]]];
+    for (int i = 0; i < pl; i++) la[i] = local[in->link_a[link[ladr[p] + i]]], lb[i] = local[in->link_b[link[ladr[p] + i]]];
+    bg_layout_in sub = *in;
+    sub.nnode = pn, sub.w = w, sub.h = h, sub.nedge = pe, sub.tail = t, sub.head = hd, sub.root = root;
+    sub.nlink = pl, sub.link_a = la, sub.link_b = lb, sub.weight = NULL, sub.pinned = NULL, sub.px = sub.py = NULL;
+    sub.ncluster = 0, sub.cluster = NULL;
+    bg_layout lay = {0};
+    lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
+    rows_one(&sub, page, &lay);
+    for (int i = 0; i < pn; i++) out->x[node[nadr[p] + i]] = lay.x[i], out->y[node[nadr[p] + i]] = lay.y[i];
+    box[p] = (part_box){lay.width, lay.height, p};
+    area += (lay.width + gap) * (lay.height + gap), widest = fmax(widest, lay.width);
+    free(lay.x), free(lay.y), free(w), free(h), free(t), free(hd), free(la), free(lb), free(root);
+    if (p == np - 1 && pass == 0) page = sqrt(1.4 * area); /* again, each part's bands as wide as the page */
+  }
+  qsort(box, (size_t)np, sizeof *box, taller_first);
+  double shelf = fmax(widest, sqrt(1.4 * area)), x = 0, y = 0, shelf_h = 0;
+  double *dx = bg_xcalloc((size_t)np + 1, sizeof *dx), *dy = bg_xcalloc((size_t)np + 1, sizeof *dy);
+  for (int i = 0; i < np; i++) {
+    if (x > 0 && x + box[i].w > shelf) y += shelf_h + gap, x = 0, shelf_h = 0;
+    dx[box[i].k] = x, dy[box[i].k] = y;
+    x += box[i].w + gap, shelf_h = fmax(shelf_h, box[i].h);
+  }
+  for (int v = 0; v < n; v++) out->x[v] += dx[part[v]], out->y[v] += dy[part[v]];
+  fit_box(in, out);
+  free(part), free(nadr), free(eadr), free(ladr), free(local), free(node), free(edge), free(link), free(fill);
+  free(box), free(dx), free(dy);
   return 0;
 }

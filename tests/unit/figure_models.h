@@ -66,6 +66,21 @@ __attribute__((unused)) static void fm_masses(bg_strbuf *b, int n) {
   }
 }
 
+/* Two chains of n masses each (an I on a 1-junction, a C on the
+ * 0-junction to the next), not joined: 8 n + 2 nodes in two parts. */
+__attribute__((unused)) static void fm_two_chains(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model two%d\n", n);
+  for (int p = 0; p < 2; p++) {
+    bg_sb_printf(b, "Se F%d = 1\n", p);
+    for (int i = 0; i < n; i++) bg_sb_printf(b, "1 v%d_%d\nI m%d_%d = 1\n0 s%d_%d\nC k%d_%d = 1\n", p, i, p, i, p, i, p, i);
+    bg_sb_printf(b, "bond F%d -> v%d_0\n", p, p);
+    for (int i = 0; i < n; i++) {
+      bg_sb_printf(b, "bond v%d_%d -> m%d_%d\nbond v%d_%d -> s%d_%d\nbond s%d_%d -> k%d_%d\n", p, i, p, i, p, i, p, i, p, i, p, i);
+      if (i + 1 < n) bg_sb_printf(b, "bond s%d_%d -> v%d_%d\n", p, i, p, i + 1);
+    }
+  }
+}
+
 /* r × c nodes (0-junctions with a C each), joined along rows and columns by
  * resistors on 1-junctions; a source at the first node. */
 static void fm_grid(bg_strbuf *b, int r, int c) {

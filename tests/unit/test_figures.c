@@ -474,6 +474,7 @@ static const struct {
     {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0},
     {{"masses520", fm_masses, 520}, NULL, 0, 0, 0, 0, 0}, /* 2 601 nodes: rows by default */
+    {{"two260", fm_two_chains, 260}, NULL, 0, 0, 0, 0, 0}, /* 2 082 nodes in two parts */
 };
 
 /* Issue 31, the bond router's second pass (diagram_route_bonds.c): where a

@@ -5,7 +5,7 @@
  * same result every run, one-ports hung above their junctions (below when
  * their signals lead there or a fold's bond comes from above), the
  * junctions of a band on one line, each band under the last one's end, the
- * bands even; and the diagram of a model above 2000 nodes is laid
+ * bands even, disconnected parts each on its own; and the diagram of a model above 2000 nodes is laid
  * out with rows unless another engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
@@ -134,6 +134,58 @@ static void test_links(void) {
   bg_layout_free(&l);
 }
 
+/* Disconnected parts: each laid out on its own, not mixed in one set of
+ * columns: two chains of 200 nodes and three lone pairs. Each part's boxes
+ * apart from every other part's box, the chains' bands as in one chain
+ * (their one-ports above their junctions, the first band on one line),
+ * the small parts beside one another on one shelf. */
+static void test_parts(void) {
+  enum { M = 2 * N + 6 };
+  double w[M], h[M];
+  int tail[M], head[M], ne = 0;
+  unsigned char root[M];
+  for (int p = 0; p < 2; p++)
+    for (int v = 0; v < N; v++) {
+      int id = p * N + v;
+      w[id] = 20 + (v * 37) % 50, h[id] = 14 + (v * 11) % 9, root[id] = v == 0;
+      if (v % 2) tail[ne] = id - 1, head[ne++] = id;
+      else if (v) tail[ne] = id - 2, head[ne++] = id;
+    }
+  for (int k = 0; k < 3; k++) {
+    int a = 2 * N + 2 * k;
+    w[a] = w[a + 1] = 30, h[a] = h[a + 1] = 16, root[a] = 1, root[a + 1] = 0;
+    tail[ne] = a, head[ne++] = a + 1;
+  }
+  bg_layout_in in = {0};
+  in.nnode = M, in.w = w, in.h = h, in.nedge = ne, in.tail = tail, in.head = head;
+  in.engine = "rows", in.node_sep = 8, in.rank_sep = 24, in.root = root;
+  bg_layout l;
+  char err[128];
+  INT_EQ(bg_layout_run(&in, &l, err, sizeof err), 0);
+  INT_EQ(overlapping(&in, &l), 0);
+  INT_EQ(outside(&in, &l), 0);
+  double bx[5][4]; /* each part's box */
+  for (int p = 0; p < 5; p++) bx[p][0] = bx[p][1] = 1e300, bx[p][2] = bx[p][3] = -1e300;
+  for (int v = 0; v < M; v++) {
+    int p = v < 2 * N ? v / N : 2 + (v - 2 * N) / 2;
+    bx[p][0] = fmin(bx[p][0], l.x[v] - w[v] / 2), bx[p][1] = fmin(bx[p][1], l.y[v] - h[v] / 2);
+    bx[p][2] = fmax(bx[p][2], l.x[v] + w[v] / 2), bx[p][3] = fmax(bx[p][3], l.y[v] + h[v] / 2);
+  }
+  int apart = 1;
+  for (int p = 0; p < 5; p++)
+    for (int q = p + 1; q < 5; q++)
+      apart &= bx[p][2] <= bx[q][0] || bx[q][2] <= bx[p][0] || bx[p][3] <= bx[q][1] || bx[q][3] <= bx[p][1];
+  OK(apart);
+  int hung = 1, line = 1;
+  for (int p = 0; p < 2; p++) {
+    for (int v = p * N + 3; v < p * N + 20; v += 2) hung &= fabs(l.x[v] - l.x[v - 1]) < 1e-9 && l.y[v] < l.y[v - 1];
+    line &= fabs(l.y[p * N + 2] - l.y[p * N + 4]) < 1e-9;
+  }
+  OK(hung && line);
+  OK(fabs(bx[2][1] - bx[3][1]) < 1e-9 && fabs(bx[3][1] - bx[4][1]) < 1e-9); /* the pairs on one shelf */
+  bg_layout_free(&l);
+}
+
 /* A mass chain of about 2000 nodes lays out with rows by default, with dot
  * when asked, and with rows when the model asks for rows. */
 static char *mass_chain(int n) {
@@ -187,6 +239,7 @@ static void test_engine_choice(void) {
 int main(void) {
   test_chain();
   test_links();
+  test_parts();
   test_engine_choice();
   return bg_t_done();
 }
