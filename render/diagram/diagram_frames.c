@@ -51,10 +51,77 @@ static box *instance_boxes(const bg_diagram *d) {
   return b;
 }
 
+/* Whether segment p-q meets box [x0,x1]×[y0,y1] (clipped, Liang–Barsky). */
+static int seg_meets_box(bg_vec p, bg_vec q, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1, dx = q.x - p.x, dy = q.y - p.y;
+  const double pp[4] = {-dx, dx, -dy, dy}, qq[4] = {p.x - x0, x1 - p.x, p.y - y0, y1 - p.y};
+  for (int i = 0; i < 4; i++) {
+    if (pp[i] == 0) {
+      if (qq[i] < 0) return 0;
+      continue;
+    }
+    double t = qq[i] / pp[i];
+    if (pp[i] < 0) t0 = fmax(t0, t);
+    else t1 = fmin(t1, t);
+    if (t0 > t1) return 0;
+  }
+  return 1;
+}
+
+/* Whether bond b's line meets the box. */
+static int bond_meets_box(const bg_diagram_layout *L, int b, double x0, double y0, double x1, double y1) {
+  const bg_bond_geom *g = &L->bg[b];
+  bg_vec p = g->tail;
+  for (int i = 0; i <= g->bendn; i++) {
+    bg_vec q = i == g->bendn ? g->head : bg_v(L->lay.bendx[g->bendadr + i], L->lay.bendy[g->bendadr + i]);
+    if (seg_meets_box(p, q, x0, y0, x1, y1)) return 1;
+    p = q;
+  }
+  return 0;
+}
+
+/* Per instance, the bonds with an end in it or in one of its instances
+ * (CSR: adr, list); the bonds that can run through its frame's label. */
+static void instance_bonds(const bg_diagram *d, int **adr, int **list) {
+  const bg_model *m = d->m;
+  *adr = bg_xcalloc((size_t)m->ninst + 2, sizeof **adr);
+  for (int pass = 0; pass < 2; pass++) {
+    int *fill = pass ? bg_xcalloc((size_t)m->ninst + 1, sizeof *fill) : NULL;
+    for (int b = 0; b < m->nbond; b++)
+      for (int end = 0; end < 2; end++) {
+        int e = end ? m->bond_head[b] : m->bond_tail[b];
+        int other = end ? m->bond_tail[b] : m->bond_head[b];
+        for (int k = e < m->nelem ? m->elem_inst[e] : -1; k >= 0; k = m->inst_parent[k]) {
+          int shared = 0; /* both ends in k: listed once, from the tail */
+          for (int j = other < m->nelem ? m->elem_inst[other] : -1; end && j >= 0 && !shared; j = m->inst_parent[j])
+            shared = j == k;
+          if (shared) continue;
+          if (pass) (*list)[(*adr)[k] + fill[k]++] = b;
+          else (*adr)[k + 1]++;
+        }
+      }
+    if (!pass) {
+      for (int k = 0; k < m->ninst; k++) (*adr)[k + 1] += (*adr)[k];
+      *list = bg_xcalloc((size_t)(*adr)[m->ninst] + 1, sizeof **list);
+    }
+    free(fill);
+  }
+}
+
+/* Whether a bond of frame k's list runs through the label's box at x. */
+static int label_crossed(const bg_diagram *d, const int *adr, const int *list, int k, double x, double y, double tw,
+                         double th) {
+  for (int j = adr[k]; j < adr[k + 1]; j++)
+    if (bond_meets_box(d->L, list[j], x, y, x + tw, y + th)) return 1;
+  return 0;
+}
+
 void bg_draw_frames(bg_diagram *d) {
   const bg_model *m = d->m;
   if (!m->ninst) return;
   box *b = instance_boxes(d);
+  int *adr, *list;
+  instance_bonds(d, &adr, &list);
   double size = 0.85 * d->st.font_size;
   for (int k = 0; k < m->ninst; k++) {
     if (!(b[k].x0 <= b[k].x1)) continue; /* empty, or collapsed (drawn as a box) */
@@ -77,8 +144,13 @@ void bg_draw_frames(bg_diagram *d) {
     bg_scene_close(&d->scene);
     char role[256];
     snprintf(role, sizeof role, "frame-label %s", m->inst_name[k]);
-    bg_scene_text(&d->scene, bg_sb_str(&t), b[k].x0 + 4, b[k].y0 + 2, size, 0, 0, d->st.muted, role);
+    /* at the top left, or the top right where a bond (a fold's, coming
+     * down into the frame's first element) runs through it there only */
+    double lx = b[k].x0 + 4, ly = b[k].y0 + 2, rx = x1 - 4 - tw;
+    if (rx > lx && label_crossed(d, adr, list, k, lx, ly, tw, th) && !label_crossed(d, adr, list, k, rx, ly, tw, th))
+      lx = rx;
+    bg_scene_text(&d->scene, bg_sb_str(&t), lx, ly, size, 0, 0, d->st.muted, role);
     bg_sb_free(&t);
   }
-  free(b);
+  free(b), free(adr), free(list);
 }

@@ -66,12 +66,30 @@ static double slot_height(const bg_layout_in *in, const hangers *hg, int v) {
   return h;
 }
 
+/* Cluster k's depth: 0 for none (-1), 1 for a top-level frame. */
+static int cluster_depth(const bg_layout_in *in, int k) {
+  int d = 0;
+  for (; k >= 0 && d <= in->ncluster; k = in->cluster_parent[k]) d++;
+  return d;
+}
+
+/* The innermost cluster holding both a and b (-1: none). */
+static int common_cluster(const bg_layout_in *in, int a, int b) {
+  int da = cluster_depth(in, a), db = cluster_depth(in, b);
+  for (; da > db; da--) a = in->cluster_parent[a];
+  for (; db > da; db--) b = in->cluster_parent[b];
+  while (a != b && a >= 0 && b >= 0) a = in->cluster_parent[a], b = in->cluster_parent[b];
+  return a == b ? a : -1;
+}
+
 typedef struct rank_cols {
   int nrank;
   int *adr, *node;  /* nodes of rank r: node[adr[r] .. adr[r+1]) in search order (hung nodes not) */
   double *w, *h;    /* column width (widest node) and stacked height */
   double *mid;      /* the middle of the column's nodes' centres, from the column's top */
   int *band;        /* the band the column went to (place) */
+  int *cl;          /* the innermost cluster (frame) holding every node of the column, -1: none;
+                       NULL without clusters */
 } rank_cols;
 
 static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
@@ -86,6 +104,17 @@ static void rank_columns(const bg_layout_in *in, const int *depth, const int *or
   c->h = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->h);
   c->mid = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->mid);
   c->band = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->band);
+  c->cl = NULL;
+  if (in->cluster && in->ncluster > 0) {
+    c->cl = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->cl);
+    for (int r = 0; r < c->nrank; r++) c->cl[r] = -3; /* none seen yet */
+    for (int v = 0; v < n; v++) {
+      int r = depth[hg->host[v] >= 0 ? hg->host[v] : v];
+      if (r >= c->nrank) continue;
+      c->cl[r] = c->cl[r] == -3 ? in->cluster[v] : common_cluster(in, c->cl[r], in->cluster[v]);
+    }
+    for (int r = 0; r < c->nrank; r++) c->cl[r] = c->cl[r] == -3 ? -1 : c->cl[r];
+  }
   double *first = bg_xcalloc((size_t)c->nrank + 1, sizeof *first), *last = bg_xcalloc((size_t)c->nrank + 1, sizeof *last);
   for (int v = 0; v < n; v++)
     if (hg->host[v] < 0) c->adr[depth[v] + 1]++;
@@ -137,10 +166,23 @@ static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, 
     double outer = rtl ? first + c->w[r0] / 2 : first - c->w[r0] / 2, room = rtl ? outer : bw - outer;
     double len = 0, up = 0, down = 0;
     int r1 = r0;
-    while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= room)) {
-      len += c->w[r1] + in->rank_sep;
-      up = fmax(up, c->mid[r1]), down = fmax(down, c->h[r1] - c->mid[r1]);
-      r1++;
+    while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= room)) len += c->w[r1] + in->rank_sep, r1++;
+    if (c->cl && r1 < c->nrank) { /* a fold splits the frames round both its columns: */
+      /* fold earlier where it splits fewer, the band still half full */
+      int best = r1, fewest = cluster_depth(in, common_cluster(in, c->cl[r1 - 1], c->cl[r1]));
+      double at = len;
+      for (int r = r1 - 1; r > r0 && fewest > 0; r--) {
+        at -= c->w[r] + in->rank_sep;
+        if (at < room / 2) break;
+        int d = cluster_depth(in, common_cluster(in, c->cl[r - 1], c->cl[r]));
+        if (d < fewest) best = r, fewest = d;
+      }
+      r1 = best;
+    }
+    len = 0;
+    for (int r = r0; r < r1; r++) {
+      len += c->w[r] + in->rank_sep;
+      up = fmax(up, c->mid[r]), down = fmax(down, c->h[r] - c->mid[r]);
     }
     len -= in->rank_sep;
     maxw = len > maxw ? len : maxw;
@@ -262,12 +304,12 @@ static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
   place(in, &hg, &c, page, out);
   { /* again with the one-ports out of their bonds' way and facing their signals (the bands stay) */
     face_hangers(in, depth, &c, out, &hg);
-    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
+    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band), free(c.cl);
     rank_columns(in, depth, order, &hg, &c);
     place(in, &hg, &c, page, out);
   }
   fit_box(in, out);
-  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band);
+  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band), free(c.cl);
   hangers_free(&hg);
   free(order), free(depth);
 }
@@ -354,14 +396,16 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
     bg_layout_in sub = *in;
     sub.nnode = pn, sub.w = w, sub.h = h, sub.nedge = pe, sub.tail = t, sub.head = hd, sub.root = root;
     sub.nlink = pl, sub.link_a = la, sub.link_b = lb, sub.weight = NULL, sub.pinned = NULL, sub.px = sub.py = NULL;
-    sub.ncluster = 0, sub.cluster = NULL;
+    int *cl = in->cluster ? bg_xcalloc((size_t)pn + 1, sizeof *cl) : NULL;
+    for (int i = 0; cl && i < pn; i++) cl[i] = in->cluster[node[nadr[p] + i]];
+    sub.cluster = cl;
     bg_layout lay = {0};
     lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
     rows_one(&sub, page, &lay);
     for (int i = 0; i < pn; i++) out->x[node[nadr[p] + i]] = lay.x[i], out->y[node[nadr[p] + i]] = lay.y[i];
     box[p] = (part_box){lay.width, lay.height, p};
     area += (lay.width + gap) * (lay.height + gap), widest = fmax(widest, lay.width);
-    free(lay.x), free(lay.y), free(w), free(h), free(t), free(hd), free(la), free(lb), free(root);
+    free(lay.x), free(lay.y), free(w), free(h), free(t), free(hd), free(la), free(lb), free(root), free(cl);
     if (p == np - 1 && pass == 0) page = sqrt(1.4 * area); /* again, each part's bands as wide as the page */
   }
   qsort(box, (size_t)np, sizeof *box, taller_first);

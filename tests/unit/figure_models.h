@@ -187,6 +187,22 @@ __attribute__((unused)) static void fm_modladder(bg_strbuf *b, int k) {
 /* Three levels of submodels: Outer holds two Middles, each Middle two
  * Inners (an R and a C); the model chains two Outers between a source and
  * a load. */
+/* n instances of fm_nested's Outer in a chain (20 nodes each): above 100,
+ * a model the rows layout draws by default, its frames three deep. */
+__attribute__((unused)) static void fm_outers(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model outers%d\n", n);
+  bg_sb_puts(b, "submodel Inner\n  port p, n\n  1 js\n  R r = 1\n  0 jc\n  C c = 1\n"
+                "  bond p -> js\n  bond js -> r\n  bond js -> jc\n  bond jc -> c\n  bond jc -> n\nend\n"
+                "submodel Middle\n  port p, n\n  Inner S1\n  Inner S2\n  0 jm\n  I m = 1\n"
+                "  bond p -> S1.p\n  bond S1.n -> jm\n  bond jm -> m\n  bond jm -> S2.p\n  bond S2.n -> n\nend\n"
+                "submodel Outer\n  port p, n\n  Middle M1\n  Middle M2\n"
+                "  bond p -> M1.p\n  bond M1.n -> M2.p\n  bond M2.n -> n\nend\nSe U = 1\nR load = 1\n");
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "Outer O%d\n", i);
+  bg_sb_puts(b, "bond U -> O0.p\n");
+  for (int i = 0; i + 1 < n; i++) bg_sb_printf(b, "bond O%d.n -> O%d.p\n", i, i + 1);
+  bg_sb_printf(b, "bond O%d.n -> load\n", n - 1);
+}
+
 static void fm_nested(bg_strbuf *b) {
   bg_sb_puts(b, "model nested\n"
                 "submodel Inner\n  port p, n\n  1 js\n  R r = 1\n  0 jc\n  C c = 1\n"
