@@ -186,6 +186,57 @@ static void test_parts(void) {
   bg_layout_free(&l);
 }
 
+/* Graphs nobody tuned rows to: random trees with extra edges (some between
+ * far nodes), one-ports hanging off, up to three parts, nested clusters
+ * and signal links, random box sizes. On each: no two boxes overlap,
+ * every box inside the reported box, the same layout twice. */
+static unsigned rnd(unsigned *s) { return *s = *s * 1103515245u + 12345u, (*s >> 16) & 0x7fff; }
+
+static void test_random_graphs(void) {
+  enum { R = 240, MAXE = 2 * R };
+  int ok_overlap = 1, ok_inside = 1, ok_same = 1;
+  for (unsigned seed = 1; seed <= 24; seed++) {
+    unsigned s = seed;
+    double w[R], h[R];
+    int tail[MAXE], head[MAXE], ne = 0, cluster[R], parent[8], la[40], lb[40], nl = 0;
+    unsigned char root[R];
+    int parts = 1 + (int)(rnd(&s) % 3), ncl = (int)(rnd(&s) % 8);
+    for (int k = 0; k < ncl; k++) parent[k] = k > 0 && rnd(&s) % 2 ? (int)(rnd(&s) % (unsigned)k) : -1;
+    for (int v = 0; v < R; v++) {
+      w[v] = 10 + rnd(&s) % 60, h[v] = 12 + rnd(&s) % 14, root[v] = v < parts;
+      cluster[v] = ncl ? (int)(rnd(&s) % (unsigned)(ncl + 1)) - 1 : -1;
+      if (v >= parts) { /* joined to an earlier node of its part */
+        int u = (int)(rnd(&s) % (unsigned)v);
+        while (u % parts != v % parts) u = u ? u - 1 : v % parts;
+        tail[ne] = u, head[ne++] = v;
+      }
+    }
+    for (int k = 0; k < R / 8; k++) { /* extra edges within a part */
+      int a = (int)(rnd(&s) % R), b = (int)(rnd(&s) % R);
+      if (a != b && a % parts == b % parts && ne < MAXE) tail[ne] = a, head[ne++] = b;
+    }
+    for (int k = 0; k < 40; k++) la[nl] = (int)(rnd(&s) % R), lb[nl++] = (int)(rnd(&s) % R);
+    bg_layout_in in = {0};
+    in.nnode = R, in.w = w, in.h = h, in.nedge = ne, in.tail = tail, in.head = head, in.root = root;
+    in.engine = "rows", in.node_sep = 8 + seed % 20, in.rank_sep = 20 + seed % 30;
+    in.nlink = nl, in.link_a = la, in.link_b = lb;
+    if (ncl) in.ncluster = ncl, in.cluster = cluster, in.cluster_parent = parent;
+    bg_layout l, l2;
+    char err[128];
+    if (bg_layout_run(&in, &l, err, sizeof err) || bg_layout_run(&in, &l2, err, sizeof err)) {
+      ok_same = 0;
+      continue;
+    }
+    ok_overlap &= overlapping(&in, &l) == 0;
+    ok_inside &= outside(&in, &l) == 0;
+    ok_same &= !memcmp(l.x, l2.x, R * sizeof *l.x) && !memcmp(l.y, l2.y, R * sizeof *l.y);
+    bg_layout_free(&l), bg_layout_free(&l2);
+  }
+  OK(ok_overlap);
+  OK(ok_inside);
+  OK(ok_same);
+}
+
 /* A mass chain of about 2000 nodes lays out with rows by default, with dot
  * when asked, and with rows when the model asks for rows. */
 static char *mass_chain(int n) {
@@ -240,6 +291,7 @@ int main(void) {
   test_chain();
   test_links();
   test_parts();
+  test_random_graphs();
   test_engine_choice();
   return bg_t_done();
 }
