@@ -3,11 +3,15 @@
  * too large for Graphviz to lay out quickly (dot and sfdp take tens of
  * seconds at 10 000 nodes). Nodes are ranked by breadth-first distance from
  * the roots (the same ranks dot is given), each rank is a column in the
- * order the search reached its nodes, and the columns are cut into bands
- * that stack top to bottom, alternately left to right and right to left,
- * so a long chain folds into a roughly A4-landscape page with short bonds
- * at the folds. A one-port hangs above or below its junction, in its column
- * (hang_leaves). Bonds are straight lines. */
+ * order the search reached its nodes, and the columns are cut into even
+ * bands that stack top to bottom, alternately left to right and right to
+ * left, each starting under the last one's end, so a long chain folds into
+ * a page about 1.4 times as wide as high with one vertical bond at each
+ * fold (place). A one-port hangs straight above or below its junction, in
+ * its column, on the side out of a fold's way and facing its signals
+ * (hang_leaves, face_hangers). Disconnected parts are laid out each on its
+ * own and packed in shelves; with frames, a band folds where it splits the
+ * fewest. Bonds are straight lines (docs/drawing.md, Layout). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
