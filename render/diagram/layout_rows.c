@@ -237,11 +237,10 @@ static void place(const bg_layout_in *in, const hangers *hg, rank_cols *c, doubl
 
 /* Each one-port to the side where it is out of its junction's other
  * bonds' way and faces its signals (out: the layout with every one-port
- * above, the second below). A junction whose other bond comes in steeply
- * from above (from a node higher by more than it lies aside: a fold's bond
- * from the band before) hangs a lone one-port below, one whose bond leaves
- * steeply downwards (to the next band) above: on that side the bond would
- * run through the one-port's label. Otherwise the side facing most of the
+ * above, the second below). A junction with a bond from a node of the
+ * band above, higher by more than it lies aside (a fold's), hangs a lone
+ * one-port below, one with a bond down to the next band above: on that
+ * side the bond would run through the one-port's label. Otherwise the side facing most of the
  * nodes its links (signals) join: a partner lower than its junction by
  * more than the junction's height counts for below, higher for above, a
  * hung partner by its own junction's place. A junction's two one-ports swap
@@ -273,7 +272,9 @@ static void face_hangers(const bg_layout_in *in, const int *depth, const rank_co
   for (int u = 0; u < n; u++) {
     int a = hg->above[u], b = hg->below[u];
     if (a < 0) continue;
-    int down = b < 0 && steep[u] != 3 && steep[u] ? steep[u] == 1 : b < 0 ? vote[a] > 0 : vote[a] > vote[b];
+    int down;
+    if (b < 0 && (steep[u] == 1 || steep[u] == 2)) down = steep[u] == 1; /* a fold's bond decides */
+    else down = b < 0 ? vote[a] > 0 : vote[a] > vote[b];
     if (down) {
       hg->above[u] = b, hg->below[u] = a, hg->side[a] = 1;
       if (b >= 0) hg->side[b] = -1;
