@@ -184,10 +184,7 @@ static int signal_links(const bg_diagram_layout *d, int **a, int **b) {
     if (from >= 0) from = d->node_of[from];
     else if (s >= 0) from = d->state_node[s];
     else {
-      const char *var = m->signal_var[i];
-      char *end = NULL;
-      long num = (var[0] == 'e' || var[0] == 'f') && var[1] ? strtol(var + 1, &end, 10) : -1;
-      int bond = num >= 0 && !*end ? bg_model_find_bond(m, (int)num) : -1;
+      int bond = bg_signal_bond(m, m->signal_var[i]);
       from = bond >= 0 ? d->node_of[m->bond_head[bond]] : -1;
     }
     if (from >= 0 && from != to) (*a)[n] = from, (*b)[n++] = to;
@@ -224,7 +221,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR"));
   /* rows likewise lays out the default style's boxes, and the result is
    * stretched to fit the style's own (scale_rows) */
-  int rows = !strcmp(engine, "rows") && !any_pinned, refsized = grid || rows;
+  int is_rows = !strcmp(engine, "rows"), rows = is_rows && !any_pinned, refsized = grid || rows;
   bg_style ref;
   bg_style_default(&ref);
   const bg_style *lst = refsized ? &ref : &d->st;
@@ -237,7 +234,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
                      engine, rd, lst->node_sep, lst->rank_sep,
                      d->st.splines, root, weight, 0, NULL, NULL, NULL, 0, NULL, NULL};
   int *link_a = NULL, *link_b = NULL;
-  if (!strcmp(engine, "rows")) in.nlink = signal_links(d, &link_a, &link_b), in.link_a = link_a, in.link_b = link_b;
+  if (is_rows) in.nlink = signal_links(d, &link_a, &link_b), in.link_a = link_a, in.link_b = link_b;
   /* submodel instances: one frame (cluster) each, around its elements */
   int *cluster = NULL;
   double *label_h = NULL;

@@ -51,6 +51,14 @@ int bg_fields_hidden(const bg_diagram_layout *d, int n) {
   return d->rep && n < d->m->nelem && d->rep[n] != n;
 }
 
+/* The bond whose variable a signal reads ("e7", "f7": bond number 7), or -1. */
+int bg_signal_bond(const bg_model *m, const char *var) {
+  if (!var || (var[0] != 'e' && var[0] != 'f') || !var[1]) return -1;
+  char *end;
+  long num = strtol(var + 1, &end, 10);
+  return *end ? -1 : bg_model_find_bond(m, (int)num);
+}
+
 /* ---------------------------------------------------------------- user states */
 /* The user state a signal comes from, or -1. */
 int bg_signal_state(const bg_model *m, int i) {

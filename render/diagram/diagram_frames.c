@@ -51,30 +51,14 @@ static box *instance_boxes(const bg_diagram *d) {
   return b;
 }
 
-/* Whether segment p-q meets box [x0,x1]×[y0,y1] (clipped, Liang–Barsky). */
-static int seg_meets_box(bg_vec p, bg_vec q, double x0, double y0, double x1, double y1) {
-  double t0 = 0, t1 = 1, dx = q.x - p.x, dy = q.y - p.y;
-  const double pp[4] = {-dx, dx, -dy, dy}, qq[4] = {p.x - x0, x1 - p.x, p.y - y0, y1 - p.y};
-  for (int i = 0; i < 4; i++) {
-    if (pp[i] == 0) {
-      if (qq[i] < 0) return 0;
-      continue;
-    }
-    double t = qq[i] / pp[i];
-    if (pp[i] < 0) t0 = fmax(t0, t);
-    else t1 = fmin(t1, t);
-    if (t0 > t1) return 0;
-  }
-  return 1;
-}
-
 /* Whether bond b's line meets the box. */
 static int bond_meets_box(const bg_diagram_layout *L, int b, double x0, double y0, double x1, double y1) {
   const bg_bond_geom *g = &L->bg[b];
   bg_vec p = g->tail;
   for (int i = 0; i <= g->bendn; i++) {
     bg_vec q = i == g->bendn ? g->head : bg_v(L->lay.bendx[g->bendadr + i], L->lay.bendy[g->bendadr + i]);
-    if (seg_meets_box(p, q, x0, y0, x1, y1)) return 1;
+    const double seg[4] = {p.x, p.y, q.x, q.y};
+    if (bg_seg_hits_box(seg, x0, y0, x1, y1)) return 1;
     p = q;
   }
   return 0;

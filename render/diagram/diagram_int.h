@@ -126,6 +126,8 @@ int bg_diagram_muted(const bg_diagram *d);
 /* The layer colour and dash of path (kind 'p') or loop ('l') i. */
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
+/* The bond whose variable a signal reads ("e7", "f7"), or -1. */
+int bg_signal_bond(const bg_model *m, const char *var);
 /* The user state signal i comes from, or -1. */
 int bg_signal_state(const bg_model *m, int i);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */
@@ -218,6 +220,8 @@ void bg_obstacle_item(bg_diagram *d, int i);
 /* The same for a path or loop polyline: its segments remember their owner
  * (1, 2, ...); bond b's line is owned by -1 - b. */
 void bg_obstacle_owned(bg_diagram *d, int i, int owner);
+/* Whether segment s[0],s[1] - s[2],s[3] meets box [x0,x1]×[y0,y1] (Liang-Barsky clipping). */
+int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1);
 /* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
 int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
 /* How many segments of polylines other than owner's a w × h box centred at p touches. */

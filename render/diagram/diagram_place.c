@@ -149,8 +149,7 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
   }
 }
 
-/* Whether the segment a-b meets the box (Liang-Barsky clipping). */
-static int seg_hits_box(const double *s, double x0, double y0, double x1, double y1) {
+int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1) {
   double t0 = 0, t1 = 1, dx = s[2] - s[0], dy = s[3] - s[1];
   double p[4] = {-dx, dx, -dy, dy}, q[4] = {s[0] - x0, x1 - s[0], s[1] - y0, y1 - s[1]};
   for (int k = 0; k < 4; k++) {
@@ -184,7 +183,7 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
         if (owner < 0 && o->seg[k]) continue;
         if (owner > 0 && (o->owner[k] <= 0 || o->owner[k] == owner)) continue;
         const double *b = o->box + 4 * k;
-        if (o->seg[k] ? seg_hits_box(b, x0, y0, x1, y1)
+        if (o->seg[k] ? bg_seg_hits_box(b, x0, y0, x1, y1)
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
           score += o->seg[k] ? 1 : 10; /* covering text is worse than crossing lines */
       }
@@ -253,7 +252,7 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
         if (o->ekey[e] != key || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
         const double *r = o->box + 4 * k;
-        if (!o->seg[k]) boxes += seg_hits_box(s, r[0], r[1], r[2], r[3]);
+        if (!o->seg[k]) boxes += bg_seg_hits_box(s, r[0], r[1], r[2], r[3]);
         else if (o->owner[k] != owner && segs_meet(s, r)) ++*(o->owner[k] < 0 ? bonds : lines);
       }
     }

@@ -110,11 +110,7 @@ static void signal_self(bg_diagram *d, sigrole role, int e, int hot) {
 
 /* A bond variable (e7, f7): from a dot on the bond, at its middle or near it. */
 static int signal_from_bond(bg_diagram *d, bg_router *rt, sigrole role, const char *var, int to, int hot) {
-  const bg_model *m = d->m;
-  if ((var[0] != 'e' && var[0] != 'f') || !var[1]) return -1;
-  char *end;
-  long num = strtol(var + 1, &end, 10);
-  int b = *end ? -1 : bg_model_find_bond(m, (int)num);
+  int b = bg_signal_bond(d->m, var);
   if (b < 0) return -1;
   /* the group of a bond variable: after the nodes, two per bond (e, f) */
   const bg_signal_route *r = route_of(d, rt, -1, b, to, d->L->nnode + 2 * b + (var[0] == 'f'));
