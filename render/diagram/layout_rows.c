@@ -24,17 +24,17 @@
  * placed directly above that neighbour, in its column, with a vertical bond;
  * a second such node below it. A third and further stay in the next column
  * as other nodes (stacked on one side, a bond would run through the nearer
- * one's box). host[v]: the node v hangs off, or -1; side[v]: -1 above, 1 below;
- * above[u], below[u]: what hangs off u, or -1. */
+ * one's box). host[v]: the node v hangs off, or -1; above[u], below[u]:
+ * what hangs off u, or -1. */
 typedef struct hangers {
-  int *host, *side, *above, *below;
+  int *host, *above, *below;
   double *gap; /* per junction: between it and what hangs off it */
 } hangers;
 
 static void hang_leaves(const bg_layout_in *in, const int *depth, const int *order, hangers *hg) {
   int n = in->nnode;
   int *deg = bg_xcalloc((size_t)n + 1, sizeof *deg), *nb = bg_xcalloc((size_t)n + 1, sizeof *nb);
-  hg->host = bg_xcalloc((size_t)n + 1, sizeof *hg->host), hg->side = bg_xcalloc((size_t)n + 1, sizeof *hg->side);
+  hg->host = bg_xcalloc((size_t)n + 1, sizeof *hg->host);
   hg->above = bg_xcalloc((size_t)n + 1, sizeof *hg->above), hg->below = bg_xcalloc((size_t)n + 1, sizeof *hg->below);
   for (int e = 0; e < in->nedge; e++) {
     int t = in->tail[e], h = in->head[e];
@@ -51,14 +51,14 @@ static void hang_leaves(const bg_layout_in *in, const int *depth, const int *ord
   for (int k = 0; k < n; k++) { /* in search order: the same choice every run */
     int v = order[k], u = nb[v];
     if (deg[v] != 1 || depth[v] == 0 || u == v || deg[u] < 2) continue;
-    if (hg->above[u] < 0) hg->above[u] = v, hg->host[v] = u, hg->side[v] = -1;
-    else if (hg->below[u] < 0) hg->below[u] = v, hg->host[v] = u, hg->side[v] = 1;
+    if (hg->above[u] < 0) hg->above[u] = v, hg->host[v] = u;
+    else if (hg->below[u] < 0) hg->below[u] = v, hg->host[v] = u;
   }
   free(deg), free(nb);
 }
 
 static void hangers_free(hangers *hg) {
-  free(hg->host), free(hg->side), free(hg->above), free(hg->below), free(hg->gap);
+  free(hg->host), free(hg->above), free(hg->below), free(hg->gap);
 }
 
 /* A node's slot in its column: its own box and those hanging off it, each
@@ -95,6 +95,10 @@ typedef struct rank_cols {
   int *cl;          /* the innermost cluster (frame) holding every node of the column, -1: none;
                        NULL without clusters */
 } rank_cols;
+
+static void rank_cols_free(rank_cols *c) {
+  free(c->adr), free(c->node), free(c->w), free(c->h), free(c->mid), free(c->band), free(c->cl);
+}
 
 static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
                          rank_cols *c) {
@@ -275,10 +279,7 @@ static void face_hangers(const bg_layout_in *in, const int *depth, const rank_co
     int down;
     if (b < 0 && (steep[u] == 1 || steep[u] == 2)) down = steep[u] == 1; /* a fold's bond decides */
     else down = b < 0 ? vote[a] > 0 : vote[a] > vote[b];
-    if (down) {
-      hg->above[u] = b, hg->below[u] = a, hg->side[a] = 1;
-      if (b >= 0) hg->side[b] = -1;
-    }
+    if (down) hg->above[u] = b, hg->below[u] = a;
   }
   free(vote), free(steep);
 }
@@ -309,12 +310,12 @@ static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
   place(in, &hg, &c, page, out);
   { /* again with the one-ports out of their bonds' way and facing their signals (the bands stay) */
     face_hangers(in, depth, &c, out, &hg);
-    free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band), free(c.cl);
+    rank_cols_free(&c);
     rank_columns(in, depth, order, &hg, &c);
     place(in, &hg, &c, page, out);
   }
   fit_box(in, out);
-  free(c.adr), free(c.node), free(c.w), free(c.h), free(c.mid), free(c.band), free(c.cl);
+  rank_cols_free(&c);
   hangers_free(&hg);
   free(order), free(depth);
 }
@@ -349,6 +350,38 @@ static int taller_first(const void *a, const void *b) {
   return p->k - q->k;
 }
 
+/* Part p of `in` as a graph of its own: its nodes (node[0..nnode), in
+ * order), their edges and links renumbered; the arrays are the part's. */
+typedef struct part_in {
+  bg_layout_in in;
+  const int *node;
+} part_in;
+
+static void part_input(const bg_layout_in *in, const int *node, int pn, const int *edge, int pe, const int *link,
+                       int pl, const int *local, part_in *pi) {
+  double *w = bg_xcalloc((size_t)pn + 1, sizeof *w), *h = bg_xcalloc((size_t)pn + 1, sizeof *h);
+  int *t = bg_xcalloc((size_t)pe + 1, sizeof *t), *hd = bg_xcalloc((size_t)pe + 1, sizeof *hd);
+  int *la = bg_xcalloc((size_t)pl + 1, sizeof *la), *lb = bg_xcalloc((size_t)pl + 1, sizeof *lb);
+  unsigned char *root = in->root ? bg_xcalloc((size_t)pn + 1, 1) : NULL;
+  int *cl = in->cluster ? bg_xcalloc((size_t)pn + 1, sizeof *cl) : NULL;
+  for (int i = 0; i < pn; i++) {
+    w[i] = in->w[node[i]], h[i] = in->h[node[i]];
+    if (root) root[i] = in->root[node[i]];
+    if (cl) cl[i] = in->cluster[node[i]];
+  }
+  for (int i = 0; i < pe; i++) t[i] = local[in->tail[edge[i]]], hd[i] = local[in->head[edge[i]]];
+  for (int i = 0; i < pl; i++) la[i] = local[in->link_a[link[i]]], lb[i] = local[in->link_b[link[i]]];
+  pi->in = *in, pi->node = node;
+  pi->in.nnode = pn, pi->in.w = w, pi->in.h = h, pi->in.nedge = pe, pi->in.tail = t, pi->in.head = hd;
+  pi->in.root = root, pi->in.cluster = cl, pi->in.nlink = pl, pi->in.link_a = la, pi->in.link_b = lb;
+  pi->in.weight = NULL, pi->in.pinned = NULL, pi->in.px = pi->in.py = NULL;
+}
+
+static void part_input_free(part_in *pi) {
+  free((void *)pi->in.w), free((void *)pi->in.h), free((void *)pi->in.tail), free((void *)pi->in.head);
+  free((void *)pi->in.link_a), free((void *)pi->in.link_b), free((void *)pi->in.root), free((void *)pi->in.cluster);
+}
+
 /* Disconnected parts are laid out each on its own (in one set of columns
  * their bands would interleave, and a part's folds cross the other's rows)
  * and packed in shelves: the tallest first, left to right, 2 × rank_sep
@@ -381,38 +414,28 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   for (int p = 0; p < np; p++) fill[p] = 0;
   for (int k = 0; k < in->nlink; k++)
     if (part[in->link_a[k]] == part[in->link_b[k]]) link[ladr[part[in->link_a[k]]] + fill[part[in->link_a[k]]]++] = k;
+  part_in *pi = bg_xcalloc((size_t)np + 1, sizeof *pi);
+  for (int p = 0; p < np; p++)
+    part_input(in, node + nadr[p], nadr[p + 1] - nadr[p], edge + eadr[p], eadr[p + 1] - eadr[p], link + ladr[p],
+               ladr[p + 1] - ladr[p], local, &pi[p]);
   part_box *box = bg_xcalloc((size_t)np + 1, sizeof *box);
   double area = 0, widest = 0, gap = 2 * in->rank_sep, page = 0;
-  for (int pass = 0; pass < 2; pass++)
-  for (int p = 0; p < np; p++) {
-    if (p == 0) area = widest = 0;
-    int pn = nadr[p + 1] - nadr[p], pe = eadr[p + 1] - eadr[p], pl = ladr[p + 1] - ladr[p];
-    double *w = bg_xcalloc((size_t)pn + 1, sizeof *w), *h = bg_xcalloc((size_t)pn + 1, sizeof *h);
-    int *t = bg_xcalloc((size_t)pe + 1, sizeof *t), *hd = bg_xcalloc((size_t)pe + 1, sizeof *hd);
-    int *la = bg_xcalloc((size_t)pl + 1, sizeof *la), *lb = bg_xcalloc((size_t)pl + 1, sizeof *lb);
-    unsigned char *root = in->root ? bg_xcalloc((size_t)pn + 1, 1) : NULL;
-    for (int i = 0; i < pn; i++) {
-      int v = node[nadr[p] + i];
-      w[i] = in->w[v], h[i] = in->h[v];
-      if (root) root[i] = in->root[v];
+  for (int pass = 0; pass < 2; pass++) { /* each part alone, then each with bands as wide as the page */
+    area = widest = 0;
+    for (int p = 0; p < np; p++) {
+      int pn = pi[p].in.nnode;
+      bg_layout lay = {0};
+      lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
+      rows_one(&pi[p].in, page, &lay);
+      for (int i = 0; i < pn; i++) out->x[pi[p].node[i]] = lay.x[i], out->y[pi[p].node[i]] = lay.y[i];
+      box[p] = (part_box){lay.width, lay.height, p};
+      area += (lay.width + gap) * (lay.height + gap), widest = fmax(widest, lay.width);
+      free(lay.x), free(lay.y);
     }
-    for (int i = 0; i < pe; i++) t[i] = local[in->tail[edge[eadr[p] + i]]], hd[i] = local[in->head[edge[eadr[p] + i]]];
-    for (int i = 0; i < pl; i++) la[i] = local[in->link_a[link[ladr[p] + i]]], lb[i] = local[in->link_b[link[ladr[p] + i]]];
-    bg_layout_in sub = *in;
-    sub.nnode = pn, sub.w = w, sub.h = h, sub.nedge = pe, sub.tail = t, sub.head = hd, sub.root = root;
-    sub.nlink = pl, sub.link_a = la, sub.link_b = lb, sub.weight = NULL, sub.pinned = NULL, sub.px = sub.py = NULL;
-    int *cl = in->cluster ? bg_xcalloc((size_t)pn + 1, sizeof *cl) : NULL;
-    for (int i = 0; cl && i < pn; i++) cl[i] = in->cluster[node[nadr[p] + i]];
-    sub.cluster = cl;
-    bg_layout lay = {0};
-    lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
-    rows_one(&sub, page, &lay);
-    for (int i = 0; i < pn; i++) out->x[node[nadr[p] + i]] = lay.x[i], out->y[node[nadr[p] + i]] = lay.y[i];
-    box[p] = (part_box){lay.width, lay.height, p};
-    area += (lay.width + gap) * (lay.height + gap), widest = fmax(widest, lay.width);
-    free(lay.x), free(lay.y), free(w), free(h), free(t), free(hd), free(la), free(lb), free(root), free(cl);
-    if (p == np - 1 && pass == 0) page = sqrt(1.4 * area); /* again, each part's bands as wide as the page */
+    page = sqrt(1.4 * area);
   }
+  for (int p = 0; p < np; p++) part_input_free(&pi[p]);
+  free(pi);
   qsort(box, (size_t)np, sizeof *box, taller_first);
   double shelf = fmax(widest, sqrt(1.4 * area)), x = 0, y = 0, shelf_h = 0;
   double *dx = bg_xcalloc((size_t)np + 1, sizeof *dx), *dy = bg_xcalloc((size_t)np + 1, sizeof *dy);
