@@ -4,7 +4,11 @@
 0-junctions with an R, I or C each) and a reaction network with S modulating
 signals (species: a C on a 0-junction; reactions: an R on a 1-junction between
 two species, its rate modulated by a third species' concentration).
-Usage: gen_layout_models.py chain N OUT | reactions S OUT"""
+The local network ("nearby") is the same but each reaction is modulated by
+a species two places on along the ring, so a signal's route does not grow
+with the figure (in "reactions" it spans a share of the whole figure, so
+the routes' total length alone grows as S^1.5).
+Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT"""
 import sys
 
 
@@ -22,13 +26,14 @@ def chain(nbond, out):
     out.write("\n".join(lines) + "\n")
 
 
-def reactions(nsignal, out):
+def reactions(nsignal, out, near=False):
     ns = max(4, (3 * nsignal) // 4)  # species; one reaction per signal
     lines = [f"model reactions{nsignal}", "Sf feed = 1"]
     for i in range(ns):
         lines += [f"0 s{i}", f"C c{i} = 1"]
     for k in range(nsignal):
-        lines += [f"1 r{k}", f"R k{k} : f = (1 + c{(k * 7 + 3) % ns}.e) * e"]
+        m = (k % ns + 2) % ns if near else (k * 7 + 3) % ns
+        lines += [f"1 r{k}", f"R k{k} : f = (1 + c{m}.e) * e"]
     lines.append("bond feed -> s0")
     for i in range(ns):
         lines.append(f"bond s{i} -> c{i}")
@@ -42,4 +47,7 @@ def reactions(nsignal, out):
 if __name__ == "__main__":
     what, n, path = sys.argv[1], int(sys.argv[2]), sys.argv[3]
     with open(path, "w") as f:
-        (chain if what == "chain" else reactions)(n, f)
+        if what == "chain":
+            chain(n, f)
+        else:
+            reactions(n, f, near=(what == "nearby"))

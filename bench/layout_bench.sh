@@ -8,7 +8,9 @@
 # build directory), best of 3, with the layout a model of that size gets
 # (rows above 2 000 nodes: both chains, the full reaction network) and, for
 # the reaction networks, rows at both sizes too (the half network has 1 750
-# nodes and would be laid out by dot, which is not linear).
+# nodes and would be laid out by dot, which is not linear); the same for a
+# network whose signals join near neighbours ("nearby"); then the length of
+# the signal lines each network draws (below).
 # Usage: bash bench/layout_bench.sh BGDRAW [BONDS SIGNALS]   (use a Release build)
 set -eu
 BGDRAW=${1:?usage: layout_bench.sh PATH_TO_BGDRAW [BONDS SIGNALS]}
@@ -36,3 +38,32 @@ row() { # LABEL KIND N [ENGINE]
 printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
 row "reactions, $NS signals (rows)" reactions "$NS" rows
+row "nearby reactions, $NS signals (rows)" nearby "$NS" rows
+
+# What the signals' routes draw: the total length of the signal lines in
+# the SVG (bgdraw --layout rows), half and full size. The router's work per
+# point of drawn route is about constant, so where the routes themselves
+# grow faster than the model (signals joining far ends of the figure) the
+# layout cannot be linear: its exponent is bounded below by this one.
+length_of() { # KIND N -> points of signal line drawn
+  python3 "$here/gen_layout_models.py" "$1" "$2" "$dir/m.bg"
+  "$BGDRAW" "$dir/m.bg" --layout rows -o "$dir/m.svg"
+  python3 - "$dir/m.svg" <<'PY'
+import math, re, sys
+total = 0.0
+for m in re.finditer(r'<path class="signal(?:-branch)?" d="([^"]*)"', open(sys.argv[1]).read()):
+    v = [float(x) for x in re.findall(r"-?[\d.]+(?:e-?\d+)?", m.group(1))]
+    p = list(zip(v[0::2], v[1::2]))
+    total += sum(math.dist(p[i], p[i + 1]) for i in range(len(p) - 1))
+print(f"{total:.0f}")
+PY
+}
+lrow() { # LABEL KIND N
+  local l1 l2
+  l1=$(length_of "$2" $(($3 / 2)))
+  l2=$(length_of "$2" "$3")
+  printf '%-34s %8s pt %8s pt   exponent %.2f\n' "$1" "$l1" "$l2" "$(echo "l($l2 / $l1) / l(2)" | bc -l)"
+}
+printf '%-34s %11s %11s\n' "signal lines drawn (rows)" "half" "full"
+lrow "reactions, $NS signals" reactions "$NS"
+lrow "nearby reactions, $NS signals" nearby "$NS"
