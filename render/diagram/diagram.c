@@ -180,13 +180,7 @@ static int signal_links(const bg_diagram_layout *d, int **a, int **b) {
   int n = 0;
   *a = bg_xcalloc((size_t)m->nsignal + 1, sizeof **a), *b = bg_xcalloc((size_t)m->nsignal + 1, sizeof **b);
   for (int i = 0; i < m->nsignal; i++) {
-    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->node_of[m->signal_to[i]];
-    if (from >= 0) from = d->node_of[from];
-    else if (s >= 0) from = d->state_node[s];
-    else {
-      int bond = bg_signal_bond(m, m->signal_var[i]);
-      from = bond >= 0 ? d->node_of[m->bond_head[bond]] : -1;
-    }
+    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
     if (from >= 0 && from != to) (*a)[n] = from, (*b)[n++] = to;
   }
   return n;

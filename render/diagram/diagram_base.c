@@ -20,6 +20,14 @@ bg_vec bg_vscale(bg_vec a, double k) { return bg_v(a.x * k, a.y * k); }
 
 double bg_vlen(bg_vec a) { return hypot(a.x, a.y); }
 
+/* Distance from point c to the segment p-q. */
+double bg_point_seg(bg_vec c, bg_vec p, bg_vec q) {
+  bg_vec u = bg_vsub(q, p);
+  double l2 = u.x * u.x + u.y * u.y, t = l2 > 0 ? ((c.x - p.x) * u.x + (c.y - p.y) * u.y) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
+}
+
 bg_vec bg_vleft(bg_vec d) { return bg_v(d.y, -d.x); }
 
 bg_vec bg_vunit(bg_vec a) {
@@ -66,6 +74,18 @@ int bg_signal_state(const bg_model *m, int i) {
   for (int s = 0; s < m->nstate; s++)
     if (!strcmp(m->state_name[s], m->signal_var[i])) return s;
   return -1;
+}
+
+/* The node signal i is drawn from: its element's, its user state's
+ * integrator, or the head of the bond whose variable it reads; -1 if none
+ * (the layout's signal links and the grid pass's one-ports read this). */
+int bg_signal_from_node(const bg_diagram_layout *d, int i) {
+  const bg_model *m = d->m;
+  int from = m->signal_from[i], s = bg_signal_state(m, i);
+  if (from >= 0) return d->node_of[from];
+  if (s >= 0) return d->state_node[s];
+  int bond = bg_signal_bond(m, m->signal_var[i]);
+  return bond >= 0 ? d->node_of[m->bond_head[bond]] : -1;
 }
 
 /* The element a bond variable of a state expression refers to: the junction

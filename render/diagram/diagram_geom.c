@@ -68,6 +68,37 @@ static bg_vec leave_dir(const bg_diagram_layout *d, int b, int n) {
   return d->m->bond_tail[b] == n ? g->tdir : bg_vscale(g->hdir, -1);
 }
 
+/* Whether, with end circle r at junction j, a causal stroke at j comes
+ * within its own and a bond's half width (and half a line width more) of
+ * the half arrow of another bond ending at j: the formula below keeps a
+ * stroke off the neighbouring lines, but a barb leans back from the circle
+ * towards one neighbour (a one-port at 45 degrees between two bonds whose
+ * barbs lean its way: reactions12's s0). */
+static int stroke_on_barb(const bg_diagram_layout *d, int j, double r) {
+  const bg_model *m = d->m;
+  if (!d->a || !d->a->bond_stroke) return 0;
+  double w = d->st.line_width, half = 4.5 * w, barb = 7 * w * BG_SQRT1_2;
+  bg_vec c = bg_v(d->nx[j], d->ny[j]);
+  int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+  for (int i = 0; i < nb; i++) {
+    int bi = bs[i];
+    if (m->bond_head[bi] != j) continue;
+    bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, r));
+    bg_vec tip = bg_vadd(h, bg_vscale(bg_vadd(bg_barb_side_at(d, bg_vscale(u, -1)), u), barb));
+    for (int k = 0; k < nb; k++) {
+      int bk = bs[k], st = d->a->bond_stroke[bk];
+      if (k == i || !((st == BG_STROKE_HEAD && m->bond_head[bk] == j) || (st == BG_STROKE_TAIL && m->bond_tail[bk] == j)))
+        continue;
+      bg_vec v = leave_dir(d, bk, j), e = bg_vadd(c, bg_vscale(v, r)), n = bg_vscale(bg_vleft(v), half);
+      bg_vec e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
+      double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
+                         fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
+      if (dist < 1.75 * w) return 1;
+    }
+  }
+  return 0;
+}
+
 /* Junction end circles: around the label, and far enough out that a causal
  * stroke (4.5 line widths each side) clears the nearest neighbouring bond
  * by half a line width: r sin(a) >= (4.5 cos(a) + 2) w for the smallest
@@ -88,6 +119,7 @@ static void junction_radii(bg_diagram_layout *d) {
       }
     amin = fmax(amin, BG_PI / 12);
     d->jr[j] = fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), 3 * base);
+    while (d->jr[j] < 3 * base && stroke_on_barb(d, j, d->jr[j])) d->jr[j] += 0.25 * w;
   }
 }
 

@@ -118,6 +118,7 @@ bg_vec bg_vscale(bg_vec a, double k);
 bg_vec bg_vunit(bg_vec a);
 bg_vec bg_vleft(bg_vec d); /* left of travel on a y-down page */
 double bg_vlen(bg_vec a);
+double bg_point_seg(bg_vec c, bg_vec p, bg_vec q); /* distance from c to segment p-q */
 /* Where the ray from a box's centre towards p leaves the box (half sizes hw, hh). */
 bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p);
 /* colours with the highlight applied */
@@ -130,6 +131,8 @@ void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
 int bg_signal_bond(const bg_model *m, const char *var);
 /* The user state signal i comes from, or -1. */
 int bg_signal_state(const bg_model *m, int i);
+/* The node signal i is drawn from (element, integrator or bond head), or -1. */
+int bg_signal_from_node(const bg_diagram_layout *d, int i);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */
 int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
 /* Whether node n is drawn (not an element hidden in a collapsed box). */

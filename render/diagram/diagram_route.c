@@ -132,7 +132,7 @@ static int simplify(bg_vec *p, int n) {
 /* Whether p lies on bond b's line (within 0.5 pt), its half arrow not counted. */
 static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
   for (int i = 0; i <= L->bg[b].bendn; i++)
-    if (bg_route_point_seg(p, bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i)) < 0.5) return 1;
+    if (bg_point_seg(p, bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i)) < 0.5) return 1;
   return 0;
 }
 

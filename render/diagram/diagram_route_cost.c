@@ -42,13 +42,6 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
   return tl >= 0 && tl < 1 ? 1 : 0;
 }
 
-double bg_route_point_seg(bg_vec c, bg_vec p, bg_vec q) {
-  bg_vec u = bg_vsub(q, p);
-  double l2 = u.x * u.x + u.y * u.y, t = l2 > 0 ? ((c.x - p.x) * u.x + (c.y - p.y) * u.y) / l2 : 0;
-  t = t < 0 ? 0 : t > 1 ? 1 : t;
-  return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
-}
-
 /* Whether bond b is one of the current route's own: a bond of its source's
  * or target's node (not the routed bond itself). */
 static int own_bond(const bg_router *r, int b) {
@@ -99,7 +92,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, r->bond >= 0);
     if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
     cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
-    if (r->ix.lmid[k - L->nnode] && bg_route_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
+    if (r->ix.lmid[k - L->nnode] && bg_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
   }
   bg_near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {

@@ -150,7 +150,6 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
  * side (*run: for how long), else 0 (in full at its definition). */
 int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends);
 /* The distance from point c to segment p-q. */
-double bg_route_point_seg(bg_vec c, bg_vec p, bg_vec q);
 /* Whether index segment s is the current route's own (bg_route_detour). */
 int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's
