@@ -15,7 +15,7 @@
  * between hubs is a straight run of free cells, else an elbow (one or two
  * corners) through free cells, else a straight slanted line. Cells hold one
  * thing each, so routed bonds neither cross nor overlap. Components are
- * packed in shelves; a component wider than its wrap width snakes into bands. Then
+ * packed on a skyline; a component wider than its wrap width snakes into bands. Then
  * the cells become points: each grid column as wide as its widest node plus a
  * gap, each row likewise. Everything is linear in the graph size but the
  * sorts. */
@@ -488,28 +488,40 @@ static int by_height(const void *a, const void *b, void *ctx) {
   return height[p] != height[q] ? height[q] - height[p] : p - q;
 }
 
-static void shelve_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff) {
+/* Packs the parts (width[c] + 1 columns with the gap, height[c] rows)
+ * on a page sqrt(area) columns wide, tallest first, each where it sits
+ * highest (then leftmost) on the skyline of those placed: a part beside a
+ * taller one fills the room below its neighbour (in shelves, a shelf was
+ * as tall as its tallest part and the room under the others stayed empty:
+ * docs/drawing.md, "disconnected parts packed"). Work: parts x page width,
+ * the page width being the square root of the parts' area. */
+static void pack_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff) {
   double area = 0;
   int widest = 0;
   for (int i = 0; i < nparts; i++) {
     area += (double)(width[part[i]] + 1) * height[part[i]];
-    widest = width[part[i]] > widest ? width[part[i]] : widest;
+    widest = width[part[i]] + 1 > widest ? width[part[i]] + 1 : widest;
   }
-  int shelf_w = (int)ceil(sqrt(area)), x = 0, y = 0, shelf_h = 0;
-  if (shelf_w < widest) shelf_w = widest;
+  int page_w = (int)ceil(sqrt(area));
+  if (page_w < widest) page_w = widest;
+  int *sky = bg_xcalloc((size_t)page_w + 1, sizeof(int));
   bg_sort(part, (size_t)nparts, sizeof *part, by_height, height);
   for (int i = 0; i < nparts; i++) {
-    int c = part[i];
-    if (x > 0 && x + width[c] > shelf_w) y += shelf_h, x = 0, shelf_h = 0;
-    xoff[c] = x, base[c] = -1 - y;
-    x += width[c] + 1;
-    shelf_h = height[c] > shelf_h ? height[c] : shelf_h;
+    int c = part[i], w = width[c] + 1, best_x = 0, best_y = 1 << 30;
+    for (int x = 0; x + w <= page_w; x++) {
+      int y = 0;
+      for (int k = x; k < x + w && y < best_y; k++) y = sky[k] > y ? sky[k] : y;
+      if (y < best_y) best_y = y, best_x = x;
+    }
+    for (int k = best_x; k < best_x + w; k++) sky[k] = best_y + height[c];
+    xoff[c] = best_x, base[c] = -1 - best_y;
   }
+  free(sky);
 }
 
 /* Each component's hubs snake into bands of at most `wrap` columns when it is
  * wider than that (a long chain becomes rows), and the components are stacked
- * in shelves (shelve_parts). A band runs back from
+ * on the page by pack_parts. A band runs back from
  * under the end of the band before it. */
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
@@ -570,7 +582,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     nstart += nband[c];
     base[c] = -1, part[nparts++] = c; /* marks the component done */
   }
-  shelve_parts(part, nparts, width, height, base, xoff);
+  pack_parts(part, nparts, width, height, base, xoff);
   free(width), free(height), free(part);
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;
