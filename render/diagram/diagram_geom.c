@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Page geometry of the diagram: vectors, where bonds run, barbs, arrowheads. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "diagram/diagram_int.h"
 
@@ -21,13 +22,28 @@ bg_vec bg_node_end(const bg_diagram_layout *d, int n, bg_vec dir) {
   return bg_box_exit(c, d->nw[n] / 2, d->nh[n] / 2, bg_vadd(c, bg_vscale(dir, 1e4)));
 }
 
+/* The radius at which bond b leaves junction n (its end there), 0 if n is
+ * not a junction end of b. */
+static double *bond_radius(const bg_diagram_layout *d, int b, int n) {
+  return &d->bjr[2 * b + (d->m->bond_head[b] == n)];
+}
+
+/* Where bond b ends at node n, leaving it in direction dir. */
+static bg_vec bond_end(const bg_diagram_layout *d, int b, int n, bg_vec dir) {
+  if (d->bjr && n < d->m->nelem && (d->m->bond_tail[b] == n || d->m->bond_head[b] == n)) {
+    double r = *bond_radius(d, b, n);
+    if (r > 0) return bg_vadd(node_centre(d, n), bg_vscale(dir, r));
+  }
+  return bg_node_end(d, n, dir);
+}
+
 static void route_geom(const bg_diagram_layout *d, int b, bg_bond_geom *g) {
   /* a bond through a port of a collapsed instance ends on its box */
   int t = d->node_of[d->m->bond_tail[b]], h = d->node_of[d->m->bond_head[b]], n = g->bendn;
   g->tdir = bg_vunit(bg_vsub(route_pt(d, b, 1), route_pt(d, b, 0)));
   g->hdir = bg_vunit(bg_vsub(route_pt(d, b, n + 1), route_pt(d, b, n)));
-  g->tail = bg_node_end(d, t, g->tdir);
-  g->head = bg_node_end(d, h, bg_vscale(g->hdir, -1));
+  g->tail = bond_end(d, b, t, g->tdir);
+  g->head = bond_end(d, b, h, bg_vscale(g->hdir, -1));
   if (bg_vlen(bg_vsub(node_centre(d, h), node_centre(d, t))) < 1e-9) g->head = g->tail;
   g->mid = bg_geom_along(d, b, 0.5, &g->mdir);
 }
@@ -68,34 +84,48 @@ static bg_vec leave_dir(const bg_diagram_layout *d, int b, int n) {
   return d->m->bond_tail[b] == n ? g->tdir : bg_vscale(g->hdir, -1);
 }
 
-/* Whether, with end circle r at junction j, a causal stroke at j comes
- * within its own and a bond's half width (and half a line width more) of
- * the half arrow of another bond ending at j: the formula below keeps a
- * stroke off the neighbouring lines, but a barb leans back from the circle
- * towards one neighbour (a one-port at 45 degrees between two bonds whose
- * barbs lean its way: reactions12's s0). */
-static int stroke_on_barb(const bg_diagram_layout *d, int j, double r) {
+/* Whether bond bk's causal stroke, at radius rk from junction j's centre,
+ * comes within its own and a bond's half width (and half a line width
+ * more) of the half arrow of bond bi ending at j at radius ri: the angle
+ * rule below keeps a stroke off the neighbouring lines, but a barb leans
+ * back from its end towards one neighbour (a one-port at 45 degrees
+ * between two bonds whose barbs lean its way: reactions12's s0). */
+static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, int bk, double rk) {
   const bg_model *m = d->m;
-  if (!d->a || !d->a->bond_stroke) return 0;
+  int st = d->a->bond_stroke[bk];
+  if (m->bond_head[bi] != j || !((st == BG_STROKE_HEAD && m->bond_head[bk] == j) || (st == BG_STROKE_TAIL && m->bond_tail[bk] == j)))
+    return 0;
   double w = d->st.line_width, half = 4.5 * w, barb = 7 * w * BG_SQRT1_2;
   bg_vec c = bg_v(d->nx[j], d->ny[j]);
+  bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, ri));
+  bg_vec tip = bg_vadd(h, bg_vscale(bg_vadd(bg_barb_side_at(d, bg_vscale(u, -1)), u), barb));
+  bg_vec v = leave_dir(d, bk, j), e = bg_vadd(c, bg_vscale(v, rk)), n = bg_vscale(bg_vleft(v), half);
+  bg_vec e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
+  double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
+                     fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
+  return dist < 1.75 * w;
+}
+
+/* The radius the angle rule asks of a bond at junction j whose smallest
+ * angle to another bond there is amin (see junction_radii). */
+static double angle_radius(const bg_diagram_layout *d, int j, double amin) {
+  double base = 0.5 * fmax(d->nw[j], d->nh[j]), w = d->st.line_width;
+  amin = fmax(amin, BG_PI / 12);
+  return fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), 3 * base);
+}
+
+/* Whether some stroke and barb at junction j are too close with the bonds'
+ * radii as they are (stroke_on_barb); with only >= 0 only the pairs with
+ * bond `only` in them. */
+static int any_stroke_on_barb(const bg_diagram_layout *d, int j, int only) {
+  const bg_model *m = d->m;
+  if (!d->a || !d->a->bond_stroke) return 0;
   int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
-  for (int i = 0; i < nb; i++) {
-    int bi = bs[i];
-    if (m->bond_head[bi] != j) continue;
-    bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, r));
-    bg_vec tip = bg_vadd(h, bg_vscale(bg_vadd(bg_barb_side_at(d, bg_vscale(u, -1)), u), barb));
-    for (int k = 0; k < nb; k++) {
-      int bk = bs[k], st = d->a->bond_stroke[bk];
-      if (k == i || !((st == BG_STROKE_HEAD && m->bond_head[bk] == j) || (st == BG_STROKE_TAIL && m->bond_tail[bk] == j)))
-        continue;
-      bg_vec v = leave_dir(d, bk, j), e = bg_vadd(c, bg_vscale(v, r)), n = bg_vscale(bg_vleft(v), half);
-      bg_vec e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
-      double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
-                         fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
-      if (dist < 1.75 * w) return 1;
-    }
-  }
+  for (int i = 0; i < nb; i++)
+    for (int k = 0; k < nb; k++)
+      if (k != i && (only < 0 || bs[i] == only || bs[k] == only) &&
+          stroke_on_barb(d, j, bs[i], *bond_radius(d, bs[i], j), bs[k], *bond_radius(d, bs[k], j)))
+        return 1;
   return 0;
 }
 
@@ -103,23 +133,51 @@ static int stroke_on_barb(const bg_diagram_layout *d, int j, double r) {
  * stroke (4.5 line widths each side) clears the nearest neighbouring bond
  * by half a line width: r sin(a) >= (4.5 cos(a) + 2) w for the smallest
  * angle a between two bonds at the junction (capped: a tiny angle cannot
- * be cured by distance). */
+ * be cured by distance); then grown a quarter line width at a time while a
+ * stroke and a barb there are too close (stroke_on_barb). One circle for
+ * the junction's bonds, but a one-port's bond it would leave shorter than
+ * 2.5 half arrows leaves at the radius its own smallest angle asks (issue
+ * 31: the circle sized for the narrowest pair cut series_conductances'
+ * bonds 2 and 4 to 17 pt for a 7 pt barb beside its diagonal, and
+ * reactions12's c3 below its half arrow in slides). Per bond end in
+ * d->bjr; d->jr keeps the circle (an Sf* or a box port drawn from it). */
 static void junction_radii(bg_diagram_layout *d) {
   const bg_model *m = d->m;
   d->jr = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(double));
-  double w = d->st.line_width;
+  d->bjr = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 2) * sizeof(double));
+  double w = d->st.line_width, least = 2.5 * 7 * w;
   for (int j = 0; j < m->nelem; j++) {
     if (!bg_elem_is_junction(m->elem_kind[j]) || !bg_node_shown(d, j)) continue;
-    double base = 0.5 * fmax(d->nw[j], d->nh[j]), amin = BG_PI / 2;
+    double cap = 1.5 * fmax(d->nw[j], d->nh[j]), amin = BG_PI / 2;
     int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
-    for (int i = 0; i < nb; i++)
-      for (int k = i + 1; k < nb; k++) {
+    double *own = bg_xcalloc((size_t)nb + 1, sizeof *own);
+    for (int i = 0; i < nb; i++) {
+      own[i] = BG_PI / 2;
+      for (int k = 0; k < nb; k++) {
+        if (k == i) continue;
         bg_vec u = leave_dir(d, bs[i], j), v = leave_dir(d, bs[k], j);
-        amin = fmin(amin, acos(fmax(-1, fmin(1, u.x * v.x + u.y * v.y))));
+        own[i] = fmin(own[i], acos(fmax(-1, fmin(1, u.x * v.x + u.y * v.y))));
       }
-    amin = fmax(amin, BG_PI / 12);
-    d->jr[j] = fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), 3 * base);
-    while (d->jr[j] < 3 * base && stroke_on_barb(d, j, d->jr[j])) d->jr[j] += 0.25 * w;
+      amin = fmin(amin, own[i]);
+    }
+    double r = angle_radius(d, j, amin);
+    for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
+    while (r < cap && any_stroke_on_barb(d, j, -1)) {
+      r = fmin(cap, r + 0.25 * w);
+      for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
+    }
+    d->jr[j] = r;
+    for (int i = 0; i < nb; i++) {
+      int b = bs[i], o = m->bond_tail[b] == j ? m->bond_head[b] : m->bond_tail[b];
+      if (bg_elem_is_junction(m->elem_kind[o]) || d->bg[b].bendn || d->bg[b].spln) continue;
+      bg_vec c = bg_v(d->nx[j], d->ny[j]), u = leave_dir(d, b, j);
+      bg_vec far = m->bond_tail[b] == j ? d->bg[b].head : d->bg[b].tail; /* the one-port's end (pass 0) */
+      if (bg_vlen(bg_vsub(far, bg_vadd(c, bg_vscale(u, r)))) >= least) continue;
+      double *rb = bond_radius(d, b, j);
+      *rb = fmin(r, angle_radius(d, j, own[i]));
+      while (*rb < r && any_stroke_on_barb(d, j, b)) *rb = fmin(r, *rb + 0.25 * w);
+    }
+    free(own);
   }
 }
 
@@ -149,7 +207,7 @@ static void spline_geom(const bg_diagram_layout *d, int adr, int n, bg_bond_geom
 
 void bg_geom_bonds(bg_diagram_layout *d) {
   const bg_model *m = d->m;
-  d->jr = NULL;
+  d->jr = NULL, d->bjr = NULL;
   for (int pass = 0; pass < 2; pass++) {
     /* pass 0: directions (with box ends); pass 1: again with junction circles */
     for (int b = 0; b < m->nbond; b++) {

@@ -59,6 +59,7 @@ typedef struct bg_diagram_layout {
   double *splx, *sply;       /* spline points moved onto the page */
   bg_bond_geom *bg;          /* per bond */
   double *jr;                /* per node: radius of a junction's end circle, else 0 */
+  double *bjr;               /* per bond end (2 b + 1: head): radius it leaves its junction at, else 0 */
   bg_arena arena;
 } bg_diagram_layout;
 
