@@ -488,14 +488,43 @@ static int by_height(const void *a, const void *b, void *ctx) {
   return height[p] != height[q] ? height[q] - height[p] : p - q;
 }
 
-/* Packs the parts (width[c] + 1 columns with the gap, height[c] rows)
- * on a page sqrt(area) columns wide, tallest first, each where it sits
- * highest (then leftmost) on the skyline of those placed: a part beside a
- * taller one fills the room below its neighbour (in shelves, a shelf was
- * as tall as its tallest part and the room under the others stayed empty:
- * docs/drawing.md, "disconnected parts packed"). Work: parts x page width,
- * the page width being the square root of the parts' area. */
-static void pack_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff) {
+static int by_width(const void *a, const void *b, void *ctx) {
+  const int *width = ctx, p = *(const int *)a, q = *(const int *)b;
+  return width[p] != width[q] ? width[q] - width[p] : p - q;
+}
+
+/* Places the parts in `order` (width[c] + 1 columns with the gap,
+ * height[c] rows) on a page page_w columns wide, each where it sits highest
+ * (then leftmost) on the skyline of those placed; returns the area of the
+ * box they fill (columns x rows). */
+static double skyline(const int *order, int nparts, const int *width, const int *height, int page_w, int *xoff,
+                      int *base) {
+  int *sky = bg_xcalloc((size_t)page_w + 1, sizeof(int)), used_w = 0, used_h = 0;
+  for (int i = 0; i < nparts; i++) {
+    int c = order[i], w = width[c] + 1, best_x = 0, best_y = 1 << 30;
+    for (int x = 0; x + w <= page_w; x++) {
+      int y = 0;
+      for (int k = x; k < x + w && y < best_y; k++) y = sky[k] > y ? sky[k] : y;
+      if (y < best_y) best_y = y, best_x = x;
+    }
+    for (int k = best_x; k < best_x + w; k++) sky[k] = best_y + height[c];
+    xoff[c] = best_x, base[c] = -1 - best_y;
+    used_w = best_x + w > used_w ? best_x + w : used_w;
+    used_h = best_y + height[c] > used_h ? best_y + height[c] : used_h;
+  }
+  free(sky);
+  return (double)used_w * used_h;
+}
+
+/* Packs the parts on a page sqrt(area) columns wide (at least the widest)
+ * on a skyline (skyline), the tallest first and then the widest first, and
+ * keeps the order that fills the smaller box: a part beside a taller one
+ * fills the room below its shorter neighbours (in shelves, a shelf was as
+ * tall as its tallest part and the room under the others stayed empty),
+ * and neither order wins on every model (docs/drawing.md, "disconnected
+ * parts packed"). xoff and base are per component (n of them). Work: parts
+ * x page width, the page width being the square root of the parts' area. */
+static void pack_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff, int n) {
   double area = 0;
   int widest = 0;
   for (int i = 0; i < nparts; i++) {
@@ -504,19 +533,15 @@ static void pack_parts(int *part, int nparts, const int *width, int *height, int
   }
   int page_w = (int)ceil(sqrt(area));
   if (page_w < widest) page_w = widest;
-  int *sky = bg_xcalloc((size_t)page_w + 1, sizeof(int));
+  int *wide = bg_xcalloc((size_t)nparts + 1, sizeof(int));
+  int *xw = bg_xcalloc((size_t)n + 1, sizeof(int)), *bw = bg_xcalloc((size_t)n + 1, sizeof(int));
+  memcpy(wide, part, (size_t)nparts * sizeof(int));
   bg_sort(part, (size_t)nparts, sizeof *part, by_height, height);
-  for (int i = 0; i < nparts; i++) {
-    int c = part[i], w = width[c] + 1, best_x = 0, best_y = 1 << 30;
-    for (int x = 0; x + w <= page_w; x++) {
-      int y = 0;
-      for (int k = x; k < x + w && y < best_y; k++) y = sky[k] > y ? sky[k] : y;
-      if (y < best_y) best_y = y, best_x = x;
-    }
-    for (int k = best_x; k < best_x + w; k++) sky[k] = best_y + height[c];
-    xoff[c] = best_x, base[c] = -1 - best_y;
-  }
-  free(sky);
+  bg_sort(wide, (size_t)nparts, sizeof *wide, by_width, (void *)width);
+  double by_h = skyline(part, nparts, width, height, page_w, xoff, base);
+  if (skyline(wide, nparts, width, height, page_w, xw, bw) < by_h)
+    for (int i = 0; i < nparts; i++) xoff[part[i]] = xw[part[i]], base[part[i]] = bw[part[i]];
+  free(wide), free(xw), free(bw);
 }
 
 /* Each component's hubs snake into bands of at most `wrap` columns when it is
@@ -582,7 +607,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     nstart += nband[c];
     base[c] = -1, part[nparts++] = c; /* marks the component done */
   }
-  pack_parts(part, nparts, width, height, base, xoff);
+  pack_parts(part, nparts, width, height, base, xoff, n);
   free(width), free(height), free(part);
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;

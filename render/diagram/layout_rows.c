@@ -10,7 +10,7 @@
  * fold (place). A one-port hangs straight above or below its junction, in
  * its column, on the side out of a fold's way and facing its signals
  * (hang_leaves, face_hangers). Disconnected parts are laid out each on its
- * own and packed in shelves; with frames, a band folds where it splits the
+ * own and packed on a skyline; with frames, a band folds where it splits the
  * fewest. Bonds are straight lines (docs/drawing.md, Layout). */
 #include <math.h>
 #include <stdlib.h>
@@ -350,6 +350,58 @@ static int taller_first(const void *a, const void *b) {
   return p->k - q->k;
 }
 
+/* Packs the parts (box, tallest first) on a page `page` wide, `gap` apart:
+ * each where it sits highest on the skyline of those placed, then
+ * leftmost (its x at the start of a skyline segment); a part beside a
+ * taller one fills the room below its shorter neighbours, where shelves
+ * left it empty (the grid pass's pack_parts does the same on its cells).
+ * The skyline is a list of segments [x0, x1) at height top; work: parts x
+ * segments, at most two segments more per part. Returns the area of the
+ * box the parts fill. */
+static double pack_skyline(const part_box *box, int np, double page, double gap, double *dx, double *dy) {
+  int cap = 2 * np + 2, ns = 1;
+  double *x0 = bg_xcalloc((size_t)cap, sizeof *x0), *x1 = bg_xcalloc((size_t)cap, sizeof *x1);
+  double *top = bg_xcalloc((size_t)cap, sizeof *top);
+  x0[0] = 0, x1[0] = 1e300, top[0] = 0;
+  double used_w = 0, used_h = 0;
+  for (int i = 0; i < np; i++) {
+    double w = box[i].w + gap, best_y = 1e300, best_x = 0;
+    for (int a = 0; a < ns; a++) {
+      double x = x0[a], y = 0;
+      if (a > 0 && x + box[i].w > page) break; /* past the page's right edge (the first always fits) */
+      for (int z = a; z < ns && x0[z] < x + w && y < best_y; z++) y = fmax(y, top[z]);
+      if (y < best_y) best_y = y, best_x = x;
+    }
+    dx[box[i].k] = best_x, dy[box[i].k] = best_y;
+    used_w = fmax(used_w, best_x + box[i].w), used_h = fmax(used_h, best_y + box[i].h);
+    /* the segments under [best_x, best_x + w) become one at best_y + h + gap */
+    double from = best_x, to = best_x + w, h = best_y + box[i].h + gap;
+    double *nx0 = bg_xcalloc((size_t)cap, sizeof *nx0), *nx1 = bg_xcalloc((size_t)cap, sizeof *nx1);
+    double *ntop = bg_xcalloc((size_t)cap, sizeof *ntop);
+    int nn = 0, put = 0;
+    for (int a = 0; a < ns; a++) {
+      if (x1[a] <= from || x0[a] >= to) {
+        if (x0[a] >= to && !put) nx0[nn] = from, nx1[nn] = to, ntop[nn++] = h, put = 1;
+        nx0[nn] = x0[a], nx1[nn] = x1[a], ntop[nn++] = top[a];
+        continue;
+      }
+      if (x0[a] < from) nx0[nn] = x0[a], nx1[nn] = from, ntop[nn++] = top[a];
+      if (!put) nx0[nn] = from, nx1[nn] = to, ntop[nn++] = h, put = 1;
+      if (x1[a] > to) nx0[nn] = to, nx1[nn] = x1[a], ntop[nn++] = top[a];
+    }
+    free(x0), free(x1), free(top);
+    x0 = nx0, x1 = nx1, top = ntop, ns = nn;
+  }
+  free(x0), free(x1), free(top);
+  return used_w * used_h;
+}
+
+static int wider_first(const void *a, const void *b) {
+  const part_box *p = a, *q = b;
+  if (p->w != q->w) return p->w > q->w ? -1 : 1;
+  return p->k - q->k;
+}
+
 /* Part p of `in` as a graph of its own: its nodes (node[0..nnode), in
  * order), their edges and links renumbered; the arrays are the part's. */
 typedef struct part_in {
@@ -384,9 +436,8 @@ static void part_input_free(part_in *pi) {
 
 /* Disconnected parts are laid out each on its own (in one set of columns
  * their bands would interleave, and a part's folds cross the other's rows)
- * and packed in shelves: the tallest first, left to right, 2 × rank_sep
- * apart, a new shelf when a part would pass the shelf's width, which makes
- * the page about 1.4 times as wide as high (at least the widest part). */
+ * and packed on a skyline (pack_skyline), 2 × rank_sep apart, on a page
+ * about 1.4 times as wide as high (at least the widest part). */
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   int n = in->nnode;
   out->x = bg_xcalloc((size_t)n + 1, sizeof *out->x);
@@ -436,14 +487,17 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   }
   for (int p = 0; p < np; p++) part_input_free(&pi[p]);
   free(pi);
-  qsort(box, (size_t)np, sizeof *box, taller_first);
-  double shelf = fmax(widest, sqrt(1.4 * area)), x = 0, y = 0, shelf_h = 0;
+  /* the tallest first, then the widest first: the order that fills the
+   * smaller box (neither wins on every model: docs/drawing.md) */
   double *dx = bg_xcalloc((size_t)np + 1, sizeof *dx), *dy = bg_xcalloc((size_t)np + 1, sizeof *dy);
-  for (int i = 0; i < np; i++) {
-    if (x > 0 && x + box[i].w > shelf) y += shelf_h + gap, x = 0, shelf_h = 0;
-    dx[box[i].k] = x, dy[box[i].k] = y;
-    x += box[i].w + gap, shelf_h = fmax(shelf_h, box[i].h);
-  }
+  double *wx = bg_xcalloc((size_t)np + 1, sizeof *wx), *wy = bg_xcalloc((size_t)np + 1, sizeof *wy);
+  double pw = fmax(widest, sqrt(1.4 * area));
+  qsort(box, (size_t)np, sizeof *box, taller_first);
+  double by_h = pack_skyline(box, np, pw, gap, dx, dy);
+  qsort(box, (size_t)np, sizeof *box, wider_first);
+  if (pack_skyline(box, np, pw, gap, wx, wy) < by_h)
+    for (int p = 0; p < np; p++) dx[p] = wx[p], dy[p] = wy[p];
+  free(wx), free(wy);
   for (int v = 0; v < n; v++) out->x[v] += dx[part[v]], out->y[v] += dy[part[v]];
   fit_box(in, out);
   free(part), free(nadr), free(eadr), free(ladr), free(local), free(node), free(edge), free(link), free(fill);
