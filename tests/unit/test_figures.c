@@ -629,8 +629,8 @@ static void test_parts_packed(void) {
   static const struct {
     int k;
     double limit;
-  } parts[] = {{2, 1.15}, {4, 2.03}, {6, 1.77}, {9, 1.43}, {16, 1.65}};
-  /* stacked: 1.14 2.07 2.22 1.82 2.16; in shelves: 1.14 2.02 1.76 1.45 1.69 */
+  } parts[] = {{2, 1.15}, {4, 1.92}, {6, 1.60}, {9, 1.43}, {16, 1.65}};
+  /* stacked: 1.14 2.07 2.22 1.82 2.16; in shelves: 1.14 2.02 1.76 1.45 1.69; skyline, tallest first: 1.14 2.02 1.76 1.42 1.64 */
   for (size_t g = 0; g < sizeof parts / sizeof parts[0]; g++) {
     bg_strbuf src = {0};
     char name[32];
