@@ -38,7 +38,7 @@ row() { # LABEL KIND N [ENGINE]
 printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
 row "reactions, $NS signals (rows)" reactions "$NS" rows
-row "nearby reactions, $NS signals (rows)" nearby "$NS" rows
+row "nearby, $NS signals (rows)" nearby "$NS" rows
 
 # What the signals' routes draw: the total length of the signal lines in
 # the SVG (bgdraw --layout rows), half and full size. The router's work per
@@ -66,4 +66,4 @@ lrow() { # LABEL KIND N
 }
 printf '%-34s %11s %11s\n' "signal lines drawn (rows)" "half" "full"
 lrow "reactions, $NS signals" reactions "$NS"
-lrow "nearby reactions, $NS signals" nearby "$NS"
+lrow "nearby, $NS signals" nearby "$NS"
