@@ -287,6 +287,45 @@ sys.exit(1 if pn.failed else 0)
 EOF
 check "the gallery's numbers (above)" $?
 
+# the plate: the steady state and three poles derived by hand on the page, the poles' sum
+# (the trace), and every row against the modal solution of the conductance matrix (its
+# eigenvectors by NumPy, Debian's python3 as in tests/ifield.sh)
+/usr/bin/python3 - "$d" <<'EOF'
+import json, math, sys
+import numpy as np
+sys.path.insert(0, "tests/lib")
+import page_numbers as pn
+from page_numbers import close
+pn.D = d = sys.argv[1]
+Rs, Cs, Ra, P = 0.5, 50.0, 2.0, 10.0
+G = np.zeros((9, 9))
+for r in range(3):
+    for c in range(3):
+        for rr, cc in ((r, c + 1), (r + 1, c)):
+            if rr < 3 and cc < 3:
+                a, b = 3 * r + c, 3 * rr + cc
+                G[a, a] += 1 / Rs; G[b, b] += 1 / Rs; G[a, b] -= 1 / Rs; G[b, a] -= 1 / Rs
+G[8, 8] += 1 / Ra
+Tss = np.linalg.solve(G, np.eye(9)[0] * P)
+for k, want in ((0, 27.5), (4, 23.75), (8, 20.0)):
+    close(f"plate: steady temperature of cell {k // 3}{k % 3} [K]", Tss[k], want, 1e-12)
+got = sorted(p["re"] for p in json.load(open(f"{d}/plate_linear.json"))["poles"])
+close("plate: poles", len(got), 9, 0)
+close("plate: sum of the poles = -trace(G)/Cs", sum(got), -0.97, 1e-12)
+for i, j in ((0, 1), (0, 2), (1, 2)):
+    want = -(4 - 2 * math.cos(i * math.pi / 3) - 2 * math.cos(j * math.pi / 3)) / (Rs * Cs)
+    close(f"plate: the odd mode's pole ({i}, {j})", min(abs(g - want) for g in got), 0, 1e-12)
+lam, V = np.linalg.eigh(-G / Cs)
+for g, w in zip(got, sorted(lam)):
+    close("plate: pole against the conductance matrix's", g, w, 1e-12)
+coef = V.T @ Tss
+for col, k in ((1, 0), (2, 4), (3, 8)):
+    close(f"plate: largest deviation of T{k // 3}{k % 3} from the modal solution [K]",
+          pn.worst("plate.csv", col, lambda t: Tss[k] - V[k] @ (coef * np.exp(lam * t))), 0, 1e-4)
+sys.exit(1 if pn.failed else 0)
+EOF
+check "the plate's numbers (above)" $?
+
 # the hydraulic cylinder's FMU, run by the suite's FMI importer (RK4) against bgdraw's run
 python3 -c "import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])" "$d/cylinder.fmu" "$tmp/fmu"
 guid=$(sed -n 's/.*guid="\([^"]*\)".*/\1/p' "$tmp/fmu/modelDescription.xml")
