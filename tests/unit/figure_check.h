@@ -9,8 +9,10 @@
  * other, bond ends on another bond (false T-junctions), bonds shorter than
  * their half arrow, crossing frames and elements inside a foreign frame,
  * text below 6 pt, the arrangement a style changed
- * (fc_arrangement), crossings of one element's lines (fc_adjacent) and
- * crossings a short detour avoids (fc_avoidable). Used by test_figures.c; the
+ * (fc_arrangement), crossings of one element's lines (fc_adjacent),
+ * crossings a short detour avoids (fc_avoidable) and the diagonals a
+ * junction of more than four bonds forces (fc_forced_diagonals, not faults).
+ * Used by test_figures.c; the
  * definitions are in docs/drawing.md ("Measured geometry"). */
 #ifndef BG_TEST_FIGURE_CHECK_H
 #define BG_TEST_FIGURE_CHECK_H
@@ -50,6 +52,8 @@ typedef struct fc_stats {
   int bare_branches;         /* signals starting on another signal's line without a branch dot (fc_bare_branches) */
   int adjacent;              /* of crossings and signal × bond, those of lines sharing an end (fc_adjacent) */
   int avoidable;             /* of crossings and signal × bond, those a short detour avoids (fc_avoidable) */
+  int diagonals;             /* bonds at 45 degrees off a junction whose four sides its other bonds take
+                                (fc_forced_diagonals; taken out of slanted by the callers that count them) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -802,6 +806,53 @@ static int *fc_model_bonds(const bg_model *m, const fc_scene *f) {
         if (m->bond_num[b] == f->line[j].id) bond[j] = b;
   }
   return bond;
+}
+
+/* Issue 31: a slanted bond that nothing could have drawn straight. A
+ * junction leaves one bond a side; one with more than four bonds has at
+ * least (bonds - 4) off the axes, and books draw those at 45 degrees. Counts
+ * the bonds drawn as one straight line within half a degree of 45 from a
+ * junction of five or more bonds whose four sides (right, up, left, down)
+ * its other bonds all leave by, each along the axis (within 3 degrees, by
+ * the leg at the junction). Such a bond is counted slanted by fc_slanted;
+ * the callers that count both take these out of slanted. */
+static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
+  fc_scene f;
+  fc_read(s, &f);
+  int n = 0, *bond = fc_model_bonds(m, &f);
+  for (int j = 0; j < f.nline; j++) {
+    const fc_line *l = &f.line[j];
+    if (bond[j] < 0 || l->nseg - l->barb != 1) continue;
+    double dx = fabs(l->seg[0].x1 - l->seg[0].x0), dy = fabs(l->seg[0].y1 - l->seg[0].y0);
+    if (fabs(atan2(dy, dx) - atan(1.0)) > 0.5 * atan(1.0) / 45) continue;
+    int forced = 0;
+    for (int end = 0; end < 2 && !forced; end++) {
+      int e = end ? m->bond_head[bond[j]] : m->bond_tail[bond[j]];
+      if (!bg_elem_is_junction(m->elem_kind[e]) || m->elem_nbond[e] < 5) continue;
+      double cx = 0, cy = 0;
+      int found = 0;
+      for (int i = 0; i < f.nbox && !found; i++)
+        if (f.box[i].elem && !strcmp(f.box[i].name, m->elem_name[e]))
+          cx = (f.box[i].x0 + f.box[i].x1) / 2, cy = (f.box[i].y0 + f.box[i].y1) / 2, found = 1;
+      if (!found) continue;
+      int sides = 0;
+      for (int k = 0; k < f.nline; k++) {
+        if (k == j || bond[k] < 0 || (m->bond_tail[bond[k]] != e && m->bond_head[bond[k]] != e)) continue;
+        const fc_line *o = &f.line[k];
+        const fc_seg *a = &o->seg[0], *z = &o->seg[o->nseg - o->barb - 1];
+        int first = hypot(a->x0 - cx, a->y0 - cy) <= hypot(z->x1 - cx, z->y1 - cy);
+        double ux = first ? a->x1 - a->x0 : z->x0 - z->x1, uy = first ? a->y1 - a->y0 : z->y0 - z->y1;
+        if (fabs(uy) < 0.05 * fabs(ux)) sides |= ux > 0 ? 1 : 4;
+        else if (fabs(ux) < 0.05 * fabs(uy)) sides |= uy < 0 ? 2 : 8;
+      }
+      forced = sides == 15;
+    }
+    n += forced;
+    if (forced && fc_explain) printf("  diagonal: bond %d at 45 degrees off a junction with four sides taken\n", l->id);
+  }
+  free(bond);
+  fc_free(&f);
+  return n;
 }
 
 /* Issue 31, crossings the graph does not force: pairs of bonds that cross

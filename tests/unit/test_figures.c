@@ -119,6 +119,35 @@ static void test_checker_adjacent(void) {
   fx_free(&f);
 }
 
+/* Diagonals a junction forces (fc_forced_diagonals, issue 31) on a
+ * hand-made scene: 0-junction j of five bonds at (100, 0), four along the
+ * axes and bond 5 to C c at 45 degrees: forced. Then bond 4 (down) drawn
+ * off the axis too: j has a free side, and neither diagonal is forced; a
+ * bond at 30 degrees is never counted. */
+static void test_checker_diagonals(void) {
+  static const char *src = "model dg\nSe u = 1\n0 j\nR a = 1\nR b = 1\nR d = 1\nC c = 1\n"
+                           "bond u -> j\nbond j -> a\nbond j -> b\nbond j -> d\nbond j -> c\n";
+  fx f;
+  OK(fm_load(&f, "dg", src) == 0);
+  if (!f.m) return;
+  bg_rgba ink = {0, 0, 0, 1};
+  for (int variant = 0; variant < 3; variant++) {
+    bg_scene s;
+    bg_scene_init(&s, "DejaVu Sans");
+    bg_scene_text(&s, "0", 100, 0, 11, 0.5, 0.5, ink, "node j");
+    bond(&s, 1, 40, 0, 92, 0);
+    bond(&s, 2, 100, -8, 100, -60);
+    bond(&s, 3, 108, 0, 160, 0);
+    if (variant == 1) bond(&s, 4, 100, 8, 130, 60);
+    else bond(&s, 4, 100, 8, 100, 60);
+    if (variant == 2) bond(&s, 5, 106, -6, 106 + 40 * sqrt(0.75), -6 - 40 * 0.5);
+    else bond(&s, 5, 106, -6, 136, -36);
+    INT_EQ(fc_forced_diagonals(f.m, &s), variant == 0 ? 1 : 0);
+    bg_scene_free(&s);
+  }
+  fx_free(&f);
+}
+
 /* Crossings a short detour avoids (fc_avoidable, issue 31) on a hand-made
  * scene: the signal u->d crosses bond 2 (j -> C a, a one-port) 30 pt above
  * C's label: a U round the label, 78 pt longer, crosses nothing: counted;
@@ -260,12 +289,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -304,6 +333,13 @@ static const fc_stats limits[3][2] = {
  * reactions12's c9 (30.6 pt for 31.5) at the junction where bond 11's
  * stroke had touched bond 40's barb. The grid's one-ports at 45 degrees
  * (test_grid_diagonals) took lobl with --show all 34 / 55 / 59 -> 33 / 46 / 49.
+ * The last column (fc_forced_diagonals): bonds at 45 degrees off a junction
+ * whose four sides are taken, no longer counted slanted: with the default
+ * layers the grid's 9 and reactions12's feed, slanted 16 -> 6: three
+ * capacitors with signals at junctions of five or six bonds, left where their
+ * signals' routes were tuned (diagonal_cell; reactions12's c0 and c6,
+ * reactions20's c0), reactions12's chords 23 and 61 (no free cells) and its
+ * bond 40 (routed round a label, out of s9's corner on a short diagonal).
  * Short bonds 1 / 1 / 3 -> 0 and tiny 0 / 0 / 1 -> 0 since a one-port's bond
  * that the junction's common end circle would leave short leaves at the
  * radius its own angles ask (junction_radii): reactions12's c3, c9 and
@@ -312,25 +348,25 @@ static const fc_stats limits[3][2] = {
  * bond 8, the one oblique).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 75, 1, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 79, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 33, 0, 0, 0, 0, 0, 0}},
-    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0}},
-    {{1384, 16, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 17, 1384, 0, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 49, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 75, 1, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 79, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 33, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
+     {1384, 17, 1384, 0, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 49, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent, t->avoidable);
+         t->bare_branches, t->adjacent, t->avoidable, t->diagonals);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -364,6 +400,8 @@ static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbo
       st.spine_bent = fc_spine_bent(f->m, bg_diagram_scene(d));
       st.adjacent = fc_adjacent(f->m, bg_diagram_scene(d));
       st.avoidable = fc_avoidable(f->m, bg_diagram_scene(d));
+      st.diagonals = fc_forced_diagonals(f->m, bg_diagram_scene(d));
+      st.slanted -= st.diagonals;
       if (first) st.arrangement = fc_arrangement(bg_diagram_scene(first), bg_diagram_scene(d));
       fc_add(&tot[si][k], &st);
       if (verbose) print_row(what, &st);
@@ -725,6 +763,10 @@ static void test_grid_diagonals(void) {
                   shape[g][0], shape[g][1], styles[si], diagonal, checked);
       BG_T_REPORT(st.touching == 0, "grid %dx%d %s: %d strokes touching", shape[g][0], shape[g][1], styles[si],
                   st.touching);
+      /* the checker's side: each of them a diagonal a junction forces, and the only slanted bonds */
+      int forced = fc_forced_diagonals(f.m, bg_diagram_scene(d));
+      BG_T_REPORT(forced == inner && st.slanted == inner, "grid %dx%d %s: %d forced diagonals, %d slanted (%d)",
+                  shape[g][0], shape[g][1], styles[si], forced, st.slanted, inner);
       fc_free(&sc);
       bg_diagram_free(d);
     }
@@ -961,14 +1003,18 @@ static void test_long_chain(void) {
  * label and one oblique path crossing (actuator, enzyme). The field-controlled
  * motor (MGY, MSe and their two signals) added counts only, no fault. Since
  * the grid pass places a field as one node (issue 31; it had left models
- * with fields to dot's positions) every fault column is 0. */
+ * with fields to dot's positions) every fault column is 0. The plate (issue
+ * 31, a 3 x 3 mesh) adds its middle capacity's bond at 45 degrees off a
+ * junction whose four sides are taken (last column, not a fault) and, with
+ * every layer, that bond at the grid's own angle (layers keep their room:
+ * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
 static const fc_stats limits_pages[3][2] = {
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{190, 0, 190, 0, 200, 0, 190, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 433, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {190, 0, 190, 0, 308, 0, 190, 0, 108, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 842, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static int list_page_models(const char *folder, char **names, int cap) {
@@ -1014,6 +1060,7 @@ int main(void) {
   test_checker_31();
   test_checker_adjacent();
   test_checker_avoidable();
+  test_checker_diagonals();
   test_long_chain();
   test_examples();
   test_pages();
