@@ -199,13 +199,6 @@ int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
 
 int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, -1) / 10; }
 
-static double seg_dist(const double *s, bg_vec p) {
-  double dx = s[2] - s[0], dy = s[3] - s[1], l2 = dx * dx + dy * dy;
-  double t = l2 > 0 ? ((p.x - s[0]) * dx + (p.y - s[1]) * dy) / l2 : 0;
-  t = t < 0 ? 0 : t > 1 ? 1 : t;
-  return hypot(p.x - s[0] - t * dx, p.y - s[1] - t * dy);
-}
-
 int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
   bg_obstacles *o = obstacles(d);
   int best = -1;
@@ -219,7 +212,8 @@ int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
         if (o->ekey[e] != key || o->stamp[k] == o->query) continue;
         o->stamp[k] = o->query;
         if (o->owner[k] >= 0) continue;
-        double dk = seg_dist(o->box + 4 * k, p);
+        const double *sg = o->box + 4 * k;
+        double dk = bg_point_seg(p, bg_v(sg[0], sg[1]), bg_v(sg[2], sg[3]));
         if (dk < best_d || (dk == best_d && best >= 0 && -1 - o->owner[k] < best))
           best_d = dk, best = -1 - o->owner[k];
       }
