@@ -359,40 +359,41 @@ static int taller_first(const void *a, const void *b) {
  * segments, at most two segments more per part. Returns the area of the
  * box the parts fill. */
 static double pack_skyline(const part_box *box, int np, double page, double gap, double *dx, double *dy) {
-  int cap = 2 * np + 2, ns = 1;
-  double *x0 = bg_xcalloc((size_t)cap, sizeof *x0), *x1 = bg_xcalloc((size_t)cap, sizeof *x1);
-  double *top = bg_xcalloc((size_t)cap, sizeof *top);
-  x0[0] = 0, x1[0] = 1e300, top[0] = 0;
+  typedef struct sky_seg {
+    double x0, x1, top;
+  } sky_seg;
+  int cap = 2 * np + 2, ns = 1; /* each part adds at most two segments */
+  sky_seg *sky = bg_xcalloc((size_t)cap, sizeof *sky), *next = bg_xcalloc((size_t)cap, sizeof *next);
+  sky[0] = (sky_seg){0, 1e300, 0};
   double used_w = 0, used_h = 0;
   for (int i = 0; i < np; i++) {
     double w = box[i].w + gap, best_y = 1e300, best_x = 0;
     for (int a = 0; a < ns; a++) {
-      double x = x0[a], y = 0;
+      double x = sky[a].x0, y = 0;
       if (a > 0 && x + box[i].w > page) break; /* past the page's right edge (the first always fits) */
-      for (int z = a; z < ns && x0[z] < x + w && y < best_y; z++) y = fmax(y, top[z]);
+      for (int z = a; z < ns && sky[z].x0 < x + w && y < best_y; z++) y = fmax(y, sky[z].top);
       if (y < best_y) best_y = y, best_x = x;
     }
     dx[box[i].k] = best_x, dy[box[i].k] = best_y;
     used_w = fmax(used_w, best_x + box[i].w), used_h = fmax(used_h, best_y + box[i].h);
-    /* the segments under [best_x, best_x + w) become one at best_y + h + gap */
-    double from = best_x, to = best_x + w, h = best_y + box[i].h + gap;
-    double *nx0 = bg_xcalloc((size_t)cap, sizeof *nx0), *nx1 = bg_xcalloc((size_t)cap, sizeof *nx1);
-    double *ntop = bg_xcalloc((size_t)cap, sizeof *ntop);
-    int nn = 0, put = 0;
+    /* the segments under [from, to) become one at best_y + h + gap */
+    sky_seg put = {best_x, best_x + w, best_y + box[i].h + gap};
+    int nn = 0, done = 0;
     for (int a = 0; a < ns; a++) {
-      if (x1[a] <= from || x0[a] >= to) {
-        if (x0[a] >= to && !put) nx0[nn] = from, nx1[nn] = to, ntop[nn++] = h, put = 1;
-        nx0[nn] = x0[a], nx1[nn] = x1[a], ntop[nn++] = top[a];
+      sky_seg s = sky[a];
+      if (s.x1 <= put.x0 || s.x0 >= put.x1) {
+        if (s.x0 >= put.x1 && !done) next[nn++] = put, done = 1;
+        next[nn++] = s;
         continue;
       }
-      if (x0[a] < from) nx0[nn] = x0[a], nx1[nn] = from, ntop[nn++] = top[a];
-      if (!put) nx0[nn] = from, nx1[nn] = to, ntop[nn++] = h, put = 1;
-      if (x1[a] > to) nx0[nn] = to, nx1[nn] = x1[a], ntop[nn++] = top[a];
+      if (s.x0 < put.x0) next[nn++] = (sky_seg){s.x0, put.x0, s.top};
+      if (!done) next[nn++] = put, done = 1;
+      if (s.x1 > put.x1) next[nn++] = (sky_seg){put.x1, s.x1, s.top};
     }
-    free(x0), free(x1), free(top);
-    x0 = nx0, x1 = nx1, top = ntop, ns = nn;
+    sky_seg *t = sky;
+    sky = next, next = t, ns = nn;
   }
-  free(x0), free(x1), free(top);
+  free(sky), free(next);
   return used_w * used_h;
 }
 
