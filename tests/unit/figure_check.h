@@ -808,6 +808,17 @@ static int *fc_model_bonds(const bg_model *m, const fc_scene *f) {
   return bond;
 }
 
+/* Per element of m its label's box in f (the first with its name), or -1. */
+static int *fc_elem_boxes(const bg_model *m, const fc_scene *f) {
+  int *elem_box = malloc(((size_t)m->nelem + 1) * sizeof(int));
+  for (int e = 0; e < m->nelem; e++) elem_box[e] = -1;
+  for (int i = 0; i < f->nbox; i++)
+    if (f->box[i].elem)
+      for (int e = 0; e < m->nelem; e++)
+        if (elem_box[e] < 0 && !strcmp(m->elem_name[e], f->box[i].name)) elem_box[e] = i;
+  return elem_box;
+}
+
 /* Issue 31: a slanted bond that nothing could have drawn straight. A
  * junction leaves one bond a side; one with more than four bonds has at
  * least (bonds - 4) off the axes, and books draw those at 45 degrees. Counts
@@ -819,7 +830,7 @@ static int *fc_model_bonds(const bg_model *m, const fc_scene *f) {
 static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
   fc_scene f;
   fc_read(s, &f);
-  int n = 0, *bond = fc_model_bonds(m, &f);
+  int n = 0, *bond = fc_model_bonds(m, &f), *elem_box = fc_elem_boxes(m, &f);
   for (int j = 0; j < f.nline; j++) {
     const fc_line *l = &f.line[j];
     if (bond[j] < 0 || l->nseg - l->barb != 1) continue;
@@ -828,13 +839,9 @@ static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
     int forced = 0;
     for (int end = 0; end < 2 && !forced; end++) {
       int e = end ? m->bond_head[bond[j]] : m->bond_tail[bond[j]];
-      if (!bg_elem_is_junction(m->elem_kind[e]) || m->elem_nbond[e] < 5) continue;
-      double cx = 0, cy = 0;
-      int found = 0;
-      for (int i = 0; i < f.nbox && !found; i++)
-        if (f.box[i].elem && !strcmp(f.box[i].name, m->elem_name[e]))
-          cx = (f.box[i].x0 + f.box[i].x1) / 2, cy = (f.box[i].y0 + f.box[i].y1) / 2, found = 1;
-      if (!found) continue;
+      if (!bg_elem_is_junction(m->elem_kind[e]) || m->elem_nbond[e] < 5 || elem_box[e] < 0) continue;
+      const fc_box *jb = &f.box[elem_box[e]];
+      double cx = (jb->x0 + jb->x1) / 2, cy = (jb->y0 + jb->y1) / 2;
       int sides = 0;
       for (int k = 0; k < f.nline; k++) {
         if (k == j || bond[k] < 0 || (m->bond_tail[bond[k]] != e && m->bond_head[bond[k]] != e)) continue;
@@ -850,7 +857,7 @@ static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
     n += forced;
     if (forced && fc_explain) printf("  diagonal: bond %d at 45 degrees off a junction with four sides taken\n", l->id);
   }
-  free(bond);
+  free(bond), free(elem_box);
   fc_free(&f);
   return n;
 }
@@ -991,12 +998,7 @@ static int fc_detour(const bg_model *m, const fc_scene *f, const int *elem_box, 
 static inline int fc_avoidable(const bg_model *m, const bg_scene *s) {
   fc_scene f;
   fc_read(s, &f);
-  int n = 0, *bond = fc_model_bonds(m, &f), *elem_box = malloc(((size_t)m->nelem + 1) * sizeof(int));
-  for (int e = 0; e < m->nelem; e++) elem_box[e] = -1;
-  for (int i = 0; i < f.nbox; i++)
-    if (f.box[i].elem)
-      for (int e = 0; e < m->nelem; e++)
-        if (elem_box[e] < 0 && !strcmp(m->elem_name[e], f.box[i].name)) elem_box[e] = i;
+  int n = 0, *bond = fc_model_bonds(m, &f), *elem_box = fc_elem_boxes(m, &f);
   for (int j = 0; j < f.nline; j++)
     for (int k = 0; k < f.nline; k++) {
       const fc_line *L = &f.line[j];
