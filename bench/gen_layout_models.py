@@ -8,7 +8,15 @@ The local network ("nearby") is the same but each reaction is modulated by
 a species two places on along the ring, so a signal's route does not grow
 with the figure (in "reactions" it spans a share of the whole figure, so
 the routes' total length alone grows as S^1.5).
-Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT"""
+Held out (for the rows layout's counts, docs/drawing.md, nothing tuned to
+them): "randnet" a reaction network whose reactions join random species and
+are modulated by a random one; "randtree" junctions each joined to one of
+the six before it; "randgraph" a random tree plus a quarter as many random
+extra bonds; the trees' junctions carry none to two one-ports. SEED picks
+the random graph.
+Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT |
+       randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
+import random
 import sys
 
 
@@ -44,8 +52,62 @@ def reactions(nsignal, out, near=False):
     out.write("\n".join(lines) + "\n")
 
 
+def randnet(nsignal, seed, out):
+    rng = random.Random(seed)
+    ns = max(4, (3 * nsignal) // 4)
+    lines = [f"model randnet{nsignal}_{seed}", "Sf feed = 1"]
+    for i in range(ns):
+        lines += [f"0 s{i}", f"C c{i} = 1"]
+    for k in range(nsignal):
+        lines += [f"1 r{k}", f"R k{k} : f = (1 + c{rng.randrange(ns)}.e) * e"]
+    lines.append("bond feed -> s0")
+    for i in range(ns):
+        lines.append(f"bond s{i} -> c{i}")
+    for k in range(nsignal):  # every species in a reaction: a junction needs two bonds
+        a = k if k < ns else rng.randrange(ns)
+        b = rng.randrange(ns - 1)
+        b = b + 1 if b >= a else b
+        lines += [f"bond s{a} -> r{k}", f"bond r{k} -> k{k}", f"bond r{k} -> s{b}"]
+    out.write("\n".join(lines) + "\n")
+
+
+def randtree(n, seed, out, extra=False):
+    rng = random.Random(seed)
+    edges = []
+    for v in range(1, n):
+        edges.append((rng.randrange(v) if extra else rng.randrange(max(0, v - 6), v), v))
+    if extra:
+        for _ in range(n // 4):
+            a, b = rng.randrange(n), rng.randrange(n)
+            if a != b and (a, b) not in edges and (b, a) not in edges:
+                edges.append((min(a, b), max(a, b)))
+    deg = [0] * n
+    deg[0] = 1  # the source
+    for a, b in edges:
+        deg[a] += 1
+        deg[b] += 1
+    lines = [f"model rand{'graph' if extra else 'tree'}{n}_{seed}", "Se U = 1"]
+    lines += [f"{v % 2} j{v}" for v in range(n)]
+    lines.append("bond U -> j0")
+    lines += [f"bond j{a} -> j{b}" for a, b in edges]
+    for v in range(n):
+        for q in range(rng.choice([0, 1, 1, 2]) or (1 if deg[v] < 2 else 0)):
+            e = rng.choice("RCI")
+            lines += [f"{e} p{v}_{q} = 1", f"bond j{v} -> p{v}_{q}"]
+    out.write("\n".join(lines) + "\n")
+
+
 if __name__ == "__main__":
-    what, n, path = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+    what, n = sys.argv[1], int(sys.argv[2])
+    if what in ("randnet", "randtree", "randgraph"):
+        seed, path = int(sys.argv[3]), sys.argv[4]
+        with open(path, "w") as f:
+            if what == "randnet":
+                randnet(n, seed, f)
+            else:
+                randtree(n, seed, f, extra=(what == "randgraph"))
+        sys.exit(0)
+    path = sys.argv[3]
     with open(path, "w") as f:
         if what == "chain":
             chain(n, f)

@@ -55,6 +55,13 @@ void bg_layout_free(bg_layout *l);
  * without a root starts from its first node);
  * order (nullable, nnode) gets the nodes in the order reached. Caller frees. */
 int *bg_layout_depths(const bg_layout_in *in, int *order);
+/* layout_align.c: n boxes in a fixed order along a line, box i at least
+ * gap[i] after box i - 1 (gap[0] unused), the first at lo or after, the
+ * last at hi or before (the gaps must fit), placed (x) as near their
+ * wishes as that allows: the summed distance least, at least one box of
+ * every pushed run exactly at its wish. O(n) but for runs merged again
+ * and again. */
+void bg_layout_align(int n, const double *wish, const double *gap, double lo, double hi, double *x);
 /* layout_rows.c: the "rows" engine (bg_layout_run calls it for "rows"). */
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */

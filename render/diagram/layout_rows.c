@@ -94,10 +94,34 @@ typedef struct rank_cols {
   int *band;        /* the band the column went to (place) */
   int *cl;          /* the innermost cluster (frame) holding every node of the column, -1: none;
                        NULL without clusters */
+  int *parent;      /* per node: the neighbour one column back that the search reached it
+                       from (its first reached), -1: none (a root, a hung one-port) */
+  double *cy;       /* per node: its centre's height in its band, while the band is placed */
 } rank_cols;
 
 static void rank_cols_free(rank_cols *c) {
   free(c->adr), free(c->node), free(c->w), free(c->h), free(c->mid), free(c->band), free(c->cl);
+  free(c->parent), free(c->cy);
+}
+
+/* Each column node's parent: of its neighbours one rank nearer the roots,
+ * the one the search reached first. A breadth-first search reaches a
+ * parent's children together, so in a column they follow one another, in
+ * the order of their parents in the column before. */
+static void find_parents(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
+                         rank_cols *c) {
+  int n = in->nnode, *pos = bg_xcalloc((size_t)n + 1, sizeof *pos);
+  c->parent = bg_xcalloc((size_t)n + 1, sizeof *c->parent);
+  c->cy = bg_xcalloc((size_t)n + 1, sizeof *c->cy);
+  for (int k = 0; k < n; k++) pos[order[k]] = k;
+  for (int v = 0; v < n; v++) c->parent[v] = -1;
+  for (int e = 0; e < in->nedge; e++)
+    for (int k = 0; k < 2; k++) {
+      int u = k ? in->head[e] : in->tail[e], v = k ? in->tail[e] : in->head[e];
+      if (depth[u] + 1 != depth[v] || hg->host[u] >= 0 || hg->host[v] >= 0) continue;
+      if (c->parent[v] < 0 || pos[u] < pos[c->parent[v]]) c->parent[v] = u;
+    }
+  free(pos);
 }
 
 static void rank_columns(const bg_layout_in *in, const int *depth, const int *order, const hangers *hg,
@@ -144,6 +168,7 @@ static void rank_columns(const bg_layout_in *in, const int *depth, const int *or
   }
   for (int r = 0; r < c->nrank; r++) c->mid[r] = (first[r] + last[r]) / 2;
   free(fill), free(first), free(last);
+  find_parents(in, depth, order, hg, c);
 }
 
 /* Band width: the columns' total length folded so that the page is about
@@ -159,12 +184,59 @@ static double band_width(const bg_layout_in *in, const rank_cols *c) {
   return bw < widest ? widest : bw > len ? len : bw;
 }
 
-/* Columns cut into bands; in a band the columns' middles (of their nodes'
- * centres, hangers not counted) on one line, so a chain runs straight
- * along it with its one-ports above and below. */
+/* How far node v's slot (its box and those hung off it) reaches above and
+ * below its centre. */
+static double reach_above(const bg_layout_in *in, const hangers *hg, int v) {
+  return in->h[v] / 2 + (hg->above[v] >= 0 ? in->h[hg->above[v]] + hg->gap[v] : 0);
+}
+static double reach_below(const bg_layout_in *in, const hangers *hg, int v) {
+  return in->h[v] / 2 + (hg->below[v] >= 0 ? in->h[hg->below[v]] + hg->gap[v] : 0);
+}
+
+/* The centres of column r's nodes in their band (c->cy, the band's line at
+ * 0), in the column's order, node_sep between slots. A band's first column
+ * is stacked with its nodes' middle on the line; every later one is lined
+ * up with its parents (issue 31: in a network's wide columns, stacked from
+ * the top, hardly a bond ran level): a parent's children, consecutive in
+ * the column, wish to lie stacked with the middle one level with their
+ * parent, and bg_layout_align keeps the order and the gaps and places them
+ * as near that as it can (a chain, one node a column, runs straight along
+ * the line as before) within the band's reach above and below its line
+ * (up, down: its tallest stacks'), so a band is as high as when its
+ * columns were stacked (unbounded, each column spread both ways from its
+ * parents' and the bands grew by half, the page to 1.7 times the area).
+ * wish, gap, y: scratch of the column's length. */
+static void column_heights(const bg_layout_in *in, const hangers *hg, rank_cols *c, int r, int first, double up,
+                           double down, double *wish, double *gap, double *y) {
+  const int *node = c->node + c->adr[r];
+  int m = c->adr[r + 1] - c->adr[r];
+  double run = 0; /* the gaps summed: centre i of a stack at run[i] */
+  for (int i = 0; i < m; i++) {
+    gap[i] = i ? reach_below(in, hg, node[i - 1]) + in->node_sep + reach_above(in, hg, node[i]) : 0;
+    run += gap[i], y[i] = run;
+  }
+  if (first) {
+    for (int i = 0; i < m; i++) y[i] += reach_above(in, hg, node[0]) - c->mid[r];
+  } else {
+    for (int i0 = 0, i1; i0 < m; i0 = i1) {
+      int p = c->parent[node[i0]];
+      for (i1 = i0 + 1; i1 < m && c->parent[node[i1]] == p; i1++) {}
+      double level = y[i0 + (i1 - i0 - 1) / 2]; /* the middle child's place in the stack */
+      for (int i = i0; i < i1; i++)
+        wish[i] = p >= 0 ? c->cy[p] + y[i] - level : i ? wish[i - 1] + gap[i] : 0;
+    }
+    bg_layout_align(m, wish, gap, reach_above(in, hg, node[0]) - up, down - reach_below(in, hg, node[m - 1]), y);
+  }
+  for (int i = 0; i < m; i++) c->cy[node[i]] = y[i];
+}
+
+/* Columns cut into bands, each band's columns placed by column_heights and
+ * the band moved down under the last one. */
 static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, double bw, bg_layout *out) {
   double top = 0, maxw = 0, edge = -1;
-  int band = 0;
+  int band = 0, n = in->nnode;
+  double *wish = bg_xcalloc((size_t)n + 1, sizeof *wish), *gap = bg_xcalloc((size_t)n + 1, sizeof *gap);
+  double *y = bg_xcalloc((size_t)n + 1, sizeof *y);
   for (int r0 = 0; r0 < c->nrank; band++) {
     /* a band starts under the previous one's last column (edge: its
      * centre), so the bond of the fold runs straight down, and runs the
@@ -172,7 +244,7 @@ static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, 
     int rtl = band % 2;
     double first = edge < 0 ? c->w[r0] / 2 : edge;
     double outer = rtl ? first + c->w[r0] / 2 : first - c->w[r0] / 2, room = rtl ? outer : bw - outer;
-    double len = 0, up = 0, down = 0;
+    double len = 0;
     int r1 = r0;
     while (r1 < c->nrank && (r1 == r0 || len + c->w[r1] <= room)) len += c->w[r1] + in->rank_sep, r1++;
     if (c->cl && r1 < c->nrank) { /* a fold splits the frames round both its columns: */
@@ -188,31 +260,39 @@ static int place_bands(const bg_layout_in *in, const hangers *hg, rank_cols *c, 
       r1 = best;
     }
     len = 0;
+    double up = 0, down = 0; /* the band's reach above and below its line: its columns' stacks' */
     for (int r = r0; r < r1; r++) {
       len += c->w[r] + in->rank_sep;
       up = fmax(up, c->mid[r]), down = fmax(down, c->h[r] - c->mid[r]);
     }
     len -= in->rank_sep;
     maxw = len > maxw ? len : maxw;
-    double x = 0;
+    double x = 0, lo = 1e300, hi = -1e300;
     for (int r = r0; r < r1; r++) {
       double cx = rtl ? outer - x - c->w[r] / 2 : outer + x + c->w[r] / 2;
       edge = cx, c->band[r] = band;
-      double y = top + up - c->mid[r];
+      column_heights(in, hg, c, r, r == r0, up, down, wish, gap, y);
       for (int k = c->adr[r]; k < c->adr[r + 1]; k++) {
-        int v = c->node[k], a = hg->above[v], b = hg->below[v];
-        if (a >= 0) out->x[a] = cx, out->y[a] = y + in->h[a] / 2, y += in->h[a] + hg->gap[v];
-        out->x[v] = cx;
-        out->y[v] = y + in->h[v] / 2;
-        y += in->h[v];
-        if (b >= 0) out->x[b] = cx, out->y[b] = y + hg->gap[v] + in->h[b] / 2, y += hg->gap[v] + in->h[b];
-        y += in->node_sep;
+        int v = c->node[k];
+        lo = fmin(lo, c->cy[v] - reach_above(in, hg, v)), hi = fmax(hi, c->cy[v] + reach_below(in, hg, v));
       }
       x += c->w[r] + in->rank_sep;
     }
-    top += up + down + 2 * in->rank_sep;
+    x = 0;
+    for (int r = r0; r < r1; r++) { /* the band's top at `top` */
+      double cx = rtl ? outer - x - c->w[r] / 2 : outer + x + c->w[r] / 2;
+      for (int k = c->adr[r]; k < c->adr[r + 1]; k++) {
+        int v = c->node[k], a = hg->above[v], b = hg->below[v];
+        out->x[v] = cx, out->y[v] = top - lo + c->cy[v];
+        if (a >= 0) out->x[a] = cx, out->y[a] = out->y[v] - in->h[v] / 2 - hg->gap[v] - in->h[a] / 2;
+        if (b >= 0) out->x[b] = cx, out->y[b] = out->y[v] + in->h[v] / 2 + hg->gap[v] + in->h[b] / 2;
+      }
+      x += c->w[r] + in->rank_sep;
+    }
+    top += hi - lo + 2 * in->rank_sep;
     r0 = r1;
   }
+  free(wish), free(gap), free(y);
   out->width = band > 1 ? bw : maxw;
   out->height = top > 2 * in->rank_sep ? top - 2 * in->rank_sep : 0;
   return band;
