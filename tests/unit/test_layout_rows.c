@@ -5,8 +5,10 @@
  * same result every run, one-ports hung above their junctions (below when
  * their signals lead there or a fold's bond comes from above), the
  * junctions of a band on one line, each band under the last one's end, the
- * bands even, disconnected parts each on its own; and the diagram of a model above 2000 nodes is laid
- * out with rows unless another engine is asked for. */
+ * bands even, disconnected parts each on its own, a wide column's nodes
+ * level with their parents (bg_layout_align exact and least); and the
+ * diagram of a model above 2000 nodes is laid out with rows unless another
+ * engine is asked for. */
 #include <stdlib.h>
 #include <string.h>
 
