@@ -494,26 +494,18 @@ static int by_width(const void *a, const void *b, void *ctx) {
 }
 
 /* Places the parts in `order` (width[c] + 1 columns with the gap,
- * height[c] rows) on a page page_w columns wide, each where it sits highest
- * (then leftmost) on the skyline of those placed; returns the area of the
- * box they fill (columns x rows). */
+ * height[c] rows) on a page page_w columns wide by bg_layout_skyline
+ * (layout_pack.c: each where it sits highest, then leftmost); returns the
+ * area of the box they fill (columns x rows). */
 static double skyline(const int *order, int nparts, const int *width, const int *height, int page_w, int *xoff,
-                      int *base) {
-  int *sky = bg_xcalloc((size_t)page_w + 1, sizeof(int)), used_w = 0, used_h = 0;
-  for (int i = 0; i < nparts; i++) {
-    int c = order[i], w = width[c] + 1, best_x = 0, best_y = 1 << 30;
-    for (int x = 0; x + w <= page_w; x++) {
-      int y = 0;
-      for (int k = x; k < x + w && y < best_y; k++) y = sky[k] > y ? sky[k] : y;
-      if (y < best_y) best_y = y, best_x = x;
-    }
-    for (int k = best_x; k < best_x + w; k++) sky[k] = best_y + height[c];
-    xoff[c] = best_x, base[c] = -1 - best_y;
-    used_w = best_x + w > used_w ? best_x + w : used_w;
-    used_h = best_y + height[c] > used_h ? best_y + height[c] : used_h;
-  }
-  free(sky);
-  return (double)used_w * used_h;
+                      int *base, int n) {
+  double *w = bg_xcalloc((size_t)n + 1, sizeof *w), *h = bg_xcalloc((size_t)n + 1, sizeof *h);
+  double *x = bg_xcalloc((size_t)n + 1, sizeof *x), *y = bg_xcalloc((size_t)n + 1, sizeof *y);
+  for (int i = 0; i < nparts; i++) w[order[i]] = width[order[i]] + 1, h[order[i]] = height[order[i]];
+  double area = bg_layout_skyline(nparts, order, w, h, page_w, 0, 0, x, y);
+  for (int i = 0; i < nparts; i++) xoff[order[i]] = (int)x[order[i]], base[order[i]] = -1 - (int)y[order[i]];
+  free(w), free(h), free(x), free(y);
+  return area;
 }
 
 /* Packs the parts on a page sqrt(area) columns wide (at least the widest)
@@ -538,8 +530,8 @@ static void pack_parts(int *part, int nparts, const int *width, int *height, int
   memcpy(wide, part, (size_t)nparts * sizeof(int));
   bg_sort(part, (size_t)nparts, sizeof *part, by_height, height);
   bg_sort(wide, (size_t)nparts, sizeof *wide, by_width, (void *)width);
-  double by_h = skyline(part, nparts, width, height, page_w, xoff, base);
-  if (skyline(wide, nparts, width, height, page_w, xw, bw) < by_h)
+  double by_h = skyline(part, nparts, width, height, page_w, xoff, base, n);
+  if (skyline(wide, nparts, width, height, page_w, xw, bw, n) < by_h)
     for (int i = 0; i < nparts; i++) xoff[part[i]] = xw[part[i]], base[part[i]] = bw[part[i]];
   free(wide), free(xw), free(bw);
 }

@@ -430,51 +430,16 @@ static int taller_first(const void *a, const void *b) {
   return p->k - q->k;
 }
 
-/* Packs the parts (box, tallest first) on a page `page` wide, `gap` apart:
- * each where it sits highest on the skyline of those placed, then
- * leftmost (its x at the start of a skyline segment); a part beside a
- * taller one fills the room below its shorter neighbours, where shelves
- * left it empty (the grid pass's pack_parts does the same on its cells).
- * The skyline is a list of segments [x0, x1) at height top; work: parts x
- * segments, at most two segments more per part. Returns the area of the
- * box the parts fill. */
+/* The parts in the order of box[] (sorted) packed by bg_layout_skyline,
+ * `gap` apart: their corners into dx, dy (by part); returns the area of
+ * the box they fill. */
 static double pack_skyline(const part_box *box, int np, double page, double gap, double *dx, double *dy) {
-  typedef struct sky_seg {
-    double x0, x1, top;
-  } sky_seg;
-  int cap = 2 * np + 2, ns = 1; /* each part adds at most two segments */
-  sky_seg *sky = bg_xcalloc((size_t)cap, sizeof *sky), *next = bg_xcalloc((size_t)cap, sizeof *next);
-  sky[0] = (sky_seg){0, 1e300, 0};
-  double used_w = 0, used_h = 0;
-  for (int i = 0; i < np; i++) {
-    double w = box[i].w + gap, best_y = 1e300, best_x = 0;
-    for (int a = 0; a < ns; a++) {
-      double x = sky[a].x0, y = 0;
-      if (a > 0 && x + box[i].w > page) break; /* past the page's right edge (the first always fits) */
-      for (int z = a; z < ns && sky[z].x0 < x + w && y < best_y; z++) y = fmax(y, sky[z].top);
-      if (y < best_y) best_y = y, best_x = x;
-    }
-    dx[box[i].k] = best_x, dy[box[i].k] = best_y;
-    used_w = fmax(used_w, best_x + box[i].w), used_h = fmax(used_h, best_y + box[i].h);
-    /* the segments under [from, to) become one at best_y + h + gap */
-    sky_seg put = {best_x, best_x + w, best_y + box[i].h + gap};
-    int nn = 0, done = 0;
-    for (int a = 0; a < ns; a++) {
-      sky_seg s = sky[a];
-      if (s.x1 <= put.x0 || s.x0 >= put.x1) {
-        if (s.x0 >= put.x1 && !done) next[nn++] = put, done = 1;
-        next[nn++] = s;
-        continue;
-      }
-      if (s.x0 < put.x0) next[nn++] = (sky_seg){s.x0, put.x0, s.top};
-      if (!done) next[nn++] = put, done = 1;
-      if (s.x1 > put.x1) next[nn++] = (sky_seg){put.x1, s.x1, s.top};
-    }
-    sky_seg *t = sky;
-    sky = next, next = t, ns = nn;
-  }
-  free(sky), free(next);
-  return used_w * used_h;
+  int *order = bg_xcalloc((size_t)np + 1, sizeof *order);
+  double *w = bg_xcalloc((size_t)np + 1, sizeof *w), *h = bg_xcalloc((size_t)np + 1, sizeof *h);
+  for (int i = 0; i < np; i++) order[i] = box[i].k, w[box[i].k] = box[i].w, h[box[i].k] = box[i].h;
+  double area = bg_layout_skyline(np, order, w, h, page, gap, gap, dx, dy);
+  free(order), free(w), free(h);
+  return area;
 }
 
 static int wider_first(const void *a, const void *b) {
