@@ -17,21 +17,10 @@
 
 #define COST_DIAG 60.0 /* a bond's diagonal way out: a slanted leg */
 
-/* Whether segment a-b meets the box [x0,x1]×[y0,y1] (Liang-Barsky). */
-static int seg_box(bg_vec a, bg_vec b, double x0, double y0, double x1, double y1) {
-  double t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
-  double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
-  for (int i = 0; i < 4; i++) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return 0;
-      continue;
-    }
-    double t = q[i] / p[i];
-    if (p[i] < 0 && t > t0) t0 = t;
-    if (p[i] > 0 && t < t1) t1 = t;
-    if (t0 >= t1) return 0;
-  }
-  return 1;
+/* Whether segment a-b meets the box [x0,x1]×[y0,y1] (bg_seg_hits_box). */
+static int seg_hits(bg_vec a, bg_vec b, double x0, double y0, double x1, double y1) {
+  const double s[4] = {a.x, a.y, b.x, b.y};
+  return bg_seg_hits_box(s, x0, y0, x1, y1);
 }
 
 /* Whether bond b's line runs through a node box other than its ends' (the
@@ -47,7 +36,7 @@ static int bond_blocked(bg_router *r, int b) {
       int k = r->nl.k[j];
       if (k >= L->nnode || k == t || k == h || (L->rep && L->rep[k] != k)) continue;
       double hw = L->nw[k] / 2 - 0.5, hh = L->nh[k] / 2 - 0.5;
-      if (hw > 0 && hh > 0 && seg_box(a, c, L->nx[k] - hw, L->ny[k] - hh, L->nx[k] + hw, L->ny[k] + hh)) return 1;
+      if (hw > 0 && hh > 0 && seg_hits(a, c, L->nx[k] - hw, L->ny[k] - hh, L->nx[k] + hw, L->ny[k] + hh)) return 1;
     }
   }
   return 0;
@@ -108,7 +97,7 @@ static int place_clear(bg_router *all, int n, int e, const double b[4], const mo
       if (k == n || k == e || !bg_node_shown(L, k) || L->nw[k] <= 0) continue;
       double o[4] = {L->nx[k] - L->nw[k] / 2, L->ny[k] - L->nh[k] / 2, L->nx[k] + L->nw[k] / 2, L->ny[k] + L->nh[k] / 2};
       if (boxes_meet(b, o)) return 0;
-    } else if (seg_box(all->ix.la[k - L->nnode], all->ix.lb[k - L->nnode], b[0], b[1], b[2], b[3])) {
+    } else if (seg_hits(all->ix.la[k - L->nnode], all->ix.lb[k - L->nnode], b[0], b[1], b[2], b[3])) {
       return 0;
     }
   }
