@@ -15,7 +15,10 @@
  * 0.5 pt past them, as a routed bond must not pass another bond's end:
  * it would read as that bond ending on it, a false T); 2 when they run on
  * one line (parallel, nearer than `near` pt, sharing more than 1 pt); 3
- * when they run side by side within HUG pt (*run: for how long); else 0. */
+ * when they run side by side within HUG pt (*run: for how long); 4 (ends
+ * 2, a bond in end_zone) when they cross within END_NEAR pt of one of a-b's
+ * ends, inside or past it, which reads as a-b ending on p-q whichever side
+ * it falls; else 0. */
 #define HUG 12.0
 int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends) {
   bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
@@ -34,12 +37,13 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
   bg_vec w = bg_vsub(a, p);
   double t = (w.x * v.y - w.y * v.x) / den; /* along p-q */
   double s = (w.x * u.y - w.y * u.x) / den; /* along a-b */
-  double keep = ends ? -0.5 : 0.5;
-  if (s * lv < keep || (1 - s) * lv < keep) return 0;
+  double keep = ends == 2 ? -END_NEAR : ends ? -0.5 : 0.5, from_end = fmin(s * lv, (1 - s) * lv);
+  if (from_end < keep) return 0;
   /* half-open along the grid edge, by coordinate: [min, max) */
   int forward = u.x > 0 || (u.x == 0 && u.y > 0);
   double tl = forward ? t : 1 - t;
-  return tl >= 0 && tl < 1 ? 1 : 0;
+  if (!(tl >= 0 && tl < 1)) return 0;
+  return ends == 2 && from_end <= END_NEAR ? 4 : 1;
 }
 
 /* Whether bond b is one of the current route's own: a bond of its source's
@@ -89,9 +93,9 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
       continue;
     }
     double run = 0;
-    int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, r->bond >= 0);
+    int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, bg_route_ends(r));
     if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
-    cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : 0;
+    cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : hit == 4 ? COST_END : 0;
     if (r->ix.lmid[k - L->nnode] && bg_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
   }
   bg_near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
@@ -141,7 +145,7 @@ static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
 
 /* Segment a-b against grid line (horizontal when horiz) at `at` over the
  * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
- * open, as bg_route_seg_meet counts it, ends as there); a parallel run within HUG pt adds to each
+ * open, as bg_route_seg_meet counts it, ends as there, COST_END near an end); a parallel run within HUG pt adds to each
  * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
  * `hug` per pt of the shared run. */
 static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
@@ -161,10 +165,11 @@ static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg
     }
     return;
   }
-  double s = (at - across(a, horiz)) / vc, keep = ends ? -0.5 : 0.5;
-  if (s * lv < keep || (1 - s) * lv < keep) return;
+  double s = (at - across(a, horiz)) / vc, keep = ends == 2 ? -END_NEAR : ends ? -0.5 : 0.5;
+  double from_end = fmin(s * lv, (1 - s) * lv);
+  if (from_end < keep) return;
   int i = edge_at(A, n, along(a, horiz) + s * va);
-  if (i >= 0) out[i] += cross;
+  if (i >= 0) out[i] += ends == 2 && from_end <= END_NEAR ? COST_END : cross;
 }
 
 /* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
@@ -220,9 +225,9 @@ void bg_route_grid_costs(bg_router *r) {
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
     double cross = leg_cross_cost(r, leg);
     line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, r->bond >= 0, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), &r->vcost[j * ny]);
     if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
       bg_vec mid = r->ix.mid[leg];
       line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);

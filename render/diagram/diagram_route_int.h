@@ -25,6 +25,11 @@
 #define COST_CROSS_SIGNAL 6.0
 #define COST_SHARE 900.0      /* running on another signal: read as one line */
 #define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
+#define COST_END 2000.0       /* (end_zone) a bond crossing another bond within END_NEAR pt of its
+                                 end, inside or past it: read as that bond ending on it (a false
+                                 T); dearer than a dozen crossings, yet not a block (a block sends
+                                 the route round the whole figure) */
+#define END_NEAR 1.5
 #define COST_HUG 1.5          /* per pt beside a bond, nearer than HUG: read as a doubled bond */
 #define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
@@ -89,6 +94,8 @@ struct bg_router {
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none);
                              their bonds are the route's own (COST_CROSS_OWN) */
   int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
+  int end_zone;           /* a bond route pays COST_END within END_NEAR of another bond's end
+                             (the repair of false T's, bg_route_blocked_bonds), else a crossing */
   int group;              /* the current route's source: routes of the same one may share
                              its lines (a signal branching), -1: none */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
@@ -149,6 +156,8 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
 /* Segment p-q against segment a-b: 1 crossing, 2 on one line, 3 side by
  * side (*run: for how long), else 0 (in full at its definition). */
 int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends);
+/* What the current route's `ends` argument is: 0 a signal, 1 a bond, 2 a bond in end_zone. */
+static inline int bg_route_ends(const bg_router *r) { return r->bond < 0 ? 0 : r->end_zone ? 2 : 1; }
 /* The distance from point c to segment p-q. */
 /* Whether index segment s is the current route's own (bg_route_detour). */
 int bg_route_own_segment(const bg_router *r, int s);

@@ -339,6 +339,27 @@ typedef struct fm_model {
 
 /* Makers of that shape for the models with other parameters (the seeds
  * are the figure tests'). */
+/* A held-out reaction network (bench/gen_layout_models.py randnet, with
+ * this file's random numbers): species (C on a 0-junction), one reaction
+ * (R on a 1-junction) a signal, each between the species it is numbered
+ * by (while there are species) or a random one and another random
+ * species, its rate modulated by a random species. Nothing in the drawing
+ * was tuned to these. */
+__attribute__((unused)) static void fm_randnet(bg_strbuf *b, int n, unsigned seed) {
+  unsigned s = seed;
+  int ns = 3 * n / 4 > 4 ? 3 * n / 4 : 4;
+  bg_sb_printf(b, "model randnet%d_%u\nSf feed = 1\n", n, seed);
+  for (int i = 0; i < ns; i++) bg_sb_printf(b, "0 s%d\nC c%d = 1\n", i, i);
+  for (int k = 0; k < n; k++) bg_sb_printf(b, "1 r%d\nR k%d : f = (1 + c%d.e) * e\n", k, k, (int)(fm_rand(&s) % (unsigned)ns));
+  bg_sb_puts(b, "bond feed -> s0\n");
+  for (int i = 0; i < ns; i++) bg_sb_printf(b, "bond s%d -> c%d\n", i, i);
+  for (int k = 0; k < n; k++) {
+    int a = k < ns ? k : (int)(fm_rand(&s) % (unsigned)ns), z = (int)(fm_rand(&s) % (unsigned)(ns - 1));
+    z += z >= a;
+    bg_sb_printf(b, "bond s%d -> r%d\nbond r%d -> k%d\nbond r%d -> s%d\n", a, k, k, k, k, z);
+  }
+}
+
 __attribute__((unused)) static void fm_make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
 __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }
