@@ -46,8 +46,10 @@ static int bond_blocked(bg_router *r, int b) {
  * leaves its centre within 30 degrees of the side's normal (by direction,
  * not by where it ends: a junction's end circle can lie far out). Bonds to
  * be routed again (blocked) do not count: they move. */
-static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
-                          int dir) {
+/* Whether no other bond of node n (but b and the blocked ones) leaves it
+ * within the angle whose cosine is cosmax of direction d. */
+static int bond_way_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
+                         bg_vec d, double cosmax) {
   int nb = n < m->nelem ? m->elem_nbond[n] : m->nbond;
   for (int i = 0; i < nb; i++) {
     int ob = n < m->nelem ? m->elem_bonds[m->elem_bondadr[n] + i] : i;
@@ -57,10 +59,15 @@ static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, 
     for (int k = 0; k < 2; k++) {
       if ((k ? h : t) != n) continue;
       bg_vec u = k ? bg_vscale(g->hdir, -1) : g->tdir;
-      if (u.x * DIRV[dir].x + u.y * DIRV[dir].y > 0.866) return 0;
+      if (u.x * d.x + u.y * d.y > cosmax) return 0;
     }
   }
   return 1;
+}
+
+static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
+                          int dir) {
+  return bond_way_free(L, m, n, b, blocked, DIRV[dir], 0.866);
 }
 
 /* ---------------------------------------------------------------- a one-port moved aside */
@@ -145,7 +152,8 @@ static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b,
 
 /* The ways out of node n for bond b: the middles of its free sides (not
  * taken by another bond's end or an earlier route, taken: a bit per side),
- * else its four corners on a diagonal, COST_DIAG dearer. */
+ * else its four corners on a diagonal, COST_DIAG dearer, and a block for a
+ * corner an earlier route took (taken: bits 4-7) or another bond leaves by. */
 static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsigned char *blocked,
                       const unsigned char *taken, port *out) {
   const bg_diagram_layout *L = r->L;
@@ -161,6 +169,12 @@ static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsig
     double sx = k & 1 ? -1 : 1, sy = k & 2 ? -1 : 1;
     bg_vec q = bg_vadd(c, bg_v(sx * (hw + STUB), sy * (hh + STUB)));
     double base = COST_DIAG + bg_route_seg_cost(r, c, q, n) - bg_vlen(bg_vsub(q, c));
+    /* a corner another bond already leaves by (a one-port on the
+     * diagonal) is a block: the two would leave within degrees of each
+     * other, the one's causal stroke on the other (issue 31: a held-out
+     * network's feed junction) */
+    if ((taken[n] >> (4 + k) & 1) || !bond_way_free(L, m, n, b, blocked, bg_vunit(bg_vsub(q, c)), 0.9))
+      base += COST_BLOCK;
     out[np++] = (port){q, q, sx > 0 ? 0 : 1, base, 0, 1};
     out[np++] = (port){q, q, sy > 0 ? 2 : 3, base, 0, 1};
   }
@@ -169,11 +183,14 @@ static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsig
 
 /* Puts the route's end at node n straight out of its centre: a side port's
  * first leg moved onto the centre's line (the grid may have snapped it
- * off), the side marked taken. end: pts[0] (next: pts[1]) or the last
+ * off), the side (or the corner) marked taken. end: pts[0] (next: pts[1]) or the last
  * point. Returns whether the end is a diagonal way out (a corner of its own). */
 static int bond_end(const bg_diagram_layout *L, int n, bg_vec *end, bg_vec *next, unsigned char *taken) {
   double dx = end->x - L->nx[n], dy = end->y - L->ny[n], hw = L->nw[n] / 2, hh = L->nh[n] / 2;
-  if (fabs(dx) > hw + 0.01 || fabs(dy) > hh + 0.01) return 1;
+  if (fabs(dx) > hw + 0.01 || fabs(dy) > hh + 0.01) { /* a corner: taken too (bits 4-7) */
+    taken[n] |= (unsigned char)(16 << ((dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0)));
+    return 1;
+  }
   if (fabs(dx) >= hw - 0.01) {
     end->y = next->y = L->ny[n];
     taken[n] |= (unsigned char)(1 << (dx > 0 ? 0 : 1));
@@ -405,9 +422,11 @@ static int false_tees(const bg_diagram_layout *L, const unsigned char *routed, u
  * holding routes p) that hold such an end are
  * routed again against the bonds as now drawn, paying COST_END within
  * END_NEAR pt of any end, inside or past it; kept when the false T's fall
- * and the bonds drawn differently cross no more other bonds than the T's
- * removed. Returns the routes kept, which the layout holds; *nmore: the
- * bonds routed again. */
+ * and the bonds drawn differently cross at most UNTEE_CROSSINGS more other
+ * bonds per T removed. Returns the routes kept, which the layout holds;
+ * *nmore: the bonds routed again. */
+#define UNTEE_CROSSINGS 4 /* crossings a false T removed may cost: a bond read as joined where it is
+                             not is worse than a crossing, which a network's graph may need anyway */
 static bond_routes untee(bg_diagram_layout *L, const unsigned char *routed, bond_routes p, const bond_routes *orig,
                          int *nmore) {
   int nb = L->m->nbond;
@@ -428,7 +447,7 @@ static bond_routes untee(bg_diagram_layout *L, const unsigned char *routed, bond
   for (int b = 0; b < nb; b++) changed[b] = (unsigned char)drawn_apart(L, &p, t, h, b);
   int cross2 = bg_route_crossings_of(L, changed);
   install(L, &p);
-  int keep = after < before && cross2 <= bg_route_crossings_of(L, changed) + (before - after);
+  int keep = after < before && cross2 <= bg_route_crossings_of(L, changed) + UNTEE_CROSSINGS * (before - after);
   if (keep) {
     install(L, &q);
     for (int b = 0; b < nb; b++) *nmore += redo[b];
@@ -442,12 +461,32 @@ static bond_routes untee(bg_diagram_layout *L, const unsigned char *routed, bond
   return q;
 }
 
+/* Whether bond b is one slanted straight line leaving one of its nodes
+ * within 15 degrees of another bond of that node (issue 31: the grid
+ * pass's fallback for a hub bond it found no cells for, three bonds down
+ * out of one junction within 7 degrees, each one's causal stroke on the
+ * others and the three read as one line). */
+static int bond_bundled(const bg_diagram_layout *L, const bg_model *m, int b, const unsigned char *blocked) {
+  const bg_bond_geom *g = &L->bg[b];
+  if ((L->bond_hidden && L->bond_hidden[b]) || g->spln || g->bendn) return 0;
+  bg_vec d = bg_vsub(g->head, g->tail);
+  if (fmin(fabs(d.x), fabs(d.y)) <= 0.02 * fmax(fabs(d.x), fabs(d.y))) return 0; /* along an axis */
+  for (int k = 0; k < 2; k++) {
+    int n = bg_route_end_node(L, b, k);
+    bg_vec u = k ? bg_vscale(g->hdir, -1) : g->tdir;
+    if (n >= 0 && !bond_way_free(L, m, n, b, blocked, u, 0.966)) return 1;
+  }
+  return 0;
+}
+
 int bg_route_blocked_bonds(bg_diagram_layout *L) {
   const bg_model *m = L->m;
   int nb = m->nbond, nblocked = 0;
   unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
   bg_router *all = bg_router_new(L, nb, NULL);
-  for (int b = 0; b < nb; b++) nblocked += blocked[b] = (unsigned char)bond_blocked(all, b);
+  for (int b = 0; b < nb; b++) blocked[b] = (unsigned char)bond_blocked(all, b);
+  for (int b = 0; b < nb; b++) blocked[b] |= (unsigned char)bond_bundled(L, m, b, blocked);
+  for (int b = 0; b < nb; b++) nblocked += blocked[b];
   moved_box *mv = bg_xcalloc((size_t)2 * nblocked + 1, sizeof *mv);
   int nmv = 0;
   for (int b = 0; b < nb; b++) {

@@ -635,10 +635,11 @@ static void test_large_figures(void) {
 /* Issue 31, held-out reaction networks (fm_randnet: random species pairs
  * and modulations, nobody tuned the drawing to them), 40, 60 and 80
  * reactions, three seeds each, dot with the grid pass, default style and
- * layers: no bond ends on another bond (false T; a bond routed past
- * another's end drew 4 in one of them before the bonds holding such ends
- * were routed again, bg_route_blocked_bonds), no bond drawn on another
- * line, no line through an element's label. */
+ * layers: no bond ends on another bond (false T: 5 before the bonds
+ * holding such ends were routed again, bg_route_blocked_bonds), no causal
+ * stroke touching another bond (5 before a route stopped taking a corner
+ * another bond leaves by), no bond drawn on another line (1), no line
+ * through an element's label. */
 static void test_held_out_networks(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
@@ -661,7 +662,7 @@ static void test_held_out_networks(void) {
         if (fc_explain) printf("%s:\n", name);
         fc_count(bg_diagram_scene(d), &st);
         if (verbose) print_row(name, &st);
-        tot.false_tees += st.false_tees, tot.bond_overlaps += st.bond_overlaps;
+        tot.false_tees += st.false_tees, tot.bond_overlaps += st.bond_overlaps, tot.touching += st.touching;
         tot.lines_through += st.lines_through;
         bg_diagram_free(d);
       }
@@ -669,6 +670,7 @@ static void test_held_out_networks(void) {
       bg_sb_free(&src);
     }
   INT_EQ(tot.false_tees, 0);
+  INT_EQ(tot.touching, 0);
   INT_EQ(tot.bond_overlaps, 0);
   INT_EQ(tot.lines_through, 0);
 }
