@@ -14,8 +14,10 @@ are modulated by a random one; "randtree" junctions each joined to one of
 the six before it; "randgraph" a random tree plus a quarter as many random
 extra bonds; the trees' junctions carry none to two one-ports. SEED picks
 the random graph.
+A "star" is one 0-junction with N resistors (a fan: docs/drawing.md,
+the bound on the bond router's work).
 Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT |
-       randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
+       star N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
 import random
 import sys
 
@@ -109,7 +111,10 @@ if __name__ == "__main__":
         sys.exit(0)
     path = sys.argv[3]
     with open(path, "w") as f:
-        if what == "chain":
+        if what == "star":
+            f.write(f"model star{n}\nSe U = 1\n0 j\nbond U -> j\n")
+            f.write("".join(f"R r{i} = 1\nbond j -> r{i}\n" for i in range(n)))
+        elif what == "chain":
             chain(n, f)
         else:
             reactions(n, f, near=(what == "nearby"))
