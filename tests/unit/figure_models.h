@@ -360,6 +360,31 @@ __attribute__((unused)) static void fm_randnet(bg_strbuf *b, int n, unsigned see
   }
 }
 
+/* A held-out tree (bench/gen_layout_models.py randtree, with this file's
+ * random numbers): junctions each joined to one of the six before it, so
+ * a junction may have many bonds (fm_tree keeps them to four), none to two
+ * one-ports each, one at least where a junction would have a single bond. */
+__attribute__((unused)) static void fm_randtree(bg_strbuf *b, int n, unsigned seed) {
+  static const char *kind[] = {"R", "C", "I"};
+  int *parent = calloc((size_t)n + 1, sizeof *parent), *deg = calloc((size_t)n + 1, sizeof *deg);
+  bg_sb_printf(b, "model randtree%d_%u\nSe U = 1\n", n, seed);
+  deg[0] = 1;
+  for (int v = 1; v < n; v++) {
+    int back = v < 6 ? v : 6;
+    parent[v] = v - 1 - (int)(fm_rand(&seed) % (unsigned)back), deg[parent[v]]++, deg[v]++;
+  }
+  for (int v = 0; v < n; v++) bg_sb_printf(b, "%d j%d\n", v % 2, v);
+  bg_sb_puts(b, "bond U -> j0\n");
+  for (int v = 1; v < n; v++) bg_sb_printf(b, "bond j%d -> j%d\n", parent[v], v);
+  for (int v = 0; v < n; v++) {
+    int k = (int)(fm_rand(&seed) % 3);
+    if (k == 0 && deg[v] < 2) k = 1;
+    for (int q = 0; q < k; q++)
+      bg_sb_printf(b, "%s p%d_%d = 1\nbond j%d -> p%d_%d\n", kind[fm_rand(&seed) % 3], v, q, v, v, q);
+  }
+  free(parent), free(deg);
+}
+
 __attribute__((unused)) static void fm_make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
 __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }

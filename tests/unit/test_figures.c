@@ -634,22 +634,25 @@ static void test_large_figures(void) {
 
 /* Issue 31, held-out reaction networks (fm_randnet: random species pairs
  * and modulations, nobody tuned the drawing to them), 40, 60 and 80
- * reactions, three seeds each, dot with the grid pass, default style and
- * layers: no bond ends on another bond (false T: 5 before the bonds
+ * reactions, three seeds each, and held-out trees of 100-160 junctions
+ * (fm_randtree: junctions of up to a dozen bonds), dot with the grid pass,
+ * default style and layers: no bond ends on another bond (false T: 5 before the bonds
  * holding such ends were routed again, bg_route_blocked_bonds), no causal
  * stroke touching another bond (5 before a route stopped taking a corner
  * another bond leaves by), no line through an element's label; one bond
  * drawn along another's line for 7 pt, as before (left). */
-static void test_held_out_networks(void) {
+static void test_held_out_models(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
   fc_stats tot = {0};
-  for (int size = 40; size <= 80; size += 20)
+  for (int size = 40; size <= 160; size += 20)
     for (unsigned seed = 1; seed <= 3; seed++) {
+      if (size > 80 && seed > 1) continue; /* trees: 100, 120, 140, 160 junctions, one each */
       bg_strbuf src = {0};
-      fm_randnet(&src, size, seed * 7919u + (unsigned)size);
       char name[32];
-      snprintf(name, sizeof name, "randnet%d_%u", size, seed);
+      if (size <= 80) fm_randnet(&src, size, seed * 7919u + (unsigned)size);
+      else fm_randtree(&src, size, 104729u + (unsigned)size);
+      snprintf(name, sizeof name, size <= 80 ? "randnet%d_%u" : "randtree%d", size, seed);
       dump_model(name, &src);
       fx f;
       int rc = fm_load(&f, name, bg_sb_str(&src));
@@ -1169,7 +1172,7 @@ int main(void) {
   RUN(test_frames_held_out);
   RUN(test_grid_diagonals);
   RUN(test_large_figures);
-  RUN(test_held_out_networks);
+  RUN(test_held_out_models);
   RUN(test_parts_packed);
   RUN(test_lagrange);
   RUN(test_print_conventions);
