@@ -44,12 +44,10 @@ static int bond_blocked(bg_router *r, int b) {
   return 0;
 }
 
-/* Whether side dir of node n is clear of the node's other bonds: none
- * leaves its centre within 30 degrees of the side's normal (by direction,
- * not by where it ends: a junction's end circle can lie far out). Bonds to
- * be routed again (blocked) do not count: they move. */
-/* Whether no other bond of node n (but b and the blocked ones) leaves it
- * within the angle whose cosine is cosmax of direction d. */
+/* Whether no other bond of node n (but b and the blocked ones, which are
+ * routed again and move) leaves its centre within the angle whose cosine
+ * is cosmax of direction d (by direction, not by where it ends: a
+ * junction's end circle can lie far out). */
 static int bond_way_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
                          bg_vec d, double cosmax) {
   int nb = n < m->nelem ? m->elem_nbond[n] : m->nbond;
@@ -67,6 +65,8 @@ static int bond_way_free(const bg_diagram_layout *L, const bg_model *m, int n, i
   return 1;
 }
 
+/* Whether side dir of node n is clear of the node's other bonds: none
+ * leaves within 30 degrees of the side's normal. */
 static int bond_side_free(const bg_diagram_layout *L, const bg_model *m, int n, int b, const unsigned char *blocked,
                           int dir) {
   return bond_way_free(L, m, n, b, blocked, DIRV[dir], 0.866);
@@ -154,8 +154,9 @@ static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b,
 
 /* The ways out of node n for bond b: the middles of its free sides (not
  * taken by another bond's end or an earlier route, taken: a bit per side),
- * else its four corners on a diagonal, COST_DIAG dearer, and a block for a
- * corner an earlier route took (taken: bits 4-7) or another bond leaves by. */
+ * else its four corners on a diagonal, COST_DIAG dearer, a block dearer
+ * for a corner an earlier route took (taken: bits 4-7) and COST_CORNER_NEAR
+ * for one another bond leaves by. */
 static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsigned char *blocked,
                       const unsigned char *taken, port *out) {
   const bg_diagram_layout *L = r->L;
@@ -174,9 +175,9 @@ static int bond_ports(bg_router *r, const bg_model *m, int n, int b, const unsig
     /* a corner an earlier route took, or one another bond already leaves
      * by (a one-port on the diagonal), costs more: the two would leave
      * within degrees of each other, the one's causal stroke on the other
-     * (issue 31: a held-out network's feed junction); not a block, which
-     * made every corner of a junction of twelve one-ports alike and sent
-     * two routes out of one corner side by side */
+     * (issue 31: a held-out network's feed junction). The second is not a
+     * block: as one, every corner of a junction of twelve one-ports was
+     * alike and two routes left one corner side by side */
     if (taken[n] >> (4 + k) & 1) base += COST_CORNER_TAKEN;
     else if (!bond_way_free(L, m, n, b, blocked, bg_vunit(bg_vsub(q, c)), 0.9)) base += COST_CORNER_NEAR;
     out[np++] = (port){q, q, sx > 0 ? 0 : 1, base, 0, 1};
@@ -416,15 +417,15 @@ static int false_tees(const bg_diagram_layout *L, const unsigned char *routed, u
   return n;
 }
 
-/* Issue 31, a bond with corners passing through another bond's end: the router
- * counts a crossing inside a bond only up to 0.5 pt past its end, and the
+/* Issue 31, a bond with corners passing through another bond's end: the
+ * router counts a crossing inside a bond only up to 0.5 pt past its end, and the
  * ends it routes against move once the routes are in (a junction's end
  * circle is sized by the angles of its bonds as drawn), so a route may
  * come to run within 1 pt of an end, which then reads as ending on it (a
  * false T; a held-out 80-reaction network had 4). The bonds with corners
  * (marked in routed[]: routed here or the layout's elbows; the layout
- * holding routes p) that hold such an end are
- * routed again against the bonds as now drawn, paying COST_END within
+ * holding routes p) that hold such an end are routed again against the
+ * bonds as now drawn, paying COST_END within
  * END_NEAR pt of any end, inside or past it; kept when the false T's fall
  * and the bonds drawn differently cross at most UNTEE_CROSSINGS more other
  * bonds per T removed. Returns the routes kept, which the layout holds;
