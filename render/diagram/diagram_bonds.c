@@ -2,6 +2,7 @@
 /* The bonds pass: bond lines with their half arrows, causal strokes, bond
  * numbers (or variables) and labels placed beside their bonds, element
  * labels, and the Lagrange causality's artificial flow sources. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -119,7 +120,9 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
   }
   int best = 0, best_cost = -1;
   for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && best_cost != 1; k++) {
-    int cost = 2 * bg_place_score(d, cand[k], w + 1, h) + (k >= NOUT * NT); /* flipped: 1 more */
+    int flip = k >= NOUT * NT; /* flipped: 1 more */
+    int limit = best_cost < 0 ? INT_MAX : (best_cost - flip + 1) / 2; /* at it, cost >= best_cost */
+    int cost = 2 * bg_place_score_below(d, cand[k], w + 1, h, limit) + flip;
     if (best_cost < 0 || cost < best_cost) cost += bg_place_nearest_bond(d, cand[k], reach[k]) != b ? 2 : 0;
     if (best_cost < 0 || cost < best_cost) best = k, best_cost = cost;
   }

@@ -228,6 +228,11 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner);
 int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1);
 /* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
 int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
+/* The same, but it stops counting at limit and returns a value at or above
+ * it: a candidate that cannot beat the best so far is not counted out (a
+ * label near a fan of thousands of bonds out of one junction scanned them
+ * all for every candidate). */
+int bg_place_score_below(bg_diagram *d, bg_vec p, double w, double h, int limit);
 /* How many segments of polylines other than owner's a w × h box centred at p touches. */
 int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner);
 /* How many boxes (nodes, texts) a w × h box centred at p touches. */

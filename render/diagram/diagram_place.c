@@ -10,6 +10,7 @@
  * regions, and every query there tested them all (a query box meets a
  * segment only in a cell the segment passes through, so scores are the
  * same). */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -168,7 +169,7 @@ int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1)
 /* What a w × h box centred at p touches: the score of bg_place_score, or
  * (owner > 0) how many segments of polylines other than owner's, or (owner
  * -1) how many boxes. */
-static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
+static int query(bg_diagram *d, bg_vec p, double w, double h, int owner, int limit) {
   bg_obstacles *o = obstacles(d);
   double x0 = p.x - w / 2, y0 = p.y - h / 2, x1 = p.x + w / 2, y1 = p.y + h / 2;
   int score = 0;
@@ -186,18 +187,23 @@ static int query(bg_diagram *d, bg_vec p, double w, double h, int owner) {
         if (o->seg[k] ? bg_seg_hits_box(b, x0, y0, x1, y1)
                       : (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1))
           score += o->seg[k] ? 1 : 10; /* covering text is worse than crossing lines */
+        if (score >= limit) return score; /* it cannot win (bg_place_score_below) */
       }
     }
   return score;
 }
 
-int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, 0); }
+int bg_place_score(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, 0, INT_MAX); }
 
-int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
-  return query(d, p, w, h, owner);
+int bg_place_score_below(bg_diagram *d, bg_vec p, double w, double h, int limit) {
+  return query(d, p, w, h, 0, limit);
 }
 
-int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, -1) / 10; }
+int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
+  return query(d, p, w, h, owner, INT_MAX);
+}
+
+int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, -1, INT_MAX) / 10; }
 
 int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
   bg_obstacles *o = obstacles(d);
@@ -256,7 +262,7 @@ int bg_place_crossings(bg_diagram *d, bg_vec a, bg_vec b, int owner, int *bonds,
 int bg_place_best(bg_diagram *d, const bg_vec *cand, int n, double w, double h) {
   int best = 0, best_score = -1;
   for (int k = 0; k < n && best_score != 0; k++) {
-    int s = bg_place_score(d, cand[k], w, h);
+    int s = bg_place_score_below(d, cand[k], w, h, best_score < 0 ? INT_MAX : best_score);
     if (best_score < 0 || s < best_score) best = k, best_score = s;
   }
   bg_obstacle_rect(d, cand[best].x - w / 2, cand[best].y - h / 2, cand[best].x + w / 2,
