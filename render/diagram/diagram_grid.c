@@ -483,40 +483,19 @@ static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo,
  * column is wider than a row, so the page comes out landscape), the
  * widest part at least. Sets each part's row
  * offset (base, as -1 - row) and column offset (xoff). */
-static int by_height(const void *a, const void *b, void *ctx) {
-  const int *height = ctx, p = *(const int *)a, q = *(const int *)b;
-  return height[p] != height[q] ? height[q] - height[p] : p - q;
+static int by_index(const void *a, const void *b, void *ctx) {
+  (void)ctx;
+  return *(const int *)a - *(const int *)b;
 }
 
-static int by_width(const void *a, const void *b, void *ctx) {
-  const int *width = ctx, p = *(const int *)a, q = *(const int *)b;
-  return width[p] != width[q] ? width[q] - width[p] : p - q;
-}
-
-/* Places the parts in `order` (width[c] + 1 columns with the gap,
- * height[c] rows) on a page page_w columns wide by bg_layout_skyline
- * (layout_pack.c: each where it sits highest, then leftmost); returns the
- * area of the box they fill (columns x rows). */
-static double skyline(const int *order, int nparts, const int *width, const int *height, int page_w, int *xoff,
-                      int *base, int n) {
-  double *w = bg_xcalloc((size_t)n + 1, sizeof *w), *h = bg_xcalloc((size_t)n + 1, sizeof *h);
-  double *x = bg_xcalloc((size_t)n + 1, sizeof *x), *y = bg_xcalloc((size_t)n + 1, sizeof *y);
-  for (int i = 0; i < nparts; i++) w[order[i]] = width[order[i]] + 1, h[order[i]] = height[order[i]];
-  double area = bg_layout_skyline(nparts, order, w, h, page_w, 0, 0, x, y);
-  for (int i = 0; i < nparts; i++) xoff[order[i]] = (int)x[order[i]], base[order[i]] = -1 - (int)y[order[i]];
-  free(w), free(h), free(x), free(y);
-  return area;
-}
-
-/* Packs the parts on a page sqrt(area) columns wide (at least the widest)
- * on a skyline (skyline), the tallest first and then the widest first, and
- * keeps the order that fills the smaller box: a part beside a taller one
- * fills the room below its shorter neighbours (in shelves, a shelf was as
- * tall as its tallest part and the room under the others stayed empty),
- * and neither order wins on every model (docs/drawing.md, "disconnected
- * parts packed"). xoff and base are per component (n of them). Work: parts
- * x page width, the page width being the square root of the parts' area. */
-static void pack_parts(int *part, int nparts, const int *width, int *height, int *base, int *xoff, int n) {
+/* Packs the parts (component part[i], width[c] + 1 columns with the gap,
+ * height[c] rows) on a page sqrt(area) columns wide (at least the widest)
+ * by bg_layout_pack (layout_pack.c: on a skyline, each part where it sits
+ * highest, the tallest first or the widest first, whichever fills the
+ * smaller box; in shelves, a shelf was as tall as its tallest part and the
+ * room under the others stayed empty). Sets xoff and base (as -1 - row)
+ * per component; part[] comes back sorted. */
+static void pack_parts(int *part, int nparts, const int *width, const int *height, int *base, int *xoff) {
   double area = 0;
   int widest = 0;
   for (int i = 0; i < nparts; i++) {
@@ -525,15 +504,13 @@ static void pack_parts(int *part, int nparts, const int *width, int *height, int
   }
   int page_w = (int)ceil(sqrt(area));
   if (page_w < widest) page_w = widest;
-  int *wide = bg_xcalloc((size_t)nparts + 1, sizeof(int));
-  int *xw = bg_xcalloc((size_t)n + 1, sizeof(int)), *bw = bg_xcalloc((size_t)n + 1, sizeof(int));
-  memcpy(wide, part, (size_t)nparts * sizeof(int));
-  bg_sort(part, (size_t)nparts, sizeof *part, by_height, height);
-  bg_sort(wide, (size_t)nparts, sizeof *wide, by_width, (void *)width);
-  double by_h = skyline(part, nparts, width, height, page_w, xoff, base, n);
-  if (skyline(wide, nparts, width, height, page_w, xw, bw, n) < by_h)
-    for (int i = 0; i < nparts; i++) xoff[part[i]] = xw[part[i]], base[part[i]] = bw[part[i]];
-  free(wide), free(xw), free(bw);
+  bg_sort(part, (size_t)nparts, sizeof *part, by_index, NULL); /* equal parts in component order */
+  double *w = bg_xcalloc((size_t)nparts + 1, sizeof *w), *h = bg_xcalloc((size_t)nparts + 1, sizeof *h);
+  double *x = bg_xcalloc((size_t)nparts + 1, sizeof *x), *y = bg_xcalloc((size_t)nparts + 1, sizeof *y);
+  for (int i = 0; i < nparts; i++) w[i] = width[part[i]] + 1, h[i] = height[part[i]];
+  bg_layout_pack(nparts, w, h, page_w, 0, 0, x, y);
+  for (int i = 0; i < nparts; i++) xoff[part[i]] = (int)x[i], base[part[i]] = -1 - (int)y[i];
+  free(w), free(h), free(x), free(y);
 }
 
 /* Each component's hubs snake into bands of at most `wrap` columns when it is
@@ -599,7 +576,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     nstart += nband[c];
     base[c] = -1, part[nparts++] = c; /* marks the component done */
   }
-  pack_parts(part, nparts, width, height, base, xoff, n);
+  pack_parts(part, nparts, width, height, base, xoff);
   free(width), free(height), free(part);
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;

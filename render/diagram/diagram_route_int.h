@@ -158,7 +158,6 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
 int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends);
 /* What the current route's `ends` argument is: 0 a signal, 1 a bond, 2 a bond in end_zone. */
 static inline int bg_route_ends(const bg_router *r) { return r->bond < 0 ? 0 : r->end_zone ? 2 : 1; }
-/* The distance from point c to segment p-q. */
 /* Whether index segment s is the current route's own (bg_route_detour). */
 int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's

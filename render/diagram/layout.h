@@ -62,12 +62,14 @@ int *bg_layout_depths(const bg_layout_in *in, int *order);
  * every pushed run exactly at its wish. O(n) but for runs merged again
  * and again. */
 void bg_layout_align(int n, const double *wish, const double *gap, double lo, double hi, double *x);
-/* layout_pack.c: parts packed on a page `page` wide: part order[i] (of
- * n), w[p] by h[p], where it sits highest on the outline of those placed,
- * then leftmost, hgap to its right and vgap below it kept free; its corner
- * into x[p], y[p] (y down). Returns the area of the box the parts fill. */
-double bg_layout_skyline(int n, const int *order, const double *w, const double *h, double page, double hgap,
-                         double vgap, double *x, double *y);
+/* layout_pack.c: n parts, part i w[i] by h[i], packed on a page `page`
+ * wide, each where it sits highest on the outline of those placed, then
+ * leftmost, hgap to its right and vgap below it kept free, the tallest
+ * first or the widest first (ties: the lower index), whichever fills the
+ * smaller box; part i's corner into x[i], y[i] (y down). Returns the area
+ * of the box the parts fill. */
+double bg_layout_pack(int n, const double *w, const double *h, double page, double hgap, double vgap, double *x,
+                      double *y);
 /* layout_rows.c: the "rows" engine (bg_layout_run calls it for "rows"). */
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */

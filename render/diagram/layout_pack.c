@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Disconnected parts packed on a page (issue 31): a leaf under the grid
  * pass (diagram_grid.c, whose units are grid cells) and the rows layout
- * (layout_rows.c, points), which had each written the same skyline.
+ * (layout_rows.c, points), which had each written the same skyline and
+ * the same choice of order.
  *
  * Each part, in the order given, goes where it sits highest on the outline
  * of those placed (then leftmost), so a part beside a taller one fills the
@@ -15,14 +16,18 @@
 #include <stdlib.h>
 
 #include "base/arena.h"
+#include "base/sort.h"
 #include "diagram/layout.h"
 
 typedef struct sky_seg {
   double x0, x1, top;
 } sky_seg;
 
-double bg_layout_skyline(int n, const int *order, const double *w, const double *h, double page, double hgap,
-                         double vgap, double *x, double *y) {
+/* Part order[i] (of n) where it sits highest on the outline of those
+ * placed, then leftmost, hgap to its right and vgap below it kept free; its
+ * corner into x[p], y[p]. Returns the area of the box the parts fill. */
+static double skyline(int n, const int *order, const double *w, const double *h, double page, double hgap,
+                      double vgap, double *x, double *y) {
   int cap = 2 * n + 2, ns = 1;
   sky_seg *sky = bg_xcalloc((size_t)cap, sizeof *sky), *next = bg_xcalloc((size_t)cap, sizeof *next);
   sky[0] = (sky_seg){0, 1e300, 0};
@@ -57,4 +62,32 @@ double bg_layout_skyline(int n, const int *order, const double *w, const double 
   }
   free(sky), free(next);
   return used_w * used_h;
+}
+
+/* Larger key first, then the lower index. */
+static int larger_first(const void *a, const void *b, void *ctx) {
+  const double *key = ctx;
+  int p = *(const int *)a, q = *(const int *)b;
+  return key[p] != key[q] ? (key[p] > key[q] ? -1 : 1) : p - q;
+}
+
+/* The tallest first, then the widest first: the order that fills the
+ * smaller box is kept (neither wins on every model: docs/drawing.md,
+ * "disconnected parts packed"). */
+double bg_layout_pack(int n, const double *w, const double *h, double page, double hgap, double vgap, double *x,
+                      double *y) {
+  int *order = bg_xcalloc((size_t)n + 1, sizeof *order);
+  double *wx = bg_xcalloc((size_t)n + 1, sizeof *wx), *wy = bg_xcalloc((size_t)n + 1, sizeof *wy);
+  for (int i = 0; i < n; i++) order[i] = i;
+  bg_sort(order, (size_t)n, sizeof *order, larger_first, (void *)h);
+  double area = skyline(n, order, w, h, page, hgap, vgap, x, y);
+  for (int i = 0; i < n; i++) order[i] = i;
+  bg_sort(order, (size_t)n, sizeof *order, larger_first, (void *)w);
+  double wide = skyline(n, order, w, h, page, hgap, vgap, wx, wy);
+  if (wide < area) {
+    for (int i = 0; i < n; i++) x[i] = wx[i], y[i] = wy[i];
+    area = wide;
+  }
+  free(order), free(wx), free(wy);
+  return area;
 }

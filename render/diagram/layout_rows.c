@@ -112,7 +112,6 @@ static void find_parents(const bg_layout_in *in, const int *depth, const int *or
                          rank_cols *c) {
   int n = in->nnode, *pos = bg_xcalloc((size_t)n + 1, sizeof *pos);
   c->parent = bg_xcalloc((size_t)n + 1, sizeof *c->parent);
-  c->cy = bg_xcalloc((size_t)n + 1, sizeof *c->cy);
   for (int k = 0; k < n; k++) pos[order[k]] = k;
   for (int v = 0; v < n; v++) c->parent[v] = -1;
   for (int e = 0; e < in->nedge; e++)
@@ -136,6 +135,7 @@ static void rank_columns(const bg_layout_in *in, const int *depth, const int *or
   c->h = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->h);
   c->mid = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->mid);
   c->band = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->band);
+  c->cy = bg_xcalloc((size_t)n + 1, sizeof *c->cy);
   c->cl = NULL;
   if (in->cluster && in->ncluster > 0) {
     c->cl = bg_xcalloc((size_t)c->nrank + 1, sizeof *c->cl);
@@ -210,7 +210,7 @@ static void column_heights(const bg_layout_in *in, const hangers *hg, rank_cols 
                            double down, double *wish, double *gap, double *y) {
   const int *node = c->node + c->adr[r];
   int m = c->adr[r + 1] - c->adr[r];
-  double run = 0; /* the gaps summed: centre i of a stack at run[i] */
+  double run = 0; /* the gaps summed: a stack's centre i at y[i] */
   for (int i = 0; i < m; i++) {
     gap[i] = i ? reach_below(in, hg, node[i - 1]) + in->node_sep + reach_above(in, hg, node[i]) : 0;
     run += gap[i], y[i] = run;
@@ -419,35 +419,6 @@ static int parts_of(const bg_layout_in *in, int *part) {
   return np;
 }
 
-typedef struct part_box {
-  double w, h;
-  int k;
-} part_box;
-
-static int taller_first(const void *a, const void *b) {
-  const part_box *p = a, *q = b;
-  if (p->h != q->h) return p->h > q->h ? -1 : 1;
-  return p->k - q->k;
-}
-
-/* The parts in the order of box[] (sorted) packed by bg_layout_skyline,
- * `gap` apart: their corners into dx, dy (by part); returns the area of
- * the box they fill. */
-static double pack_skyline(const part_box *box, int np, double page, double gap, double *dx, double *dy) {
-  int *order = bg_xcalloc((size_t)np + 1, sizeof *order);
-  double *w = bg_xcalloc((size_t)np + 1, sizeof *w), *h = bg_xcalloc((size_t)np + 1, sizeof *h);
-  for (int i = 0; i < np; i++) order[i] = box[i].k, w[box[i].k] = box[i].w, h[box[i].k] = box[i].h;
-  double area = bg_layout_skyline(np, order, w, h, page, gap, gap, dx, dy);
-  free(order), free(w), free(h);
-  return area;
-}
-
-static int wider_first(const void *a, const void *b) {
-  const part_box *p = a, *q = b;
-  if (p->w != q->w) return p->w > q->w ? -1 : 1;
-  return p->k - q->k;
-}
-
 /* Part p of `in` as a graph of its own: its nodes (node[0..nnode), in
  * order), their edges and links renumbered; the arrays are the part's. */
 typedef struct part_in {
@@ -482,7 +453,7 @@ static void part_input_free(part_in *pi) {
 
 /* Disconnected parts are laid out each on its own (in one set of columns
  * their bands would interleave, and a part's folds cross the other's rows)
- * and packed on a skyline (pack_skyline), 2 × rank_sep apart, on a page
+ * and packed on a skyline (bg_layout_pack), 2 × rank_sep apart, on a page
  * about 1.4 times as wide as high (at least the widest part). */
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   int n = in->nnode;
@@ -515,7 +486,7 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   for (int p = 0; p < np; p++)
     part_input(in, node + nadr[p], nadr[p + 1] - nadr[p], edge + eadr[p], eadr[p + 1] - eadr[p], link + ladr[p],
                ladr[p + 1] - ladr[p], local, &pi[p]);
-  part_box *box = bg_xcalloc((size_t)np + 1, sizeof *box);
+  double *partw = bg_xcalloc((size_t)np + 1, sizeof *partw), *parth = bg_xcalloc((size_t)np + 1, sizeof *parth);
   double area = 0, widest = 0, gap = 2 * in->rank_sep, page = 0;
   for (int pass = 0; pass < 2; pass++) { /* each part alone, then each with bands as wide as the page */
     area = widest = 0;
@@ -525,7 +496,7 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
       lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
       rows_one(&pi[p].in, page, &lay);
       for (int i = 0; i < pn; i++) out->x[pi[p].node[i]] = lay.x[i], out->y[pi[p].node[i]] = lay.y[i];
-      box[p] = (part_box){lay.width, lay.height, p};
+      partw[p] = lay.width, parth[p] = lay.height;
       area += (lay.width + gap) * (lay.height + gap), widest = fmax(widest, lay.width);
       free(lay.x), free(lay.y);
     }
@@ -533,20 +504,11 @@ int bg_layout_rows(const bg_layout_in *in, bg_layout *out) {
   }
   for (int p = 0; p < np; p++) part_input_free(&pi[p]);
   free(pi);
-  /* the tallest first, then the widest first: the order that fills the
-   * smaller box (neither wins on every model: docs/drawing.md) */
   double *dx = bg_xcalloc((size_t)np + 1, sizeof *dx), *dy = bg_xcalloc((size_t)np + 1, sizeof *dy);
-  double *wx = bg_xcalloc((size_t)np + 1, sizeof *wx), *wy = bg_xcalloc((size_t)np + 1, sizeof *wy);
-  double pw = fmax(widest, sqrt(1.4 * area));
-  qsort(box, (size_t)np, sizeof *box, taller_first);
-  double by_h = pack_skyline(box, np, pw, gap, dx, dy);
-  qsort(box, (size_t)np, sizeof *box, wider_first);
-  if (pack_skyline(box, np, pw, gap, wx, wy) < by_h)
-    for (int p = 0; p < np; p++) dx[p] = wx[p], dy[p] = wy[p];
-  free(wx), free(wy);
+  bg_layout_pack(np, partw, parth, fmax(widest, sqrt(1.4 * area)), gap, gap, dx, dy);
   for (int v = 0; v < n; v++) out->x[v] += dx[part[v]], out->y[v] += dy[part[v]];
   fit_box(in, out);
   free(part), free(nadr), free(eadr), free(ladr), free(local), free(node), free(edge), free(link), free(fill);
-  free(box), free(dx), free(dy);
+  free(partw), free(parth), free(dx), free(dy);
   return 0;
 }
