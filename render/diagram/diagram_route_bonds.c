@@ -320,6 +320,33 @@ static int drawn_apart(const bg_diagram_layout *L, const bond_routes *p, const b
   return 0;
 }
 
+/* The layout holding routes tried against routes p (whose bonds' ends
+ * were t, h): how many other bonds cross the bonds drawn differently from
+ * p, as the layout holds them (*with_q) and under p (*with_p); the layout
+ * holds p after. */
+static void crossings_both(bg_diagram_layout *L, const bond_routes *p, const bg_vec *t, const bg_vec *h, int *with_q,
+                           int *with_p) {
+  int nb = L->m->nbond;
+  unsigned char *changed = bg_xcalloc((size_t)nb + 1, 1);
+  for (int b = 0; b < nb; b++) changed[b] = (unsigned char)drawn_apart(L, p, t, h, b);
+  *with_q = bg_route_crossings_of(L, changed);
+  install(L, p);
+  *with_p = bg_route_crossings_of(L, changed);
+  free(changed);
+}
+
+/* Routes q when keep, put in the layout, else p (which it holds); the
+ * other's arrays freed (never the layout's own, orig's). */
+static bond_routes kept(bg_diagram_layout *L, int keep, bond_routes p, bond_routes q, const bond_routes *orig) {
+  if (!keep) {
+    routes_free(&q);
+    return p;
+  }
+  install(L, &q);
+  if (p.adr != orig->adr) routes_free(&p);
+  return q;
+}
+
 /* The layout's own corners (orig) with the bonds marked BG_STRAIGHTEN drawn
  * straight, put in the layout; a bond whose straight line would run
  * through another node's label keeps its corners. */
@@ -374,22 +401,12 @@ static bond_routes second_pass(bg_diagram_layout *L, const unsigned char *blocke
   for (int b = 0; b < nb; b++) changed[b] = todo[b] == BG_STRAIGHTEN;
   route_pass(L, route, changed, 0, &q);
   install(L, &q);
-  int adj2 = bg_route_adjacent_crossings(L, route, NULL);
-  for (int b = 0; b < nb; b++) changed[b] = (unsigned char)drawn_apart(L, &p, t, h, b);
-  int cross2 = bg_route_crossings_of(L, changed);
-  install(L, &p);
-  int keep = adj2 < adj && cross2 <= bg_route_crossings_of(L, changed);
-  if (keep) {
-    install(L, &q);
-    for (int b = 0; b < nb; b++) *nmore += todo[b] != BG_KEEP;
-  }
+  int adj2 = bg_route_adjacent_crossings(L, route, NULL), with_q, with_p;
+  crossings_both(L, &p, t, h, &with_q, &with_p);
+  int keep = adj2 < adj && with_q <= with_p;
+  for (int b = 0; keep && b < nb; b++) *nmore += todo[b] != BG_KEEP;
   free(todo), free(route), free(changed), free(t), free(h), free(cnt);
-  if (!keep) {
-    routes_free(&q);
-    return p;
-  }
-  if (p.adr != orig->adr) routes_free(&p);
-  return q;
+  return kept(L, keep, p, q, orig);
 }
 
 /* ---------------------------------------------------------------- false T's */
@@ -447,23 +464,12 @@ static bond_routes untee(bg_diagram_layout *L, const unsigned char *routed, bond
   bond_routes q = {0};
   route_pass(L, redo, NULL, 1, &q);
   install(L, &q);
-  int after = false_tees(L, routed, NULL);
-  unsigned char *changed = bg_xcalloc((size_t)nb + 1, 1);
-  for (int b = 0; b < nb; b++) changed[b] = (unsigned char)drawn_apart(L, &p, t, h, b);
-  int cross2 = bg_route_crossings_of(L, changed);
-  install(L, &p);
-  int keep = after < before && cross2 <= bg_route_crossings_of(L, changed) + UNTEE_CROSSINGS * (before - after);
-  if (keep) {
-    install(L, &q);
-    for (int b = 0; b < nb; b++) *nmore += redo[b];
-  }
-  free(redo), free(changed), free(t), free(h);
-  if (!keep) {
-    routes_free(&q);
-    return p;
-  }
-  if (p.adr != orig->adr) routes_free(&p);
-  return q;
+  int after = false_tees(L, routed, NULL), with_q, with_p;
+  crossings_both(L, &p, t, h, &with_q, &with_p);
+  int keep = after < before && with_q <= with_p + UNTEE_CROSSINGS * (before - after);
+  for (int b = 0; keep && b < nb; b++) *nmore += redo[b];
+  free(redo), free(t), free(h);
+  return kept(L, keep, p, q, orig);
 }
 
 /* Whether bond b ends at a node of more than FAN_MIN bonds, whose bonds
