@@ -59,6 +59,13 @@ int bg_fields_hidden(const bg_diagram_layout *d, int n) {
   return d->rep && n < d->m->nelem && d->rep[n] != n;
 }
 
+int bg_bond_derivative(const bg_model *m, const bg_analysis *a, int b) {
+  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
+  for (int k = 0; k < 2; k++)
+    if (bg_elem_is_store(m->elem_kind[ends[k]]) && a->elem_caus[ends[k]] == BG_CAUS_DERIVATIVE) return 1;
+  return 0;
+}
+
 /* The bond whose variable a signal reads ("e7", "f7": bond number 7), or -1. */
 int bg_signal_bond(const bg_model *m, const char *var) {
   if (!var || (var[0] != 'e' && var[0] != 'f') || !var[1]) return -1;

@@ -33,15 +33,6 @@ static void draw_bond(bg_diagram *d, int b) {
   bg_scene_line(&d->scene, barb.x, barb.y);
 }
 
-static int derivative_bond(const bg_diagram *d, int b) {
-  const bg_model *m = d->m;
-  int ends[2] = {m->bond_tail[b], m->bond_head[b]};
-  for (int k = 0; k < 2; k++)
-    if (bg_elem_is_store(m->elem_kind[ends[k]]) && d->a->elem_caus[ends[k]] == BG_CAUS_DERIVATIVE)
-      return 1;
-  return 0;
-}
-
 static void stroke_bar(bg_diagram *d, bg_vec e, bg_vec n, double half) {
   bg_scene_move(&d->scene, e.x + n.x * half, e.y + n.y * half);
   bg_scene_line(&d->scene, e.x - n.x * half, e.y - n.y * half);
@@ -52,7 +43,7 @@ static void draw_stroke(bg_diagram *d, int b) {
   const bg_bond_geom *g = &d->L->bg[b];
   int at_head = d->a->bond_stroke[b] == BG_STROKE_HEAD;
   int conflict = d->a->bond_conflict && d->a->bond_conflict[b];
-  int deriv = derivative_bond(d, b);
+  int deriv = bg_bond_derivative(d->m, d->a, b);
   bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "stroke bond=%d%s%s",
                                      d->m->bond_num[b], deriv ? " derivative" : "",
                                      conflict ? " conflict" : "");

@@ -89,7 +89,10 @@ static bg_vec leave_dir(const bg_diagram_layout *d, int b, int n) {
  * more) of the half arrow of bond bi ending at j at radius ri: the angle
  * rule below keeps a stroke off the neighbouring lines, but a barb leans
  * back from its end towards one neighbour (a one-port at 45 degrees
- * between two bonds whose barbs lean its way: reactions12's s0). */
+ * between two bonds whose barbs lean its way: reactions12's s0). A
+ * derivative stroke that the style doubles has its second bar 2.5 line
+ * widths further out, nearer a barb leaning that way (a junction of many
+ * inertias in print, issue 31). */
 static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, int bk, double rk) {
   const bg_model *m = d->m;
   int st = d->a->bond_stroke[bk];
@@ -99,19 +102,55 @@ static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, 
   bg_vec c = bg_v(d->nx[j], d->ny[j]);
   bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, ri));
   bg_vec tip = bg_vadd(h, bg_vscale(bg_vadd(bg_barb_side_at(d, bg_vscale(u, -1)), u), barb));
-  bg_vec v = leave_dir(d, bk, j), e = bg_vadd(c, bg_vscale(v, rk)), n = bg_vscale(bg_vleft(v), half);
-  bg_vec e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
-  double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
-                     fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
-  return dist < 1.75 * w;
+  bg_vec v = leave_dir(d, bk, j), n = bg_vscale(bg_vleft(v), half);
+  int bars = d->st.derivative_double && bg_bond_derivative(m, d->a, bk) ? 2 : 1;
+  for (int k = 0; k < bars; k++) {
+    bg_vec e = bg_vadd(c, bg_vscale(v, rk + 2.5 * w * k)), e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
+    double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
+                       fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
+    if (dist < 1.75 * w) return 1;
+  }
+  return 0;
 }
 
 /* The radius the angle rule asks of a bond at junction j whose smallest
- * angle to another bond there is amin (see junction_radii). */
-static double angle_radius(const bg_diagram_layout *d, int j, double amin) {
+ * angle to another bond there is amin (see junction_radii), at most cap;
+ * angles below `least` count as that. */
+static double angle_radius(const bg_diagram_layout *d, int j, double amin, double least, double cap) {
   double base = 0.5 * fmax(d->nw[j], d->nh[j]), w = d->st.line_width;
-  amin = fmax(amin, BG_PI / 12);
-  return fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), 3 * base);
+  amin = fmax(amin, least);
+  return fmin(fmax(base, (4.5 * cos(amin) + 2) * w / sin(amin)), cap);
+}
+
+/* The end circle's largest radius at junction j: one and a half times its
+ * label, or at a junction of more than eight one-ports (round it on a ring,
+ * bg_layout_ring: bonds a few degrees apart whose strokes a small circle
+ * leaves on each other, a star of 40 one-ports on a 1-junction had 34
+ * touching) four tenths of its shortest bond (to its far end or first
+ * corner), and angles down to 2 degrees count. Junctions of many bonds to
+ * other junctions keep the small circle (a random graph's: a larger one
+ * brought touching strokes and false T's). */
+#define RING_ONE_PORTS 8
+static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest) {
+  const bg_model *m = d->m;
+  double cap = 1.5 * fmax(d->nw[j], d->nh[j]), shortest = INFINITY;
+  int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j], one_ports = 0;
+  *sharpest = BG_PI / 12; /* a tiny angle is not cured by distance */
+  for (int i = 0; i < nb; i++) {
+    int o = m->bond_tail[bs[i]] == j ? m->bond_head[bs[i]] : m->bond_tail[bs[i]];
+    one_ports += m->elem_nbond[o] == 1;
+  }
+  if (one_ports <= RING_ONE_PORTS) return cap;
+  bg_vec c = bg_v(d->nx[j], d->ny[j]);
+  for (int i = 0; i < nb; i++) {
+    int b = bs[i], tail = m->bond_tail[b] == j;
+    const bg_bond_geom *g = &d->bg[b];
+    if (g->spln) return cap; /* a curve: its length is not its chord */
+    bg_vec far = g->bendn ? route_pt(d, b, tail ? 1 : g->bendn) : tail ? g->head : g->tail;
+    shortest = fmin(shortest, bg_vlen(bg_vsub(far, c)));
+  }
+  *sharpest = BG_PI / 90;
+  return fmax(cap, 0.4 * shortest);
 }
 
 /* Whether some stroke and barb at junction j are too close with the bonds'
@@ -148,7 +187,7 @@ static void junction_radii(bg_diagram_layout *d) {
   double w = d->st.line_width, least = 2.5 * 7 * w;
   for (int j = 0; j < m->nelem; j++) {
     if (!bg_elem_is_junction(m->elem_kind[j]) || !bg_node_shown(d, j)) continue;
-    double cap = 1.5 * fmax(d->nw[j], d->nh[j]), amin = BG_PI / 2;
+    double sharpest, cap = radius_cap(d, j, &sharpest), amin = BG_PI / 2;
     int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
     double *own = bg_xcalloc((size_t)nb + 1, sizeof *own);
     for (int i = 0; i < nb; i++) {
@@ -160,7 +199,7 @@ static void junction_radii(bg_diagram_layout *d) {
       }
       amin = fmin(amin, own[i]);
     }
-    double r = angle_radius(d, j, amin);
+    double r = angle_radius(d, j, amin, sharpest, cap);
     for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
     while (r < cap && any_stroke_on_barb(d, j, -1)) {
       r = fmin(cap, r + 0.25 * w);
@@ -174,7 +213,7 @@ static void junction_radii(bg_diagram_layout *d) {
       bg_vec far = m->bond_tail[b] == j ? d->bg[b].head : d->bg[b].tail; /* the one-port's end (pass 0) */
       if (bg_vlen(bg_vsub(far, bg_vadd(c, bg_vscale(u, r)))) >= least) continue;
       double *rb = bond_radius(d, b, j);
-      *rb = fmin(r, angle_radius(d, j, own[i]));
+      *rb = fmin(r, angle_radius(d, j, own[i], sharpest, cap));
       while (*rb < r && any_stroke_on_barb(d, j, b)) *rb = fmin(r, *rb + 0.25 * w);
     }
     free(own);

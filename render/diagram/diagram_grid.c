@@ -45,7 +45,14 @@ typedef struct grid {
   /* routes: per edge the corners (grid cells), bent[e] = count, -1: slanted */
   int *bent, (*corner)[4];
   double *inst_cx, *inst_cy; /* per instance: the centre of its hubs (NULL: no instances) */
+  /* one-ports round a hub whose next cells cannot hold them (ring_leaves;
+   * NULL: none): per one-port its hub (-1: none) and offset from it in
+   * points, per hub the width and height of its ring */
+  int *orbit;
+  double *ring_x, *ring_y, *ring_w, *ring_h;
 } grid;
+
+static double layer_band(const grid *g);
 
 static unsigned long long cell_key(int x, int y) {
   return ((unsigned long long)(unsigned)x << 32) | (unsigned)y;
@@ -852,6 +859,80 @@ static unsigned char *signal_ends(const grid *g) {
   return on;
 }
 
+/* The gaps between neighbouring grid columns and between rows (to_points):
+ * at least 2.5 half arrows (7 line widths each) and the junction's end
+ * circle, so that thick lines (slides) do not leave one-port bonds hardly
+ * longer than their barb, and room for path and loop lines. */
+static void cell_gaps(const grid *g, double *xgap, double *ygap) {
+  const bg_diagram_layout *d = g->d;
+  double band = layer_band(g), least = 2.5 * 7 * d->st.line_width + 3;
+  *xgap = fmax(d->st.rank_sep / 2, least) + band;
+  *ygap = fmax(d->st.node_sep * 0.75, least) + band;
+}
+
+/* How many of the eight cells round hub v are free. */
+static int free_neighbours(const grid *g, int v) {
+  int n = 0;
+  for (int dx = -1; dx <= 1; dx++)
+    for (int dy = -1; dy <= 1; dy++) n += (dx || dy) && cell_free(g, g->gx[v] + dx, g->gy[v] + dy);
+  return n;
+}
+
+/* The placed hub at the other end of one-port u's first signal (that end
+ * itself, or the hub a one-port there hangs from), or -1. */
+static int signal_hub(const grid *g, int u) {
+  const bg_diagram_layout *d = g->d;
+  const bg_model *m = d->m;
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]], p = from == u ? to : to == u ? from : -1;
+    if (p < 0 || p >= g->n) continue;
+    if (!g->hub[p] && g->deg[p] == 1) p = other(g, g->adj[g->adr[p]], p);
+    return g->hub[p] && g->placed[p] ? p : -1;
+  }
+  return -1;
+}
+
+/* Hub v's nl one-ports on a ring round it (bg_layout_ring), in the order of
+ * their angles in dot's drawing, when the cells next to it cannot hold them
+ * (a one-port with a signal at the angle towards its other end on the grid)
+ * (issue 31: the rest went to cells further out, on bonds through the labels
+ * nearer in, which the bond router then took round the whole figure: a star
+ * of 20 one-ports had 6 crossings and 2 bonds on others, of 100, 709 and 597).
+ * The one-ports take no cell: the hub's cell is made as wide and tall as the
+ * ring (to_points), so the rest of the figure keeps out of it, and a side
+ * whose cell a bond or a node holds keeps its middle free. */
+static void ring_leaves(grid *g, int v, const int *leaf, int nl) {
+  const bg_diagram_layout *d = g->d;
+  if (!g->orbit) {
+    size_t n = (size_t)g->n + 1;
+    g->orbit = bg_xmalloc(n * sizeof(int));
+    for (int u = 0; u < g->n; u++) g->orbit[u] = -1;
+    g->ring_x = bg_xcalloc(n, sizeof(double)), g->ring_y = bg_xcalloc(n, sizeof(double));
+    g->ring_w = bg_xcalloc(n, sizeof(double)), g->ring_h = bg_xcalloc(n, sizeof(double));
+  }
+  double *ang = bg_xmalloc(3 * (size_t)nl * sizeof(double)), *ox = ang + nl, *oy = ox + nl, w = 0, h = 0;
+  for (int i = 0; i < nl; i++) {
+    int u = leaf[i], p = g->signalled[u] ? signal_hub(g, u) : -1;
+    w = fmax(w, d->nw[u]), h = fmax(h, d->nh[u]);
+    if (p >= 0 && p != v && (g->gx[p] != g->gx[v] || g->gy[p] != g->gy[v]))
+      ang[i] = atan2(g->gy[p] - g->gy[v], g->gx[p] - g->gx[v]); /* towards its signal's other end */
+    else ang[i] = atan2(d->ny[u] - d->ny[v], d->nx[u] - d->nx[v]);
+  }
+  int closed = 0;
+  for (int k = 0; k < 4; k++)
+    if ((g->sides[v] & (1 << k)) || !cell_free(g, g->gx[v] + side_dx[k], g->gy[v] + side_dy[k])) closed |= 1 << k;
+  double xgap, ygap, hx, hy;
+  cell_gaps(g, &xgap, &ygap);
+  bg_layout_ring(nl, ang, w, h, xgap, ygap, closed, ox, oy, &hx, &hy);
+  for (int i = 0; i < nl; i++) {
+    int u = leaf[i];
+    g->gx[u] = g->gx[v], g->gy[u] = g->gy[v], g->placed[u] = 1;
+    g->orbit[u] = v, g->ring_x[u] = ox[i], g->ring_y[u] = oy[i];
+  }
+  g->ring_w[v] = 2 * hx, g->ring_h[v] = 2 * hy;
+  free(ang);
+}
+
 /* One-ports to free sides of their hubs (assign_sides), the rest to a
  * diagonal cell: one away from the hub's barbs (diagonal_cell) when the
  * one-port has no signal, else the first free one round the hub
@@ -867,6 +948,10 @@ static void place_leaves(grid *g) {
     for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
       int w = other(g, g->adj[k], v);
       if (!g->hub[w] && !g->placed[w]) leaf[nl++] = w;
+    }
+    if (nl > free_neighbours(g, v)) {
+      ring_leaves(g, v, leaf, nl);
+      continue;
     }
     assign_sides(g, v, leaf, nl < 4 ? nl : 4);
     for (int i = 0; i < nl; i++) {
@@ -965,15 +1050,19 @@ static void to_points(grid *g) {
   int x0, x1, y0, y1;
   range(g, g->gx, &x0, &x1);
   range(g, g->gy, &y0, &y1);
-  double band = layer_band(g);
-  /* a bond between neighbouring cells at least 2.5 half arrows long (7 line
-   * widths each) and the junction's end circle: thick lines (slides) had
-   * one-port bonds not much longer than their barb */
-  double least = 2.5 * 7 * d->st.line_width + 3;
-  double *cx = line_centres(g, g->gx, d->nw, x0, x1, fmax(d->st.rank_sep / 2, least) + band);
-  double *cy = line_centres(g, g->gy, d->nh, y0, y1, fmax(d->st.node_sep * 0.75, least) + band);
+  double xgap, ygap, *sw = NULL, *sh = NULL;
+  cell_gaps(g, &xgap, &ygap);
+  if (g->orbit) { /* a hub's cell as large as its ring */
+    sw = bg_xmalloc((size_t)g->n * sizeof(double)), sh = bg_xmalloc((size_t)g->n * sizeof(double));
+    for (int v = 0; v < g->n; v++) sw[v] = fmax(d->nw[v], g->ring_w[v]), sh[v] = fmax(d->nh[v], g->ring_h[v]);
+  }
+  double *cx = line_centres(g, g->gx, sw ? sw : d->nw, x0, x1, xgap);
+  double *cy = line_centres(g, g->gy, sh ? sh : d->nh, y0, y1, ygap);
+  free(sw), free(sh);
   for (int v = 0; v < g->n; v++)
     if (own_node(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
+  for (int v = 0; g->orbit && v < g->n; v++)
+    if (g->orbit[v] >= 0) d->nx[v] += g->ring_x[v], d->ny[v] += g->ring_y[v];
   for (int v = 0; v < g->n; v++) /* a field's other ports where their field is (boxes: bg_parts_spread) */
     if (!own_node(d, v)) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];
   bg_layout *l = &d->lay;
@@ -1056,6 +1145,7 @@ static void grid_free(grid *g) {
   free(g->gx), free(g->gy), free(g->col), free(g->row);
   free(g->placed), free(g->hub), free(g->sides), free(g->mesh), free(g->bent), free(g->corner);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy), free(g->signalled);
+  free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h);
 }
 
 void bg_grid_place(bg_diagram_layout *d) {

@@ -128,6 +128,9 @@ int bg_diagram_muted(const bg_diagram *d);
 /* The layer colour and dash of path (kind 'p') or loop ('l') i. */
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
+/* Whether bond b ends at a store in derivative causality (its stroke drawn
+ * in the derivative colour, doubled in print). */
+int bg_bond_derivative(const bg_model *m, const bg_analysis *a, int b);
 /* The bond whose variable a signal reads ("e7", "f7"), or -1. */
 int bg_signal_bond(const bg_model *m, const char *var);
 /* The user state signal i comes from, or -1. */

@@ -70,6 +70,15 @@ void bg_layout_align(int n, const double *wish, const double *gap, double lo, do
  * of the box the parts fill. */
 double bg_layout_pack(int n, const double *w, const double *h, double page, double hgap, double vgap, double *x,
                       double *y);
+/* layout_ring.c: n one-ports round their junction, each on a straight bond
+ * from its centre, none through another's box (boxes at most w by h, gaps
+ * xgap and ygap between them): on the sides of the smallest rectangle that
+ * holds them, in the order of angle[i] (where each would be, radians, y
+ * down), the middle of side k (bit k of closed: right, up, left, down) left
+ * free when a bond leaves there. Offsets from the junction into ox[i],
+ * oy[i]; half the width and height the boxes cover into *hx, *hy. */
+void bg_layout_ring(int n, const double *angle, double w, double h, double xgap, double ygap, int closed,
+                    double *ox, double *oy, double *hx, double *hy);
 /* layout_rows.c: the "rows" engine (bg_layout_run calls it for "rows"). */
 int bg_layout_rows(const bg_layout_in *in, bg_layout *out);
 /* Whether name is an engine bg_layout_run accepts. */

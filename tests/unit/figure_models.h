@@ -385,6 +385,31 @@ __attribute__((unused)) static void fm_randtree(bg_strbuf *b, int n, unsigned se
   free(parent), free(deg);
 }
 
+/* A junction of many one-ports (issue 31, bg_layout_ring): junction kind
+ * `one` (1 or 0) with n one-ports of random kinds and names of random
+ * lengths (so boxes differ) and an effort source; with `bus` the junction
+ * sits in a chain (a source's 1-junction before it, a 1-junction with an
+ * inertia, a capacitor's 0-junction and a load after it) and one resistor
+ * after it is modulated by the first one-port's effort. */
+__attribute__((unused)) static void fm_star(bg_strbuf *b, int n, int one, int bus, unsigned seed) {
+  static const char *kind[] = {"R", "C", "I"}, *stem[] = {"", "a", "stage", "compliance"};
+  char first[32] = "U";
+  bg_sb_printf(b, "model star%d_%d%s\nSe U = 1\n%d hub\n", n, one, bus ? "_bus" : "", one);
+  for (int i = 0; i < n; i++) {
+    const char *k = kind[fm_rand(&seed) % 3], *st = stem[fm_rand(&seed) % 4];
+    bg_sb_printf(b, "%s %s%s%d = 1\nbond hub -> %s%s%d\n", k, k, st, i, k, st, i);
+    if (i == 0) snprintf(first, sizeof first, "%s%s%d", k, st, i);
+  }
+  if (!bus) {
+    bg_sb_puts(b, "bond U -> hub\n");
+    return;
+  }
+  bg_sb_printf(b, "1 s0\nR Rs = 1\n1 s1\nI L = 1\n0 n2\nC Cl = 1\nR load = 2\nR g : e = (1 + %s.e) * f\n"
+                  "bond U -> s0\nbond s0 -> Rs\nbond s0 -> hub\nbond hub -> s1\nbond s1 -> L\nbond s1 -> n2\n"
+                  "bond n2 -> Cl\nbond n2 -> load\nbond s1 -> g\n",
+               first);
+}
+
 __attribute__((unused)) static void fm_make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
 __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }

@@ -6,7 +6,9 @@
  * their signals lead there or a fold's bond comes from above), the
  * junctions of a band on one line, each band under the last one's end, the
  * bands even, disconnected parts each on its own, a wide column's nodes
- * level with their parents (bg_layout_align exact and least); and the
+ * level with their parents (bg_layout_align exact and least), the
+ * one-ports of a junction with too many for its cells round it, none on
+ * another's bond (bg_layout_ring); and the
  * diagram of a model above 2000 nodes is laid out with rows unless another
  * engine is asked for. */
 #include <stdlib.h>
@@ -460,6 +462,100 @@ static const char *engine_of(const char *src, const char *layout) {
   return name;
 }
 
+/* Whether the segment from the origin to (cx, cy) meets the box
+ * [x0, x1] x [y0, y1] (Liang-Barsky clipping of its parameter). */
+static int ray_meets(double cx, double cy, double x0, double y0, double x1, double y1) {
+  double lo = 0, hi = 1, p[4] = {-cx, cx, -cy, cy}, q[4] = {-x0, x1, -y0, y1};
+  for (int k = 0; k < 4; k++) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return 0;
+      continue;
+    }
+    double t = q[k] / p[k];
+    if (p[k] < 0) lo = fmax(lo, t);
+    else hi = fmin(hi, t);
+  }
+  return lo <= hi;
+}
+
+/* Whether the segment from the origin to (cx, cy) stays at least m from
+ * the box [x0, x1] x [y0, y1]: off the box grown by m along each axis, and
+ * m from each of its corners. */
+static int ray_clears(double cx, double cy, double x0, double y0, double x1, double y1, double m) {
+  if (ray_meets(cx, cy, x0 - m, y0, x1 + m, y1) || ray_meets(cx, cy, x0, y0 - m, x1, y1 + m)) return 0;
+  double len2 = cx * cx + cy * cy;
+  for (int k = 0; k < 4; k++) {
+    double px = k & 1 ? x1 : x0, py = k & 2 ? y1 : y0, t = len2 > 0 ? (px * cx + py * cy) / len2 : 0;
+    t = fmax(0, fmin(1, t));
+    if (hypot(px - t * cx, py - t * cy) < m) return 0;
+  }
+  return 1;
+}
+
+/* Issue 31, a junction of many one-ports (bg_layout_ring): every one-port
+ * on its own slot, no two boxes nearer than a gap, no bond (the segment
+ * from the junction to a box's centre) through another box with 2 pt to
+ * spare, a side's middle left to the bond that leaves there, everything
+ * inside the reported half sizes, the one-ports round the junction in the
+ * order of their wanted angles, a shape between 1 : 2 and 3 : 1, and the
+ * eight cells of the grid when eight slots hold them. */
+static void test_ring(void) {
+  static const double sizes[][4] = {{40, 18, 15, 10}, {90, 20, 30, 15}, {20, 30, 12, 12}, {60, 14, 36, 18}};
+  static const int closes[] = {0, 1, 5, 10, 15};
+  static const int counts[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 13, 17, 20, 24, 31, 40, 63, 100, 200, 500};
+  enum { MAXN = 500 };
+  static double ang[MAXN], ox[MAXN], oy[MAXN];
+  int apart = 1, clear = 1, axes = 1, inside = 1, order = 1, shape = 1, cells = 1, runs = 0;
+  unsigned s = 11;
+  for (size_t si = 0; si < sizeof sizes / sizeof *sizes; si++)
+    for (size_t ci = 0; ci < sizeof closes / sizeof *closes; ci++)
+      for (size_t ni = 0; ni < sizeof counts / sizeof *counts; ni++) {
+        int n = counts[ni], closed = closes[ci];
+        double w = sizes[si][0], h = sizes[si][1], xg = sizes[si][2], yg = sizes[si][3], hx, hy;
+        for (int i = 0; i < n; i++) ang[i] = ((double)(rnd(&s) % 6283) - 3141) / 1000;
+        bg_layout_ring(n, ang, w, h, xg, yg, closed, ox, oy, &hx, &hy);
+        runs++;
+        for (int i = 0; i < n; i++) {
+          inside &= fabs(ox[i]) + w / 2 <= hx + 1e-9 && fabs(oy[i]) + h / 2 <= hy + 1e-9;
+          for (int j = 0; j < n; j++) {
+            if (j == i) continue;
+            apart &= fabs(ox[i] - ox[j]) >= w + xg - 1e-9 || fabs(oy[i] - oy[j]) >= h + yg - 1e-9;
+            clear &= ray_clears(ox[i], oy[i], ox[j] - w / 2, oy[j] - h / 2, ox[j] + w / 2, oy[j] + h / 2, 2);
+          }
+          for (int k = 0; k < 4; k++) /* the bond leaving by the middle of a closed side */
+            if (closed & (1 << k)) {
+              double ex = k == 0 ? 2 * hx : k == 2 ? -2 * hx : 0, ey = k == 1 ? -2 * hy : k == 3 ? 2 * hy : 0;
+              axes &= !ray_meets(ex, ey, ox[i] - w / 2, oy[i] - h / 2, ox[i] + w / 2, oy[i] + h / 2);
+            }
+        }
+        /* sorted by wanted angle, the slots' angles turn round once */
+        int idx[MAXN], descents = 0;
+        for (int i = 0; i < n; i++) idx[i] = i;
+        for (int i = 1; i < n; i++)
+          for (int j = i; j > 0 && ang[idx[j]] < ang[idx[j - 1]]; j--) {
+            int t = idx[j];
+            idx[j] = idx[j - 1], idx[j - 1] = t;
+          }
+        for (int i = 0; i < n; i++) {
+          int a = idx[i], b = idx[(i + 1) % n];
+          descents += atan2(oy[b], ox[b]) < atan2(oy[a], ox[a]);
+        }
+        order &= n < 2 || descents <= 1;
+        int open = 0;
+        for (int k = 0; k < 4; k++) open += !(closed & (1 << k));
+        if (n >= 12) shape &= 2 * hx <= 3 * 2 * hy && 2 * 2 * hx >= 2 * hy;
+        if (n <= 4 + open) cells &= fabs(hx - (w + xg + w / 2)) < 1e-9 && fabs(hy - (h + yg + h / 2)) < 1e-9;
+      }
+  OK(runs == 420);
+  OK(apart);
+  OK(clear);
+  OK(axes);
+  OK(inside);
+  OK(order);
+  OK(shape);
+  OK(cells);
+}
+
 static void test_engine_choice(void) {
   char *big = mass_chain(501), *small = mass_chain(40); /* 2005 and 161 nodes */
   STR_EQ(engine_of(big, NULL), "rows");
@@ -477,6 +573,7 @@ int main(void) {
   test_many_parts();
   test_random_graphs();
   test_align();
+  test_ring();
   test_level_parents();
   test_engine_choice();
   return bg_t_done();
