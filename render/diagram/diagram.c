@@ -261,13 +261,14 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h), free(link_a), free(link_b);
   if (rc == 0 && rows) scale_rows(d, gw, gh);
+  if (rc == 0) {
+    d->nx = d->lay.x, d->ny = d->lay.y;
+    d->splx = d->lay.splx, d->sply = d->lay.sply;
+    if (grid) bg_grid_place(d, &ref, gw, gh);
+    bg_parts_spread(d);
+  }
   if (refsized) free(gw), free(gh);
-  if (rc) return -1;
-  d->nx = d->lay.x, d->ny = d->lay.y;
-  d->splx = d->lay.splx, d->sply = d->lay.sply;
-  if (grid) bg_grid_place(d);
-  bg_parts_spread(d);
-  return 0;
+  return rc ? -1 : 0;
 }
 
 /* ---------------------------------------------------------------- highlight */

@@ -50,6 +50,8 @@ typedef struct grid {
    * points, per hub the width and height of its ring */
   int *orbit;
   double *ring_x, *ring_y, *ring_w, *ring_h;
+  const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
+  const double *rw, *rh;
 } grid;
 
 static double layer_band(const grid *g);
@@ -863,12 +865,13 @@ static unsigned char *signal_ends(const grid *g) {
  * at least 2.5 half arrows (7 line widths each) and the junction's end
  * circle, so that thick lines (slides) do not leave one-port bonds hardly
  * longer than their barb, and room for path and loop lines. */
-static void cell_gaps(const grid *g, double *xgap, double *ygap) {
-  const bg_diagram_layout *d = g->d;
-  double band = layer_band(g), least = 2.5 * 7 * d->st.line_width + 3;
-  *xgap = fmax(d->st.rank_sep / 2, least) + band;
-  *ygap = fmax(d->st.node_sep * 0.75, least) + band;
+static void style_gaps(const bg_style *st, double band, double *xgap, double *ygap) {
+  double least = 2.5 * 7 * st->line_width + 3;
+  *xgap = fmax(st->rank_sep / 2, least) + band;
+  *ygap = fmax(st->node_sep * 0.75, least) + band;
 }
+
+static void cell_gaps(const grid *g, double *xgap, double *ygap) { style_gaps(&g->d->st, layer_band(g), xgap, ygap); }
 
 /* How many of the eight cells round hub v are free. */
 static int free_neighbours(const grid *g, int v) {
@@ -910,10 +913,12 @@ static void ring_leaves(grid *g, int v, const int *leaf, int nl) {
     g->ring_x = bg_xcalloc(n, sizeof(double)), g->ring_y = bg_xcalloc(n, sizeof(double));
     g->ring_w = bg_xcalloc(n, sizeof(double)), g->ring_h = bg_xcalloc(n, sizeof(double));
   }
-  double *ang = bg_xmalloc(3 * (size_t)nl * sizeof(double)), *ox = ang + nl, *oy = ox + nl, w = 0, h = 0;
+  double *ang = bg_xmalloc(3 * (size_t)nl * sizeof(double)), *ox = ang + nl, *oy = ox + nl;
+  double w = 0, h = 0, rw = 0, rh = 0, sx = 0, sy = 0;
   for (int i = 0; i < nl; i++) {
     int u = leaf[i], p = g->signalled[u] ? signal_hub(g, u) : -1;
-    w = fmax(w, d->nw[u]), h = fmax(h, d->nh[u]);
+    w = fmax(w, d->nw[u]), h = fmax(h, d->nh[u]), rw = fmax(rw, g->rw[u]), rh = fmax(rh, g->rh[u]);
+    if (g->rw[u] > 0 && g->rh[u] > 0) sx = fmax(sx, d->nw[u] / g->rw[u]), sy = fmax(sy, d->nh[u] / g->rh[u]);
     if (p >= 0 && p != v && (g->gx[p] != g->gx[v] || g->gy[p] != g->gy[v]))
       ang[i] = atan2(g->gy[p] - g->gy[v], g->gx[p] - g->gx[v]); /* towards its signal's other end */
     else ang[i] = atan2(d->ny[u] - d->ny[v], d->nx[u] - d->nx[v]);
@@ -921,15 +926,22 @@ static void ring_leaves(grid *g, int v, const int *leaf, int nl) {
   int closed = 0;
   for (int k = 0; k < 4; k++)
     if ((g->sides[v] & (1 << k)) || !cell_free(g, g->gx[v] + side_dx[k], g->gy[v] + side_dy[k])) closed |= 1 << k;
-  double xgap, ygap, hx, hy;
+  /* laid out in the reference style without the layers' room, then
+   * stretched along each axis until every box of this style fits in its
+   * stretched reference box and the pitches are this style's: the same
+   * ring, corner for corner, in every style and layer set (a stretch keeps
+   * every clearance of the reference ring) */
+  double xgap, ygap, rxgap, rygap, hx, hy;
   cell_gaps(g, &xgap, &ygap);
-  bg_layout_ring(nl, ang, w, h, xgap, ygap, closed, ox, oy, &hx, &hy);
+  style_gaps(g->ref, 0, &rxgap, &rygap);
+  bg_layout_ring(nl, ang, rw, rh, rxgap, rygap, closed, ox, oy, &hx, &hy);
+  sx = fmax(sx, (w + xgap) / (rw + rxgap)), sy = fmax(sy, (h + ygap) / (rh + rygap));
   for (int i = 0; i < nl; i++) {
     int u = leaf[i];
     g->gx[u] = g->gx[v], g->gy[u] = g->gy[v], g->placed[u] = 1;
-    g->orbit[u] = v, g->ring_x[u] = ox[i], g->ring_y[u] = oy[i];
+    g->orbit[u] = v, g->ring_x[u] = ox[i] * sx, g->ring_y[u] = oy[i] * sy;
   }
-  g->ring_w[v] = 2 * hx, g->ring_h[v] = 2 * hy;
+  g->ring_w[v] = 2 * hx * sx, g->ring_h[v] = 2 * hy * sy;
   free(ang);
 }
 
@@ -1148,10 +1160,11 @@ static void grid_free(grid *g) {
   free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h);
 }
 
-void bg_grid_place(bg_diagram_layout *d) {
+void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh) {
   if (d->nnode == 0) return; /* an empty model: nothing to place, and no line range */
   grid g;
   grid_alloc(&g, d);
+  g.ref = ref, g.rw = rw, g.rh = rh;
   classify(&g);
   g.signalled = signal_ends(&g);
   for (int v = 0; v < g.n; v++) g.placed[v] = !own_node(d, v); /* inside a box, a field's other port */

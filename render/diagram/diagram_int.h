@@ -170,8 +170,10 @@ bg_vec bg_node_end(const bg_diagram_layout *d, int n, bg_vec dir);
 bg_vec bg_geom_along(const bg_diagram_layout *d, int b, double t, bg_vec *dir);
 /* The ends of bond b's longest leg (the whole bond when it is straight). */
 void bg_geom_longest_leg(const bg_diagram_layout *d, int b, bg_vec *p, bg_vec *q);
-/* The grid placement pass (diagram_grid.c): node centres and bond routes. */
-void bg_grid_place(bg_diagram_layout *d);
+/* The grid placement pass (diagram_grid.c): node centres and bond routes.
+ * ref, rw, rh: the reference style and the boxes the labels have in it
+ * (what Graphviz saw), for what must not change with the style. */
+void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh);
 /* The side of the barb at the head of bond b: a unit normal. */
 bg_vec bg_barb_side(const bg_diagram_layout *d, int b);
 /* The barb's side for travel in direction dir (a bent bond's numbers use
