@@ -1056,6 +1056,35 @@ static double layer_band(const grid *g) {
   return most ? d->st.layer_offset + fmax(3, 2.5 * d->st.layer_width) * (most - 1) : 0;
 }
 
+/* One-ports that a ring's row or column pushed away from their hub (a bus's
+ * inertia level with its ring's top: the ring's cell sets its whole row's
+ * height): each hung straight off a side of a hub in a row (column) that
+ * holds a ring moves back to a gap from its hub when its box there meets no
+ * other box or ring. Only there: elsewhere a row's one-ports stay in line. */
+static void pull_in(grid *g, double xgap, double ygap) {
+  bg_diagram_layout *d = g->d;
+  int nr = 0, *rings = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
+  for (int v = 0; v < g->n; v++)
+    if (g->ring_w[v] > 0) rings[nr++] = v;
+  for (int w = 0; w < g->n; w++) {
+    if (!own_node(d, w) || g->hub[w] || g->deg[w] != 1 || g->orbit[w] >= 0) continue;
+    int v = other(g, g->adj[g->adr[w]], w), dx = g->gx[w] - g->gx[v], dy = g->gy[w] - g->gy[v], pushed = 0;
+    if (!g->hub[v] || g->ring_w[v] > 0 || abs(dx) + abs(dy) != 1) continue;
+    for (int k = 0; k < nr; k++) pushed |= dx ? g->gx[rings[k]] == g->gx[v] : g->gy[rings[k]] == g->gy[v];
+    if (!pushed) continue;
+    double x = dx ? d->nx[v] + dx * (d->nw[v] / 2 + xgap + d->nw[w] / 2) : d->nx[w];
+    double y = dy ? d->ny[v] + dy * (d->nh[v] / 2 + ygap + d->nh[w] / 2) : d->ny[w];
+    int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5;
+    for (int u = 0; clear && u < g->n; u++) {
+      if (u == w || !own_node(d, u)) continue;
+      double hw = fmax(d->nw[u], g->ring_w[u]) / 2, hh = fmax(d->nh[u], g->ring_h[u]) / 2;
+      clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + hw || fabs(y - d->ny[u]) >= d->nh[w] / 2 + hh;
+    }
+    if (clear) d->nx[w] = x, d->ny[w] = y;
+  }
+  free(rings);
+}
+
 /* Node centres and bond corners in points; the layout's box. */
 static void to_points(grid *g) {
   bg_diagram_layout *d = g->d;
@@ -1075,6 +1104,7 @@ static void to_points(grid *g) {
     if (own_node(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
   for (int v = 0; g->orbit && v < g->n; v++)
     if (g->orbit[v] >= 0) d->nx[v] += g->ring_x[v], d->ny[v] += g->ring_y[v];
+  if (g->orbit) pull_in(g, xgap, ygap);
   for (int v = 0; v < g->n; v++) /* a field's other ports where their field is (boxes: bg_parts_spread) */
     if (!own_node(d, v)) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];
   bg_layout *l = &d->lay;
