@@ -1058,9 +1058,10 @@ static double layer_band(const grid *g) {
 
 /* One-ports that a ring's row or column pushed away from their hub (a bus's
  * inertia level with its ring's top: the ring's cell sets its whole row's
- * height): each hung straight off a side of a hub in a row (column) that
- * holds a ring moves back to a gap from its hub when its box there meets no
- * other box or ring. Only there: elsewhere a row's one-ports stay in line. */
+ * height and column's width): each in a cell next to a hub in a row or
+ * column that holds a ring (a side or a diagonal one) moves back to a gap
+ * from its hub along the ring's way when its box there meets no other box
+ * or ring. Only there: elsewhere a row's one-ports stay in line. */
 static void pull_in(grid *g, double xgap, double ygap) {
   bg_diagram_layout *d = g->d;
   int nr = 0, *rings = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
@@ -1069,16 +1070,17 @@ static void pull_in(grid *g, double xgap, double ygap) {
   for (int w = 0; w < g->n; w++) {
     if (!own_node(d, w) || g->hub[w] || g->deg[w] != 1 || g->orbit[w] >= 0) continue;
     int v = other(g, g->adj[g->adr[w]], w), dx = g->gx[w] - g->gx[v], dy = g->gy[w] - g->gy[v], pushed = 0;
-    if (!g->hub[v] || g->ring_w[v] > 0 || abs(dx) + abs(dy) != 1) continue;
-    for (int k = 0; k < nr; k++) pushed |= dx ? g->gx[rings[k]] == g->gx[v] : g->gy[rings[k]] == g->gy[v];
+    if (!g->hub[v] || g->ring_w[v] > 0 || abs(dx) > 1 || abs(dy) > 1 || (!dx && !dy)) continue;
+    for (int k = 0; k < nr; k++) pushed |= (dx && g->gx[rings[k]] == g->gx[v]) || (dy && g->gy[rings[k]] == g->gy[v]);
     if (!pushed) continue;
     double x = dx ? d->nx[v] + dx * (d->nw[v] / 2 + xgap + d->nw[w] / 2) : d->nx[w];
     double y = dy ? d->ny[v] + dy * (d->nh[v] / 2 + ygap + d->nh[w] / 2) : d->ny[w];
     int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5;
+    double room = fmin(xgap, ygap) / 2; /* to any other box: half a gap */
     for (int u = 0; clear && u < g->n; u++) {
       if (u == w || !own_node(d, u)) continue;
       double hw = fmax(d->nw[u], g->ring_w[u]) / 2, hh = fmax(d->nh[u], g->ring_h[u]) / 2;
-      clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + hw || fabs(y - d->ny[u]) >= d->nh[w] / 2 + hh;
+      clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + hw + room || fabs(y - d->ny[u]) >= d->nh[w] / 2 + hh + room;
     }
     if (clear) d->nx[w] = x, d->ny[w] = y;
   }

@@ -410,6 +410,43 @@ __attribute__((unused)) static void fm_star(bg_strbuf *b, int n, int one, int bu
                first);
 }
 
+/* A held-out tree with junctions of many one-ports: n junctions, each
+ * joined to one of the four before it; every third has 0-12 one-ports, the
+ * others 0-2 (one at least where a junction would have a single bond);
+ * random kinds and name lengths; three resistors modulated by random
+ * capacitors' efforts. */
+__attribute__((unused)) static void fm_ringtree(bg_strbuf *b, int n, unsigned seed) {
+  static const char *kind[] = {"R", "C", "I"}, *stem[] = {"", "x", "stage"};
+  static const int many[] = {0, 1, 2, 3, 5, 9, 12};
+  int *deg = calloc((size_t)n + 1, sizeof *deg), ncap = 0;
+  char (*cap)[32] = calloc(64, sizeof *cap);
+  bg_strbuf bonds = {0};
+  bg_sb_printf(b, "model ringtree%d_%u\nSe U = 1\n", n, seed);
+  for (int v = 0; v < n; v++) bg_sb_printf(b, "%d j%d\n", v % 2, v);
+  bg_sb_puts(&bonds, "bond U -> j0\n"), deg[0]++;
+  for (int v = 1; v < n; v++) {
+    int p = v - 1 - (int)(fm_rand(&seed) % (unsigned)(v < 4 ? v : 4));
+    bg_sb_printf(&bonds, "bond j%d -> j%d\n", p, v), deg[p]++, deg[v]++;
+  }
+  for (int v = 0; v < n; v++) {
+    int cnt = v % 3 == 0 ? many[fm_rand(&seed) % 7] : (int)(fm_rand(&seed) % 3);
+    if (deg[v] + cnt < 2) cnt = 1;
+    for (int q = 0; q < cnt; q++) {
+      const char *k = kind[fm_rand(&seed) % 3], *st = stem[fm_rand(&seed) % 3];
+      bg_sb_printf(b, "%s %c%s%d_%d = 1\n", k, k[0] + 32, st, v, q);
+      bg_sb_printf(&bonds, "bond j%d -> %c%s%d_%d\n", v, k[0] + 32, st, v, q);
+      if (k[0] == 'C' && ncap < 64) snprintf(cap[ncap++], 32, "%c%s%d_%d", k[0] + 32, st, v, q);
+    }
+  }
+  for (int i = 0; i < 3 && ncap; i++) {
+    int v = (int)(fm_rand(&seed) % (unsigned)n);
+    bg_sb_printf(b, "R m%d : e = (1 + %s.e) * f\n", i, cap[fm_rand(&seed) % (unsigned)ncap]);
+    bg_sb_printf(&bonds, "bond j%d -> m%d\n", v, i);
+  }
+  bg_sb_puts(b, bg_sb_str(&bonds));
+  bg_sb_free(&bonds), free(deg), free(cap);
+}
+
 __attribute__((unused)) static void fm_make_tree(bg_strbuf *b, int n) { fm_tree(b, n, 31u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(b, n, n); }
 __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }

@@ -736,7 +736,8 @@ static int pushed_one_ports(fx *f) {
  * on another, touch, nor run short; the path lines round a junction of 100
  * bonds a few degrees apart crowd the numbers (counted, not held). No style
  * changes the arrangement (the ring laid out in the reference style and
- * stretched: 552 pairs differed when each style laid out its own). */
+ * stretched: 552 pairs differed when each style laid out its own). Then
+ * eight held-out trees with junctions of up to 12 one-ports (fm_ringtree). */
 static void test_many_one_ports(void) {
   static const struct {
     int n, one, bus;
@@ -761,7 +762,35 @@ static void test_many_one_ports(void) {
       for (int k = 0; k < 2; k++) fc_add(&tot[k], &each[si][k]);
     bg_sb_free(&src);
   }
+  /* held-out trees whose every third junction has up to 12 one-ports
+   * (fm_ringtree, 10-24 junctions), default style and layers */
+  fc_stats trees = {0};
+  for (int t = 0; t < 8; t++) {
+    bg_strbuf src = {0};
+    char name[48];
+    fm_ringtree(&src, 10 + 2 * t, 4099u + 31u * (unsigned)t);
+    snprintf(name, sizeof name, "ringtree%d", 10 + 2 * t);
+    dump_model(name, &src);
+    fx f;
+    int rc = fm_load(&f, name, bg_sb_str(&src));
+    BG_T_REPORT(rc == 0, "%s compiles", name);
+    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+    bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
+    OK(rc != 0 || d != NULL);
+    if (d) {
+      fc_stats st = {0};
+      if (fc_explain) printf("%s:\n", name);
+      fc_count(bg_diagram_scene(d), &st);
+      st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
+      if (verbose) print_row(name, &st);
+      fc_add(&trees, &st);
+      bg_diagram_free(d);
+    }
+    if (rc == 0) fx_free(&f);
+    bg_sb_free(&src);
+  }
   if (verbose) print_row("many one-ports, default layers", &tot[0]), print_row("many one-ports, every layer", &tot[1]);
+  if (verbose) print_row("trees of many one-ports", &trees);
   for (int k = 0; k < 2; k++) {
     INT_EQ(tot[k].crossings, 0);
     INT_EQ(tot[k].bond_overlaps, 0);
@@ -777,6 +806,18 @@ static void test_many_one_ports(void) {
   INT_EQ(tot[0].over, 0);
   INT_EQ(tot[0].astray, 0);
   INT_EQ(tot[0].lines_through, 1);
+  /* the trees (before the ring: 10 touching strokes, 4 numbers astray, 2
+   * bonds on lines and 6 signal crossings in ringtree24 alone): one stroke
+   * touching and one crossing left, both ringtree24's hub bond 15, which the
+   * bond router takes out of its junction's corner across the ring's bond 47 */
+  INT_EQ(trees.false_tees, 0);
+  INT_EQ(trees.bond_overlaps, 0);
+  INT_EQ(trees.lines_through, 0);
+  INT_EQ(trees.over, 0);
+  INT_EQ(trees.astray, 0);
+  INT_EQ(trees.short_bonds, 0);
+  OK(trees.touching <= 1);
+  OK(trees.crossings <= 1);
 }
 
 /* Development: BG_FIGURES_MEASURE=a.bg:b.bg measures model files of one's
