@@ -11,11 +11,13 @@
  * crosses another or passes through a label. Along a side the slots are at
  * least a box and a gap apart, and further apart towards the corners: a bond
  * to a slot far along a side reaches its box through the box's inner edge, and
- * must pass outside the box before it (rule_next). The corners hold one each
- * when both neighbours leave room. The rectangle is the smallest in area that
- * holds them all; a side whose middle a bond of the junction leaves through
- * keeps that slot free. The ring is the grid's eight cells when it is as small
- * as it can be (one slot on each side's middle and at each corner). */
+ * must pass outside the box before it (rule_next); neighbouring bonds keep
+ * an angle between them. The corners hold one each when both neighbours
+ * leave room. Of the rectangles that hold them all, the one whose larger side
+ * is least, a width counted at 2/3 (pick_rect); a side whose middle a bond of
+ * the junction leaves through keeps that slot free. The ring is the grid's
+ * eight cells when it is as small as it can be (one slot on each side's
+ * middle and at each corner). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -146,7 +148,8 @@ static slot *list_slots(const ring_box *b, double A, double B, int closed, int *
 }
 
 /* The rectangle: for each number of pitches across, the fewest up and down
- * that hold n (binary search: more height never holds fewer); of those the
+ * that hold n (a binary search over heights, each height it keeps holding
+ * them all); of those the
  * one whose larger side is least, a width counted at 1 / RING_ASPECT (a
  * page's landscape shape; the smallest area alone was a flat band, every
  * bond a sliver out of the junction), then the smaller area. A narrow
@@ -190,7 +193,10 @@ void bg_layout_ring(int n, const double *angle, double w, double h, double xgap,
   double A = b.px, B = b.py;
   if (!pick_rect(&b, n, closed, &A, &B)) { /* no rectangle keeps the turn: without it */
     b.turn = 0;
-    pick_rect(&b, n, closed, &A, &B);
+    if (!pick_rect(&b, n, closed, &A, &B)) { /* not met in any test: a square grown until it holds them */
+      int nv, nh, corner;
+      while (ring_slots(&b, A, B, closed, &nv, &nh, &corner) < n) A *= 2, B *= 2;
+    }
   }
   int ns;
   slot *s = list_slots(&b, A, B, closed, &ns);
