@@ -641,6 +641,28 @@ static void test_large_figures(void) {
  * stroke touching another bond (5 before a route stopped taking a corner
  * another bond leaves by), no line through an element's label; one bond
  * drawn along another's line for 7 pt, as before (left). */
+/* Held-out model src (named name), drawn in the default style and layers:
+ * its counts, one node's crossing lines among them, added to tot. */
+static void count_default(const char *name, const bg_strbuf *src, fc_stats *tot, int verbose) {
+  dump_model(name, src);
+  fx f;
+  int rc = fm_load(&f, name, bg_sb_str(src));
+  BG_T_REPORT(rc == 0, "held-out %s compiles", name);
+  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
+  OK(rc != 0 || d != NULL);
+  if (d) {
+    fc_stats st = {0};
+    if (fc_explain) printf("%s:\n", name);
+    fc_count(bg_diagram_scene(d), &st);
+    st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
+    if (verbose) print_row(name, &st);
+    fc_add(tot, &st);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+}
+
 static void test_held_out_models(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
@@ -653,23 +675,7 @@ static void test_held_out_models(void) {
       if (size <= 80) fm_randnet(&src, size, seed * 7919u + (unsigned)size);
       else fm_randtree(&src, size, 104729u + (unsigned)size);
       snprintf(name, sizeof name, size <= 80 ? "randnet%d_%u" : "randtree%d", size, seed);
-      dump_model(name, &src);
-      fx f;
-      int rc = fm_load(&f, name, bg_sb_str(&src));
-      BG_T_REPORT(rc == 0, "held-out %s compiles", name);
-      bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-      bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-      OK(rc != 0 || d != NULL);
-      if (d) {
-        fc_stats st = {0};
-        if (fc_explain) printf("%s:\n", name);
-        fc_count(bg_diagram_scene(d), &st);
-        if (verbose) print_row(name, &st);
-        tot.false_tees += st.false_tees, tot.bond_overlaps += st.bond_overlaps, tot.touching += st.touching;
-        tot.lines_through += st.lines_through;
-        bg_diagram_free(d);
-      }
-      fx_free(&f);
+      count_default(name, &src, &tot, verbose);
       bg_sb_free(&src);
     }
   INT_EQ(tot.false_tees, 0);
@@ -770,23 +776,7 @@ static void test_many_one_ports(void) {
     char name[48];
     fm_ringtree(&src, 10 + 2 * t, 4099u + 31u * (unsigned)t);
     snprintf(name, sizeof name, "ringtree%d", 10 + 2 * t);
-    dump_model(name, &src);
-    fx f;
-    int rc = fm_load(&f, name, bg_sb_str(&src));
-    BG_T_REPORT(rc == 0, "%s compiles", name);
-    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-    bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-    OK(rc != 0 || d != NULL);
-    if (d) {
-      fc_stats st = {0};
-      if (fc_explain) printf("%s:\n", name);
-      fc_count(bg_diagram_scene(d), &st);
-      st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
-      if (verbose) print_row(name, &st);
-      fc_add(&trees, &st);
-      bg_diagram_free(d);
-    }
-    if (rc == 0) fx_free(&f);
+    count_default(name, &src, &trees, verbose);
     bg_sb_free(&src);
   }
   if (verbose) print_row("many one-ports, default layers", &tot[0]), print_row("many one-ports, every layer", &tot[1]);
