@@ -37,6 +37,25 @@ static bg_vec bond_end(const bg_diagram_layout *d, int b, int n, bg_vec dir) {
   return bg_node_end(d, n, dir);
 }
 
+/* A bond's end at a one-port's box, drawn back along the bond until its half
+ * arrow (7 line widths, 45 degrees back, on the style's side) stays out of
+ * the box: a bond reaching a wide label through its bottom or top edge at a
+ * shallow angle (a one-port on a ring's side, bg_layout_ring) had the barb
+ * in the text. Where the bond meets the box's edge squarely, nothing moves. */
+static bg_vec barb_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec dir) {
+  double len = 7 * d->st.line_width * BG_SQRT1_2, hw = d->nw[n] / 2, hh = d->nh[n] / 2;
+  bg_vec c = node_centre(d, n), tip = bg_vadd(end, bg_vscale(bg_vsub(bg_barb_side_at(d, dir), dir), len));
+  double x0 = c.x - hw, x1 = c.x + hw, y0 = c.y - hh, y1 = c.y + hh;
+  if (tip.x <= x0 || tip.x >= x1 || tip.y <= y0 || tip.y >= y1) return end;
+  /* back along -dir: the least way out of the box for the tip, through any edge */
+  double back = INFINITY;
+  if (dir.x > 1e-9) back = fmin(back, (tip.x - x0) / dir.x);
+  if (dir.x < -1e-9) back = fmin(back, (tip.x - x1) / dir.x);
+  if (dir.y > 1e-9) back = fmin(back, (tip.y - y0) / dir.y);
+  if (dir.y < -1e-9) back = fmin(back, (tip.y - y1) / dir.y);
+  return isfinite(back) ? bg_vsub(end, bg_vscale(dir, back + 0.5 * d->st.line_width)) : end;
+}
+
 static void route_geom(const bg_diagram_layout *d, int b, bg_bond_geom *g) {
   /* a bond through a port of a collapsed instance ends on its box */
   int t = d->node_of[d->m->bond_tail[b]], h = d->node_of[d->m->bond_head[b]], n = g->bendn;
@@ -44,6 +63,8 @@ static void route_geom(const bg_diagram_layout *d, int b, bg_bond_geom *g) {
   g->hdir = bg_vunit(bg_vsub(route_pt(d, b, n + 1), route_pt(d, b, n)));
   g->tail = bond_end(d, b, t, g->tdir);
   g->head = bond_end(d, b, h, bg_vscale(g->hdir, -1));
+  if (h < d->m->nelem && d->m->elem_nbond[h] == 1 && !bg_elem_is_junction(d->m->elem_kind[h]))
+    g->head = barb_clear(d, h, g->head, g->hdir);
   if (bg_vlen(bg_vsub(node_centre(d, h), node_centre(d, t))) < 1e-9) g->head = g->tail;
   g->mid = bg_geom_along(d, b, 0.5, &g->mdir);
 }
