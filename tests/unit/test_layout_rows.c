@@ -18,6 +18,7 @@
 #include "causality/causality.h"
 #include "diagram/layout.h"
 #include "diagram/render.h"
+#include "figure_check.h"
 #include "harness.h"
 #include "lang/lang.h"
 
@@ -462,34 +463,12 @@ static const char *engine_of(const char *src, const char *layout) {
   return name;
 }
 
-/* Whether the segment from the origin to (cx, cy) meets the box
- * [x0, x1] x [y0, y1] (Liang-Barsky clipping of its parameter). */
-static int ray_meets(double cx, double cy, double x0, double y0, double x1, double y1) {
-  double lo = 0, hi = 1, p[4] = {-cx, cx, -cy, cy}, q[4] = {-x0, x1, -y0, y1};
-  for (int k = 0; k < 4; k++) {
-    if (p[k] == 0) {
-      if (q[k] < 0) return 0;
-      continue;
-    }
-    double t = q[k] / p[k];
-    if (p[k] < 0) lo = fmax(lo, t);
-    else hi = fmin(hi, t);
-  }
-  return lo <= hi;
-}
-
-/* Whether the segment from the origin to (cx, cy) stays at least m from
- * the box [x0, x1] x [y0, y1]: off the box grown by m along each axis, and
- * m from each of its corners. */
-static int ray_clears(double cx, double cy, double x0, double y0, double x1, double y1, double m) {
-  if (ray_meets(cx, cy, x0 - m, y0, x1 + m, y1) || ray_meets(cx, cy, x0, y0 - m, x1, y1 + m)) return 0;
-  double len2 = cx * cx + cy * cy;
-  for (int k = 0; k < 4; k++) {
-    double px = k & 1 ? x1 : x0, py = k & 2 ? y1 : y0, t = len2 > 0 ? (px * cx + py * cy) / len2 : 0;
-    t = fmax(0, fmin(1, t));
-    if (hypot(px - t * cx, py - t * cy) < m) return 0;
-  }
-  return 1;
+/* The distance from the segment from the origin to (cx, cy) to the box
+ * centred at (bx, by), w by h (figure_check.h's, independent of the ring). */
+static double ray_box(double cx, double cy, double bx, double by, double w, double h) {
+  fc_seg s = {0, 0, cx, cy};
+  fc_box box = {.x0 = bx - w / 2, .y0 = by - h / 2, .x1 = bx + w / 2, .y1 = by + h / 2};
+  return fc_seg_box(&s, &box);
 }
 
 /* Issue 31, a junction of many one-ports (bg_layout_ring): every one-port
@@ -520,12 +499,12 @@ static void test_ring(void) {
           for (int j = 0; j < n; j++) {
             if (j == i) continue;
             apart &= fabs(ox[i] - ox[j]) >= w + xg - 1e-9 || fabs(oy[i] - oy[j]) >= h + yg - 1e-9;
-            clear &= ray_clears(ox[i], oy[i], ox[j] - w / 2, oy[j] - h / 2, ox[j] + w / 2, oy[j] + h / 2, 2);
+            clear &= ray_box(ox[i], oy[i], ox[j], oy[j], w, h) >= 2;
           }
           for (int k = 0; k < 4; k++) /* the bond leaving by the middle of a closed side */
             if (closed & (1 << k)) {
               double ex = k == 0 ? 2 * hx : k == 2 ? -2 * hx : 0, ey = k == 1 ? -2 * hy : k == 3 ? 2 * hy : 0;
-              axes &= !ray_meets(ex, ey, ox[i] - w / 2, oy[i] - h / 2, ox[i] + w / 2, oy[i] + h / 2);
+              axes &= ray_box(ex, ey, ox[i], oy[i], w, h) > 0;
             }
         }
         /* sorted by wanted angle, the slots' angles turn round once */
