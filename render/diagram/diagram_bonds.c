@@ -28,8 +28,7 @@ static void draw_bond(bg_diagram *d, int b) {
   bg_geom_bond_path(d->L, &d->scene, b);
   /* the half arrow: one barb, 45 degrees back from the tip */
   const bg_bond_geom *g = &d->L->bg[b];
-  double len = 7 * st->line_width;
-  bg_vec barb = bg_vadd(g->head, bg_vscale(bg_vsub(bg_barb_side(d->L, b), g->hdir), len * BG_SQRT1_2));
+  bg_vec barb = bg_barb_tip(d->L, g->head, g->hdir);
   bg_scene_line(&d->scene, barb.x, barb.y);
 }
 
@@ -218,7 +217,7 @@ static void draw_lagrange_source(bg_diagram *d, int i, bg_vec c, double hw, doub
   bg_vec t = bg_box_exit(c, hw, hh, p), dir = bg_vunit(bg_vsub(t, p));
   it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "lagrange-bond %d", i + 1);
   it->width = st->line_width, it->dash[0] = 4, it->dash[1] = 2, it->round = 1, it->color = ink;
-  bg_vec barb = bg_vadd(t, bg_vscale(bg_vsub(bg_barb_side_at(d->L, dir), dir), 7 * st->line_width * BG_SQRT1_2));
+  bg_vec barb = bg_barb_tip(d->L, t, dir);
   bg_scene_move(&d->scene, p.x, p.y);
   bg_scene_line(&d->scene, t.x, t.y);
   bg_scene_line(&d->scene, barb.x, barb.y);

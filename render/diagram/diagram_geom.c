@@ -43,8 +43,8 @@ static bg_vec bond_end(const bg_diagram_layout *d, int b, int n, bg_vec dir) {
  * shallow angle (a one-port on a ring's side, bg_layout_ring) had the barb
  * in the text. Where the bond meets the box's edge squarely, nothing moves. */
 static bg_vec barb_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec dir) {
-  double len = 7 * d->st.line_width * BG_SQRT1_2, hw = d->nw[n] / 2, hh = d->nh[n] / 2;
-  bg_vec c = node_centre(d, n), tip = bg_vadd(end, bg_vscale(bg_vsub(bg_barb_side_at(d, dir), dir), len));
+  double hw = d->nw[n] / 2, hh = d->nh[n] / 2;
+  bg_vec c = node_centre(d, n), tip = bg_barb_tip(d, end, dir);
   double x0 = c.x - hw, x1 = c.x + hw, y0 = c.y - hh, y1 = c.y + hh;
   if (tip.x <= x0 || tip.x >= x1 || tip.y <= y0 || tip.y >= y1) return end;
   /* back along -dir: the least way out of the box for the tip, through any edge */
@@ -119,10 +119,9 @@ static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, 
   int st = d->a->bond_stroke[bk];
   if (m->bond_head[bi] != j || !((st == BG_STROKE_HEAD && m->bond_head[bk] == j) || (st == BG_STROKE_TAIL && m->bond_tail[bk] == j)))
     return 0;
-  double w = d->st.line_width, half = 4.5 * w, barb = 7 * w * BG_SQRT1_2;
+  double w = d->st.line_width, half = 4.5 * w;
   bg_vec c = bg_v(d->nx[j], d->ny[j]);
-  bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, ri));
-  bg_vec tip = bg_vadd(h, bg_vscale(bg_vadd(bg_barb_side_at(d, bg_vscale(u, -1)), u), barb));
+  bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, ri)), tip = bg_barb_tip(d, h, bg_vscale(u, -1));
   bg_vec v = leave_dir(d, bk, j), n = bg_vscale(bg_vleft(v), half);
   int bars = d->st.derivative_double && bg_bond_derivative(m, d->a, bk) ? 2 : 1;
   for (int k = 0; k < bars; k++) {
@@ -284,6 +283,10 @@ void bg_geom_bonds(bg_diagram_layout *d) {
 }
 
 bg_vec bg_barb_side(const bg_diagram_layout *d, int b) { return bg_barb_side_at(d, d->bg[b].hdir); }
+
+bg_vec bg_barb_tip(const bg_diagram_layout *d, bg_vec end, bg_vec dir) {
+  return bg_vadd(end, bg_vscale(bg_vsub(bg_barb_side_at(d, dir), dir), 7 * d->st.line_width * BG_SQRT1_2));
+}
 
 bg_vec bg_barb_side_at(const bg_diagram_layout *d, bg_vec dir) {
   bg_vec left = bg_vleft(dir);

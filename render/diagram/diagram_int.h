@@ -179,6 +179,9 @@ bg_vec bg_barb_side(const bg_diagram_layout *d, int b);
 /* The barb's side for travel in direction dir (a bent bond's numbers use
  * the direction of the leg they are beside). */
 bg_vec bg_barb_side_at(const bg_diagram_layout *d, bg_vec dir);
+/* The far end of the half arrow at a bond's end `end`, the bond arriving in
+ * direction dir: 7 line widths, 45 degrees back, on the barb's side. */
+bg_vec bg_barb_tip(const bg_diagram_layout *d, bg_vec end, bg_vec dir);
 /* Draws the bond's centre line as the current item's path of scene s. */
 void bg_geom_bond_path(const bg_diagram_layout *d, bg_scene *s, int b);
 /* The direction (of 8) around node n farthest in angle from its bonds. */
