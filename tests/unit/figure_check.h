@@ -825,8 +825,12 @@ static int *fc_elem_boxes(const bg_model *m, const fc_scene *f) {
  * the bonds drawn as one straight line within half a degree of 45 from a
  * junction of five or more bonds whose four sides (right, up, left, down)
  * its other bonds all leave by, each along the axis (within 3 degrees, by
- * the leg at the junction). Such a bond is counted slanted by fc_slanted;
- * the callers that count both take these out of slanted. */
+ * the leg at the junction). A junction of more than eight bonds cannot
+ * keep to the eight directions at all: the ring of one-ports round it
+ * (layout_ring.c) spreads them round a rectangle, so off such a junction
+ * with its four sides taken every straight slanted bond counts, whatever
+ * its angle. Such a bond is counted slanted by fc_slanted; the callers
+ * that count both take these out of slanted. */
 static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
   fc_scene f;
   fc_read(s, &f);
@@ -835,11 +839,12 @@ static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
     const fc_line *l = &f.line[j];
     if (bond[j] < 0 || l->nseg - l->barb != 1) continue;
     double dx = fabs(l->seg[0].x1 - l->seg[0].x0), dy = fabs(l->seg[0].y1 - l->seg[0].y0);
-    if (fabs(atan2(dy, dx) - atan(1.0)) > 0.5 * atan(1.0) / 45) continue;
-    int forced = 0;
+    int diagonal = fabs(atan2(dy, dx) - atan(1.0)) <= 0.5 * atan(1.0) / 45, forced = 0;
+    if (!diagonal && fmin(dx, dy) <= 0.05) continue; /* along an axis: not slanted (fc_slanted) */
     for (int end = 0; end < 2 && !forced; end++) {
       int e = end ? m->bond_head[bond[j]] : m->bond_tail[bond[j]];
-      if (!bg_elem_is_junction(m->elem_kind[e]) || m->elem_nbond[e] < 5 || elem_box[e] < 0) continue;
+      if (!bg_elem_is_junction(m->elem_kind[e]) || m->elem_nbond[e] < (diagonal ? 5 : 9) || elem_box[e] < 0)
+        continue;
       const fc_box *jb = &f.box[elem_box[e]];
       double cx = (jb->x0 + jb->x1) / 2, cy = (jb->y0 + jb->y1) / 2;
       int sides = 0;
@@ -855,7 +860,7 @@ static inline int fc_forced_diagonals(const bg_model *m, const bg_scene *s) {
       forced = sides == 15;
     }
     n += forced;
-    if (forced && fc_explain) printf("  diagonal: bond %d at 45 degrees off a junction with four sides taken\n", l->id);
+    if (forced && fc_explain) printf("  diagonal: bond %d slanted off a junction with four sides taken\n", l->id);
   }
   free(bond), free(elem_box);
   fc_free(&f);
