@@ -283,6 +283,19 @@ head, r = table("building_states.csv")
 energy = [sum(x[head.index(f"S{s}.K.q")] ** 2 * 2e8 / 2 + x[head.index(f"S{s}.M.p")] ** 2 / 2e5 for s in (1, 2, 3, 4))
           for x in r if x[0] >= 0.2]
 close("building: energy after the shake, largest deviation / its value", (max(energy) - min(energy)) / energy[0], 0, 1e-5)
+
+# DC bus: ten loads in parallel, G = 0.5 S; v = 24 (1 - e^(-t/20 ms)), each load's current
+# v/R at every row, one pole -G/C, the DC gain from the supply's current to the charge C/G
+G, Cb, I0 = 2 / 10 + 4 / 20 + 4 / 40, 10e-3, 12
+close("DC bus: largest deviation from 24 (1 - e^(-t/20 ms)) [V]",
+      worst("dc_bus.csv", 1, lambda t: I0 / G * (1 - math.exp(-t * G / Cb))), 0, 1e-5)
+for col, R in ((2, 10), (3, 20), (4, 40)):
+    close(f"DC bus: largest deviation of a {R} ohm load's current from v/R [A]",
+          max(abs(r[col] - r[1] / R) for r in rows("dc_bus.csv")), 0, 1e-12)
+j = linear("dc_bus_linear.json")
+close("DC bus: poles", len(j["poles"]), 1, 0)
+close("DC bus: the pole -G/C [1/s]", j["poles"][0]["re"], -G / Cb, 1e-9)
+close("DC bus: DC gain from the supply's current to the charge [C/A]", j["transfer_functions"][0]["dc_gain"], Cb / G, 1e-12)
 sys.exit(1 if pn.failed else 0)
 EOF
 check "the gallery's numbers (above)" $?
