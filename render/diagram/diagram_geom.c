@@ -166,11 +166,32 @@ static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest) {
     int b = bs[i], tail = m->bond_tail[b] == j;
     const bg_bond_geom *g = &d->bg[b];
     if (g->spln) return cap; /* a curve: its length is not its chord */
-    bg_vec far = g->bendn ? route_pt(d, b, tail ? 1 : g->bendn) : tail ? g->head : g->tail;
-    shortest = fmin(shortest, bg_vlen(bg_vsub(far, c)));
+    if (g->bendn) continue;  /* routed: its first leg bounds only its own radius (bent_radius) */
+    shortest = fmin(shortest, bg_vlen(bg_vsub(tail ? g->head : g->tail, c)));
   }
   *sharpest = BG_PI / 90;
-  return fmax(cap, 0.4 * shortest);
+  return shortest < INFINITY ? fmax(cap, 0.4 * shortest) : cap;
+}
+
+/* A routed bond at a junction whose circle grew past one and a half times
+ * its label (radius_cap): its own end stays within four tenths of its
+ * first leg, as the circle's would. The first leg had bounded every bond's
+ * end: in the rows layout a fold's bond routed round a one-port's label
+ * left the hub 20 pt before its first corner, and the 24 strokes round a
+ * ring's 1-junction stayed on a circle of 24 pt, 21 of them touching. */
+static void bent_radius(bg_diagram_layout *d, int j, double r) {
+  const bg_model *m = d->m;
+  double label = 1.5 * fmax(d->nw[j], d->nh[j]);
+  if (r <= label) return;
+  int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+  bg_vec c = bg_v(d->nx[j], d->ny[j]);
+  for (int i = 0; i < nb; i++) {
+    int b = bs[i], tail = m->bond_tail[b] == j;
+    const bg_bond_geom *g = &d->bg[b];
+    if (!g->bendn) continue;
+    double leg = bg_vlen(bg_vsub(route_pt(d, b, tail ? 1 : g->bendn), c));
+    *bond_radius(d, b, j) = fmin(r, fmax(label, 0.4 * leg));
+  }
 }
 
 /* Whether some stroke and barb at junction j are too close with the bonds'
@@ -226,6 +247,7 @@ static void junction_radii(bg_diagram_layout *d) {
       for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
     }
     d->jr[j] = r;
+    bent_radius(d, j, r);
     for (int i = 0; i < nb; i++) {
       int b = bs[i], o = m->bond_tail[b] == j ? m->bond_head[b] : m->bond_tail[b];
       if (bg_elem_is_junction(m->elem_kind[o]) || d->bg[b].bendn || d->bg[b].spln) continue;
