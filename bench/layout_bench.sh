@@ -9,7 +9,9 @@
 # (rows above 2 000 nodes: both chains, the full reaction network) and, for
 # the reaction networks, rows at both sizes too (the half network has 1 750
 # nodes and would be laid out by dot, which is not linear); the same for a
-# network whose signals join near neighbours ("nearby"); then the length of
+# network whose signals join near neighbours ("nearby"); a junction of 6 000
+# one-ports beside one of 3 000 (rows at both sizes, one-ports on a ring
+# whose bonds grow with it: not linear, see bench/README.md); then the length of
 # the signal lines each network draws (below).
 # Usage: bash bench/layout_bench.sh BGDRAW [BONDS SIGNALS]   (use a Release build)
 set -eu
@@ -39,6 +41,7 @@ printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
 row "reactions, $NS signals (rows)" reactions "$NS" rows
 row "nearby, $NS signals (rows)" nearby "$NS" rows
+row "star, 6000 one-ports (rows)" star 6000
 
 # What the signals' routes draw: the total length of the signal lines in
 # the SVG (bgdraw --layout rows), half and full size. The router's work per

@@ -9,7 +9,8 @@
  * a page about 1.4 times as wide as high with one vertical bond at each
  * fold (place). A one-port hangs straight above or below its junction, in
  * its column, on the side out of a fold's way and facing its signals
- * (hang_leaves, face_hangers). Disconnected parts are laid out each on its
+ * (hang_leaves, face_hangers); more than eight round it on a ring
+ * (rows_one). Disconnected parts are laid out each on its
  * own and packed on a skyline; with frames, a band folds where it splits the
  * fewest. Bonds are straight lines (docs/drawing.md, Layout). */
 #include <math.h>
@@ -379,7 +380,7 @@ static void fit_box(const bg_layout_in *in, bg_layout *out) {
 /* One connected graph (or any graph, its parts mixed in the columns): the
  * positions into out->x, out->y (allocated), its box from (0, 0); its
  * bands at most `page` wide when that is given (> 0). */
-static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
+static void rows_core(const bg_layout_in *in, double page, bg_layout *out) {
   int n = in->nnode;
   int *order = bg_xcalloc((size_t)n + 1, sizeof *order);
   int *depth = bg_layout_depths(in, order);
@@ -398,25 +399,6 @@ static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
   rank_cols_free(&c);
   hangers_free(&hg);
   free(order), free(depth);
-}
-
-/* Each node's connected part, numbered by its lowest node; returns the count. */
-static int parts_of(const bg_layout_in *in, int *part) {
-  int n = in->nnode, *up = bg_xcalloc((size_t)n + 1, sizeof *up), np = 0;
-  for (int v = 0; v < n; v++) up[v] = v;
-  for (int e = 0; e < in->nedge; e++) {
-    int a = in->tail[e], b = in->head[e];
-    while (up[a] != a) a = up[a] = up[up[a]];
-    while (up[b] != b) b = up[b] = up[up[b]];
-    if (a != b) up[a > b ? a : b] = a < b ? a : b; /* the lower stays the root */
-  }
-  for (int v = 0; v < n; v++) {
-    int r = v;
-    while (up[r] != r) r = up[r] = up[up[r]];
-    part[v] = r == v ? np++ : part[r]; /* a root is its part's lowest node: numbered first */
-  }
-  free(up);
-  return np;
 }
 
 /* Part p of `in` as a graph of its own: its nodes (node[0..nnode), in
@@ -449,6 +431,107 @@ static void part_input(const bg_layout_in *in, const int *node, int pn, const in
 static void part_input_free(part_in *pi) {
   free((void *)pi->in.w), free((void *)pi->in.h), free((void *)pi->in.tail), free((void *)pi->in.head);
   free((void *)pi->in.link_a), free((void *)pi->in.link_b), free((void *)pi->in.root), free((void *)pi->in.cluster);
+}
+
+/* Junctions of many one-ports: a node with more than RING_LEAVES
+ * neighbours of one edge each (not roots) has them round it on a ring
+ * (bg_layout_ring, as the grid pass does for dot's layouts), its box as
+ * large as the ring's, and the columns are laid out without them. In
+ * columns, the third and further one-ports of such a hub went to the next
+ * column as other nodes: a column of 6 000 resistors 90 000 pt tall, the
+ * bonds to the nearer ones blocking the fan to the rest, which the bond
+ * router then took round the figure (a star of 60 forced into rows had 59
+ * bonds routed; a star of 6 000, 40 s). The ring's four side middles stay
+ * free for the hub's other bonds: to its parent and children in the
+ * columns beside it, and a fold's vertical bond. */
+#define RING_LEAVES 8
+
+static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
+  int n = in->nnode;
+  int *deg = bg_xcalloc((size_t)n + 1, sizeof *deg), *nb = bg_xcalloc((size_t)n + 1, sizeof *nb);
+  for (int e = 0; e < in->nedge; e++) {
+    int t = in->tail[e], h = in->head[e];
+    deg[t]++, deg[h]++, nb[t] = h, nb[h] = t;
+  }
+  int *leaves = bg_xcalloc((size_t)n + 1, sizeof *leaves), hubs = 0;
+  for (int v = 0; v < n; v++)
+    if (deg[v] == 1 && !(in->root && in->root[v]) && nb[v] != v && deg[nb[v]] >= 2) leaves[nb[v]]++;
+  for (int u = 0; u < n; u++) hubs += leaves[u] > RING_LEAVES;
+  if (!hubs) {
+    free(deg), free(nb), free(leaves);
+    rows_core(in, page, out);
+    return;
+  }
+  /* the graph without the ringed one-ports (in order), each hub's ring */
+  unsigned char *ringed = bg_xcalloc((size_t)n + 1, 1);
+  int *node = bg_xcalloc((size_t)n + 1, sizeof *node), *local = bg_xcalloc((size_t)n + 1, sizeof *local), pn = 0;
+  for (int v = 0; v < n; v++) {
+    ringed[v] = deg[v] == 1 && !(in->root && in->root[v]) && nb[v] != v && deg[nb[v]] >= 2 && leaves[nb[v]] > RING_LEAVES;
+    if (!ringed[v]) local[v] = pn, node[pn++] = v;
+  }
+  int *edge = bg_xcalloc((size_t)in->nedge + 1, sizeof *edge), *link = bg_xcalloc((size_t)in->nlink + 1, sizeof *link);
+  int pe = 0, pl = 0;
+  for (int e = 0; e < in->nedge; e++)
+    if (!ringed[in->tail[e]] && !ringed[in->head[e]]) edge[pe++] = e;
+  for (int k = 0; k < in->nlink; k++)
+    if (!ringed[in->link_a[k]] && !ringed[in->link_b[k]]) link[pl++] = k;
+  part_in pi;
+  part_input(in, node, pn, edge, pe, link, pl, local, &pi);
+  /* each hub's one-ports, in node order, round it evenly (no position is
+   * known yet to order them by) */
+  int *adr = bg_xcalloc((size_t)n + 2, sizeof *adr), *member = bg_xcalloc((size_t)n + 1, sizeof *member);
+  for (int v = 0; v < n; v++) adr[(ringed[v] ? nb[v] : n) + 1] += ringed[v];
+  for (int u = 0; u < n; u++) adr[u + 1] += adr[u];
+  int *fill = bg_xcalloc((size_t)n + 1, sizeof *fill);
+  for (int v = 0; v < n; v++)
+    if (ringed[v]) member[adr[nb[v]] + fill[nb[v]]++] = v;
+  double *ox = bg_xcalloc((size_t)n + 1, sizeof *ox), *oy = bg_xcalloc((size_t)n + 1, sizeof *oy);
+  double *ang = bg_xcalloc((size_t)n + 1, sizeof *ang), *rx = bg_xcalloc((size_t)n + 1, sizeof *rx);
+  double *ry = bg_xcalloc((size_t)n + 1, sizeof *ry);
+  for (int u = 0; u < n; u++) {
+    int k = adr[u + 1] - adr[u];
+    if (k == 0) continue;
+    double w = 0, h = 0, hx, hy;
+    for (int i = 0; i < k; i++) {
+      int v = member[adr[u] + i];
+      w = fmax(w, in->w[v]), h = fmax(h, in->h[v]);
+      ang[i] = remainder(2 * 3.14159265358979323846 * (i + 0.5) / k, 2 * 3.14159265358979323846);
+    }
+    bg_layout_ring(k, ang, w, h, in->node_sep, in->node_sep, 15, rx, ry, &hx, &hy);
+    for (int i = 0; i < k; i++) ox[member[adr[u] + i]] = rx[i], oy[member[adr[u] + i]] = ry[i];
+    ((double *)pi.in.w)[local[u]] = fmax(in->w[u], 2 * hx);
+    ((double *)pi.in.h)[local[u]] = fmax(in->h[u], 2 * hy);
+  }
+  bg_layout lay = {0};
+  lay.x = bg_xcalloc((size_t)pn + 1, sizeof *lay.x), lay.y = bg_xcalloc((size_t)pn + 1, sizeof *lay.y);
+  rows_core(&pi.in, page, &lay);
+  for (int i = 0; i < pn; i++) out->x[node[i]] = lay.x[i], out->y[node[i]] = lay.y[i];
+  for (int v = 0; v < n; v++)
+    if (ringed[v]) out->x[v] = out->x[nb[v]] + ox[v], out->y[v] = out->y[nb[v]] + oy[v];
+  out->width = lay.width, out->height = lay.height;
+  free(lay.x), free(lay.y);
+  part_input_free(&pi);
+  free(deg), free(nb), free(leaves), free(ringed), free(node), free(local), free(edge), free(link);
+  free(adr), free(member), free(fill), free(ox), free(oy), free(ang), free(rx), free(ry);
+}
+
+/* Each node's connected part, numbered by its lowest node; returns the count. */
+static int parts_of(const bg_layout_in *in, int *part) {
+  int n = in->nnode, *up = bg_xcalloc((size_t)n + 1, sizeof *up), np = 0;
+  for (int v = 0; v < n; v++) up[v] = v;
+  for (int e = 0; e < in->nedge; e++) {
+    int a = in->tail[e], b = in->head[e];
+    while (up[a] != a) a = up[a] = up[up[a]];
+    while (up[b] != b) b = up[b] = up[up[b]];
+    if (a != b) up[a > b ? a : b] = a < b ? a : b; /* the lower stays the root */
+  }
+  for (int v = 0; v < n; v++) {
+    int r = v;
+    while (up[r] != r) r = up[r] = up[up[r]];
+    part[v] = r == v ? np++ : part[r]; /* a root is its part's lowest node: numbered first */
+  }
+  free(up);
+  return np;
 }
 
 /* Disconnected parts are laid out each on its own (in one set of columns

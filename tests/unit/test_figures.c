@@ -669,12 +669,12 @@ static void test_large_figures(void) {
  * drawn along another's line for 7 pt, as before (left). */
 /* Held-out model src (named name), drawn in the default style and layers:
  * its counts, one node's crossing lines among them, added to tot. */
-static void count_default(const char *name, const bg_strbuf *src, fc_stats *tot, int verbose) {
+static void count_default(const char *name, const bg_strbuf *src, const char *layout, fc_stats *tot, int verbose) {
   dump_model(name, src);
   fx f;
   int rc = fm_load(&f, name, bg_sb_str(src));
   BG_T_REPORT(rc == 0, "held-out %s compiles", name);
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
   bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
   OK(rc != 0 || d != NULL);
   if (d) {
@@ -701,7 +701,7 @@ static void test_held_out_models(void) {
       if (size <= 80) fm_randnet(&src, size, seed * 7919u + (unsigned)size);
       else fm_randtree(&src, size, 104729u + (unsigned)size);
       snprintf(name, sizeof name, size <= 80 ? "randnet%d_%u" : "randtree%d", size, seed);
-      count_default(name, &src, &tot, verbose);
+      count_default(name, &src, NULL, &tot, verbose);
       bg_sb_free(&src);
     }
   INT_EQ(tot.false_tees, 0);
@@ -771,6 +771,20 @@ static int pushed_one_ports(fx *f) {
  * changes the arrangement (the ring laid out in the reference style and
  * stretched: 552 pairs differed when each style laid out its own). Then
  * eight held-out trees with junctions of up to 12 one-ports (fm_ringtree). */
+/* The line faults the stars are held to: none. */
+static void lines_clean(const fc_stats *t) {
+  INT_EQ(t->crossings, 0);
+  INT_EQ(t->bond_overlaps, 0);
+  INT_EQ(t->overlaps, 0);
+  INT_EQ(t->false_tees, 0);
+  INT_EQ(t->touching, 0);
+  INT_EQ(t->short_bonds, 0);
+  INT_EQ(t->tiny_bonds, 0);
+  INT_EQ(t->sig_cross, 0);
+  INT_EQ(t->arrangement, 0);
+  INT_EQ(t->adjacent, 0);
+}
+
 static void test_many_one_ports(void) {
   static const struct {
     int n, one, bus;
@@ -778,12 +792,14 @@ static void test_many_one_ports(void) {
                {40, 1, 0}, {100, 1, 0}, {9, 0, 1}, {14, 0, 1}, {24, 1, 1}};
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
-  fc_stats tot[2] = {{0}};
+  fc_stats tot[2] = {{0}}, rows = {0};
   for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
     bg_strbuf src = {0};
     fm_star(&src, cases[c].n, cases[c].one, cases[c].bus, 2027u + (unsigned)c);
-    char name[48];
+    char name[48], rows_name[64];
     snprintf(name, sizeof name, "star%d_%d%s", cases[c].n, cases[c].one, cases[c].bus ? "_bus" : "");
+    snprintf(rows_name, sizeof rows_name, "%s (rows)", name);
+    count_default(rows_name, &src, "rows", &rows, verbose);
     dump_model(name, &src);
     fx f;
     int rc = fm_load(&f, name, bg_sb_str(&src));
@@ -797,45 +813,55 @@ static void test_many_one_ports(void) {
   }
   /* held-out trees whose every third junction has up to 12 one-ports
    * (fm_ringtree, 10-24 junctions), default style and layers */
-  fc_stats trees = {0};
+  fc_stats trees = {0}, trees_rows = {0};
   for (int t = 0; t < 8; t++) {
     bg_strbuf src = {0};
-    char name[48];
+    char name[48], rows_name[64];
     fm_ringtree(&src, 10 + 2 * t, 4099u + 31u * (unsigned)t);
     snprintf(name, sizeof name, "ringtree%d", 10 + 2 * t);
-    count_default(name, &src, &trees, verbose);
+    snprintf(rows_name, sizeof rows_name, "%s (rows)", name);
+    count_default(name, &src, NULL, &trees, verbose);
+    count_default(rows_name, &src, "rows", &trees_rows, verbose);
     bg_sb_free(&src);
   }
   if (verbose) print_row("many one-ports, default layers", &tot[0]), print_row("many one-ports, every layer", &tot[1]);
   if (verbose) print_row("trees of many one-ports", &trees);
-  for (int k = 0; k < 2; k++) {
-    INT_EQ(tot[k].crossings, 0);
-    INT_EQ(tot[k].bond_overlaps, 0);
-    INT_EQ(tot[k].overlaps, 0);
-    INT_EQ(tot[k].false_tees, 0);
-    INT_EQ(tot[k].touching, 0);
-    INT_EQ(tot[k].short_bonds, 0);
-    INT_EQ(tot[k].tiny_bonds, 0);
-    INT_EQ(tot[k].sig_cross, 0);
-    INT_EQ(tot[k].arrangement, 0);
-    INT_EQ(tot[k].adjacent, 0);
-  }
+  if (verbose) print_row("stars in rows", &rows), print_row("trees in rows", &trees_rows);
+  for (int k = 0; k < 2; k++) lines_clean(&tot[k]);
   INT_EQ(tot[0].over, 0);
   INT_EQ(tot[0].astray, 0);
   INT_EQ(tot[0].lines_through, 0);
   INT_EQ(tot[1].lines_through, 0);
   /* the trees (before the ring: 10 touching strokes, 4 numbers astray, 2
-   * bonds on lines and 6 signal crossings in ringtree24 alone): one stroke
-   * touching and one crossing left, both ringtree24's hub bond 15, which the
-   * bond router takes out of its junction's corner across the ring's bond 47 */
+   * bonds on lines and 6 signal crossings in ringtree24 alone): one
+   * crossing left, ringtree24's hub bond 15, which the bond router takes
+   * out of its junction's corner across the ring's bond 47 (its stroke
+   * touched that bond until the routed bond's first leg stopped bounding
+   * the whole end circle: bent_radius, diagram_geom.c) */
   INT_EQ(trees.false_tees, 0);
   INT_EQ(trees.bond_overlaps, 0);
   INT_EQ(trees.lines_through, 0);
   INT_EQ(trees.over, 0);
   INT_EQ(trees.astray, 0);
   INT_EQ(trees.short_bonds, 0);
-  OK(trees.touching <= 1);
+  INT_EQ(trees.touching, 0);
   OK(trees.crossings <= 1);
+  /* the rows layout (above 2 000 nodes, or asked for): the stars with
+   * every fault column 0 as with dot (before their rings: 1 208 and 1 090
+   * crossings in the stars of 100, 932 bonds on lines, 171 touching
+   * strokes over the eleven); the trees, whose rows layout is not this
+   * work's, at their measured values (before: 86 touching, 134 crossings,
+   * 6 false T's, 5 bonds on lines) */
+  lines_clean(&rows);
+  INT_EQ(rows.over, 0);
+  INT_EQ(rows.astray, 0);
+  INT_EQ(rows.lines_through, 0);
+  INT_EQ(trees_rows.false_tees, 0);
+  INT_EQ(trees_rows.bond_overlaps, 0);
+  INT_EQ(trees_rows.lines_through, 0);
+  INT_EQ(trees_rows.over, 0);
+  OK(trees_rows.touching <= 9);
+  OK(trees_rows.crossings <= 55);
 }
 
 /* Development: BG_FIGURES_MEASURE=a.bg:b.bg measures model files of one's

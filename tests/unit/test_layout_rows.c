@@ -8,7 +8,7 @@
  * bands even, disconnected parts each on its own, a wide column's nodes
  * level with their parents (bg_layout_align exact and least), the
  * one-ports of a junction with too many for its cells round it, none on
- * another's bond (bg_layout_ring); and the
+ * another's bond (bg_layout_ring), in the rows layout too; and the
  * diagram of a model above 2000 nodes is laid out with rows unless another
  * engine is asked for. */
 #include <stdlib.h>
@@ -535,6 +535,76 @@ static void test_ring(void) {
   OK(cells);
 }
 
+/* Straight bonds (segments between box centres) of the laid-out graph
+ * passing within 1 pt of a box other than their ends'. */
+static int bonds_through(const bg_layout_in *in, const bg_layout *l) {
+  int bad = 0;
+  for (int e = 0; e < in->nedge; e++) {
+    int a = in->tail[e], b = in->head[e];
+    fc_seg sg = {l->x[a], l->y[a], l->x[b], l->y[b]};
+    for (int v = 0; v < in->nnode; v++) {
+      if (v == a || v == b) continue;
+      fc_box box = {.x0 = l->x[v] - in->w[v] / 2, .y0 = l->y[v] - in->h[v] / 2, .x1 = l->x[v] + in->w[v] / 2,
+                    .y1 = l->y[v] + in->h[v] / 2};
+      bad += fc_seg_box(&sg, &box) < 1;
+    }
+  }
+  return bad;
+}
+
+/* Issue 31 in the rows layout: a junction of more than eight one-ports has
+ * them on a ring round it (bg_layout_ring), not in the next column where
+ * the bonds to the nearer ones crossed the rest (a star of 60 had every
+ * bond past the first few through other labels). Stars of 9 to 1 000
+ * one-ports behind a source, and chains of 12 hubs with 9 to 30 one-ports
+ * each (hubs a bond apart, their own bonds through the rings' free side
+ * middles), boxes of three widths: no overlap, everything inside, no bond
+ * within 1 pt of a box not its own, and each star between 1 : 2 and 3 : 1
+ * (in a column, a star of 1 000 was 22 000 pt tall and 100 wide). */
+static void test_rows_ring(void) {
+  enum { MAXV = 1100 };
+  static double w[MAXV], h[MAXV];
+  static int tail[MAXV], head[MAXV];
+  static unsigned char root[MAXV];
+  static const int stars[] = {9, 13, 30, 100, 1000}, per_hub[] = {9, 14, 30};
+  int through = 0, shaped = 1, runs = 0;
+  for (size_t k = 0; k < sizeof stars / sizeof *stars; k++) {
+    int n = stars[k] + 2, ne = 0;
+    for (int v = 0; v < n; v++) w[v] = 24 + 30 * (v % 3), h[v] = 14, root[v] = v == 0;
+    tail[ne] = 0, head[ne++] = 1;
+    for (int v = 2; v < n; v++) tail[ne] = 1, head[ne++] = v;
+    bg_layout_in in;
+    bg_layout l = {0};
+    lay_out_checked(&in, n, w, h, ne, tail, head, root, &l);
+    through += bonds_through(&in, &l), runs++;
+    shaped &= l.width >= 0.5 * l.height && l.width <= 3 * l.height; /* a column was 1 : 100 */
+    printf("rows ring: star of %d: %.0f x %.0f pt\n", n - 2, l.width, l.height);
+    bg_layout_free(&l);
+  }
+  for (size_t k = 0; k < sizeof per_hub / sizeof *per_hub; k++) {
+    int n = 0, ne = 0, prev = -1;
+    for (int hub = 0; hub < 12; hub++) {
+      int u = n++;
+      w[u] = 12, h[u] = 14, root[u] = u == 0;
+      if (prev >= 0) tail[ne] = prev, head[ne++] = u;
+      for (int i = 0; i < per_hub[k]; i++) {
+        int v = n++;
+        w[v] = 24 + 30 * (v % 3), h[v] = 14, root[v] = 0;
+        tail[ne] = u, head[ne++] = v;
+      }
+      prev = u;
+    }
+    bg_layout_in in;
+    bg_layout l = {0};
+    lay_out_checked(&in, n, w, h, ne, tail, head, root, &l);
+    through += bonds_through(&in, &l), runs++;
+    bg_layout_free(&l);
+  }
+  OK(runs == 8);
+  INT_EQ(through, 0);
+  OK(shaped);
+}
+
 static void test_engine_choice(void) {
   char *big = mass_chain(501), *small = mass_chain(40); /* 2005 and 161 nodes */
   STR_EQ(engine_of(big, NULL), "rows");
@@ -553,6 +623,7 @@ int main(void) {
   test_random_graphs();
   test_align();
   test_ring();
+  test_rows_ring();
   test_level_parents();
   test_engine_choice();
   return bg_t_done();
