@@ -342,6 +342,7 @@ static int fc_number_astray(const fc_scene *f, const fc_box *n) {
     if (l->id == n->id) own = fmin(own, d);
     else other = fmin(other, d);
   }
+  if (other < own && fc_explain) printf("  astray: number of bond %d at (%.0f,%.0f): own %.1f, other %.1f\n", n->id, cx, cy, own, other);
   return other < own;
 }
 
