@@ -82,6 +82,8 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
  * number on a bond without a label) the other side is tried when no place
  * on its own side is free: a slanted bond in a narrow wedge. On a bent bond
  * the places are along its longest leg, on that leg's side. */
+#define NEARER 1.0 /* pt nearer its own bond than any other, or the text reads as either's (a tree's
+                      numbers in a 45-degree wedge: 11.8 pt from their own, 11.4 from the next) */
 static void text_beside(bg_diagram *d, const char *markup, int b, int side, int flip, double size,
                         bg_rgba c, const char *role) {
   static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
@@ -109,15 +111,27 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
     }
   }
   int best = 0, best_cost = -1;
-  for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && best_cost != 1; k++) {
+  double best_margin = 0;
+  /* cost: 2 a line or box touched (10 a box), 1 flipped, 2 nearer another
+   * bond, 1 less than NEARER nearer its own than another; of equal costs
+   * the first, or while that one is less than NEARER nearer its own, the
+   * one nearest its own by the most */
+  for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && (best_cost != 1 || best_margin < NEARER); k++) {
     int flip = k >= NOUT * NT; /* flipped: 1 more */
-    int limit = best_cost < 0 ? INT_MAX : (best_cost - flip + 1) / 2; /* at it, cost >= best_cost */
+    int limit = best_cost < 0 ? INT_MAX : (best_cost - flip) / 2 + 1; /* at it, cost > best_cost */
     int cost = 2 * bg_place_score_below(d, cand[k], w + 1, h, limit) + flip;
-    if (best_cost < 0 || cost < best_cost) cost += bg_place_nearest_bond(d, cand[k], reach[k]) != b ? 2 : 0;
-    if (best_cost < 0 || cost < best_cost) best = k, best_cost = cost;
+    if (best_cost >= 0 && cost > best_cost) continue;
+    double margin;
+    int nearest = bg_place_nearest_bond(d, cand[k], reach[k], NEARER, &margin);
+    if (nearest != b) margin = -1;
+    cost += nearest != b ? 2 : margin < NEARER ? 1 : 0;
+    if (best_cost < 0 || cost < best_cost || (cost == best_cost && best_margin < NEARER && margin > best_margin))
+      best = k, best_cost = cost, best_margin = margin;
   }
   bg_vec p = cand[best];
-  bg_obstacle_rect(d, p.x - (w + 1) / 2, p.y - h / 2, p.x + (w + 1) / 2, p.y + h / 2);
+  /* 2 pt more each side: a text placed later beside it read as one with it
+   * ("12" beside "1" as 121 at a junction of many one-ports) */
+  bg_obstacle_rect(d, p.x - (w + 1) / 2 - 2, p.y - h / 2, p.x + (w + 1) / 2 + 2, p.y + h / 2);
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind)
     bg_text_halo(d, markup, p, size);
   bg_scene_text(&d->scene, markup, p.x, p.y, size, 0.5, 0.5, c, role);

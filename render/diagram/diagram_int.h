@@ -246,8 +246,10 @@ int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner);
 /* How many boxes (nodes, texts) a w × h box centred at p touches. */
 int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h);
 /* The bond whose line comes nearest to p within r (the lowest index of
- * equals), or -1: a bond number is astray where it is not its own. */
-int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r);
+ * equals), or -1: a bond number is astray where it is not its own; into
+ * *margin how much nearer it is than the next bond, at most slack (a
+ * number midway between two bonds reads as either's). */
+int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r, double slack, double *margin);
 /* What the segment a-b runs through: the boxes (returned), bond lines
  * (*bonds) and other lines (*lines), the lines of polyline `owner` left out:
  * the cost of a tag's leader line. */

@@ -205,10 +205,11 @@ int bg_place_others(bg_diagram *d, bg_vec p, double w, double h, int owner) {
 
 int bg_place_boxes(bg_diagram *d, bg_vec p, double w, double h) { return query(d, p, w, h, -1, INT_MAX) / 10; }
 
-int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
+int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r, double slack, double *margin) {
   bg_obstacles *o = obstacles(d);
   int best = -1;
-  double best_d = r;
+  double best_d = r, second = INFINITY;
+  r += slack;
   o->query++;
   for (int cy = cell_of(p.y - r); cy <= cell_of(p.y + r); cy++)
     for (int cx = cell_of(p.x - r); cx <= cell_of(p.x + r); cx++) {
@@ -220,10 +221,18 @@ int bg_place_nearest_bond(bg_diagram *d, bg_vec p, double r) {
         if (o->owner[k] >= 0) continue;
         const double *sg = o->box + 4 * k;
         double dk = bg_point_seg(p, bg_v(sg[0], sg[1]), bg_v(sg[2], sg[3]));
-        if (dk < best_d || (dk == best_d && best >= 0 && -1 - o->owner[k] < best))
-          best_d = dk, best = -1 - o->owner[k];
+        int bk = -1 - o->owner[k];
+        if (bk == best) {
+          best_d = fmin(best_d, dk);
+        } else if (dk < best_d || (dk == best_d && best >= 0 && bk < best)) {
+          if (best >= 0) second = fmin(second, best_d);
+          best_d = dk, best = bk;
+        } else {
+          second = fmin(second, dk);
+        }
       }
     }
+  *margin = best >= 0 ? fmin(second - best_d, slack) : 0;
   return best;
 }
 

@@ -30,7 +30,7 @@ typedef struct fc_stats {
   int labels, over;          /* numbers, tags, gains, conflict texts; those over a line or label */
   int numbers, astray;       /* bond numbers and variables; those nearer another bond */
   int tags, tags_far;        /* path tags and gains; nearer another overlay or > 12 pt off */
-  int crowded;               /* tags with another text within 2 pt beside them (read as one) */
+  int crowded;               /* tags and bond numbers with another text within 2 pt beside them (read as one) */
   int through;               /* overlay polylines and leaders × element labels they run through */
   int lines_through;         /* bonds and signals × element labels they run through */
   int crossings;             /* pairs of bonds that cross */
@@ -390,8 +390,9 @@ static int fc_crowded(const fc_scene *f, int i) {
   for (int j = 0; j < f->nbox; j++)
     if (j != i && fc_boxes_meet(&g, &f->box[j]) && !fc_boxes_meet(t, &f->box[j])) {
       if (fc_explain)
-        printf("  crowded: %s %d at (%.0f,%.0f) beside box kind %d id %d\n", t->loop ? "loop" : "path",
-               t->loop ? t->loop : t->id, t->x0, t->y0, f->box[j].kind, f->box[j].id);
+        printf("  crowded: %s %d at (%.0f,%.0f) beside box kind %d id %d\n",
+               t->kind == FC_NUMBER ? "number" : t->loop ? "loop" : "path", t->loop ? t->loop : t->id, t->x0, t->y0,
+               f->box[j].kind, f->box[j].id);
       return 1;
     }
   return 0;
@@ -706,7 +707,7 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
     const fc_box *b = &f.box[i];
     if (b->kind == FC_NODE) continue;
     st->labels++, st->over += fc_label_over(&f, i);
-    if (b->kind == FC_NUMBER) st->numbers++, st->astray += fc_number_astray(&f, b);
+    if (b->kind == FC_NUMBER) st->numbers++, st->astray += fc_number_astray(&f, b), st->crowded += fc_crowded(&f, i);
     if (b->kind == FC_TAG) st->tags++, st->tags_far += fc_tag_far(&f, b), st->crowded += fc_crowded(&f, i);
   }
   st->through += fc_through(&f, FC_OVERLAY) + fc_through(&f, FC_LEADER);

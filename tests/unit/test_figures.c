@@ -64,26 +64,31 @@ static void test_checker(void) {
   bg_scene_text(&s, "P5", 200, -60, 8, 0.5, 0.5, ink, "path-tag 5");
   double pw = s.item[s.nitem - 1].tw;
   bg_scene_text(&s, "k", 200 + pw / 2 + 1, -60, 8, 0, 0.5, ink, "conflict-text 3");
+  /* a bond number with another 1 pt to its left: crowded too ("12" beside "1" reads as 121) */
+  bond(&s, 6, 600, 0, 700, 0);
+  bg_scene_text(&s, "6", 650, 8, 8, 0.5, 0.5, ink, "number bond=6");
+  double nw = s.item[s.nitem - 1].tw;
+  bg_scene_text(&s, "12", 650 - nw / 2 - 1, 8, 8, 1, 0.5, ink, "conflict-text 4");
   fc_stats st = {0};
   fc_count(&s, &st);
-  INT_EQ(st.bonds, 5);
+  INT_EQ(st.bonds, 6);
   INT_EQ(st.short_bonds, 1);
   INT_EQ(st.slanted, 1);
   INT_EQ(st.crossings, 1);
   INT_EQ(st.strokes, 2);
   INT_EQ(st.touching, 1);
-  INT_EQ(st.labels, 10);
+  INT_EQ(st.labels, 12);
   INT_EQ(st.over, 2);
-  INT_EQ(st.numbers, 2);
+  INT_EQ(st.numbers, 3);
   INT_EQ(st.astray, 1);
   INT_EQ(st.tags, 5);
   INT_EQ(st.tags_far, 2);
-  INT_EQ(st.crowded, 1);
+  INT_EQ(st.crowded, 2);
   INT_EQ(st.through, 1);
   INT_EQ(st.lines_through, 1);
   fc_scene f;
   fc_read(&s, &f);
-  INT_EQ(f.nbox, 11);
+  INT_EQ(f.nbox, 13);
   INT_EQ(fc_label_over(&f, 5), 0); /* the text above the curve */
   INT_EQ(fc_label_over(&f, 6), 1); /* the text on it */
   fc_free(&f);
@@ -377,7 +382,7 @@ static const fc_stats limits_generated[3][2] = {
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 75, 1, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
      {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 79, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 33, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 1, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0, 0}},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
      {1384, 17, 1384, 0, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 49, 0, 0, 0, 0, 0, 0, 0}},
 };
