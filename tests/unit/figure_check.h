@@ -699,7 +699,10 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
     if (l->kind == FC_BOND) {
       st->bonds++, st->slanted += fc_slanted(l), st->short_bonds += fc_short(l);
       for (int k = j + 1; k < f.nline; k++)
-        if (f.line[k].kind == FC_BOND) st->crossings += fc_crosses(l, &f.line[k]);
+        if (f.line[k].kind == FC_BOND && fc_crosses(l, &f.line[k])) {
+          st->crossings++;
+          if (fc_explain) printf("  crossing: bonds %d and %d\n", l->id, f.line[k].id);
+        }
     }
     if (l->kind == FC_STROKE) st->strokes++, st->touching += fc_touching(&f, l);
   }

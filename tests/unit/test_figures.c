@@ -808,7 +808,7 @@ static void test_many_one_ports(void) {
     fm_star(&src, cases[c].n, cases[c].one, cases[c].bus, 2027u + (unsigned)c);
     char name[48], rows_name[64];
     snprintf(name, sizeof name, "star%d_%d%s", cases[c].n, cases[c].one, cases[c].bus ? "_bus" : "");
-    snprintf(rows_name, sizeof rows_name, "%s (rows)", name);
+    snprintf(rows_name, sizeof rows_name, "%s_rows", name);
     count_default(rows_name, &src, "rows", &rows, verbose);
     dump_model(name, &src);
     fx f;
@@ -829,7 +829,7 @@ static void test_many_one_ports(void) {
     char name[48], rows_name[64];
     fm_ringtree(&src, 10 + 2 * t, 4099u + 31u * (unsigned)t);
     snprintf(name, sizeof name, "ringtree%d", 10 + 2 * t);
-    snprintf(rows_name, sizeof rows_name, "%s (rows)", name);
+    snprintf(rows_name, sizeof rows_name, "%s_rows", name);
     count_default(name, &src, NULL, &trees, verbose);
     count_default(rows_name, &src, "rows", &trees_rows, verbose);
     bg_sb_free(&src);
