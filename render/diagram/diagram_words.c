@@ -124,11 +124,35 @@ static size_t integer_at(const char *g, const char *p) {
 
 /* One rewrite of a gain whose numbers were put in: an integer power of an
  * integer evaluated (1^2 → 1, 2^2 → 4), a factor 1 dropped (1*s → s,
- * x*1 → x), brackets round a single name or number dropped where they
- * stand alone (/(s) → /s, not exp(s)). Returns whether it changed g. */
+ * x*1 → x, x/1 → x), a fraction of integers in lowest terms (-4/2 → -2,
+ * 2/4 → 1/2; 3/2 stays), brackets round a single name or number dropped
+ * where they stand alone (/(s) → /s, not exp(s)). Returns whether it
+ * changed g. */
 static int simplify_once(char *g) {
   for (char *p = g; *p; p++) {
     size_t a = integer_at(g, p);
+    if (a && p[a] == '/' && a < 9 && (p == g || (p[-1] != '^' && p[-1] != '/'))) { /* 4/2 → 2 */
+      size_t b = integer_at(g, p + a + 1);
+      const char *after = p + a + 1 + b;
+      if (b && b < 9 && number_edge(*after) && *after != '^') {
+        long x = strtol(p, NULL, 10), y = strtol(p + a + 1, NULL, 10), c = x, r = y;
+        while (r) { /* gcd */
+          long t = c % r;
+          c = r, r = t;
+        }
+        if (y > 0 && c > 1) {
+          char num[48];
+          int k = y == c ? snprintf(num, sizeof num, "%ld", x / c) : snprintf(num, sizeof num, "%ld/%ld", x / c, y / c);
+          memmove(p + k, after, strlen(after) + 1);
+          memcpy(p, num, (size_t)k);
+          return 1;
+        }
+      }
+    }
+    if (p[0] == '/' && p[1] == '1' && integer_at(g, p + 1) == 1 && number_edge(p[2]) && p[2] != '^') { /* x/1 → x */
+      memmove(p, p + 2, strlen(p + 2) + 1);
+      return 1;
+    }
     if (a && p[a] == '^') {
       size_t b = integer_at(g, p + a + 1);
       if (b && b < 3 && a < 6 && number_edge(p[a + 1 + b])) {

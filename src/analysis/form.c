@@ -466,7 +466,7 @@ static void reasons_index1(const bg_model *m, bg_analysis *a, bg_strbuf *sb) {
     if (!a->tloop_algebraic[t] || strncmp(a->tloop_cause[t], "internal", 8) != 0) continue;
     sb_sep(sb);
     bg_sb_printf(sb, "algebraic loop %d from %s, gain %s = %g", t + 1, a->tloop_cause[t],
-                 a->tloop_gain[t], a->tloop_gain_value[t]);
+                 a->tloop_gain[t], a->tloop_gain_value[t] + 0.0); /* + 0.0: -0 printed as 0 */
     if (a->tloop_kind[t] == BG_TLOOP_FLAT && a->form_parameter_dependent)
       bg_sb_printf(sb, ": linear, solvable iff its gain differs from 1 (Equation 4.45), so the "
                        "form depends on parameter values%s",

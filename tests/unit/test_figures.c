@@ -1202,6 +1202,30 @@ static void test_layer_styles(void) {
   fx_free(&f);
 }
 
+/* Gains with numbers in them fold their integer fractions (issue 31, "Text"):
+ * three 1-junctions each with two inertias in series, one dependent, whose
+ * algebraic loops have the gains -4/2, -2/3 and -5/1 (as the analysis and
+ * JSON give them) are typeset -2, -2/3 (in lowest terms already) and -5. */
+static void test_gains_folded(void) {
+  static const char *src = "model gf\nSe u = 1\n1 j\nI a = 2\nI b = 4\nbond u -> j\nbond j -> a\nbond j -> b\n"
+                           "Se v = 1\n1 k\nI c = 3\nI d = 2\nbond v -> k\nbond k -> c\nbond k -> d\n"
+                           "Se w = 1\n1 m\nI g = 1\nI h = 5\nbond w -> m\nbond m -> g\nbond m -> h\n";
+  fx f;
+  OK(fm_load(&f, "gf", src) == 0);
+  if (!f.m) return;
+  INT_EQ(f.a.ntloop, 3);
+  bg_diagram *d = build(&f, NULL, BG_SHOW_LOOPS, 0, 0);
+  const bg_scene *s = bg_diagram_scene(d);
+  static const char *const want[3] = {"L1: G = \u22122", "L2: G = \u22122/3", "L3: G = \u22125"};
+  int found[3] = {0};
+  for (int i = 0; i < s->nitem; i++)
+    for (int k = 0; k < 3; k++) found[k] += s->item[i].kind == BG_ITEM_TEXT && !strcmp(s->item[i].text, want[k]);
+  for (int k = 0; k < 3; k++) BG_T_REPORT(found[k] == 1, "gain text %s drawn once (%d)", want[k], found[k]);
+  OK(!strcmp(f.a.tloop_gain[0], "-4/2")); /* the analysis keeps its own text */
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
 /* DOT: every bond's pos starts with its head's arrow tip "e,x,y", then
  * "s,x,y" exactly when a stroke sits at the tail, then 3k + 1 points, the
  * last short of the tip by the arrow's length or less. */
@@ -1410,6 +1434,7 @@ int main(void) {
   RUN(test_print_conventions);
   RUN(test_layer_styles);
   RUN(test_dot_ends);
+  RUN(test_gains_folded);
   test_measure_files(); /* only with BG_FIGURES_MEASURE */
   return bg_t_done();
 }
