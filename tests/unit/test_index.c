@@ -250,7 +250,22 @@ static void test_store_state_modulation(void) {
   coupled_stores("q + k*C2.q^2", "q + k*C1.q^2");
 }
 
+/* An algebraic loop from a resistor's law that reads the junction's
+ * effort, 1 + 2 e, times its flow: the loop's gain at the start is
+ * -2 f = -0, which the reason printed as "= -0"; it reads "= 0". */
+static void test_gain_zero_printed(void) {
+  const char *text = "Se u = 1\n1 j\nI m = 1\nR r : e = (1 + 2*m.e)*f\nbond u -> j\nbond j -> m\nbond j -> r\n";
+  efx f;
+  OK(efx_load(&f, NULL, text, -1, NULL, 0) == 0);
+  if (!f.m) return;
+  const char *why = f.a.index_reason ? f.a.index_reason : "";
+  BG_T_REPORT(strstr(why, "internal modulation of r") && strstr(why, " = 0"), "reason: %s", why);
+  OK(!strstr(why, "= -0"));
+  efx_free(&f);
+}
+
 int main(void) {
+  test_gain_zero_printed();
   test_examples();
   test_other_examples();
   test_scaling();
