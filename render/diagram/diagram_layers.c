@@ -647,8 +647,22 @@ static void gain_text(const bg_diagram *d, int l, bg_strbuf *t) {
   const bg_analysis *a = d->a;
   bg_sb_printf(t, "L%d", l + 1);
   const char *g = a->tloop_gain ? a->tloop_gain[l] : NULL;
-  if (g && strlen(g) <= 24) bg_sb_puts(t, ": G = "), bg_gain_markup(g, label_size(d), t);
-  else if (a->tloop_gain_value) bg_sb_printf(t, ": G = %.4g", a->tloop_gain_value[l]);
+  if (g && strlen(g) <= 24) {
+    bg_sb_puts(t, ": G = "), bg_gain_markup(g, label_size(d), t);
+  } else if (a->tloop_gain_value && isfinite(a->tloop_gain_value[l])) {
+    /* the value is the coefficient without the integrations (docs/json.md):
+     * G = -0.001/s, not -0.001 (the tutorial's tank read G = -0.001) */
+    char v[80];
+    double x = a->tloop_gain_value[l] + 0.0; /* no -0 */
+    snprintf(v, sizeof v, x == 0 || (fabs(x) >= 1e-3 && fabs(x) < 1e5) ? "%.4g" : "%.3e", x);
+    char *e = strchr(v, 'e');
+    if (e) snprintf(e, sizeof v - (size_t)(e - v), "\u00b710^%d", atoi(e + 1)); /* 1.235e-05 → 1.235·10^-5 */
+    int order = a->tloop_order ? a->tloop_order[l] : 0;
+    size_t n = strlen(v);
+    if (order == 1) snprintf(v + n, sizeof v - n, "/s");
+    else if (order > 1) snprintf(v + n, sizeof v - n, "/s^%d", order);
+    bg_sb_puts(t, ": G = "), bg_gain_markup(v, label_size(d), t);
+  }
 }
 
 /* ---------------------------------------------------------------- paths */

@@ -215,7 +215,9 @@ static void tloops_table(ht_ctx *c) {
     expr_cell(c, bg_sb_str(&s));
     bg_sb_free(&s);
     expr_cell(c, a->tloop_gain[l]);
-    num_cell(c, a->tloop_gain_value[l]);
+    bg_sb_puts(c->out, "<td class=\"n\">");
+    rp_gain_value(c->out, a->tloop_gain_value[l], a->tloop_order[l]);
+    bg_sb_puts(c->out, "</td>");
     cell(c, a->tloop_cause && a->tloop_cause[l] ? a->tloop_cause[l] : "");
     bg_sb_puts(c->out, "</tr>\n");
   }

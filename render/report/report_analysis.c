@@ -176,7 +176,10 @@ static void tloops_table(rp_ctx *c) {
     rp_table_cell(&t, "%d", a->tloop_order[l]);
     signals_cell(&t, c->m, a->tloop_signals + a->tloop_adr[l], a->tloop_n[l]);
     eq_cell(&t, a->tloop_gain[l]);
-    num_cell(&t, a->tloop_gain_value[l]);
+    bg_strbuf v = {0};
+    rp_gain_value(&v, a->tloop_gain_value[l], a->tloop_order[l]);
+    rp_table_cell(&t, "%s", bg_sb_str(&v));
+    bg_sb_free(&v);
     rp_table_text(&t, a->tloop_cause && a->tloop_cause[l] ? a->tloop_cause[l] : "");
   }
   rp_table_emit(&c->body, &t);

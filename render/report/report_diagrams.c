@@ -626,7 +626,7 @@ static void hl_text(const rp_ctx *c, const hl *h, bg_strbuf *t) {
                  a->tloop_order[k]);
     rp_esc(t, a->tloop_gain[k]);
     bg_sb_puts(t, " = ");
-    rp_num(t, a->tloop_gain_value[k]);
+    rp_gain_value(t, a->tloop_gain_value[k], a->tloop_order[k]);
     if (a->tloop_algebraic[k]) bg_sb_puts(t, " (algebraic)");
     if (h->cloop >= 0) bg_sb_puts(t, "; the loop's other open loop runs the other way on the far side of its bonds");
     bg_sb_puts(t, ".");

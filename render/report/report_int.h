@@ -76,6 +76,10 @@ void rp_esc(bg_strbuf *b, const char *s);
 void rp_eq_markup(const char *plain, double size, bg_strbuf *out);
 /* A number for tables: %.4g, with a minus sign. */
 void rp_num(bg_strbuf *b, double v);
+/* A loop gain's value: its coefficient (rp_num) over s to its order
+ * ("−0.001/s", "2/s<sup>2</sup>"): the analysis' value leaves the
+ * integrations out (docs/json.md). */
+void rp_gain_value(bg_strbuf *b, double v, int order);
 /* "one", "two", ... "twelve", else the digits (n > 12: in a buffer of the
  * calling thread, valid until its next call). */
 const char *rp_count_word(int n);

@@ -220,6 +220,12 @@ void rp_num(bg_strbuf *b, double v) {
   else bg_sb_puts(b, buf);
 }
 
+void rp_gain_value(bg_strbuf *b, double v, int order) {
+  rp_num(b, v);
+  if (order == 1) bg_sb_puts(b, "/s");
+  else if (order > 1) bg_sb_printf(b, "/s<sup>%d</sup>", order);
+}
+
 const char *rp_count_word(int n) {
   static const char *words[] = {"no", "one", "two", "three", "four", "five", "six",
                                 "seven", "eight", "nine", "ten", "eleven", "twelve"};

@@ -1226,6 +1226,23 @@ static void test_gains_folded(void) {
   fx_free(&f);
 }
 
+/* A gain too long for its tag is shown by value, over s to the loop's
+ * order: the tutorial's tank (-1/((rho*g/k)*(A/(rho*g))*s), k/A = 0.001)
+ * reads G = -0.001/s (it read -0.001, a number that is not the gain). */
+static void test_gain_value_tag(void) {
+  fx f;
+  OK(fx_load(&f, "tutorial/tank", -1, NULL, 0, NULL, NULL) == 0);
+  if (!f.m) return;
+  bg_diagram *d = build(&f, NULL, BG_SHOW_PATHS | BG_SHOW_LOOPS, 0, 0);
+  const bg_scene *s = bg_diagram_scene(d);
+  int found = 0;
+  for (int i = 0; i < s->nitem; i++)
+    found += s->item[i].kind == BG_ITEM_TEXT && !strcmp(s->item[i].text, "P2, L1: G = \u22120.001/s");
+  INT_EQ(found, 1);
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
 /* DOT: every bond's pos starts with its head's arrow tip "e,x,y", then
  * "s,x,y" exactly when a stroke sits at the tail, then 3k + 1 points, the
  * last short of the tip by the arrow's length or less. */
@@ -1435,6 +1452,7 @@ int main(void) {
   RUN(test_layer_styles);
   RUN(test_dot_ends);
   RUN(test_gains_folded);
+  RUN(test_gain_value_tag);
   test_measure_files(); /* only with BG_FIGURES_MEASURE */
   return bg_t_done();
 }

@@ -103,6 +103,16 @@ static void test_eq_markup(void) {
   bg_sb_clear(&b);
   rp_num(&b, -2.5);
   STR_EQ(bg_sb_str(&b), "\u22122.5");
+  bg_sb_clear(&b);
+  /* a loop gain's value over s to the loop's order (the value leaves the integrations out) */
+  rp_gain_value(&b, -0.001, 1);
+  STR_EQ(bg_sb_str(&b), "\u22120.001/s");
+  bg_sb_clear(&b);
+  rp_gain_value(&b, 4, 2);
+  STR_EQ(bg_sb_str(&b), "4/s<sup>2</sup>");
+  bg_sb_clear(&b);
+  rp_gain_value(&b, 2, 0);
+  STR_EQ(bg_sb_str(&b), "2");
   bg_sb_free(&b);
 }
 
