@@ -123,7 +123,8 @@ static size_t integer_at(const char *g, const char *p) {
 }
 
 /* One rewrite of a gain whose numbers were put in: an integer power of an
- * integer evaluated (1^2 → 1, 2^2 → 4), a factor 1 dropped (1*s → s,
+ * integer evaluated where that is no longer (1^2 → 1, 2^2 → 4; 9^9 and 10^5
+ * stay), a factor 1 dropped (1*s → s,
  * x*1 → x, x/1 → x), a fraction of integers in lowest terms (-4/2 → -2,
  * 2/4 → 1/2; 3/2 stays), brackets round a single name or number dropped
  * where they stand alone (/(s) → /s, not exp(s)). Returns whether it
@@ -140,9 +141,11 @@ static int simplify_once(char *g) {
           long t = c % r;
           c = r, r = t;
         }
-        if (y > 0 && c > 1) {
-          char num[48];
-          int k = y == c ? snprintf(num, sizeof num, "%ld", x / c) : snprintf(num, sizeof num, "%ld/%ld", x / c, y / c);
+        char num[48];
+        int k = y <= 0 || c <= 1 ? 99
+                : y == c         ? snprintf(num, sizeof num, "%ld", x / c)
+                                 : snprintf(num, sizeof num, "%ld/%ld", x / c, y / c);
+        if ((size_t)k <= a + 1 + b) { /* never longer (the string has no more room) */
           memmove(p + k, after, strlen(after) + 1);
           memcpy(p, num, (size_t)k);
           return 1;
@@ -157,9 +160,9 @@ static int simplify_once(char *g) {
       size_t b = integer_at(g, p + a + 1);
       if (b && b < 3 && a < 6 && number_edge(p[a + 1 + b])) {
         double v = pow(strtod(p, NULL), strtod(p + a + 1, NULL));
-        if (v < 1e9) {
-          char num[32];
-          int k = snprintf(num, sizeof num, "%.0f", v);
+        char num[32];
+        int k = v < 1e9 ? snprintf(num, sizeof num, "%.0f", v) : 99;
+        if ((size_t)k <= a + 1 + b) { /* no longer than the power (9^9, 10^5 stay): g has no more room */
           memmove(p + k, p + a + 1 + b, strlen(p + a + 1 + b) + 1);
           memcpy(p, num, (size_t)k);
           return 1;

@@ -9,6 +9,7 @@
 #include "examples_list.h"
 #include "figure_check.h"
 #include "figure_models.h"
+#include "diagram/diagram_int.h"
 #include "diagram/render.h"
 
 /* ---------------------------------------------------------------- the checker itself */
@@ -1226,6 +1227,27 @@ static void test_gains_folded(void) {
   fx_free(&f);
 }
 
+/* bg_gain_markup's rewrites never lengthen the gain: 9^9 and 10^5 stay
+ * powers (they were written out in place, past the end of the copy: a
+ * loop's value 1.5e5 shown as 1.5·10^5 overflowed it, found by
+ * AddressSanitizer), 2^2/8 becomes 1/2, -4/2 becomes -2. */
+static void test_gain_markup_rewrites(void) {
+  static const struct {
+    const char *in, *has, *not;
+  } cases[] = {{"-9^9/s", "9<span", "387420489"},
+               {"1.5\u00b710^5/s", "10<span", "100000"},
+               {"2^2/8", "1/2", "4/8"},
+               {"-4/2", "\u22122", "/"},
+               {"-1/(1^2*s)", "\u22121/s", "("}};
+  for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+    bg_strbuf out = {0};
+    bg_gain_markup(cases[i].in, 8, &out);
+    BG_T_REPORT(strstr(bg_sb_str(&out), cases[i].has) && !strstr(bg_sb_str(&out), cases[i].not), "%s -> %s",
+                cases[i].in, bg_sb_str(&out));
+    bg_sb_free(&out);
+  }
+}
+
 /* A gain too long for its tag is shown by value, over s to the loop's
  * order: the tutorial's tank (-1/((rho*g/k)*(A/(rho*g))*s), k/A = 0.001)
  * reads G = -0.001/s (it read -0.001, a number that is not the gain). */
@@ -1453,6 +1475,7 @@ int main(void) {
   RUN(test_dot_ends);
   RUN(test_gains_folded);
   RUN(test_gain_value_tag);
+  RUN(test_gain_markup_rewrites);
   test_measure_files(); /* only with BG_FIGURES_MEASURE */
   return bg_t_done();
 }
