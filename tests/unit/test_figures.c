@@ -130,22 +130,29 @@ static void test_checker_adjacent(void) {
  * axes and bond 5 to C c at 45 degrees: forced. Then bond 4 (down) drawn
  * off the axis too: j has a free side, and neither diagonal is forced; a
  * bond at 30 degrees is never counted. */
+/* A scene of junction j at (100, 0) with bonds 1-3 left, up and right
+ * along the axes and bond 4 down, or off the axis (free_down: j then has
+ * a free side). */
+static void axis_junction(bg_scene *s, int free_down) {
+  bg_rgba ink = {0, 0, 0, 1};
+  bg_scene_init(s, "DejaVu Sans");
+  bg_scene_text(s, "0", 100, 0, 11, 0.5, 0.5, ink, "node j");
+  bond(s, 1, 40, 0, 92, 0);
+  bond(s, 2, 100, -8, 100, -60);
+  bond(s, 3, 108, 0, 160, 0);
+  if (free_down) bond(s, 4, 100, 8, 130, 60);
+  else bond(s, 4, 100, 8, 100, 60);
+}
+
 static void test_checker_diagonals(void) {
   static const char *src = "model dg\nSe u = 1\n0 j\nR a = 1\nR b = 1\nR d = 1\nC c = 1\n"
                            "bond u -> j\nbond j -> a\nbond j -> b\nbond j -> d\nbond j -> c\n";
   fx f;
   OK(fm_load(&f, "dg", src) == 0);
   if (!f.m) return;
-  bg_rgba ink = {0, 0, 0, 1};
   for (int variant = 0; variant < 3; variant++) {
     bg_scene s;
-    bg_scene_init(&s, "DejaVu Sans");
-    bg_scene_text(&s, "0", 100, 0, 11, 0.5, 0.5, ink, "node j");
-    bond(&s, 1, 40, 0, 92, 0);
-    bond(&s, 2, 100, -8, 100, -60);
-    bond(&s, 3, 108, 0, 160, 0);
-    if (variant == 1) bond(&s, 4, 100, 8, 130, 60);
-    else bond(&s, 4, 100, 8, 100, 60);
+    axis_junction(&s, variant == 1);
     if (variant == 2) bond(&s, 5, 106, -6, 106 + 40 * sqrt(0.75), -6 - 40 * 0.5);
     else bond(&s, 5, 106, -6, 136, -36);
     INT_EQ(fc_forced_diagonals(f.m, &s), variant == 0 ? 1 : 0);
@@ -162,13 +169,7 @@ static void test_checker_diagonals(void) {
   if (!f.m) return;
   for (int variant = 0; variant < 2; variant++) {
     bg_scene s;
-    bg_scene_init(&s, "DejaVu Sans");
-    bg_scene_text(&s, "0", 100, 0, 11, 0.5, 0.5, ink, "node j");
-    bond(&s, 1, 40, 0, 92, 0);
-    bond(&s, 2, 100, -8, 100, -60);
-    bond(&s, 3, 108, 0, 160, 0);
-    if (variant == 1) bond(&s, 4, 100, 8, 130, 60);
-    else bond(&s, 4, 100, 8, 100, 60);
+    axis_junction(&s, variant == 1);
     static const double deg[5] = {20, 45, 60, 135, 200};
     for (int k = 0; k < 5; k++) {
       double a = deg[k] * atan(1.0) / 45, c = cos(a), sn = -sin(a); /* y grows downwards */
