@@ -122,6 +122,17 @@ static size_t integer_at(const char *g, const char *p) {
   return n && p[n] != '.' ? n : 0;
 }
 
+/* Puts the k characters of num in place of the len at p, shifting the rest
+ * of the string; only when that is no longer (the string has no more room:
+ * a power written out in place, 10^5 as 100000, ran past its end). k < 0:
+ * nothing to put. Returns whether it did. */
+static int splice(char *p, size_t len, const char *num, int k) {
+  if (k < 0 || (size_t)k > len) return 0;
+  memmove(p + k, p + len, strlen(p + len) + 1);
+  memcpy(p, num, (size_t)k);
+  return 1;
+}
+
 /* One rewrite of a gain whose numbers were put in: an integer power of an
  * integer evaluated where that is no longer (1^2 → 1, 2^2 → 4; 9^9 and 10^5
  * stay), a factor 1 dropped (1*s → s,
@@ -142,40 +153,28 @@ static int simplify_once(char *g) {
           c = r, r = t;
         }
         char num[48];
-        int k = y <= 0 || c <= 1 ? 99
+        int k = y <= 0 || c <= 1 ? -1
                 : y == c         ? snprintf(num, sizeof num, "%ld", x / c)
                                  : snprintf(num, sizeof num, "%ld/%ld", x / c, y / c);
-        if ((size_t)k <= a + 1 + b) { /* never longer (the string has no more room) */
-          memmove(p + k, after, strlen(after) + 1);
-          memcpy(p, num, (size_t)k);
-          return 1;
-        }
+        if (splice(p, a + 1 + b, num, k)) return 1;
       }
     }
     if (p[0] == '/' && p[1] == '1' && integer_at(g, p + 1) == 1 && number_edge(p[2]) && p[2] != '^') { /* x/1 → x */
-      memmove(p, p + 2, strlen(p + 2) + 1);
-      return 1;
+      return splice(p, 2, "", 0);
     }
     if (a && p[a] == '^') {
       size_t b = integer_at(g, p + a + 1);
       if (b && b < 3 && a < 6 && number_edge(p[a + 1 + b])) {
         double v = pow(strtod(p, NULL), strtod(p + a + 1, NULL));
         char num[32];
-        int k = v < 1e9 ? snprintf(num, sizeof num, "%.0f", v) : 99;
-        if ((size_t)k <= a + 1 + b) { /* no longer than the power (9^9, 10^5 stay): g has no more room */
-          memmove(p + k, p + a + 1 + b, strlen(p + a + 1 + b) + 1);
-          memcpy(p, num, (size_t)k);
-          return 1;
-        }
+        if (splice(p, a + 1 + b, num, v < 1e9 ? snprintf(num, sizeof num, "%.0f", v) : -1)) return 1; /* 9^9, 10^5 stay */
       }
     }
     if (p[0] == '1' && p[1] == '*' && integer_at(g, p) == 1 && (p == g || (p[-1] != '/' && p[-1] != '^'))) { /* 1*x → x */
-      memmove(p, p + 2, strlen(p + 2) + 1);
-      return 1;
+      return splice(p, 2, "", 0);
     }
     if (p[0] == '*' && p[1] == '1' && integer_at(g, p + 1) == 1 && number_edge(p[2]) && p[2] != '^') { /* x*1 → x */
-      memmove(p, p + 2, strlen(p + 2) + 1);
-      return 1;
+      return splice(p, 2, "", 0);
     }
     if (p[0] == '(' && (p == g || !(isalnum((unsigned char)p[-1]) || p[-1] == '_'))) {
       char *q = p + 1;

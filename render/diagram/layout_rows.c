@@ -454,19 +454,19 @@ static void rows_one(const bg_layout_in *in, double page, bg_layout *out) {
     deg[t]++, deg[h]++, nb[t] = h, nb[h] = t;
   }
   int *leaves = bg_xcalloc((size_t)n + 1, sizeof *leaves), hubs = 0;
+  unsigned char *ringed = bg_xcalloc((size_t)n + 1, 1); /* first: a one-port, not a root */
   for (int v = 0; v < n; v++)
-    if (deg[v] == 1 && !(in->root && in->root[v]) && nb[v] != v && deg[nb[v]] >= 2) leaves[nb[v]]++;
+    if ((ringed[v] = deg[v] == 1 && !(in->root && in->root[v]) && nb[v] != v && deg[nb[v]] >= 2)) leaves[nb[v]]++;
   for (int u = 0; u < n; u++) hubs += leaves[u] > RING_LEAVES;
   if (!hubs) {
-    free(deg), free(nb), free(leaves);
+    free(deg), free(nb), free(leaves), free(ringed);
     rows_core(in, page, out);
     return;
   }
   /* the graph without the ringed one-ports (in order), each hub's ring */
-  unsigned char *ringed = bg_xcalloc((size_t)n + 1, 1);
   int *node = bg_xcalloc((size_t)n + 1, sizeof *node), *local = bg_xcalloc((size_t)n + 1, sizeof *local), pn = 0;
   for (int v = 0; v < n; v++) {
-    ringed[v] = deg[v] == 1 && !(in->root && in->root[v]) && nb[v] != v && deg[nb[v]] >= 2 && leaves[nb[v]] > RING_LEAVES;
+    ringed[v] = ringed[v] && leaves[nb[v]] > RING_LEAVES; /* then: a one-port of a hub with a ring */
     if (!ringed[v]) local[v] = pn, node[pn++] = v;
   }
   int *edge = bg_xcalloc((size_t)in->nedge + 1, sizeof *edge), *link = bg_xcalloc((size_t)in->nlink + 1, sizeof *link);
