@@ -13,7 +13,9 @@
  * (leaves) go to a free side cell next to them (left, above, below, right, in
  * the order that best keeps dot's directions), else a diagonal one. A bond
  * between hubs is a straight run of free cells, else an elbow (one or two
- * corners) through free cells, else a straight slanted line. Cells hold one
+ * corners) through free cells, else a straight slanted line; an elbow to a
+ * branch whose side of the graph fits on the corner is made straight by
+ * moving that side there (straighten_branches). Cells hold one
  * thing each, so routed bonds neither cross nor overlap. Components are
  * packed on a skyline; a component wider than its wrap width snakes into bands. Then
  * the cells become points: each grid column as wide as its widest node plus a
@@ -716,6 +718,216 @@ static void route_hub_bonds(grid *g) {
     if (g->bent[e] < 0 && is_hub_bond(g, e)) rip_up(g, e);
 }
 
+/* ---------------------------------------------------------------- straight branches */
+/* A branch in another row than its hub hangs one column to the right of it
+ * (the tree drawing's column is dot's rank), so its bond is an elbow: up or
+ * down off the hub, then across (the quarter car's suspension junction above
+ * the body's; a fifth of a random tree's bonds). Books draw a branch
+ * straight off its hub. Where an elbow's bond is a bridge, the smaller of
+ * the two sides it joins moves as one onto the corner, when every cell that
+ * side and its routes take there is free: the bond is then straight and the
+ * side keeps its shape. The sides are searched breadth-first in turn until
+ * one is complete, so the work is the smaller side's: n log n on a tree. */
+
+/* Whether f is a hub bond other than e with both ends placed (routed or
+ * slanted). */
+static int branch_edge(const grid *g, int f, int e) {
+  return f != e && is_hub_bond(g, f) && g->placed[g->et[f]] && g->placed[g->eh[f]];
+}
+
+/* Which end of e holds the smaller part of the graph once e is cut: 1 the
+ * tail, 2 the head, 0 when e is no bridge (a cycle runs through it) or
+ * that part holds a mesh hub; its nodes in qa (tail) or qb (head), the
+ * end first, *nq of them. mark[] is left clear. */
+static int smaller_side(const grid *g, int e, unsigned char *mark, int *qa, int *qb, int *nq) {
+  int ends[2] = {g->et[e], g->eh[e]}, head[2] = {0, 0}, tail[2] = {1, 1}, *q[2] = {qa, qb}, done = -1, bridge = 1;
+  qa[0] = ends[0], qb[0] = ends[1], mark[ends[0]] = 1, mark[ends[1]] = 2;
+  while (done < 0 && bridge)
+    for (int s = 0; s < 2 && done < 0 && bridge; s++) {
+      if (head[s] == tail[s]) {
+        done = s;
+        break;
+      }
+      int x = q[s][head[s]++];
+      bridge = !g->mesh[x];
+      for (int k = g->adr[x]; k < g->adr[x + 1] && bridge; k++) {
+        int f = g->adj[k], y = other(g, f, x);
+        if (!branch_edge(g, f, e) || mark[y] == s + 1) continue;
+        if (mark[y]) bridge = 0; /* the other side: a cycle through e */
+        else mark[y] = (unsigned char)(s + 1), q[s][tail[s]++] = y;
+      }
+    }
+  for (int s = 0; s < 2; s++)
+    for (int i = 0; i < tail[s]; i++) mark[q[s][i]] = 0;
+  *nq = done >= 0 ? tail[done] : 0;
+  return bridge && done >= 0 ? done + 1 : 0;
+}
+
+/* A move of the side q[0..nq) (its nodes marked in mark[]) by (dx, dy),
+ * after which bond e runs straight from p to the side's end c. */
+typedef struct side_move {
+  const int *q;
+  int nq, e, p, c, dx, dy;
+  const unsigned char *mark;
+} side_move;
+
+/* Whether (x, y) lies on e's new straight run, its ends included. */
+static int on_run(const grid *g, const side_move *mv, int x, int y) {
+  int x0 = g->gx[mv->p], y0 = g->gy[mv->p], x1 = g->gx[mv->c] + mv->dx, y1 = g->gy[mv->c] + mv->dy;
+  return x0 == x1 ? x == x0 && (y - y0) * (y - y1) <= 0 : y == y0 && (x - x0) * (x - x1) <= 0;
+}
+
+/* Whether a cell holding v (a node, -2 - an edge, or nothing) may take
+ * the moved side: free, the side's own or e's (given back as it moves). */
+static int side_may_take(const grid *g, const side_move *mv, int v) {
+  if (v == -1 || v == RELEASED || v == -2 - mv->e) return 1;
+  if (v >= 0) return mv->mark[v];
+  return mv->mark[g->et[-2 - v]] && mv->mark[g->eh[-2 - v]];
+}
+
+/* Whether cell (x, y) may take the side's node `node` (-1: a route's
+ * cell): side_may_take, and off e's new run but for c at its end. */
+static int cell_for_side(const grid *g, const side_move *mv, int x, int y, int node) {
+  return (node == mv->c || !on_run(g, mv, x, y)) && side_may_take(g, mv, g->val[cell_slot(g, cell_key(x, y))]);
+}
+
+/* Whether e's new run is open: every cell between its ends side_may_take. */
+static int run_open(const grid *g, const side_move *mv) {
+  int x0 = g->gx[mv->p], y0 = g->gy[mv->p], x1 = g->gx[mv->c] + mv->dx, y1 = g->gy[mv->c] + mv->dy;
+  int sx = sgn(x1 - x0), sy = sgn(y1 - y0);
+  for (int x = x0 + sx, y = y0 + sy; x != x1 || y != y1; x += sx, y += sy)
+    if (!side_may_take(g, mv, g->val[cell_slot(g, cell_key(x, y))])) return 0;
+  return 1;
+}
+
+/* The routes inside the moving side: each once (from its tail). */
+static int inner_edge(const grid *g, const side_move *mv, int f, int x) {
+  return branch_edge(g, f, mv->e) && g->et[f] == x && mv->mark[g->eh[f]] && g->bent[f] >= 0;
+}
+
+/* Whether every node and route cell of the side may go where the move
+ * puts it (cell_for_side). */
+static int side_fits(const grid *g, const side_move *mv) {
+  for (int i = 0; i < mv->nq; i++) {
+    int x = mv->q[i];
+    if (!cell_for_side(g, mv, g->gx[x] + mv->dx, g->gy[x] + mv->dy, x)) return 0;
+    for (int k = g->adr[x]; k < g->adr[x + 1]; k++) {
+      int f = g->adj[k], pts[6][2], n;
+      if (!inner_edge(g, mv, f, x)) continue;
+      n = route_points(g, f, pts);
+      for (int j = 0; j + 1 < n; j++) { /* every cell of the leg but the end nodes' */
+        int sx = sgn(pts[j + 1][0] - pts[j][0]), sy = sgn(pts[j + 1][1] - pts[j][1]);
+        for (int cx = pts[j][0] + sx, cy = pts[j][1] + sy; cx != pts[j + 1][0] || cy != pts[j + 1][1]; cx += sx, cy += sy)
+          if (!cell_for_side(g, mv, cx + mv->dx, cy + mv->dy, -1)) return 0;
+      }
+    }
+  }
+  return 1;
+}
+
+/* Moves the side: its routes and nodes given back, moved (corners too),
+ * taken again. */
+static void move_side(grid *g, const side_move *mv) {
+  for (int pass = 0; pass < 2; pass++)
+    for (int i = 0; i < mv->nq; i++)
+      for (int k = g->adr[mv->q[i]]; k < g->adr[mv->q[i] + 1]; k++) {
+        int f = g->adj[k], pts[6][2], n;
+        if (!inner_edge(g, mv, f, mv->q[i])) continue;
+        if (pass == 1)
+          for (int c = 0; c < g->bent[f]; c++) g->corner[f][2 * c] += mv->dx, g->corner[f][2 * c + 1] += mv->dy;
+        else {
+          n = route_points(g, f, pts);
+          walk(g, (const int(*)[2])pts, n, -1, f);
+        }
+      }
+  for (int i = 0; i < mv->nq; i++) g->val[cell_slot(g, cell_key(g->gx[mv->q[i]], g->gy[mv->q[i]]))] = RELEASED;
+  for (int i = 0; i < mv->nq; i++) {
+    int x = mv->q[i];
+    g->gx[x] += mv->dx, g->gy[x] += mv->dy;
+    cell_take(g, g->gx[x], g->gy[x], x);
+  }
+  for (int i = 0; i < mv->nq; i++) /* the routes again, once every node is in place */
+    for (int k = g->adr[mv->q[i]]; k < g->adr[mv->q[i] + 1]; k++) {
+      int f = g->adj[k], pts[6][2], n;
+      if (!inner_edge(g, mv, f, mv->q[i])) continue;
+      n = route_points(g, f, pts);
+      walk(g, (const int(*)[2])pts, n, 1, f);
+    }
+}
+
+/* Whether moving the side puts c in line with p with e's sides free. */
+static int move_fits(const grid *g, const side_move *mv) {
+  int pts[6][2], n = route_points(g, mv->e, pts), at_c = pts[0][0] == g->gx[mv->c] && pts[0][1] == g->gy[mv->c];
+  int px = g->gx[mv->p], py = g->gy[mv->p], cx = g->gx[mv->c] + mv->dx, cy = g->gy[mv->c] + mv->dy;
+  int was_c = at_c ? side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1])
+                   : side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
+  int was_p = at_c ? side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1])
+                   : side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
+  if ((cx != px && cy != py) || (cx == px && cy == py)) return 0;
+  if (g->sides[mv->c] & side_of(px - cx, py - cy) & ~was_c) return 0;
+  if (g->sides[mv->p] & side_of(cx - px, cy - py) & ~was_p) return 0;
+  return run_open(g, mv) && side_fits(g, mv);
+}
+
+/* Which nodes may move, per node: 1 where its part is a forest of hubs or
+ * every hub bond of its part found a route on the grid (a reaction
+ * network's chords did not: they are routed later round the moved nodes,
+ * and came out worse); 2 at the ends of a hub bond without a route and at
+ * their hub neighbours, which stay where they are with what hangs from
+ * them (the later route of such a bond touched a ring's one-port bond, or
+ * crossed its junction's other bonds, once a branch beside it moved). */
+static unsigned char *movable(const grid *g) {
+  size_t n = (size_t)g->n + 1;
+  int *up = bg_xcalloc(n, sizeof(int)), *cyc = bg_xcalloc(n, sizeof(int)); /* hub bonds - hubs (>= 0: a cycle) */
+  unsigned char *ok = bg_xcalloc(n, 1), *rough = bg_xcalloc(n, 1);
+  for (int v = 0; v < g->n; v++) up[v] = v;
+  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
+  for (int v = 0; v < g->n; v++) cyc[find(up, v)] -= g->hub[v] && g->placed[v];
+  for (int e = 0; e < g->ne; e++) cyc[find(up, g->et[e])] += is_hub_bond(g, e);
+  for (int e = 0; e < g->ne; e++)
+    if (g->bent[e] < 0 && is_hub_bond(g, e)) rough[find(up, g->et[e])] |= cyc[find(up, g->et[e])] >= 0;
+  for (int v = 0; v < g->n; v++) ok[v] = !rough[find(up, v)];
+  unsigned char *end = bg_xcalloc(n, 1); /* ends of hub bonds without a route */
+  for (int e = 0; e < g->ne; e++)
+    if (g->bent[e] < 0 && is_hub_bond(g, e)) end[g->et[e]] = end[g->eh[e]] = 1;
+  for (int e = 0; e < g->ne; e++) /* those and their hub neighbours stay */
+    if (is_hub_bond(g, e) && (end[g->et[e]] || end[g->eh[e]]))
+      ok[g->et[e]] = ok[g->et[e]] ? 2 : 0, ok[g->eh[e]] = ok[g->eh[e]] ? 2 : 0;
+  free(end);
+  free(up), free(cyc), free(rough);
+  return ok;
+}
+
+static void straighten_branches(grid *g) {
+  size_t n = (size_t)g->n + 1;
+  unsigned char *mark = bg_xcalloc(n, 1), *ok = movable(g);
+  int *qa = bg_xcalloc(n, sizeof(int)), *qb = bg_xcalloc(n, sizeof(int));
+  for (int e = 0; e < g->ne; e++) {
+    if (g->bent[e] < 1 || !is_hub_bond(g, e) || ok[g->et[e]] != 1 || ok[g->eh[e]] != 1) continue;
+    int nq, s = smaller_side(g, e, mark, qa, qb, &nq), fits = 0;
+    side_move mv = {.q = s == 1 ? qa : qb, .nq = nq, .e = e, .mark = mark};
+    for (int i = 0; i < nq; i++) s = ok[mv.q[i]] == 1 ? s : 0;
+    if (!s) continue;
+    mv.c = mv.q[0], mv.p = other(g, e, mv.c);
+    /* into p's column or p's row, the shorter move first */
+    int ax = g->gx[mv.p] - g->gx[mv.c], ay = g->gy[mv.p] - g->gy[mv.c];
+    for (int i = 0; i < nq; i++) mark[mv.q[i]] = 1;
+    for (int k = 0; k < 2 && !fits; k++) {
+      int across = (abs(ax) <= abs(ay)) == (k == 0);
+      mv.dx = across ? ax : 0, mv.dy = across ? 0 : ay;
+      fits = move_fits(g, &mv);
+    }
+    if (fits) {
+      unroute(g, e);
+      move_side(g, &mv);
+      int pts[2][2] = {{g->gx[mv.p], g->gy[mv.p]}, {g->gx[mv.c], g->gy[mv.c]}};
+      try_route(g, e, (const int(*)[2])pts, 2);
+    }
+    for (int i = 0; i < nq; i++) mark[mv.q[i]] = 0;
+  }
+  free(mark), free(ok), free(qa), free(qb);
+}
+
 /* ---------------------------------------------------------------- one-ports */
 static const int side_dx[4] = {1, 0, -1, 0}, side_dy[4] = {0, -1, 0, 1}; /* R U L D */
 
@@ -1205,6 +1417,7 @@ void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, 
   mesh_rows(&g, h, nh);
   stack_components(&g, h, nh);
   route_hub_bonds(&g);
+  straighten_branches(&g);
   place_leaves(&g);
   place_floats(&g);
   to_points(&g);
