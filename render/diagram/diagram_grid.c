@@ -815,10 +815,13 @@ static int side_fits(const grid *g, const side_move *mv) {
       int f = g->adj[k], pts[6][2], n;
       if (!inner_edge(g, mv, f, x)) continue;
       n = route_points(g, f, pts);
-      for (int j = 0; j + 1 < n; j++) { /* every cell of the leg but the end nodes' */
-        int sx = sgn(pts[j + 1][0] - pts[j][0]), sy = sgn(pts[j + 1][1] - pts[j][1]);
-        for (int cx = pts[j][0] + sx, cy = pts[j][1] + sy; cx != pts[j + 1][0] || cy != pts[j + 1][1]; cx += sx, cy += sy)
-          if (!cell_for_side(g, mv, cx + mv->dx, cy + mv->dy, -1)) return 0;
+      for (int j = 0; j + 1 < n; j++) { /* every cell of the route, corners too, but the end nodes' */
+        int sx = sgn(pts[j + 1][0] - pts[j][0]), sy = sgn(pts[j + 1][1] - pts[j][1]), cx = pts[j][0], cy = pts[j][1];
+        do {
+          cx += sx, cy += sy;
+          if ((j + 2 < n || cx != pts[j + 1][0] || cy != pts[j + 1][1]) && !cell_for_side(g, mv, cx + mv->dx, cy + mv->dy, -1))
+            return 0;
+        } while (cx != pts[j + 1][0] || cy != pts[j + 1][1]);
       }
     }
   }

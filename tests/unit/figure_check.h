@@ -54,6 +54,7 @@ typedef struct fc_stats {
   int avoidable;             /* of crossings and signal × bond, those a short detour avoids (fc_avoidable) */
   int diagonals;             /* bonds at 45 degrees off a junction whose four sides its other bonds take
                                 (fc_forced_diagonals; taken out of slanted by the callers that count them) */
+  int nodes_overlap;         /* pairs of element labels whose boxes overlap (two nodes on one place) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -680,6 +681,14 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
       if (fc_explain) printf("  foreign: %s inside the frame of %s\n", b->name, l->name);
     }
   }
+  for (int i = 0; i < f->nbox; i++) /* element labels on one another: 0.5 pt each way */
+    for (int k = i + 1; f->box[i].elem && k < f->nbox; k++) {
+      const fc_box *a = &f->box[i], *b = &f->box[k];
+      if (!b->elem || fmin(a->x1, b->x1) - fmax(a->x0, b->x0) <= 0.5 || fmin(a->y1, b->y1) - fmax(a->y0, b->y0) <= 0.5)
+        continue;
+      st->nodes_overlap++;
+      if (fc_explain) printf("  nodes overlap: %s and %s\n", a->name, b->name);
+    }
   for (int i = 0; i < s->nitem; i++) {
     const bg_scene_item *it = &s->item[i];
     if (it->kind != BG_ITEM_TEXT) continue;

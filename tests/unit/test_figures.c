@@ -322,12 +322,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -381,25 +381,25 @@ static const fc_stats limits[3][2] = {
  * bond 8, the one oblique).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 75, 1, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 79, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 33, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
-     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10},
-     {1384, 17, 1384, 0, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 49, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 75, 1, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 79, 3, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 33, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0},
+     {1384, 17, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 1, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 46, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 10, 0, 78, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0},
+     {1384, 17, 1384, 0, 2311, 1, 1384, 0, 913, 0, 0, 0, 0, 10, 0, 81, 2, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 49, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent, t->avoidable, t->diagonals);
+         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -637,6 +637,7 @@ static void test_large_figures(void) {
       BG_T_REPORT(st.frame_cross == 0 && st.foreign == 0, "%s: %d pairs of frames crossing, %d foreign elements in frames",
                   lm->name, st.frame_cross, st.foreign);
       BG_T_REPORT(st.bond_overlaps == 0, "%s: %d bonds on other lines", lm->name, st.bond_overlaps);
+      BG_T_REPORT(st.nodes_overlap == 0, "%s: %d element labels on one another", lm->name, st.nodes_overlap);
       BG_T_REPORT(st.false_tees == 0, "%s: %d bond ends on other bonds", lm->name, st.false_tees);
       BG_T_REPORT(st.lines_through - st.sig_through == 0, "%s: %d bonds through element labels", lm->name,
                   st.lines_through - st.sig_through);
@@ -713,6 +714,7 @@ static void test_held_out_models(void) {
     }
   INT_EQ(tot.false_tees, 0);
   INT_EQ(tot.touching, 0);
+  INT_EQ(tot.nodes_overlap, 0);
   OK(tot.bond_overlaps <= 1); /* randnet60_2: bond 104's route jogs 7 pt along bond 65 (1 before too) */
   INT_EQ(tot.lines_through, 0);
   /* numbers: randnet80_2's one and randnet80_3's two astray in dense
@@ -795,6 +797,7 @@ static void lines_clean(const fc_stats *t) {
   INT_EQ(t->sig_cross, 0);
   INT_EQ(t->arrangement, 0);
   INT_EQ(t->adjacent, 0);
+  INT_EQ(t->nodes_overlap, 0);
 }
 
 static void test_many_one_ports(void) {
@@ -880,6 +883,17 @@ static void test_many_one_ports(void) {
  * own (held-out models) with the large figures' counts, in the layout
  * BG_FIGURES_LAYOUT (default: the model's own), default style and layers.
  * Prints a row per file; asserts only that each loads and draws. */
+/* The text of file path into src (appended); 0 when it cannot be read. */
+static int read_text(const char *path, bg_strbuf *src) {
+  FILE *fp = fopen(path, "rb");
+  if (!fp) return 0;
+  char buf[4096];
+  size_t k;
+  while ((k = fread(buf, 1, sizeof buf - 1, fp)) > 0) buf[k] = 0, bg_sb_puts(src, buf);
+  fclose(fp);
+  return 1;
+}
+
 static void test_measure_files(void) {
   const char *list = getenv("BG_FIGURES_MEASURE");
   if (!list) return;
@@ -887,14 +901,10 @@ static void test_measure_files(void) {
   printf("%-34s %s\n", "", header);
   char *paths = strdup(list);
   for (char *save = NULL, *p = strtok_r(paths, ":", &save); p; p = strtok_r(NULL, ":", &save)) {
-    FILE *fp = fopen(p, "rb");
-    BG_T_REPORT(fp != NULL, "%s opens", p);
-    if (!fp) continue;
     bg_strbuf src = {0};
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf - 1, fp)) > 0) buf[k] = 0, bg_sb_puts(&src, buf);
-    fclose(fp);
+    int opened = read_text(p, &src);
+    BG_T_REPORT(opened, "%s opens", p);
+    if (!opened) continue;
     const char *name = strrchr(p, '/') ? strrchr(p, '/') + 1 : p;
     fx f;
     int rc = fm_load(&f, name, bg_sb_str(&src));
@@ -1389,18 +1399,29 @@ static void test_straight_branches(void) {
     BG_T_REPORT(bent == 0, "%s: %d bonds with a corner", name, bent);
     bg_sb_free(&src);
   }
-  FILE *fp = fopen(BG_SOURCE_DIR "/examples/gallery/quarter_car.bg", "rb");
-  OK(fp != NULL);
-  if (fp) {
-    bg_strbuf src = {0};
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf - 1, fp)) > 0) buf[k] = 0, bg_sb_puts(&src, buf);
-    fclose(fp);
-    int bent = bent_in_styles("quarter_car", bg_sb_str(&src), 3);
-    BG_T_REPORT(bent == 0, "quarter_car: %d bonds with a corner", bent);
-    bg_sb_free(&src);
+  bg_strbuf qc = {0};
+  OK(read_text(BG_SOURCE_DIR "/examples/gallery/quarter_car.bg", &qc));
+  int bent = bent_in_styles("quarter_car", bg_sb_str(&qc), 3);
+  BG_T_REPORT(bent == 0, "quarter_car: %d bonds with a corner", bent);
+  bg_sb_free(&qc);
+  /* a side is moved only where its routes' corners are free too (a corner
+   * landed on a junction of this tree: two element labels on one place) */
+  bg_strbuf rt = {0};
+  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/randtree100_5.bg", &rt));
+  fx f;
+  int rc = fm_load(&f, "randtree100_5", bg_sb_str(&rt));
+  OK(rc == 0);
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
+    OK(d != NULL);
+    fc_stats st = {0};
+    if (d) fc_count(bg_diagram_scene(d), &st);
+    BG_T_REPORT(st.nodes_overlap == 0 && st.bonds == 209, "randtree100_5 %s: %d element labels on one another, %d bonds",
+                styles[si], st.nodes_overlap, st.bonds);
+    bg_diagram_free(d);
   }
+  fx_free(&f);
+  bg_sb_free(&rt);
   static const fm_model trees[] = {{"tree25", fm_make_tree, 25},    {"tree40", fm_make_tree, 40},
                                    {"branchy12", fm_make_branchy, 12}, {"branchy20", fm_make_branchy, 20}};
   int total = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
@@ -1438,12 +1459,12 @@ static void test_straight_branches(void) {
  * every layer, that bond at the grid's own angle (layers keep their room:
  * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
 static const fc_stats limits_pages[3][2] = {
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
