@@ -15,9 +15,9 @@ the six before it; "randgraph" a random tree plus a quarter as many random
 extra bonds; the trees' junctions carry none to two one-ports. SEED picks
 the random graph.
 A "star" is one 0-junction with N resistors (a fan: docs/drawing.md,
-the bound on the bond router's work).
+the bound on the bond router's work); a "tree" is randtree with seed 1.
 Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT |
-       star N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
+       star N OUT | tree N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
 import random
 import sys
 
@@ -116,5 +116,7 @@ if __name__ == "__main__":
             f.write("".join(f"R r{i} = 1\nbond j -> r{i}\n" for i in range(n)))
         elif what == "chain":
             chain(n, f)
+        elif what == "tree":  # a random tree of n junctions (seed 1): the grid's tree drawing above 2 000 nodes
+            randtree(n, 1, f)
         else:
             reactions(n, f, near=(what == "nearby"))

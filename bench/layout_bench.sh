@@ -6,7 +6,9 @@
 # the same model at half the size; the exponent is log(t2/t1)/log 2 (1: linear).
 # In-process (bench/render_time.c --build-only, compiled against BGDRAW's
 # build directory), best of 3, with the layout a model of that size gets
-# (rows above 2 000 nodes: both chains, the full reaction network) and, for
+# (above 2 000 nodes a forest is drawn as a tree on the grid, bg_grid_tree_ranks:
+# both chains and both random trees, of 3 000 and 6 000 junctions; other graphs
+# rows: the full reaction network) and, for
 # the reaction networks, rows at both sizes too (the half network has 1 750
 # nodes and would be laid out by dot, which is not linear); the same for a
 # network whose signals join near neighbours ("nearby"); a junction of 6 000
@@ -39,6 +41,7 @@ row() { # LABEL KIND N [ENGINE]
 }
 printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
+row "random tree, 6000 junctions" tree 6000
 row "reactions, $NS signals (rows)" reactions "$NS" rows
 row "nearby, $NS signals (rows)" nearby "$NS" rows
 row "star, 6000 one-ports (rows)" star 6000

@@ -88,11 +88,13 @@ static void reference_boxes(bg_diagram_layout *d, const bg_style *ref, double *w
 }
 
 /* ---------------------------------------------------------------- layout */
-static const char *choose_engine(const bg_diagram_layout *d) {
+static const char *choose_engine(const bg_diagram_layout *d, int *instead_of_dot) {
   const bg_model *m = d->m;
+  *instead_of_dot = 0;
   if (d->o.layout) return d->o.layout;
   const char *e = m->layout.engine ? m->layout.engine : "dot";
   if (!strcmp(e, "dot") && d->nnode > 2000) {
+    *instead_of_dot = 1;
     /* dot and sfdp need 10-30 s at 10 000 nodes, rows (linear) a few ms
      * (docs/drawing.md) */
     bg_logf(d->o.log, BG_LOG_PROGRESS, "%d nodes: laying out with rows instead of dot", d->nnode);
@@ -186,6 +188,19 @@ static int signal_links(const bg_diagram_layout *d, int **a, int **b) {
   return n;
 }
 
+/* The layout a forest too large for dot starts from: no engine run (the
+ * grid pass places every node from bg_grid_tree_ranks), arrays for every
+ * node and edge, no curves; its engine "tree". */
+static void forest_layout(bg_layout *lay, const bg_layout_in *in) {
+  memset(lay, 0, sizeof *lay);
+  lay->nnode = in->nnode, lay->nedge = in->nedge;
+  lay->x = bg_xcalloc((size_t)in->nnode + 1, sizeof *lay->x);
+  lay->y = bg_xcalloc((size_t)in->nnode + 1, sizeof *lay->y);
+  lay->spladr = bg_xcalloc((size_t)in->nedge + 1, sizeof *lay->spladr);
+  lay->spln = bg_xcalloc((size_t)in->nedge + 1, sizeof *lay->spln);
+  snprintf(lay->engine, sizeof lay->engine, "tree");
+}
+
 static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   const bg_model *m = d->m;
   int *tail, *head, ne = layout_edges(d, &tail, &head);
@@ -211,11 +226,19 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
    * its words, not on the style, so a figure keeps its arrangement in every
    * style (issue 31: print's serif font swapped nodes in 9 of 69 models);
    * the grid pass spaces them with the style's own sizes. */
-  const char *engine = choose_engine(d), *rd = m->layout.rankdir;
+  int instead_of_dot;
+  const char *engine = choose_engine(d, &instead_of_dot), *rd = m->layout.rankdir;
   int grid = !strcmp(engine, "dot") && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR"));
+  /* a forest too large for dot: the grid pass's tree drawing, from
+   * breadth-first ranks and a depth-first order (bg_grid_tree_ranks), in
+   * place of the rows layout's places (issue 31: the rows layout drew a
+   * random tree with 4 to 5 times the crossings and 8 times the slanted
+   * bonds; the grid pass is linear, and faster) */
+  int tree = instead_of_dot && !d->st.splines && !any_pinned && (!rd || !strcmp(rd, "LR"));
   /* rows likewise lays out the default style's boxes, and the result is
    * stretched to fit the style's own (scale_rows) */
   int is_rows = !strcmp(engine, "rows"), rows = is_rows && !any_pinned, refsized = grid || rows;
+  int *depth = NULL;
   bg_style ref;
   bg_style_default(&ref);
   const bg_style *lst = refsized ? &ref : &d->st;
@@ -245,29 +268,41 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     in.ncluster = m->ninst, in.cluster = cluster, in.cluster_parent = m->inst_parent;
     in.cluster_label_h = label_h;
   }
+  if (tree) depth = bg_layout_depths(&in, NULL);
   char err[256];
   if (d->rep && d->ncollapsed) { /* both leave nodes out of the layout: not combined yet */
     bg_diag_error(dg, (bg_srcloc){0}, "--collapse cannot draw a model with multiport fields yet; "
                   "draw it without --collapse");
     free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
-    free(cluster), free(label_h), free(link_a), free(link_b);
+    free(cluster), free(label_h), free(link_a), free(link_b), free(depth);
     if (refsized) free(gw), free(gh);
     return -1;
   }
-  bg_fields_lay *fields = bg_fields_compact(d, &in);
-  int rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
-  bg_fields_expand(d, fields);
+  int rc = 0;
+  if (tree && bg_grid_is_forest(d)) forest_layout(&d->lay, &in);
+  else {
+    tree = 0;
+    bg_fields_lay *fields = bg_fields_compact(d, &in);
+    rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
+    bg_fields_expand(d, fields);
+  }
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
   free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
   free(cluster), free(label_h), free(link_a), free(link_b);
-  if (rc == 0 && rows) scale_rows(d, gw, gh);
   if (rc == 0) {
     d->nx = d->lay.x, d->ny = d->lay.y;
     d->splx = d->lay.splx, d->sply = d->lay.sply;
-    if (grid) bg_grid_place(d, &ref, gw, gh);
+    int own_ranks = tree && bg_grid_tree_ranks(d, depth);
+    if (own_ranks) {
+      grid = 1, rows = 0;
+      bg_logf(d->o.log, BG_LOG_PROGRESS, "a forest: drawn as a tree on the grid instead of rows");
+    }
+    if (rows) scale_rows(d, gw, gh);
+    if (grid) bg_grid_place(d, &ref, gw, gh, own_ranks);
     bg_parts_spread(d);
   }
   if (refsized) free(gw), free(gh);
+  free(depth);
   return rc ? -1 : 0;
 }
 

@@ -75,7 +75,9 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
 
 /* Places text beside bond b, on the barb side (side 1) or opposite (-1),
  * 3.5 pt clear of the line: at the middle if that is free, else a little
- * along the bond or 4, 8, 12 pt further out; the first place that touches
+ * along the bond (last 84 % along: a four-digit number beside a one-port's
+ * diagonal bond, in the wedge it makes with an axis bond, is clear of that
+ * bond only near the one-port) or 4, 8, 12 pt further out; the first place that touches
  * nothing and whose nearest bond is b, else the one touching least (a
  * place nearer another bond costs as much as a line crossed, so the text
  * never reads as another bond's when there is room). With flip (a bond
@@ -86,7 +88,7 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
                       numbers in a 45-degree wedge: 11.8 pt from their own, 11.4 from the next) */
 static void text_beside(bg_diagram *d, const char *markup, int b, int side, int flip, double size,
                         bg_rgba c, const char *role) {
-  static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75};
+  static const double ts[] = {0.5, 0.4, 0.6, 0.32, 0.68, 0.25, 0.75, 0.84};
   enum { NT = sizeof ts / sizeof ts[0], NOUT = 4, NC = 2 * NOUT * NT };
   double w, h;
   bg_text_measure(d->st.font, size, markup, &w, &h);

@@ -52,11 +52,13 @@ typedef struct grid {
    * points, per hub the width and height of its ring */
   int *orbit;
   double *ring_x, *ring_y, *ring_w, *ring_h;
+  int own_ranks;            /* ranks from bg_grid_tree_ranks, not dot: a large forest */
   const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
   const double *rw, *rh;
 } grid;
 
 static double layer_band(const grid *g);
+static void style_gaps(const bg_style *st, double band, double *xgap, double *ygap);
 
 static unsigned long long cell_key(int x, int y) {
   return ((unsigned long long)(unsigned)x << 32) | (unsigned)y;
@@ -528,6 +530,29 @@ static void pack_parts(int *part, int nparts, const int *width, const int *heigh
  * wider than that (a long chain becomes rows), and the components are stacked
  * on the page by pack_parts. A band runs back from
  * under the end of the band before it. */
+/* A large forest's column pitch over its row pitch, as to_points will
+ * make them from the reference boxes: a column as wide as its widest hub
+ * and the widest one-port beside one (the odd column after it), a row as
+ * high as its hub and one-port; each with its gaps. */
+static double column_pitch(const grid *g, const int *h, int nh) {
+  int ncol = 0;
+  for (int i = 0; i < nh; i++) ncol = g->col[h[i]] + 1 > ncol ? g->col[h[i]] + 1 : ncol;
+  double *hub = bg_xcalloc((size_t)ncol + 1, sizeof(double)), *leaf = bg_xcalloc((size_t)ncol + 1, sizeof(double));
+  double hh = 0, lh = 0, xgap, ygap, sum = 0;
+  for (int i = 0; i < nh; i++) {
+    int v = h[i], c = g->col[v];
+    hub[c] = fmax(hub[c], g->rw[v]), hh = fmax(hh, g->rh[v]);
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+      int w = other(g, g->adj[k], v);
+      if (!g->hub[w]) leaf[c] = fmax(leaf[c], g->rw[w]), lh = fmax(lh, g->rh[w]);
+    }
+  }
+  style_gaps(g->ref, 0, &xgap, &ygap);
+  for (int c = 0; c < ncol; c++) sum += hub[c] + leaf[c] + 2 * xgap;
+  free(hub), free(leaf);
+  return ncol ? sum / ncol / (hh + lh + 2 * ygap) : 0;
+}
+
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
   for (int v = 0; v < n; v++) up[v] = v;
@@ -561,10 +586,17 @@ static void stack_components(grid *g, const int *h, int nh) {
   int nstart = 0, nparts = 0;
   int *xoff = bg_xcalloc((size_t)n + 1, sizeof(int)), *width = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *height = bg_xcalloc((size_t)n + 1, sizeof(int)), *part = bg_xcalloc((size_t)n + 1, sizeof(int));
+  /* a large forest: bands as wide as a drawing of all its parts about 1.4
+   * times as wide as high, in points (its columns hold long labels: 5.5 to
+   * 1 before; each part folded to that shape on its own packed badly) */
+  double pitch = g->own_ranks ? column_pitch(g, h, nh) : 0, cells = 0;
+  for (int v = 0; pitch > 0 && v < n; v++)
+    if (find(up, v) == v && lo[v] <= hi[v]) cells += (double)ncol[v] * (hi[v] - lo[v] + 1 + sep);
   for (int v = 0; v < n; v++) {
     int c = find(up, v);
     if (lo[c] > hi[c] || base[c] < 0) continue;
     int span = hi[c] - lo[c] + 1, wrap = (int)ceil(sqrt((double)ncol[c] * (2 * span + 2)));
+    if (pitch > 0) wrap = (int)ceil(sqrt(1.4 * cells / pitch));
     if (nband[c] < 0) wrap = ncol[c] + 16;
     else if (wrap < 16) wrap = 16;
     boff[c] = nstart;
@@ -1271,13 +1303,28 @@ static double layer_band(const grid *g) {
   return most ? d->st.layer_offset + fmax(3, 2.5 * d->st.layer_width) * (most - 1) : 0;
 }
 
+/* The grid lines (columns or rows, centres c[0..n) in points) whose boxes
+ * can meet [a, b]: a box in line k lies between the midpoints to its
+ * neighbours; one more each side for a one-port pulled towards its hub. */
+static void lines_meeting(const double *c, int n, double a, double b, int *lo, int *hi) {
+  int l = 0, h = n; /* the first line whose upper midpoint reaches a */
+  while (l < h) {
+    int mid = (l + h) / 2;
+    if (mid + 1 < n && (c[mid] + c[mid + 1]) / 2 < a) l = mid + 1;
+    else h = mid;
+  }
+  *lo = l > 0 ? l - 1 : 0;
+  for (h = l; h + 1 < n && (c[h] + c[h + 1]) / 2 <= b; h++) {}
+  *hi = h + 1 < n ? h + 1 : n - 1;
+}
+
 /* One-ports that a ring's row or column pushed away from their hub (a bus's
  * inertia level with its ring's top: the ring's cell sets its whole row's
  * height and column's width): each in a cell next to a hub in a row or
  * column that holds a ring (a side or a diagonal one) moves back to a gap
  * from its hub along the ring's way when its box there meets no other box
  * or ring. Only there: elsewhere a row's one-ports stay in line. */
-static void pull_in(grid *g, double xgap, double ygap) {
+static void pull_in(grid *g, double xgap, double ygap, const double *cx, const double *cy, int x0, int x1, int y0, int y1) {
   bg_diagram_layout *d = g->d;
   int nr = 0, *rings = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
   for (int v = 0; v < g->n; v++)
@@ -1290,13 +1337,30 @@ static void pull_in(grid *g, double xgap, double ygap) {
     if (!pushed) continue;
     double x = dx ? d->nx[v] + dx * (d->nw[v] / 2 + xgap + d->nw[w] / 2) : d->nx[w];
     double y = dy ? d->ny[v] + dy * (d->nh[v] / 2 + ygap + d->nh[w] / 2) : d->ny[w];
-    int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5;
+    /* back towards its hub only: where the columns are narrow (a large
+     * forest's, no ring's width in them) a gap from the hub lies beyond
+     * the cell, and whether the box fits there depends on the style */
+    int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5 && fabs(x - d->nx[v]) <= fabs(d->nx[w] - d->nx[v]) + 0.01 &&
+                fabs(y - d->ny[v]) <= fabs(d->ny[w] - d->ny[v]) + 0.01;
     double room = fmin(xgap, ygap) / 2; /* to any other box: half a gap */
-    for (int u = 0; clear && u < g->n; u++) {
-      if (u == w || !own_node(d, u)) continue;
+    /* the boxes it could meet: the rings (a ring's one-ports inside its
+     * box), and the nodes of the cells near the place (every node was
+     * tried: quadratic in a large forest with rings) */
+    for (int k = 0; clear && k < nr; k++) {
+      int u = rings[k];
       double hw = fmax(d->nw[u], g->ring_w[u]) / 2, hh = fmax(d->nh[u], g->ring_h[u]) / 2;
       clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + hw + room || fabs(y - d->ny[u]) >= d->nh[w] / 2 + hh + room;
     }
+    int ca, cb, ra, rb;
+    lines_meeting(cx, x1 - x0 + 1, x - d->nw[w] / 2 - room, x + d->nw[w] / 2 + room, &ca, &cb);
+    lines_meeting(cy, y1 - y0 + 1, y - d->nh[w] / 2 - room, y + d->nh[w] / 2 + room, &ra, &rb);
+    for (int i = ca; clear && i <= cb; i++)
+      for (int j = ra; clear && j <= rb; j++) {
+        int u = g->val[cell_slot(g, cell_key(i + x0, j + y0))];
+        if (u < 0 || u == w || !own_node(d, u) || g->ring_w[u] > 0) continue;
+        clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + d->nw[u] / 2 + room ||
+                fabs(y - d->ny[u]) >= d->nh[w] / 2 + d->nh[u] / 2 + room;
+      }
     if (clear) d->nx[w] = x, d->ny[w] = y;
   }
   free(rings);
@@ -1321,7 +1385,7 @@ static void to_points(grid *g) {
     if (own_node(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
   for (int v = 0; g->orbit && v < g->n; v++)
     if (g->orbit[v] >= 0) d->nx[v] += g->ring_x[v], d->ny[v] += g->ring_y[v];
-  if (g->orbit) pull_in(g, xgap, ygap);
+  if (g->orbit) pull_in(g, xgap, ygap, cx, cy, x0, x1, y0, y1);
   for (int v = 0; v < g->n; v++) /* a field's other ports where their field is (boxes: bg_parts_spread) */
     if (!own_node(d, v)) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];
   bg_layout *l = &d->lay;
@@ -1359,8 +1423,17 @@ static void to_points(grid *g) {
  * towards holds no node (its own cell held nothing else). */
 static void diagonal_leaves(grid *g) {
   bg_diagram_layout *d = g->d;
-  double lw = d->st.line_width, clear = 4.5 * lw + 3, least = 2.5 * 7 * lw + 3;
   if (layer_band(g) > 0) return; /* path and loop lines beside every bond: the longer slant keeps their room */
+  /* whether a one-port moves is decided in the reference style (its boxes,
+   * gaps and line width), as the cells were: decided in each style's own
+   * sizes, one moved in print and its neighbour in the next band did not,
+   * and their order changed with the style (a large forest's columns) */
+  int x0, x1, y0, y1;
+  range(g, g->gx, &x0, &x1);
+  range(g, g->gy, &y0, &y1);
+  double xgap, ygap, lw = g->ref->line_width, clear = 4.5 * lw + 3, least = 2.5 * 7 * lw + 3;
+  style_gaps(g->ref, 0, &xgap, &ygap);
+  double *rx = line_centres(g, g->gx, g->rw, x0, x1, xgap), *ry = line_centres(g, g->gy, g->rh, y0, y1, ygap);
   for (int e = 0; e < g->ne && e < d->m->nbond; e++) {
     int v = g->et[e], w = g->eh[e];
     if (!g->hub[v]) v = g->eh[e], w = g->et[e];
@@ -1368,21 +1441,87 @@ static void diagonal_leaves(grid *g) {
     if (abs(g->gx[w] - g->gx[v]) != 1 || abs(g->gy[w] - g->gy[v]) != 1) continue;
     int q = 2 * (g->gy[w] > g->gy[v]) + (g->gx[w] > g->gx[v]);
     if (barb_quadrants(g, v) & (1 << q)) continue; /* nearer the barb, its stroke would touch it */
-    double dx = d->nx[w] - d->nx[v], dy = d->ny[w] - d->ny[v], ax = fabs(dx), ay = fabs(dy);
-    double half_along = ax > ay ? d->nw[w] / 2 : d->nh[w] / 2;
+    double ax = fabs(rx[g->gx[w] - x0] - rx[g->gx[v] - x0]), ay = fabs(ry[g->gy[w] - y0] - ry[g->gy[v] - y0]);
+    double half_along = ax > ay ? g->rw[w] / 2 : g->rh[w] / 2;
     double t = fmin(ax, ay); /* the new offset along the longer axis */
     /* the bond enters the label's box at its nearer edge; the junction's end
      * circle at 45 degrees is about 7.3 line widths (diagram_geom.c) */
-    double body = (t - fmin(d->nw[w], d->nh[w]) / 2) / BG_SQRT1_2 - 7.5 * lw;
+    double body = (t - fmin(g->rw[w], g->rh[w]) / 2) / BG_SQRT1_2 - 7.5 * lw;
     if (t - half_along < clear || body < least) continue;
     /* the cell it moves towards (beside the hub) holds a bond's run in a
      * grid; a label there (series_conductances' R : Ra above its junction)
      * would be crowded */
-    int tx = ax > ay ? g->gx[v] : g->gx[w], ty = ax > ay ? g->gy[w] : g->gy[v];
+    int along_x = ax > ay, tx = along_x ? g->gx[v] : g->gx[w], ty = along_x ? g->gy[w] : g->gy[v];
     if (g->val[cell_slot(g, cell_key(tx, ty))] >= 0) continue;
-    if (ax > ay) d->nx[w] = d->nx[v] + (dx > 0 ? t : -t);
-    else d->ny[w] = d->ny[v] + (dy > 0 ? t : -t);
+    double dx = d->nx[w] - d->nx[v], dy = d->ny[w] - d->ny[v], own = fmin(fabs(dx), fabs(dy));
+    if (along_x && fabs(dx) > own) d->nx[w] = d->nx[v] + (dx > 0 ? own : -own);
+    else if (!along_x && fabs(dy) > own) d->ny[w] = d->ny[v] + (dy > 0 ? own : -own);
   }
+  free(rx), free(ry);
+}
+
+/* ---------------------------------------------------------------- ranks without dot */
+/* Whether the layout graph (the grid pass's edges) is a forest: no cycle,
+ * no two edges between the same nodes. */
+static int is_forest(const grid *g) {
+  int *up = bg_xcalloc((size_t)g->n + 1, sizeof(int)), forest = 1;
+  for (int v = 0; v < g->n; v++) up[v] = v;
+  for (int e = 0; e < g->ne && forest; e++) {
+    if (g->et[e] == g->eh[e]) continue; /* inside a box */
+    int a = find(up, g->et[e]), b = find(up, g->eh[e]);
+    if (a == b) forest = 0;
+    else up[a] = b;
+  }
+  free(up);
+  return forest;
+}
+
+int bg_grid_is_forest(bg_diagram_layout *d) {
+  grid g;
+  memset(&g, 0, sizeof g);
+  g.d = d, g.n = d->nnode;
+  build_edges(&g);
+  int forest = is_forest(&g);
+  free(g.et), free(g.eh), free(g.adr), free(g.adj), free(g.deg);
+  return forest;
+}
+
+int bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth) {
+  grid g;
+  memset(&g, 0, sizeof g);
+  g.d = d, g.n = d->nnode;
+  build_edges(&g);
+  int forest = is_forest(&g);
+  if (forest) {
+    /* hubs in depth-first order from each root (depth 0), so a subtree's
+     * hubs are consecutive and siblings keep the order of their bonds;
+     * one-ports level with their hub, one rank on */
+    int *stack = bg_xcalloc(2 * (size_t)g.ne + (size_t)g.n + 1, sizeof(int)), *seen = bg_xcalloc((size_t)g.n + 1, sizeof(int));
+    int next = 0;
+    for (int s = 0; s < g.n; s++) {
+      if (seen[s] || depth[s] != 0) continue;
+      int top = 0;
+      stack[top++] = s, seen[s] = 1;
+      while (top > 0) {
+        int v = stack[--top];
+        d->nx[v] = depth[v], d->ny[v] = next++;
+        for (int k = g.adr[v + 1] - 1; k >= g.adr[v]; k--) { /* pushed last first: popped in bond order */
+          int w = other(&g, g.adj[k], v);
+          if (!seen[w]) seen[w] = 1, stack[top++] = w;
+        }
+      }
+    }
+    for (int v = 0; v < g.n; v++) /* nodes inside a box: drawn by it */
+      if (!seen[v]) d->nx[v] = depth[v], d->ny[v] = next++;
+    for (int v = 0; v < g.n; v++) /* a one-port beside its hub */
+      if (g.deg[v] == 1) {
+        int u = other(&g, g.adj[g.adr[v]], v);
+        if (g.deg[u] > 1) d->ny[v] = d->ny[u];
+      }
+    free(stack), free(seen);
+  }
+  free(g.et), free(g.eh), free(g.adr), free(g.adj), free(g.deg);
+  return forest;
 }
 
 /* ---------------------------------------------------------------- the pass */
@@ -1407,11 +1546,11 @@ static void grid_free(grid *g) {
   free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h);
 }
 
-void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh) {
+void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh, int own_ranks) {
   if (d->nnode == 0) return; /* an empty model: nothing to place, and no line range */
   grid g;
   grid_alloc(&g, d);
-  g.ref = ref, g.rw = rw, g.rh = rh;
+  g.ref = ref, g.rw = rw, g.rh = rh, g.own_ranks = own_ranks;
   classify(&g);
   g.signalled = signal_ends(&g);
   for (int v = 0; v < g.n; v++) g.placed[v] = !own_node(d, v); /* inside a box, a field's other port */

@@ -452,5 +452,6 @@ __attribute__((unused)) static void fm_make_grid(bg_strbuf *b, int n) { fm_grid(
 __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)n, fm_nested(b); }
 __attribute__((unused)) static void fm_make_branchy(bg_strbuf *b, int n) { fm_branchy(b, n, 7u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_stages(bg_strbuf *b, int n) { fm_stages(b, n); }
+__attribute__((unused)) static void fm_make_randtree(bg_strbuf *b, int n) { fm_randtree(b, n, 7919u + (unsigned)n); }
 
 #endif

@@ -607,7 +607,14 @@ static void test_rows_ring(void) {
 
 static void test_engine_choice(void) {
   char *big = mass_chain(501), *small = mass_chain(40); /* 2005 and 161 nodes */
-  STR_EQ(engine_of(big, NULL), "rows");
+  /* a forest: the grid pass's tree drawing (issue 31); asked for, rows */
+  STR_EQ(engine_of(big, NULL), "tree");
+  STR_EQ(engine_of(big, "rows"), "rows");
+  /* a cycle (the chain closed by a bond back to its start): rows */
+  char *ring = strdup(big);
+  OK(bg_t_replace(&ring, "bond F -> v1\n", "bond F -> v1\nbond s501 -> v1\n") == 0);
+  STR_EQ(engine_of(ring, NULL), "rows");
+  free(ring);
   STR_EQ(engine_of(small, NULL), "dot");
   STR_EQ(engine_of(small, "rows"), "rows");
   OK(bg_t_replace(&small, "model big\n", "model big\nlayout engine = rows\n") == 0);
