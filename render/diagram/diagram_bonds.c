@@ -75,9 +75,10 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
 
 /* Places text beside bond b, on the barb side (side 1) or opposite (-1),
  * 3.5 pt clear of the line: at the middle if that is free, else a little
- * along the bond (last 84 % along: a four-digit number beside a one-port's
- * diagonal bond, in the wedge it makes with an axis bond, is clear of that
- * bond only near the one-port) or 4, 8, 12 pt further out; the first place that touches
+ * along the bond or 4, 8, 12 pt further out, and last 84 % along (a
+ * four-digit number beside a one-port's diagonal bond, in the wedge it
+ * makes with an axis bond, is clear of that bond only near the one-port);
+ * the first place that touches
  * nothing and whose nearest bond is b, else the one touching least (a
  * place nearer another bond costs as much as a line crossed, so the text
  * never reads as another bond's when there is room). With flip (a bond
@@ -106,7 +107,10 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
       bg_vec n = bg_vscale(bg_barb_side_at(d->L, dir), f ? -side : side);
       double extent = fabs(n.x) * w / 2 + fabs(n.y) * h / 2, gap = layers_beside(d, b, dir, n);
       for (int j = 0; j < NOUT; j++) {
-        int i = (f * NOUT + j) * NT + k;
+        /* per side: the places along the bond at each distance out, then
+         * the last one along (84 %) at each: the far place only when no
+         * other is clear */
+        int i = f * NOUT * NT + (k < NT - 1 ? j * (NT - 1) + k : NOUT * (NT - 1) + j);
         cand[i] = bg_vadd(at, bg_vscale(n, gap + extent + 4 * j));
         reach[i] = gap + extent + 4 * j + 1;
       }
@@ -114,19 +118,20 @@ static void text_beside(bg_diagram *d, const char *markup, int b, int side, int 
   }
   int best = 0, best_cost = -1;
   double best_margin = 0;
-  /* cost: 2 a line or box touched (10 a box), 1 flipped, 2 nearer another
-   * bond, 1 less than NEARER nearer its own than another; of equal costs
-   * the first, or while that one is less than NEARER nearer its own, the
-   * one nearest its own by the most */
-  for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && (best_cost != 1 || best_margin < NEARER); k++) {
-    int flip = k >= NOUT * NT; /* flipped: 1 more */
-    int limit = best_cost < 0 ? INT_MAX : (best_cost - flip) / 2 + 1; /* at it, cost > best_cost */
-    int cost = 2 * bg_place_score_below(d, cand[k], w + 1, h, limit) + flip;
+  /* cost: 4 a line or box touched (20 a box), 2 flipped, 3 the far place
+   * along the bond (after a flipped middle one: a number near its bond's
+   * end reads less well), 4 nearer another bond, 2 less than NEARER nearer
+   * its own than another; of equal costs the first, or while that one is
+   * less than NEARER nearer its own, the one nearest its own by the most */
+  for (int k = 0; k < (flip ? 2 : 1) * NOUT * NT && best_cost != 0 && (best_cost != 2 || best_margin < NEARER); k++) {
+    int flipped = k >= NOUT * NT, far = k - flipped * NOUT * NT >= NOUT * (NT - 1), extra = 2 * flipped + 3 * far;
+    int limit = best_cost < 0 ? INT_MAX : (best_cost - extra) / 4 + 1; /* at it, cost > best_cost */
+    int cost = 4 * bg_place_score_below(d, cand[k], w + 1, h, limit) + extra;
     if (best_cost >= 0 && cost > best_cost) continue;
     double margin;
     int nearest = bg_place_nearest_bond(d, cand[k], reach[k], NEARER, &margin);
     if (nearest != b) margin = -1;
-    cost += nearest != b ? 2 : margin < NEARER ? 1 : 0;
+    cost += nearest != b ? 4 : margin < NEARER ? 2 : 0;
     if (best_cost < 0 || cost < best_cost || (cost == best_cost && best_margin < NEARER && margin > best_margin))
       best = k, best_cost = cost, best_margin = margin;
   }
