@@ -292,13 +292,13 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (rc == 0) {
     d->nx = d->lay.x, d->ny = d->lay.y;
     d->splx = d->lay.splx, d->sply = d->lay.sply;
-    int own_ranks = tree && bg_grid_tree_ranks(d, depth);
-    if (own_ranks) {
+    if (tree) {
+      bg_grid_tree_ranks(d, depth);
       grid = 1, rows = 0;
       bg_logf(d->o.log, BG_LOG_PROGRESS, "a forest: drawn as a tree on the grid instead of rows");
     }
     if (rows) scale_rows(d, gw, gh);
-    if (grid) bg_grid_place(d, &ref, gw, gh, own_ranks);
+    if (grid) bg_grid_place(d, &ref, gw, gh, tree);
     bg_parts_spread(d);
   }
   if (refsized) free(gw), free(gh);

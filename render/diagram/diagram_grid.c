@@ -1476,52 +1476,52 @@ static int is_forest(const grid *g) {
   return forest;
 }
 
+/* The grid pass's graph of d alone (bg_grid_is_forest, bg_grid_tree_ranks). */
+static void graph_only(grid *g, bg_diagram_layout *d) {
+  memset(g, 0, sizeof *g);
+  g->d = d, g->n = d->nnode;
+  build_edges(g);
+}
+
+static void graph_free(grid *g) { free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg); }
+
 int bg_grid_is_forest(bg_diagram_layout *d) {
   grid g;
-  memset(&g, 0, sizeof g);
-  g.d = d, g.n = d->nnode;
-  build_edges(&g);
+  graph_only(&g, d);
   int forest = is_forest(&g);
-  free(g.et), free(g.eh), free(g.adr), free(g.adj), free(g.deg);
+  graph_free(&g);
   return forest;
 }
 
-int bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth) {
+void bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth) {
   grid g;
-  memset(&g, 0, sizeof g);
-  g.d = d, g.n = d->nnode;
-  build_edges(&g);
-  int forest = is_forest(&g);
-  if (forest) {
-    /* hubs in depth-first order from each root (depth 0), so a subtree's
-     * hubs are consecutive and siblings keep the order of their bonds;
-     * one-ports level with their hub, one rank on */
-    int *stack = bg_xcalloc(2 * (size_t)g.ne + (size_t)g.n + 1, sizeof(int)), *seen = bg_xcalloc((size_t)g.n + 1, sizeof(int));
-    int next = 0;
-    for (int s = 0; s < g.n; s++) {
-      if (seen[s] || depth[s] != 0) continue;
-      int top = 0;
-      stack[top++] = s, seen[s] = 1;
-      while (top > 0) {
-        int v = stack[--top];
-        d->nx[v] = depth[v], d->ny[v] = next++;
-        for (int k = g.adr[v + 1] - 1; k >= g.adr[v]; k--) { /* pushed last first: popped in bond order */
-          int w = other(&g, g.adj[k], v);
-          if (!seen[w]) seen[w] = 1, stack[top++] = w;
-        }
+  graph_only(&g, d);
+  /* hubs in depth-first order from each root (depth 0), so a subtree's
+   * hubs are consecutive and siblings keep the order of their bonds;
+   * one-ports level with their hub, one rank on */
+  int *stack = bg_xcalloc((size_t)g.n + 1, sizeof(int)), *seen = bg_xcalloc((size_t)g.n + 1, sizeof(int)), next = 0;
+  for (int s = 0; s < g.n; s++) {
+    if (seen[s] || depth[s] != 0) continue;
+    int top = 0;
+    stack[top++] = s, seen[s] = 1; /* each node pushed once: n at most */
+    while (top > 0) {
+      int v = stack[--top];
+      d->nx[v] = depth[v], d->ny[v] = next++;
+      for (int k = g.adr[v + 1] - 1; k >= g.adr[v]; k--) { /* pushed last first: popped in bond order */
+        int w = other(&g, g.adj[k], v);
+        if (!seen[w]) seen[w] = 1, stack[top++] = w;
       }
     }
-    for (int v = 0; v < g.n; v++) /* nodes inside a box: drawn by it */
-      if (!seen[v]) d->nx[v] = depth[v], d->ny[v] = next++;
-    for (int v = 0; v < g.n; v++) /* a one-port beside its hub */
-      if (g.deg[v] == 1) {
-        int u = other(&g, g.adj[g.adr[v]], v);
-        if (g.deg[u] > 1) d->ny[v] = d->ny[u];
-      }
-    free(stack), free(seen);
   }
-  free(g.et), free(g.eh), free(g.adr), free(g.adj), free(g.deg);
-  return forest;
+  for (int v = 0; v < g.n; v++) /* nodes inside a box: drawn by it */
+    if (!seen[v]) d->nx[v] = depth[v], d->ny[v] = next++;
+  for (int v = 0; v < g.n; v++) /* a one-port beside its hub */
+    if (g.deg[v] == 1) {
+      int u = other(&g, g.adj[g.adr[v]], v);
+      if (g.deg[u] > 1) d->ny[v] = d->ny[u];
+    }
+  free(stack), free(seen);
+  graph_free(&g);
 }
 
 /* ---------------------------------------------------------------- the pass */
