@@ -238,7 +238,6 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   /* rows likewise lays out the default style's boxes, and the result is
    * stretched to fit the style's own (scale_rows) */
   int is_rows = !strcmp(engine, "rows"), rows = is_rows && !any_pinned, refsized = grid || rows;
-  int *depth = NULL;
   bg_style ref;
   bg_style_default(&ref);
   const bg_style *lst = refsized ? &ref : &d->st;
@@ -268,13 +267,12 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     in.ncluster = m->ninst, in.cluster = cluster, in.cluster_parent = m->inst_parent;
     in.cluster_label_h = label_h;
   }
-  if (tree) depth = bg_layout_depths(&in, NULL);
   char err[256];
   if (d->rep && d->ncollapsed) { /* both leave nodes out of the layout: not combined yet */
     bg_diag_error(dg, (bg_srcloc){0}, "--collapse cannot draw a model with multiport fields yet; "
                   "draw it without --collapse");
     free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
-    free(cluster), free(label_h), free(link_a), free(link_b), free(depth);
+    free(cluster), free(label_h), free(link_a), free(link_b);
     if (refsized) free(gw), free(gh);
     return -1;
   }
@@ -287,13 +285,13 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     bg_fields_expand(d, fields);
   }
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
-  free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
+  free(tail), free(head), free(pinned), free(weight), free(px), free(py);
   free(cluster), free(label_h), free(link_a), free(link_b);
   if (rc == 0) {
     d->nx = d->lay.x, d->ny = d->lay.y;
     d->splx = d->lay.splx, d->sply = d->lay.sply;
     if (tree) {
-      bg_grid_tree_ranks(d, depth);
+      bg_grid_tree_ranks(d, root);
       grid = 1, rows = 0;
       bg_logf(d->o.log, BG_LOG_PROGRESS, "a forest: drawn as a tree on the grid instead of rows");
     }
@@ -302,7 +300,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     bg_parts_spread(d);
   }
   if (refsized) free(gw), free(gh);
-  free(depth);
+  free(root);
   return rc ? -1 : 0;
 }
 

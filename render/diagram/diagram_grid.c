@@ -1493,13 +1493,30 @@ int bg_grid_is_forest(bg_diagram_layout *d) {
   return forest;
 }
 
-void bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth) {
+void bg_grid_tree_ranks(bg_diagram_layout *d, const unsigned char *root) {
   grid g;
   graph_only(&g, d);
+  /* the breadth-first depth over this graph (a field one node, as the grid
+   * pass sees it: over the layout's edges a field's ports are apart, and a
+   * chain through fields broke into parts whose ranks each started again),
+   * from the roots, then from the first node of a part without one */
+  int *depth = bg_xcalloc((size_t)g.n + 1, sizeof(int)), *queue = bg_xcalloc((size_t)g.n + 1, sizeof(int));
+  int qh = 0, qt = 0;
+  for (int v = 0; v < g.n; v++) depth[v] = -1;
+  for (int v = 0; v < g.n; v++)
+    if (root[v] && depth[drawn_by(d, v)] < 0) depth[drawn_by(d, v)] = 0, queue[qt++] = drawn_by(d, v);
+  for (int s = 0; s <= g.n; s++) {
+    for (; qh < qt; qh++)
+      for (int k = g.adr[queue[qh]]; k < g.adr[queue[qh] + 1]; k++) {
+        int w = other(&g, g.adj[k], queue[qh]);
+        if (depth[w] < 0) depth[w] = depth[queue[qh]] + 1, queue[qt++] = w;
+      }
+    if (s < g.n && depth[s] < 0 && own_node(d, s)) depth[s] = 0, queue[qt++] = s;
+  }
   /* hubs in depth-first order from each root (depth 0), so a subtree's
    * hubs are consecutive and siblings keep the order of their bonds;
    * one-ports level with their hub, one rank on */
-  int *stack = bg_xcalloc((size_t)g.n + 1, sizeof(int)), *seen = bg_xcalloc((size_t)g.n + 1, sizeof(int)), next = 0;
+  int *stack = queue, *seen = bg_xcalloc((size_t)g.n + 1, sizeof(int)), next = 0;
   for (int s = 0; s < g.n; s++) {
     if (seen[s] || depth[s] != 0) continue;
     int top = 0;
@@ -1513,14 +1530,14 @@ void bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth) {
       }
     }
   }
-  for (int v = 0; v < g.n; v++) /* nodes inside a box: drawn by it */
-    if (!seen[v]) d->nx[v] = depth[v], d->ny[v] = next++;
+  for (int v = 0; v < g.n; v++) /* nodes inside a box or a field: drawn by it */
+    if (!seen[v]) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];
   for (int v = 0; v < g.n; v++) /* a one-port beside its hub */
     if (g.deg[v] == 1) {
       int u = other(&g, g.adj[g.adr[v]], v);
       if (g.deg[u] > 1) d->ny[v] = d->ny[u];
     }
-  free(stack), free(seen);
+  free(depth), free(queue), free(seen);
   graph_free(&g);
 }
 

@@ -176,9 +176,9 @@ void bg_geom_longest_leg(const bg_diagram_layout *d, int b, bg_vec *p, bg_vec *q
  * the ranks are bg_grid_tree_ranks', not dot's (a large forest). */
 void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh, int own_ranks);
 /* Ranks and orders for the grid pass without dot (a forest too large for
- * dot, bg_grid_is_forest): d->nx the breadth-first depth, d->ny a
- * depth-first order. */
-void bg_grid_tree_ranks(bg_diagram_layout *d, const int *depth);
+ * dot, bg_grid_is_forest): d->nx the breadth-first depth from the roots
+ * (root[v]: a part's first source), d->ny a depth-first order. */
+void bg_grid_tree_ranks(bg_diagram_layout *d, const unsigned char *root);
 /* Whether the grid pass's graph of d (its bonds between drawn nodes) is a
  * forest: no cycle, no two bonds between the same nodes. */
 int bg_grid_is_forest(bg_diagram_layout *d);

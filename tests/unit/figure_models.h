@@ -453,5 +453,21 @@ __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)
 __attribute__((unused)) static void fm_make_branchy(bg_strbuf *b, int n) { fm_branchy(b, n, 7u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_stages(bg_strbuf *b, int n) { fm_stages(b, n); }
 __attribute__((unused)) static void fm_make_randtree(bg_strbuf *b, int n) { fm_randtree(b, n, 7919u + (unsigned)n); }
+/* A chain of n moving-plate transducers (a two-port C field between an
+ * electrical 1-junction with a series R and a mechanical one with a mass
+ * and a spring), each mechanical junction feeding the next electrical
+ * one: a forest through fields, over 2 000 nodes from 300 sections. */
+__attribute__((unused)) static void fm_fieldchain(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model fieldchain%d\nSe U = 1\n", n);
+  for (int i = 0; i < n; i++)
+    bg_sb_printf(b, "1 je%d\nR Rs%d = 1\nC K%d(el, mech) : energy = el.q^2 * mech.q / 2  [q0 = (0, 1)]\n"
+                 "1 jm%d\nI mass%d = 1\nC spring%d = 0.25\n", i, i, i, i, i, i);
+  bg_sb_puts(b, "bond U -> je0\n");
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "bond je%d -> Rs%d\nbond je%d -> K%d.el\nbond jm%d -> K%d.mech\n", i, i, i, i, i, i);
+    bg_sb_printf(b, "bond jm%d -> mass%d\nbond jm%d -> spring%d\n", i, i, i, i);
+    if (i + 1 < n) bg_sb_printf(b, "bond jm%d -> je%d\n", i, i + 1);
+  }
+}
 
 #endif

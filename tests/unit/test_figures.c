@@ -712,6 +712,32 @@ static void test_large_forests(void) {
                 tree.false_tees, tree.bond_overlaps, tree.touching);
     bg_sb_free(&src);
   }
+  /* a chain through two-port fields: ranked over the graph the grid pass
+   * sees (a field one node); ranked over the layout's edges, where a
+   * field's ports are apart, it broke into parts each ranked from 0 and
+   * was drawn as one staircase 144 439 x 58 139 pt with 224 slanted bonds */
+  bg_strbuf src = {0};
+  fm_fieldchain(&src, 450);
+  fx f;
+  int rc = fm_load(&f, "fieldchain450", bg_sb_str(&src));
+  OK(rc == 0);
+  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
+  OK(rc != 0 || d != NULL);
+  if (d) {
+    fc_stats st = {0};
+    fc_count(bg_diagram_scene(d), &st);
+    double w, h;
+    bg_diagram_size(d, &w, &h);
+    STR_EQ(bg_diagram_engine(d), "tree");
+    BG_T_REPORT(st.bonds == 2700 && st.slanted == 0 && st.crossings == 0 && st.nodes_overlap == 0,
+                "fieldchain450: %d bonds, %d slanted, %d crossings, %d nodes on nodes", st.bonds, st.slanted,
+                st.crossings, st.nodes_overlap);
+    BG_T_REPORT(w < 3 * h && h < 3 * w, "fieldchain450: page %.0f x %.0f pt", w, h);
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+  bg_sb_free(&src);
 }
 
 /* Issue 31, held-out reaction networks (fm_randnet: random species pairs
