@@ -97,7 +97,7 @@ static const char *choose_engine(const bg_diagram_layout *d, int *instead_of_dot
     *instead_of_dot = 1;
     /* dot and sfdp need 10-30 s at 10 000 nodes, rows (linear) a few ms
      * (docs/drawing.md) */
-    bg_logf(d->o.log, BG_LOG_PROGRESS, "%d nodes: laying out with rows instead of dot", d->nnode);
+    bg_logf(d->o.log, BG_LOG_PROGRESS, "%d nodes: too many for dot", d->nnode);
     return "rows";
   }
   return e;
@@ -277,8 +277,11 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     return -1;
   }
   int rc = 0;
-  if (tree && bg_grid_is_forest(d)) forest_layout(&d->lay, &in);
-  else {
+  if (tree && bg_grid_is_forest(d)) {
+    forest_layout(&d->lay, &in);
+    bg_logf(d->o.log, BG_LOG_PROGRESS, "a forest: drawn as a tree on the grid");
+  } else {
+    if (instead_of_dot) bg_logf(d->o.log, BG_LOG_PROGRESS, "laying out with rows instead");
     tree = 0;
     bg_fields_lay *fields = bg_fields_compact(d, &in);
     rc = bg_parts_layout(d, &in, &d->lay, err, sizeof err);
@@ -290,11 +293,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (rc == 0) {
     d->nx = d->lay.x, d->ny = d->lay.y;
     d->splx = d->lay.splx, d->sply = d->lay.sply;
-    if (tree) {
-      bg_grid_tree_ranks(d, root);
-      grid = 1, rows = 0;
-      bg_logf(d->o.log, BG_LOG_PROGRESS, "a forest: drawn as a tree on the grid instead of rows");
-    }
+    if (tree) bg_grid_tree_ranks(d, root), grid = 1, rows = 0;
     if (rows) scale_rows(d, gw, gh);
     if (grid) bg_grid_place(d, &ref, gw, gh, tree);
     bg_parts_spread(d);
