@@ -415,6 +415,29 @@ static void check_limits(const char *set, fc_stats tot[3][2], const fc_stats lim
     }
 }
 
+/* Every count of scene s of model m: fc_count, one element's lines
+ * crossing, crossings a short detour avoids, and the forced diagonals,
+ * taken out of slanted. */
+static void count_scene(const bg_model *m, const bg_scene *s, fc_stats *st) {
+  fc_count(s, st);
+  st->adjacent = fc_adjacent(m, s);
+  st->avoidable = fc_avoidable(m, s);
+  st->diagonals = fc_forced_diagonals(m, s);
+  st->slanted -= st->diagonals;
+}
+
+/* Model `text` compiled into f and drawn in the default style and layers
+ * with `layout` (NULL: the one it gets); NULL when either fails (reported).
+ * The caller frees both. */
+static bg_diagram *default_drawing(fx *f, const char *name, const char *text, const char *layout) {
+  int rc = fm_load(f, name, text);
+  BG_T_REPORT(rc == 0, "%s compiles", name);
+  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
+  bg_diagram *d = rc == 0 ? bg_diagram_build(f->m, &f->a, &o, &f->dg) : NULL;
+  OK(rc != 0 || d != NULL);
+  return d;
+}
+
 /* One model in every style and layer set, added to tot; the arrangement
  * of each style compared with the default style's (same layers). */
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
@@ -429,12 +452,8 @@ static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbo
       char what[128];
       snprintf(what, sizeof what, "%s %s %s", name, styles[si], show_names[k]);
       if (fc_explain) printf("%s:\n", what);
-      fc_count(bg_diagram_scene(d), &st);
+      count_scene(f->m, bg_diagram_scene(d), &st);
       st.spine_bent = fc_spine_bent(f->m, bg_diagram_scene(d));
-      st.adjacent = fc_adjacent(f->m, bg_diagram_scene(d));
-      st.avoidable = fc_avoidable(f->m, bg_diagram_scene(d));
-      st.diagonals = fc_forced_diagonals(f->m, bg_diagram_scene(d));
-      st.slanted -= st.diagonals;
       if (first) st.arrangement = fc_arrangement(bg_diagram_scene(first), bg_diagram_scene(d));
       fc_add(&tot[si][k], &st);
       if (verbose) print_row(what, &st);
@@ -628,11 +647,7 @@ static void test_large_figures(void) {
     if (d) {
       fc_stats st = {0};
       if (fc_explain) printf("%s:\n", lm->name);
-      fc_count(bg_diagram_scene(d), &st);
-      st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
-      st.avoidable = fc_avoidable(f.m, bg_diagram_scene(d));
-      st.diagonals = fc_forced_diagonals(f.m, bg_diagram_scene(d));
-      st.slanted -= st.diagonals; /* as the generated models count them */
+      count_scene(f.m, bg_diagram_scene(d), &st);
       print_row(lm->name, &st);
       BG_T_REPORT(st.slanted <= large[g].slanted, "%s: %d slanted bonds (<= %d)", lm->name, st.slanted,
                   large[g].slanted);
@@ -671,6 +686,24 @@ static void test_large_figures(void) {
   }
 }
 
+/* Held-out model src (named name), drawn in the default style and layers
+ * with `layout` (NULL: the one it gets): its counts (count_scene) added to
+ * tot. */
+static void count_default(const char *name, const bg_strbuf *src, const char *layout, fc_stats *tot, int verbose) {
+  dump_model(name, src);
+  fx f;
+  bg_diagram *d = default_drawing(&f, name, bg_sb_str(src), layout);
+  if (d) {
+    fc_stats st = {0};
+    if (fc_explain) printf("%s:\n", name);
+    count_scene(f.m, bg_diagram_scene(d), &st);
+    if (verbose) print_row(name, &st);
+    fc_add(tot, &st);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+}
+
 /* Issue 31, a forest too large for dot: the grid pass's tree drawing
  * (bg_grid_tree_ranks) instead of the rows layout. Held-out random trees
  * of 1 000 and 1 400 junctions (over 2 000 nodes each), default style and
@@ -678,23 +711,6 @@ static void test_large_figures(void) {
  * 24 now; bonds slanted off the axes (forced diagonals apart) 526 / 753, 64
  * / 116; crossings of one element's lines 27 / 19, 2 / 11. Held to a
  * third of rows' or better. */
-static void large_forest_counts(const char *name, const char *text, const char *layout, fc_stats *st) {
-  fx f;
-  int rc = fm_load(&f, name, text);
-  OK(rc == 0);
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
-  bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-  OK(rc != 0 || d != NULL);
-  if (d) {
-    fc_count(bg_diagram_scene(d), st);
-    st->adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
-    st->diagonals = fc_forced_diagonals(f.m, bg_diagram_scene(d));
-    st->slanted -= st->diagonals;
-  }
-  bg_diagram_free(d);
-  fx_free(&f);
-}
-
 static void test_large_forests(void) {
   for (int n = 1000; n <= 1400; n += 400) {
     bg_strbuf src = {0};
@@ -702,8 +718,8 @@ static void test_large_forests(void) {
     snprintf(name, sizeof name, "randtree%d", n);
     fm_make_randtree(&src, n);
     fc_stats tree = {0}, rows = {0};
-    large_forest_counts(name, bg_sb_str(&src), NULL, &tree);
-    large_forest_counts(name, bg_sb_str(&src), "rows", &rows);
+    count_default(name, &src, NULL, &tree, 0);
+    count_default(name, &src, "rows", &rows, 0);
     BG_T_REPORT(tree.bonds == rows.bonds && tree.bonds > 2000, "%s: %d bonds drawn (rows %d)", name, tree.bonds, rows.bonds);
     BG_T_REPORT(3 * tree.crossings <= rows.crossings, "%s: %d crossings, rows %d", name, tree.crossings, rows.crossings);
     BG_T_REPORT(3 * tree.slanted <= rows.slanted, "%s: %d slanted, rows %d", name, tree.slanted, rows.slanted);
@@ -719,14 +735,11 @@ static void test_large_forests(void) {
   bg_strbuf src = {0};
   fm_fieldchain(&src, 450);
   fx f;
-  int rc = fm_load(&f, "fieldchain450", bg_sb_str(&src));
-  OK(rc == 0);
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-  bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-  OK(rc != 0 || d != NULL);
+  bg_diagram *d = default_drawing(&f, "fieldchain450", bg_sb_str(&src), NULL);
   if (d) {
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    count_scene(f.m, bg_diagram_scene(d), &st);
+    st.slanted += st.diagonals; /* every slanted bond, forced or not */
     double w, h;
     bg_diagram_size(d, &w, &h);
     STR_EQ(bg_diagram_engine(d), "tree");
@@ -749,28 +762,6 @@ static void test_large_forests(void) {
  * stroke touching another bond (5 before a route stopped taking a corner
  * another bond leaves by), no line through an element's label; one bond
  * drawn along another's line for 7 pt, as before (left). */
-/* Held-out model src (named name), drawn in the default style and layers:
- * its counts, one node's crossing lines among them, added to tot. */
-static void count_default(const char *name, const bg_strbuf *src, const char *layout, fc_stats *tot, int verbose) {
-  dump_model(name, src);
-  fx f;
-  int rc = fm_load(&f, name, bg_sb_str(src));
-  BG_T_REPORT(rc == 0, "held-out %s compiles", name);
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
-  bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-  OK(rc != 0 || d != NULL);
-  if (d) {
-    fc_stats st = {0};
-    if (fc_explain) printf("%s:\n", name);
-    fc_count(bg_diagram_scene(d), &st);
-    st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
-    if (verbose) print_row(name, &st);
-    fc_add(tot, &st);
-    bg_diagram_free(d);
-  }
-  fx_free(&f);
-}
-
 static void test_held_out_models(void) {
   int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
@@ -981,19 +972,10 @@ static void test_measure_files(void) {
     if (!opened) continue;
     const char *name = strrchr(p, '/') ? strrchr(p, '/') + 1 : p;
     fx f;
-    int rc = fm_load(&f, name, bg_sb_str(&src));
-    BG_T_REPORT(rc == 0, "%s compiles", p);
-    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles",
-                        .layout = getenv("BG_FIGURES_LAYOUT")};
-    bg_diagram *d = rc == 0 ? bg_diagram_build(f.m, &f.a, &o, &f.dg) : NULL;
-    OK(rc != 0 || d != NULL);
+    bg_diagram *d = default_drawing(&f, name, bg_sb_str(&src), getenv("BG_FIGURES_LAYOUT"));
     if (d) {
       fc_stats st = {0};
-      fc_count(bg_diagram_scene(d), &st);
-      st.adjacent = fc_adjacent(f.m, bg_diagram_scene(d));
-      st.avoidable = fc_avoidable(f.m, bg_diagram_scene(d));
-      st.diagonals = fc_forced_diagonals(f.m, bg_diagram_scene(d));
-      st.slanted -= st.diagonals; /* as the generated models count them */
+      count_scene(f.m, bg_diagram_scene(d), &st);
       print_row(name, &st);
       bg_diagram_free(d);
     }
