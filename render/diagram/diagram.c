@@ -132,28 +132,44 @@ static int layout_edges(const bg_diagram_layout *d, int **tail, int **head) {
   return n;
 }
 
+static int part_of(int *up, int v) {
+  while (up[v] != v) v = up[v] = up[up[v]]; /* halving: unions in file order leave paths as long as the chain */
+  return v;
+}
+
 /* The roots dot ranks from: the first source (in model order) of each
  * connected part, so a chain with sources at both ends (slider crank) runs
  * from one to the other instead of folding back from both. A part without a
- * source starts from its first node (layout.c). */
+ * source starts from its first node (layout.c). A ring's drawing splits
+ * where it starts and where its two ways meet, so a ring of instances whose
+ * first source is inside an instance starts at the first element of the
+ * model's own instead, when the part has one (a battery pack's cells in a
+ * ring with its load: started in the first cell, the first and the opposite
+ * cell's frames each spanned both rows, round the load; issue 31). */
 static void first_sources(const bg_diagram_layout *d, const int *tail, const int *head, int ne,
                           unsigned char *root) {
   const bg_model *m = d->m;
   int *up = bg_xcalloc((size_t)d->nnode + 1, sizeof *up);
-  unsigned char *has = bg_xcalloc((size_t)d->nnode + 1, 1);
-  for (int v = 0; v < d->nnode; v++) up[v] = v;
+  unsigned char *has = bg_xcalloc((size_t)d->nnode + 1, 1), *ring = bg_xcalloc((size_t)d->nnode + 1, 1);
+  int *own = bg_xcalloc((size_t)d->nnode + 1, sizeof *own), *first = bg_xcalloc((size_t)d->nnode + 1, sizeof *first);
+  for (int v = 0; v < d->nnode; v++) up[v] = v, own[v] = first[v] = -1;
   for (int i = 0; i < ne; i++) {
-    int a = tail[i], b = head[i];
-    while (up[a] != a) a = up[a] = up[up[a]];
-    while (up[b] != b) b = up[b] = up[up[b]];
-    up[a] = b;
+    int a = part_of(up, tail[i]), b = part_of(up, head[i]);
+    if (a == b && tail[i] != head[i] && i < m->nbond) ring[a] = 1; /* a bond closing a cycle */
+    if (a != b) up[a] = b, ring[b] |= ring[a];
   }
   for (int e = 0; e < m->nelem; e++) {
-    int c = e; /* halving here too: unions in file order leave paths as long as the chain */
-    while (up[c] != c) c = up[c] = up[up[c]];
-    if (bg_elem_is_source(m->elem_kind[e]) && !has[c]) has[c] = 1, root[e] = 1;
+    int c = part_of(up, e);
+    if (bg_elem_is_source(m->elem_kind[e]) && first[c] < 0) first[c] = e;
+    if (m->ninst > 0 && m->elem_inst[e] < 0 && own[c] < 0) own[c] = e;
   }
-  free(up), free(has);
+  for (int e = 0; e < m->nelem; e++) {
+    int c = part_of(up, e);
+    if (has[c] || first[c] < 0) continue;
+    has[c] = 1;
+    root[ring[c] && own[c] >= 0 && m->elem_inst[first[c]] >= 0 ? own[c] : first[c]] = 1;
+  }
+  free(up), free(has), free(ring), free(own), free(first);
 }
 
 /* The rows layout of the default style's boxes (rw, rh) stretched, across

@@ -78,7 +78,9 @@ static Agedge_t **add_edges(Agraph_t *g, const bg_layout_in *in, Agnode_t **node
     int t = in->tail[i], h = in->head[i];
     rev[i] = depth && depth[t] > depth[h];
     edges[i] = agedge(g, nodes[rev[i] ? h : t], nodes[rev[i] ? t : h], name, 1);
-    if (depth && depth[t] == depth[h]) agsafeset(edges[i], "constraint", "false", "");
+    /* two ways round a ring meeting (the same distance, or instances
+     * reached whole from two sides: bg_layout_depths) */
+    if (depth && abs(depth[t] - depth[h]) != 1) agsafeset(edges[i], "constraint", "false", "");
     if (is_dot && in->weight && in->weight[i] != 1) {
       char w[16];
       snprintf(w, sizeof w, "%d", in->weight[i]);
