@@ -19,36 +19,93 @@ double bg_frame_label_height(const bg_style *st) { return 1.3 * 0.85 * st->font_
 
 typedef struct box { double x0, y0, x1, y1; } box;
 
-static void grow(box *b, int k, const bg_diagram *d, int n) {
-  if (k < 0) return;
-  b[k].x0 = fmin(b[k].x0, d->L->nx[n] - d->L->nw[n] / 2), b[k].x1 = fmax(b[k].x1, d->L->nx[n] + d->L->nw[n] / 2);
-  b[k].y0 = fmin(b[k].y0, d->L->ny[n] - d->L->nh[n] / 2), b[k].y1 = fmax(b[k].y1, d->L->ny[n] + d->L->nh[n] / 2);
+/* A frame's piece: instance k's nodes in one band of a folded part (a fold
+ * through an instance draws it as one frame per band, each round its own
+ * nodes: one box round both bands held the nodes between them, another
+ * instance's or the model's; issue 31). Unfolded, an instance is one piece. */
+typedef struct piece {
+  int k, band;
+  box b;
+} piece;
+
+static int by_instance_band(const void *a, const void *b) {
+  const piece *p = a, *q = b;
+  return p->k != q->k ? (p->k > q->k) - (p->k < q->k) : (p->band > q->band) - (p->band < q->band);
 }
 
-/* Boxes of every instance: its nodes, then (children after parents in the
- * model, so walking backwards) its instances' boxes, padded. */
-static box *instance_boxes(const bg_diagram *d) {
-  const bg_model *m = d->m;
-  box *b = bg_xmalloc((size_t)(m->ninst + 1) * sizeof *b);
-  for (int k = 0; k < m->ninst; k++) b[k] = (box){INFINITY, INFINITY, -INFINITY, -INFINITY};
-  /* an element, a collapsed child's box, a detector: in its instance's frame */
-  for (int e = 0; e < m->nelem; e++)
-    if (bg_node_shown(d->L, e)) grow(&b[0], m->elem_inst[e], d, e);
-  for (int i = 0; i < m->ninst; i++)
-    if (d->L->inst_box[i] >= 0) grow(&b[0], m->inst_parent[i], d, d->L->inst_box[i]);
-  for (int i = 0; i < m->ndet; i++)
-    if (d->L->det_draw[i] >= 0) grow(&b[0], m->elem_inst[m->det_node[i]], d, d->L->det_draw[i]);
-  double lh = bg_frame_label_height(&d->st);
-  for (int k = m->ninst - 1; k >= 0; k--) {
-    if (!(b[k].x0 <= b[k].x1)) continue; /* no element at all */
-    b[k].x0 -= FRAME_PAD, b[k].x1 += FRAME_PAD, b[k].y1 += FRAME_PAD;
-    b[k].y0 -= FRAME_PAD + lh;
-    int p = m->inst_parent[k];
-    if (p < 0) continue;
-    b[p].x0 = fmin(b[p].x0, b[k].x0), b[p].x1 = fmax(b[p].x1, b[k].x1);
-    b[p].y0 = fmin(b[p].y0, b[k].y0), b[p].y1 = fmax(b[p].y1, b[k].y1);
+static int band_of(const bg_diagram *d, int n) { return d->L->lay.band ? d->L->lay.band[n] : 0; }
+
+/* The piece of instance k in band, or -1. */
+static int find_piece(const piece *p, int np, int k, int band) {
+  int lo = 0, hi = np - 1;
+  while (lo <= hi) {
+    int mid = (lo + hi) / 2;
+    if (p[mid].k == k && p[mid].band == band) return mid;
+    if (p[mid].k < k || (p[mid].k == k && p[mid].band < band)) lo = mid + 1;
+    else hi = mid - 1;
   }
-  return b;
+  return -1;
+}
+
+/* Node n of instance k (an element, a collapsed child's box, a detector):
+ * pass 0 lists a piece for k and each instance round it in n's band, pass
+ * 1 grows k's piece by n's box. */
+static void take_node(const bg_diagram *d, piece *p, int *np, int pass, int k, int n) {
+  const bg_model *m = d->m;
+  int band = band_of(d, n);
+  if (pass == 0) {
+    for (int j = k; j >= 0; j = m->inst_parent[j]) p[(*np)++] = (piece){j, band, {INFINITY, INFINITY, -INFINITY, -INFINITY}};
+    return;
+  }
+  int i = k >= 0 ? find_piece(p, *np, k, band) : -1;
+  if (i < 0) return;
+  box *b = &p[i].b;
+  b->x0 = fmin(b->x0, d->L->nx[n] - d->L->nw[n] / 2), b->x1 = fmax(b->x1, d->L->nx[n] + d->L->nw[n] / 2);
+  b->y0 = fmin(b->y0, d->L->ny[n] - d->L->nh[n] / 2), b->y1 = fmax(b->y1, d->L->ny[n] + d->L->nh[n] / 2);
+}
+
+/* The pieces of every instance's frame, in instance order: its nodes in
+ * the band, then (children after parents in the model, so walking
+ * backwards) its instances' pieces in that band, padded. */
+static piece *instance_pieces(const bg_diagram *d, int *npiece) {
+  const bg_model *m = d->m;
+  int depth = 1, np = 0;
+  for (int k = 0; k < m->ninst; k++) {
+    int dk = 0;
+    for (int j = k; j >= 0; j = m->inst_parent[j]) dk++;
+    depth = dk > depth ? dk : depth;
+  }
+  piece *p = bg_xmalloc(((size_t)(m->nelem + m->ninst + m->ndet) * (size_t)depth + 1) * sizeof *p);
+  for (int pass = 0; pass < 2; pass++) {
+    for (int e = 0; e < m->nelem; e++)
+      if (m->elem_inst[e] >= 0 && bg_node_shown(d->L, e)) take_node(d, p, &np, pass, m->elem_inst[e], e);
+    for (int i = 0; i < m->ninst; i++)
+      if (d->L->inst_box[i] >= 0 && m->inst_parent[i] >= 0) take_node(d, p, &np, pass, m->inst_parent[i], d->L->inst_box[i]);
+    for (int i = 0; i < m->ndet; i++)
+      if (d->L->det_draw[i] >= 0 && m->elem_inst[m->det_node[i]] >= 0)
+        take_node(d, p, &np, pass, m->elem_inst[m->det_node[i]], d->L->det_draw[i]);
+    if (pass == 0) { /* sorted and each (instance, band) once */
+      qsort(p, (size_t)np, sizeof *p, by_instance_band);
+      int u = 0;
+      for (int i = 0; i < np; i++)
+        if (u == 0 || p[i].k != p[u - 1].k || p[i].band != p[u - 1].band) p[u++] = p[i];
+      np = u;
+    }
+  }
+  double lh = bg_frame_label_height(&d->st);
+  for (int i = np - 1; i >= 0; i--) {
+    box *b = &p[i].b;
+    if (!(b->x0 <= b->x1)) continue; /* no element at all */
+    b->x0 -= FRAME_PAD, b->x1 += FRAME_PAD, b->y1 += FRAME_PAD;
+    b->y0 -= FRAME_PAD + lh;
+    int q = m->inst_parent[p[i].k] >= 0 ? find_piece(p, np, m->inst_parent[p[i].k], p[i].band) : -1;
+    if (q < 0) continue;
+    box *a = &p[q].b;
+    a->x0 = fmin(a->x0, b->x0), a->x1 = fmax(a->x1, b->x1);
+    a->y0 = fmin(a->y0, b->y0), a->y1 = fmax(a->y1, b->y1);
+  }
+  *npiece = np;
+  return p;
 }
 
 /* Whether bond b's line meets the box. */
@@ -103,12 +160,15 @@ static int label_crossed(const bg_diagram *d, const int *adr, const int *list, i
 void bg_draw_frames(bg_diagram *d) {
   const bg_model *m = d->m;
   if (!m->ninst) return;
-  box *b = instance_boxes(d);
+  int np;
+  piece *pc = instance_pieces(d, &np);
   int *adr, *list;
   instance_bonds(d, &adr, &list);
   double size = 0.85 * d->st.font_size;
-  for (int k = 0; k < m->ninst; k++) {
-    if (!(b[k].x0 <= b[k].x1)) continue; /* empty, or collapsed (drawn as a box) */
+  for (int i = 0; i < np; i++) {
+    int k = pc[i].k;
+    const box *b = &pc[i].b;
+    if (!(b->x0 <= b->x1)) continue; /* empty, or collapsed (drawn as a box) */
     bg_strbuf t = {0};
     /* inside its parent's frame, which names the parent: its own name */
     const char *name = m->inst_name[k], *dot = strrchr(name, '.');
@@ -117,24 +177,24 @@ void bg_draw_frames(bg_diagram *d) {
     bg_markup_escape(&t, m->inst_def[k]);
     double tw, th;
     bg_text_measure(d->st.font, size, bg_sb_str(&t), &tw, &th);
-    double x1 = fmax(b[k].x1, b[k].x0 + tw + 8);
+    double x1 = fmax(b->x1, b->x0 + tw + 8);
     bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "frame %s", m->inst_name[k]);
     it->color = d->st.muted;
     it->width = 0.6 * d->st.line_width;
-    bg_scene_move(&d->scene, b[k].x0, b[k].y0);
-    bg_scene_line(&d->scene, x1, b[k].y0);
-    bg_scene_line(&d->scene, x1, b[k].y1);
-    bg_scene_line(&d->scene, b[k].x0, b[k].y1);
+    bg_scene_move(&d->scene, b->x0, b->y0);
+    bg_scene_line(&d->scene, x1, b->y0);
+    bg_scene_line(&d->scene, x1, b->y1);
+    bg_scene_line(&d->scene, b->x0, b->y1);
     bg_scene_close(&d->scene);
     char role[256];
     snprintf(role, sizeof role, "frame-label %s", m->inst_name[k]);
     /* at the top left, or the top right where a bond (a fold's, coming
      * down into the frame's first element) runs through it there only */
-    double lx = b[k].x0 + 4, ly = b[k].y0 + 2, rx = x1 - 4 - tw;
+    double lx = b->x0 + 4, ly = b->y0 + 2, rx = x1 - 4 - tw;
     if (rx > lx && label_crossed(d, adr, list, k, lx, ly, tw, th) && !label_crossed(d, adr, list, k, rx, ly, tw, th))
       lx = rx;
     bg_scene_text(&d->scene, bg_sb_str(&t), lx, ly, size, 0, 0, d->st.muted, role);
     bg_sb_free(&t);
   }
-  free(b), free(adr), free(list);
+  free(pc), free(adr), free(list);
 }

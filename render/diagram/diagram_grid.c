@@ -41,6 +41,7 @@ typedef struct grid {
   unsigned char *signalled; /* nodes where a signal starts or ends (signal_ends) */
   unsigned char *mesh; /* hubs placed on a mesh's lattice (mesh_rows): their part is not folded */
   int *col, *row;     /* hubs: dot column, row */
+  int *band;          /* hubs: the band of their part's fold they are in (stack_components) */
   /* cells: open addressing, key (gx, gy), value the owner (node n, or -2 - edge) */
   long long *key;
   int *val, cap, used;
@@ -53,6 +54,8 @@ typedef struct grid {
   int *orbit;
   double *ring_x, *ring_y, *ring_w, *ring_h;
   int own_ranks;            /* ranks from bg_grid_tree_ranks, not dot: a large forest */
+  int spare_sides;          /* routing: keep off cells beside other hubs (try_route) */
+  unsigned char *turned;    /* nodes of parts whose bands turn upside down (NULL: none) */
   const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
   const double *rw, *rh;
 } grid;
@@ -621,6 +624,24 @@ static void stack_components(grid *g, const int *h, int nh) {
   }
   pack_parts(part, nparts, width, height, base, xoff);
   free(width), free(height), free(part);
+  /* A part with a cycle folds as a ribbon does, each band after the first
+   * turned upside down as well as running back: a ring's two ways run out
+   * in the first band's two rows and back in the next, so the first way's
+   * fold goes round the second's instead of across it (battery packs in
+   * rings: 7 bond crossings in 40, now 0). A tree keeps its bands the same
+   * way up: a branch hanging below its spine at a fold would come between
+   * the spine's two rows and bend the spine round it. */
+  unsigned char *cyclic = bg_xcalloc((size_t)n + 1, 1);
+  int *nodes_in = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int v = 0; v < n; v++) nodes_in[find(up, v)]++;
+  for (int e = 0; e < g->ne; e++) nodes_in[find(up, g->et[e])]--;
+  for (int v = 0; v < n; v++) cyclic[v] = find(up, v) == v && nodes_in[v] <= 0;
+  free(nodes_in);
+  for (int v = 0; v < n; v++)
+    if (cyclic[find(up, v)] && nband[find(up, v)] > 1) {
+      if (!g->turned) g->turned = bg_xcalloc((size_t)n + 1, 1);
+      g->turned[v] = 1;
+    }
   for (int i = 0; i < nh; i++) {
     int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;
     const int *st = start + boff[c];
@@ -631,12 +652,14 @@ static void stack_components(grid *g, const int *h, int nh) {
     }
     int k = g->col[v] - st[a], span = hi[c] - lo[c] + 1;
     g->gx[v] = 2 * (xoff[c] + bx[boff[c] + a] + (a % 2 ? -k : k));
-    g->gy[v] = 2 * ((-1 - base[c]) + a * (span + sep) + g->row[v] - lo[c]);
+    int turned = a % 2 && cyclic[c]; /* a U-turn: the band upside down too */
+    g->gy[v] = 2 * ((-1 - base[c]) + a * (span + sep) + (turned ? hi[c] - g->row[v] : g->row[v] - lo[c]));
+    g->band[v] = a;
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
   free(up), free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
-  free(ilo), free(ihi), free(icomp), free(xoff);
+  free(ilo), free(ihi), free(icomp), free(xoff), free(cyclic);
 }
 
 /* ---------------------------------------------------------------- routing bonds between hubs */
@@ -664,11 +687,35 @@ static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
   return 1;
 }
 
+/* Whether cell (x, y) is beside a hub other than u and v: where one of
+ * that hub's one-ports would go. */
+static int beside_hub(const grid *g, int x, int y, int u, int v) {
+  for (int k = 0; k < 4; k++) {
+    int w = g->val[cell_slot(g, cell_key(x + (k == 0) - (k == 1), y + (k == 2) - (k == 3)))];
+    if (w >= 0 && w != u && w != v && g->hub[w]) return 1;
+  }
+  return 0;
+}
+
+/* Whether the route through pts[0..n) passes beside a hub other than its ends. */
+static int passes_hubs(const grid *g, const int (*pts)[2], int n, int u, int v) {
+  for (int k = 0; k + 1 < n; k++) {
+    int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
+    while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
+      x += sx, y += sy;
+      if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
+      if (beside_hub(g, x, y, u, v)) return 1;
+    }
+  }
+  return 0;
+}
+
 static int try_route(grid *g, int e, const int (*pts)[2], int n) {
   int u = g->et[e], v = g->eh[e];
   int su = side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
   int sv = side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
   if ((g->sides[u] & su) || (g->sides[v] & sv) || !walk(g, pts, n, 0, e)) return 0;
+  if (g->spare_sides && passes_hubs(g, pts, n, u, v)) return 0;
   walk(g, pts, n, 1, e);
   g->sides[u] |= (unsigned char)su, g->sides[v] |= (unsigned char)sv;
   g->bent[e] = n - 2;
@@ -679,12 +726,29 @@ static int try_route(grid *g, int e, const int (*pts)[2], int n) {
 /* Straight when allowed (pass 0); an elbow or two (pass 1): one corner
  * either way, then two through a column or row between the ends or beside
  * them. */
+static int route_bent(grid *g, int e);
+
 static int route(grid *g, int e, int pass) {
   int x0 = g->gx[g->et[e]], y0 = g->gy[g->et[e]], x1 = g->gx[g->eh[e]], y1 = g->gy[g->eh[e]];
   if (pass == 0) {
     int p[2][2] = {{x0, y0}, {x1, y1}};
     return (x0 == x1 || y0 == y1) && try_route(g, e, (const int(*)[2])p, 2);
   }
+  if (g->turned && g->turned[g->et[e]] && g->band[g->et[e]] != g->band[g->eh[e]]) {
+    /* a ring's fold round the other way's (stack_components): round the
+     * cells beside that way's hubs if it can, where their one-ports go
+     * (else they went to diagonals: 6 in 40 battery packs). Only there: in
+     * trees' folds it crossed more bonds than it spared. */
+    g->spare_sides = 1;
+    int ok = route_bent(g, e);
+    g->spare_sides = 0;
+    if (ok) return 1;
+  }
+  return route_bent(g, e);
+}
+
+static int route_bent(grid *g, int e) {
+  int x0 = g->gx[g->et[e]], y0 = g->gy[g->et[e]], x1 = g->gx[g->eh[e]], y1 = g->gy[g->eh[e]];
   int l1[3][2] = {{x0, y0}, {x1, y0}, {x1, y1}}, l2[3][2] = {{x0, y0}, {x0, y1}, {x1, y1}};
   if (x0 != x1 && y0 != y1 && (try_route(g, e, (const int(*)[2])l1, 3) || try_route(g, e, (const int(*)[2])l2, 3)))
     return 1;
@@ -1258,6 +1322,33 @@ static void place_floats(grid *g) {
   }
 }
 
+/* The band every node is drawn in (bg_layout.band), for frames drawn per
+ * band when a fold cuts an instance (diagram_frames.c): a hub's from the
+ * fold, a one-port's its hub's, a node without bonds its anchor's, a node
+ * inside a box or a field its drawer's. */
+static void record_bands(grid *g) {
+  bg_diagram_layout *d = g->d;
+  int *band = bg_xcalloc((size_t)g->n + 1, sizeof *band);
+  unsigned char *done = bg_xcalloc((size_t)g->n + 1, 1);
+  for (int v = 0; v < g->n; v++)
+    if (g->hub[v] && own_node(d, v)) band[v] = g->band[v], done[v] = 1;
+  for (int v = 0; v < g->n; v++)
+    for (int k = g->adr[v]; !done[v] && own_node(d, v) && k < g->adr[v + 1]; k++) {
+      int w = drawn_by(d, other(g, g->adj[k], v));
+      if (g->hub[w]) band[v] = band[w], done[v] = 1;
+    }
+  for (int v = 0; v < g->n; v++)
+    if (!done[v] && own_node(d, v)) {
+      int a = float_anchor(g, v);
+      band[v] = a >= 0 && done[a] ? band[a] : 0;
+    }
+  for (int v = 0; v < g->n; v++)
+    if (!own_node(d, v)) band[v] = band[drawn_by(d, v)];
+  free(done);
+  free(d->lay.band);
+  d->lay.band = band;
+}
+
 /* ---------------------------------------------------------------- cells to points */
 /* Centre of every grid line (column or row) k in [lo, hi]: each as wide as
  * its widest node, `gap` between neighbours. */
@@ -1548,7 +1639,7 @@ static void grid_alloc(grid *g, bg_diagram_layout *d) {
   build_edges(g);
   size_t n = (size_t)g->n + 1;
   g->gx = bg_xcalloc(n, sizeof(int)), g->gy = bg_xcalloc(n, sizeof(int));
-  g->col = bg_xcalloc(n, sizeof(int)), g->row = bg_xcalloc(n, sizeof(int));
+  g->col = bg_xcalloc(n, sizeof(int)), g->row = bg_xcalloc(n, sizeof(int)), g->band = bg_xcalloc(n, sizeof(int));
   g->placed = bg_xcalloc(n, 1), g->hub = bg_xcalloc(n, 1), g->sides = bg_xcalloc(n, 1), g->mesh = bg_xcalloc(n, 1);
   g->bent = bg_xcalloc((size_t)g->ne + 1, sizeof(int));
   g->corner = bg_xcalloc((size_t)g->ne + 1, sizeof *g->corner);
@@ -1557,10 +1648,10 @@ static void grid_alloc(grid *g, bg_diagram_layout *d) {
 
 static void grid_free(grid *g) {
   free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg);
-  free(g->gx), free(g->gy), free(g->col), free(g->row);
+  free(g->gx), free(g->gy), free(g->col), free(g->row), free(g->band);
   free(g->placed), free(g->hub), free(g->sides), free(g->mesh), free(g->bent), free(g->corner);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy), free(g->signalled);
-  free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h);
+  free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h), free(g->turned);
 }
 
 void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh, int own_ranks) {
@@ -1579,6 +1670,7 @@ void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, 
   straighten_branches(&g);
   place_leaves(&g);
   place_floats(&g);
+  record_bands(&g);
   to_points(&g);
   diagonal_leaves(&g);
   free(h);

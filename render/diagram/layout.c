@@ -212,6 +212,7 @@ void bg_layout_free(bg_layout *l) {
   free(l->bendn);
   free(l->bendx);
   free(l->bendy);
+  free(l->band);
   memset(l, 0, sizeof *l);
 }
 

@@ -44,6 +44,8 @@ typedef struct bg_layout {
   int *bendadr, *bendn;
   double *bendx, *bendy;
   int nbend;
+  int *band;             /* per node the band of a folded part it is drawn in, set by the
+                            grid pass (frames are drawn per band); NULL when unused */
   char engine[16];       /* the engine actually used */
 } bg_layout;
 

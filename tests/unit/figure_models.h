@@ -233,6 +233,36 @@ static void fm_stages(bg_strbuf *b, int n) {
   bg_sb_printf(b, "bond T%d.n -> load\n", n);
 }
 
+/* A battery pack as a ring (issue 31, frames in rings): 3 to 12 instances
+ * of three submodels (a cell with one or two RC pairs and its own source,
+ * a wire) in series, closed through the model's own load junction, with a
+ * charger or a wire inductance there or neither; the seed picks. The ring
+ * drawing splits where it starts and where its two ways meet: each split
+ * must fall between instances, so every frame stays whole. */
+__attribute__((unused)) static void fm_ring_pack(bg_strbuf *b, int seed) {
+  static const char *const body[3] = {
+      "  port p, n\n  Se ocv = E\n  1 s\n  R r0 = 0.01\n  0 a\n  C c1 = 1000\n  R r1 = 0.02\n"
+      "  bond p -> s\n  bond ocv -> s\n  bond s -> r0\n  bond s -> a\n  bond a -> c1\n  bond a -> r1\n"
+      "  bond a -> n\n",
+      "  port p, n\n  Se ocv = E\n  1 s\n  R r0 = 0.01\n  0 a\n  C c1 = 1000\n  R r1 = 0.02\n  1 t\n  0 b\n"
+      "  C c2 = 5000\n  R r2 = 0.05\n  bond p -> s\n  bond ocv -> s\n  bond s -> r0\n  bond s -> a\n"
+      "  bond a -> c1\n  bond a -> r1\n  bond a -> t\n  bond t -> b\n  bond b -> c2\n  bond b -> r2\n"
+      "  bond b -> n\n",
+      "  port p, n\n  1 s\n  R r = 0.001\n  I l = 1e-6\n  bond p -> s\n  bond s -> r\n  bond s -> l\n"
+      "  bond s -> n\n"};
+  static const char *const name[3] = {"Cell", "Cell2", "Wire"};
+  unsigned s = (unsigned)seed * 7919u + 17u;
+  int n = 3 + (int)(fm_rand(&s) % 10u), own = (int)(fm_rand(&s) % 3u);
+  bg_sb_printf(b, "model pack%d\n", seed);
+  for (int k = 0; k < 3; k++) bg_sb_printf(b, "submodel %s%s\n%send\n", name[k], k < 2 ? "(E = 3.7)" : "", body[k]);
+  for (int i = 0; i < n; i++) bg_sb_printf(b, "%s K%d\n", name[fm_rand(&s) % 3u], i);
+  bg_sb_puts(b, "R load = 1\n1 loop\n");
+  if (own == 1) bg_sb_puts(b, "Se charger = 15\nbond charger -> loop\n");
+  if (own == 2) bg_sb_puts(b, "I wire = 1e-6\nbond loop -> wire\n");
+  for (int i = 0; i + 1 < n; i++) bg_sb_printf(b, "bond K%d.n -> K%d.p\n", i, i + 1);
+  bg_sb_printf(b, "bond K%d.n -> loop\nbond loop -> load\nbond loop -> K0.p\n", n - 1);
+}
+
 /* Spine models (issue 31: the power chain from source to load is the main
  * row, side branches hang off it). A π filter of n sections: a source
  * resistance, then per section a shunt branch (a 1-junction with a C and
