@@ -1538,6 +1538,48 @@ static void test_straight_branches(void) {
   BG_T_REPORT(total <= 66, "trees: %d bonds with a corner (<= 66; 226 before)", total);
 }
 
+/* The drawn length of bond id (its half arrow left out), -1 when absent. */
+static double bond_length(const bg_scene *s, int id) {
+  fc_scene f;
+  fc_read(s, &f);
+  double len = -1;
+  for (int j = 0; j < f.nline; j++) {
+    const fc_line *l = &f.line[j];
+    if (l->kind != FC_BOND || l->id != id) continue;
+    len = 0;
+    for (int k = 0; k < l->nseg - l->barb; k++) len += hypot(l->seg[k].x1 - l->seg[k].x0, l->seg[k].y1 - l->seg[k].y0);
+  }
+  fc_free(&f);
+  return len;
+}
+
+/* Columns as wide as their rows ask (issue 31, compact_columns): a column
+ * was as wide as its widest node in any row, so the quarter car's
+ * suspension damper R : Bs, hung beside its junction two rows above the
+ * main row, made the main row's bond 7 under it 1.58 times bond 3 (drawn
+ * 121 against 77 pt, the figure 541 pt wide; now 65 and 58). The two join a
+ * one-port-laden 1-junction to the suspension's 0-junction from either
+ * side: bond 7 at most a quarter longer than bond 3 in every style (the
+ * labels above the junctions and the end circles differ). */
+static void test_compact_columns(void) {
+  bg_strbuf src = {0};
+  OK(read_text(BG_SOURCE_DIR "/examples/gallery/quarter_car.bg", &src));
+  fx f;
+  int rc = fm_load(&f, "quarter_car", bg_sb_str(&src));
+  OK(rc == 0);
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
+    OK(d != NULL);
+    if (!d) continue;
+    double b3 = bond_length(bg_diagram_scene(d), 3), b7 = bond_length(bg_diagram_scene(d), 7);
+    BG_T_REPORT(b3 > 0 && b7 <= 1.25 * b3, "quarter_car %s: bond 7 %.1f pt, bond 3 %.1f pt (<= 1.25 times)",
+                styles[si], b7, b3);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
 /* ---------------------------------------------------------------- the tutorial and the gallery */
 /* The models of docs/tutorial.md and docs/gallery.md (examples/tutorial,
  * examples/gallery: issue 38), each in every style and layer set, their
@@ -1661,6 +1703,7 @@ int main(void) {
   RUN(test_frames_in_rings);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
+  RUN(test_compact_columns);
   RUN(test_large_figures);
   RUN(test_large_forests);
   RUN(test_held_out_models);
