@@ -23,7 +23,8 @@ typedef struct seg {
 
 /* How the polyline passes a node: entry point p0, exit p1 (kind 0: p1 = p0;
  * 1: a straight link; 2: a half-turn curve
- * with controls c1, c2). */
+ * with controls c1, c2; 5: a half turn as two curves, controls c1, c2 to
+ * corner[0], then corner[1], corner[2] to p1). */
 typedef struct joint {
   int kind;
   bg_vec p0, p1, c1, c2;
@@ -109,12 +110,26 @@ static void claim_sides(bg_diagram *d, const seg *s, int n, int key) {
 static double cross(bg_vec a, bg_vec b) { return a.x * b.y - a.y * b.x; }
 
 /* A half turn around the end of bond s->b at node s->v, from s's offset
- * to t's (the way back, on the other side; its own rank there). */
+ * to t's (the way back, on the other side; its own rank there). With the
+ * two offsets equal, a half circle; else two quarter ellipses that meet on
+ * the bond's line, as far out as the larger offset, so the turn crosses it
+ * at a right angle (one curve between unequal offsets crossed it at a
+ * slant: tree40's path 7 round its last one-port, issue 31). */
 static joint turn(const bg_diagram *d, const seg *s, const seg *t) {
   int v = s->v;
   bg_vec e = bg_box_exit(centre(d, v), d->L->nw[v] / 2, d->L->nh[v] / 2, centre(d, s->u));
-  bg_vec base = bg_vsub(e, bg_vscale(s->dir, fmax(s->off, t->off) + 1));
+  double r = fmax(s->off, t->off);
+  bg_vec base = bg_vsub(e, bg_vscale(s->dir, r + 1));
   joint j = {2, bg_vadd(base, bg_vscale(s->n, s->off)), bg_vsub(base, bg_vscale(s->n, t->off)), {0, 0}, {0, 0}, 0, {{0, 0}}, 0, NULL, 0};
+  if (fabs(s->off - t->off) > 0.5) {
+    const double k = 0.5523; /* a quarter ellipse's controls */
+    bg_vec apex = bg_vadd(base, bg_vscale(s->dir, r));
+    j.kind = 5;
+    j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, k * r)), j.c2 = bg_vadd(apex, bg_vscale(s->n, k * s->off));
+    j.corner[0] = apex;
+    j.corner[1] = bg_vsub(apex, bg_vscale(s->n, k * t->off)), j.corner[2] = bg_vadd(j.p1, bg_vscale(s->dir, k * r));
+    return j;
+  }
   j.c1 = bg_vadd(j.p0, bg_vscale(s->dir, 4.0 / 3 * s->off));
   j.c2 = bg_vadd(j.p1, bg_vscale(s->dir, 4.0 / 3 * t->off));
   return j;
@@ -373,6 +388,10 @@ static void emit_joint(bg_scene *sc, const joint *j) {
   for (int k = 0; j->kind == 4 && k < j->nvia; k++) bg_scene_line(sc, j->via[k].x, j->via[k].y);
   if (j->kind == 1 || j->kind == 3 || j->kind == 4) bg_scene_line(sc, j->p1.x, j->p1.y);
   if (j->kind == 2) bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->p1.x, j->p1.y);
+  if (j->kind == 5) { /* two curves through corner[0] */
+    bg_scene_curve(sc, j->c1.x, j->c1.y, j->c2.x, j->c2.y, j->corner[0].x, j->corner[0].y);
+    bg_scene_curve(sc, j->corner[1].x, j->corner[1].y, j->corner[2].x, j->corner[2].y, j->p1.x, j->p1.y);
+  }
 }
 
 static int layer_hot(const bg_diagram *d, int kind, int i) {
