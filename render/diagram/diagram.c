@@ -262,9 +262,12 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     gw = bg_xcalloc((size_t)d->nnode + 1, sizeof *gw), gh = bg_xcalloc((size_t)d->nnode + 1, sizeof *gh);
     reference_boxes(d, &ref, gw, gh);
   }
+  unsigned char *dead_end = bg_xcalloc((size_t)d->nnode + 1, 1); /* the integrators: no short cuts */
+  for (int s = 0; s < m->nstate; s++)
+    if (d->state_node[s] >= 0) dead_end[d->state_node[s]] = 1;
   bg_layout_in in = {d->nnode, gw, gh, pinned, px, py, ne, tail, head,
                      engine, rd, lst->node_sep, lst->rank_sep,
-                     d->st.splines, root, weight, 0, NULL, NULL, NULL, 0, NULL, NULL};
+                     d->st.splines, root, weight, dead_end, 0, NULL, NULL, NULL, 0, NULL, NULL};
   int *link_a = NULL, *link_b = NULL;
   if (is_rows) in.nlink = signal_links(d, &link_a, &link_b), in.link_a = link_a, in.link_b = link_b;
   /* submodel instances: one frame (cluster) each, around its elements */
@@ -287,7 +290,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
   if (d->rep && d->ncollapsed) { /* both leave nodes out of the layout: not combined yet */
     bg_diag_error(dg, (bg_srcloc){0}, "--collapse cannot draw a model with multiport fields yet; "
                   "draw it without --collapse");
-    free(tail), free(head), free(pinned), free(root), free(weight), free(px), free(py);
+    free(tail), free(head), free(pinned), free(root), free(weight), free(dead_end), free(px), free(py);
     free(cluster), free(label_h), free(link_a), free(link_b);
     if (refsized) free(gw), free(gh);
     return -1;
@@ -304,7 +307,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     bg_fields_expand(d, fields);
   }
   if (rc) bg_diag_error(dg, (bg_srcloc){0}, "%s", err);
-  free(tail), free(head), free(pinned), free(weight), free(px), free(py);
+  free(tail), free(head), free(pinned), free(weight), free(dead_end), free(px), free(py);
   free(cluster), free(label_h), free(link_a), free(link_b);
   if (rc == 0) {
     d->nx = d->lay.x, d->ny = d->lay.y;

@@ -55,7 +55,7 @@ struct bg_fields_lay {
   int n;
   double *w, *h, *px, *py;
   int *pinned, *tail, *head, *cluster;
-  unsigned char *root;
+  unsigned char *root, *dead_end;
   int *link_a, *link_b; /* the links (rows), in the compacted numbering */
 };
 
@@ -75,12 +75,13 @@ bg_fields_lay *bg_fields_compact(const bg_diagram_layout *d, bg_layout_in *in) {
   L->w = malloc(k * sizeof(double)), L->h = malloc(k * sizeof(double));
   L->px = calloc(k, sizeof(double)), L->py = calloc(k, sizeof(double));
   L->pinned = calloc(k, sizeof(int)), L->cluster = malloc(k * sizeof(int));
-  L->root = calloc(k, 1);
+  L->root = calloc(k, 1), L->dead_end = calloc(k, 1);
   for (int i = 0; i < L->n; i++) {
     int v = L->back[i];
     L->w[i] = in->w[v], L->h[i] = in->h[v];
     if (in->pinned) L->pinned[i] = in->pinned[v], L->px[i] = in->px[v], L->py[i] = in->py[v];
     if (in->root) L->root[i] = in->root[v];
+    if (in->dead_end) L->dead_end[i] = in->dead_end[v];
     L->cluster[i] = in->cluster ? in->cluster[v] : -1;
   }
   L->tail = malloc(ne * sizeof(int)), L->head = malloc(ne * sizeof(int));
@@ -93,6 +94,7 @@ bg_fields_lay *bg_fields_compact(const bg_diagram_layout *d, bg_layout_in *in) {
   in->nnode = L->n, in->w = L->w, in->h = L->h, in->tail = L->tail, in->head = L->head;
   if (in->pinned) in->pinned = L->pinned, in->px = L->px, in->py = L->py;
   if (in->root) in->root = L->root;
+  if (in->dead_end) in->dead_end = L->dead_end;
   if (in->cluster) in->cluster = L->cluster;
   return L;
 }
@@ -113,7 +115,7 @@ void bg_fields_expand(bg_diagram_layout *d, bg_fields_lay *L) {
     lay->x = x, lay->y = y, lay->nnode = d->nnode;
   } else free(x), free(y);
   free(L->vis), free(L->back), free(L->w), free(L->h), free(L->px), free(L->py);
-  free(L->pinned), free(L->tail), free(L->head), free(L->cluster), free(L->root);
+  free(L->pinned), free(L->tail), free(L->head), free(L->cluster), free(L->root), free(L->dead_end);
   free(L->link_a), free(L->link_b);
   free(L);
 }

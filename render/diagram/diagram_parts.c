@@ -237,11 +237,16 @@ int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layou
     c.edge_of[c.ne] = i, t[c.ne] = c.lay_of[in->tail[i]], h[c.ne] = c.lay_of[in->head[i]];
     w[c.ne++] = in->weight ? in->weight[i] : 1;
   }
-  unsigned char *root = NULL;
+  unsigned char *root = NULL, *dead = NULL;
   if (in->root) {
     root = bg_xcalloc((size_t)c.n + 1, 1);
     for (int v = 0; v < in->nnode; v++)
       if (c.lay_of[v] >= 0) root[c.lay_of[v]] = in->root[v];
+  }
+  if (in->dead_end) {
+    dead = bg_xcalloc((size_t)c.n + 1, 1);
+    for (int v = 0; v < in->nnode; v++)
+      if (c.lay_of[v] >= 0) dead[c.lay_of[v]] = in->dead_end[v];
   }
   int *la = bg_xcalloc((size_t)in->nlink + 1, sizeof *la), *lb = bg_xcalloc((size_t)in->nlink + 1, sizeof *lb);
   k.nlink = 0; /* the links between shown nodes */
@@ -249,13 +254,13 @@ int bg_parts_layout(const bg_diagram_layout *d, const bg_layout_in *in, bg_layou
     if (c.lay_of[in->link_a[i]] >= 0 && c.lay_of[in->link_b[i]] >= 0)
       la[k.nlink] = c.lay_of[in->link_a[i]], lb[k.nlink++] = c.lay_of[in->link_b[i]];
   k.link_a = la, k.link_b = lb;
-  k.nnode = c.n, k.nedge = c.ne, k.tail = t, k.head = h, k.weight = w, k.root = root;
+  k.nnode = c.n, k.nedge = c.ne, k.tail = t, k.head = h, k.weight = w, k.root = root, k.dead_end = dead;
   k.w = pick_d(in->w, &c, in->nnode), k.h = pick_d(in->h, &c, in->nnode);
   k.px = pick_d(in->px, &c, in->nnode), k.py = pick_d(in->py, &c, in->nnode);
   k.pinned = pick_i(in->pinned, &c, in->nnode), k.cluster = pick_i(in->cluster, &c, in->nnode);
   int rc = bg_layout_run(&k, out, err, errn);
   if (rc == 0) expand(in, &c, out);
-  free(la), free(lb), free(t), free(h), free(w), free(root), free((void *)k.w), free((void *)k.h), free((void *)k.px);
+  free(la), free(lb), free(t), free(h), free(w), free(root), free(dead), free((void *)k.w), free((void *)k.h), free((void *)k.px);
   free((void *)k.py), free((void *)k.pinned), free((void *)k.cluster), free(c.lay_of), free(c.edge_of);
   return rc;
 }

@@ -20,6 +20,8 @@ typedef struct bg_layout_in {
                                 from the root nodes (sources), not by edge direction */
   const int *weight;         /* nullable; dot: per edge, how much straighter and shorter
                                 it should be than the others (1 = normal) */
+  const unsigned char *dead_end; /* nullable; per node: the ranks reach it but do not go on
+                                    through it (a user state's integrator) */
   /* dot only: frames (Graphviz clusters) around groups of nodes, e.g. the
    * instances of submodels; parents before children */
   int ncluster;

@@ -29,7 +29,11 @@ static int *outer_frames(const bg_layout_in *in) {
  * So where two ways round a ring meet, they meet between instances, not
  * in one: a ring of cells drawn as two rows had a cell's frame across both
  * rows, round its neighbour's nodes (issue 31). A tree has one way to each
- * node and keeps its plain distances. */
+ * node and keeps its plain distances. A dead end (a user state's
+ * integrator, joined to the bonds it reads and the elements it modulates)
+ * is reached but not gone through: its edges made a feedback loop a short
+ * cut, and the power chain folded back (a loudspeaker under PI control
+ * drew its cone under its coil). */
 int *bg_layout_depths(const bg_layout_in *in, int *order) {
   int n = in->nnode, m = in->nedge;
   int *adr = bg_xcalloc((size_t)n + 1, sizeof *adr), *adj = bg_xcalloc(2 * (size_t)m + 1, sizeof *adj);
@@ -60,6 +64,7 @@ int *bg_layout_depths(const bg_layout_in *in, int *order) {
     for (;;) {
       for (; qh < qt; qh++) {
         int u = queue[qh];
+        if (in->dead_end && in->dead_end[u] && !(in->root && in->root[u])) continue;
         for (int k = adr[u]; k < adr[u + 1]; k++) {
           int w = adj[k], c = top ? top[w] : -1;
           if (depth[w] >= 0) continue;

@@ -1585,6 +1585,52 @@ static void test_compact_columns(void) {
   bg_sb_free(&src);
 }
 
+/* A user state's integrator in the ranks (issue 31): a loudspeaker under
+ * PI control (tests/data/figures/speaker_pi.bg, held out) has the
+ * integrator read the cone's velocity and modulate the amplifier. Its
+ * layout edges made the feedback a short cut from the source: the cone
+ * ranked beside the motor and the power chain folded back under itself
+ * (the cone under the coil, the chain turned down at the motor). The ranks
+ * now reach the integrator without going through it: the chain from the
+ * amplifier to the enclosure, amp - coil - motor - cone - piston - box, is
+ * one row (their labels' middles within 1 pt), no bond with a corner,
+ * nothing crossing, in every style. */
+static void test_state_feedback(void) {
+  bg_strbuf src = {0};
+  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/speaker_pi.bg", &src));
+  fx f;
+  int rc = fm_load(&f, "speaker_pi", bg_sb_str(&src));
+  OK(rc == 0);
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
+    OK(d != NULL);
+    if (!d) continue;
+    fc_stats st = {0};
+    fc_count(bg_diagram_scene(d), &st);
+    int bent = bonds_bent(bg_diagram_scene(d));
+    BG_T_REPORT(st.spine_bent == 0 && st.crossings == 0 && st.sig_cross == 0 && bent == 0,
+                "speaker_pi %s: spine bonds bent %d, bonds with a corner %d, crossings %d, signal crossings %d (all 0)",
+                styles[si], st.spine_bent, bent, st.crossings, st.sig_cross);
+    static const char *const chain[] = {"amp", "coil", "motor", "cone", "piston", "box"};
+    fc_scene fs;
+    fc_read(bg_diagram_scene(d), &fs);
+    double lo = 1e300, hi = -1e300;
+    int found = 0;
+    for (int i = 0; i < fs.nbox; i++)
+      for (size_t k = 0; fs.box[i].elem && k < sizeof chain / sizeof chain[0]; k++)
+        if (!strcmp(fs.box[i].name, chain[k])) {
+          double y = (fs.box[i].y0 + fs.box[i].y1) / 2;
+          lo = fmin(lo, y), hi = fmax(hi, y), found++;
+        }
+    fc_free(&fs);
+    BG_T_REPORT(found == 6 && hi - lo <= 1, "speaker_pi %s: %d of the chain's 6 labels, middles %.1f pt apart (<= 1)",
+                styles[si], found, hi - lo);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
 /* ---------------------------------------------------------------- the tutorial and the gallery */
 /* The models of docs/tutorial.md and docs/gallery.md (examples/tutorial,
  * examples/gallery: issue 38), each in every style and layer set, their
@@ -1709,6 +1755,7 @@ int main(void) {
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
+  RUN(test_state_feedback);
   RUN(test_large_figures);
   RUN(test_large_forests);
   RUN(test_held_out_models);
