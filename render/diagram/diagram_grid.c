@@ -997,6 +997,23 @@ static unsigned char *movable(const grid *g) {
   return ok;
 }
 
+/* With submodels, whether the side lies wholly inside the instance its hub
+ * p is drawn in or wholly outside it (or p is the model's own): a side
+ * holding both, the instance's branch and another instance beyond it, took
+ * that other instance into the columns of p's frame, round its nodes (a
+ * tee's branch pipe inside the tee's frame, issue 31). */
+static int side_in_hub_instance(const grid *g, const side_move *mv) {
+  const bg_model *m = g->d->m;
+  if (!m->ninst || mv->p >= m->nelem || m->elem_inst[mv->p] < 0) return 1;
+  int inside = 0;
+  for (int i = 0; i < mv->nq; i++) {
+    int v = mv->q[i], in = 0;
+    for (int k = v < m->nelem ? m->elem_inst[v] : -1; k >= 0 && !in; k = m->inst_parent[k]) in = k == m->elem_inst[mv->p];
+    inside += in;
+  }
+  return inside == 0 || inside == mv->nq;
+}
+
 static void straighten_branches(grid *g) {
   size_t n = (size_t)g->n + 1;
   unsigned char *mark = bg_xcalloc(n, 1), *ok = movable(g);
@@ -1008,6 +1025,7 @@ static void straighten_branches(grid *g) {
     for (int i = 0; i < nq; i++) s = ok[mv.q[i]] == 1 ? s : 0;
     if (!s) continue;
     mv.c = mv.q[0], mv.p = other(g, e, mv.c);
+    if (!side_in_hub_instance(g, &mv)) continue;
     /* into p's column or p's row, the shorter move first */
     int ax = g->gx[mv.p] - g->gx[mv.c], ay = g->gy[mv.p] - g->gy[mv.c];
     for (int i = 0; i < nq; i++) mark[mv.q[i]] = 1;

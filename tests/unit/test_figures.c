@@ -1130,6 +1130,35 @@ static void test_frames_in_rings(void) {
   printf("ring packs: %d with frames crossing or foreign elements, %d bond crossings\n", bad, crossings);
 }
 
+/* Frames on branches (issue 31): a pipe network of two three-port Tee
+ * instances, each outlet running on into a Pipe instance
+ * (tests/data/figures/tee_network.bg, held out). Straightening the Tee's
+ * branch moved the branch and the Pipe beyond it one column back, into
+ * the Tee's frame: 2 pairs of frames crossing and 6 elements in a frame not
+ * theirs. A branch side moves only when it lies wholly inside its hub's
+ * instance or wholly outside it: 0 and 0 in every style, 7 frames. */
+static void test_frames_on_branches(void) {
+  bg_strbuf src = {0};
+  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/tee_network.bg", &src));
+  fx f;
+  int rc = fm_load(&f, "tee_network", bg_sb_str(&src));
+  OK(rc == 0);
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
+    bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+    OK(d != NULL);
+    if (!d) continue;
+    fc_stats st = {0};
+    fc_count(bg_diagram_scene(d), &st);
+    BG_T_REPORT(st.frames == 7 && st.frame_cross == 0 && st.foreign == 0 && st.crossings == 0,
+                "tee_network %s: %d frames (7), crossing %d, foreign %d, bonds crossing %d (0)", styles[si], st.frames,
+                st.frame_cross, st.foreign, st.crossings);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
 /* A one-port on a diagonal cell of its hub (the junction's four sides
  * taken) is drawn at 45 degrees, as books draw it, and its causal stroke
  * keeps off the barbs of the junction's other bonds (issue 31; before: 27
@@ -1752,6 +1781,7 @@ int main(void) {
   RUN(test_generated);
   RUN(test_frames_held_out);
   RUN(test_frames_in_rings);
+  RUN(test_frames_on_branches);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
