@@ -358,19 +358,34 @@ static int hub_bfs(const grid *g, int s, int *dist, int *q) {
 /* The part of hubs q[0..n) as a mesh: col and row of each, or nothing.
  * da, db, ds: per node, -1 for the part's hubs on entry (the caller
  * resets them); qq: a queue. */
+/* Whether hub v may be a mesh's corner: two hub bonds, to hubs of two
+ * hub bonds each. */
+static int corner_like(const grid *g, int v) {
+  if (hub_degree(g, v) != 2) return 0;
+  for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+    int u = other(g, g->adj[k], v);
+    if (g->hub[u] && hub_degree(g, u) != 2) return 0;
+  }
+  return 1;
+}
+
 static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, int *qq) {
   int corner[4], nc = 0, src = -1;
   for (int i = 0; i < n; i++) {
-    int v = q[i], hd = hub_degree(g, v);
-    if (hd > 4) return;
-    if (hd != 2) continue;
-    int both = 1;
+    int v = q[i];
+    if (hub_degree(g, v) > 4) return;
+    if (!corner_like(g, v)) continue;
+    /* a mesh two junctions deep (a counterflow exchanger's two streams
+     * joined by walls) has its end rungs corner-like too, between two
+     * corners: a corner has a neighbour that is not */
+    int between = 1;
     for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
       int u = other(g, g->adj[k], v);
-      if (g->hub[u] && hub_degree(g, u) != 2) both = 0;
+      if (g->hub[u] && !corner_like(g, u)) between = 0;
     }
-    if (both && nc == 4) return;
-    if (both) corner[nc++] = v;
+    if (between) continue;
+    if (nc == 4) return;
+    corner[nc++] = v;
   }
   if (nc != 4) return;
   const bg_model *m = g->d->m;
@@ -429,7 +444,7 @@ static void mesh_rows(grid *g, const int *h, int nh) {
   for (int i = 0; i < nh; i++) {
     if (seen[h[i]] >= 0) continue;
     int k = hub_bfs(g, h[i], seen, q);
-    if (k >= 17) mesh_part(g, q, k, da, db, ds, qq); /* 3 x 3 junctions and their links at least */
+    if (k >= 13) mesh_part(g, q, k, da, db, ds, qq); /* 2 x 3 junctions and their links at least */
     for (int j = 0; j < k; j++) da[q[j]] = db[q[j]] = ds[q[j]] = -1;
   }
   free(seen), free(da), free(db), free(ds), free(q), free(qq);

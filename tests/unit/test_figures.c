@@ -1130,6 +1130,49 @@ static void test_frames_in_rings(void) {
   printf("ring packs: %d with frames crossing or foreign elements, %d bond crossings\n", bad, crossings);
 }
 
+/* Meshes two junctions deep (issue 31): two rows of junctions joined
+ * along and across through 1-junctions (fm_grid 2 x 3 to 2 x 8, and a
+ * held-out counterflow heat exchanger, tests/data/figures/exchanger.bg)
+ * are drawn on their lattice: every bond straight and none crossing, in
+ * every style. Their end rungs looked like corners too (two hub bonds to
+ * hubs of two), so the mesh test found six and left them to the tree
+ * drawing: the exchanger's hot inlet sat in the cold stream's row, its
+ * walls on elbows (6 bonds with a corner in every style; 2 x 3 to 2 x 8: 4
+ * to 14). */
+static int bonds_bent(const bg_scene *s);
+
+static void test_two_row_meshes(void) {
+  for (int c = 2; c <= 8; c++) {
+    bg_strbuf src = {0};
+    char name[32];
+    if (c == 2) {
+      OK(read_text(BG_SOURCE_DIR "/tests/data/figures/exchanger.bg", &src));
+      snprintf(name, sizeof name, "exchanger");
+    } else {
+      fm_grid(&src, 2, c);
+      snprintf(name, sizeof name, "grid2x%d", c);
+    }
+    fx f;
+    int rc = fm_load(&f, name, bg_sb_str(&src));
+    BG_T_REPORT(rc == 0, "%s compiles", name);
+    for (int si = 0; rc == 0 && si < 3; si++) {
+      bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
+      bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+      OK(d != NULL);
+      if (!d) continue;
+      fc_stats st = {0};
+      fc_count(bg_diagram_scene(d), &st);
+      int bent = bonds_bent(bg_diagram_scene(d));
+      BG_T_REPORT(bent == 0 && st.slanted == 0 && st.crossings == 0,
+                  "%s %s: bonds with a corner %d, slanted %d, crossing %d (all 0)", name, styles[si], bent, st.slanted,
+                  st.crossings);
+      bg_diagram_free(d);
+    }
+    fx_free(&f);
+    bg_sb_free(&src);
+  }
+}
+
 /* Frames on branches (issue 31): a pipe network of two three-port Tee
  * instances, each outlet running on into a Pipe instance
  * (tests/data/figures/tee_network.bg, held out). Straightening the Tee's
@@ -1782,6 +1825,7 @@ int main(void) {
   RUN(test_frames_held_out);
   RUN(test_frames_in_rings);
   RUN(test_frames_on_branches);
+  RUN(test_two_row_meshes);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
