@@ -443,6 +443,30 @@ static bg_diagram *default_drawing(fx *f, const char *name, const char *text, co
   return d;
 }
 
+/* Model f drawn in styles[si] with the default layers; NULL when that
+ * fails (reported). The caller frees it. */
+static bg_diagram *style_drawing(fx *f, int si) {
+  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(f->m, &f->a, &o, &f->dg);
+  OK(d != NULL);
+  return d;
+}
+
+static int read_text(const char *path, bg_strbuf *src);
+
+/* The model file rel (under the source tree) compiled into f as name:
+ * 0, or nonzero (reported). The caller frees f either way. */
+static int file_model(fx *f, const char *rel, const char *name) {
+  char path[512];
+  snprintf(path, sizeof path, "%s/%s", BG_SOURCE_DIR, rel);
+  bg_strbuf src = {0};
+  int opened = read_text(path, &src), rc = opened ? fm_load(f, name, bg_sb_str(&src)) : -1;
+  if (!opened) memset(f, 0, sizeof *f);
+  BG_T_REPORT(rc == 0, "%s compiles", rel);
+  bg_sb_free(&src);
+  return rc;
+}
+
 /* One model in every style and layer set, added to tot; the arrangement
  * of each style compared with the default style's (same layers). */
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
@@ -1071,9 +1095,7 @@ static void test_frames_held_out(void) {
   int rc = fm_load(&f, "stages4", bg_sb_str(&src));
   BG_T_REPORT(rc == 0, "stages4 compiles");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
-    bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-    OK(d != NULL);
+    bg_diagram *d = style_drawing(&f, si);
     if (!d) continue;
     fc_stats st = {0};
     fc_count(bg_diagram_scene(d), &st);
@@ -1109,9 +1131,7 @@ static void test_frames_in_rings(void) {
     int rc = fm_load(&f, name, bg_sb_str(&src));
     BG_T_REPORT(rc == 0, "%s compiles", name);
     for (int si = 0; rc == 0 && si < (seed < 4 ? 3 : 1); si++) {
-      bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
-      bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-      OK(d != NULL);
+      bg_diagram *d = style_drawing(&f, si);
       if (!d) continue;
       fc_stats st = {0};
       fc_count(bg_diagram_scene(d), &st);
@@ -1145,20 +1165,17 @@ static void test_two_row_meshes(void) {
   for (int c = 2; c <= 8; c++) {
     bg_strbuf src = {0};
     char name[32];
-    if (c == 2) {
-      OK(read_text(BG_SOURCE_DIR "/tests/data/figures/exchanger.bg", &src));
-      snprintf(name, sizeof name, "exchanger");
-    } else {
-      fm_grid(&src, 2, c);
-      snprintf(name, sizeof name, "grid2x%d", c);
-    }
+    snprintf(name, sizeof name, c == 2 ? "exchanger" : "grid2x%d", c);
     fx f;
-    int rc = fm_load(&f, name, bg_sb_str(&src));
-    BG_T_REPORT(rc == 0, "%s compiles", name);
+    int rc;
+    if (c == 2) rc = file_model(&f, "tests/data/figures/exchanger.bg", name);
+    else {
+      fm_grid(&src, 2, c);
+      rc = fm_load(&f, name, bg_sb_str(&src));
+      BG_T_REPORT(rc == 0, "%s compiles", name);
+    }
     for (int si = 0; rc == 0 && si < 3; si++) {
-      bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
-      bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-      OK(d != NULL);
+      bg_diagram *d = style_drawing(&f, si);
       if (!d) continue;
       fc_stats st = {0};
       fc_count(bg_diagram_scene(d), &st);
@@ -1181,15 +1198,10 @@ static void test_two_row_meshes(void) {
  * theirs. A branch side moves only when it lies wholly inside its hub's
  * instance or wholly outside it: 0 and 0 in every style, 7 frames. */
 static void test_frames_on_branches(void) {
-  bg_strbuf src = {0};
-  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/tee_network.bg", &src));
   fx f;
-  int rc = fm_load(&f, "tee_network", bg_sb_str(&src));
-  OK(rc == 0);
+  int rc = file_model(&f, "tests/data/figures/tee_network.bg", "tee_network");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
-    bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-    OK(d != NULL);
+    bg_diagram *d = style_drawing(&f, si);
     if (!d) continue;
     fc_stats st = {0};
     fc_count(bg_diagram_scene(d), &st);
@@ -1199,7 +1211,6 @@ static void test_frames_on_branches(void) {
     bg_diagram_free(d);
   }
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 /* A one-port on a diagonal cell of its hub (the junction's four sides
@@ -1639,14 +1650,10 @@ static double bond_length(const bg_scene *s, int id) {
  * side: bond 7 at most a quarter longer than bond 3 in every style (the
  * labels above the junctions and the end circles differ). */
 static void test_compact_columns(void) {
-  bg_strbuf src = {0};
-  OK(read_text(BG_SOURCE_DIR "/examples/gallery/quarter_car.bg", &src));
   fx f;
-  int rc = fm_load(&f, "quarter_car", bg_sb_str(&src));
-  OK(rc == 0);
+  int rc = file_model(&f, "examples/gallery/quarter_car.bg", "quarter_car");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
-    OK(d != NULL);
+    bg_diagram *d = style_drawing(&f, si);
     if (!d) continue;
     double b3 = bond_length(bg_diagram_scene(d), 3), b7 = bond_length(bg_diagram_scene(d), 7);
     BG_T_REPORT(b3 > 0 && b7 <= 1.25 * b3, "quarter_car %s: bond 7 %.1f pt, bond 3 %.1f pt (<= 1.25 times)",
@@ -1654,7 +1661,6 @@ static void test_compact_columns(void) {
     bg_diagram_free(d);
   }
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 /* A user state's integrator in the ranks (issue 31): a loudspeaker under
@@ -1668,14 +1674,10 @@ static void test_compact_columns(void) {
  * one row (their labels' middles within 1 pt), no bond with a corner,
  * nothing crossing, in every style. */
 static void test_state_feedback(void) {
-  bg_strbuf src = {0};
-  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/speaker_pi.bg", &src));
   fx f;
-  int rc = fm_load(&f, "speaker_pi", bg_sb_str(&src));
-  OK(rc == 0);
+  int rc = file_model(&f, "tests/data/figures/speaker_pi.bg", "speaker_pi");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
-    OK(d != NULL);
+    bg_diagram *d = style_drawing(&f, si);
     if (!d) continue;
     fc_stats st = {0};
     fc_count(bg_diagram_scene(d), &st);
@@ -1700,7 +1702,6 @@ static void test_state_feedback(void) {
     bg_diagram_free(d);
   }
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 /* ---------------------------------------------------------------- the tutorial and the gallery */
