@@ -355,9 +355,6 @@ static int hub_bfs(const grid *g, int s, int *dist, int *q) {
   return qt;
 }
 
-/* The part of hubs q[0..n) as a mesh: col and row of each, or nothing.
- * da, db, ds: per node, -1 for the part's hubs on entry (the caller
- * resets them); qq: a queue. */
 /* Whether hub v may be a mesh's corner: two hub bonds, to hubs of two
  * hub bonds each. */
 static int corner_like(const grid *g, int v) {
@@ -369,6 +366,9 @@ static int corner_like(const grid *g, int v) {
   return 1;
 }
 
+/* The part of hubs q[0..n) as a mesh: col and row of each, or nothing.
+ * da, db, ds: per node, -1 for the part's hubs on entry (the caller
+ * resets them); qq: a queue. */
 static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, int *qq) {
   int corner[4], nc = 0, src = -1;
   for (int i = 0; i < n; i++) {
@@ -1397,8 +1397,6 @@ static double *line_centres(const grid *g, const int *cell, const double *size, 
   return c;
 }
 
-/* What takes room in a line of cells across the one being placed: a node
- * (half its size) or a bond's run through a cell (no size). */
 static double *line_centres(const grid *g, const int *cell, const double *size, int lo, int hi, double gap);
 
 typedef struct room_item {
@@ -1450,8 +1448,8 @@ static int room_items(const grid *g, const double *width, room_item **out) {
  * between them apart, each column at least `gap` after the one before (issue
  * 31, columns compacted: line_centres made a column as wide as its widest
  * node in any row, so a one-port hung beside a junction above the main row
- * widened the main row's bond under it: the quarter car's bond 7 was twice
- * bond 3). A slanted one-port bond (on a diagonal cell) keeps the run across
+ * widened the main row's bond under it: the quarter car's bond 7 was 1.58
+ * times bond 3). A slanted one-port bond (on a diagonal cell) keeps the run across
  * the columns line_centres gives it: packed closer, it ran steeper past the
  * strokes and numbers round it. For a grid whose hub bonds all have routes
  * (compactable). Linear but for the sort. */
