@@ -1295,6 +1295,43 @@ static void ring_leaves(grid *g, int v, const int *leaf, int nl) {
  * (near_cell): the barb rule turned the reaction rings' species
  * capacitors away from their reactions, 17 -> 18 signal crossings in
  * reactions12 and 163 -> 174 in reactions60. */
+static int compactable(const grid *g);
+
+/* The node at the other end of one-port w's first signal, or -1. */
+static int signal_partner(const grid *g, int w) {
+  const bg_diagram_layout *d = g->d;
+  const bg_model *m = d->m;
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
+    int p = from == w ? to : to == w ? from : -1;
+    if (p >= 0 && p < g->n && p != w) return drawn_by(d, p);
+  }
+  return -1;
+}
+
+/* A one-port with a signal hung above or below its hub while the signal's
+ * other end is on the far side of the hub's row goes to the other side
+ * when that cell is free: its signal then need not cross the row (issue
+ * 31: a robot joint's spring under its junction, its signal to an
+ * amplifier above the row, crossed the bond between; a modulated ladder of
+ * 9 sections 5 -> 1 signal crossings, of 120 drawn on the grid 87 -> 17).
+ * Only where every hub bond has its grid route (compactable): a bond drawn
+ * round the nodes later is routed only where its straight line meets a
+ * box, and a one-port moved off its line left reactions20's chord 87
+ * slanted, seven signals across it at a slant. */
+static void face_signals(grid *g) {
+  for (int w = 0; w < g->n; w++) {
+    if (g->hub[w] || g->deg[w] != 1 || !g->signalled[w] || !g->placed[w] || !own_node(g->d, w)) continue;
+    int v = other(g, g->adj[g->adr[w]], w), p = signal_partner(g, w);
+    if (!g->hub[v] || p < 0 || !g->placed[p] || g->gx[w] != g->gx[v] || abs(g->gy[w] - g->gy[v]) != 1) continue;
+    int dy = g->gy[w] - g->gy[v], dp = g->gy[p] - g->gy[v], side = dy < 0 ? SIDE_U : SIDE_D, flip = dy < 0 ? SIDE_D : SIDE_U;
+    if (dp * dy >= 0 || (g->sides[v] & flip) || !cell_free(g, g->gx[v], g->gy[v] - dy)) continue;
+    g->val[cell_slot(g, cell_key(g->gx[w], g->gy[w]))] = RELEASED;
+    g->sides[v] &= (unsigned char)~side;
+    put_leaf(g, v, w, g->gx[v], g->gy[v] - dy, flip);
+  }
+}
+
 static void place_leaves(grid *g) {
   instance_centres(g);
   int *leaf = bg_xcalloc((size_t)g->n + 1, sizeof(int));
@@ -1318,6 +1355,7 @@ static void place_leaves(grid *g) {
     }
   }
   free(leaf);
+  if (compactable(g)) face_signals(g);
 }
 
 /* The node a float sits beside: for a user-state integrator the element
