@@ -54,7 +54,7 @@ typedef struct grid {
   int *orbit;
   double *ring_x, *ring_y, *ring_w, *ring_h;
   int own_ranks;            /* ranks from bg_grid_tree_ranks, not dot: a large forest */
-  int spare_sides;          /* routing: keep off cells beside other hubs (try_route) */
+  int spare_sides;          /* routing: keep off cells beside other hubs (walk) */
   unsigned char *turned;    /* nodes of parts whose bands turn upside down (NULL: none) */
   const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
   const double *rw, *rh;
@@ -684,24 +684,6 @@ static int side_of(int dx, int dy) {
   return dx > 0 ? SIDE_R : dx < 0 ? SIDE_L : dy < 0 ? SIDE_U : SIDE_D;
 }
 
-/* Walks the route through pts[0..n) (axis-parallel legs): with take == 0
- * whether every cell but the two ends is free, with take 1 claims them for
- * edge e, with take -1 gives them back. */
-static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
-  for (int k = 0; k + 1 < n; k++) {
-    int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
-    if (sx && sy) return 0;
-    while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
-      x += sx, y += sy;
-      if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
-      if (take > 0) cell_take(g, x, y, -2 - e);
-      else if (take < 0) g->val[cell_slot(g, cell_key(x, y))] = RELEASED;
-      else if (!cell_free(g, x, y)) return 0;
-    }
-  }
-  return 1;
-}
-
 /* Whether cell (x, y) is beside a hub other than u and v: where one of
  * that hub's one-ports would go. */
 static int beside_hub(const grid *g, int x, int y, int u, int v) {
@@ -712,17 +694,23 @@ static int beside_hub(const grid *g, int x, int y, int u, int v) {
   return 0;
 }
 
-/* Whether the route through pts[0..n) passes beside a hub other than its ends. */
-static int passes_hubs(const grid *g, const int (*pts)[2], int n, int u, int v) {
+/* Walks the route through pts[0..n) (axis-parallel legs): with take == 0
+ * whether every cell but the two ends is free (and, while spare_sides is
+ * set, beside no hub but e's ends), with take 1 claims them for edge e,
+ * with take -1 gives them back. */
+static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
   for (int k = 0; k + 1 < n; k++) {
     int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
+    if (sx && sy) return 0;
     while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
       x += sx, y += sy;
       if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
-      if (beside_hub(g, x, y, u, v)) return 1;
+      if (take > 0) cell_take(g, x, y, -2 - e);
+      else if (take < 0) g->val[cell_slot(g, cell_key(x, y))] = RELEASED;
+      else if (!cell_free(g, x, y) || (g->spare_sides && beside_hub(g, x, y, g->et[e], g->eh[e]))) return 0;
     }
   }
-  return 0;
+  return 1;
 }
 
 static int try_route(grid *g, int e, const int (*pts)[2], int n) {
@@ -730,7 +718,6 @@ static int try_route(grid *g, int e, const int (*pts)[2], int n) {
   int su = side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
   int sv = side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
   if ((g->sides[u] & su) || (g->sides[v] & sv) || !walk(g, pts, n, 0, e)) return 0;
-  if (g->spare_sides && passes_hubs(g, pts, n, u, v)) return 0;
   walk(g, pts, n, 1, e);
   g->sides[u] |= (unsigned char)su, g->sides[v] |= (unsigned char)sv;
   g->bent[e] = n - 2;
@@ -1297,16 +1284,20 @@ static void ring_leaves(grid *g, int v, const int *leaf, int nl) {
  * reactions12 and 163 -> 174 in reactions60. */
 static int compactable(const grid *g);
 
-/* The node at the other end of one-port w's first signal, or -1. */
-static int signal_partner(const grid *g, int w) {
+/* Per node, the node at the other end of its first signal that is not
+ * itself (as drawn), or -1: one pass over the signals. */
+static int *signal_partners(const grid *g) {
   const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
+  int *partner = bg_xmalloc(((size_t)g->n + 1) * sizeof *partner);
+  for (int v = 0; v < g->n; v++) partner[v] = -1;
   for (int i = 0; i < m->nsignal; i++) {
     int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
-    int p = from == w ? to : to == w ? from : -1;
-    if (p >= 0 && p < g->n && p != w) return drawn_by(d, p);
+    if (from < 0 || from >= g->n || to < 0 || to >= g->n || from == to) continue;
+    if (partner[from] < 0) partner[from] = drawn_by(d, to);
+    if (partner[to] < 0) partner[to] = drawn_by(d, from);
   }
-  return -1;
+  return partner;
 }
 
 /* A one-port with a signal hung above or below its hub while the signal's
@@ -1320,9 +1311,10 @@ static int signal_partner(const grid *g, int w) {
  * box, and a one-port moved off its line left reactions20's chord 87
  * slanted, seven signals across it at a slant. */
 static void face_signals(grid *g) {
+  int *partner = signal_partners(g);
   for (int w = 0; w < g->n; w++) {
     if (g->hub[w] || g->deg[w] != 1 || !g->signalled[w] || !g->placed[w] || !own_node(g->d, w)) continue;
-    int v = other(g, g->adj[g->adr[w]], w), p = signal_partner(g, w);
+    int v = other(g, g->adj[g->adr[w]], w), p = partner[w];
     if (!g->hub[v] || p < 0 || !g->placed[p] || g->gx[w] != g->gx[v] || abs(g->gy[w] - g->gy[v]) != 1) continue;
     int dy = g->gy[w] - g->gy[v], dp = g->gy[p] - g->gy[v], side = dy < 0 ? SIDE_U : SIDE_D, flip = dy < 0 ? SIDE_D : SIDE_U;
     if (dp * dy >= 0 || (g->sides[v] & flip) || !cell_free(g, g->gx[v], g->gy[v] - dy)) continue;
@@ -1330,6 +1322,7 @@ static void face_signals(grid *g) {
     g->sides[v] &= (unsigned char)~side;
     put_leaf(g, v, w, g->gx[v], g->gy[v] - dy, flip);
   }
+  free(partner);
 }
 
 static void place_leaves(grid *g) {
