@@ -445,12 +445,19 @@ static bg_diagram *default_drawing(fx *f, const char *name, const char *text, co
   return d;
 }
 
-/* Model f drawn in styles[si] with the default layers; NULL when that
- * fails (reported). The caller frees it. */
-static bg_diagram *style_drawing(fx *f, int si) {
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = styles[si], .style_dir = BG_SOURCE_DIR "/styles"};
-  bg_diagram *d = bg_diagram_build(f->m, &f->a, &o, &f->dg);
+static bg_diagram *build(fx *f, const char *style, unsigned show, int hk, int hi) {
+  bg_render_opts o = {.show = show, .style = style, .style_dir = BG_SOURCE_DIR "/styles",
+                      .highlight_kind = hk, .highlight_index = hi};
+  return bg_diagram_build(f->m, &f->a, &o, &f->dg);
+}
+
+/* Model f drawn in styles[si] with the default layers, its faults counted
+ * into *st (fc_count) when st is given; NULL when drawing fails
+ * (reported). The caller frees it. */
+static bg_diagram *style_drawing(fx *f, int si, fc_stats *st) {
+  bg_diagram *d = build(f, styles[si], BG_SHOW_DEFAULT, 0, 0);
   OK(d != NULL);
+  if (d && st) fc_count(bg_diagram_scene(d), st);
   return d;
 }
 
@@ -1097,10 +1104,9 @@ static void test_frames_held_out(void) {
   int rc = fm_load(&f, "stages4", bg_sb_str(&src));
   BG_T_REPORT(rc == 0, "stages4 compiles");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
-    if (!d) continue;
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
     BG_T_REPORT(st.frames == 20, "stages4 %s: 20 frames (%d)", styles[si], st.frames);
     BG_T_REPORT(st.frame_cross <= max_cross[si] && st.foreign <= max_foreign[si],
                 "stages4 %s: frames crossing %d (<= %d), foreign %d (<= %d)", styles[si], st.frame_cross,
@@ -1133,10 +1139,9 @@ static void test_frames_in_rings(void) {
     int rc = fm_load(&f, name, bg_sb_str(&src));
     BG_T_REPORT(rc == 0, "%s compiles", name);
     for (int si = 0; rc == 0 && si < (seed < 4 ? 3 : 1); si++) {
-      bg_diagram *d = style_drawing(&f, si);
-      if (!d) continue;
       fc_stats st = {0};
-      fc_count(bg_diagram_scene(d), &st);
+      bg_diagram *d = style_drawing(&f, si, &st);
+      if (!d) continue;
       BG_T_REPORT(st.frames >= 3 && st.frame_cross == 0 && st.foreign == 0,
                   "%s %s: %d frames, crossing %d, foreign %d (0, 0)", name, styles[si], st.frames, st.frame_cross,
                   st.foreign);
@@ -1177,10 +1182,9 @@ static void test_two_row_meshes(void) {
       BG_T_REPORT(rc == 0, "%s compiles", name);
     }
     for (int si = 0; rc == 0 && si < 3; si++) {
-      bg_diagram *d = style_drawing(&f, si);
-      if (!d) continue;
       fc_stats st = {0};
-      fc_count(bg_diagram_scene(d), &st);
+      bg_diagram *d = style_drawing(&f, si, &st);
+      if (!d) continue;
       int bent = bonds_bent(bg_diagram_scene(d));
       BG_T_REPORT(bent == 0 && st.slanted == 0 && st.crossings == 0,
                   "%s %s: bonds with a corner %d, slanted %d, crossing %d (all 0)", name, styles[si], bent, st.slanted,
@@ -1203,10 +1207,9 @@ static void test_frames_on_branches(void) {
   fx f;
   int rc = file_model(&f, "tests/data/figures/tee_network.bg", "tee_network");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
-    if (!d) continue;
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
     BG_T_REPORT(st.frames == 7 && st.frame_cross == 0 && st.foreign == 0 && st.crossings == 0,
                 "tee_network %s: %d frames (7), crossing %d, foreign %d, bonds crossing %d (0)", styles[si], st.frames,
                 st.frame_cross, st.foreign, st.crossings);
@@ -1269,12 +1272,6 @@ static void test_grid_diagonals(void) {
 }
 
 /* ---------------------------------------------------------------- conventions */
-static bg_diagram *build(fx *f, const char *style, unsigned show, int hk, int hi) {
-  bg_render_opts o = {.show = show, .style = style, .style_dir = BG_SOURCE_DIR "/styles",
-                      .highlight_kind = hk, .highlight_index = hi};
-  return bg_diagram_build(f->m, &f->a, &o, &f->dg);
-}
-
 static const bg_scene_item *item(const bg_scene *s, const char *role) {
   for (int i = 0; i < s->nitem; i++)
     if (!strcmp(s->item[i].role, role)) return &s->item[i];
@@ -1595,22 +1592,16 @@ static void test_straight_branches(void) {
   bg_sb_free(&qc);
   /* a side is moved only where its routes' corners are free too (a corner
    * landed on a junction of this tree: two element labels on one place) */
-  bg_strbuf rt = {0};
-  OK(read_text(BG_SOURCE_DIR "/tests/data/figures/randtree100_5.bg", &rt));
   fx f;
-  int rc = fm_load(&f, "randtree100_5", bg_sb_str(&rt));
-  OK(rc == 0);
+  int rc = file_model(&f, "tests/data/figures/randtree100_5.bg", "randtree100_5");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
-    OK(d != NULL);
     fc_stats st = {0};
-    if (d) fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
     BG_T_REPORT(st.nodes_overlap == 0 && st.bonds == 209, "randtree100_5 %s: %d element labels on one another, %d bonds",
                 styles[si], st.nodes_overlap, st.bonds);
     bg_diagram_free(d);
   }
   fx_free(&f);
-  bg_sb_free(&rt);
   static const fm_model trees[] = {{"tree25", fm_make_tree, 25},    {"tree40", fm_make_tree, 40},
                                    {"branchy12", fm_make_branchy, 12}, {"branchy20", fm_make_branchy, 20}};
   int total = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
@@ -1655,7 +1646,7 @@ static void test_compact_columns(void) {
   fx f;
   int rc = file_model(&f, "examples/gallery/quarter_car.bg", "quarter_car");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
+    bg_diagram *d = style_drawing(&f, si, NULL);
     if (!d) continue;
     double b3 = bond_length(bg_diagram_scene(d), 3), b7 = bond_length(bg_diagram_scene(d), 7);
     BG_T_REPORT(b3 > 0 && b7 <= 1.25 * b3, "quarter_car %s: bond 7 %.1f pt, bond 3 %.1f pt (<= 1.25 times)",
@@ -1679,10 +1670,9 @@ static void test_state_feedback(void) {
   fx f;
   int rc = file_model(&f, "tests/data/figures/speaker_pi.bg", "speaker_pi");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
-    if (!d) continue;
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
     int bent = bonds_bent(bg_diagram_scene(d));
     BG_T_REPORT(st.spine_bent == 0 && st.crossings == 0 && st.sig_cross == 0 && bent == 0,
                 "speaker_pi %s: spine bonds bent %d, bonds with a corner %d, crossings %d, signal crossings %d (all 0)",
@@ -1717,10 +1707,9 @@ static void test_signals_face(void) {
   fx f;
   int rc = file_model(&f, "tests/data/figures/pathway.bg", "pathway");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
-    if (!d) continue;
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
     BG_T_REPORT(st.sig_cross == 0 && st.crossings == 0, "pathway %s: signal crossings %d, bond crossings %d (0)",
                 styles[si], st.sig_cross, st.crossings);
     bg_diagram_free(d);
@@ -1731,10 +1720,9 @@ static void test_signals_face(void) {
   rc = fm_load(&f, "modladder9", bg_sb_str(&src));
   BG_T_REPORT(rc == 0, "modladder9 compiles");
   for (int si = 0; rc == 0 && si < 3; si++) {
-    bg_diagram *d = style_drawing(&f, si);
-    if (!d) continue;
     fc_stats st = {0};
-    fc_count(bg_diagram_scene(d), &st);
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
     BG_T_REPORT(st.sig_cross <= 1, "modladder9 %s: signal crossings %d (<= 1; 5 before)", styles[si], st.sig_cross);
     bg_diagram_free(d);
   }
