@@ -1039,7 +1039,8 @@ static void straighten_branches(grid *g) {
     if (fits) {
       unroute(g, e);
       move_side(g, &mv);
-      int pts[2][2] = {{g->gx[mv.p], g->gy[mv.p]}, {g->gx[mv.c], g->gy[mv.c]}};
+      int t = g->et[e], h = g->eh[e]; /* tail first: try_route gives pts[0]'s side to the tail */
+      int pts[2][2] = {{g->gx[t], g->gy[t]}, {g->gx[h], g->gy[h]}};
       try_route(g, e, (const int(*)[2])pts, 2);
     }
     for (int i = 0; i < nq; i++) mark[mv.q[i]] = 0;

@@ -360,6 +360,25 @@ __attribute__((unused)) static void fm_parts(bg_strbuf *b, int k) {
   }
 }
 
+/* The model `text` with some of its bonds turned round: each bond line
+ * (`bond A -> B`, no number or options) turned with probability one half.
+ * Users write bonds the way power flows in their model, a source's on a
+ * branch pointing at the main chain; the generators above point every bond
+ * away from the source. A junction takes bonds either way and a one-port's
+ * law keeps its physics (docs/format.md), so the model stays valid. */
+__attribute__((unused)) static void fm_flip_bonds(bg_strbuf *b, const char *text, unsigned seed) {
+  for (const char *p = text; *p;) {
+    const char *eol = strchr(p, '\n'), *end = eol ? eol : p + strlen(p);
+    char a[64], h[64];
+    int len = (int)(end - p), used = 0;
+    if (len < 120 && sscanf(p, "bond %63s -> %63[^ \n]%n", a, h, &used) == 2 && used == len && fm_rand(&seed) % 2)
+      bg_sb_printf(b, "bond %s -> %s\n", h, a);
+    else
+      bg_sb_printf(b, "%.*s\n", len, p);
+    p = eol ? eol + 1 : end;
+  }
+}
+
 /* A generated model for a table of them: its name and its maker with n. */
 typedef struct fm_model {
   const char *name;

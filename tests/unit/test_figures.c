@@ -1619,6 +1619,63 @@ static void test_straight_branches(void) {
   BG_T_REPORT(total <= 66, "trees: %d bonds with a corner (<= 66; 226 before)", total);
 }
 
+/* The faults of model `text` (name) in styles[si], added to *st; 0 when it
+ * does not compile or draw (reported). */
+static int faults_of(const char *name, const char *text, int si, fc_stats *st) {
+  fx f;
+  int rc = fm_load(&f, name, text);
+  BG_T_REPORT(rc == 0, "%s compiles", name);
+  bg_diagram *d = rc == 0 ? style_drawing(&f, si, st) : NULL;
+  bg_diagram_free(d);
+  fx_free(&f);
+  return d != NULL;
+}
+
+/* Bonds either way round (issue 31): a branch straightened onto its hub's
+ * row or column (straighten_branches) gave the hub the side of the bond's
+ * far end when the bond pointed from the branch to the hub, so the side
+ * the bond takes looked free and the free one taken: a one-port there went
+ * to a diagonal (a held-out ring of five buses: its second generator's bus
+ * capacitor slanted). The generators pointed every bond away from the
+ * source, so none showed it. Random chains with branches and random trees,
+ * half their bonds turned round (fm_flip_bonds), in every style: no more
+ * bonds slanted or crossing than with every bond pointing away (60
+ * slanted against 2 before). */
+static void test_bond_directions(void) {
+  int slanted = 0, forward = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
+  for (int seed = 0; seed < 40; seed++) {
+    bg_strbuf src = {0}, flipped = {0};
+    char name[32];
+    if (seed % 2) fm_branchy(&src, 8 + seed % 13, 101u + (unsigned)seed);
+    else fm_tree(&src, 12 + seed % 17, 211u + (unsigned)seed);
+    fm_flip_bonds(&flipped, bg_sb_str(&src), 307u + (unsigned)seed);
+    snprintf(name, sizeof name, "flipped%d", seed);
+    dump_model(name, &flipped);
+    for (int si = 0; si < (seed < 8 ? 3 : 1); si++) {
+      fc_stats st = {0}, fw = {0};
+      if (!faults_of(name, bg_sb_str(&flipped), si, &st) || !faults_of(name, bg_sb_str(&src), si, &fw)) continue;
+      if (verbose)
+        printf("%s %s: slanted %d (bonds away: %d), crossings %d (%d), touching %d (%d)\n", name, styles[si],
+               st.slanted, fw.slanted, st.crossings, fw.crossings, st.touching, fw.touching);
+      BG_T_REPORT(st.slanted <= fw.slanted && st.crossings <= fw.crossings && st.touching <= fw.touching,
+                  "%s %s: slanted %d, crossings %d, strokes touching %d (bonds away: %d, %d, %d)", name, styles[si],
+                  st.slanted, st.crossings, st.touching, fw.slanted, fw.crossings, fw.touching);
+      slanted += st.slanted, forward += fw.slanted;
+    }
+    bg_sb_free(&src), bg_sb_free(&flipped);
+  }
+  printf("bonds either way: %d slanted (%d with every bond pointing away)\n", slanted, forward);
+  fx f;
+  int rc = file_model(&f, "tests/data/figures/bus_ring.bg", "bus_ring");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram_free(style_drawing(&f, si, &st));
+    BG_T_REPORT(st.slanted == 0 && st.crossings == 0, "bus_ring %s: %d slanted, %d crossings (0, 0)", styles[si],
+                st.slanted, st.crossings);
+  }
+  fx_free(&f);
+}
+
 /* The drawn length of bond id (its half arrow left out), -1 when absent. */
 static double bond_length(const bg_scene *s, int id) {
   fc_scene f;
@@ -1858,6 +1915,7 @@ int main(void) {
   RUN(test_compact_columns);
   RUN(test_state_feedback);
   RUN(test_signals_face);
+  RUN(test_bond_directions);
   RUN(test_large_figures);
   RUN(test_large_forests);
   RUN(test_held_out_models);
