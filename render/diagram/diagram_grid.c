@@ -8,7 +8,8 @@
  * (the hub before it nearest in dot's order), the child with the longest
  * chain onward continues the parent's row (so the longest source-to-load
  * chain is the main row) and the other children's subtrees are stacked
- * above and below it, as near as their rows allow (assign_rows); a part whose
+ * above and below it, as near as their rows allow, in a tree in the
+ * parent's own column, their bonds straight (assign_rows); a part whose
  * hubs form a rectangular mesh takes the mesh's lattice instead (mesh_rows). Grid cells: hubs at even (gx, gy); their one-ports
  * (leaves) go to a free side cell next to them (left, above, below, right, in
  * the order that best keeps dot's directions), else a diagonal one. A bond
@@ -40,6 +41,8 @@ typedef struct grid {
   unsigned char *placed, *hub, *sides;
   unsigned char *signalled; /* nodes where a signal starts or ends (signal_ends) */
   unsigned char *mesh; /* hubs placed on a mesh's lattice (mesh_rows): their part is not folded */
+  int *tree_par;      /* hubs: the hub they hang from in the tree drawing (-1: a root; assign_rows) */
+  unsigned char *spine; /* hubs: on their root's row chain (the root, the child continuing it, ...) */
   int *col, *row;     /* hubs: dot column, row */
   int *band;          /* hubs: the band of their part's fold they are in (stack_components) */
   /* cells: open addressing, key (gx, gy), value the owner (node n, or -2 - edge) */
@@ -250,24 +253,36 @@ static int contour_stack(contour *acc, int alast, const contour *s, int slast, i
 /* Stacks kids[0..n) round kids[cont] (offset 0, its contour taken over
  * into acc): those before it upwards, nearest first, those after it
  * downwards; each one's offset into off[]. */
-static void stack_children(contour *cs, const int *last, int *off, const int *kids, int n, int cont, contour *acc,
-                           int alast) {
+static void stack_children(contour *cs, const int *last, const int *shift, int *off, const int *kids, int n, int cont,
+                           contour *acc, int alast) {
   for (int dir = -1; dir <= 1; dir += 2) {
     int least = 0;
     for (int i = cont + dir; i >= 0 && i < n; i += dir) {
       int s = kids[i];
-      off[s] = contour_stack(acc, alast, &cs[s], last[s], dir, least + dir);
+      off[s] = contour_stack(acc, alast, &cs[s], last[s] - shift[s], dir, least + dir);
       least = off[s];
       free(cs[s].top), free(cs[s].bot), memset(&cs[s], 0, sizeof cs[s]);
     }
   }
 }
 
+static int find(int *up, int v);
+static unsigned char *cyclic_parts(const grid *g, int *up);
+
 static void assign_rows(grid *g, const int *h, int nh) {
   int n = g->n, *par = bg_xcalloc((size_t)n + 1, sizeof(int)), *last = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *reach = bg_xcalloc((size_t)n + 1, sizeof(int)), *cont = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *off = bg_xcalloc((size_t)n + 1, sizeof(int)), *kids = bg_xcalloc((size_t)nh + 1, sizeof(int));
+  int *shift = bg_xcalloc((size_t)n + 1, sizeof(int)); /* columns a branch moves left, then summed down */
+  /* per hub its instance (-1: the model's own) and its subtree's: the same
+   * for every hub in it, else -2 (children merged before their parents) */
+  int *inst = bg_xmalloc(((size_t)n + 1) * sizeof(int)), *uni = bg_xmalloc(((size_t)n + 1) * sizeof(int));
+  for (int v = 0; v < n; v++) inst[v] = uni[v] = v < g->d->m->nelem ? g->d->m->elem_inst[v] : -1;
   contour *cs = bg_xcalloc((size_t)n + 1, sizeof(contour));
+  int *up = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int v = 0; v < n; v++) up[v] = v;
+  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
+  unsigned char *cyclic = cyclic_parts(g, up);
   for (int i = 0; i < nh; i++) par[h[i]] = parent_of(g, h[i]), last[h[i]] = g->col[h[i]], reach[h[i]] = 1, cont[h[i]] = -1;
   for (int i = nh - 1; i >= 0; i--) { /* children lie in later columns: done before their parent */
     int v = h[i], p = par[v];
@@ -280,6 +295,7 @@ static void assign_rows(grid *g, const int *h, int nh) {
       cont[p] = v;
     if (last[v] > last[p]) last[p] = last[v];
     if (reach[v] + 1 > reach[p]) reach[p] = reach[v] + 1;
+    if (uni[v] != uni[p]) uni[p] = -2;
   }
   for (int i = nh - 1; i >= 0; i--) { /* each hub's contour from its children's */
     int v = h[i], nk = 0, at = 0;
@@ -301,7 +317,37 @@ static void assign_rows(grid *g, const int *h, int nh) {
     int q = m - 1, want = m == 0 ? 0 : at < q / 2 ? q / 2 : at > q - q / 2 ? q - q / 2 : at;
     for (; at < want; at++) kids[at] = kids[at + 1], kids[at + 1] = cont[v];
     for (; at > want; at--) kids[at] = kids[at - 1], kids[at - 1] = cont[v];
-    if (cont[v] >= 0) off[cont[v]] = 0, stack_children(cs, last, off, kids, m, at, &acc, last[v]);
+    /* in a part without a cycle a branch hangs in v's own column, its
+     * bond straight up or down (a book's drawing; the grid pass's
+     * straighten_branches did it after the fact, where the cells were
+     * free), and the rows that bond crosses in v's column are taken, so
+     * no sibling of v is stacked across it (a random tree's junction, its
+     * four sides taken, reached its lowest branch by a slanted line
+     * across another branch's bond) */
+    int tree = !cyclic[find(up, v)], iv = last[v] - g->col[v];
+    for (int k = 0; k < m; k++) {
+      /* not where the branch's own column holds some of it on v's side
+       * (a branch of the branch hung towards v): the bond would run
+       * through it; such a branch hangs a column on, its bond an elbow */
+      int s = kids[k], is = last[s] - g->col[s];
+      if (!tree || s == cont[v]) { /* the continuing child's contour is acc's now */
+        shift[s] = 0;
+        continue;
+      }
+      int toward = k < at ? cs[s].bot[is] > 0 : cs[s].top[is] < 0;
+      /* with submodels, only a branch wholly in v's instance, or from the
+       * model's own hub (as straighten_branches moves sides: a tee's
+       * branch pipe and the tee beyond it went into the first tee's
+       * frame) */
+      int framed = inst[v] >= 0 && uni[s] != inst[v];
+      shift[s] = toward || framed ? 0 : g->col[s] - g->col[v];
+    }
+    if (cont[v] >= 0) off[cont[v]] = 0, stack_children(cs, last, shift, off, kids, m, at, &acc, last[v]);
+    for (int k = 0; k < m && tree; k++) {
+      if (kids[k] == cont[v]) continue;
+      acc.top[iv] = off[kids[k]] < acc.top[iv] ? off[kids[k]] : acc.top[iv];
+      acc.bot[iv] = off[kids[k]] > acc.bot[iv] ? off[kids[k]] : acc.bot[iv];
+    }
     cs[v] = acc;
   }
   /* the roots, in dot's order, stacked below one another */
@@ -316,8 +362,17 @@ static void assign_rows(grid *g, const int *h, int nh) {
     least = off[v], first = 0;
   }
   for (int i = 0; i < nh; i++) g->row[h[i]] = (par[h[i]] >= 0 ? g->row[par[h[i]]] : 0) + off[h[i]];
+  for (int i = 0; i < nh; i++) /* parents first (earlier columns): each subtree moved with its branch */
+    shift[h[i]] += par[h[i]] >= 0 ? shift[par[h[i]]] : 0;
+  for (int i = 0; i < nh; i++) g->col[h[i]] -= shift[h[i]];
+  for (int i = 0; i < nh; i++) { /* parents come first: earlier columns */
+    int v = h[i], p = par[v];
+    g->spine[v] = p < 0 || (g->spine[p] && cont[p] == v);
+  }
   for (int v = 0; v < n; v++) free(cs[v].top), free(cs[v].bot);
-  free(all.top), free(all.bot), free(cs), free(par), free(last), free(reach), free(cont), free(off), free(kids);
+  g->tree_par = par;
+  free(up), free(cyclic), free(shift), free(inst), free(uni);
+  free(all.top), free(all.bot), free(cs), free(last), free(reach), free(cont), free(off), free(kids);
 }
 
 /* ---------------------------------------------------------------- meshes */
@@ -478,10 +533,12 @@ static void instance_columns(const grid *g, const int *h, int nh, int *up, int *
  * frames, each fold at the column boundary near the even place (at least
  * half a band on) that cuts the fewest instances, so a frame stays whole in
  * one band where its columns fit one (a fold through an instance put its
- * nodes on two bands, its frame round both, across its siblings). Returns
- * the number of bands; start[0] = 0. */
+ * nodes on two bands, its frame round both, across its siblings); in a
+ * tree, away from boundaries where the fold's bond down from the band's
+ * last spine hub would meet a branch (blocked, NULL: none). Returns the
+ * number of bands; start[0] = 0. */
 static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo, const int *ihi, const int *icomp,
-                       int *start) {
+                       const unsigned char *blocked, int *start) {
   int nb = 0, *cut = NULL;
   if (g->d->m->ninst) { /* cut[b]: instances with columns on both sides of boundary b (before column b) */
     cut = bg_xcalloc((size_t)ncol + 2, sizeof *cut);
@@ -492,10 +549,10 @@ static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo,
   start[nb++] = 0;
   for (int s = 0; ncol - s > wrap;) {
     int left = (ncol - s + wrap - 1) / wrap, ideal = (ncol - s + left - 1) / left, best = s + ideal;
-    if (cut) {
+    if (cut || blocked) {
       long best_cost = -1;
       for (int b = s + (ideal + 1) / 2; b <= s + wrap && b < ncol; b++) {
-        long cost = (long)cut[b] * 4 * ncol + abs(b - (s + ideal));
+        long cost = (long)(cut ? cut[b] : 0) * 4 * ncol + (long)(blocked ? blocked[b] : 0) * 2 * ncol + abs(b - (s + ideal));
         if (best_cost < 0 || cost < best_cost) best_cost = cost, best = b;
       }
     }
@@ -571,6 +628,87 @@ static double column_pitch(const grid *g, const int *h, int nh) {
   return ncol ? sum / ncol / (hh + lh + 2 * ygap) : 0;
 }
 
+/* Per component root (find(up, .)): whether the part has a cycle (no
+ * fewer bonds than nodes). */
+static unsigned char *cyclic_parts(const grid *g, int *up) {
+  int n = g->n, *nodes_in = bg_xcalloc((size_t)n + 1, sizeof(int));
+  unsigned char *cyclic = bg_xcalloc((size_t)n + 1, 1);
+  for (int v = 0; v < n; v++) nodes_in[find(up, v)]++;
+  for (int e = 0; e < g->ne; e++) nodes_in[find(up, g->et[e])]--;
+  for (int v = 0; v < n; v++) cyclic[v] = find(up, v) == v && nodes_in[v] <= 0;
+  free(nodes_in);
+  return cyclic;
+}
+
+/* The band every hub is drawn in (g->band): its column's, and in a part
+ * without a cycle a branch's the band of the spine hub it hangs from, so a
+ * fold never cuts a branch from its hub (issue 31: a chain's branch three
+ * junctions long, hung from the band's last columns, had its far end in
+ * the next band's rows, its bond round the figure across two others). A
+ * ring's other way is a branch of the tree drawing; it folds with its
+ * columns, as the ribbon needs (cyclic parts keep the column's band). */
+static void hub_bands(grid *g, const int *h, int nh, int *up, const int *nband, const int *boff, const int *start,
+                      const unsigned char *cyclic) {
+  for (int i = 0; i < nh; i++) { /* parents before children: earlier columns */
+    int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1, p = g->tree_par[v];
+    if (!g->spine[v] && p >= 0 && !cyclic[c]) {
+      g->band[v] = g->band[p];
+      continue;
+    }
+    const int *st = start + boff[c];
+    while (a < z) { /* the band holding v's column */
+      int mid = (a + z + 1) / 2;
+      if (st[mid] <= g->col[v]) a = mid;
+      else z = mid - 1;
+    }
+    g->band[v] = a;
+  }
+}
+
+/* The hubs of each part (component root c): chub[first[c] .. first[c + 1]),
+ * in h's order. */
+static void hubs_by_part(const grid *g, const int *h, int nh, int *up, int **first, int **chub) {
+  int *f = bg_xcalloc((size_t)g->n + 2, sizeof(int)), *at = bg_xcalloc((size_t)g->n + 2, sizeof(int));
+  int *ch = bg_xcalloc((size_t)nh + 1, sizeof(int));
+  for (int i = 0; i < nh; i++) f[find(up, h[i]) + 1]++;
+  for (int c = 0; c < g->n; c++) f[c + 1] += f[c];
+  for (int i = 0; i < nh; i++) {
+    int c = find(up, h[i]);
+    ch[f[c] + at[c]++] = h[i];
+  }
+  free(at);
+  *first = f, *chub = ch;
+}
+
+/* Per boundary b of a tree's columns (before column b), whether a fold
+ * there meets a branch: the fold's bond runs down from the band's last
+ * spine hub (column b - 1) to the next band's first (column b, under it),
+ * through what hangs below the spine in column b - 1 and what the next
+ * band's first hub holds above the spine in its own column (issue 31: a
+ * chain's last branch before its fold, hung straight below its hub, sent
+ * the fold round it on two corners). hubs[0..nh): the part's; anchor: per
+ * hub the spine hub it hangs from (spine_anchors). */
+static unsigned char *fold_blocked(const grid *g, const int *hubs, int nh, const int *anchor, int ncol) {
+  unsigned char *blocked = bg_xcalloc((size_t)ncol + 2, 1);
+  for (int i = 0; i < nh; i++) {
+    int v = hubs[i], a = anchor[v], k = g->col[v];
+    if (a == v || k < 0 || k >= ncol) continue;
+    if (g->row[v] > g->row[a]) blocked[k + 1] = 1;                        /* below the spine: a fold after column k */
+    else if (g->row[v] < g->row[a] && g->col[a] == k) blocked[k] = 1;    /* above, in its hub's column: a fold before k */
+  }
+  return blocked;
+}
+
+/* Per hub the spine hub it hangs from (itself on a spine). */
+static int *spine_anchors(const grid *g, const int *h, int nh) {
+  int *anchor = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
+  for (int i = 0; i < nh; i++) { /* parents before children: earlier columns */
+    int v = h[i], p = g->tree_par[v];
+    anchor[v] = g->spine[v] || p < 0 ? v : anchor[p];
+  }
+  return anchor;
+}
+
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
   for (int v = 0; v < n; v++) up[v] = v;
@@ -610,6 +748,8 @@ static void stack_components(grid *g, const int *h, int nh) {
   double pitch = g->own_ranks ? column_pitch(g, h, nh) : 0, cells = 0;
   for (int v = 0; pitch > 0 && v < n; v++)
     if (find(up, v) == v && lo[v] <= hi[v]) cells += (double)ncol[v] * (hi[v] - lo[v] + 1 + sep);
+  unsigned char *cyclic = cyclic_parts(g, up);
+  int *first = NULL, *chub = NULL, *anchor = NULL; /* per component its hubs, chub[first[c] .. first[c + 1]) */
   for (int v = 0; v < n; v++) {
     int c = find(up, v);
     if (lo[c] > hi[c] || base[c] < 0) continue;
@@ -618,25 +758,45 @@ static void stack_components(grid *g, const int *h, int nh) {
     if (nband[c] < 0) wrap = ncol[c] + 16;
     else if (wrap < 16) wrap = 16;
     boff[c] = nstart;
-    nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, start + nstart);
-    /* each band's first column under the last one of the band before, the
-     * bands running right and left in turn; then all moved right of 0 */
-    int x = 0, minx = 0;
-    for (int b = 0; b < nband[c]; b++) {
-      int w = (b + 1 < nband[c] ? start[nstart + b + 1] : ncol[c]) - start[nstart + b];
-      bx[nstart + b] = x;
-      x += (b % 2 ? -1 : 1) * (w - 1);
-      minx = x < minx ? x : minx;
+    unsigned char *blocked = NULL;
+    if (ncol[c] > wrap && !cyclic[c]) {
+      if (!first) hubs_by_part(g, h, nh, up, &first, &chub), anchor = spine_anchors(g, h, nh);
+      blocked = fold_blocked(g, chub + first[c], first[c + 1] - first[c], anchor, ncol[c]);
     }
-    for (int b = 0; b < nband[c]; b++) {
-      bx[nstart + b] -= minx;
-      int w = (b + 1 < nband[c] ? start[nstart + b + 1] : ncol[c]) - start[nstart + b];
-      width[c] = bx[nstart + b] + w > width[c] ? bx[nstart + b] + w : width[c];
-    }
+    nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, blocked, start + nstart);
+    free(blocked);
     height[c] = nband[c] * (span + sep);
     nstart += nband[c];
     base[c] = -1, part[nparts++] = c; /* marks the component done */
   }
+  free(first), free(chub), free(anchor);
+  hub_bands(g, h, nh, up, nband, boff, start, cyclic);
+  /* each band's first column under the last one of the band before, the
+   * bands running right and left in turn; then all moved right of 0. A
+   * branch kept in its spine's band (hub_bands) reaches past the band's
+   * last column, away from the band before. */
+  int *reach = bg_xcalloc((size_t)nstart + 1, sizeof(int));
+  for (int i = 0; i < nh; i++) {
+    int v = h[i], c = find(up, v), a = g->band[v], k = g->col[v] - start[boff[c] + a] + 1;
+    reach[boff[c] + a] = k > reach[boff[c] + a] ? k : reach[boff[c] + a];
+  }
+  for (int p = 0; p < nparts; p++) {
+    int c = part[p], x = 0, minx = 0;
+    for (int b = 0; b < nband[c]; b++) {
+      int w = (b + 1 < nband[c] ? start[boff[c] + b + 1] : ncol[c]) - start[boff[c] + b];
+      int r = reach[boff[c] + b] > w ? reach[boff[c] + b] : w;
+      bx[boff[c] + b] = x;
+      minx = (b % 2 ? x - (r - 1) : x) < minx ? (b % 2 ? x - (r - 1) : x) : minx;
+      x += (b % 2 ? -1 : 1) * (w - 1);
+    }
+    for (int b = 0; b < nband[c]; b++) {
+      bx[boff[c] + b] -= minx;
+      int w = (b + 1 < nband[c] ? start[boff[c] + b + 1] : ncol[c]) - start[boff[c] + b];
+      int r = reach[boff[c] + b] > w ? reach[boff[c] + b] : w, right = bx[boff[c] + b] + (b % 2 ? w : r);
+      width[c] = right > width[c] ? right : width[c];
+    }
+  }
+  free(reach);
   pack_parts(part, nparts, width, height, base, xoff);
   free(width), free(height), free(part);
   /* A part with a cycle folds as a ribbon does, each band after the first
@@ -646,30 +806,17 @@ static void stack_components(grid *g, const int *h, int nh) {
    * rings: 7 bond crossings in 40, now 0). A tree keeps its bands the same
    * way up: a branch hanging below its spine at a fold would come between
    * the spine's two rows and bend the spine round it. */
-  unsigned char *cyclic = bg_xcalloc((size_t)n + 1, 1);
-  int *nodes_in = bg_xcalloc((size_t)n + 1, sizeof(int));
-  for (int v = 0; v < n; v++) nodes_in[find(up, v)]++;
-  for (int e = 0; e < g->ne; e++) nodes_in[find(up, g->et[e])]--;
-  for (int v = 0; v < n; v++) cyclic[v] = find(up, v) == v && nodes_in[v] <= 0;
-  free(nodes_in);
   for (int v = 0; v < n; v++)
     if (cyclic[find(up, v)] && nband[find(up, v)] > 1) {
       if (!g->turned) g->turned = bg_xcalloc((size_t)n + 1, 1);
       g->turned[v] = 1;
     }
   for (int i = 0; i < nh; i++) {
-    int v = h[i], c = find(up, v), a = 0, z = nband[c] - 1;
-    const int *st = start + boff[c];
-    while (a < z) { /* the band holding v's column */
-      int mid = (a + z + 1) / 2;
-      if (st[mid] <= g->col[v]) a = mid;
-      else z = mid - 1;
-    }
-    int k = g->col[v] - st[a], span = hi[c] - lo[c] + 1;
+    int v = h[i], c = find(up, v), a = g->band[v];
+    int k = g->col[v] - start[boff[c] + a], span = hi[c] - lo[c] + 1;
     g->gx[v] = 2 * (xoff[c] + bx[boff[c] + a] + (a % 2 ? -k : k));
     int turned = a % 2 && cyclic[c]; /* a U-turn: the band upside down too */
     g->gy[v] = 2 * ((-1 - base[c]) + a * (span + sep) + (turned ? hi[c] - g->row[v] : g->row[v] - lo[c]));
-    g->band[v] = a;
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
@@ -1150,12 +1297,29 @@ static int barb_quadrants(const grid *g, int v) {
   return mask;
 }
 
+/* The diagonal quadrants of hub v (as barb_quadrants) towards the far end
+ * of a hub bond of v the grid found no route for: the bond router draws it
+ * later and, v's four sides taken, it comes in there (issue 31: a random
+ * tree's junction of five hub bonds had a one-port on that diagonal, the
+ * bond's causal stroke on the one-port's bond). */
+static int unrouted_quadrants(const grid *g, int v) {
+  int mask = 0;
+  for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+    int e = g->adj[k], w = other(g, e, v), dx, dy;
+    if (g->bent[e] >= 0 || !is_hub_bond(g, e) || !g->placed[w]) continue;
+    dx = g->gx[w] - g->gx[v], dy = g->gy[w] - g->gy[v];
+    for (int q = 0; q < 4; q++) /* straight above, below or beside: both quadrants that way */
+      if ((dx || dy) && (q & 1 ? dx >= 0 : dx <= 0) && (q & 2 ? dy >= 0 : dy <= 0)) mask |= 1 << q;
+  }
+  return mask;
+}
+
 /* A diagonal neighbour cell of hub v for its one-port w when its four sides
  * are taken: a free one away from the half arrows there (barb_quadrants),
  * nearest where dot put w. 0 when none is free. */
 static int diagonal_cell(grid *g, int v, int w, int *ox, int *oy) {
   const bg_diagram_layout *d = g->d;
-  int barbs = barb_quadrants(g, v), found = 0;
+  int barbs = barb_quadrants(g, v) | unrouted_quadrants(g, v), found = 0;
   double best = 1e300, ang = atan2(d->ny[w] - d->ny[v], d->nx[w] - d->nx[v]);
   for (int q = 0; q < 4; q++) {
     int dx = q & 1 ? 1 : -1, dy = q & 2 ? 1 : -1;
@@ -1817,6 +1981,7 @@ static void grid_alloc(grid *g, bg_diagram_layout *d) {
   g->gx = bg_xcalloc(n, sizeof(int)), g->gy = bg_xcalloc(n, sizeof(int));
   g->col = bg_xcalloc(n, sizeof(int)), g->row = bg_xcalloc(n, sizeof(int)), g->band = bg_xcalloc(n, sizeof(int));
   g->placed = bg_xcalloc(n, 1), g->hub = bg_xcalloc(n, 1), g->sides = bg_xcalloc(n, 1), g->mesh = bg_xcalloc(n, 1);
+  g->spine = bg_xcalloc(n, 1);
   g->bent = bg_xcalloc((size_t)g->ne + 1, sizeof(int));
   g->corner = bg_xcalloc((size_t)g->ne + 1, sizeof *g->corner);
   cell_grow(g);
@@ -1826,6 +1991,7 @@ static void grid_free(grid *g) {
   free(g->et), free(g->eh), free(g->adr), free(g->adj), free(g->deg);
   free(g->gx), free(g->gy), free(g->col), free(g->row), free(g->band);
   free(g->placed), free(g->hub), free(g->sides), free(g->mesh), free(g->bent), free(g->corner);
+  free(g->tree_par), free(g->spine);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy), free(g->signalled);
   free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h), free(g->turned);
 }

@@ -627,8 +627,10 @@ static const struct {
     {{"two260", fm_two_chains, 260}, NULL, 0, 0, 0, 0, 0, 0}, /* 2 082 nodes in two parts */
     {{"outers110", fm_outers, 110}, NULL, 0, 0, 0, 0, 0, 1}, /* 2 202 nodes, frames three deep */
     /* held-out trees over 2 000 nodes: the grid pass's tree drawing, not rows */
-    {{"randtree1000", fm_make_randtree, 1000}, NULL, 0, 2, 0, 64, 0, 0},
-    {{"randtree1400", fm_make_randtree, 1400}, NULL, 0, 11, 0, 116, 0, 0},
+    /* 64 and 116 slanted, 2 and 11 crossings of one element's lines before
+     * branches hung in their hub's column (assign_rows): 47 and 88, 0 and 0 */
+    {{"randtree1000", fm_make_randtree, 1000}, NULL, 0, 0, 0, 47, 0, 0},
+    {{"randtree1400", fm_make_randtree, 1400}, NULL, 0, 0, 0, 88, 0, 0},
 };
 
 /* Issue 31, the bond router's second pass (diagram_route_bonds.c): where a
@@ -746,9 +748,10 @@ static void count_default(const char *name, const bg_strbuf *src, const char *la
  * (bg_grid_tree_ranks) instead of the rows layout. Held-out random trees
  * of 1 000 and 1 400 junctions (over 2 000 nodes each), default style and
  * layers, against the same models in rows: crossings 82 / 99 in rows, 19 /
- * 24 now; bonds slanted off the axes (forced diagonals apart) 526 / 753, 64
- * / 116; crossings of one element's lines 27 / 19, 2 / 11. Held to a
- * third of rows' or better. */
+ * 24 in the tree drawing, 1 / 1 since branches hang in their hub's column;
+ * bonds slanted off the axes (forced diagonals apart) 526 / 753, 64 / 116,
+ * now 47 / 88; crossings of one element's lines 27 / 19, 2 / 11, now 0 /
+ * 0. Held to a third of rows' or better. */
 static void test_large_forests(void) {
   for (int n = 1000; n <= 1400; n += 400) {
     bg_strbuf src = {0};
@@ -820,10 +823,13 @@ static void test_held_out_models(void) {
   INT_EQ(tot.nodes_overlap, 0);
   OK(tot.bond_overlaps <= 1); /* randnet60_2: bond 104's route jogs 7 pt along bond 65 (1 before too) */
   INT_EQ(tot.lines_through, 0);
-  /* numbers: randnet80_2's one and randnet80_3's two astray in dense
-   * routing; the trees' 0 (randtree160 had 5 in 45-degree wedges before a
-   * number wanted 1 pt more to its own bond than to any other) */
-  OK(tot.astray <= 3);
+  /* numbers: randnet80_2's two and randnet80_3's two astray in dense
+   * routing (randnet80_2's second, bond 202's between two bonds 7 pt
+   * apart, since one-ports keep off the diagonal an unrouted bond comes
+   * in by: the nets' crossings 338 -> 335); the trees' 0 (randtree160 had
+   * 5 in 45-degree wedges before a number wanted 1 pt more to its own
+   * bond than to any other) */
+  OK(tot.astray <= 4);
   INT_EQ(tot.crowded, 0);
 }
 
@@ -1616,7 +1622,9 @@ static void test_straight_branches(void) {
     total += bent;
     bg_sb_free(&src);
   }
-  BG_T_REPORT(total <= 66, "trees: %d bonds with a corner (<= 66; 226 before)", total);
+  /* 226, then 66 with branches straightened after the fact, 14 since they
+   * hang in their hub's column in the tree drawing */
+  BG_T_REPORT(total <= 14, "trees: %d bonds with a corner (<= 14; 226 before)", total);
 }
 
 /* The faults of model `text` (name) in styles[si], added to *st; 0 when it
@@ -1640,7 +1648,11 @@ static int faults_of(const char *name, const char *text, int si, fc_stats *st) {
  * source, so none showed it. Random chains with branches and random trees,
  * half their bonds turned round (fm_flip_bonds), in every style: no more
  * bonds slanted or crossing than with every bond pointing away (60
- * slanted against 2 before). */
+ * slanted against 2 before), and either way none slanted, crossing or
+ * touching a stroke since branches hang in their hub's column and stay in
+ * their spine's band (2 slanted and 4 crossings either way before: a
+ * fold's next band took a branch's far end, bond 28 of flipped23 went
+ * round the figure). */
 static void test_bond_directions(void) {
   int slanted = 0, forward = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
   for (int seed = 0; seed < 40; seed++) {
@@ -1657,7 +1669,7 @@ static void test_bond_directions(void) {
       if (verbose)
         printf("%s %s: slanted %d (bonds away: %d), crossings %d (%d), touching %d (%d)\n", name, styles[si],
                st.slanted, fw.slanted, st.crossings, fw.crossings, st.touching, fw.touching);
-      BG_T_REPORT(st.slanted <= fw.slanted && st.crossings <= fw.crossings && st.touching <= fw.touching,
+      BG_T_REPORT(st.slanted + st.crossings + st.touching + fw.slanted + fw.crossings + fw.touching == 0,
                   "%s %s: slanted %d, crossings %d, strokes touching %d (bonds away: %d, %d, %d)", name, styles[si],
                   st.slanted, st.crossings, st.touching, fw.slanted, fw.crossings, fw.touching);
       slanted += st.slanted, forward += fw.slanted;
