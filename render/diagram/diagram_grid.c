@@ -1462,12 +1462,31 @@ static int *signal_partners(const grid *g) {
     if (partner[from] < 0) partner[from] = drawn_by(d, to);
     if (partner[to] < 0) partner[to] = drawn_by(d, from);
   }
+  /* an element a user state integrates (its signal goes to the state's
+   * integrator, placed later beside what the state modulates): that */
+  int *target = bg_xmalloc(((size_t)m->nstate + 1) * sizeof *target), in[64];
+  for (int k = 0; k < m->nstate; k++) target[k] = -1;
+  for (int i = 0; i < m->nsignal; i++) {
+    int k = bg_signal_state(m, i);
+    if (k >= 0 && target[k] < 0 && d->node_of[m->signal_to[i]] < g->n) target[k] = drawn_by(d, m->signal_to[i]);
+  }
+  for (int k = 0; k < m->nstate; k++) {
+    if (target[k] < 0 || d->state_node[k] < 0) continue;
+    for (int j = 0, nin = bg_state_inputs(m, k, in, 64); j < nin; j++) {
+      int u = d->node_of[in[j]] < g->n ? drawn_by(d, in[j]) : -1;
+      if (u >= 0 && u != target[k] && partner[u] < 0) partner[u] = target[k];
+    }
+  }
+  free(target);
   return partner;
 }
 
-/* A one-port with a signal hung above or below its hub while the signal's
- * other end is on the far side of the hub's row goes to the other side
- * when that cell is free: its signal then need not cross the row (issue
+/* A one-port with a signal (or one a user state integrates: its partner
+ * is what the state modulates, beside which the integrator goes) hung
+ * above or below its hub while the signal's other end is on the far side
+ * of the hub's row goes to the other side when that cell is free, or
+ * changes places with a one-port of the hub there that has no signal: its
+ * signal then need not cross the row (issue
  * 31: a robot joint's spring under its junction, its signal to an
  * amplifier above the row, crossed the bond between; a modulated ladder of
  * 9 sections 5 -> 1 signal crossings, of 120 drawn on the grid 87 -> 17).
@@ -1477,15 +1496,32 @@ static int *signal_partners(const grid *g) {
  * slanted, seven signals across it at a slant. */
 static void face_signals(grid *g) {
   int *partner = signal_partners(g);
-  for (int w = 0; w < g->n; w++) {
-    if (g->hub[w] || g->deg[w] != 1 || !g->signalled[w] || !g->placed[w] || !own_node(g->d, w)) continue;
-    int v = other(g, g->adj[g->adr[w]], w), p = partner[w];
-    if (!g->hub[v] || p < 0 || !g->placed[p] || g->gx[w] != g->gx[v] || abs(g->gy[w] - g->gy[v]) != 1) continue;
-    int dy = g->gy[w] - g->gy[v], dp = g->gy[p] - g->gy[v], side = dy < 0 ? SIDE_U : SIDE_D, flip = dy < 0 ? SIDE_D : SIDE_U;
-    if (dp * dy >= 0 || (g->sides[v] & flip) || !cell_free(g, g->gx[v], g->gy[v] - dy)) continue;
-    g->val[cell_slot(g, cell_key(g->gx[w], g->gy[w]))] = RELEASED;
-    g->sides[v] &= (unsigned char)~side;
-    put_leaf(g, v, w, g->gx[v], g->gy[v] - dy, flip);
+  /* moves to free cells first, then changes of place: a one-port whose
+   * partner would move to face it stays (a robot joint's spring, its
+   * partner the motor's voltage above, went up; the voltage swapped down
+   * first and took the joint's inertia with it) */
+  for (int pass = 0; pass < 2; pass++) {
+    for (int w = 0; w < g->n; w++) {
+      if (g->hub[w] || g->deg[w] != 1 || partner[w] < 0 || !g->placed[w] || !own_node(g->d, w)) continue;
+      int v = other(g, g->adj[g->adr[w]], w), p = partner[w];
+      if (!g->hub[v] || !g->placed[p] || g->gx[w] != g->gx[v] || abs(g->gy[w] - g->gy[v]) != 1) continue;
+      int dy = g->gy[w] - g->gy[v], dp = g->gy[p] - g->gy[v], side = dy < 0 ? SIDE_U : SIDE_D, flip = dy < 0 ? SIDE_D : SIDE_U;
+      int x = g->gx[v], y = g->gy[v] - dy, u = g->val[cell_slot(g, cell_key(x, y))];
+      if (dp * dy >= 0) continue;
+      int swap = pass == 1 && u >= 0 && partner[u] < 0 && !g->hub[u] && g->deg[u] == 1;
+      if (swap && other(g, g->adj[g->adr[u]], u) == v) {
+        /* the other side holds a one-port of v without a signal: the two
+         * change places (a boom's mass under its junction, its friction
+         * above, the mass's signal to the valve below crossed the row) */
+        g->gx[u] = g->gx[w], g->gy[u] = g->gy[w], cell_take(g, g->gx[u], g->gy[u], u);
+        g->gx[w] = x, g->gy[w] = y, cell_take(g, x, y, w);
+        continue;
+      }
+      if ((g->sides[v] & flip) || !cell_free(g, x, y)) continue;
+      g->val[cell_slot(g, cell_key(g->gx[w], g->gy[w]))] = RELEASED;
+      g->sides[v] &= (unsigned char)~side;
+      put_leaf(g, v, w, x, y, flip);
+    }
   }
   free(partner);
 }

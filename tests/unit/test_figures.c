@@ -1797,6 +1797,19 @@ static void test_signals_face(void) {
   }
   fx_free(&f);
   bg_sb_free(&src);
+  /* a one-port a user state integrates faces what the state modulates,
+   * changing places with a one-port of its junction without a signal (the
+   * held-out excavator: the arm's mass under its junction, its signal to
+   * the arm's position integrator beside the valve below crossed the row
+   * above, 1 signal crossing in every style) */
+  rc = file_model(&f, "tests/data/figures/excavator.bg", "excavator");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram_free(style_drawing(&f, si, &st));
+    BG_T_REPORT(st.sig_cross == 0 && st.crossings == 0, "excavator %s: signal crossings %d, bond crossings %d (0)",
+                styles[si], st.sig_cross, st.crossings);
+  }
+  fx_free(&f);
 }
 
 /* ---------------------------------------------------------------- the tutorial and the gallery */
