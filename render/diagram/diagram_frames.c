@@ -169,13 +169,19 @@ void bg_draw_frames(bg_diagram *d) {
     int k = pc[i].k;
     const box *b = &pc[i].b;
     if (!(b->x0 <= b->x1)) continue; /* empty, or collapsed (drawn as a box) */
-    bg_strbuf t = {0};
-    /* inside its parent's frame, which names the parent: its own name */
+    /* inside its parent's frame, which names the parent: its own name;
+     * then its submodel's, where the frame is wide enough for both (a wall
+     * of one-element layers: each frame grew to `plaster :
+     * ThermalCapacitance` and lay over the next one's) */
+    bg_strbuf t = {0}, full = {0};
     const char *name = m->inst_name[k], *dot = strrchr(name, '.');
     bg_markup_escape(&t, m->inst_parent[k] >= 0 && dot && dot[1] ? dot + 1 : name);
-    bg_sb_puts(&t, " : ");
-    bg_markup_escape(&t, m->inst_def[k]);
-    double tw, th;
+    bg_sb_printf(&full, "%s : ", bg_sb_str(&t));
+    bg_markup_escape(&full, m->inst_def[k]);
+    double tw, th, fw, fh;
+    bg_text_measure(d->st.font, size, bg_sb_str(&full), &fw, &fh);
+    if (b->x0 + fw + 8 <= b->x1) bg_sb_clear(&t), bg_sb_puts(&t, bg_sb_str(&full));
+    bg_sb_free(&full);
     bg_text_measure(d->st.font, size, bg_sb_str(&t), &tw, &th);
     double x1 = fmax(b->x1, b->x0 + tw + 8);
     bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "frame %s", m->inst_name[k]);

@@ -1222,6 +1222,20 @@ static void test_frames_on_branches(void) {
     bg_diagram_free(d);
   }
   fx_free(&f);
+  /* a frame names its submodel only where it is wide enough: a wall of
+   * one-element layers (tests/data/figures/wall.bg) had each frame grown
+   * to `plaster : Capacitance`, over the next one (1 pair of frames
+   * crossing, in slides 2 and 2 labels over lines; with the library's
+   * `ThermalCapacitance` 9 pairs, 4 foreign elements, 9 labels over) */
+  rc = file_model(&f, "tests/data/figures/wall.bg", "wall");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram_free(style_drawing(&f, si, &st));
+    BG_T_REPORT(st.frames == 10 && st.frame_cross == 0 && st.foreign == 0 && st.over == 0,
+                "wall %s: %d frames (10), crossing %d, foreign %d, labels over lines %d (0)", styles[si], st.frames,
+                st.frame_cross, st.foreign, st.over);
+  }
+  fx_free(&f);
 }
 
 /* A one-port on a diagonal cell of its hub (the junction's four sides
