@@ -15,11 +15,27 @@ the six before it; "randgraph" a random tree plus a quarter as many random
 extra bonds; the trees' junctions carry none to two one-ports. SEED picks
 the random graph.
 A "star" is one 0-junction with N resistors (a fan: docs/drawing.md,
-the bound on the bond router's work); a "tree" is randtree with seed 1.
+the bound on the bond router's work); a "tree" is randtree with seed 1;
+"states" a chain of N masses, each with a user state integrating its
+velocity, fed back by a modulated source, and a detector (integrators and
+detectors are nodes without bonds of their own).
 Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT |
-       star N OUT | tree N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
+       star N OUT | tree N OUT | states N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
 import random
 import sys
+
+
+def states(n, out):
+    lines = [f"model states{n}", "Se U = 1"]
+    for i in range(n):
+        lines += [f"{i % 2} j{i}", f"I m{i} = 1", f"R b{i} = 0.1", f"MSe F{i} = -x{i}",
+                  f"state x{i}' = m{i}.f", f"De d{i} = m{i}"]
+    lines.append("bond U -> j0")
+    for i in range(n):
+        lines += [f"bond j{i} -> m{i}", f"bond j{i} -> b{i}", f"bond F{i} -> j{i}"]
+        if i + 1 < n:
+            lines.append(f"bond j{i} -> j{i + 1}")
+    out.write("\n".join(lines) + "\n")
 
 
 def chain(nbond, out):
@@ -118,5 +134,7 @@ if __name__ == "__main__":
             chain(n, f)
         elif what == "tree":  # a random tree of n junctions (seed 1): the grid's tree drawing above 2 000 nodes
             randtree(n, 1, f)
+        elif what == "states":
+            states(n, f)
         else:
             reactions(n, f, near=(what == "nearby"))

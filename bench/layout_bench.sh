@@ -7,7 +7,8 @@
 # In-process (bench/render_time.c --build-only, compiled against BGDRAW's
 # build directory), best of 3, with the layout a model of that size gets
 # (above 2 000 nodes a forest is drawn as a tree on the grid, bg_grid_tree_ranks:
-# both chains and both random trees, of 3 000 and 6 000 junctions; other graphs
+# both chains and both random trees, of 3 000 and 6 000 junctions, and the
+# chains of 2 000 and 4 000 sections with a user state and a detector each; other graphs
 # rows: the full reaction network) and, for
 # the reaction networks, rows at both sizes too (the half network has 1 750
 # nodes and would be laid out by dot, which is not linear); the same for a
@@ -42,6 +43,7 @@ row() { # LABEL KIND N [ENGINE]
 printf '%-34s %10s %10s\n' "layout + scene (default layers)" "half" "full"
 row "chain, $NB bonds" chain "$NB"
 row "random tree, 6000 junctions" tree 6000
+row "states, 4000 sections" states 4000
 row "reactions, $NS signals (rows)" reactions "$NS" rows
 row "nearby, $NS signals (rows)" nearby "$NS" rows
 row "star, 6000 one-ports (rows)" star 6000

@@ -124,7 +124,7 @@ static int layout_edges(const bg_diagram_layout *d, int **tail, int **head) {
     for (int k = 0; k < nin; k++) t[n] = in[k], h[n++] = d->state_node[s];
   }
   for (int i = 0; i < m->nsignal; i++) {
-    int s = bg_signal_state(m, i);
+    int s = bg_signal_state(d, i);
     if (s >= 0 && d->state_node[s] >= 0) t[n] = d->state_node[s], h[n++] = m->signal_to[i];
   }
   for (int i = 0; i < n; i++) t[i] = d->node_of[t[i]], h[i] = d->node_of[h[i]];
@@ -378,8 +378,9 @@ static int alloc_nodes(bg_diagram_layout *d, bg_diags *dg) {
     d->lag_node[i] = d->a->lag_junction[i] >= 0 ? d->nnode++ : -1;
   d->state_node = bg_arena_alloc(&d->arena, sizeof(int) * ((size_t)m->nstate + 1));
   for (int s = 0; s < m->nstate; s++) d->state_node[s] = -1;
+  bg_signal_states(d);
   for (int i = 0; (d->show & BG_SHOW_SIGNALS) && i < m->nsignal; i++) {
-    int s = bg_signal_state(m, i);
+    int s = bg_signal_state(d, i);
     if (s >= 0 && d->state_node[s] < 0) d->state_node[s] = d->nnode++;
   }
   if (bg_parts_nodes(d, dg) != 0) return -1;

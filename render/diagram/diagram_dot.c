@@ -211,7 +211,7 @@ static void write_extras(const bg_diagram *d, bg_strbuf *out) {
     bg_sb_puts(out, " [arrowhead=normal, bg_detector=1];\n"); /* an activated bond */
   }
   for (int i = 0; i < m->nsignal; i++) {
-    int from = m->signal_from[i], s = bg_signal_state(m, i), to = d->L->node_of[m->signal_to[i]];
+    int from = m->signal_from[i], s = bg_signal_state(d->L, i), to = d->L->node_of[m->signal_to[i]];
     if (from < 0 && s >= 0) from = d->L->state_node[s];
     if (from < 0) continue; /* a bond variable: no node to start from */
     from = d->L->node_of[from];

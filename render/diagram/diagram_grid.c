@@ -1467,7 +1467,7 @@ static int *signal_partners(const grid *g) {
   int *target = bg_xmalloc(((size_t)m->nstate + 1) * sizeof *target), in[64];
   for (int k = 0; k < m->nstate; k++) target[k] = -1;
   for (int i = 0; i < m->nsignal; i++) {
-    int k = bg_signal_state(m, i);
+    int k = bg_signal_state(d, i);
     if (k >= 0 && target[k] < 0 && d->node_of[m->signal_to[i]] < g->n) target[k] = drawn_by(d, m->signal_to[i]);
   }
   for (int k = 0; k < m->nstate; k++) {
@@ -1562,7 +1562,7 @@ static int float_anchor(const grid *g, int v) {
   for (int s = 0; s < m->nstate; s++)
     if (d->state_node[s] == v)
       for (int i = 0; i < m->nsignal; i++)
-        if (bg_signal_state(m, i) == s && g->placed[drawn_by(d, m->signal_to[i])]) return drawn_by(d, m->signal_to[i]);
+        if (bg_signal_state(d, i) == s && g->placed[drawn_by(d, m->signal_to[i])]) return drawn_by(d, m->signal_to[i]);
   int best = -1;
   double bd = 1e300;
   for (int u = 0; u < g->n; u++) {

@@ -47,6 +47,7 @@ typedef struct bg_diagram_layout {
                                 its first port's, diagram_fields.c); NULL without fields */
   int *state_node;           /* per user state: its integrator node (drawn when a signal
                                 comes from the state and signals are shown), or -1 */
+  int *signal_state;         /* per signal: the user state it comes from, or -1 (bg_signal_states) */
   int *det_draw;             /* per detector: its node (De : vC), or -1 (inside a box) */
   int *inst_box;             /* per instance: its word-bond-graph box node when it is drawn
                                 collapsed (--collapse; the outermost collapsed one), or -1 */
@@ -133,8 +134,11 @@ void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
 int bg_bond_derivative(const bg_model *m, const bg_analysis *a, int b);
 /* The bond whose variable a signal reads ("e7", "f7"), or -1. */
 int bg_signal_bond(const bg_model *m, const char *var);
+/* Fills d->signal_state (in d's arena): per signal the user state it comes
+ * from, found by name in a hash of the states' names. */
+void bg_signal_states(bg_diagram_layout *d);
 /* The user state signal i comes from, or -1. */
-int bg_signal_state(const bg_model *m, int i);
+int bg_signal_state(const bg_diagram_layout *d, int i);
 /* The node signal i is drawn from (element, integrator or bond head), or -1. */
 int bg_signal_from_node(const bg_diagram_layout *d, int i);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */

@@ -72,6 +72,10 @@ typedef struct heap_entry {
 
 struct bg_router {
   const bg_diagram_layout *L;
+  /* per node past the elements (a box, an integrator, a detector): the
+   * bonds drawn ending there, end_list[end_adr[n - nelem] ..] (NULL until
+   * a port of such a node is first asked for) */
+  int *end_adr, *end_list;
   near_index ix;
   near_list nl;
   double fx0, fy0, fx1, fy1; /* the figure's box */

@@ -124,7 +124,7 @@ static int signal_from_bond(bg_diagram *d, bg_router *rt, sigrole role, const ch
 
 static void draw_signal(bg_diagram *d, bg_router *rt, int i) {
   const bg_model *m = d->m;
-  int from = m->signal_from[i], to = m->signal_to[i], s = bg_signal_state(m, i);
+  int from = m->signal_from[i], to = m->signal_to[i], s = bg_signal_state(d->L, i);
   int hot = d->hot_elem[to] && (from < 0 || d->hot_elem[from]);
   char name[160];
   const char *fname = from >= 0 ? m->elem_name[from] : m->signal_var[i];
