@@ -385,6 +385,13 @@ static int alloc_nodes(bg_diagram_layout *d, bg_diags *dg) {
   }
   if (bg_parts_nodes(d, dg) != 0) return -1;
   size_t n = (size_t)d->nnode + 1;
+  d->node_state = bg_arena_alloc(&d->arena, n * sizeof(int));
+  d->node_det = bg_arena_alloc(&d->arena, n * sizeof(int));
+  for (int v = 0; v < d->nnode; v++) d->node_state[v] = d->node_det[v] = -1;
+  for (int s = 0; s < m->nstate; s++)
+    if (d->state_node[s] >= 0) d->node_state[d->state_node[s]] = s;
+  for (int k = 0; k < m->ndet; k++)
+    if (d->det_draw[k] >= 0) d->node_det[d->det_draw[k]] = k;
   d->nw = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nh = bg_arena_alloc(&d->arena, n * sizeof(double));
   d->nlabel = bg_arena_alloc(&d->arena, n * sizeof(char *));

@@ -21,18 +21,13 @@ static void dot_str(bg_strbuf *b, const char *s) {
 static double yup(const bg_diagram *d, double y) { return d->L->lay.height - y; }
 
 /* The user state whose integrator node n is, or -1. */
-static int node_state(const bg_diagram *d, int n) {
-  for (int s = 0; s < d->m->nstate; s++)
-    if (d->L->state_node[s] == n) return s;
-  return -1;
-}
+static int node_state(const bg_diagram *d, int n) { return d->L->node_state[n]; }
 
 /* The instance whose box node n is, else -1 (and *det: the detector node n draws, or -1). */
 static int node_part(const bg_diagram *d, int n, int *det) {
   *det = -1;
   if (d->L->box_inst[n] >= 0) return d->L->box_inst[n];
-  for (int k = 0; k < d->m->ndet; k++)
-    if (d->L->det_draw[k] == n) *det = k;
+  *det = d->L->node_det[n];
   return -1;
 }
 

@@ -1554,15 +1554,31 @@ static void place_leaves(grid *g) {
 
 /* The node a float sits beside: for a user-state integrator the element
  * its first signal modulates, else the placed node dot put nearest. */
-static int float_anchor(const grid *g, int v) {
+/* Per user state its signals, in order: slist[sadr[s] .. sadr[s + 1]) (for
+ * float_anchor: a loop over every signal per integrator made the layout
+ * quadratic in the states). */
+static void state_signals(const grid *g, int **sadr, int **slist) {
+  const bg_model *m = g->d->m;
+  int *adr = bg_xcalloc((size_t)m->nstate + 2, sizeof(int)), *list = bg_xcalloc((size_t)m->nsignal + 1, sizeof(int));
+  int *fill = bg_xcalloc((size_t)m->nstate + 1, sizeof(int));
+  for (int i = 0; i < m->nsignal; i++)
+    if (bg_signal_state(g->d, i) >= 0) adr[bg_signal_state(g->d, i) + 1]++;
+  for (int s = 0; s < m->nstate; s++) adr[s + 1] += adr[s];
+  for (int i = 0; i < m->nsignal; i++) {
+    int s = bg_signal_state(g->d, i);
+    if (s >= 0) list[adr[s] + fill[s]++] = i;
+  }
+  free(fill);
+  *sadr = adr, *slist = list;
+}
+
+static int float_anchor(const grid *g, const int *sadr, const int *slist, int v) {
   const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
-  for (int k = 0; k < m->ndet; k++) /* a detector beside the node it reads */
-    if (d->det_draw[k] == v && g->placed[bg_detector_anchor(d, k)]) return bg_detector_anchor(d, k);
-  for (int s = 0; s < m->nstate; s++)
-    if (d->state_node[s] == v)
-      for (int i = 0; i < m->nsignal; i++)
-        if (bg_signal_state(d, i) == s && g->placed[drawn_by(d, m->signal_to[i])]) return drawn_by(d, m->signal_to[i]);
+  int k = d->node_det[v], s = d->node_state[v];
+  if (k >= 0 && g->placed[bg_detector_anchor(d, k)]) return bg_detector_anchor(d, k); /* beside the node it reads */
+  for (int j = s >= 0 ? sadr[s] : 0; s >= 0 && j < sadr[s + 1]; j++)
+    if (g->placed[drawn_by(d, m->signal_to[slist[j]])]) return drawn_by(d, m->signal_to[slist[j]]);
   int best = -1;
   double bd = 1e300;
   for (int u = 0; u < g->n; u++) {
@@ -1575,9 +1591,11 @@ static int float_anchor(const grid *g, int v) {
 /* Nodes with no place yet (user-state integrators, elements without bonds):
  * above or below their anchor, else in a free cell next to it. */
 static void place_floats(grid *g) {
+  int *sadr, *slist;
+  state_signals(g, &sadr, &slist);
   for (int v = 0; v < g->n; v++) {
     if (g->placed[v]) continue;
-    int a = float_anchor(g, v), x = 0, y = 0;
+    int a = float_anchor(g, sadr, slist, v), x = 0, y = 0;
     if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] - 1)) x = g->gx[a], y = g->gy[a] - 1; /* above */
     else if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] + 1)) x = g->gx[a], y = g->gy[a] + 1;
     else if (a >= 0) near_cell(g, g->gx[a], g->gy[a], 1, &x, &y);
@@ -1585,6 +1603,7 @@ static void place_floats(grid *g) {
     g->gx[v] = x, g->gy[v] = y, g->placed[v] = 1;
     cell_take(g, x, y, v);
   }
+  free(sadr), free(slist);
 }
 
 /* The band every node is drawn in (bg_layout.band), for frames drawn per
@@ -1602,11 +1621,14 @@ static void record_bands(grid *g) {
       int w = drawn_by(d, other(g, g->adj[k], v));
       if (g->hub[w]) band[v] = band[w], done[v] = 1;
     }
+  int *sadr, *slist;
+  state_signals(g, &sadr, &slist);
   for (int v = 0; v < g->n; v++)
     if (!done[v] && own_node(d, v)) {
-      int a = float_anchor(g, v);
+      int a = float_anchor(g, sadr, slist, v);
       band[v] = a >= 0 && done[a] ? band[a] : 0;
     }
+  free(sadr), free(slist);
   for (int v = 0; v < g->n; v++)
     if (!own_node(d, v)) band[v] = band[drawn_by(d, v)];
   free(done);

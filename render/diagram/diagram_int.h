@@ -48,6 +48,8 @@ typedef struct bg_diagram_layout {
   int *state_node;           /* per user state: its integrator node (drawn when a signal
                                 comes from the state and signals are shown), or -1 */
   int *signal_state;         /* per signal: the user state it comes from, or -1 (bg_signal_states) */
+  int *node_state, *node_det; /* per node: the user state whose integrator, the detector whose
+                                node it is, or -1 (the inverses of state_node and det_draw) */
   int *det_draw;             /* per detector: its node (De : vC), or -1 (inside a box) */
   int *inst_box;             /* per instance: its word-bond-graph box node when it is drawn
                                 collapsed (--collapse; the outermost collapsed one), or -1 */
