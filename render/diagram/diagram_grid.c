@@ -552,7 +552,8 @@ static int band_starts(const grid *g, int c, int ncol, int wrap, const int *ilo,
     if (cut || blocked) {
       long best_cost = -1;
       for (int b = s + (ideal + 1) / 2; b <= s + wrap && b < ncol; b++) {
-        long cost = (long)(cut ? cut[b] : 0) * 4 * ncol + (long)(blocked ? blocked[b] : 0) * 2 * ncol + abs(b - (s + ideal));
+        long cost = (long)(cut ? cut[b] : 0) * 4 * ncol + (long)(blocked ? blocked[b] : 0) * 2 * ncol;
+        cost += abs(b - (s + ideal));
         if (best_cost < 0 || cost < best_cost) best_cost = cost, best = b;
       }
     }
@@ -693,8 +694,8 @@ static unsigned char *fold_blocked(const grid *g, const int *hubs, int nh, const
   for (int i = 0; i < nh; i++) {
     int v = hubs[i], a = anchor[v], k = g->col[v];
     if (a == v || k < 0 || k >= ncol) continue;
-    if (g->row[v] > g->row[a]) blocked[k + 1] = 1;                        /* below the spine: a fold after column k */
-    else if (g->row[v] < g->row[a] && g->col[a] == k) blocked[k] = 1;    /* above, in its hub's column: a fold before k */
+    if (g->row[v] > g->row[a]) blocked[k + 1] = 1;                     /* below the spine: a fold after column k */
+    else if (g->row[v] < g->row[a] && g->col[a] == k) blocked[k] = 1; /* above, in its hub's column: before k */
   }
   return blocked;
 }
