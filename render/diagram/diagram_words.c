@@ -21,15 +21,17 @@ int bg_sub_percent(double size) {
 }
 
 /* The Greek letter a name spells (alpha → α, Omega → Ω), or NULL: names
- * are written in ASCII, a figure shows them as a book prints them. */
+ * are written in ASCII, a figure shows them as a book prints them. Not a
+ * letter drawn as a Latin one (Mu is Μ, omicron ο): a quarter car's
+ * unsprung mass `I : Mu` was drawn `I : Μ`, read as M, another name. */
 static const char *greek(const char *name, size_t n) {
   static const char *const word[] = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta",
                                      "theta", "iota", "kappa", "lambda", "mu", "nu", "xi", "omicron",
                                      "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega"};
   static const char *const lower[] = {"α", "β", "γ", "δ", "ε", "ζ", "η", "θ", "ι", "κ", "λ", "μ",
-                                      "ν", "ξ", "ο", "π", "ρ", "σ", "τ", "υ", "φ", "χ", "ψ", "ω"};
-  static const char *const upper[] = {"Α", "Β", "Γ", "Δ", "Ε", "Ζ", "Η", "Θ", "Ι", "Κ", "Λ", "Μ",
-                                      "Ν", "Ξ", "Ο", "Π", "Ρ", "Σ", "Τ", "Υ", "Φ", "Χ", "Ψ", "Ω"};
+                                      "ν", "ξ", NULL, "π", "ρ", "σ", "τ", "υ", "φ", "χ", "ψ", "ω"};
+  static const char *const upper[] = {NULL, NULL, "Γ", "Δ", NULL, NULL, NULL, "Θ", NULL, NULL, "Λ", NULL,
+                                      NULL, "Ξ", NULL, "Π", NULL, "Σ", NULL, NULL, "Φ", NULL, "Ψ", "Ω"};
   for (size_t k = 0; k < sizeof word / sizeof word[0]; k++) {
     if (strlen(word[k]) != n || tolower((unsigned char)name[0]) != word[k][0]) continue;
     if (strncmp(name + 1, word[k] + 1, n - 1)) continue;

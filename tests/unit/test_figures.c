@@ -1448,6 +1448,24 @@ static void test_gains_folded(void) {
  * powers (they were written out in place, past the end of the copy: a
  * loop's value 1.5e5 shown as 1.5·10^5 overflowed it, found by
  * AddressSanitizer), 2^2/8 becomes 1/2, -4/2 becomes -2. */
+/* Greek names typeset as the letter, but not where the letter is drawn as
+ * a Latin one: `Mu` (a quarter car's unsprung mass) stays Mu, not Μ, which
+ * reads as M; `omicron` stays, ο reads as o. */
+static void test_greek_names(void) {
+  static const struct {
+    const char *in, *has, *not;
+  } cases[] = {{"Mu", "Mu", "\u039c"},     {"mu", "\u03bc", "mu"},       {"Omega1", "\u03a9", "Omega"},
+               {"Delta", "\u0394", "Delta"}, {"Eta2", "Eta", "\u0397"},   {"Tau", "Tau", "\u03a4"},
+               {"tau", "\u03c4", "tau"},     {"omicron", "omicron", "\u03bf"}, {"Chi_a", "Chi", "\u03a7"}};
+  for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+    bg_strbuf out = {0};
+    bg_name_markup(&out, cases[i].in, 10);
+    BG_T_REPORT(strstr(bg_sb_str(&out), cases[i].has) && !strstr(bg_sb_str(&out), cases[i].not), "%s -> %s",
+                cases[i].in, bg_sb_str(&out));
+    bg_sb_free(&out);
+  }
+}
+
 static void test_gain_markup_rewrites(void) {
   static const struct {
     const char *in, *has, *not;
@@ -1967,6 +1985,7 @@ int main(void) {
   RUN(test_gains_folded);
   RUN(test_gain_value_tag);
   RUN(test_gain_markup_rewrites);
+  RUN(test_greek_names);
   test_measure_files(); /* only with BG_FIGURES_MEASURE */
   return bg_t_done();
 }
