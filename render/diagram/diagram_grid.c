@@ -59,6 +59,8 @@ typedef struct grid {
   int own_ranks;            /* ranks from bg_grid_tree_ranks, not dot: a large forest */
   int spare_sides;          /* routing: keep off cells beside other hubs (walk) */
   unsigned char *turned;    /* nodes of parts whose bands turn upside down (NULL: none) */
+  int *first_end;           /* per node the other end of its first signal, itself for a self
+                               signal, -1: none (signal_hub; NULL until first asked) */
   const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
   const double *rw, *rh;
 } grid;
@@ -1380,16 +1382,23 @@ static int free_neighbours(const grid *g, int v) {
 
 /* The placed hub at the other end of one-port u's first signal (that end
  * itself, or the hub a one-port there hangs from), or -1. */
-static int signal_hub(const grid *g, int u) {
+static int signal_hub(grid *g, int u) {
   const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
-  for (int i = 0; i < m->nsignal; i++) {
-    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]], p = from == u ? to : to == u ? from : -1;
-    if (p < 0 || p >= g->n) continue;
-    if (!g->hub[p] && g->deg[p] == 1) p = other(g, g->adj[g->adr[p]], p);
-    return g->hub[p] && g->placed[p] ? p : -1;
+  if (!g->first_end) { /* once: a loop over the signals per one-port was signals x one-ports */
+    g->first_end = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
+    for (int v = 0; v < g->n; v++) g->first_end[v] = -1;
+    for (int i = 0; i < m->nsignal; i++) {
+      int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
+      if (from < 0 || from >= g->n || to < 0 || to >= g->n) continue;
+      if (g->first_end[from] < 0) g->first_end[from] = to;
+      if (g->first_end[to] < 0) g->first_end[to] = from; /* a self signal: itself */
+    }
   }
-  return -1;
+  int p = g->first_end[u];
+  if (p < 0) return -1;
+  if (!g->hub[p] && g->deg[p] == 1) p = other(g, g->adj[g->adr[p]], p);
+  return g->hub[p] && g->placed[p] ? p : -1;
 }
 
 /* Hub v's nl one-ports on a ring round it (bg_layout_ring), in the order of
@@ -2053,6 +2062,7 @@ static void grid_free(grid *g) {
   free(g->tree_par), free(g->spine);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy), free(g->signalled);
   free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h), free(g->turned);
+  free(g->first_end);
 }
 
 void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh, int own_ranks) {
