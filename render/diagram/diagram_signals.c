@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "diagram/diagram_int.h"
+#include "base/sort.h"
 
 /* Where the ray from node n's centre towards `toward` leaves its box grown by gap. */
 static bg_vec node_exit(const bg_diagram_layout *d, int n, bg_vec toward, double gap) {
@@ -162,10 +163,58 @@ static void draw_state(bg_diagram *d, bg_router *rt, int s) {
   }
 }
 
+/* What signal i is drawn from: its element's node (a collapsed box's
+ * when it is outside the box), -2 - its user state, or -3 - 2 bonds - the
+ * bond variable's (as draw_signal draws it). */
+static long signal_source(const bg_diagram *d, int i) {
+  const bg_model *m = d->m;
+  int from = m->signal_from[i], s = bg_signal_state(d->L, i);
+  if (from >= 0) return d->L->node_of[from] != from ? d->L->node_of[from] : from;
+  if (s >= 0) return -2 - s;
+  int b = bg_signal_bond(m, m->signal_var[i]);
+  return b >= 0 ? -3L - 2L * b - (m->signal_var[i][0] == 'f') : -1;
+}
+
+typedef struct field_signal {
+  int field, i;
+  long source;
+} field_signal;
+
+static int by_field_source(const void *a, const void *b, void *ctx) {
+  (void)ctx;
+  const field_signal *p = a, *q = b;
+  if (p->field != q->field) return p->field < q->field ? -1 : 1;
+  if (p->source != q->source) return p->source < q->source ? -1 : 1;
+  return p->i - q->i;
+}
+
+/* Per signal, whether an earlier one comes from the same source into the
+ * same multiport field (to another of its ports): a field is one node, so
+ * a source read in two ports' laws was drawn as two arrows side by side
+ * into it (a held-out pathway's product inhibiting both ports of a
+ * reaction). Only the first is drawn; the model, JSON and DOT keep both. */
+static unsigned char *field_duplicates(const bg_diagram *d) {
+  const bg_model *m = d->m;
+  unsigned char *dup = bg_xcalloc((size_t)m->nsignal + 1, 1);
+  field_signal *fs = bg_xmalloc(((size_t)m->nsignal + 1) * sizeof *fs);
+  int n = 0;
+  for (int i = 0; i < m->nsignal; i++) {
+    int f = bg_elem_field(m, m->signal_to[i]);
+    if (f >= 0 && d->L->node_of[m->signal_to[i]] == m->signal_to[i]) fs[n++] = (field_signal){f, i, signal_source(d, i)};
+  }
+  bg_sort(fs, (size_t)n, sizeof *fs, by_field_source, NULL);
+  for (int k = 1; k < n; k++) dup[fs[k].i] = fs[k].field == fs[k - 1].field && fs[k].source == fs[k - 1].source;
+  free(fs);
+  return dup;
+}
+
 /* Every signal and state input, in drawing order: routed (rt) or drawn. */
 static void walk_signals(bg_diagram *d, bg_router *rt) {
   for (int s = 0; s < d->m->nstate; s++) draw_state(d, rt, s);
-  for (int i = 0; i < d->m->nsignal; i++) draw_signal(d, rt, i);
+  unsigned char *dup = field_duplicates(d);
+  for (int i = 0; i < d->m->nsignal; i++)
+    if (!dup[i]) draw_signal(d, rt, i);
+  free(dup);
 }
 
 /* Once every signal is routed, each route round the one-ports whose bonds

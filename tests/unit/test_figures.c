@@ -1720,6 +1720,26 @@ static void test_bond_directions(void) {
   fx_free(&f);
 }
 
+/* One signal per source into a multiport field (issue 31): a field is
+ * one node, and the held-out inhibited pathway's product, read in both
+ * ports' laws of the first reaction, was drawn as two arrows side by side
+ * into it. */
+static void test_field_signals(void) {
+  fx f;
+  int rc = file_model(&f, "tests/data/figures/inhibited_pathway.bg", "inhibited_pathway");
+  BG_T_REPORT(rc != 0 || f.m->nsignal == 2, "inhibited_pathway: %d signals in the model (2)", rc ? -1 : f.m->nsignal);
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
+    BG_T_REPORT(bg_diagram_count(d, "signal") == 1 && bg_diagram_count(d, "signal-arrow") == 1 && st.sig_cross == 0,
+                "inhibited_pathway %s: %d signals, %d arrows drawn (1), %d crossings", styles[si],
+                bg_diagram_count(d, "signal"), bg_diagram_count(d, "signal-arrow"), st.sig_cross);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+}
+
 /* The drawn length of bond id (its half arrow left out), -1 when absent. */
 static double bond_length(const bg_scene *s, int id) {
   fc_scene f;
@@ -1973,6 +1993,7 @@ int main(void) {
   RUN(test_state_feedback);
   RUN(test_signals_face);
   RUN(test_bond_directions);
+  RUN(test_field_signals);
   RUN(test_large_figures);
   RUN(test_large_forests);
   RUN(test_held_out_models);
