@@ -178,11 +178,11 @@ void bg_draw_frames(bg_diagram *d) {
     bg_markup_escape(&t, m->inst_parent[k] >= 0 && dot && dot[1] ? dot + 1 : name);
     bg_sb_printf(&full, "%s : ", bg_sb_str(&t));
     bg_markup_escape(&full, m->inst_def[k]);
-    double tw, th, fw, fh;
-    bg_text_measure(d->st.font, size, bg_sb_str(&full), &fw, &fh);
-    if (b->x0 + fw + 8 <= b->x1) bg_sb_clear(&t), bg_sb_puts(&t, bg_sb_str(&full));
+    double tw, th;
+    bg_text_measure(d->st.font, size, bg_sb_str(&full), &tw, &th);
+    if (b->x0 + tw + 8 <= b->x1) bg_sb_clear(&t), bg_sb_puts(&t, bg_sb_str(&full));
+    else bg_text_measure(d->st.font, size, bg_sb_str(&t), &tw, &th);
     bg_sb_free(&full);
-    bg_text_measure(d->st.font, size, bg_sb_str(&t), &tw, &th);
     double x1 = fmax(b->x1, b->x0 + tw + 8);
     bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_STROKE, "frame %s", m->inst_name[k]);
     it->color = d->st.muted;

@@ -61,6 +61,9 @@ typedef struct grid {
   unsigned char *turned;    /* nodes of parts whose bands turn upside down (NULL: none) */
   int *first_end;           /* per node the other end of its first signal, itself for a self
                                signal, -1: none (signal_hub; NULL until first asked) */
+  int *up;                  /* the parts: union-find over the edges (find; find_parts) */
+  unsigned char *cyclic;    /* per part's root: whether it has a cycle (cyclic_parts) */
+  int *sadr, *slist;        /* per user state its signals, slist[sadr[s] ..] in order (state_signals) */
   const bg_style *ref;      /* the reference style and its boxes (bg_grid_place) */
   const double *rw, *rh;
 } grid;
@@ -269,7 +272,6 @@ static void stack_children(contour *cs, const int *last, const int *shift, int *
 }
 
 static int find(int *up, int v);
-static unsigned char *cyclic_parts(const grid *g, int *up);
 
 static void assign_rows(grid *g, const int *h, int nh) {
   int n = g->n, *par = bg_xcalloc((size_t)n + 1, sizeof(int)), *last = bg_xcalloc((size_t)n + 1, sizeof(int));
@@ -281,10 +283,6 @@ static void assign_rows(grid *g, const int *h, int nh) {
   int *inst = bg_xmalloc(((size_t)n + 1) * sizeof(int)), *uni = bg_xmalloc(((size_t)n + 1) * sizeof(int));
   for (int v = 0; v < n; v++) inst[v] = uni[v] = v < g->d->m->nelem ? g->d->m->elem_inst[v] : -1;
   contour *cs = bg_xcalloc((size_t)n + 1, sizeof(contour));
-  int *up = bg_xcalloc((size_t)n + 1, sizeof(int));
-  for (int v = 0; v < n; v++) up[v] = v;
-  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
-  unsigned char *cyclic = cyclic_parts(g, up);
   for (int i = 0; i < nh; i++) par[h[i]] = parent_of(g, h[i]), last[h[i]] = g->col[h[i]], reach[h[i]] = 1, cont[h[i]] = -1;
   for (int i = nh - 1; i >= 0; i--) { /* children lie in later columns: done before their parent */
     int v = h[i], p = par[v];
@@ -326,7 +324,7 @@ static void assign_rows(grid *g, const int *h, int nh) {
      * no sibling of v is stacked across it (a random tree's junction, its
      * four sides taken, reached its lowest branch by a slanted line
      * across another branch's bond) */
-    int tree = !cyclic[find(up, v)], iv = last[v] - g->col[v];
+    int tree = !g->cyclic[find(g->up, v)], iv = last[v] - g->col[v];
     for (int k = 0; k < m; k++) {
       /* not where the branch's own column holds some of it on v's side
        * (a branch of the branch hung towards v): the bond would run
@@ -373,7 +371,7 @@ static void assign_rows(grid *g, const int *h, int nh) {
   }
   for (int v = 0; v < n; v++) free(cs[v].top), free(cs[v].bot);
   g->tree_par = par;
-  free(up), free(cyclic), free(shift), free(inst), free(uni);
+  free(shift), free(inst), free(uni);
   free(all.top), free(all.bot), free(cs), free(last), free(reach), free(cont), free(off), free(kids);
 }
 
@@ -631,16 +629,19 @@ static double column_pitch(const grid *g, const int *h, int nh) {
   return ncol ? sum / ncol / (hh + lh + 2 * ygap) : 0;
 }
 
-/* Per component root (find(up, .)): whether the part has a cycle (no
- * fewer bonds than nodes). */
-static unsigned char *cyclic_parts(const grid *g, int *up) {
-  int n = g->n, *nodes_in = bg_xcalloc((size_t)n + 1, sizeof(int));
-  unsigned char *cyclic = bg_xcalloc((size_t)n + 1, 1);
+/* The parts, once for every pass that asks (the tree drawing, the folds,
+ * movable): g->up, a union-find over the edges, and per part's root
+ * whether it has a cycle (no fewer bonds than nodes), g->cyclic. */
+static void find_parts(grid *g) {
+  int n = g->n, *up = bg_xmalloc(((size_t)n + 1) * sizeof(int)), *nodes_in = bg_xcalloc((size_t)n + 1, sizeof(int));
+  for (int v = 0; v < n; v++) up[v] = v;
+  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
+  g->cyclic = bg_xcalloc((size_t)n + 1, 1);
   for (int v = 0; v < n; v++) nodes_in[find(up, v)]++;
   for (int e = 0; e < g->ne; e++) nodes_in[find(up, g->et[e])]--;
-  for (int v = 0; v < n; v++) cyclic[v] = find(up, v) == v && nodes_in[v] <= 0;
+  for (int v = 0; v < n; v++) g->cyclic[v] = find(up, v) == v && nodes_in[v] <= 0;
   free(nodes_in);
-  return cyclic;
+  g->up = up;
 }
 
 /* The band every hub is drawn in (g->band): its column's, and in a part
@@ -713,9 +714,8 @@ static int *spine_anchors(const grid *g, const int *h, int nh) {
 }
 
 static void stack_components(grid *g, const int *h, int nh) {
-  int n = g->n, *up = bg_xcalloc((size_t)n + 1, sizeof(int));
-  for (int v = 0; v < n; v++) up[v] = v;
-  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
+  int n = g->n, *up = g->up;
+  const unsigned char *cyclic = g->cyclic;
   int *lo = bg_xcalloc((size_t)n + 1, sizeof(int)), *hi = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *ncol = bg_xcalloc((size_t)n + 1, sizeof(int)), *base = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *boff = bg_xcalloc((size_t)n + 1, sizeof(int)), *nband = bg_xcalloc((size_t)n + 1, sizeof(int));
@@ -751,7 +751,6 @@ static void stack_components(grid *g, const int *h, int nh) {
   double pitch = g->own_ranks ? column_pitch(g, h, nh) : 0, cells = 0;
   for (int v = 0; pitch > 0 && v < n; v++)
     if (find(up, v) == v && lo[v] <= hi[v]) cells += (double)ncol[v] * (hi[v] - lo[v] + 1 + sep);
-  unsigned char *cyclic = cyclic_parts(g, up);
   int *first = NULL, *chub = NULL, *anchor = NULL; /* per component its hubs, chub[first[c] .. first[c + 1]) */
   for (int v = 0; v < n; v++) {
     int c = find(up, v);
@@ -823,8 +822,8 @@ static void stack_components(grid *g, const int *h, int nh) {
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
-  free(up), free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
-  free(ilo), free(ihi), free(icomp), free(xoff), free(cyclic);
+  free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
+  free(ilo), free(ihi), free(icomp), free(xoff);
 }
 
 /* ---------------------------------------------------------------- routing bonds between hubs */
@@ -1129,10 +1128,8 @@ static int move_fits(const grid *g, const side_move *mv) {
  * crossed its junction's other bonds, once a branch beside it moved). */
 static unsigned char *movable(const grid *g) {
   size_t n = (size_t)g->n + 1;
-  int *up = bg_xcalloc(n, sizeof(int)), *cyc = bg_xcalloc(n, sizeof(int)); /* hub bonds - hubs (>= 0: a cycle) */
+  int *up = g->up, *cyc = bg_xcalloc(n, sizeof(int)); /* hub bonds - hubs (>= 0: a cycle) */
   unsigned char *ok = bg_xcalloc(n, 1), *rough = bg_xcalloc(n, 1);
-  for (int v = 0; v < g->n; v++) up[v] = v;
-  for (int e = 0; e < g->ne; e++) up[find(up, g->et[e])] = find(up, g->eh[e]);
   for (int v = 0; v < g->n; v++) cyc[find(up, v)] -= g->hub[v] && g->placed[v];
   for (int e = 0; e < g->ne; e++) cyc[find(up, g->et[e])] += is_hub_bond(g, e);
   for (int e = 0; e < g->ne; e++)
@@ -1145,7 +1142,7 @@ static unsigned char *movable(const grid *g) {
     if (is_hub_bond(g, e) && (end[g->et[e]] || end[g->eh[e]]))
       ok[g->et[e]] = ok[g->et[e]] ? 2 : 0, ok[g->eh[e]] = ok[g->eh[e]] ? 2 : 0;
   free(end);
-  free(up), free(cyc), free(rough);
+  free(cyc), free(rough);
   return ok;
 }
 
@@ -1380,21 +1377,29 @@ static int free_neighbours(const grid *g, int v) {
   return n;
 }
 
+/* Per node the other end of its first signal (both ends in the layout),
+ * -1 for none: one pass over the signals. A signal from a node to itself
+ * counts as its first with keep_self (that end is the node), else it is
+ * passed over. */
+static int *first_signal_ends(const grid *g, int keep_self) {
+  const bg_diagram_layout *d = g->d;
+  const bg_model *m = d->m;
+  int *end = bg_xmalloc(((size_t)g->n + 1) * sizeof *end);
+  for (int v = 0; v < g->n; v++) end[v] = -1;
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
+    if (from < 0 || from >= g->n || to < 0 || to >= g->n || (from == to && !keep_self)) continue;
+    if (end[from] < 0) end[from] = to;
+    if (end[to] < 0) end[to] = from;
+  }
+  return end;
+}
+
 /* The placed hub at the other end of one-port u's first signal (that end
  * itself, or the hub a one-port there hangs from), or -1. */
 static int signal_hub(grid *g, int u) {
-  const bg_diagram_layout *d = g->d;
-  const bg_model *m = d->m;
-  if (!g->first_end) { /* once: a loop over the signals per one-port was signals x one-ports */
-    g->first_end = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
-    for (int v = 0; v < g->n; v++) g->first_end[v] = -1;
-    for (int i = 0; i < m->nsignal; i++) {
-      int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
-      if (from < 0 || from >= g->n || to < 0 || to >= g->n) continue;
-      if (g->first_end[from] < 0) g->first_end[from] = to;
-      if (g->first_end[to] < 0) g->first_end[to] = from; /* a self signal: itself */
-    }
-  }
+  /* once: a loop over the signals per one-port was signals x one-ports */
+  if (!g->first_end) g->first_end = first_signal_ends(g, 1);
   int p = g->first_end[u];
   if (p < 0) return -1;
   if (!g->hub[p] && g->deg[p] == 1) p = other(g, g->adj[g->adr[p]], p);
@@ -1464,30 +1469,22 @@ static int compactable(const grid *g);
 static int *signal_partners(const grid *g) {
   const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
-  int *partner = bg_xmalloc(((size_t)g->n + 1) * sizeof *partner);
-  for (int v = 0; v < g->n; v++) partner[v] = -1;
-  for (int i = 0; i < m->nsignal; i++) {
-    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
-    if (from < 0 || from >= g->n || to < 0 || to >= g->n || from == to) continue;
-    if (partner[from] < 0) partner[from] = drawn_by(d, to);
-    if (partner[to] < 0) partner[to] = drawn_by(d, from);
-  }
+  int *partner = first_signal_ends(g, 0);
+  for (int v = 0; v < g->n; v++)
+    if (partner[v] >= 0) partner[v] = drawn_by(d, partner[v]);
   /* an element a user state integrates (its signal goes to the state's
    * integrator, placed later beside what the state modulates): that */
-  int *target = bg_xmalloc(((size_t)m->nstate + 1) * sizeof *target), in[64];
-  for (int k = 0; k < m->nstate; k++) target[k] = -1;
-  for (int i = 0; i < m->nsignal; i++) {
-    int k = bg_signal_state(d, i);
-    if (k >= 0 && target[k] < 0 && d->node_of[m->signal_to[i]] < g->n) target[k] = drawn_by(d, m->signal_to[i]);
-  }
+  int in[64];
   for (int k = 0; k < m->nstate; k++) {
-    if (target[k] < 0 || d->state_node[k] < 0) continue;
+    int target = -1;
+    for (int j = g->sadr[k]; j < g->sadr[k + 1] && target < 0; j++)
+      if (d->node_of[m->signal_to[g->slist[j]]] < g->n) target = drawn_by(d, m->signal_to[g->slist[j]]);
+    if (target < 0 || d->state_node[k] < 0) continue;
     for (int j = 0, nin = bg_state_inputs(m, k, in, 64); j < nin; j++) {
       int u = d->node_of[in[j]] < g->n ? drawn_by(d, in[j]) : -1;
-      if (u >= 0 && u != target[k] && partner[u] < 0) partner[u] = target[k];
+      if (u >= 0 && u != target && partner[u] < 0) partner[u] = target;
     }
   }
-  free(target);
   return partner;
 }
 
@@ -1562,12 +1559,10 @@ static void place_leaves(grid *g) {
   if (compactable(g)) face_signals(g);
 }
 
-/* The node a float sits beside: for a user-state integrator the element
- * its first signal modulates, else the placed node dot put nearest. */
-/* Per user state its signals, in order: slist[sadr[s] .. sadr[s + 1]) (for
- * float_anchor: a loop over every signal per integrator made the layout
- * quadratic in the states). */
-static void state_signals(const grid *g, int **sadr, int **slist) {
+/* Per user state its signals, in order: g->slist[g->sadr[s] .. sadr[s + 1])
+ * (a loop over every signal per integrator made the layout quadratic in
+ * the states: float_anchor, signal_partners). */
+static void state_signals(grid *g) {
   const bg_model *m = g->d->m;
   int *adr = bg_xcalloc((size_t)m->nstate + 2, sizeof(int)), *list = bg_xcalloc((size_t)m->nsignal + 1, sizeof(int));
   int *fill = bg_xcalloc((size_t)m->nstate + 1, sizeof(int));
@@ -1579,10 +1574,13 @@ static void state_signals(const grid *g, int **sadr, int **slist) {
     if (s >= 0) list[adr[s] + fill[s]++] = i;
   }
   free(fill);
-  *sadr = adr, *slist = list;
+  g->sadr = adr, g->slist = list;
 }
 
-static int float_anchor(const grid *g, const int *sadr, const int *slist, int v) {
+/* The node a float sits beside: for a user-state integrator the element
+ * its first signal modulates, else the placed node dot put nearest. */
+static int float_anchor(const grid *g, int v) {
+  const int *sadr = g->sadr, *slist = g->slist;
   const bg_diagram_layout *d = g->d;
   const bg_model *m = d->m;
   int k = d->node_det[v], s = d->node_state[v];
@@ -1601,11 +1599,9 @@ static int float_anchor(const grid *g, const int *sadr, const int *slist, int v)
 /* Nodes with no place yet (user-state integrators, elements without bonds):
  * above or below their anchor, else in a free cell next to it. */
 static void place_floats(grid *g) {
-  int *sadr, *slist;
-  state_signals(g, &sadr, &slist);
   for (int v = 0; v < g->n; v++) {
     if (g->placed[v]) continue;
-    int a = float_anchor(g, sadr, slist, v), x = 0, y = 0;
+    int a = float_anchor(g, v), x = 0, y = 0;
     if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] - 1)) x = g->gx[a], y = g->gy[a] - 1; /* above */
     else if (a >= 0 && cell_free(g, g->gx[a], g->gy[a] + 1)) x = g->gx[a], y = g->gy[a] + 1;
     else if (a >= 0) near_cell(g, g->gx[a], g->gy[a], 1, &x, &y);
@@ -1613,7 +1609,6 @@ static void place_floats(grid *g) {
     g->gx[v] = x, g->gy[v] = y, g->placed[v] = 1;
     cell_take(g, x, y, v);
   }
-  free(sadr), free(slist);
 }
 
 /* The band every node is drawn in (bg_layout.band), for frames drawn per
@@ -1631,14 +1626,11 @@ static void record_bands(grid *g) {
       int w = drawn_by(d, other(g, g->adj[k], v));
       if (g->hub[w]) band[v] = band[w], done[v] = 1;
     }
-  int *sadr, *slist;
-  state_signals(g, &sadr, &slist);
   for (int v = 0; v < g->n; v++)
     if (!done[v] && own_node(d, v)) {
-      int a = float_anchor(g, sadr, slist, v);
+      int a = float_anchor(g, v);
       band[v] = a >= 0 && done[a] ? band[a] : 0;
     }
-  free(sadr), free(slist);
   for (int v = 0; v < g->n; v++)
     if (!own_node(d, v)) band[v] = band[drawn_by(d, v)];
   free(done);
@@ -2062,7 +2054,7 @@ static void grid_free(grid *g) {
   free(g->tree_par), free(g->spine);
   free(g->key), free(g->val), free(g->inst_cx), free(g->inst_cy), free(g->signalled);
   free(g->orbit), free(g->ring_x), free(g->ring_y), free(g->ring_w), free(g->ring_h), free(g->turned);
-  free(g->first_end);
+  free(g->first_end), free(g->up), free(g->cyclic), free(g->sadr), free(g->slist);
 }
 
 void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, const double *rh, int own_ranks) {
@@ -2071,6 +2063,8 @@ void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, 
   grid_alloc(&g, d);
   g.ref = ref, g.rw = rw, g.rh = rh, g.own_ranks = own_ranks;
   classify(&g);
+  find_parts(&g);
+  state_signals(&g);
   g.signalled = signal_ends(&g);
   for (int v = 0; v < g.n; v++) g.placed[v] = !own_node(d, v); /* inside a box, a field's other port */
   int nh, *h = order_hubs(&g, &nh);
