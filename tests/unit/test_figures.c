@@ -476,6 +476,17 @@ static int file_model(fx *f, const char *rel, const char *name) {
   return rc;
 }
 
+/* The faults of model file rel (compiled as name) in each style,
+ * st[0..3) (default layers): 0, or nonzero when it does not compile
+ * (reported). */
+static int file_faults(const char *rel, const char *name, fc_stats st[3]) {
+  fx f;
+  int rc = file_model(&f, rel, name);
+  for (int si = 0; rc == 0 && si < 3; si++) bg_diagram_free(style_drawing(&f, si, &st[si]));
+  fx_free(&f);
+  return rc;
+}
+
 /* One model in every style and layer set, added to tot; the arrangement
  * of each style compared with the default style's (same layers). */
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
@@ -1210,32 +1221,23 @@ static void test_two_row_meshes(void) {
  * theirs. A branch side moves only when it lies wholly inside its hub's
  * instance or wholly outside it: 0 and 0 in every style, 7 frames. */
 static void test_frames_on_branches(void) {
-  fx f;
-  int rc = file_model(&f, "tests/data/figures/tee_network.bg", "tee_network");
-  for (int si = 0; rc == 0 && si < 3; si++) {
-    fc_stats st = {0};
-    bg_diagram *d = style_drawing(&f, si, &st);
-    if (!d) continue;
-    BG_T_REPORT(st.frames == 7 && st.frame_cross == 0 && st.foreign == 0 && st.crossings == 0,
-                "tee_network %s: %d frames (7), crossing %d, foreign %d, bonds crossing %d (0)", styles[si], st.frames,
-                st.frame_cross, st.foreign, st.crossings);
-    bg_diagram_free(d);
-  }
-  fx_free(&f);
+  fc_stats st[3] = {{0}};
+  int rc = file_faults("tests/data/figures/tee_network.bg", "tee_network", st);
+  for (int si = 0; rc == 0 && si < 3; si++)
+    BG_T_REPORT(st[si].frames == 7 && st[si].frame_cross == 0 && st[si].foreign == 0 && st[si].crossings == 0,
+                "tee_network %s: %d frames (7), crossing %d, foreign %d, bonds crossing %d (0)", styles[si],
+                st[si].frames, st[si].frame_cross, st[si].foreign, st[si].crossings);
   /* a frame names its submodel only where it is wide enough: a wall of
    * one-element layers (tests/data/figures/wall.bg) had each frame grown
    * to `plaster : Capacitance`, over the next one (1 pair of frames
    * crossing, in slides 2 and 2 labels over lines; with the library's
    * `ThermalCapacitance` 9 pairs, 4 foreign elements, 9 labels over) */
-  rc = file_model(&f, "tests/data/figures/wall.bg", "wall");
-  for (int si = 0; rc == 0 && si < 3; si++) {
-    fc_stats st = {0};
-    bg_diagram_free(style_drawing(&f, si, &st));
-    BG_T_REPORT(st.frames == 10 && st.frame_cross == 0 && st.foreign == 0 && st.over == 0,
-                "wall %s: %d frames (10), crossing %d, foreign %d, labels over lines %d (0)", styles[si], st.frames,
-                st.frame_cross, st.foreign, st.over);
-  }
-  fx_free(&f);
+  fc_stats w[3] = {{0}};
+  rc = file_faults("tests/data/figures/wall.bg", "wall", w);
+  for (int si = 0; rc == 0 && si < 3; si++)
+    BG_T_REPORT(w[si].frames == 10 && w[si].frame_cross == 0 && w[si].foreign == 0 && w[si].over == 0,
+                "wall %s: %d frames (10), crossing %d, foreign %d, labels over lines %d (0)", styles[si], w[si].frames,
+                w[si].frame_cross, w[si].foreign, w[si].over);
 }
 
 /* A one-port on a diagonal cell of its hub (the junction's four sides
@@ -1709,15 +1711,11 @@ static void test_bond_directions(void) {
     bg_sb_free(&src), bg_sb_free(&flipped);
   }
   printf("bonds either way: %d slanted (%d with every bond pointing away)\n", slanted, forward);
-  fx f;
-  int rc = file_model(&f, "tests/data/figures/bus_ring.bg", "bus_ring");
-  for (int si = 0; rc == 0 && si < 3; si++) {
-    fc_stats st = {0};
-    bg_diagram_free(style_drawing(&f, si, &st));
-    BG_T_REPORT(st.slanted == 0 && st.crossings == 0, "bus_ring %s: %d slanted, %d crossings (0, 0)", styles[si],
-                st.slanted, st.crossings);
-  }
-  fx_free(&f);
+  fc_stats st[3] = {{0}};
+  int rc = file_faults("tests/data/figures/bus_ring.bg", "bus_ring", st);
+  for (int si = 0; rc == 0 && si < 3; si++)
+    BG_T_REPORT(st[si].slanted == 0 && st[si].crossings == 0, "bus_ring %s: %d slanted, %d crossings (0, 0)",
+                styles[si], st[si].slanted, st[si].crossings);
 }
 
 /* One signal per source into a multiport field (issue 31): a field is
@@ -1825,17 +1823,12 @@ static void test_state_feedback(void) {
  * signal crossing a bond, in every style; the generated modulated ladder
  * of 9 sections (fm_modladder) 5 -> at most 1. */
 static void test_signals_face(void) {
+  fc_stats pw[3] = {{0}};
+  int rc = file_faults("tests/data/figures/pathway.bg", "pathway", pw);
+  for (int si = 0; rc == 0 && si < 3; si++)
+    BG_T_REPORT(pw[si].sig_cross == 0 && pw[si].crossings == 0, "pathway %s: signal crossings %d, bond crossings %d (0)",
+                styles[si], pw[si].sig_cross, pw[si].crossings);
   fx f;
-  int rc = file_model(&f, "tests/data/figures/pathway.bg", "pathway");
-  for (int si = 0; rc == 0 && si < 3; si++) {
-    fc_stats st = {0};
-    bg_diagram *d = style_drawing(&f, si, &st);
-    if (!d) continue;
-    BG_T_REPORT(st.sig_cross == 0 && st.crossings == 0, "pathway %s: signal crossings %d, bond crossings %d (0)",
-                styles[si], st.sig_cross, st.crossings);
-    bg_diagram_free(d);
-  }
-  fx_free(&f);
   bg_strbuf src = {0};
   fm_modladder(&src, 9);
   rc = fm_load(&f, "modladder9", bg_sb_str(&src));
@@ -1854,14 +1847,12 @@ static void test_signals_face(void) {
    * held-out excavator: the arm's mass under its junction, its signal to
    * the arm's position integrator beside the valve below crossed the row
    * above, 1 signal crossing in every style) */
-  rc = file_model(&f, "tests/data/figures/excavator.bg", "excavator");
-  for (int si = 0; rc == 0 && si < 3; si++) {
-    fc_stats st = {0};
-    bg_diagram_free(style_drawing(&f, si, &st));
-    BG_T_REPORT(st.sig_cross == 0 && st.crossings == 0, "excavator %s: signal crossings %d, bond crossings %d (0)",
-                styles[si], st.sig_cross, st.crossings);
-  }
-  fx_free(&f);
+  fc_stats ex[3] = {{0}};
+  rc = file_faults("tests/data/figures/excavator.bg", "excavator", ex);
+  for (int si = 0; rc == 0 && si < 3; si++)
+    BG_T_REPORT(ex[si].sig_cross == 0 && ex[si].crossings == 0,
+                "excavator %s: signal crossings %d, bond crossings %d (0)", styles[si], ex[si].sig_cross,
+                ex[si].crossings);
 }
 
 /* ---------------------------------------------------------------- the tutorial and the gallery */
