@@ -388,10 +388,24 @@ static void assign_rows(grid *g, const int *h, int nh) {
  * a mesh only when every hub gets a point of its own and every bond
  * between hubs joins neighbouring points, so whatever passes is drawn
  * with every hub bond straight; anything else keeps the tree drawing.
+ * The mesh is looked for on the part's core: hubs hanging off it in
+ * chains (a plate's load junction at a corner, a source's junction
+ * before the first cell) are peeled off first and then drawn straight
+ * out from their mesh hub's free outer side (mesh_pendants).
  * Linear in the part's size. */
 static int hub_degree(const grid *g, int v) {
   int k = 0;
   for (int i = g->adr[v]; i < g->adr[v + 1]; i++) k += g->hub[other(g, g->adj[i], v)];
+  return k;
+}
+
+/* Hub bonds of v to hubs of the core (pend: the hubs peeled off). */
+static int core_degree(const grid *g, const unsigned char *pend, int v) {
+  int k = 0;
+  for (int i = g->adr[v]; i < g->adr[v + 1]; i++) {
+    int u = other(g, g->adj[i], v);
+    k += g->hub[u] && !pend[u];
+  }
   return k;
 }
 
@@ -410,33 +424,95 @@ static int hub_bfs(const grid *g, int s, int *dist, int *q) {
   return qt;
 }
 
-/* Whether hub v may be a mesh's corner: two hub bonds, to hubs of two
- * hub bonds each. */
-static int corner_like(const grid *g, int v) {
-  if (hub_degree(g, v) != 2) return 0;
+/* Whether core hub v may be a mesh's corner: two hub bonds, to hubs of two
+ * hub bonds each (in the core). */
+static int corner_like(const grid *g, const unsigned char *pend, int v) {
+  if (core_degree(g, pend, v) != 2) return 0;
   for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
     int u = other(g, g->adj[k], v);
-    if (g->hub[u] && hub_degree(g, u) != 2) return 0;
+    if (g->hub[u] && !pend[u] && core_degree(g, pend, u) != 2) return 0;
+  }
+  return 1;
+}
+
+/* Peels the part's hubs q[0..n) down to its core: a hub with at most one
+ * hub bond left is marked in pend, repeatedly (cdeg, queue: scratch).
+ * Returns the hubs left. */
+static int peel_pendants(const grid *g, const int *q, int n, unsigned char *pend, int *cdeg, int *queue) {
+  int qt = 0, left = n;
+  for (int i = 0; i < n; i++)
+    if ((cdeg[q[i]] = hub_degree(g, q[i])) <= 1) queue[qt++] = q[i];
+  for (int qh = 0; qh < qt; qh++) {
+    int v = queue[qh];
+    if (pend[v]) continue;
+    pend[v] = 1, left--;
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
+      int u = other(g, g->adj[k], v);
+      if (g->hub[u] && !pend[u] && --cdeg[u] == 1) queue[qt++] = u;
+    }
+  }
+  return left;
+}
+
+/* The peeled hubs of a mesh (col, row of its core set), each chain drawn
+ * straight out of its mesh hub's free outer side (L, H: the lattice's
+ * last column and row): right or left before down or up, one chain per
+ * side. A peeled tree that branches, or a hub with more chains than free
+ * outer sides, leaves the part to the tree drawing: returns 0 and sets
+ * nothing. Chains out of different sides never meet: each keeps to its
+ * own row or column outside the lattice. */
+static int mesh_pendants(grid *g, const int *q, int n, const unsigned char *pend, int L, int H, int *pc, int *pr) {
+  static const int dir[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int i = 0; i < n; i++) {
+    int a = q[i], used = 0;
+    if (pend[a]) continue;
+    for (int k = g->adr[a]; k < g->adr[a + 1]; k++) {
+      int p = other(g, g->adj[k], a);
+      if (!g->hub[p] || !pend[p]) continue;
+      int c = g->col[a], r = g->row[a], side = -1;
+      for (int s = 0; s < 4 && side < 0; s++) {
+        int out = s == 0 ? c == L : s == 1 ? c == 0 : s == 2 ? r == H : r == 0;
+        if (out && !(used >> s & 1)) side = s;
+      }
+      if (side < 0) return 0;
+      used |= 1 << side;
+      for (int prev = a, cur = p, step = 1; cur >= 0; step++) {
+        pc[cur] = c + step * dir[side][0], pr[cur] = r + step * dir[side][1];
+        int next = -1, nn = 0;
+        for (int j = g->adr[cur]; j < g->adr[cur + 1]; j++) {
+          int u = other(g, g->adj[j], cur);
+          if (g->hub[u] && u != prev) next = u, nn++;
+        }
+        if (nn > 1) return 0;
+        prev = cur, cur = next;
+      }
+    }
   }
   return 1;
 }
 
 /* The part of hubs q[0..n) as a mesh: col and row of each, or nothing.
  * da, db, ds: per node, -1 for the part's hubs on entry (the caller
- * resets them); qq: a queue. */
-static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, int *qq) {
+ * resets them); qq: a queue; pend: 0 for the part's hubs (reset by the
+ * caller); cq: room for n hubs. */
+static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, int *qq, unsigned char *pend, int *cq) {
   int corner[4], nc = 0, src = -1;
-  for (int i = 0; i < n; i++) {
-    int v = q[i];
-    if (hub_degree(g, v) > 4) return;
-    if (!corner_like(g, v)) continue;
+  int ncore = peel_pendants(g, q, n, pend, ds, qq);
+  for (int i = 0; i < n; i++) ds[q[i]] = -1;
+  if (ncore < 13) return;
+  for (int i = 0, k = 0; i < n; i++)
+    if (!pend[q[i]]) cq[k++] = q[i];
+  for (int i = 0; i < ncore; i++) {
+    int v = cq[i];
+    if (core_degree(g, pend, v) > 4) return;
+    if (!corner_like(g, pend, v)) continue;
     /* a mesh two junctions deep (a counterflow exchanger's two streams
      * joined by walls) has its end rungs corner-like too, between two
      * corners: a corner has a neighbour that is not */
     int between = 1;
     for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
       int u = other(g, g->adj[k], v);
-      if (g->hub[u] && !corner_like(g, u)) between = 0;
+      if (g->hub[u] && !pend[u] && !corner_like(g, pend, u)) between = 0;
     }
     if (between) continue;
     if (nc == 4) return;
@@ -469,40 +545,59 @@ static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, i
   if (da[o[0]] + da[o[1]] != da[o[2]]) return;
   int b = da[o[1]] > da[o[0]] || (da[o[1]] == da[o[0]] && g->d->nx[o[1]] > g->d->nx[o[0]]) ? o[1] : o[0];
   int L = da[b], H = da[o[2]] - L;
-  if ((long long)(L + 1) * (H + 1) > 4LL * n + 16) return;
+  if ((long long)(L + 1) * (H + 1) > 4LL * ncore + 16) return;
   hub_bfs(g, b, db, qq);
   /* lattice point of v: x = (da - db + L) / 2, y = (da + db - L) / 2 */
   int *at = bg_xcalloc((size_t)(L + 1) * (size_t)(H + 1), sizeof(int)), ok = 1;
-  for (int i = 0; i < n && ok; i++) {
-    int v = q[i], x2 = da[v] - db[v] + L, y2 = da[v] + db[v] - L;
+  for (int i = 0; i < ncore && ok; i++) {
+    int v = cq[i], x2 = da[v] - db[v] + L, y2 = da[v] + db[v] - L;
     ok = db[v] >= 0 && x2 >= 0 && y2 >= 0 && x2 % 2 == 0 && y2 % 2 == 0 && x2 / 2 <= L && y2 / 2 <= H;
     if (ok) ok = !at[(y2 / 2) * (L + 1) + x2 / 2]++;
   }
-  for (int i = 0; i < n && ok; i++)
-    for (int k = g->adr[q[i]]; k < g->adr[q[i] + 1] && ok; k++) {
-      int v = q[i], u = other(g, g->adj[k], v);
-      if (g->hub[u]) ok = abs((da[u] - db[u]) - (da[v] - db[v])) / 2 + abs((da[u] + db[u]) - (da[v] + db[v])) / 2 == 1;
-    }
-  if (ok)
-    for (int i = 0; i < n; i++) {
-      int v = q[i];
-      g->col[v] = (da[v] - db[v] + L) / 2, g->row[v] = (da[v] + db[v] - L) / 2, g->mesh[v] = 1;
+  for (int i = 0; i < ncore && ok; i++)
+    for (int k = g->adr[cq[i]]; k < g->adr[cq[i] + 1] && ok; k++) {
+      int v = cq[i], u = other(g, g->adj[k], v);
+      if (g->hub[u] && !pend[u])
+        ok = abs((da[u] - db[u]) - (da[v] - db[v])) / 2 + abs((da[u] + db[u]) - (da[v] + db[v])) / 2 == 1;
     }
   free(at);
+  if (!ok) return;
+  int *pc = da, *pr = db; /* the peeled hubs' points; da, db are not read again */
+  int *keep_c = bg_xmalloc((size_t)ncore * sizeof(int)), *keep_r = bg_xmalloc((size_t)ncore * sizeof(int));
+  for (int i = 0; i < ncore; i++) { /* the core's points, the tree drawing's kept until the chains fit */
+    int v = cq[i];
+    keep_c[i] = g->col[v], keep_r[i] = g->row[v];
+    g->col[v] = (da[v] - db[v] + L) / 2, g->row[v] = (da[v] + db[v] - L) / 2;
+  }
+  if (ncore < n && !mesh_pendants(g, q, n, pend, L, H, pc, pr)) {
+    for (int i = 0; i < ncore; i++) g->col[cq[i]] = keep_c[i], g->row[cq[i]] = keep_r[i];
+  } else {
+    int minc = 0;
+    for (int i = 0; i < n; i++) {
+      int v = q[i];
+      if (pend[v]) g->col[v] = pc[v], g->row[v] = pr[v];
+      minc = g->col[v] < minc ? g->col[v] : minc;
+      g->mesh[v] = 1;
+    }
+    for (int i = 0; i < n; i++) g->col[q[i]] -= minc; /* a chain out of the left side: columns from 0 */
+  }
+  free(keep_c), free(keep_r);
 }
 
 static void mesh_rows(grid *g, const int *h, int nh) {
   size_t n = (size_t)g->n + 1;
   int *seen = bg_xmalloc(n * sizeof(int)), *da = bg_xmalloc(n * sizeof(int)), *db = bg_xmalloc(n * sizeof(int));
   int *ds = bg_xmalloc(n * sizeof(int)), *q = bg_xmalloc(n * sizeof(int)), *qq = bg_xmalloc(n * sizeof(int));
+  int *cq = bg_xmalloc(n * sizeof(int));
+  unsigned char *pend = bg_xcalloc(n, 1);
   for (size_t v = 0; v < n; v++) seen[v] = da[v] = db[v] = ds[v] = -1;
   for (int i = 0; i < nh; i++) {
     if (seen[h[i]] >= 0) continue;
     int k = hub_bfs(g, h[i], seen, q);
-    if (k >= 13) mesh_part(g, q, k, da, db, ds, qq); /* 2 x 3 junctions and their links at least */
-    for (int j = 0; j < k; j++) da[q[j]] = db[q[j]] = ds[q[j]] = -1;
+    if (k >= 13) mesh_part(g, q, k, da, db, ds, qq, pend, cq); /* 2 x 3 junctions and their links at least */
+    for (int j = 0; j < k; j++) da[q[j]] = db[q[j]] = ds[q[j]] = -1, pend[q[j]] = 0;
   }
-  free(seen), free(da), free(db), free(ds), free(q), free(qq);
+  free(seen), free(da), free(db), free(ds), free(q), free(qq), free(cq), free(pend);
 }
 
 /* ---------------------------------------------------------------- components, wrapping */

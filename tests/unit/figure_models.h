@@ -104,6 +104,20 @@ static void fm_grid(bg_strbuf *b, int r, int c) {
     }
 }
 
+/* A chain of n hubs hanging off node `at` (1- and 0-junctions in turn,
+ * an R on each), ended by an Se: a load or a probe on a mesh's edge. */
+__attribute__((unused)) static void fm_chain_off(bg_strbuf *b, const char *name, const char *at, int n) {
+  const char *prev = at;
+  char cur[64], last[64] = "";
+  for (int k = 0; k < n; k++) {
+    snprintf(cur, sizeof cur, "%s%d", name, k);
+    bg_sb_printf(b, "%d %s\nR %sr%d = 1\nbond %s -> %s\nbond %s -> %sr%d\n", k % 2 ? 0 : 1, cur, name, k, prev, cur, cur,
+                 name, k);
+    memcpy(last, cur, sizeof last), prev = last;
+  }
+  bg_sb_printf(b, "Se %sE = 0\nbond %sE -> %s\n", name, name, prev);
+}
+
 static unsigned fm_rand(unsigned *s) { return *s = *s * 1103515245u + 12345u, (*s >> 16) & 0x7fff; }
 
 /* A random tree of n junctions (each joined to an earlier one, the kind

@@ -1213,6 +1213,49 @@ static void test_two_row_meshes(void) {
   }
 }
 
+/* Meshes with chains hanging off (issue 31): a mesh is looked for on its
+ * part's core, and the chains of hubs hanging off it are drawn straight
+ * out of their hub's outer side. A 3 x 3 plate of thermal cells whose far
+ * corner loses heat through a 1-junction (tests/data/figures/plate.bg,
+ * held out) had that corner not counted a corner: drawn as a tree, 8
+ * bonds with a corner; a 3 x 4 and a 2 x 5 grid with chains off corners
+ * and edges 14 and 10, and 2 slanted bonds no junction forced. Now every hub bond straight, none crossing,
+ * the only slanted bonds the one-ports a junction's five bonds force to
+ * a diagonal, in every style. */
+static void test_meshes_with_chains(void) {
+  for (int c = 0; c < 3; c++) {
+    bg_strbuf src = {0};
+    static const char *name[] = {"plate", "grid3x4+chains", "grid2x5+chains"};
+    fx f;
+    int rc;
+    if (c == 0) rc = file_model(&f, "tests/data/figures/plate.bg", name[c]);
+    else {
+      if (c == 1) {
+        fm_grid(&src, 3, 4);
+        fm_chain_off(&src, "load", "n2_3", 2), fm_chain_off(&src, "probe", "n0_1", 1);
+        fm_chain_off(&src, "leak", "n1_0", 1);
+      } else {
+        fm_grid(&src, 2, 5);
+        fm_chain_off(&src, "a", "n1_0", 1), fm_chain_off(&src, "b", "n1_0", 2), fm_chain_off(&src, "c", "n0_4", 3);
+      }
+      rc = fm_load(&f, name[c], bg_sb_str(&src));
+      BG_T_REPORT(rc == 0, "%s compiles", name[c]);
+    }
+    for (int si = 0; rc == 0 && si < 3; si++) {
+      fc_stats st = {0};
+      bg_diagram *d = style_drawing(&f, si, &st);
+      if (!d) continue;
+      int bent = bonds_bent(bg_diagram_scene(d)), forced = fc_forced_diagonals(f.m, bg_diagram_scene(d));
+      BG_T_REPORT(bent == 0 && st.crossings == 0 && st.slanted == forced,
+                  "%s %s: bonds with a corner %d, crossing %d (0), slanted %d (forced %d)", name[c], styles[si], bent,
+                  st.crossings, st.slanted, forced);
+      bg_diagram_free(d);
+    }
+    fx_free(&f);
+    bg_sb_free(&src);
+  }
+}
+
 /* Frames on branches (issue 31): a pipe network of two three-port Tee
  * instances, each outlet running on into a Pipe instance
  * (tests/data/figures/tee_network.bg, held out). Straightening the Tee's
@@ -1978,6 +2021,7 @@ int main(void) {
   RUN(test_frames_in_rings);
   RUN(test_frames_on_branches);
   RUN(test_two_row_meshes);
+  RUN(test_meshes_with_chains);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
