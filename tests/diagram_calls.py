@@ -7,7 +7,8 @@ name followed by '('. Usage: python3 tests/diagram_calls.py ROOT"""
 import re, sys, os
 
 LEVELS = [
-    ["diagram_base", "diagram_words", "layout_rank", "layout_align", "layout_pack", "layout_ring"],  # leaves
+    ["diagram_base", "diagram_words", "layout_rank", "layout_align", "layout_pack", "layout_ring",
+     "layout_maze"],  # leaves
     ["diagram_route_near"],                                    # the router's near index
     ["diagram_route_cost", "diagram_route_grid"],              # its costs; its grid of lines
     ["diagram_route_search", "diagram_route_branch"],          # its A* search; branches

@@ -30,6 +30,8 @@
 #include "base/sort.h"
 
 enum { SIDE_R = 1, SIDE_U = 2, SIDE_L = 4, SIDE_D = 8 };
+/* a route's corners at most (a maze route's, maze_hub_bonds; the others have two), and its points */
+enum { MAX_CORNER = 10, MAX_PTS = MAX_CORNER + 2 };
 
 typedef struct grid {
   bg_diagram_layout *d;
@@ -49,7 +51,8 @@ typedef struct grid {
   long long *key;
   int *val, cap, used;
   /* routes: per edge the corners (grid cells), bent[e] = count, -1: slanted */
-  int *bent, (*corner)[4];
+  int *bent, (*corner)[2 * MAX_CORNER];
+  int mazed;                /* a hub bond routed by maze_hub_bonds: no compaction */
   double *inst_cx, *inst_cy; /* per instance: the centre of its hubs (NULL: no instances) */
   /* one-ports round a hub whose next cells cannot hold them (ring_leaves;
    * NULL: none): per one-port its hub (-1: none) and offset from it in
@@ -950,7 +953,10 @@ static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
       x += sx, y += sy;
       if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
       if (take > 0) cell_take(g, x, y, -2 - e);
-      else if (take < 0) g->val[cell_slot(g, cell_key(x, y))] = RELEASED;
+      else if (take < 0) {
+        int i = cell_slot(g, cell_key(x, y));
+        if (g->val[i] == -2 - e) g->val[i] = RELEASED; /* not a cell a maze route crosses: the other bond's */
+      }
       else if (!cell_free(g, x, y) || (g->spare_sides && beside_hub(g, x, y, g->et[e], g->eh[e]))) return 0;
     }
   }
@@ -1020,7 +1026,7 @@ static int route_points(const grid *g, int e, int (*pts)[2]) {
 
 /* Takes edge e's route away: its cells and the sides at its ends. */
 static void unroute(grid *g, int e) {
-  int pts[6][2], n = route_points(g, e, pts);
+  int pts[MAX_PTS][2], n = route_points(g, e, pts);
   walk(g, (const int(*)[2])pts, n, -1, e);
   g->sides[g->et[e]] &= (unsigned char)~side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
   g->sides[g->eh[e]] &= (unsigned char)~side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
@@ -1040,7 +1046,7 @@ static void rip_up(grid *g, int e) {
   for (int end = 0; end < 2 && g->bent[e] < 0; end++) {
     int v = end ? g->eh[e] : g->et[e];
     for (int k = g->adr[v]; k < g->adr[v + 1] && g->bent[e] < 0; k++) {
-      int f = g->adj[k], pts[6][2], n;
+      int f = g->adj[k], pts[MAX_PTS][2], n;
       if (f == e || g->bent[f] < 0 || !is_hub_bond(g, f)) continue;
       n = route_points(g, f, pts);
       unroute(g, f);
@@ -1058,6 +1064,110 @@ static void route_hub_bonds(grid *g) {
       if (g->bent[e] < 0 && is_hub_bond(g, e)) route(g, e, pass);
   for (int e = 0; e < g->ne; e++)
     if (g->bent[e] < 0 && is_hub_bond(g, e)) rip_up(g, e);
+}
+
+/* ---------------------------------------------------------------- maze routes */
+/* A hub bond still without a route (no straight run, no route of one or
+ * two corners, none after rip-up) was drawn as one slanted line across
+ * whatever lay between: a bridge's fourth arm (a Wheatstone bridge, a
+ * diode bridge, an H-bridge) ran diagonally through the middle and across
+ * another arm. The grid's ranks put a bridge's two sides in the same
+ * columns, so one arm has to pass the others; now it is routed over the
+ * cells (layout_maze.c): round them where a detour of up to MAZE_CROSS
+ * cells will do, else across one other bond at a right angle, as books
+ * draw a crossing. It turns on free cells only, keeps off cells beside
+ * other hubs where it can (their one-ports go there), and has at most
+ * MAX_CORNER corners; a crossed cell stays its bond's. Taken only where
+ * it crosses no more routed bonds than the straight line would. Run
+ * after the branches are straightened, so everything before is as it
+ * was; the cells searched in all are bounded by the graph's size. */
+/* the window's margin round the ends (and a third of their span more), its
+ * cells at most, the cells searched per node of the graph in all, costs */
+enum { MAZE_MARGIN = 8, MAZE_CELLS = 40000, MAZE_PER_NODE = 400, MAZE_BEND = 3, MAZE_CROSS = 30, MAZE_BESIDE = 2 };
+
+typedef struct maze_ctx {
+  grid *g;
+  int u, v;
+} maze_ctx;
+
+static int owner_at(const grid *g, int x, int y) { return g->val[cell_slot(g, cell_key(x, y))]; }
+
+static int maze_cell(void *ctx, int x, int y, int *extra) {
+  const maze_ctx *c = ctx;
+  const grid *g = c->g;
+  int w = owner_at(g, x, y);
+  *extra = 0;
+  if (w == -1 || w == RELEASED) {
+    *extra = beside_hub(g, x, y, c->u, c->v) ? MAZE_BESIDE : 0;
+    return BG_MAZE_FREE;
+  }
+  if (w >= 0) return BG_MAZE_BLOCKED; /* a node */
+  if (owner_at(g, x - 1, y) == w && owner_at(g, x + 1, y) == w) return BG_MAZE_CROSS_V; /* a run along x */
+  if (owner_at(g, x, y - 1) == w && owner_at(g, x, y + 1) == w) return BG_MAZE_CROSS_H;
+  return BG_MAZE_BLOCKED; /* a corner, or next to the bond's end */
+}
+
+/* Whether segments pq and rs cross, other than where they share an end. */
+static int legs_cross(const int *p, const int *q, const int *r, const int *s) {
+  if ((p[0] == r[0] && p[1] == r[1]) || (p[0] == s[0] && p[1] == s[1]) || (q[0] == r[0] && q[1] == r[1]) ||
+      (q[0] == s[0] && q[1] == s[1]))
+    return 0;
+  long long d1 = (long long)(q[0] - p[0]) * (r[1] - p[1]) - (long long)(q[1] - p[1]) * (r[0] - p[0]);
+  long long d2 = (long long)(q[0] - p[0]) * (s[1] - p[1]) - (long long)(q[1] - p[1]) * (s[0] - p[0]);
+  long long d3 = (long long)(s[0] - r[0]) * (p[1] - r[1]) - (long long)(s[1] - r[1]) * (p[0] - r[0]);
+  long long d4 = (long long)(s[0] - r[0]) * (q[1] - r[1]) - (long long)(s[1] - r[1]) * (q[0] - r[0]);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+/* The routed hub bonds the straight line of edge e would cross: a maze
+ * route is taken only where it crosses no more. */
+static int straight_crossings(const grid *g, int e) {
+  int a[2] = {g->gx[g->et[e]], g->gy[g->et[e]]}, b[2] = {g->gx[g->eh[e]], g->gy[g->eh[e]]}, n = 0;
+  for (int f = 0; f < g->ne; f++) {
+    if (f == e || g->bent[f] < 0 || !is_hub_bond(g, f)) continue;
+    int pts[MAX_PTS][2], np = route_points(g, f, pts);
+    for (int k = 0; k + 1 < np; k++) n += legs_cross(a, b, pts[k], pts[k + 1]);
+  }
+  return n;
+}
+
+static void maze_hub_bonds(grid *g) {
+  static const int side[4] = {SIDE_R, SIDE_D, SIDE_L, SIDE_U}; /* layout_maze's headings */
+  long long budget = MAZE_PER_NODE * (long long)g->n + MAZE_CELLS; /* cells searched in all: linear in the graph */
+  for (int e = 0; e < g->ne && budget > 0; e++) {
+    if (g->bent[e] >= 0 || !is_hub_bond(g, e) || !g->placed[g->et[e]] || !g->placed[g->eh[e]]) continue;
+    int u = g->et[e], v = g->eh[e], sdirs = 0, tdirs = 0;
+    for (int d = 0; d < 4; d++) {
+      sdirs |= !(g->sides[u] & side[d]) << d;
+      tdirs |= !(g->sides[v] & side[(d + 2) % 4]) << d; /* heading d comes in by the opposite side */
+    }
+    int x0 = g->gx[u] < g->gx[v] ? g->gx[u] : g->gx[v], x1 = g->gx[u] < g->gx[v] ? g->gx[v] : g->gx[u];
+    int y0 = g->gy[u] < g->gy[v] ? g->gy[u] : g->gy[v], y1 = g->gy[u] < g->gy[v] ? g->gy[v] : g->gy[u];
+    maze_ctx c = {g, u, v};
+    int span = x1 - x0 > y1 - y0 ? x1 - x0 : y1 - y0, margin = MAZE_MARGIN + span / 3; /* room to go round */
+    bg_maze mz = {.x0 = x0 - margin, .y0 = y0 - margin, .w = x1 - x0 + 2 * margin + 1, .h = y1 - y0 + 2 * margin + 1,
+                  .cell = maze_cell, .ctx = &c, .bend = MAZE_BEND, .cross = MAZE_CROSS};
+    if (!sdirs || !tdirs || (long long)mz.w * mz.h > MAZE_CELLS) continue;
+    budget -= (long long)mz.w * mz.h;
+    int corner[MAX_CORNER][2], pts[MAX_PTS][2];
+    int ncr = 0, nc = bg_maze_route(&mz, g->gx[u], g->gy[u], sdirs, g->gx[v], g->gy[v], tdirs, corner, MAX_CORNER,
+                                    &ncr);
+    if (nc < 0 || ncr > straight_crossings(g, e)) continue;
+    pts[0][0] = g->gx[u], pts[0][1] = g->gy[u];
+    for (int k = 0; k < nc; k++) pts[k + 1][0] = corner[k][0], pts[k + 1][1] = corner[k][1];
+    pts[nc + 1][0] = g->gx[v], pts[nc + 1][1] = g->gy[v];
+    for (int k = 0; k + 1 < nc + 2; k++) { /* its cells, but those of the bonds it crosses */
+      int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
+      while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
+        x += sx, y += sy;
+        if ((x != pts[nc + 1][0] || y != pts[nc + 1][1]) && cell_free(g, x, y)) cell_take(g, x, y, -2 - e);
+      }
+    }
+    g->sides[u] |= (unsigned char)side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
+    g->sides[v] |= (unsigned char)side_of(pts[nc][0] - pts[nc + 1][0], pts[nc][1] - pts[nc + 1][1]);
+    g->bent[e] = nc, g->mazed = 1;
+    for (int k = 0; k < nc; k++) g->corner[e][2 * k] = corner[k][0], g->corner[e][2 * k + 1] = corner[k][1];
+  }
 }
 
 /* ---------------------------------------------------------------- straight branches */
@@ -1154,7 +1264,7 @@ static int side_fits(const grid *g, const side_move *mv) {
     int x = mv->q[i];
     if (!cell_for_side(g, mv, g->gx[x] + mv->dx, g->gy[x] + mv->dy, x)) return 0;
     for (int k = g->adr[x]; k < g->adr[x + 1]; k++) {
-      int f = g->adj[k], pts[6][2], n;
+      int f = g->adj[k], pts[MAX_PTS][2], n;
       if (!inner_edge(g, mv, f, x)) continue;
       n = route_points(g, f, pts);
       for (int j = 0; j + 1 < n; j++) { /* every cell of the route, corners too, but the end nodes' */
@@ -1176,7 +1286,7 @@ static void move_side(grid *g, const side_move *mv) {
   for (int pass = 0; pass < 2; pass++)
     for (int i = 0; i < mv->nq; i++)
       for (int k = g->adr[mv->q[i]]; k < g->adr[mv->q[i] + 1]; k++) {
-        int f = g->adj[k], pts[6][2], n;
+        int f = g->adj[k], pts[MAX_PTS][2], n;
         if (!inner_edge(g, mv, f, mv->q[i])) continue;
         if (pass == 1)
           for (int c = 0; c < g->bent[f]; c++) g->corner[f][2 * c] += mv->dx, g->corner[f][2 * c + 1] += mv->dy;
@@ -1193,7 +1303,7 @@ static void move_side(grid *g, const side_move *mv) {
   }
   for (int i = 0; i < mv->nq; i++) /* the routes again, once every node is in place */
     for (int k = g->adr[mv->q[i]]; k < g->adr[mv->q[i] + 1]; k++) {
-      int f = g->adj[k], pts[6][2], n;
+      int f = g->adj[k], pts[MAX_PTS][2], n;
       if (!inner_edge(g, mv, f, mv->q[i])) continue;
       n = route_points(g, f, pts);
       walk(g, (const int(*)[2])pts, n, 1, f);
@@ -1202,7 +1312,7 @@ static void move_side(grid *g, const side_move *mv) {
 
 /* Whether moving the side puts c in line with p with e's sides free. */
 static int move_fits(const grid *g, const side_move *mv) {
-  int pts[6][2], n = route_points(g, mv->e, pts), at_c = pts[0][0] == g->gx[mv->c] && pts[0][1] == g->gy[mv->c];
+  int pts[MAX_PTS][2], n = route_points(g, mv->e, pts), at_c = pts[0][0] == g->gx[mv->c] && pts[0][1] == g->gy[mv->c];
   int px = g->gx[mv->p], py = g->gy[mv->p], cx = g->gx[mv->c] + mv->dx, cy = g->gy[mv->c] + mv->dy;
   int was_c = at_c ? side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1])
                    : side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
@@ -1374,7 +1484,7 @@ static void near_cell(grid *g, int x, int y, int sides, int *ox, int *oy) {
 static int barb_quadrants(const grid *g, int v) {
   int mask = 0;
   for (int k = g->adr[v]; k < g->adr[v + 1]; k++) {
-    int e = g->adj[k], w = other(g, e, v), pts[6][2], sx, sy;
+    int e = g->adj[k], w = other(g, e, v), pts[MAX_PTS][2], sx, sy;
     if (e >= g->d->m->nbond || g->eh[e] != v || !g->placed[w]) continue;
     if (g->bent[e] >= 0) {
       int n = route_points(g, e, pts);
@@ -1773,7 +1883,7 @@ static int room_items(const grid *g, const double *width, room_item **out) {
     if (own_node(g->d, v)) it[ni++] = (room_item){g->gy[v], g->gx[v], width[v] / 2};
   for (int e = 0; e < g->ne; e++) {
     if (g->bent[e] < 0 || !is_hub_bond(g, e)) continue;
-    int pts[6][2], np = route_points(g, e, pts);
+    int pts[MAX_PTS][2], np = route_points(g, e, pts);
     for (int k = 0; k + 1 < np; k++) {
       int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
       while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
@@ -1849,7 +1959,7 @@ static double *compact_columns(const grid *g, const double *width, int lo, int h
  * one-ports of hubs beside a ring are pulled into its tall row, into the
  * room the columns leave: ringtree22 had two on long steep bonds). */
 static int compactable(const grid *g) {
-  if (g->orbit) return 0;
+  if (g->orbit || g->mazed) return 0;
   for (int e = 0; e < g->ne; e++)
     if (g->bent[e] < 0 && is_hub_bond(g, e)) return 0;
   return 1;
@@ -2168,6 +2278,7 @@ void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, 
   stack_components(&g, h, nh);
   route_hub_bonds(&g);
   straighten_branches(&g);
+  maze_hub_bonds(&g);
   place_leaves(&g);
   place_floats(&g);
   record_bands(&g);

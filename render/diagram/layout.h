@@ -74,6 +74,24 @@ void bg_layout_align(int n, const double *wish, const double *gap, double lo, do
  * of the box the parts fill. */
 double bg_layout_pack(int n, const double *w, const double *h, double page, double hgap, double vgap, double *x,
                       double *y);
+/* layout_maze.c: the cheapest orthogonal route over a window of cells
+ * (x0, y0; w by h): cell(ctx, x, y, &extra) tells each cell's kind
+ * (BG_MAZE_*) and the extra cost of passing it; a step costs 1, a corner
+ * `bend`, a crossing `cross`. The route leaves (sx, sy) heading one of
+ * sdirs and enters (tx, ty) heading one of tdirs (bit d: 0 +x, 1 +y,
+ * 2 -x, 3 -y); it turns on free cells only, crosses other runs at right
+ * angles only. Its corners into corner (start to end); returns their
+ * count, -1 when there is no route or it needs more than max_corner;
+ * the crossings into ncross (nullable). */
+enum { BG_MAZE_FREE, BG_MAZE_BLOCKED, BG_MAZE_CROSS_H, BG_MAZE_CROSS_V }; /* CROSS_H: crossed heading along x */
+typedef struct bg_maze {
+  int x0, y0, w, h;
+  int (*cell)(void *ctx, int x, int y, int *extra);
+  void *ctx;
+  int bend, cross;
+} bg_maze;
+int bg_maze_route(const bg_maze *mz, int sx, int sy, int sdirs, int tx, int ty, int tdirs, int (*corner)[2],
+                  int max_corner, int *ncross);
 /* layout_ring.c: n one-ports round their junction, each on a straight bond
  * from its centre, none through another's box (boxes at most w by h, gaps
  * xgap and ygap between them): on the sides of the smallest rectangle that

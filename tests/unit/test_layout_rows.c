@@ -8,7 +8,8 @@
  * bands even, disconnected parts each on its own, a wide column's nodes
  * level with their parents (bg_layout_align exact and least), the
  * one-ports of a junction with too many for its cells round it, none on
- * another's bond (bg_layout_ring), in the rows layout too; and the
+ * another's bond (bg_layout_ring), in the rows layout too; the grid's
+ * orthogonal routes over cells (bg_maze_route); and the
  * diagram of a model above 2000 nodes is laid out with rows unless another
  * engine is asked for. */
 #include <stdlib.h>
@@ -622,6 +623,57 @@ static void test_engine_choice(void) {
   free(big), free(small);
 }
 
+/* bg_maze_route (layout_maze.c, the grid pass's hub bonds without an
+ * elbow): round a wall by the shortest way with the fewest corners, across
+ * another bond's run only at a right angle, never with more corners than
+ * allowed. The maps: '#' blocked, '|' a vertical run (crossed heading
+ * along x), '-' a horizontal one, S and T the ends. */
+typedef struct maze_map {
+  const char **row;
+} maze_map;
+
+static int map_cell(void *ctx, int x, int y, int *extra) {
+  const maze_map *m = ctx;
+  char c = m->row[y][x];
+  *extra = 0;
+  return c == '#' ? BG_MAZE_BLOCKED : c == '|' ? BG_MAZE_CROSS_H : c == '-' ? BG_MAZE_CROSS_V : BG_MAZE_FREE;
+}
+
+static int maze_on(const char **row, int max_corner, int (*corner)[2], int *ncross) {
+  maze_map m = {row};
+  int h = 0, w = (int)strlen(row[0]), sx = 0, sy = 0, tx = 0, ty = 0;
+  for (; row[h]; h++)
+    for (int x = 0; x < w; x++) {
+      if (row[h][x] == 'S') sx = x, sy = h;
+      if (row[h][x] == 'T') tx = x, ty = h;
+    }
+  bg_maze mz = {.x0 = 0, .y0 = 0, .w = w, .h = h, .cell = map_cell, .ctx = &m, .bend = 3, .cross = 30};
+  *ncross = -1;
+  return bg_maze_route(&mz, sx, sy, 15, tx, ty, 15, corner, max_corner, ncross);
+}
+
+static void test_maze(void) {
+  int c[10][2], nx;
+  static const char *wall[] = {".......", ".S.#.T.", "...#...", "...#...", ".......", NULL};
+  INT_EQ(maze_on(wall, 10, c, &nx), 2); /* over the wall (2 steps shorter than under it) */
+  OK(c[0][0] == 1 && c[0][1] == 0 && c[1][0] == 5 && c[1][1] == 0);
+  INT_EQ(nx, 0);
+  INT_EQ(maze_on(wall, 1, c, &nx), -1); /* two corners needed */
+  static const char *across[] = {"###|###", "#S.|.T#", "###|###", NULL};
+  INT_EQ(maze_on(across, 10, c, &nx), 0); /* straight across the run, at a right angle */
+  INT_EQ(nx, 1);
+  static const char *along[] = {"#######", "#S.-.T#", "#######", NULL};
+  INT_EQ(maze_on(along, 10, c, &nx), -1); /* never along another bond's run */
+  /* under the run, 8 steps and 2 corners (14), is cheaper than across it (34) */
+  static const char *detour[] = {"..|..", "S.|.T", "..|..", ".....", NULL};
+  INT_EQ(maze_on(detour, 10, c, &nx), 2);
+  OK(c[0][0] == 0 && c[0][1] == 3 && c[1][0] == 4 && c[1][1] == 3);
+  INT_EQ(nx, 0);
+  /* no turn on a crossed cell: the only way would turn where it crosses */
+  static const char *turn[] = {"##.##", "S.|.#", "##T##", NULL};
+  INT_EQ(maze_on(turn, 10, c, &nx), -1);
+}
+
 int main(void) {
   test_chain();
   test_links();
@@ -630,6 +682,7 @@ int main(void) {
   test_random_graphs();
   test_align();
   test_ring();
+  test_maze();
   test_rows_ring();
   test_level_parents();
   test_engine_choice();
