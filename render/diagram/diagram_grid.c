@@ -479,12 +479,12 @@ static int mesh_pendants(grid *g, const int *q, int n, const unsigned char *pend
       }
       if (side < 0) return 0;
       used |= 1 << side;
-      for (int prev = a, cur = p, step = 1; cur >= 0; step++) {
+      for (int prev = a, cur = p, step = 1; cur >= 0 && step <= n; step++) {
         pc[cur] = c + step * dir[side][0], pr[cur] = r + step * dir[side][1];
         int next = -1, nn = 0;
         for (int j = g->adr[cur]; j < g->adr[cur + 1]; j++) {
           int u = other(g, g->adj[j], cur);
-          if (g->hub[u] && u != prev) next = u, nn++;
+          if (g->hub[u] && u != prev && u != cur) next = u, nn++;
         }
         if (nn > 1) return 0;
         prev = cur, cur = next;
