@@ -457,14 +457,14 @@ static int peel_pendants(const grid *g, const int *q, int n, unsigned char *pend
   return left;
 }
 
-/* The peeled hubs of a mesh (col, row of its core set), each chain drawn
- * straight out of its mesh hub's free outer side (L, H: the lattice's
+/* The peeled hubs' points (pc, pr, set for the core's hubs), each chain
+ * drawn straight out of its mesh hub's free outer side (L, H: the lattice's
  * last column and row): right or left before down or up, one chain per
  * side. A peeled tree that branches, or a hub with more chains than free
- * outer sides, leaves the part to the tree drawing: returns 0 and sets
- * nothing. Chains out of different sides never meet: each keeps to its
+ * outer sides, leaves the part to the tree drawing: returns 0 (the part's
+ * col and row untouched). Chains out of different sides never meet: each keeps to its
  * own row or column outside the lattice. */
-static int mesh_pendants(grid *g, const int *q, int n, const unsigned char *pend, int L, int H, int *pc, int *pr) {
+static int mesh_pendants(const grid *g, const int *q, int n, const unsigned char *pend, int L, int H, int *pc, int *pr) {
   static const int dir[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (int i = 0; i < n; i++) {
     int a = q[i], used = 0;
@@ -472,7 +472,7 @@ static int mesh_pendants(grid *g, const int *q, int n, const unsigned char *pend
     for (int k = g->adr[a]; k < g->adr[a + 1]; k++) {
       int p = other(g, g->adj[k], a);
       if (!g->hub[p] || !pend[p]) continue;
-      int c = g->col[a], r = g->row[a], side = -1;
+      int c = pc[a], r = pr[a], side = -1;
       for (int s = 0; s < 4 && side < 0; s++) {
         int out = s == 0 ? c == L : s == 1 ? c == 0 : s == 2 ? r == H : r == 0;
         if (out && !(used >> s & 1)) side = s;
@@ -565,26 +565,17 @@ static void mesh_part(grid *g, const int *q, int n, int *da, int *db, int *ds, i
     }
   free(at);
   if (!ok) return;
-  int *pc = da, *pr = db; /* the peeled hubs' points; da, db are not read again */
-  int *keep_c = bg_xmalloc((size_t)ncore * sizeof(int)), *keep_r = bg_xmalloc((size_t)ncore * sizeof(int));
-  for (int i = 0; i < ncore; i++) { /* the core's points, the tree drawing's kept until the chains fit */
+  /* every hub's point into pc, pr (ds and qq, not read again): the core's,
+   * then the chains' out of it; the part's col and row only if all fit */
+  int *pc = ds, *pr = qq, minc = 0;
+  for (int i = 0; i < ncore; i++) {
     int v = cq[i];
-    keep_c[i] = g->col[v], keep_r[i] = g->row[v];
-    g->col[v] = (da[v] - db[v] + L) / 2, g->row[v] = (da[v] + db[v] - L) / 2;
+    pc[v] = (da[v] - db[v] + L) / 2, pr[v] = (da[v] + db[v] - L) / 2;
   }
-  if (ncore < n && !mesh_pendants(g, q, n, pend, L, H, pc, pr)) {
-    for (int i = 0; i < ncore; i++) g->col[cq[i]] = keep_c[i], g->row[cq[i]] = keep_r[i];
-  } else {
-    int minc = 0;
-    for (int i = 0; i < n; i++) {
-      int v = q[i];
-      if (pend[v]) g->col[v] = pc[v], g->row[v] = pr[v];
-      minc = g->col[v] < minc ? g->col[v] : minc;
-      g->mesh[v] = 1;
-    }
-    for (int i = 0; i < n; i++) g->col[q[i]] -= minc; /* a chain out of the left side: columns from 0 */
-  }
-  free(keep_c), free(keep_r);
+  if (ncore < n && !mesh_pendants(g, q, n, pend, L, H, pc, pr)) return;
+  for (int i = 0; i < n; i++) minc = pc[q[i]] < minc ? pc[q[i]] : minc;
+  for (int i = 0; i < n; i++) /* a chain out of the left side: columns from 0 */
+    g->col[q[i]] = pc[q[i]] - minc, g->row[q[i]] = pr[q[i]], g->mesh[q[i]] = 1;
 }
 
 static void mesh_rows(grid *g, const int *h, int nh) {
@@ -943,8 +934,8 @@ static int beside_hub(const grid *g, int x, int y, int u, int v) {
 
 /* Walks the route through pts[0..n) (axis-parallel legs): with take == 0
  * whether every cell but the two ends is free (and, while spare_sides is
- * set, beside no hub but e's ends), with take 1 claims them for edge e,
- * with take -1 gives them back. */
+ * set, beside no hub but e's ends), with take 1 claims the free ones for
+ * edge e, with take -1 gives back those it holds. */
 static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
   for (int k = 0; k + 1 < n; k++) {
     int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
@@ -952,7 +943,9 @@ static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
     while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
       x += sx, y += sy;
       if (k == n - 2 && x == pts[n - 1][0] && y == pts[n - 1][1]) break;
-      if (take > 0) cell_take(g, x, y, -2 - e);
+      if (take > 0) {
+        if (cell_free(g, x, y)) cell_take(g, x, y, -2 - e); /* a cell a maze route crosses stays the other bond's */
+      }
       else if (take < 0) {
         int i = cell_slot(g, cell_key(x, y));
         if (g->val[i] == -2 - e) g->val[i] = RELEASED; /* not a cell a maze route crosses: the other bond's */
@@ -963,15 +956,22 @@ static int walk(grid *g, const int (*pts)[2], int n, int take, int e) {
   return 1;
 }
 
+/* Edge e takes the route through pts[0..n): its cells, the sides it
+ * leaves and enters by, its corners. */
+static void take_route(grid *g, int e, const int (*pts)[2], int n) {
+  walk(g, pts, n, 1, e);
+  g->sides[g->et[e]] |= (unsigned char)side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
+  g->sides[g->eh[e]] |= (unsigned char)side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
+  g->bent[e] = n - 2;
+  for (int k = 1; k + 1 < n; k++) g->corner[e][2 * (k - 1)] = pts[k][0], g->corner[e][2 * k - 1] = pts[k][1];
+}
+
 static int try_route(grid *g, int e, const int (*pts)[2], int n) {
   int u = g->et[e], v = g->eh[e];
   int su = side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
   int sv = side_of(pts[n - 2][0] - pts[n - 1][0], pts[n - 2][1] - pts[n - 1][1]);
   if ((g->sides[u] & su) || (g->sides[v] & sv) || !walk(g, pts, n, 0, e)) return 0;
-  walk(g, pts, n, 1, e);
-  g->sides[u] |= (unsigned char)su, g->sides[v] |= (unsigned char)sv;
-  g->bent[e] = n - 2;
-  for (int k = 1; k + 1 < n; k++) g->corner[e][2 * (k - 1)] = pts[k][0], g->corner[e][2 * k - 1] = pts[k][1];
+  take_route(g, e, pts, n);
   return 1;
 }
 
@@ -1156,17 +1156,8 @@ static void maze_hub_bonds(grid *g) {
     pts[0][0] = g->gx[u], pts[0][1] = g->gy[u];
     for (int k = 0; k < nc; k++) pts[k + 1][0] = corner[k][0], pts[k + 1][1] = corner[k][1];
     pts[nc + 1][0] = g->gx[v], pts[nc + 1][1] = g->gy[v];
-    for (int k = 0; k + 1 < nc + 2; k++) { /* its cells, but those of the bonds it crosses */
-      int x = pts[k][0], y = pts[k][1], sx = sgn(pts[k + 1][0] - x), sy = sgn(pts[k + 1][1] - y);
-      while (x != pts[k + 1][0] || y != pts[k + 1][1]) {
-        x += sx, y += sy;
-        if ((x != pts[nc + 1][0] || y != pts[nc + 1][1]) && cell_free(g, x, y)) cell_take(g, x, y, -2 - e);
-      }
-    }
-    g->sides[u] |= (unsigned char)side_of(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]);
-    g->sides[v] |= (unsigned char)side_of(pts[nc][0] - pts[nc + 1][0], pts[nc][1] - pts[nc + 1][1]);
-    g->bent[e] = nc, g->mazed = 1;
-    for (int k = 0; k < nc; k++) g->corner[e][2 * k] = corner[k][0], g->corner[e][2 * k + 1] = corner[k][1];
+    take_route(g, e, (const int(*)[2])pts, nc + 2);
+    g->mazed = 1;
   }
 }
 
