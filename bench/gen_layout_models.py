@@ -15,12 +15,14 @@ the six before it; "randgraph" a random tree plus a quarter as many random
 extra bonds; the trees' junctions carry none to two one-ports. SEED picks
 the random graph.
 A "star" is one 0-junction with N resistors (a fan: docs/drawing.md,
-the bound on the bond router's work); a "tree" is randtree with seed 1;
+the bound on the bond router's work); a "fan" the star with a capacitor on
+the junction modulating every resistor (N signals of one source, drawn as
+branches off one tree); a "tree" is randtree with seed 1;
 "states" a chain of N masses, each with a user state integrating its
 velocity, fed back by a modulated source, and a detector (integrators and
 detectors are nodes without bonds of their own).
 Usage: gen_layout_models.py chain N OUT | reactions S OUT | nearby S OUT |
-       star N OUT | tree N OUT | states N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
+       star N OUT | fan N OUT | tree N OUT | states N OUT | randnet S SEED OUT | randtree N SEED OUT | randgraph N SEED OUT"""
 import random
 import sys
 
@@ -130,6 +132,9 @@ if __name__ == "__main__":
         if what == "star":
             f.write(f"model star{n}\nSe U = 1\n0 j\nbond U -> j\n")
             f.write("".join(f"R r{i} = 1\nbond j -> r{i}\n" for i in range(n)))
+        elif what == "fan":  # the star, each resistor modulated by one capacitor's effort: a fan of n signals
+            f.write(f"model fan{n}\nSe U = 1\n0 j\nbond U -> j\nC c = 1\nbond j -> c\n")
+            f.write("".join(f"R r{i} : f = (1 + c.e) * e\nbond j -> r{i}\n" for i in range(n)))
         elif what == "chain":
             chain(n, f)
         elif what == "tree":  # a random tree of n junctions (seed 1): the grid's tree drawing above 2 000 nodes

@@ -14,7 +14,9 @@
 # nodes and would be laid out by dot, which is not linear); the same for a
 # network whose signals join near neighbours ("nearby"); a junction of 6 000
 # one-ports beside one of 3 000 (rows at both sizes, one-ports on a ring
-# whose bonds grow with it: not linear, see bench/README.md); then the length of
+# whose bonds grow with it: not linear, see bench/README.md), and the same
+# junction of 4 000 (2 000) with every one-port modulated by one capacitor
+# (a fan of signals, drawn as branches off one tree); then the length of
 # the signal lines each network draws (below).
 # Usage: bash bench/layout_bench.sh BGDRAW [BONDS SIGNALS]   (use a Release build)
 set -eu
@@ -47,6 +49,7 @@ row "states, 4000 sections" states 4000
 row "reactions, $NS signals (rows)" reactions "$NS" rows
 row "nearby, $NS signals (rows)" nearby "$NS" rows
 row "star, 6000 one-ports (rows)" star 6000
+row "fan, 4000 signals of one source" fan 4000
 
 # What the signals' routes draw: the total length of the signal lines in
 # the SVG (bgdraw --layout rows), half and full size. The router's work per

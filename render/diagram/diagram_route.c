@@ -163,6 +163,16 @@ static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
   return 0;
 }
 
+/* The search in a window round boxes a and b, their box with a margin
+ * that grows with their distance. */
+static int route_window(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
+                        bg_vec *pts, int cap, double *cost) {
+  double wx0 = fmin(a[0], b[0]), wx1 = fmax(a[2], b[2]), wy0 = fmin(a[1], b[1]), wy1 = fmax(a[3], b[3]);
+  double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
+  return bg_route_in_window(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, INFINITY, pts,
+                            cap, cost);
+}
+
 /* The route between the ports ps and pt, whose boxes are a and b: the
  * cheapest in a window round both ends (their boxes with a margin that
  * grows with their distance); boxed in, over the whole figure with a ring
@@ -172,32 +182,41 @@ static int on_bond(const bg_diagram_layout *L, int b, bg_vec p) {
  * the number of points: pts[0] on a source port, the last on a target's. */
 int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const double a[4], const double b[4],
                        bg_vec *pts, int cap) {
-  double wx0 = fmin(a[0], b[0]), wx1 = fmax(a[2], b[2]), wy0 = fmin(a[1], b[1]), wy1 = fmax(a[3], b[3]);
-  double margin = 40 + 0.25 * fmax(wx1 - wx0, wy1 - wy0);
   double cost = INFINITY;
-  int n = bg_route_in_window(r, ps, nps, pt, npt, wx0 - margin, wy0 - margin, wx1 + margin, wy1 + margin, INFINITY,
-                             pts, cap, &cost);
+  int n = 0, seeded = 0; /* the route chosen starts on its source's earlier routes */
+  bg_vec near;
+  if (bg_route_group_nearest(r, bg_v((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), &near)) {
+    /* a branch off the nearest stretch of its source's earlier routes, in
+     * a window round the two (not the source's: a fan of n signals
+     * searched the whole figure n times), taken when it crosses no bond */
+    double nb[4] = {near.x, near.y, near.x, near.y};
+    n = route_window(r, NULL, 0, pt, npt, nb, b, pts, cap, &cost);
+    seeded = r->seeded;
+    if (!(cost < COST_BEND + COST_CROSS_BOND)) n = 0, cost = INFINITY;
+  }
+  if (!n) n = route_window(r, ps, nps, pt, npt, a, b, pts, cap, &cost), seeded = r->seeded;
   if (!(cost < COST_BLOCK) && r->gap <= FALLBACK_GAP) {
     double c2 = INFINITY;
     bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
     int n2 = bg_route_in_window(r, ps, nps, pt, npt, r->fx0 - 2 * LANE, r->fy0 - 2 * LANE, r->fx1 + 2 * LANE,
                                 r->fy1 + 2 * LANE, FALLBACK_GAP, alt, cap, &c2);
-    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2, cost = c2;
+    if (n2 >= 2 && c2 < cost) memcpy(pts, alt, (size_t)n2 * sizeof *pts), n = n2, cost = c2, seeded = r->seeded;
     free(alt);
   }
   if (!(cost < COST_BLOCK)) {
     double c3 = INFINITY;
     bg_vec *alt = bg_xcalloc((size_t)cap, sizeof *alt);
     int n3 = bg_route_outside(r, ps, nps, pt, npt, a, b, alt, cap, &c3);
-    if (n3 >= 2 && c3 < cost) memcpy(pts, alt, (size_t)n3 * sizeof *pts), n = n3, cost = c3;
+    if (n3 >= 2 && c3 < cost) memcpy(pts, alt, (size_t)n3 * sizeof *pts), n = n3, cost = c3, seeded = r->seeded;
     free(alt);
   }
   if (n < 2) { /* no grid at all (cannot happen: the grid holds every port) */
     pts[0] = ps[0].at, pts[1] = pt[0].at;
-    n = 2;
+    n = 2, seeded = 0;
   }
   n = simplify(pts, n);
-  r->branch_k = bg_route_shared_prefix(r, pts, n, &r->branch_at);
+  if (seeded) r->branch_k = 0, r->branch_at = pts[0]; /* taken off an earlier route where it starts */
+  else r->branch_k = bg_route_shared_prefix(r, pts, n, &r->branch_at);
   if (bg_route_group_rejoins(r, pts, n, r->branch_k, r->branch_at)) { /* not a branch: again, keeping off them */
     r->group = -1;
     return bg_route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
@@ -213,6 +232,7 @@ void bg_route_keep(bg_router *r, const bg_vec *pts, int n) {
   }
   r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group};
   for (int i = 0; i + 1 < n; i++) bg_near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group);
+  if (n >= 2) r->ix.slast[r->ix.nseg - 1] = 1;
 }
 
 /* Routes a signal to node `to` from node from_node or, when that is < 0,

@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* A signal branching off the line of another from the same source, as
- * block diagrams draw it: where a route leaves the earlier routes of its
- * source that it starts on, and whether it runs on them again after (then
- * it is no branch, and diagram_route.c routes it again keeping off them). */
+ * block diagrams draw it: the point of the source's earlier routes nearest
+ * a target (where the router first looks for a branch), where a route
+ * leaves the earlier routes that it starts on, and whether it runs on them
+ * again after (then it is no branch, and diagram_route.c routes it again
+ * keeping off them). The search starts branches off those routes itself
+ * (diagram_route_search.c, seed_branches). */
 #include <math.h>
 
 #include "diagram/diagram_route_int.h"
@@ -79,4 +82,33 @@ int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at) {
 int bg_route_branch(const bg_router *r, bg_vec *at) {
   if (r->branch_k >= 0) *at = r->branch_at;
   return r->branch_k;
+}
+
+/* The point of the current source's earlier routes nearest c (*out), looked
+ * for in rings of the near index's cells round c, at most NEAREST_RINGS
+ * out (so the work is bounded whatever the figure); 0 when there is none
+ * that near. */
+enum { NEAREST_RINGS = 12 };
+int bg_route_group_nearest(bg_router *r, bg_vec c, bg_vec *out) {
+  const near_index *ix = &r->ix;
+  if (r->group < 0 || !ix->nseg) return 0;
+  int cc[4];
+  bg_near_cells(ix, c.x, c.y, c.x, c.y, cc);
+  double best = INFINITY;
+  for (int ring = 0; ring <= NEAREST_RINGS && best > (ring - 1) * ix->cell; ring++)
+    for (int cy = cc[1] - ring; cy <= cc[1] + ring; cy++)
+      for (int cx = cc[0] - ring; cx <= cc[0] + ring; cx += (cy == cc[1] - ring || cy == cc[1] + ring) ? 1 : 2 * ring) {
+        if (cx < 0 || cy < 0 || cx >= ix->nx || cy >= ix->ny) continue;
+        for (int j = ix->sig_head[(size_t)cy * (size_t)ix->nx + (size_t)cx]; j >= 0; j = ix->sig_next[j]) {
+          int s = ix->sig_seg[j];
+          if (ix->sgrp[s] != r->group) continue;
+          bg_vec a = ix->sa[s], b = ix->sb[s], d = bg_vsub(b, a);
+          double l2 = d.x * d.x + d.y * d.y, t = l2 > 0 ? ((c.x - a.x) * d.x + (c.y - a.y) * d.y) / l2 : 0;
+          bg_vec p = bg_vadd(a, bg_vscale(d, t < 0 ? 0 : t > 1 ? 1 : t));
+          double dist = bg_vlen(bg_vsub(p, c));
+          if (dist < best) best = dist, *out = p;
+        }
+        if (ring == 0) break;
+      }
+  return best < INFINITY;
 }

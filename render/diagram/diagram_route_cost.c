@@ -101,8 +101,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   bg_near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];
-    if (r->group >= 0 && r->ix.sgrp[s] == r->group) continue; /* its own source's: a branch */
-    if (bg_route_own_segment(r, s)) continue;                           /* the route itself (bg_route_detour) */
+    if (bg_route_own_segment(r, s)) continue; /* the route itself (bg_route_detour) */
     int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL, 0);
     cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
   }
@@ -246,7 +245,6 @@ void bg_route_grid_costs(bg_router *r) {
   }
   bg_near_signals(&r->ix, X[0] - 3, Y[0] - 3, X[nx - 1] + 3, Y[ny - 1] + 3, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
-    if (r->group >= 0 && r->ix.sgrp[r->nl.k[jj]] == r->group) continue; /* its own source's: a branch */
     bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
     double cross = seg_cross_cost(r, r->nl.k[jj]);
     int j0, j1;

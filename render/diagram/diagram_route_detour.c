@@ -34,6 +34,20 @@ static int leg_one_port(const bg_router *r, int leg, bg_vec *w) {
   return -1;
 }
 
+/* Whether a later route of the same source branches off the stretch p-q
+ * (a segment of another route of r->group starts or ends on it): a U there
+ * would leave the branch's dot beside the line. */
+static int branch_off(bg_router *r, bg_vec p, bg_vec q) {
+  if (r->group < 0) return 0;
+  bg_near_signals(&r->ix, fmin(p.x, q.x) - 1, fmin(p.y, q.y) - 1, fmax(p.x, q.x) + 1, fmax(p.y, q.y) + 1, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    if (r->ix.sgrp[s] != r->group || bg_route_own_segment(r, s)) continue;
+    if (bg_point_seg(r->ix.sa[s], p, q) < 0.01 || bg_point_seg(r->ix.sb[s], p, q) < 0.01) return 1;
+  }
+  return 0;
+}
+
 /* Segment pts[i]-pts[i+1] round one one-port whose bond it crosses: the U's
  * four points into u (returns 1), else 0. */
 static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) {
@@ -70,11 +84,9 @@ static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) 
       if (t + a0 - gap[g] < 1 || t + a1 + gap[g] > len - 1 || 2 * d > DETOUR_MAX) continue;
       u4[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), u4[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
       u4[1] = bg_vadd(u4[0], bg_vscale(w, d)), u4[2] = bg_vadd(u4[3], bg_vscale(w, d));
+      if (branch_off(r, u4[0], u4[3])) continue;
       double extra = 0;
-      int group = r->group;
-      r->group = -1; /* the U is no branch: its own source's other lines are in its way too */
       for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, u4[k], u4[k + 1], -1) - bg_vlen(bg_vsub(u4[k + 1], u4[k]));
-      r->group = group;
       found = extra < COST_CROSS_BOND / 2; /* no bond crossed, no box run through, no line run on */
     }
   }

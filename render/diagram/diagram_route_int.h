@@ -37,7 +37,7 @@
 #define LANE 10.0             /* the channel lines' distance from a box */
 
 /* A uniform grid of cells over the layout, each listing the nodes whose box
- * (grown by 3 pt) and the bond legs whose bounding box meet it, so a query
+ * (grown by 3 pt) and the bond legs that pass within 1 pt of it, so a query
  * tests what is near a segment instead of every node and bond. Routed
  * signal segments are added as they are drawn (a list per cell). */
 typedef struct near_index {
@@ -56,6 +56,7 @@ typedef struct near_index {
   int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none;
                 a routed bond b's: -2 - b (seg_cross_cost: dear when it is one of
                 the current route's own) */
+  unsigned char *slast; /* per segment: the last of its route (it ends in the arrowhead) */
   int nseg, capseg;
   int *seg_stamp, capstamp;
 } near_index;
@@ -103,6 +104,8 @@ struct bg_router {
   int group;              /* the current route's source: routes of the same one may share
                              its lines (a signal branching), -1: none */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
+  int seeded;             /* the last search's route starts on its source's earlier routes
+                             (seed_branches: a branch taken off them) */
   bg_vec branch_at;
   /* every route so far (bg_route_detour): its segments in the index, ends, group */
   struct routed {
@@ -209,6 +212,9 @@ int bg_route_group_runs_on(bg_router *r, bg_vec p, bg_vec q);
 int bg_route_group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec at);
 /* Where route pts[0..n-1] leaves them: the segment k, the point *at; -1: it is drawn whole. */
 int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at);
+/* The point of the current source's earlier routes nearest c, within a
+ * few cells of the near index: 1 and *out, else 0. */
+int bg_route_group_nearest(bg_router *r, bg_vec c, bg_vec *out);
 
 /* Crossings of two bonds of one node (diagram_route_adjacent.c). */
 /* What the bond router's second pass does to a bond (todo[] below). */

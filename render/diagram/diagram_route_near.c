@@ -40,6 +40,19 @@ static int leg_skipped(const bg_diagram_layout *L, const unsigned char *skip, in
   return (L->bond_hidden && L->bond_hidden[b]) || (skip && skip[b]);
 }
 
+/* The rows *cy0..*cy1 of column cx that leg a-b (a.x <= b.x) passes
+ * within 1 pt of: a long slanted leg is listed in the cells it crosses,
+ * not in every cell of its bounding box (a star's spokes each filled a
+ * quarter of the index, so every query near its hub listed them all). */
+static void leg_rows(const near_index *ix, bg_vec a, bg_vec b, int cx, int *cy0, int *cy1) {
+  double xa = fmin(fmax(ix->x0 + cx * ix->cell, a.x), b.x), xb = fmin(fmax(ix->x0 + (cx + 1) * ix->cell, a.x), b.x);
+  double dx = b.x - a.x, ya = a.y, yb = b.y;
+  if (dx > 1e-9) ya = a.y + (xa - a.x) / dx * (b.y - a.y), yb = a.y + (xb - a.x) / dx * (b.y - a.y);
+  int r[4];
+  bg_near_cells(ix, xa, fmin(ya, yb) - 1, xb, fmax(ya, yb) + 1, r);
+  *cy0 = r[1], *cy1 = r[3];
+}
+
 void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, near_index *ix) {
   memset(ix, 0, sizeof *ix);
   ix->nnode = L->nnode;
@@ -83,12 +96,20 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
       int r[4];
       bg_near_item_box(L, ix, k, bx);
       bg_near_cells(ix, bx[0], bx[1], bx[2], bx[3], r);
-      for (int cy = r[1]; cy <= r[3]; cy++)
-        for (int cx = r[0]; cx <= r[2]; cx++) {
+      bg_vec a = k < L->nnode ? bg_v(0, 0) : ix->la[k - L->nnode], b = k < L->nnode ? a : ix->lb[k - L->nnode];
+      if (a.x > b.x) {
+        bg_vec t = a;
+        a = b, b = t;
+      }
+      for (int cx = r[0]; cx <= r[2]; cx++) {
+        int cy0 = r[1], cy1 = r[3];
+        if (k >= L->nnode) leg_rows(ix, a, b, cx, &cy0, &cy1), cy0 = cy0 > r[1] ? cy0 : r[1], cy1 = cy1 < r[3] ? cy1 : r[3];
+        for (int cy = cy0; cy <= cy1; cy++) {
           size_t c = (size_t)cy * (size_t)ix->nx + (size_t)cx;
           if (pass) ix->item[ix->adr[c] + fill[c]++] = k;
           else ix->adr[c + 1]++;
         }
+      }
     }
     if (!pass) {
       for (size_t c = 0; c < ncell; c++) ix->adr[c + 1] += ix->adr[c];
@@ -103,7 +124,7 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
 
 void bg_near_free(near_index *ix) {
   free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid), free(ix->stamp);
-  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->seg_stamp);
+  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->slast), free(ix->seg_stamp);
 }
 
 void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
@@ -152,9 +173,10 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
     ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
     ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
     ix->sgrp = bg_xrealloc(ix->sgrp, (size_t)ix->capseg * sizeof *ix->sgrp);
+    ix->slast = bg_xrealloc(ix->slast, (size_t)ix->capseg);
   }
   int s = ix->nseg++;
-  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group;
+  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group, ix->slast[s] = 0;
   int r[4];
   bg_near_cells(ix, fmin(a.x, b.x), fmin(a.y, b.y), fmax(a.x, b.x), fmax(a.y, b.y), r);
   for (int cy = r[1]; cy <= r[3]; cy++)

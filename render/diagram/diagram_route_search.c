@@ -34,6 +34,47 @@ static heap_entry heap_pop(bg_router *r) {
   return top;
 }
 
+/* A branch's start (parent[] of a state seeded by seed_branches; a port's is -2 - port). */
+enum { FROM_BRANCH = -1000 };
+/* How far from an earlier route's arrow tip a branch may leave it: clear
+ * of the arrowhead, so the branch is not read as coming out of the target. */
+#define TIP_CLEAR 16.0
+
+/* The vertices of the grid on the earlier routes of the current route's
+ * source (r->group) as starts of the search: a signal is taken off the
+ * line of another from the same source at a right angle, as block diagrams
+ * draw a fan-out, paying COST_BEND for the branch and nothing for the line
+ * already drawn (running along it from the source costs its length: the
+ * fan's signals were drawn as parallel lines side by side, 8 pt apart, out
+ * of one side of the source). The lines of those routes are the grid's
+ * (add_group_lines keeps them whole), so their vertices lie on them. */
+static void seed_branches(bg_router *r) {
+  if (r->group < 0) return;
+  int nx = r->nxl, ny = r->nyl;
+  bg_near_signals(&r->ix, r->X[0] - 1, r->Y[0] - 1, r->X[nx - 1] + 1, r->Y[ny - 1] + 1, &r->nl);
+  for (int jj = 0; jj < r->nl.n; jj++) {
+    int s = r->nl.k[jj];
+    if (r->ix.sgrp[s] != r->group) continue;
+    bg_vec a = r->ix.sa[s], b = r->ix.sb[s];
+    int horiz = fabs(a.y - b.y) < 1e-9;
+    if (!horiz && fabs(a.x - b.x) >= 1e-9) continue;
+    const double *A = horiz ? r->X : r->Y, *C = horiz ? r->Y : r->X;
+    int na = horiz ? nx : ny, nc = horiz ? ny : nx, j = bg_route_nearest_line(C, nc, horiz ? a.y : a.x);
+    if (fabs(C[j] - (horiz ? a.y : a.x)) > 1e-6) continue;
+    double lo = fmin(horiz ? a.x : a.y, horiz ? b.x : b.y), hi = fmax(horiz ? a.x : a.y, horiz ? b.x : b.y);
+    for (int i = bg_route_nearest_line(A, na, lo); i < na && A[i] <= hi + 1e-6; i++) {
+      if (A[i] < lo - 1e-6) continue;
+      int v = horiz ? j * nx + i : i * nx + j;
+      bg_vec p = bg_v(r->X[v % nx], r->Y[v / nx]);
+      if (r->ix.slast[s] && bg_vlen(bg_vsub(p, b)) < TIP_CLEAR) continue;
+      for (int k = 0; k < 2; k++) { /* across the line, either way */
+        int st = 4 * v + (horiz ? 2 + k : k);
+        if (COST_BEND < r->g[st]) r->g[st] = COST_BEND, r->parent[st] = FROM_BRANCH, heap_push(r, st, COST_BEND, COST_BEND);
+      }
+    }
+  }
+}
+
 /* A* from the source ports to the target ports over the grid; the states
  * are (vertex, direction of travel). Returns the cost and the route's
  * vertices from source to target in pts (at most cap), *npts. */
@@ -64,6 +105,7 @@ static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec 
     int s = 4 * (gy * nx + gx) + ps[i].dir;
     if (ps[i].cost < r->g[s]) r->g[s] = ps[i].cost, r->parent[s] = -2 - i, heap_push(r, s, ps[i].cost, ps[i].cost);
   }
+  seed_branches(r);
   double best = INFINITY;
   int best_s = -1, best_port = -1;
   while (r->nheap) {
@@ -99,6 +141,7 @@ static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec 
     }
   }
   *npts = 0;
+  r->seeded = 0;
   if (best_s >= 0) {
     /* walk back, then reverse: source port, its stub, corners..., target stub, target port */
     int n = 0;
@@ -109,7 +152,8 @@ static double search(bg_router *r, port *ps, int nps, port *pt, int npt, bg_vec 
       if (dir != prev_dir || r->parent[s] < 0) pts[n++] = bg_v(r->X[v % nx], r->Y[v / nx]);
       prev_dir = dir;
       if (r->parent[s] < 0) {
-        pts[n++] = ps[-2 - r->parent[s]].at;
+        if (r->parent[s] != FROM_BRANCH) pts[n++] = ps[-2 - r->parent[s]].at;
+        r->seeded = r->parent[s] == FROM_BRANCH;
         break;
       }
       s = r->parent[s];

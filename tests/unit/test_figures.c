@@ -1305,6 +1305,75 @@ static void test_bridges(void) {
   }
 }
 
+/* The length of the signal lines drawn, in pt. */
+static double signal_ink(const fc_scene *sc) {
+  double ink = 0;
+  for (int k = 0; k < sc->nline; k++)
+    for (int q = 0; sc->line[k].kind == FC_SIGNAL && q < sc->line[k].nseg; q++)
+      ink += hypot(sc->line[k].seg[q].x1 - sc->line[k].seg[q].x0, sc->line[k].seg[q].y1 - sc->line[k].seg[q].y0);
+  return ink;
+}
+
+/* The rectilinear minimum spanning tree of the centres of the element
+ * labels named in name[0..n) (Prim's), in pt; -1 when one is not drawn. */
+static double label_tree(const fc_scene *sc, const char *const *name, int n) {
+  double x[64], y[64], dist[64];
+  int in[64] = {0};
+  for (int i = 0; i < n; i++) {
+    int k = 0;
+    while (k < sc->nbox && !(sc->box[k].kind == FC_NODE && sc->box[k].name && !strcmp(sc->box[k].name, name[i]))) k++;
+    if (k == sc->nbox) return -1;
+    x[i] = (sc->box[k].x0 + sc->box[k].x1) / 2, y[i] = (sc->box[k].y0 + sc->box[k].y1) / 2, dist[i] = INFINITY;
+  }
+  double total = 0;
+  dist[0] = 0;
+  for (int step = 0; step < n; step++) {
+    int best = -1;
+    for (int i = 0; i < n; i++)
+      if (!in[i] && (best < 0 || dist[i] < dist[best])) best = i;
+    in[best] = 1, total += dist[best];
+    for (int i = 0; i < n; i++)
+      if (!in[i]) dist[i] = fmin(dist[i], fabs(x[i] - x[best]) + fabs(y[i] - y[best]));
+  }
+  return total;
+}
+
+/* Fans drawn as trees (issue 31): one accumulator's pressure modulates
+ * twelve valves round a rail (tests/data/figures/manifold.bg, held out).
+ * Each signal was routed from the accumulator's box on its own: three
+ * lines left it (nine branch dots), three ran side by side 3 to 8 pt
+ * apart down its left, and the fan drew 1 846 pt of line, 1.81 times the
+ * rectilinear spanning tree of the labels' centres. A signal is now a
+ * branch off the lines already drawn from its source: at most two lines
+ * leave the accumulator (ten branch dots or more), no signal crosses a
+ * bond or runs on another, and the fan's line is at most 1.25 times that
+ * spanning tree (a tree joining the same points; 1 245 pt, 1.22 times). */
+static void test_fans(void) {
+  static const char *const ends[] = {"acc", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v9", "v10", "v11"};
+  fx f;
+  int rc = file_model(&f, "tests/data/figures/manifold.bg", "manifold");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
+    fc_scene sc;
+    fc_read(bg_diagram_scene(d), &sc);
+    double ink = signal_ink(&sc), tree = label_tree(&sc, ends, 13);
+    int nsig = bg_diagram_count(d, "signal"), dots = bg_diagram_count(d, "signal-branch");
+    BG_T_REPORT(nsig == 12 && bg_diagram_count(d, "signal-arrow") == 12 && dots >= 10,
+                "manifold %s: %d signals, %d arrows drawn (12), %d branch dots (at least 10)", styles[si], nsig,
+                bg_diagram_count(d, "signal-arrow"), dots);
+    BG_T_REPORT(st.sig_cross == 0 && st.overlaps == 0 && st.bare_branches == 0,
+                "manifold %s: %d signal x bond crossings, %d lines on lines, %d bare branches (0)", styles[si],
+                st.sig_cross, st.overlaps, st.bare_branches);
+    BG_T_REPORT(tree > 0 && ink <= 1.25 * tree, "manifold %s: %.0f pt of signal line, spanning tree %.0f pt (at most 1.25 times)",
+                styles[si], ink, tree);
+    fc_free(&sc);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
+}
+
 /* Frames on branches (issue 31): a pipe network of two three-port Tee
  * instances, each outlet running on into a Pipe instance
  * (tests/data/figures/tee_network.bg, held out). Straightening the Tee's
@@ -2072,6 +2141,7 @@ int main(void) {
   RUN(test_two_row_meshes);
   RUN(test_meshes_with_chains);
   RUN(test_bridges);
+  RUN(test_fans);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
