@@ -210,6 +210,11 @@ static void nyq_curve(nyq *N, const double *re, const double *im, int nw, int j)
   free(px), free(py), free(brk);
 }
 
+static int by_value(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
 /* The data range with the critical point -1 + 0j, clipped to a few times
  * the median magnitude so that a pole on the axis does not flatten the rest. */
 static void nyq_range(const double *re, const double *im, int n, double *lim) {
@@ -218,7 +223,7 @@ static void nyq_range(const double *re, const double *im, int n, double *lim) {
   for (int i = 0; i < n; i++) if (isfinite(re[i]) && isfinite(im[i])) mag[k++] = hypot(re[i], im[i]);
   double cap = HUGE_VAL;
   if (k) {
-    for (int i = 1; i < k; i++) for (int j = i; j > 0 && mag[j - 1] > mag[j]; j--) { double t = mag[j]; mag[j] = mag[j - 1], mag[j - 1] = t; }
+    qsort(mag, (size_t)k, sizeof *mag, by_value); /* by insertion: 6 s for 61 200 magnitudes (153 pairs) */
     cap = 20 * fmax(mag[k / 2], 1e-300);
   }
   lim[0] = lim[2] = -1, lim[1] = lim[3] = 0;
