@@ -116,9 +116,11 @@ static int signal_from_bond(bg_diagram *d, bg_router *rt, sigrole role, const ch
   /* the group of a bond variable: after the nodes, two per bond (e, f) */
   const bg_signal_route *r = route_of(d, rt, -1, b, to, d->L->nnode + 2 * b + (var[0] == 'f'));
   if (rt || !r) return 0;
-  bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
-  it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
-  bg_scene_circle(&d->scene, r->pts[0].x, r->pts[0].y, 1.6);
+  if (r->branch_k < 0) { /* a branch leaves a line whose signal drew the dot on the bond */
+    bg_scene_item *it = bg_scene_begin(&d->scene, BG_ITEM_FILL, "%s-dot %s", role.kind, role.name);
+    it->fill = it->color = bg_diagram_ink(d, d->st.signal, hot), it->width = 0;
+    bg_scene_circle(&d->scene, r->pts[0].x, r->pts[0].y, 1.6);
+  }
   signal_routed(d, role, r, hot);
   return 0;
 }

@@ -1372,6 +1372,25 @@ static void test_fans(void) {
     bg_diagram_free(d);
   }
   fx_free(&f);
+  /* the same fan from a bond variable (tests/data/figures/manifold_flow.bg):
+   * every signal starts with one mark, a dot on bond 1 where a line leaves
+   * it or a branch dot; each signal drew its dot on the bond, so 9 branches
+   * had a second dot (the bond's, drawn where the branch leaves) */
+  rc = file_model(&f, "tests/data/figures/manifold_flow.bg", "manifold_flow");
+  for (int si = 0; rc == 0 && si < 3; si++) {
+    fc_stats st = {0};
+    bg_diagram *d = style_drawing(&f, si, &st);
+    if (!d) continue;
+    int on_bond = bg_diagram_count(d, "signal-dot"), dots = bg_diagram_count(d, "signal-branch");
+    BG_T_REPORT(bg_diagram_count(d, "signal") == 12 && on_bond >= 1 && on_bond + dots == 12 && on_bond <= 2,
+                "manifold_flow %s: %d signals, %d dots on the bond (1 or 2) and %d branch dots (12 in all)",
+                styles[si], bg_diagram_count(d, "signal"), on_bond, dots);
+    BG_T_REPORT(st.sig_cross == 0 && st.overlaps == 0 && st.bare_branches == 0,
+                "manifold_flow %s: %d signal x bond crossings, %d lines on lines, %d bare branches (0)", styles[si],
+                st.sig_cross, st.overlaps, st.bare_branches);
+    bg_diagram_free(d);
+  }
+  fx_free(&f);
 }
 
 /* Frames on branches (issue 31): a pipe network of two three-port Tee
