@@ -81,7 +81,10 @@ void rp_verdict(const rp_ctx *c, bg_strbuf *out) {
   }
   int idx = numeric_index(c);
   if (idx == BG_INDEX_FAILED) idx = a->index_predicted; /* 2 means "above 1" */
-  int refused = in->sim && in->sim_status == 1 && in->sim->message;
+  /* a model without a simulate block has no simulation to refuse (as in
+   * sim_clause): the library, asked for its CSV first, said "refused" in
+   * the report where the command line described the index reduction */
+  int refused = c->m->sim.present && in->sim && in->sim_status == 1 && in->sim->message;
   if (idx == BG_INDEX_SINGULAR) {
     bg_sb_puts(out, "Singular: the linearised equations have no unique solution (singular pencil)");
   } else if (idx == 0 && a->form == BG_FORM_ODE) {
