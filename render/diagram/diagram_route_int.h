@@ -101,8 +101,8 @@ struct bg_router {
   int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
   int end_zone;           /* a bond route pays COST_END within END_NEAR of another bond's end
                              (the repair of false T's, bg_route_blocked_bonds), else a crossing */
-  int group;              /* the current route's source: routes of the same one may share
-                             its lines (a signal branching), -1: none */
+  int group;              /* the current route's source: a route may start off the earlier
+                             routes of the same one (a signal branching), -1: none */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
   int seeded;             /* the last search's route starts on its source's earlier routes
                              (seed_branches: a branch taken off them) */
