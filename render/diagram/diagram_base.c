@@ -21,13 +21,16 @@ bg_vec bg_vscale(bg_vec a, double k) { return bg_v(a.x * k, a.y * k); }
 
 double bg_vlen(bg_vec a) { return hypot(a.x, a.y); }
 
-/* Distance from point c to the segment p-q. */
-double bg_point_seg(bg_vec c, bg_vec p, bg_vec q) {
+/* The point of segment p-q nearest point c. */
+bg_vec bg_seg_nearest(bg_vec c, bg_vec p, bg_vec q) {
   bg_vec u = bg_vsub(q, p);
   double l2 = u.x * u.x + u.y * u.y, t = l2 > 0 ? ((c.x - p.x) * u.x + (c.y - p.y) * u.y) / l2 : 0;
   t = t < 0 ? 0 : t > 1 ? 1 : t;
-  return bg_vlen(bg_vsub(c, bg_vadd(p, bg_vscale(u, t))));
+  return bg_vadd(p, bg_vscale(u, t));
 }
+
+/* Distance from point c to the segment p-q. */
+double bg_point_seg(bg_vec c, bg_vec p, bg_vec q) { return bg_vlen(bg_vsub(c, bg_seg_nearest(c, p, q))); }
 
 bg_vec bg_vleft(bg_vec d) { return bg_v(d.y, -d.x); }
 

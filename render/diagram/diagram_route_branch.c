@@ -102,9 +102,7 @@ int bg_route_group_nearest(bg_router *r, bg_vec c, bg_vec *out) {
         for (int j = ix->sig_head[(size_t)cy * (size_t)ix->nx + (size_t)cx]; j >= 0; j = ix->sig_next[j]) {
           int s = ix->sig_seg[j];
           if (ix->sgrp[s] != r->group) continue;
-          bg_vec a = ix->sa[s], b = ix->sb[s], d = bg_vsub(b, a);
-          double l2 = d.x * d.x + d.y * d.y, t = l2 > 0 ? ((c.x - a.x) * d.x + (c.y - a.y) * d.y) / l2 : 0;
-          bg_vec p = bg_vadd(a, bg_vscale(d, t < 0 ? 0 : t > 1 ? 1 : t));
+          bg_vec p = bg_seg_nearest(c, ix->sa[s], ix->sb[s]);
           double dist = bg_vlen(bg_vsub(p, c));
           if (dist < best) best = dist, *out = p;
         }

@@ -64,11 +64,7 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
     for (int i = 0; !leg_skipped(L, skip, b) && i <= L->bg[b].bendn; i++, k++) {
       ix->lbond[k] = b;
       ix->la[k] = bg_route_leg_end(L, b, i - 1), ix->lb[k] = bg_route_leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
-      double dx = ix->lb[k].x - ix->la[k].x, dy = ix->lb[k].y - ix->la[k].y, l2 = dx * dx + dy * dy;
-      double t = l2 > 0 ? ((L->bg[b].mid.x - ix->la[k].x) * dx + (L->bg[b].mid.y - ix->la[k].y) * dy) / l2 : 0;
-      t = t < 0 ? 0 : t > 1 ? 1 : t;
-      bg_vec f = bg_v(ix->la[k].x + t * dx, ix->la[k].y + t * dy);
-      ix->lmid[k] = bg_vlen(bg_vsub(f, L->bg[b].mid)) < 0.5;
+      ix->lmid[k] = bg_point_seg(L->bg[b].mid, ix->la[k], ix->lb[k]) < 0.5;
     }
   }
   int nitem = L->nnode + ix->nleg;
