@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "base/arena.h"
+#include "base/sort.h"
 #include "plot/plot.h"
 #include "plot/plot_linear.h"
 #include "diagram/render.h"
@@ -57,11 +58,6 @@ static int grid_runs(const bg_study *st, long *idx) {
   return n;
 }
 
-static int cmp_double(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
 /* Quantile q of sorted v[0..n) (linear between order statistics). */
 static double quantile(const double *v, int n, double q) {
   double h = (n - 1) * q;
@@ -99,7 +95,7 @@ static int family_table(const bg_study *st, table *T, char *why, size_t nwhy) {
       for (int row = 0; row < rows; row++) {
         double sum = 0;
         for (int i = 0; i < n; i++) col[i] = st->runs[idx[i]].curve[(size_t)row * nc + c], sum += col[i];
-        qsort(col, (size_t)n, sizeof *col, cmp_double);
+        bg_sort_doubles(col, (size_t)n);
         double *out = &T->r.values[(size_t)row * T->r.nout + c * 5];
         out[0] = col[0], out[1] = quantile(col, n, 0.05), out[2] = sum / n;
         out[3] = quantile(col, n, 0.95), out[4] = col[n - 1];

@@ -30,3 +30,12 @@ int bg_natural_cmp(const char *a, const char *b) {
   }
   return (*a != 0) - (*b != 0);
 }
+
+static int by_value(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+void bg_sort_doubles(double *v, size_t n) {
+  if (n > 1) qsort(v, n, sizeof *v, by_value);
+}

@@ -15,4 +15,6 @@ void bg_sort(void *base, size_t n, size_t size, bg_sort_cmp cmp, void *ctx);
  * x007 as x7). The tie-break of choices that must not follow the order of a
  * model's statements (docs/causality.md, "Ties"). */
 int bg_natural_cmp(const char *a, const char *b);
+/* v[0..n) in increasing order (NaN-free: the callers drop them). */
+void bg_sort_doubles(double *v, size_t n);
 #endif

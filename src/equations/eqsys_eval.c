@@ -2,6 +2,7 @@
 /* bg_eqsys evaluation entry points: initial values, right-hand side,
  * residual, exact Jacobians, linearisation, outputs, breakpoints. */
 #include "base/lapack.h"
+#include "base/sort.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -185,18 +186,13 @@ static void bp_walk(const bg_model *m, int root, bpl *L) {
     for (int k = 0; k < n->nargs; k++) bp_walk(m, n->arg[k], L);
 }
 
-static int cmp_d(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
 int bg_eqsys_breakpoints(const bg_eqsys *s, double t0, double t1, double *times, int max) {
   const bg_model *m = s->m;
   bpl L = {0};
   for (int e = 0; e < m->nelem; e++)
     if (bg_elem_is_source(m->elem_kind[e]) && m->elem_expr[e] >= 0) bp_walk(m, m->elem_expr[e], &L);
   for (int k = 0; k < m->ninput; k++) bp_walk(m, m->input_expr[k], &L);
-  if (L.n) qsort(L.v, (size_t)L.n, sizeof *L.v, cmp_d);
+  if (L.n) bg_sort_doubles(L.v, (size_t)L.n);
   int cnt = 0;
   for (int i = 0; i < L.n; i++) {
     if (!(L.v[i] > t0 && L.v[i] < t1)) continue;
