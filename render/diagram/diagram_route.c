@@ -121,10 +121,14 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
   int np = 0;
   for (int dir = 0; dir < 4; dir++) {
     double half = dir < 2 ? hh : hw;
+    /* An arrow at the box's very corner points past the label, whose text
+     * ends the pad inside it: a target's corner ports stand 1.5 pt over
+     * the text (not on a box too small for it: a junction's digit). */
+    double corner = gap > 0 && half - (L->st.node_pad + 1.5) >= 2 ? half - (L->st.node_pad + 1.5) : half;
     for (int k = 0; k < 5; k++) { /* the middle, halfway to the corners, the corners */
       static const double frac[5] = {0, -0.5, 0.5, -1, 1};
-      double off = frac[k] * half;
-      if ((k == 1 || k == 2) && half < 8) continue;
+      double off = frac[k] * (k >= 3 ? corner : half);
+      if ((k == 1 || k == 2) && (half < 8 || half / 2 > corner - 2)) continue;
       bg_vec at = dir < 2 ? bg_v(c.x + (dir == 0 ? hw : -hw), c.y + off) : bg_v(c.x + off, c.y + (dir == 2 ? hh : -hh));
       if (!side_clear(r, m, n, at)) continue;
       at = bg_vadd(at, bg_vscale(DIRV[dir], gap));

@@ -55,6 +55,7 @@ typedef struct fc_stats {
   int diagonals;             /* bonds at 45 degrees off a junction whose four sides its other bonds take
                                 (fc_forced_diagonals; taken out of slanted by the callers that count them) */
   int nodes_overlap;         /* pairs of element labels whose boxes overlap (two nodes on one place) */
+  int tips_beside;           /* signal arrows pointing past their node's label, not at it (fc_tip_beside) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -628,11 +629,42 @@ static int fc_bare_branches(const bg_scene *s, const fc_scene *f) {
   return bare;
 }
 
+/* Whether signal line l's arrow points past the label it ends at. The line
+ * stops 4.8 pt short of the arrow's tip, and the tip 4.5 pt short of the
+ * text (the router's box: the label and its 3 pt pad, less 1.5); the ray on
+ * from the line's end must meet the text's box (0.5 pt more each way) within
+ * 6 pt of the tip, else the arrow reads as pointing beside the label (a
+ * route ending at a corner of the padded box, the text 3 pt inside it). The
+ * label is the node label nearest the tip. */
+static int fc_tip_beside(const fc_scene *f, const fc_line *l) {
+  if (l->kind != FC_SIGNAL || l->nseg < 1) return 0;
+  const fc_seg *e = &l->seg[l->nseg - 1];
+  double len = fc_seg_len(e);
+  if (len < 1e-9) return 0;
+  double ux = (e->x1 - e->x0) / len, uy = (e->y1 - e->y0) / len;
+  double tx = e->x1 + 4.8 * ux, ty = e->y1 + 4.8 * uy;
+  const fc_box *near = NULL;
+  double best = 1e300;
+  for (int i = 0; i < f->nbox; i++) {
+    const fc_box *b = &f->box[i];
+    if (b->kind != FC_NODE) continue;
+    double dx = fmax(fmax(b->x0 - tx, tx - b->x1), 0), dy = fmax(fmax(b->y0 - ty, ty - b->y1), 0);
+    if (hypot(dx, dy) < best) best = hypot(dx, dy), near = b;
+  }
+  if (!near || best > 12) return 0; /* not at a label: a bond-variable's or a detector's end */
+  fc_box g = {near->name, near->kind, 0, 0, near->x0 - 0.5, near->y0 - 0.5, near->x1 + 0.5, near->y1 + 0.5, 0};
+  fc_seg ray = {e->x1, e->y1, tx + 6 * ux, ty + 6 * uy};
+  if (fc_seg_box(&ray, &g) < 1e-9) return 0;
+  if (fc_explain) printf("  signal %s: arrow at (%.1f, %.1f) points beside %s\n", l->name, tx, ty, near->name);
+  return 1;
+}
+
 static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
   st->bare_branches += fc_bare_branches(s, f);
   for (int j = 0; j < f->nline; j++) {
     const fc_line *l = &f->line[j];
     if (l->kind == FC_BOND) st->tiny_bonds += fc_tiny(l);
+    st->tips_beside += fc_tip_beside(f, l);
     for (int k = 0; k < f->nline; k++) {
       const fc_line *m = &f->line[k];
       if (l->kind == FC_SIGNAL && m->kind == FC_BOND) {
