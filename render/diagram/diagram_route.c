@@ -143,6 +143,37 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
   return np;
 }
 
+/* Two nodes almost in line — one above the other, their texts overlapping
+ * across, or side by side overlapping in height — whose ports are not at
+ * one place: the search drew a small step between the two ports' lines
+ * (slider_crank's signal from the integrator of phi into MTF : T, 2 pt
+ * across at its stubs). A port on each facing side at the middle of the
+ * overlap of their texts (1.5 pt in from the text's ends, as a target's
+ * corners: node_ports) gives the straight line, where the sides are clear
+ * of the nodes' bonds; between nodes closer than two stubs both stubs end
+ * at one vertex halfway. */
+static void aligned_ports(bg_router *r, const bg_model *m, int a, int b, port *ps, int *nps, port *pt, int *npt) {
+  const bg_diagram_layout *L = r->L;
+  double in = L->st.node_pad + 1.5;
+  for (int axis = 0; axis < 2; axis++) { /* 0: a vertical line, one above the other; 1: a level one */
+    double ha = (axis ? L->nh[a] : L->nw[a]) / 2 - in, hb = (axis ? L->nh[b] : L->nw[b]) / 2 - in;
+    double ca = axis ? L->ny[a] : L->nx[a], cb = axis ? L->ny[b] : L->nx[b];
+    double lo = fmax(ca - ha, cb - hb), hi = fmin(ca + ha, cb + hb);
+    double along = axis ? L->nx[b] - L->nx[a] : L->ny[b] - L->ny[a];
+    double room = fabs(along) - (axis ? L->nw[a] + L->nw[b] : L->nh[a] + L->nh[b]) / 2;
+    double stub = fmin(STUB, (room - 1.5) / 2); /* close nodes: both stubs at one vertex between */
+    if (ha <= 0 || hb <= 0 || hi < lo || stub < 4) continue;
+    double v = (lo + hi) / 2, sa = along > 0 ? 1 : -1;
+    int dir_a = axis ? (along > 0 ? 0 : 1) : (along > 0 ? 2 : 3), dir_b = dir_a ^ 1;
+    bg_vec at_a = axis ? bg_v(L->nx[a] + sa * L->nw[a] / 2, v) : bg_v(v, L->ny[a] + sa * L->nh[a] / 2);
+    bg_vec at_b = axis ? bg_v(L->nx[b] - sa * L->nw[b] / 2, v) : bg_v(v, L->ny[b] - sa * L->nh[b] / 2);
+    if (!side_clear(r, m, a, at_a) || !side_clear(r, m, b, at_b)) continue;
+    at_b = bg_vadd(at_b, bg_vscale(DIRV[dir_b], 1.5)); /* the arrow's tip 1.5 pt off the box */
+    ps[(*nps)++] = (port){at_a, bg_vadd(at_a, bg_vscale(DIRV[dir_a], stub)), dir_a, 0, 0, 0};
+    pt[(*npt)++] = (port){at_b, bg_vadd(at_b, bg_vscale(DIRV[dir_b], stub)), dir_b, 0, 0, 0};
+  }
+}
+
 /* Drops repeated points and the middle one of three on a line. */
 static int simplify(bg_vec *p, int n) {
   int m = 0;
@@ -249,11 +280,12 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
              int cap) {
   const bg_diagram_layout *L = r->L;
   bg_vec from_pt = bg_v(0, 0);
-  port ps[20], pt[20];
+  port ps[22], pt[22]; /* node_ports' 20 and aligned_ports' 2 */
   r->from_node = from_node, r->to_node = to, r->group = group, r->bond = -1;
   int nps = 0, npt = node_ports(r, m, to, 1.5, pt);
   if (from_node >= 0) {
     nps = node_ports(r, m, from_node, 0, ps);
+    aligned_ports(r, m, from_node, to, ps, &nps, pt, &npt);
   } else { /* off the bond's side, either way, at its middle or 8 pt either side on its line */
     bg_vec mid = L->bg[from_bond].mid, bond_dir = L->bg[from_bond].mdir;
     int along_x = fabs(bond_dir.x) >= fabs(bond_dir.y);

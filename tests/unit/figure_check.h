@@ -56,6 +56,7 @@ typedef struct fc_stats {
                                 (fc_forced_diagonals; taken out of slanted by the callers that count them) */
   int nodes_overlap;         /* pairs of element labels whose boxes overlap (two nodes on one place) */
   int tips_beside;           /* signal arrows pointing past their node's label, not at it (fc_tip_beside) */
+  int steps;                 /* signal lines with a small step: a leg under 8 pt between two legs going on the same way (fc_steps) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -659,12 +660,34 @@ static int fc_tip_beside(const fc_scene *f, const fc_line *l) {
   return 1;
 }
 
+/* The small steps of signal line l: three legs in a row, the middle one
+ * shorter than 8 pt across the other two, which go on the same way (an S
+ * or Z the line makes to shift sideways by a few pt, as two boxes almost
+ * in line draw when the ports are not); the line's last leg ends 4.8 pt
+ * short of the arrow's tip, so it counts whole. */
+static int fc_steps(const fc_line *l) {
+  if (l->kind != FC_SIGNAL) return 0;
+  int n = 0;
+  for (int k = 0; k + 2 < l->nseg; k++) {
+    const fc_seg *a = &l->seg[k], *b = &l->seg[k + 1], *c = &l->seg[k + 2];
+    double ax = a->x1 - a->x0, ay = a->y1 - a->y0, cx = c->x1 - c->x0, cy = c->y1 - c->y0;
+    double la = hypot(ax, ay), lb = fc_seg_len(b), lc = hypot(cx, cy);
+    if (la < 1e-9 || lc < 1e-9 || lb >= 8 || lb < 1e-9) continue;
+    if ((ax * cx + ay * cy) / (la * lc) < 0.999) continue; /* not going on the same way */
+    if (fabs(ax * (b->y1 - b->y0) - ay * (b->x1 - b->x0)) / (la * lb) < 0.9) continue; /* not across */
+    n++;
+    if (fc_explain) printf("  signal %s: a %.1f pt step at (%.1f, %.1f)\n", l->name, lb, b->x0, b->y0);
+  }
+  return n;
+}
+
 static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
   st->bare_branches += fc_bare_branches(s, f);
   for (int j = 0; j < f->nline; j++) {
     const fc_line *l = &f->line[j];
     if (l->kind == FC_BOND) st->tiny_bonds += fc_tiny(l);
     st->tips_beside += fc_tip_beside(f, l);
+    st->steps += fc_steps(l);
     for (int k = 0; k < f->nline; k++) {
       const fc_line *m = &f->line[k];
       if (l->kind == FC_SIGNAL && m->kind == FC_BOND) {

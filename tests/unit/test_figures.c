@@ -213,7 +213,7 @@ static void test_checker_avoidable(void) {
 
 /* The counters of issue 31 on a hand-made scene with each fault once (or
  * twice where the kinds differ). */
-/* fc_tip_beside: a signal's line stops 4.8 pt short of its arrow's tip;
+/* fc_tip_beside and fc_steps. A signal's line stops 4.8 pt short of its arrow's tip;
  * arrows onto a label's text are not counted, arrows 3 pt past its end or
  * above its top (a padded box's corner) are, and so are none far from
  * every label (a line ending nowhere near one). */
@@ -233,6 +233,18 @@ static void test_checker_tips(void) {
   fc_stats st = {0};
   fc_count(&s, &st);
   INT_EQ(st.tips_beside, 2);
+  INT_EQ(st.steps, 0);
+  bg_scene_free(&s);
+  /* fc_steps: a line stepping 2 pt sideways counts; a 10 pt step, a U (back
+   * the way it came) and a plain corner do not */
+  bg_scene_init(&s, "DejaVu Sans");
+  line(&s, "signal p->q", 0, 0, 0, 20), bg_scene_line(&s, 2, 20), bg_scene_line(&s, 2, 40);
+  line(&s, "signal r->s", 100, 0, 100, 20), bg_scene_line(&s, 110, 20), bg_scene_line(&s, 110, 40);
+  line(&s, "signal t->u", 200, 0, 200, 20), bg_scene_line(&s, 204, 20), bg_scene_line(&s, 204, 0);
+  line(&s, "signal v->w", 300, 0, 300, 20), bg_scene_line(&s, 330, 20);
+  fc_stats st2 = {0};
+  fc_count(&s, &st2);
+  INT_EQ(st2.steps, 1);
   bg_scene_free(&s);
 }
 
@@ -345,12 +357,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -423,28 +435,31 @@ static const fc_stats limits[3][2] = {
  * 1 / 2 / 2 / 3 -> 0): the grid's lines moved with the ports, signal
  * crossings 61 -> 60 (default), 63 -> 64 (print, every layer) and 69 -> 71
  * (slides, every layer); reactions12's path 10 tag back on its line (tags
- * far 1 -> 0, default with every layer).
+ * far 1 -> 0, default with every layer). Last column (fc_steps): signal
+ * lines stepping sideways under 8 pt, 0 but reactions12's two in slides
+ * with every layer (c10 -> k13 and c0 -> k15, 7.6 pt between two lanes at
+ * the right: the router's grid, not two nodes in line, aligned_ports).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 71, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 71, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside);
+         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -886,6 +901,7 @@ static void test_held_out_models(void) {
   OK(tot.astray <= 3);
   INT_EQ(tot.crowded, 0);
   INT_EQ(tot.tips_beside, 0); /* 13 before a target's corner ports stood over its text */
+  OK(tot.steps <= 10);        /* lines stepping 2.6 to 7.6 pt between two lanes of the grid */
 }
 
 /* Length of bond number num as drawn (its line without the half arrow). */
@@ -1405,6 +1421,48 @@ static void test_arrows_at_labels(void) {
                     show_names[k], st.tips_beside, st.sig_through);
         bg_diagram_free(d);
       }
+    fx_free(&f);
+  }
+}
+
+/* Signals between nodes almost in line drawn straight (issue 31): an
+ * integrator over the element it modulates had its line step sideways by
+ * 2 to 4 pt between the two boxes' ports (slider_crank's phi into MTF : T,
+ * the pendulum's th into MTF : Tx) or turn twice round a corner
+ * (the excavator's x1 and x2 into their valves, the speaker's z into its
+ * amplifier); each is now one straight line (aligned_ports, diagram_route.c),
+ * in every style. The tables count the steps that are left (fc_steps). */
+static void test_aligned_signals(void) {
+  static const struct {
+    const char *file, *name, *signal;
+  } cases[] = {
+      {"examples/slider_crank.bg", "slider_crank", "phi->T"},
+      {"examples/gallery/pendulum.bg", "pendulum", "th->Tx"},
+      {"tests/data/figures/excavator.bg", "excavator", "x1->valve1"},
+      {"tests/data/figures/excavator.bg", "excavator", "x2->valve2"},
+      {"tests/data/figures/speaker_pi.bg", "speaker_pi", "z->amp"},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    fx f;
+    if (file_model(&f, cases[i].file, cases[i].name) != 0) continue;
+    for (int si = 0; si < 3; si++) {
+      bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
+      OK(d != NULL);
+      if (!d) continue;
+      fc_scene sc;
+      fc_read(bg_diagram_scene(d), &sc);
+      int found = 0, legs = 0, steps = 0;
+      for (int k = 0; k < sc.nline; k++) {
+        if (sc.line[k].kind != FC_SIGNAL) continue;
+        steps += fc_steps(&sc.line[k]);
+        if (strcmp(sc.line[k].name, cases[i].signal)) continue;
+        found++, legs = sc.line[k].nseg;
+      }
+      BG_T_REPORT(found == 1 && legs == 1 && steps == 0, "%s %s: signal %s drawn %d times, %d legs (1), %d steps",
+                  cases[i].name, styles[si], cases[i].signal, found, legs, steps);
+      fc_free(&sc);
+      bg_diagram_free(d);
+    }
     fx_free(&f);
   }
 }
@@ -2130,12 +2188,12 @@ static void test_signals_face(void) {
  * every layer, that bond at the grid's own angle (layers keep their room:
  * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
 static const fc_stats limits_pages[3][2] = {
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
@@ -2238,6 +2296,7 @@ int main(void) {
   RUN(test_bridges);
   RUN(test_fans);
   RUN(test_arrows_at_labels);
+  RUN(test_aligned_signals);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
