@@ -226,6 +226,9 @@ int bg_route_branch(const bg_router *r, bg_vec *at);
  * a short U round the one-port avoids, taken (at most cap points; the
  * index follows). Returns the new number of points. */
 int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap);
+/* A line drawn before the routes that they must not run along (a frame's
+ * border: a signal beside it reads as part of the frame), cheap to cross. */
+void bg_route_fence(bg_router *r, bg_vec a, bg_vec b);
 void bg_router_free(bg_router *r);
 /* Bonds whose line runs through another node's box routed again
  * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how

@@ -261,6 +261,8 @@ int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const dou
   return n;
 }
 
+void bg_route_fence(bg_router *r, bg_vec a, bg_vec b) { bg_near_add_signal(&r->ix, a, b, GROUP_FENCE); }
+
 void bg_route_keep(bg_router *r, const bg_vec *pts, int n) {
   if (r->nroute == r->caproute) {
     r->caproute = 2 * r->caproute + 16;

@@ -74,7 +74,7 @@ int bg_route_own_segment(const bg_router *r, int s) {
  * before this one (group -2 - b), the route's own bond's dearest. */
 static double seg_cross_cost(const bg_router *r, int s) {
   int g = r->ix.sgrp[s];
-  return g <= -2 && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
+  return g <= -2 && g != GROUP_FENCE && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
 }
 
 /* What a segment p-q costs: its length, and the penalties for what it meets. */

@@ -13,6 +13,8 @@
 #ifndef BG_DIAGRAM_ROUTE_INT_H
 #define BG_DIAGRAM_ROUTE_INT_H
 
+#include <limits.h>
+
 #include "diagram/diagram_int.h"
 
 #define STUB 10.0 /* a port's straight run out of its box, to its grid vertex */
@@ -23,6 +25,7 @@
                                  element never need to cross (a detour past two other bonds
                                  is better) */
 #define COST_CROSS_SIGNAL 6.0
+#define GROUP_FENCE INT_MIN /* near_index.sgrp of a frame's border (bg_route_fence) */
 #define COST_SHARE 900.0      /* running on another signal: read as one line */
 #define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
 #define COST_END 2000.0       /* (end_zone) a bond crossing another bond within END_NEAR pt of its
@@ -55,7 +58,7 @@ typedef struct near_index {
   bg_vec *sa, *sb;
   int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none;
                 a routed bond b's: -2 - b (seg_cross_cost: dear when it is one of
-                the current route's own) */
+                the current route's own); a frame's border: GROUP_FENCE */
   unsigned char *slast; /* per segment: the last of its route (it ends in the arrowhead) */
   int nseg, capseg;
   int *seg_stamp, capstamp;

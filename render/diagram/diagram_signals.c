@@ -239,8 +239,28 @@ static void detour_routes(bg_diagram *d, bg_router *rt) {
   }
 }
 
+/* The frames drawn so far (bg_draw_frames, before the routes) fence the
+ * routes: a signal run along a frame's border read as part of it (issue
+ * 31: two motors' speed signals along their frames' bottoms, 1 pt off). */
+static void fence_frames(bg_diagram *d, bg_router *rt) {
+  const bg_scene *s = &d->scene;
+  for (int i = 0; i < s->nitem; i++) {
+    const bg_scene_item *it = &s->item[i];
+    if (it->kind != BG_ITEM_STROKE || strncmp(it->role, "frame", 5) || (it->role[5] && it->role[5] != ' ')) continue;
+    bg_vec p = bg_v(0, 0), start = p;
+    bg_scene_op op;
+    for (int k = 0; bg_scene_next_op(s, it, &k, &op);) {
+      bg_vec q = op.code == BG_OP_CLOSE ? start : bg_v(op.x[op.code == BG_OP_CURVE ? 2 : 0], op.y[op.code == BG_OP_CURVE ? 2 : 0]);
+      if (op.code == BG_OP_MOVE) start = q;
+      else bg_route_fence(rt, p, q); /* a curve by its chord: frames are rectangles */
+      p = q;
+    }
+  }
+}
+
 void bg_route_signals(bg_diagram *d) {
   bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL);
+  fence_frames(d, rt);
   walk_signals(d, rt);
   detour_routes(d, rt);
   bg_router_free(rt);

@@ -57,6 +57,7 @@ typedef struct fc_stats {
   int nodes_overlap;         /* pairs of element labels whose boxes overlap (two nodes on one place) */
   int tips_beside;           /* signal arrows pointing past their node's label, not at it (fc_tip_beside) */
   int steps;                 /* signal lines with a small step: a leg under 8 pt between two legs going on the same way (fc_steps) */
+  int on_frames;             /* bonds and signals running along a frame's border, within 2 pt for more than 8 pt (fc_on_frame) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -464,6 +465,31 @@ static int fc_layer_oblique(const fc_line *l, const fc_line *b) {
   return 0;
 }
 
+/* Whether segments a and b run along each other: parallel within 1
+ * degree, less than `near` pt apart, sharing more than `share` pt. */
+static int fc_seg_beside(const fc_seg *a, const fc_seg *b, double near, double share) {
+  double la = fc_seg_len(a), lb = fc_seg_len(b);
+  if (la < share || lb < share) return 0;
+  double ux = (a->x1 - a->x0) / la, uy = (a->y1 - a->y0) / la;
+  double vx = (b->x1 - b->x0) / lb, vy = (b->y1 - b->y0) / lb;
+  if (fabs(ux * vy - uy * vx) > 0.0175) return 0;
+  double d0 = fabs((b->x0 - a->x0) * uy - (b->y0 - a->y0) * ux);
+  double d1 = fabs((b->x1 - a->x0) * uy - (b->y1 - a->y0) * ux);
+  if (fmax(d0, d1) >= near) return 0;
+  double t0 = (b->x0 - a->x0) * ux + (b->y0 - a->y0) * uy, t1 = (b->x1 - a->x0) * ux + (b->y1 - a->y0) * uy;
+  double lo = fmax(0, fmin(t0, t1)), hi = fmin(la, fmax(t0, t1));
+  return hi - lo > share;
+}
+
+/* Whether line l (a bond or a signal) runs along frame f's border: within
+ * 2 pt for more than 8 pt, where it reads as part of the frame. */
+static int fc_on_frame(const fc_line *l, const fc_line *f) {
+  for (int p = 0; p < fc_body(l); p++)
+    for (int q = 0; q < f->nseg; q++)
+      if (fc_seg_beside(&l->seg[p], &f->seg[q], 2, 8)) return 1;
+  return 0;
+}
+
 /* Two segments on one line (parallel within 1 degree, < 1 pt apart) that
  * share more than 2 pt: drawn on top of each other. */
 static int fc_seg_overlap(const fc_seg *a, const fc_seg *b) {
@@ -717,6 +743,12 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
     }
     if (l->kind != FC_FRAME) continue;
     st->frames++;
+    for (int k = 0; k < f->nline; k++)
+      if ((f->line[k].kind == FC_BOND || f->line[k].kind == FC_SIGNAL) && fc_on_frame(&f->line[k], l)) {
+        st->on_frames++;
+        if (fc_explain) printf("  %s %d (%s) along the frame of %s\n", f->line[k].kind == FC_BOND ? "bond" : "signal",
+                               f->line[k].id, f->line[k].name, l->name);
+      }
     fc_box r = fc_frame_box(l);
     for (int k = j + 1; k < f->nline; k++)
       if (f->line[k].kind == FC_FRAME) {

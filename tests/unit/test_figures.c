@@ -357,12 +357,12 @@ static const char *const show_names[] = {"default", "all"};
  * internal_mod_r and series_motor, 4 per style, before it followed its
  * signal's route). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -441,25 +441,25 @@ static const fc_stats limits[3][2] = {
  * the right: the router's grid, not two nodes in line, aligned_ports).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 71, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 60, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 71, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps);
+         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps, t->on_frames);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step onfr";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -1467,6 +1467,31 @@ static void test_aligned_signals(void) {
   }
 }
 
+/* Signals off the frames (issue 31): a line along a frame's border reads
+ * as part of it. Two motors with PI speed loops driving one load
+ * (tests/data/figures/twin_drive.bg, held out): each motor's speed signal
+ * ran to its controller along the bottom of the motor's frame, 1 pt off it
+ * (fc_on_frame: 2 per style and layer set); the router now knows the
+ * frames (bg_route_fence), running along one costs what running on a
+ * signal does, and the signals cross the frames and run clear of them. */
+static void test_signals_off_frames(void) {
+  fx f;
+  if (file_model(&f, "tests/data/figures/twin_drive.bg", "twin_drive") != 0) return;
+  for (int si = 0; si < 3; si++)
+    for (int k = 0; k < 2; k++) {
+      bg_diagram *d = build(&f, styles[si], shows[k], 0, 0);
+      OK(d != NULL);
+      if (!d) continue;
+      fc_stats st = {0};
+      count_scene(f.m, bg_diagram_scene(d), &st);
+      BG_T_REPORT(st.frames == 4 && st.on_frames == 0 && st.sig_through == 0 && st.overlaps == 0,
+                  "twin_drive %s %s: %d frames, %d lines along them, %d signals through labels, %d overlaps",
+                  styles[si], show_names[k], st.frames, st.on_frames, st.sig_through, st.overlaps);
+      bg_diagram_free(d);
+    }
+  fx_free(&f);
+}
+
 /* Fans drawn as trees (issue 31): one accumulator's pressure modulates
  * twelve valves round a rail (tests/data/figures/manifold.bg, held out).
  * Each signal was routed from the accumulator's box on its own: three
@@ -2188,12 +2213,12 @@ static void test_signals_face(void) {
  * every layer, that bond at the grid's own angle (layers keep their room:
  * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
 static const fc_stats limits_pages[3][2] = {
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
@@ -2297,6 +2322,7 @@ int main(void) {
   RUN(test_fans);
   RUN(test_arrows_at_labels);
   RUN(test_aligned_signals);
+  RUN(test_signals_off_frames);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
