@@ -699,7 +699,7 @@ static void pack_parts(int *part, int nparts, const int *width, const int *heigh
  * make them from the reference boxes: a column as wide as its widest hub
  * and the widest one-port beside one (the odd column after it), a row as
  * high as its hub and one-port; each with its gaps. */
-static double column_pitch(const grid *g, const int *h, int nh) {
+static double column_pitch_of(const grid *g, const int *h, int nh, double *width) {
   int ncol = 0;
   for (int i = 0; i < nh; i++) ncol = g->col[h[i]] + 1 > ncol ? g->col[h[i]] + 1 : ncol;
   double *hub = bg_xcalloc((size_t)ncol + 1, sizeof(double)), *leaf = bg_xcalloc((size_t)ncol + 1, sizeof(double));
@@ -715,8 +715,11 @@ static double column_pitch(const grid *g, const int *h, int nh) {
   style_gaps(g->ref, 0, &xgap, &ygap);
   for (int c = 0; c < ncol; c++) sum += hub[c] + leaf[c] + 2 * xgap;
   free(hub), free(leaf);
+  if (width) *width = ncol ? sum / ncol : 0;
   return ncol ? sum / ncol / (hh + lh + 2 * ygap) : 0;
 }
+
+static double column_pitch(const grid *g, const int *h, int nh) { return column_pitch_of(g, h, nh, NULL); }
 
 /* The parts, once for every pass that asks (the tree drawing, the folds,
  * movable): g->up, a union-find over the edges, and per part's root
@@ -802,12 +805,20 @@ static int *spine_anchors(const grid *g, const int *h, int nh) {
   return anchor;
 }
 
+/* The widest row a chain is drawn in before it folds, points: 1.14 times
+ * A4 landscape's width (11 pt text shrunk to fit that page stays above
+ * 9.5 pt). */
+#define ROW_MAX 960.0
+
 static void stack_components(grid *g, const int *h, int nh) {
   int n = g->n, *up = g->up;
   const unsigned char *cyclic = g->cyclic;
   int *lo = bg_xcalloc((size_t)n + 1, sizeof(int)), *hi = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *ncol = bg_xcalloc((size_t)n + 1, sizeof(int)), *base = bg_xcalloc((size_t)n + 1, sizeof(int));
   int *boff = bg_xcalloc((size_t)n + 1, sizeof(int)), *nband = bg_xcalloc((size_t)n + 1, sizeof(int));
+  int *maxdeg = bg_xcalloc((size_t)n + 1, sizeof(int)); /* per component: its hubs' most links */
+  unsigned char *branched = bg_xcalloc((size_t)n + 1, 1); /* per component: a hub with three hubs beside it */
+  double colw = -1; /* the hubs' mean column width, points (column_pitch_of), when asked */
   /* bands: at most one per 1 + ncol / 8 columns of a component, ncol <= its nodes */
   int *start = bg_xcalloc(2 * (size_t)n + 2, sizeof(int)), *bx = bg_xcalloc(2 * (size_t)n + 2, sizeof(int));
   int ni = g->d->m->ninst, *ilo = bg_xcalloc((size_t)ni + 1, sizeof(int)), *ihi = bg_xcalloc((size_t)ni + 1, sizeof(int));
@@ -818,6 +829,10 @@ static void stack_components(grid *g, const int *h, int nh) {
     lo[c] = g->row[v] < lo[c] ? g->row[v] : lo[c];
     hi[c] = g->row[v] > hi[c] ? g->row[v] : hi[c];
     ncol[c] = g->col[v] + 1 > ncol[c] ? g->col[v] + 1 : ncol[c];
+    int links = g->adr[v + 1] - g->adr[v], hubs = 0;
+    for (int k = g->adr[v]; k < g->adr[v + 1]; k++) hubs += g->hub[other(g, g->adj[k], v)];
+    maxdeg[c] = links > maxdeg[c] ? links : maxdeg[c];
+    branched[c] |= hubs > 2; /* a hub off the chain: a branch */
     if (g->mesh[v]) nband[c] = -1; /* a mesh: one band, a grid is not folded */
   }
   if (ni) instance_columns(g, h, nh, up, ilo, ihi, icomp);
@@ -838,6 +853,8 @@ static void stack_components(grid *g, const int *h, int nh) {
    * times as wide as high, in points (its columns hold long labels: 5.5 to
    * 1 before; each part folded to that shape on its own packed badly) */
   double pitch = g->own_ranks ? column_pitch(g, h, nh) : 0, cells = 0;
+  int ncomp = 0; /* parts with hubs: several are packed side by side (pack_parts), not capped */
+  for (int v = 0; v < n; v++) ncomp += find(up, v) == v && lo[v] <= hi[v];
   for (int v = 0; pitch > 0 && v < n; v++)
     if (find(up, v) == v && lo[v] <= hi[v]) cells += (double)ncol[v] * (hi[v] - lo[v] + 1 + sep);
   int *first = NULL, *chub = NULL, *anchor = NULL; /* per component its hubs, chub[first[c] .. first[c + 1]) */
@@ -848,6 +865,20 @@ static void stack_components(grid *g, const int *h, int nh) {
     if (pitch > 0) wrap = (int)ceil(sqrt(1.4 * cells / pitch));
     if (nband[c] < 0) wrap = ncol[c] + 16;
     else if (wrap < 16) wrap = 16;
+    /* a chain of under 16 columns wider than a landscape page: folded too,
+     * into even bands of at most ROW_MAX (a 6-section transmission line
+     * was one row 1 332 pt wide, 8.7 : 1; issue 31). Only a lone part (parts
+     * are packed side by side), a chain (a branch may block a fold's
+     * bond: fold_blocked misses one reaching into the next column) of
+     * junctions of four bonds or fewer (a ring of one-ports makes its
+     * column far wider than the mean) */
+    if (nband[c] >= 0 && !cyclic[c] && ncol[c] <= wrap && maxdeg[c] <= 4 && !branched[c] && ncomp == 1) {
+      if (colw < 0) column_pitch_of(g, h, nh, &colw);
+      if (ncol[c] * colw > ROW_MAX) {
+        int nb = (int)ceil(ncol[c] * colw / ROW_MAX);
+        wrap = (ncol[c] + nb - 1) / nb;
+      }
+    }
     boff[c] = nstart;
     unsigned char *blocked = NULL;
     if (ncol[c] > wrap && !cyclic[c]) {
@@ -911,7 +942,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     g->placed[v] = 1;
     cell_take(g, g->gx[v], g->gy[v], v);
   }
-  free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(start), free(bx);
+  free(lo), free(hi), free(ncol), free(base), free(boff), free(nband), free(maxdeg), free(branched), free(start), free(bx);
   free(ilo), free(ihi), free(icomp), free(xoff);
 }
 

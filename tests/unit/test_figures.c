@@ -1492,6 +1492,42 @@ static void test_signals_off_frames(void) {
   fx_free(&f);
 }
 
+/* Chains of under 16 columns wider than a page folded (issue 31): a
+ * six-section transmission line (tests/data/figures/transmission_line.bg)
+ * was one row 1 332 x 153 pt and the twin drive 1 053 x 143 pt (the grid
+ * pass folded a part only past 16 columns); now each folds into two bands
+ * no wider than 960 pt, every style drawing the same arrangement, with no
+ * slanted or crossing bond and no signal through a label. */
+static void test_wide_chains_fold(void) {
+  static const char *const files[] = {"transmission_line", "twin_drive"};
+  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+    char rel[96];
+    snprintf(rel, sizeof rel, "tests/data/figures/%s.bg", files[i]);
+    fx f;
+    if (file_model(&f, rel, files[i]) != 0) continue;
+    bg_diagram *d0 = build(&f, styles[0], BG_SHOW_DEFAULT, 0, 0);
+    OK(d0 != NULL);
+    for (int si = 0; d0 && si < 3; si++) {
+      bg_diagram *d = build(&f, styles[si], BG_SHOW_DEFAULT, 0, 0);
+      OK(d != NULL);
+      if (!d) continue;
+      double w, h;
+      bg_diagram_size(d, &w, &h);
+      fc_stats st = {0};
+      count_scene(f.m, bg_diagram_scene(d), &st);
+      int moved = fc_arrangement(bg_diagram_scene(d0), bg_diagram_scene(d));
+      BG_T_REPORT(w <= 960 && w < 3 * h, "%s %s: page %.0f x %.0f pt (at most 960 wide, under 3 : 1)", files[i],
+                  styles[si], w, h);
+      BG_T_REPORT(st.slanted == 0 && st.crossings == 0 && st.sig_through == 0 && moved == 0,
+                  "%s %s: %d slanted, %d crossings, %d signals through labels, %d pairs rearranged", files[i],
+                  styles[si], st.slanted, st.crossings, st.sig_through, moved);
+      bg_diagram_free(d);
+    }
+    if (d0) bg_diagram_free(d0);
+    fx_free(&f);
+  }
+}
+
 /* Fans drawn as trees (issue 31): one accumulator's pressure modulates
  * twelve valves round a rail (tests/data/figures/manifold.bg, held out).
  * Each signal was routed from the accumulator's box on its own: three
@@ -2323,6 +2359,7 @@ int main(void) {
   RUN(test_arrows_at_labels);
   RUN(test_aligned_signals);
   RUN(test_signals_off_frames);
+  RUN(test_wide_chains_fold);
   RUN(test_grid_diagonals);
   RUN(test_straight_branches);
   RUN(test_compact_columns);
