@@ -110,6 +110,11 @@ static int side_clear(bg_router *r, const bg_model *m, int n, bg_vec p) {
   return 1;
 }
 
+/* How far inside a node's box its text ends, and 1.5 pt more: where an
+ * arrow ending over the text still points at it (node_ports' target
+ * corners, aligned_ports' common line). */
+static double text_inset(const bg_diagram_layout *L) { return L->st.node_pad + 1.5; }
+
 /* The ports of node n: the middle of each side, its corners, and on long
  * sides the points halfway between, those clear of the node's bonds (a
  * junction with a bond on every side is left at a corner); gap: how far out
@@ -124,7 +129,7 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
     /* An arrow at the box's very corner points past the label, whose text
      * ends the pad inside it: a target's corner ports stand 1.5 pt over
      * the text (not on a box too small for it: a junction's digit). */
-    double corner = gap > 0 && half - (L->st.node_pad + 1.5) >= 2 ? half - (L->st.node_pad + 1.5) : half;
+    double corner = gap > 0 && half - text_inset(L) >= 2 ? half - text_inset(L) : half;
     for (int k = 0; k < 5; k++) { /* the middle, halfway to the corners, the corners */
       static const double frac[5] = {0, -0.5, 0.5, -1, 1};
       double off = frac[k] * (k >= 3 ? corner : half);
@@ -154,7 +159,7 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
  * at one vertex halfway. */
 static void aligned_ports(bg_router *r, const bg_model *m, int a, int b, port *ps, int *nps, port *pt, int *npt) {
   const bg_diagram_layout *L = r->L;
-  double in = L->st.node_pad + 1.5;
+  double in = text_inset(L);
   for (int axis = 0; axis < 2; axis++) { /* 0: a vertical line, one above the other; 1: a level one */
     double ha = (axis ? L->nh[a] : L->nw[a]) / 2 - in, hb = (axis ? L->nh[b] : L->nw[b]) / 2 - in;
     double ca = axis ? L->ny[a] : L->nx[a], cb = axis ? L->ny[b] : L->nx[b];

@@ -492,19 +492,7 @@ static int fc_on_frame(const fc_line *l, const fc_line *f) {
 
 /* Two segments on one line (parallel within 1 degree, < 1 pt apart) that
  * share more than 2 pt: drawn on top of each other. */
-static int fc_seg_overlap(const fc_seg *a, const fc_seg *b) {
-  double la = fc_seg_len(a), lb = fc_seg_len(b);
-  if (la < 2 || lb < 2) return 0;
-  double ux = (a->x1 - a->x0) / la, uy = (a->y1 - a->y0) / la;
-  double vx = (b->x1 - b->x0) / lb, vy = (b->y1 - b->y0) / lb;
-  if (fabs(ux * vy - uy * vx) > 0.0175) return 0;
-  double d0 = fabs((b->x0 - a->x0) * uy - (b->y0 - a->y0) * ux);
-  double d1 = fabs((b->x1 - a->x0) * uy - (b->y1 - a->y0) * ux);
-  if (fmax(d0, d1) >= 1) return 0;
-  double t0 = (b->x0 - a->x0) * ux + (b->y0 - a->y0) * uy, t1 = (b->x1 - a->x0) * ux + (b->y1 - a->y0) * uy;
-  double lo = fmax(0, fmin(t0, t1)), hi = fmin(la, fmax(t0, t1));
-  return hi - lo > 2;
-}
+static int fc_seg_overlap(const fc_seg *a, const fc_seg *b) { return fc_seg_beside(a, b, 1, 2); }
 
 static int fc_lines_overlap(const fc_line *a, const fc_line *b) {
   for (int p = 0; p < fc_body(a); p++)
