@@ -207,9 +207,11 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
 
 /* Orthogonal signal routes (diagram_route.c, its insides in diagram_route_*.c): a router holds the layout's
  * nodes and bond legs in a grid of cells and the routes given so far; the
- * legs of bonds marked in skip (nullable) are left out, as if not drawn. */
+ * legs of bonds marked in skip (nullable) are left out, as if not drawn;
+ * for signals (not bonds) each bond reaches its nodes' boxes and a crossing
+ * among its half arrow or stroke costs more (COST_AT_END). */
 typedef struct bg_router bg_router;
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip);
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int signals);
 /* The route from node from_node (or, when it is < 0, from the middle of
  * bond from_bond or near it) to node `to`: a polyline of horizontal and
  * vertical legs into pts (at most cap points), the first on the source,

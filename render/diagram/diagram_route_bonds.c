@@ -263,7 +263,7 @@ static void route_pass(bg_diagram_layout *L, const unsigned char *route, const u
   const bg_model *m = L->m;
   int nb = m->nbond, nroute = 0;
   for (int b = 0; b < nb; b++) nroute += route[b] != 0;
-  bg_router *r = nroute ? bg_router_new(L, nb, route) : NULL;
+  bg_router *r = nroute ? bg_router_new(L, nb, route, 0) : NULL;
   if (r) r->end_zone = end_zone;
   for (int b = 0; r && clear && b < nb; b++)
     if (clear[b]) keep_clear(r, b);
@@ -356,7 +356,7 @@ static void straighten(bg_diagram_layout *L, const bond_routes *orig, unsigned c
   for (int b = 0; b < nb; b++) cnt[b] = todo[b] == BG_STRAIGHTEN || !orig->cnt ? 0 : orig->cnt[b];
   o.cnt = cnt;
   install(L, &o);
-  bg_router *chk = bg_router_new(L, nb, NULL);
+  bg_router *chk = bg_router_new(L, nb, NULL, 0);
   int back = 0;
   for (int b = 0; b < nb; b++)
     if (todo[b] == BG_STRAIGHTEN && bond_blocked(chk, b))
@@ -416,7 +416,7 @@ static bond_routes second_pass(bg_diagram_layout *L, const unsigned char *blocke
  * marked 1 in out (nullable). */
 static int false_tees(const bg_diagram_layout *L, const unsigned char *routed, unsigned char *out) {
   int nb = L->m->nbond, n = 0;
-  bg_router *r = bg_router_new(L, nb, NULL);
+  bg_router *r = bg_router_new(L, nb, NULL, 0);
   for (int a = 0; a < nb; a++)
     for (int k = 0; k < 2; k++) {
       bg_vec e = k ? L->bg[a].head : L->bg[a].tail;
@@ -515,7 +515,7 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   const bg_model *m = L->m;
   int nb = m->nbond, nblocked = 0;
   unsigned char *blocked = bg_xcalloc((size_t)nb + 1, 1);
-  bg_router *all = bg_router_new(L, nb, NULL);
+  bg_router *all = bg_router_new(L, nb, NULL, 0);
   for (int b = 0; b < nb; b++) blocked[b] = (unsigned char)(!at_fan(L, m, b) && bond_blocked(all, b));
   for (int b = 0; b < nb; b++) blocked[b] |= (unsigned char)(!at_fan(L, m, b) && bond_bundled(L, m, b, blocked));
   for (int b = 0; b < nb; b++) nblocked += blocked[b];

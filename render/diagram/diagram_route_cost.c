@@ -18,7 +18,8 @@
  * when they run side by side within HUG pt (*run: for how long); 4 (ends
  * 2, a bond in end_zone) when they cross within END_NEAR pt of one of a-b's
  * ends, inside or past it, which reads as a-b ending on p-q whichever side
- * it falls; else 0. */
+ * it falls; else 0. On a crossing (1 or 4) *run is where: how far along
+ * a-b from a. */
 #define HUG 12.0
 int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends) {
   bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
@@ -43,6 +44,7 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
   int forward = u.x > 0 || (u.x == 0 && u.y > 0);
   double tl = forward ? t : 1 - t;
   if (!(tl >= 0 && tl < 1)) return 0;
+  if (run) *run = s * lv;
   return ends == 2 && from_end <= END_NEAR ? 4 : 1;
 }
 
@@ -62,6 +64,23 @@ static double leg_cross_cost(const bg_router *r, int leg) {
   bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
   int slanted = fmin(fabs(b.x - a.x), fabs(b.y - a.y)) > 0.09 * fmax(fabs(b.x - a.x), fabs(b.y - a.y));
   return (own_bond(r, r->ix.lbond[leg]) ? COST_CROSS_OWN : COST_CROSS_BOND) * (slanted ? COST_OBLIQUE : 1);
+}
+
+/* How near a crossing may come to a bond's end: its half arrow reaches 7
+ * line widths back, its causal stroke as far across, 3 pt more keep a line
+ * crossing there off them; on a short bond no nearer than 0.35 of its length
+ * (its middle is the best a crossing can do). */
+static double end_zone(const bg_router *r, double bond_len) {
+  return fmin(7 * r->L->st.line_width + 3, 0.35 * bond_len);
+}
+
+/* What more a crossing of leg k costs `at` pt along it from its start:
+ * COST_AT_END among the bond's half arrow or stroke (read as a line
+ * through the arrow), else nothing. */
+static double at_end_cost(const bg_router *r, int leg, double at) {
+  if (!r->signals) return 0;
+  double along = r->ix.lpos[leg] + at, len = r->ix.llen[leg];
+  return fmin(along, len - along) < end_zone(r, len) ? COST_AT_END : 0;
 }
 
 /* Whether index segment s is the current route's own (bg_route_detour:
@@ -94,7 +113,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     }
     double run = 0;
     int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, bg_route_ends(r));
-    if (hit == 1) cost += leg_cross_cost(r, k - L->nnode);
+    if (hit == 1) cost += leg_cross_cost(r, k - L->nnode) + at_end_cost(r, k - L->nnode, run);
     cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : hit == 4 ? COST_END : 0;
     if (r->ix.lmid[k - L->nnode] && bg_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
   }
@@ -144,11 +163,12 @@ static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
 
 /* Segment a-b against grid line (horizontal when horiz) at `at` over the
  * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
- * open, as bg_route_seg_meet counts it, ends as there, COST_END near an end); a parallel run within HUG pt adds to each
+ * open, as bg_route_seg_meet counts it, ends as there, COST_END near an end),
+ * and for a bond's leg `leg` (else -1) at_end_cost; a parallel run within HUG pt adds to each
  * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
  * `hug` per pt of the shared run. */
 static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
-                      double hug, int ends, double *out) {
+                      double hug, int ends, const bg_router *r, int leg, double *out) {
   double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
   double lv = sqrt(va * va + vc * vc);
   if (lv <= 0) return;
@@ -168,7 +188,7 @@ static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg
   double from_end = fmin(s * lv, (1 - s) * lv);
   if (from_end < keep) return;
   int i = edge_at(A, n, along(a, horiz) + s * va);
-  if (i >= 0) out[i] += ends == 2 && from_end <= END_NEAR ? COST_END : cross;
+  if (i >= 0) out[i] += (ends == 2 && from_end <= END_NEAR ? COST_END : cross) + (leg >= 0 ? at_end_cost(r, leg, s * lv) : 0);
 }
 
 /* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
@@ -224,9 +244,9 @@ void bg_route_grid_costs(bg_router *r) {
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
     double cross = leg_cross_cost(r, leg);
     line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->vcost[j * ny]);
     if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
       bg_vec mid = r->ix.mid[leg];
       line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);
@@ -249,8 +269,8 @@ void bg_route_grid_costs(bg_router *r) {
     double cross = seg_cross_cost(r, r->nl.k[jj]);
     int j0, j1;
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, 0, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, 0, r, -1, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, 0, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, 0, r, -1, &r->vcost[j * ny]);
   }
 }

@@ -37,6 +37,9 @@
 #define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
+#define COST_AT_END 80.0      /* more for a crossing at a bond's end, among its half arrow or
+                                 causal stroke (bg_route_end_zone): a few points along the
+                                 bond cost less */
 #define LANE 10.0             /* the channel lines' distance from a box */
 
 /* A uniform grid of cells over the layout, each listing the nodes whose box
@@ -52,6 +55,7 @@ typedef struct near_index {
   int *lbond;      /* legs' bonds */
   unsigned char *lmid; /* the leg holds its bond's middle (where the number goes) */
   bg_vec *mid;
+  double *lpos, *llen; /* how far along its bond the leg starts, and the bond's length (bg_route_at_end) */
   int *stamp, tick;
   /* routed signal segments: per cell a chain through sig_next */
   int *sig_head, *sig_next, *sig_seg, nsig, capsig;
@@ -102,6 +106,7 @@ struct bg_router {
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none);
                              their bonds are the route's own (COST_CROSS_OWN) */
   int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
+  int signals;            /* a router of signals (bg_router_new): bonds' ends kept clear */
   int end_zone;           /* a bond route pays COST_END within END_NEAR of another bond's end
                              (the repair of false T's, bg_route_blocked_bonds), else a crossing */
   int group;              /* the current route's source: a route may start off the earlier
@@ -152,8 +157,9 @@ int bg_route_node_drawn(const bg_diagram_layout *L, int n);
 /* Item k's box: node k's grown by 3 pt, or leg k - nnode's bounding box. */
 void bg_near_item_box(const bg_diagram_layout *L, const near_index *ix, int k, double b[4]);
 /* The index of the drawn nodes and the legs of bonds 0..nbond-1, but those
- * hidden or marked in skip (nullable). */
-void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, near_index *ix);
+ * hidden or marked in skip (nullable); to_nodes: each bond's ends carried
+ * on to its nodes' boxes (a signal router's). */
+void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int to_nodes, near_index *ix);
 void bg_near_free(near_index *ix);
 /* The items (node k as k, leg j as nnode + j) in the cells the box meets. */
 void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);

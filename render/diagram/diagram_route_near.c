@@ -40,6 +40,29 @@ static int leg_skipped(const bg_diagram_layout *L, const unsigned char *skip, in
   return (L->bond_hidden && L->bond_hidden[b]) || (skip && skip[b]);
 }
 
+/* Bond b's end `end` at its tail (head 0) or head carried on along `in`
+ * (a unit vector into its node) to the node's box if that is at most
+ * END_GAP pt on (a junction's bonds end on a circle round it, farther out in
+ * a style of thick lines): a line passing between a bond's end and its node
+ * reads as crossing the bond there (among its half arrow or stroke), so the
+ * index holds the bond as reaching its node. */
+#define END_GAP 40.0
+static bg_vec to_node_box(const bg_diagram_layout *L, int b, int head, bg_vec end, bg_vec in) {
+  int n = bg_route_end_node(L, b, head);
+  if (n < 0 || !bg_route_node_drawn(L, n)) return end;
+  double lo[2] = {L->nx[n] - L->nw[n] / 2, L->ny[n] - L->nh[n] / 2}, hi[2] = {L->nx[n] + L->nw[n] / 2, L->ny[n] + L->nh[n] / 2};
+  double p[2] = {end.x, end.y}, u[2] = {in.x, in.y}, t0 = 0, t1 = END_GAP;
+  for (int k = 0; k < 2; k++) { /* the ray's stretch inside the box's slab k */
+    if (fabs(u[k]) < 1e-12) {
+      if (p[k] < lo[k] || p[k] > hi[k]) return end;
+      continue;
+    }
+    double ta = (lo[k] - p[k]) / u[k], tb = (hi[k] - p[k]) / u[k];
+    t0 = fmax(t0, fmin(ta, tb)), t1 = fmin(t1, fmax(ta, tb));
+  }
+  return t0 > 0 && t0 <= t1 ? bg_vadd(end, bg_vscale(in, t0)) : end;
+}
+
 /* The rows *cy0..*cy1 of column cx that leg a-b (a.x <= b.x) passes
  * within 1 pt of: a long slanted leg is listed in the cells it crosses,
  * not in every cell of its bounding box (a star's spokes each filled a
@@ -53,18 +76,29 @@ static void leg_rows(const near_index *ix, bg_vec a, bg_vec b, int cx, int *cy0,
   *cy0 = r[1], *cy1 = r[3];
 }
 
-void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, near_index *ix) {
+void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int to_nodes, near_index *ix) {
   memset(ix, 0, sizeof *ix);
   ix->nnode = L->nnode;
   for (int b = 0; b < nbond; b++) ix->nleg += leg_skipped(L, skip, b) ? 0 : L->bg[b].bendn + 1;
   ix->la = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->la), ix->lb = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lb);
   ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
   ix->lbond = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lbond);
+  ix->lpos = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lpos), ix->llen = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->llen);
   for (int b = 0, k = 0; b < nbond; b++) {
+    int k0 = k;
+    double pos = 0;
     for (int i = 0; !leg_skipped(L, skip, b) && i <= L->bg[b].bendn; i++, k++) {
       ix->lbond[k] = b;
       ix->la[k] = bg_route_leg_end(L, b, i - 1), ix->lb[k] = bg_route_leg_end(L, b, i), ix->mid[k] = L->bg[b].mid;
       ix->lmid[k] = bg_point_seg(L->bg[b].mid, ix->la[k], ix->lb[k]) < 0.5;
+      ix->lpos[k] = pos, pos += bg_vlen(bg_vsub(ix->lb[k], ix->la[k]));
+    }
+    for (int j = k0; j < k; j++) ix->llen[j] = pos;
+    if (to_nodes && k > k0) { /* the ends carried on to their nodes' boxes */
+      bg_vec a = ix->la[k0], z = ix->lb[k - 1];
+      ix->la[k0] = to_node_box(L, b, 0, a, bg_vunit(bg_vsub(a, ix->lb[k0])));
+      ix->lb[k - 1] = to_node_box(L, b, 1, z, bg_vunit(bg_vsub(z, ix->la[k - 1])));
+      ix->lpos[k0] -= bg_vlen(bg_vsub(a, ix->la[k0]));
     }
   }
   int nitem = L->nnode + ix->nleg;
@@ -119,7 +153,7 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
 }
 
 void bg_near_free(near_index *ix) {
-  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid), free(ix->stamp);
+  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid), free(ix->lpos), free(ix->llen), free(ix->stamp);
   free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->slast), free(ix->seg_stamp);
 }
 

@@ -259,7 +259,7 @@ static void fence_frames(bg_diagram *d, bg_router *rt) {
 }
 
 void bg_route_signals(bg_diagram *d) {
-  bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL);
+  bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL, 1);
   fence_frames(d, rt);
   walk_signals(d, rt);
   detour_routes(d, rt);

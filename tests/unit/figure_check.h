@@ -58,6 +58,7 @@ typedef struct fc_stats {
   int tips_beside;           /* signal arrows pointing past their node's label, not at it (fc_tip_beside) */
   int steps;                 /* signal lines with a small step: a leg under 8 pt between two legs going on the same way (fc_steps) */
   int on_frames;             /* bonds and signals running along a frame's border, within 2 pt for more than 8 pt (fc_on_frame) */
+  int sig_at_ends;           /* of sig_cross, those at a bond's end, among its half arrow or stroke (fc_sig_cross) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -428,19 +429,45 @@ static double fc_seg_len(const fc_seg *a) { return hypot(a->x1 - a->x0, a->y1 - 
 /* The segments of a line that are drawn as its body (a bond's half arrow left out). */
 static int fc_body(const fc_line *l) { return l->nseg - l->barb; }
 
-/* Signal l × bond b: whether they cross, and (*oblique) whether some
- * crossing is more than 5 degrees off a right angle. */
-static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique) {
+/* Signal l × bond b: whether they cross, (*oblique) whether some crossing
+ * is more than 5 degrees off a right angle, and (*at_end) whether some is
+ * at one of b's ends, among its half arrow (7 line widths back) or causal
+ * stroke: nearer the end than 7 line widths and 3 pt, or, on a short bond,
+ * than 0.35 of its length (its middle is the best a crossing can do), or
+ * past it, within FC_END_GAP, between the bond and its node (*at_end only). */
+#define FC_END_GAP 6.0 /* pt past a bond's end: the gap to its node */
+static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique, int *at_end) {
   int n = 0;
+  double total = 0;
+  for (int q = 0; q < fc_body(b); q++) total += fc_seg_len(&b->seg[q]);
+  double zone = fmin(7 * b->width + 3, 0.35 * total);
   for (int p = 0; p < l->nseg; p++)
-    for (int q = 0; q < fc_body(b); q++)
+    for (int q = 0, before = 0; q < fc_body(b); before += fc_seg_len(&b->seg[q]), q++)
       if (fc_cross(&l->seg[p], &b->seg[q])) {
         const fc_seg *u = &l->seg[p], *v = &b->seg[q];
-        double c = ((u->x1 - u->x0) * (v->x1 - v->x0) + (u->y1 - u->y0) * (v->y1 - v->y0)) /
-                   (fc_seg_len(u) * fc_seg_len(v) + 1e-300);
+        double ux = u->x1 - u->x0, uy = u->y1 - u->y0, vx = v->x1 - v->x0, vy = v->y1 - v->y0;
+        double c = (ux * vx + uy * vy) / (fc_seg_len(u) * fc_seg_len(v) + 1e-300);
         if (fabs(c) > sin(5 * 3.14159265358979 / 180)) *oblique = 1;
+        double den = vx * uy - vy * ux, t = ((u->x0 - v->x0) * uy - (u->y0 - v->y0) * ux) / den;
+        double along = before + t * fc_seg_len(v);
+        if (fmin(along, total - along) < zone) {
+          *at_end = 1;
+          if (fc_explain) printf("  signal %s crosses bond %d %.1f pt from its end\n", l->name, b->id, fmin(along, total - along));
+        }
         n = 1;
       }
+  /* past an end, between the bond and its node: read as crossing there */
+  for (int e = 0; e < 2 && fc_body(b) > 0; e++) {
+    const fc_seg *v = &b->seg[e ? fc_body(b) - 1 : 0];
+    double len = fc_seg_len(v), ex = e ? v->x1 : v->x0, ey = e ? v->y1 : v->y0;
+    double dx = (e ? v->x1 - v->x0 : v->x0 - v->x1) / len, dy = (e ? v->y1 - v->y0 : v->y0 - v->y1) / len;
+    fc_seg gap = {ex + 0.5 * dx, ey + 0.5 * dy, ex + FC_END_GAP * dx, ey + FC_END_GAP * dy};
+    for (int p = 0; p < l->nseg; p++)
+      if (fc_cross(&l->seg[p], &gap)) {
+        *at_end = 1;
+        if (fc_explain) printf("  signal %s passes between bond %d's end and its node\n", l->name, b->id);
+      }
+  }
   return n;
 }
 
@@ -705,11 +732,12 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
     for (int k = 0; k < f->nline; k++) {
       const fc_line *m = &f->line[k];
       if (l->kind == FC_SIGNAL && m->kind == FC_BOND) {
-        int ob = 0;
-        if (fc_sig_cross(l, m, &ob)) {
+        int ob = 0, at_end = 0;
+        if (fc_sig_cross(l, m, &ob, &at_end)) {
           st->sig_cross++, st->sig_oblique += ob;
           if (fc_explain) printf("  signal %s crosses bond %d%s\n", l->name, m->id, ob ? " obliquely" : "");
         }
+        st->sig_at_ends += at_end;
       }
       if (l->kind == FC_OVERLAY && m->kind == FC_BOND) { /* a modulation's jump straight across */
         if (fc_layer_oblique(l, m)) {
@@ -1097,7 +1125,7 @@ static inline int fc_avoidable(const bg_model *m, const bg_scene *s) {
     for (int k = 0; k < f.nline; k++) {
       const fc_line *L = &f.line[j];
       if (bond[k] < 0 || k == j || !(L->kind == FC_SIGNAL || (L->kind == FC_BOND && bond[j] >= 0 && k > j))) continue;
-      if (L->kind == FC_SIGNAL ? !fc_sig_cross(L, &f.line[k], &(int){0}) : !fc_crosses(L, &f.line[k])) continue;
+      if (L->kind == FC_SIGNAL ? !fc_sig_cross(L, &f.line[k], &(int){0}, &(int){0}) : !fc_crosses(L, &f.line[k])) continue;
       int ends[2] = {-1, -1}, kends[2] = {m->bond_tail[bond[k]], m->bond_head[bond[k]]};
       if (L->kind == FC_BOND) ends[0] = m->bond_tail[bond[j]], ends[1] = m->bond_head[bond[j]];
       else ends[0] = fc_signal_end(m, L->name, 0), ends[1] = fc_signal_end(m, L->name, 1);

@@ -93,7 +93,7 @@ static void test_two_detours_on_one_segment(void) {
   OK(L->ny[c0] < L->ny[n0] - 20 && fabs(L->ny[r1] - L->ny[c0]) < 1 && L->nx[r1] > L->nx[c0] + 60);
   double y = (L->ny[c0] + L->nh[c0] / 2 + L->ny[n0] - L->nh[n0] / 2) / 2; /* between the boxes */
   bg_vec pts[16] = {bg_v(L->nx[c0] - 30, y), bg_v(L->nx[r1] + 30, y)};
-  bg_router *r = bg_router_new(L, f.m->nbond, NULL);
+  bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
   const int g = 5;
   r->from_node = n0, r->to_node = s2, r->group = g, r->bond = -1;
   bg_route_keep(r, pts, 2);
