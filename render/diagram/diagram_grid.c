@@ -795,6 +795,25 @@ static unsigned char *fold_blocked(const grid *g, const int *hubs, int nh, const
   return blocked;
 }
 
+/* Whether a fold before any of columns start[1..nb) would cut a branch
+ * (issue 31, a wide branched chain folded): a hub off the spine whose
+ * columns from its spine hub's reach over the fold, or a fold
+ * fold_blocked refuses. hubs[0..nh): the part's. */
+static int folds_cut_branches(const grid *g, const int *hubs, int nh, const int *anchor, const unsigned char *blocked,
+                              const int *start, int nb) {
+  for (int j = 1; j < nb; j++) {
+    int b = start[j];
+    if (blocked[b]) return 1;
+    for (int i = 0; i < nh; i++) {
+      int v = hubs[i], a = anchor[v];
+      if (a == v) continue;
+      int lo = g->col[v] < g->col[a] ? g->col[v] : g->col[a], hi = g->col[v] > g->col[a] ? g->col[v] : g->col[a];
+      if (lo < b && b <= hi) return 1;
+    }
+  }
+  return 0;
+}
+
 /* Per hub the spine hub it hangs from (itself on a spine). */
 static int *spine_anchors(const grid *g, const int *h, int nh) {
   int *anchor = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
@@ -803,6 +822,14 @@ static int *spine_anchors(const grid *g, const int *h, int nh) {
     anchor[v] = g->spine[v] || p < 0 ? v : anchor[p];
   }
   return anchor;
+}
+
+/* Whether component c holds an instance's elements (its frames would be
+ * cut by a fold it does not choose). */
+static int part_has_instances(int ni, const int *icomp, int c) {
+  for (int k = 0; k < ni; k++)
+    if (icomp[k] == c) return 1;
+  return 0;
 }
 
 /* The widest row a chain is drawn in before it folds, points: 1.14 times
@@ -868,15 +895,18 @@ static void stack_components(grid *g, const int *h, int nh) {
     /* a chain of under 16 columns wider than a landscape page: folded too,
      * into even bands of at most ROW_MAX (a 6-section transmission line
      * was one row 1 332 pt wide, 8.7 : 1; issue 31). Only a lone part (parts
-     * are packed side by side), a chain (a branch may block a fold's
-     * bond: fold_blocked misses one reaching into the next column) of
-     * junctions of four bonds or fewer (a ring of one-ports makes its
-     * column far wider than the mean) */
-    if (nband[c] >= 0 && !cyclic[c] && ncol[c] <= wrap && maxdeg[c] <= 4 && !branched[c] && ncomp == 1) {
+     * are packed side by side) of junctions of four bonds or fewer (a ring
+     * of one-ports makes its column far wider than the mean); with
+     * branches, one without instances (a fold their frames do not choose
+     * crossed them: tee_network) and only where no fold cuts a branch
+     * (folds_cut_branches; capped) */
+    int capped = 0, wrap0 = wrap;
+    if (nband[c] >= 0 && !cyclic[c] && ncol[c] <= wrap && maxdeg[c] <= 4 && ncomp == 1 &&
+        (!branched[c] || !part_has_instances(ni, icomp, c))) {
       if (colw < 0) column_pitch_of(g, h, nh, &colw);
       if (ncol[c] * colw > ROW_MAX) {
         int nb = (int)ceil(ncol[c] * colw / ROW_MAX);
-        wrap = (ncol[c] + nb - 1) / nb;
+        wrap = (ncol[c] + nb - 1) / nb, capped = branched[c];
       }
     }
     boff[c] = nstart;
@@ -886,6 +916,13 @@ static void stack_components(grid *g, const int *h, int nh) {
       blocked = fold_blocked(g, chub + first[c], first[c + 1] - first[c], anchor, ncol[c]);
     }
     nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, blocked, start + nstart);
+    /* a branched chain folds only where no branch is cut (a fold's bond
+     * round a branch bent the power chain: branchy12) */
+    if (capped &&
+        folds_cut_branches(g, chub + first[c], first[c + 1] - first[c], anchor, blocked, start + nstart, nband[c])) {
+      free(blocked), blocked = NULL;
+      nband[c] = band_starts(g, c, ncol[c], wrap = wrap0, ilo, ihi, icomp, NULL, start + nstart);
+    }
     free(blocked);
     height[c] = nband[c] * (span + sep);
     nstart += nband[c];

@@ -1568,9 +1568,12 @@ static void test_signals_clear_of_bond_ends(void) {
  * was one row 1 332 x 153 pt and the twin drive 1 053 x 143 pt (the grid
  * pass folded a part only past 16 columns); now each folds into two bands
  * no wider than 960 pt, every style drawing the same arrangement, with no
- * slanted or crossing bond and no signal through a label. */
+ * slanted or crossing bond and no signal through a label. A branched
+ * pathway (tests/data/figures/pathway_branched.bg, held out: 1 470 x 265 pt
+ * while only chains folded) folds into three bands where no fold cuts its
+ * branch. */
 static void test_wide_chains_fold(void) {
-  static const char *const files[] = {"transmission_line", "twin_drive"};
+  static const char *const files[] = {"transmission_line", "twin_drive", "pathway_branched"};
   for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
     char rel[96];
     snprintf(rel, sizeof rel, "tests/data/figures/%s.bg", files[i]);
