@@ -70,7 +70,7 @@ static double leg_cross_cost(const bg_router *r, int leg) {
  * line widths back, its causal stroke as far across, 3 pt more keep a line
  * crossing there off them; on a short bond no nearer than 0.35 of its length
  * (its middle is the best a crossing can do). */
-static double end_zone(const bg_router *r, double bond_len) {
+static double arrow_zone(const bg_router *r, double bond_len) {
   return fmin(7 * r->L->st.line_width + 3, 0.35 * bond_len);
 }
 
@@ -80,7 +80,7 @@ static double end_zone(const bg_router *r, double bond_len) {
 static double at_end_cost(const bg_router *r, int leg, double at) {
   if (!r->signals) return 0;
   double along = r->ix.lpos[leg] + at, len = r->ix.llen[leg];
-  return fmin(along, len - along) < end_zone(r, len) ? COST_AT_END : 0;
+  return fmin(along, len - along) < arrow_zone(r, len) ? COST_AT_END : 0;
 }
 
 /* Whether index segment s is the current route's own (bg_route_detour:
@@ -163,10 +163,10 @@ static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
 
 /* Segment a-b against grid line (horizontal when horiz) at `at` over the
  * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
- * open, as bg_route_seg_meet counts it, ends as there, COST_END near an end),
- * and for a bond's leg `leg` (else -1) at_end_cost; a parallel run within HUG pt adds to each
- * edge it shares more than 1 pt with `block` when nearer than 3 pt, else
- * `hug` per pt of the shared run. */
+ * open, as bg_route_seg_meet counts it, ends as there, COST_END near an
+ * end), and for bond leg `leg` (else -1) at_end_cost; a parallel run within
+ * HUG pt adds to each edge it shares more than 1 pt with `block` when
+ * nearer than 3 pt, else `hug` per pt of the shared run. */
 static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
                       double hug, int ends, const bg_router *r, int leg, double *out) {
   double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
@@ -188,7 +188,9 @@ static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg
   double from_end = fmin(s * lv, (1 - s) * lv);
   if (from_end < keep) return;
   int i = edge_at(A, n, along(a, horiz) + s * va);
-  if (i >= 0) out[i] += (ends == 2 && from_end <= END_NEAR ? COST_END : cross) + (leg >= 0 ? at_end_cost(r, leg, s * lv) : 0);
+  if (i < 0) return;
+  double extra = leg >= 0 ? at_end_cost(r, leg, s * lv) : 0;
+  out[i] += (ends == 2 && from_end <= END_NEAR ? COST_END : cross) + extra;
 }
 
 /* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
@@ -244,9 +246,11 @@ void bg_route_grid_costs(bg_router *r) {
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
     double cross = leg_cross_cost(r, leg);
     line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++)
+      line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++)
+      line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->vcost[j * ny]);
     if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
       bg_vec mid = r->ix.mid[leg];
       line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);

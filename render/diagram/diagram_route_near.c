@@ -50,7 +50,8 @@ static int leg_skipped(const bg_diagram_layout *L, const unsigned char *skip, in
 static bg_vec to_node_box(const bg_diagram_layout *L, int b, int head, bg_vec end, bg_vec in) {
   int n = bg_route_end_node(L, b, head);
   if (n < 0 || !bg_route_node_drawn(L, n)) return end;
-  double lo[2] = {L->nx[n] - L->nw[n] / 2, L->ny[n] - L->nh[n] / 2}, hi[2] = {L->nx[n] + L->nw[n] / 2, L->ny[n] + L->nh[n] / 2};
+  double lo[2] = {L->nx[n] - L->nw[n] / 2, L->ny[n] - L->nh[n] / 2};
+  double hi[2] = {L->nx[n] + L->nw[n] / 2, L->ny[n] + L->nh[n] / 2};
   double p[2] = {end.x, end.y}, u[2] = {in.x, in.y}, t0 = 0, t1 = END_GAP;
   for (int k = 0; k < 2; k++) { /* the ray's stretch inside the box's slab k */
     if (fabs(u[k]) < 1e-12) {
@@ -83,7 +84,8 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
   ix->la = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->la), ix->lb = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lb);
   ix->lmid = bg_xcalloc((size_t)ix->nleg + 1, 1), ix->mid = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->mid);
   ix->lbond = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lbond);
-  ix->lpos = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lpos), ix->llen = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->llen);
+  ix->lpos = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->lpos);
+  ix->llen = bg_xcalloc((size_t)ix->nleg + 1, sizeof *ix->llen);
   for (int b = 0, k = 0; b < nbond; b++) {
     int k0 = k;
     double pos = 0;
@@ -153,7 +155,8 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
 }
 
 void bg_near_free(near_index *ix) {
-  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid), free(ix->lpos), free(ix->llen), free(ix->stamp);
+  free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid);
+  free(ix->lpos), free(ix->llen), free(ix->stamp);
   free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->slast), free(ix->seg_stamp);
 }
 
