@@ -59,6 +59,7 @@ typedef struct fc_stats {
   int steps;                 /* signal lines with a small step: a leg under 8 pt between two legs going on the same way (fc_steps) */
   int on_frames;             /* bonds and signals running along a frame's border, within 2 pt for more than 8 pt (fc_on_frame) */
   int sig_at_ends;           /* of sig_cross, those at a bond's end, among its half arrow or stroke (fc_sig_cross) */
+  int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -757,6 +758,15 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
                  m->name);
       }
     }
+    if (l->kind == FC_SIGNAL)
+      for (int k = 0; k < f->nline; k++)
+        if (f->line[k].kind == FC_OVERLAY) {
+          int hit = 0;
+          for (int p = 0; p < l->nseg && !hit; p++)
+            for (int q = 0; q < f->line[k].nseg && !hit; q++) hit = fc_seg_beside(&l->seg[p], &f->line[k].seg[q], 3, 8);
+          st->sig_on_layers += hit;
+          if (hit && fc_explain) printf("  signal %s beside %s %d\n", l->name, f->line[k].id ? "path" : "loop", f->line[k].id ? f->line[k].id : f->line[k].loop);
+        }
     if (l->kind != FC_FRAME) continue;
     st->frames++;
     for (int k = 0; k < f->nline; k++)

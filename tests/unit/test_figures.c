@@ -355,14 +355,19 @@ static const char *const show_names[] = {"default", "all"};
  * obliquely away from its ends (1: series_conductances' fifth bond, the
  * one slanted bond; a loop closed by a modulation jumped straight across
  * internal_mod_r and series_motor, 4 per style, before it followed its
- * signal's route). */
+ * signal's route). Last column (sig_on_layers): signals running within
+ * 3 pt of a path or loop line for more than 8 pt, 4 / 4 / 6 with every
+ * layer (internal_mod_r 2 / 2 / 3, series_motor_L 1, slider_crank 1 / 1 /
+ * 2): a signal out of a junction leaves by a corner port into the rings
+ * the layers draw round the junction's bonds, which the router, run before
+ * them, does not know (left open; docs/drawing.md). */
 static const fc_stats limits[3][2] = {
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4}},
+    {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -449,25 +454,25 @@ static const fc_stats limits[3][2] = {
  * two steps in slides with every layer gone (0).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
-         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps, t->on_frames, t->sig_at_ends);
+         t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps, t->on_frames, t->sig_at_ends, t->sig_on_layers);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step onfr send";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step onfr send slay";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -2322,13 +2327,15 @@ static void test_signals_face(void) {
  * junction whose four sides are taken (last column, not a fault) and, with
  * every layer, that bond at the grid's own angle (layers keep their room:
  * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
+/* Last column (sig_on_layers): the pendulum's signal out of its junction
+ * along the layers' ring, with every layer (as the examples'). */
 static const fc_stats limits_pages[3][2] = {
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
