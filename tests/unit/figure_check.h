@@ -59,7 +59,7 @@ typedef struct fc_stats {
   int steps;                 /* signal lines with a small step: a leg under 8 pt between two legs going on the same way (fc_steps) */
   int on_frames;             /* bonds and signals running along a frame's border, within 2 pt for more than 8 pt (fc_on_frame) */
   int sig_at_ends;           /* of sig_cross, those at a bond's end, among its half arrow or stroke (fc_sig_cross) */
-  int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt */
+  int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt (fc_beside_layer) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -442,8 +442,9 @@ static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique, int *a
   double total = 0;
   for (int q = 0; q < fc_body(b); q++) total += fc_seg_len(&b->seg[q]);
   double zone = fmin(7 * b->width + 3, 0.35 * total);
-  for (int p = 0; p < l->nseg; p++)
-    for (int q = 0, before = 0; q < fc_body(b); before += fc_seg_len(&b->seg[q]), q++)
+  for (int p = 0; p < l->nseg; p++) {
+    double before = 0; /* b's length before segment q */
+    for (int q = 0; q < fc_body(b); before += fc_seg_len(&b->seg[q]), q++)
       if (fc_cross(&l->seg[p], &b->seg[q])) {
         const fc_seg *u = &l->seg[p], *v = &b->seg[q];
         double ux = u->x1 - u->x0, uy = u->y1 - u->y0, vx = v->x1 - v->x0, vy = v->y1 - v->y0;
@@ -453,14 +454,17 @@ static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique, int *a
         double along = before + t * fc_seg_len(v);
         if (fmin(along, total - along) < zone) {
           *at_end = 1;
-          if (fc_explain) printf("  signal %s crosses bond %d %.1f pt from its end\n", l->name, b->id, fmin(along, total - along));
+          if (fc_explain)
+            printf("  signal %s crosses bond %d %.1f pt from its end\n", l->name, b->id, fmin(along, total - along));
         }
         n = 1;
       }
+  }
   /* past an end, between the bond and its node: read as crossing there */
   for (int e = 0; e < 2 && fc_body(b) > 0; e++) {
     const fc_seg *v = &b->seg[e ? fc_body(b) - 1 : 0];
     double len = fc_seg_len(v), ex = e ? v->x1 : v->x0, ey = e ? v->y1 : v->y0;
+    if (len <= 0) continue;
     double dx = (e ? v->x1 - v->x0 : v->x0 - v->x1) / len, dy = (e ? v->y1 - v->y0 : v->y0 - v->y1) / len;
     fc_seg gap = {ex + 0.5 * dx, ey + 0.5 * dy, ex + FC_END_GAP * dx, ey + FC_END_GAP * dy};
     for (int p = 0; p < l->nseg; p++)
@@ -723,6 +727,15 @@ static int fc_steps(const fc_line *l) {
   return n;
 }
 
+/* Whether signal l runs along path or loop line o: within 3 pt for more
+ * than 8 pt, where it reads as part of the path. */
+static int fc_beside_layer(const fc_line *l, const fc_line *o) {
+  for (int p = 0; p < l->nseg; p++)
+    for (int q = 0; q < o->nseg; q++)
+      if (fc_seg_beside(&l->seg[p], &o->seg[q], 3, 8)) return 1;
+  return 0;
+}
+
 static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
   st->bare_branches += fc_bare_branches(s, f);
   for (int j = 0; j < f->nline; j++) {
@@ -758,15 +771,11 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
                  m->name);
       }
     }
-    if (l->kind == FC_SIGNAL)
-      for (int k = 0; k < f->nline; k++)
-        if (f->line[k].kind == FC_OVERLAY) {
-          int hit = 0;
-          for (int p = 0; p < l->nseg && !hit; p++)
-            for (int q = 0; q < f->line[k].nseg && !hit; q++) hit = fc_seg_beside(&l->seg[p], &f->line[k].seg[q], 3, 8);
-          st->sig_on_layers += hit;
-          if (hit && fc_explain) printf("  signal %s beside %s %d\n", l->name, f->line[k].id ? "path" : "loop", f->line[k].id ? f->line[k].id : f->line[k].loop);
-        }
+    for (int k = 0; l->kind == FC_SIGNAL && k < f->nline; k++)
+      if (f->line[k].kind == FC_OVERLAY && fc_beside_layer(l, &f->line[k])) {
+        st->sig_on_layers++;
+        if (fc_explain) printf("  signal %s beside %s\n", l->name, f->line[k].name ? f->line[k].name : "a layer line");
+      }
     if (l->kind != FC_FRAME) continue;
     st->frames++;
     for (int k = 0; k < f->nline; k++)
@@ -1135,7 +1144,8 @@ static inline int fc_avoidable(const bg_model *m, const bg_scene *s) {
     for (int k = 0; k < f.nline; k++) {
       const fc_line *L = &f.line[j];
       if (bond[k] < 0 || k == j || !(L->kind == FC_SIGNAL || (L->kind == FC_BOND && bond[j] >= 0 && k > j))) continue;
-      if (L->kind == FC_SIGNAL ? !fc_sig_cross(L, &f.line[k], &(int){0}, &(int){0}) : !fc_crosses(L, &f.line[k])) continue;
+      int crossed = L->kind == FC_SIGNAL ? fc_sig_cross(L, &f.line[k], &(int){0}, &(int){0}) : fc_crosses(L, &f.line[k]);
+      if (!crossed) continue;
       int ends[2] = {-1, -1}, kends[2] = {m->bond_tail[bond[k]], m->bond_head[bond[k]]};
       if (L->kind == FC_BOND) ends[0] = m->bond_tail[bond[j]], ends[1] = m->bond_head[bond[j]];
       else ends[0] = fc_signal_end(m, L->name, 0), ends[1] = fc_signal_end(m, L->name, 1);
