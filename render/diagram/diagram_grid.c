@@ -899,14 +899,14 @@ static void stack_components(grid *g, const int *h, int nh) {
      * of one-ports makes its column far wider than the mean); with
      * branches, one without instances (a fold their frames do not choose
      * crossed them: tee_network) and only where no fold cuts a branch
-     * (folds_cut_branches; capped) */
-    int capped = 0, wrap0 = wrap;
+     * (folds_cut_branches) */
+    int check_branches = 0, wrap0 = wrap; /* capped with branches: its folds checked */
     if (nband[c] >= 0 && !cyclic[c] && ncol[c] <= wrap && maxdeg[c] <= 4 && ncomp == 1 &&
         (!branched[c] || !part_has_instances(ni, icomp, c))) {
       if (colw < 0) column_pitch_of(g, h, nh, &colw);
       if (ncol[c] * colw > ROW_MAX) {
         int nb = (int)ceil(ncol[c] * colw / ROW_MAX);
-        wrap = (ncol[c] + nb - 1) / nb, capped = branched[c];
+        wrap = (ncol[c] + nb - 1) / nb, check_branches = branched[c];
       }
     }
     boff[c] = nstart;
@@ -918,7 +918,7 @@ static void stack_components(grid *g, const int *h, int nh) {
     nband[c] = band_starts(g, c, ncol[c], wrap, ilo, ihi, icomp, blocked, start + nstart);
     /* a branched chain folds only where no branch is cut (a fold's bond
      * round a branch bent the power chain: branchy12) */
-    if (capped &&
+    if (check_branches &&
         folds_cut_branches(g, chub + first[c], first[c + 1] - first[c], anchor, blocked, start + nstart, nband[c])) {
       free(blocked), blocked = NULL;
       nband[c] = band_starts(g, c, ncol[c], wrap = wrap0, ilo, ihi, icomp, NULL, start + nstart);

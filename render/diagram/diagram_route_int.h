@@ -38,7 +38,7 @@
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
 #define COST_AT_END 80.0      /* more for a crossing at a bond's end, among its half arrow or
-                                 causal stroke (bg_route_end_zone): a few points along the
+                                 causal stroke (at_end_cost, arrow_zone): a few points along the
                                  bond cost less */
 #define LANE 10.0             /* the channel lines' distance from a box */
 
@@ -55,7 +55,7 @@ typedef struct near_index {
   int *lbond;      /* legs' bonds */
   unsigned char *lmid; /* the leg holds its bond's middle (where the number goes) */
   bg_vec *mid;
-  double *lpos, *llen; /* how far along its bond the leg starts, and the bond's length (bg_route_at_end) */
+  double *lpos, *llen; /* how far along its bond the leg starts, and the bond's length (at_end_cost) */
   int *stamp, tick;
   /* routed signal segments: per cell a chain through sig_next */
   int *sig_head, *sig_next, *sig_seg, nsig, capsig;
