@@ -469,8 +469,8 @@ static void draw_all(bg_diagram *d) {
     else bg_scene_item_box(&d->scene, it, b), bg_obstacle_rect(d, b[0], b[1], b[2], b[3]);
   }
   bg_obstacle_nodes(d);
+  bg_layers_prepare(d); /* the layers' sides counted: the routes keep off their lines */
   if (show & BG_SHOW_SIGNALS) bg_route_signals(d); /* loops closed by a modulation follow them */
-  bg_layers_prepare(d);
   if ((show & BG_SHOW_PATHS) || hk == 'p') bg_draw_paths(d);
   if ((show & BG_SHOW_LOOPS) || hk == 'l') bg_draw_loops(d);
   bg_draw_bonds(d);

@@ -132,6 +132,9 @@ int bg_diagram_muted(const bg_diagram *d);
 /* The layer colour and dash of path (kind 'p') or loop ('l') i. */
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
+/* How far apart the path and loop lines stacked on a bond side run (3 pt,
+ * more for thick lines); the first runs st->layer_offset from the bond. */
+double bg_layer_step(const bg_style *st);
 /* Whether bond b ends at a store in derivative causality (its stroke drawn
  * in the derivative colour, doubled in print). */
 int bg_bond_derivative(const bg_model *m, const bg_analysis *a, int b);
@@ -231,6 +234,13 @@ int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap)
 /* A line drawn before the routes that they must not run along (a frame's
  * border: a signal beside it reads as part of the frame), cheap to cross. */
 void bg_route_fence(bg_router *r, bg_vec a, bg_vec b);
+/* How far the path and loop lines drawn beside bond b reach from it:
+ * ring[b] (the caller keeps it while routing; 0 or NULL: none). A route
+ * pays for running among them as for running beside the bond, and a
+ * source's corner port whose straight stub would run among them leaves on
+ * a short diagonal out past them instead (a signal out of a junction,
+ * issue 31). */
+void bg_router_rings(bg_router *r, const double *ring);
 void bg_router_free(bg_router *r);
 /* Bonds whose line runs through another node's box routed again
  * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how

@@ -92,7 +92,7 @@ static int side_rank(const bg_diagram *d, int side, int key) {
 static void seg_geom(bg_diagram *d, seg *s, int key) {
   s->dir = bg_vunit(bg_vsub(centre(d, s->v), centre(d, s->u)));
   s->n = bg_vleft(s->dir);
-  double step = fmax(3, 2.5 * d->st.layer_width);
+  double step = bg_layer_step(&d->st);
   s->off = d->st.layer_offset + step * side_rank(d, 2 * s->b + (s->fwd ? 0 : 1), key);
 }
 
@@ -254,9 +254,11 @@ static int routed_jump(const bg_diagram *d, const seg *s, const seg *t, joint *j
   j->nvia = 0;
   for (int k = 0; k < na; k++) j->via[j->nvia++] = ca[k];
   j->via[j->nvia++] = q0;
-  for (int k = 1; k + 1 < n; k++) { /* a corner of the route, moved off on both legs' left */
+  for (int k = 1; k + 1 < n; k++) { /* a corner of the route, moved off on both legs' left (mitred:
+                                        a diagonal stub's corner turns by 45 degrees, not 90) */
     bg_vec in = bg_vunit(bg_vsub(r->pts[k], r->pts[k - 1])), out = bg_vunit(bg_vsub(r->pts[k + 1], r->pts[k]));
-    j->via[j->nvia++] = bg_vadd(r->pts[k], bg_vscale(bg_vadd(bg_vleft(in), bg_vleft(out)), off));
+    double turn = 1 + in.x * out.x + in.y * out.y;
+    j->via[j->nvia++] = bg_vadd(r->pts[k], bg_vscale(bg_vadd(bg_vleft(in), bg_vleft(out)), off / fmax(turn, 0.2)));
   }
   j->via[j->nvia++] = qn;
   for (int k = 0; k < nb; k++) j->via[j->nvia++] = cb[k];

@@ -97,16 +97,73 @@ static void box_bonds(bg_router *r, const bg_model *m) {
   free(fill);
 }
 
-static int side_clear(bg_router *r, const bg_model *m, int n, bg_vec p) {
-  const bg_diagram_layout *L = r->L;
-  if (n < m->nelem) { /* an element: its own bonds */
-    for (int i = 0; i < m->elem_nbond[n]; i++)
-      if (end_near(L, m, m->elem_bonds[m->elem_bondadr[n] + i], n, p)) return 0;
-    return 1;
+/* The bonds drawn ending at node n (*list, their number returned): an
+ * element's own, or those box_bonds found for a box or an integrator. */
+static int node_bonds(bg_router *r, const bg_model *m, int n, const int **list) {
+  if (n < m->nelem) {
+    *list = &m->elem_bonds[m->elem_bondadr[n]];
+    return m->elem_nbond[n];
   }
-  if (!r->end_adr) box_bonds(r, m); /* a box or an integrator: the bonds drawn ending there */
-  for (int k = r->end_adr[n - m->nelem]; k < r->end_adr[n - m->nelem + 1]; k++)
-    if (end_near(L, m, r->end_list[k], n, p)) return 0;
+  if (!r->end_adr) box_bonds(r, m);
+  *list = &r->end_list[r->end_adr[n - m->nelem]];
+  return r->end_adr[n - m->nelem + 1] - r->end_adr[n - m->nelem];
+}
+
+static int side_clear(bg_router *r, const bg_model *m, int n, bg_vec p) {
+  const int *list;
+  int nb = node_bonds(r, m, n, &list);
+  for (int i = 0; i < nb; i++)
+    if (end_near(r->L, m, list[i], n, p)) return 0;
+  return 1;
+}
+
+void bg_router_rings(bg_router *r, const double *ring) {
+  r->ring = ring, r->ring_hug = 0;
+  for (int k = 0; ring && k < r->ix.nleg; k++) r->ring_hug = fmax(r->ring_hug, bg_route_leg_hug(r, k));
+}
+
+/* Node n's bonds that leave it through side dir (within 25 degrees of its
+ * normal) and have path or loop lines beside them, against point p: whether
+ * p lies among those lines or within RING_NEAR of the outermost (the return
+ * value), and *need, how far past p (across the bond) RING_GAP past them
+ * lies (the most over those bonds; 0 for none). */
+static int side_rings(bg_router *r, const bg_model *m, int n, int dir, bg_vec p, double *need) {
+  const bg_diagram_layout *L = r->L;
+  const int *list;
+  int nb = node_bonds(r, m, n, &list), among = 0;
+  *need = 0;
+  for (int i = 0; i < nb; i++) {
+    int b = list[i];
+    if ((L->bond_hidden && L->bond_hidden[b]) || r->ring[b] <= 0) continue;
+    for (int head = 0; head < 2; head++) {
+      int e = head ? m->bond_head[b] : m->bond_tail[b];
+      if ((L->node_of ? L->node_of[e] : e) != n) continue;
+      bg_vec at = head ? L->bg[b].head : L->bg[b].tail, out = head ? bg_vscale(L->bg[b].hdir, -1) : L->bg[b].tdir;
+      if (out.x * DIRV[dir].x + out.y * DIRV[dir].y < 0.9) continue;
+      bg_vec w = bg_vsub(p, at);
+      double across = fabs(w.x * out.y - w.y * out.x);
+      among |= across < r->ring[b] + RING_NEAR;
+      *need = fmax(*need, r->ring[b] + RING_GAP - across);
+    }
+  }
+  return among;
+}
+
+/* A source's corner port (at, on side dir, its corner towards sx, sy) of a
+ * node with path and loop lines round its bonds: its straight stub would
+ * run among them beside a bond leaving through that side (a signal out of
+ * a junction read as part of a path: internal_mod_r, series_motor_L,
+ * slider_crank, issue 31), so it leaves on a 45 degree stub instead, out
+ * to RING_GAP past the outermost line of the bonds through either side of
+ * the corner; it crosses them there at once. Returns whether it did (*p
+ * the port). Not at a target: an arrow into a corner at 45 degrees points
+ * past the node's text. */
+static int ring_escape(bg_router *r, const bg_model *m, int n, int dir, double sx, double sy, bg_vec at, port *p) {
+  double need, need_other;
+  if (!r->ring || !side_rings(r, m, n, dir, at, &need)) return 0;
+  side_rings(r, m, n, dir < 2 ? (sy > 0 ? 2 : 3) : (sx > 0 ? 0 : 1), at, &need_other);
+  double d = fmax(6, fmax(need, need_other)); /* at least 6 pt each way: a shorter diagonal reads as a kink */
+  *p = (port){at, bg_vadd(at, bg_vscale(bg_v(sx, sy), d)), dir, COST_CORNER, 0, 2};
   return 1;
 }
 
@@ -136,6 +193,11 @@ static int node_ports(bg_router *r, const bg_model *m, int n, double gap, port *
       if ((k == 1 || k == 2) && (half < 8 || half / 2 > corner - 2)) continue;
       bg_vec at = dir < 2 ? bg_v(c.x + (dir == 0 ? hw : -hw), c.y + off) : bg_v(c.x + off, c.y + (dir == 2 ? hh : -hh));
       if (!side_clear(r, m, n, at)) continue;
+      double sx = dir < 2 ? DIRV[dir].x : off > 0 ? 1 : -1, sy = dir < 2 ? (off > 0 ? 1 : -1) : DIRV[dir].y;
+      if (k >= 3 && gap == 0 && ring_escape(r, m, n, dir, sx, sy, at, &out[np])) {
+        np++;
+        continue;
+      }
       at = bg_vadd(at, bg_vscale(DIRV[dir], gap));
       out[np++] = (port){at, bg_vadd(at, bg_vscale(DIRV[dir], STUB)), dir, k >= 3 ? COST_CORNER : 0, 0, 0};
     }

@@ -15,20 +15,19 @@
  * 0.5 pt past them, as a routed bond must not pass another bond's end:
  * it would read as that bond ending on it, a false T); 2 when they run on
  * one line (parallel, nearer than `near` pt, sharing more than 1 pt); 3
- * when they run side by side within HUG pt (*run: for how long); 4 (ends
+ * when they run side by side within `hug` pt (*run: for how long); 4 (ends
  * 2, a bond in end_zone) when they cross within END_NEAR pt of one of a-b's
  * ends, inside or past it, which reads as a-b ending on p-q whichever side
  * it falls; else 0. On a crossing (1 or 4) *run is where: how far along
  * a-b from a. */
-#define HUG 12.0
-int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends) {
+int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double hug, double *run, int ends) {
   bg_vec u = bg_vsub(q, p), v = bg_vsub(b, a);
   double lu = bg_vlen(u), lv = bg_vlen(v);
   if (lu <= 0 || lv <= 0) return 0;
   double den = u.x * v.y - u.y * v.x;
   if (fabs(den) < 0.02 * lu * lv) { /* parallel: on one line? */
     double dist = fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / lu;
-    if (dist >= HUG) return 0;
+    if (dist >= hug) return 0;
     double t0 = ((a.x - p.x) * u.x + (a.y - p.y) * u.y) / lu, t1 = ((b.x - p.x) * u.x + (b.y - p.y) * u.y) / lu;
     double lo = fmax(0, fmin(t0, t1)), hi = fmin(lu, fmax(t0, t1));
     if (hi - lo <= 1) return 0;
@@ -57,6 +56,32 @@ static int own_bond(const bg_router *r, int b) {
     if (n >= 0 && (n == r->from_node || n == r->to_node)) return 1;
   }
   return 0;
+}
+
+/* How far beside leg k a parallel run costs (bg_route_hug_cost): HUG,
+ * or beside a bond with path and loop lines (bg_router_rings) HUG past the
+ * outermost of them, as they move its number out. */
+double bg_route_leg_hug(const bg_router *r, int leg) {
+  double ring = r->ring ? r->ring[r->ix.lbond[leg]] : 0;
+  return ring > 0 ? ring + HUG : HUG;
+}
+
+/* What a point of a run beside leg k, `dist` pt off it, costs: COST_HUG
+ * within HUG (read as a doubled bond, over its number); beside a bond with
+ * path and loop lines COST_RING among them or within RING_NEAR of the
+ * outermost (read as one of them: randnet30_1's signal 12.6 pt off a bond
+ * with two loop lines a side, 2.6 pt beside the outer one, issue 31), then
+ * COST_HUG for HUG more (over its number, which they moved out). */
+static double hug_cost(const bg_router *r, int leg, double dist) {
+  double ring = r->ring ? r->ring[r->ix.lbond[leg]] : 0;
+  if (ring > 0 && dist < ring + RING_NEAR) return COST_RING;
+  return dist < bg_route_leg_hug(r, leg) ? COST_HUG : 0;
+}
+
+/* The distance of point a from the line through p and q. */
+static double line_dist(bg_vec p, bg_vec q, bg_vec a) {
+  bg_vec u = bg_vsub(q, p);
+  return fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / bg_vlen(u);
 }
 
 /* What crossing leg k of the near index costs the current route. */
@@ -100,7 +125,11 @@ static double seg_cross_cost(const bg_router *r, int s) {
 double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   const bg_diagram_layout *L = r->L;
   double cost = bg_vlen(bg_vsub(q, p)), x0 = fmin(p.x, q.x), x1 = fmax(p.x, q.x), y0 = fmin(p.y, q.y), y1 = fmax(p.y, q.y);
-  bg_near_box(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
+  /* the legs whose lines it may run among (a bare bond's 4 pt: its hug is
+   * priced over the grid, bg_route_grid_costs; 12 moved bench_reactions300's
+   * routes by one fault either way) */
+  double m = fmax(4, r->ring_hug);
+  bg_near_box(&r->ix, x0 - m, y0 - m, x1 + m, y1 + m, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int k = r->nl.k[j];
     if (k < L->nnode) {
@@ -112,16 +141,18 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
       continue;
     }
     double run = 0;
-    int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, &run, bg_route_ends(r));
+    int hit = bg_route_seg_meet(p, q, r->ix.la[k - L->nnode], r->ix.lb[k - L->nnode], 3, bg_route_leg_hug(r, k - L->nnode),
+                                &run, bg_route_ends(r));
     if (hit == 1) cost += leg_cross_cost(r, k - L->nnode) + at_end_cost(r, k - L->nnode, run);
-    cost += hit == 2 ? COST_BLOCK : hit == 3 ? COST_HUG * run : hit == 4 ? COST_END : 0;
+    if (hit == 3) cost += hug_cost(r, k - L->nnode, line_dist(p, q, r->ix.la[k - L->nnode])) * run;
+    cost += hit == 2 ? COST_BLOCK : hit == 4 ? COST_END : 0;
     if (r->ix.lmid[k - L->nnode] && bg_point_seg(r->ix.mid[k - L->nnode], p, q) < 10) cost += COST_NUMBER;
   }
   bg_near_signals(&r->ix, x0 - 4, y0 - 4, x1 + 4, y1 + 4, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];
     if (bg_route_own_segment(r, s)) continue; /* the route itself (bg_route_detour) */
-    int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, NULL, 0);
+    int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, HUG, NULL, 0);
     cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
   }
   return cost;
@@ -165,16 +196,18 @@ static double across(bg_vec p, int horiz) { return horiz ? p.y : p.x; }
  * vertices A[0..n-1]: a crossing adds `cross` to the edge it falls in (half
  * open, as bg_route_seg_meet counts it, ends as there, COST_END near an
  * end), and for bond leg `leg` (else -1) at_end_cost; a parallel run within
- * HUG pt adds to each edge it shares more than 1 pt with `block` when
- * nearer than 3 pt, else `hug` per pt of the shared run. */
+ * HUG pt (a leg's bg_route_leg_hug) adds to each edge it shares more than
+ * 1 pt with `block` when nearer than 3 pt, else for bond leg `leg`
+ * hug_cost per pt of the shared run. */
 static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg_vec b, double cross, double block,
-                      double hug, int ends, const bg_router *r, int leg, double *out) {
+                      int ends, const bg_router *r, int leg, double *out) {
   double va = along(b, horiz) - along(a, horiz), vc = across(b, horiz) - across(a, horiz);
   double lv = sqrt(va * va + vc * vc);
   if (lv <= 0) return;
   if (fabs(vc) < 0.02 * lv) { /* parallel: on one line? */
     double dist = fabs(across(a, horiz) - at);
-    if (dist >= HUG || (dist >= 3 && hug <= 0)) return;
+    double hug = leg >= 0 && dist >= 3 ? hug_cost(r, leg, dist) : 0;
+    if (dist >= 3 && hug <= 0) return;
     double t0 = fmin(along(a, horiz), along(b, horiz)), t1 = fmax(along(a, horiz), along(b, horiz));
     int i0, i1;
     edge_range(A, n, t0, t1, &i0, &i1);
@@ -226,7 +259,8 @@ void bg_route_grid_costs(bg_router *r) {
     for (int i = 0; i + 1 < nx; i++) r->hcost[j * nx + i] = X[i + 1] - X[i];
   for (int j = 0; j < nx; j++)
     for (int i = 0; i + 1 < ny; i++) r->vcost[j * ny + i] = Y[i + 1] - Y[i];
-  bg_near_box(&r->ix, X[0] - HUG, Y[0] - HUG, X[nx - 1] + HUG, Y[ny - 1] + HUG, &r->nl);
+  double far = fmax(HUG, r->ring_hug); /* the farthest a leg's hug reaches */
+  bg_near_box(&r->ix, X[0] - far, Y[0] - far, X[nx - 1] + far, Y[ny - 1] + far, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) {
     int k = r->nl.k[jj], j0, j1, i0, i1;
     if (k < L->nnode) { /* a box grown by 2 pt: the lines through it */
@@ -244,13 +278,13 @@ void bg_route_grid_costs(bg_router *r) {
     }
     int leg = k - L->nnode;
     bg_vec a = r->ix.la[leg], b = r->ix.lb[leg];
-    double cross = leg_cross_cost(r, leg);
-    line_range(Y, ny, fmin(a.y, b.y) - HUG, fmax(a.y, b.y) + HUG, &j0, &j1);
+    double cross = leg_cross_cost(r, leg), hug = bg_route_leg_hug(r, leg);
+    line_range(Y, ny, fmin(a.y, b.y) - hug, fmax(a.y, b.y) + hug, &j0, &j1);
     for (int j = j0; j <= j1; j++)
-      line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->hcost[j * nx]);
-    line_range(X, nx, fmin(a.x, b.x) - HUG, fmax(a.x, b.x) + HUG, &j0, &j1);
+      line_meet(X, nx, 1, Y[j], a, b, cross, COST_BLOCK, bg_route_ends(r), r, leg, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(a.x, b.x) - hug, fmax(a.x, b.x) + hug, &j0, &j1);
     for (int j = j0; j <= j1; j++)
-      line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, COST_HUG, bg_route_ends(r), r, leg, &r->vcost[j * ny]);
+      line_meet(Y, ny, 0, X[j], a, b, cross, COST_BLOCK, bg_route_ends(r), r, leg, &r->vcost[j * ny]);
     if (r->ix.lmid[leg]) { /* the edges within 10 pt of the bond's middle */
       bg_vec mid = r->ix.mid[leg];
       line_range(Y, ny, mid.y - 10, mid.y + 10, &j0, &j1);
@@ -273,8 +307,8 @@ void bg_route_grid_costs(bg_router *r) {
     double cross = seg_cross_cost(r, r->nl.k[jj]);
     int j0, j1;
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, 0, r, -1, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, r, -1, &r->hcost[j * nx]);
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, 0, r, -1, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, r, -1, &r->vcost[j * ny]);
   }
 }

@@ -63,7 +63,7 @@ static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) 
   for (int j = 0; j < nk && !found; j++) {
     int leg = legs[j] - L->nnode;
     bg_vec w;
-    if (leg < 0 || bg_route_seg_meet(p, q, r->ix.la[leg], r->ix.lb[leg], 3, NULL, 0) != 1) continue;
+    if (leg < 0 || bg_route_seg_meet(p, q, r->ix.la[leg], r->ix.lb[leg], 3, HUG, NULL, 0) != 1) continue;
     int e = leg_one_port(r, leg, &w);
     if (e < 0 || fabs(u.x * w.x + u.y * w.y) > 0.01 || (fabs(u.x) > 1e-9 && fabs(u.y) > 1e-9)) continue;
     bg_vec a = r->ix.la[leg], z = r->ix.lb[leg];

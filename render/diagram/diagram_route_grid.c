@@ -93,7 +93,8 @@ int bg_route_nearest_line(const double *a, int n, double v) {
 }
 
 /* The lanes beside every node box in window [wx0,wx1]×[wy0,wy1] as
- * candidate lines. */
+ * candidate lines, and with layer lines drawn (bg_router_rings) those
+ * RING_GAP past the outermost beside each bond. */
 void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double wy1) {
   const bg_diagram_layout *L = r->L;
   /* the nodes in the window's cells; in a window of more than 1 024 cells
@@ -110,7 +111,7 @@ void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double
       size_t c = (size_t)cy * (size_t)r->ix.nx + (size_t)cx;
       for (int j = r->ix.adr[c]; j < r->ix.adr[c + 1]; j++) {
         int k = r->ix.item[j];
-        if (k >= L->nnode || r->ix.stamp[k] == r->ix.tick) continue;
+        if ((k >= L->nnode && !r->ring) || r->ix.stamp[k] == r->ix.tick) continue;
         r->ix.stamp[k] = r->ix.tick;
         if (r->nl.n == r->nl.cap) r->nl.cap = 2 * r->nl.cap + 16, r->nl.k = bg_xrealloc(r->nl.k, (size_t)r->nl.cap * sizeof *r->nl.k);
         r->nl.k[r->nl.n++] = k;
@@ -118,6 +119,14 @@ void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double
     }
   for (int j = 0; j < r->nl.n; j++) {
     int k = r->nl.k[j];
+    if (k >= L->nnode) { /* an axis-parallel bond leg with layer lines: the lanes just past them */
+      bg_vec a = r->ix.la[k - L->nnode], b = r->ix.lb[k - L->nnode];
+      double ring = r->ring[r->ix.lbond[k - L->nnode]], out = ring + HUG;
+      if (ring <= 0) continue;
+      if (fabs(a.y - b.y) < 0.5) bg_route_add_cand(r, NAN, a.y - out, 0), bg_route_add_cand(r, NAN, a.y + out, 0);
+      else if (fabs(a.x - b.x) < 0.5) bg_route_add_cand(r, a.x - out, NAN, 0), bg_route_add_cand(r, a.x + out, NAN, 0);
+      continue;
+    }
     double bx0 = L->nx[k] - L->nw[k] / 2, bx1 = L->nx[k] + L->nw[k] / 2;
     double by0 = L->ny[k] - L->nh[k] / 2, by1 = L->ny[k] + L->nh[k] / 2;
     if (bx1 < wx0 || bx0 > wx1 || by1 < wy0 || by0 > wy1) continue;
@@ -181,6 +190,10 @@ void bg_route_build_grid(bg_router *r, double wx0, double wy0, double wx1, doubl
 void bg_route_snap_ports(const bg_router *r, port *p, int n) {
   for (int i = 0; i < n; i++) {
     double x = r->X[bg_route_nearest_line(r->X, r->nxl, p[i].stub.x)], y = r->Y[bg_route_nearest_line(r->Y, r->nyl, p[i].stub.y)];
+    if (p[i].diag == 2) { /* a diagonal stub: its port stays at the corner */
+      p[i].stub = bg_v(x, y);
+      continue;
+    }
     if (p[i].dir < 2) p[i].at.y = y;
     else p[i].at.x = x;
     p[i].stub = bg_v(x, y);

@@ -34,6 +34,13 @@
                                  the route round the whole figure) */
 #define END_NEAR 1.5
 #define COST_HUG 1.5          /* per pt beside a bond, nearer than HUG: read as a doubled bond */
+#define COST_RING 4.0         /* per pt beside a bond with path or loop lines (bg_route_leg_hug):
+                                 read as one of them */
+#define HUG 12.0
+#define RING_NEAR 3.5         /* a signal nearer a bond's outermost path or loop line runs beside it
+                                 (the figures checker's "beside": 3 pt; bg_router_rings) */
+#define RING_GAP 6.0          /* where a signal runs past a bond's outermost layer line: a diagonal
+                                 stub's end (ring_escape), a candidate line (bg_route_add_lanes) */
 #define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */
@@ -107,6 +114,8 @@ struct bg_router {
                              their bonds are the route's own (COST_CROSS_OWN) */
   int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
   int signals;            /* a router of signals (bg_router_new): bonds' ends kept clear */
+  const double *ring;     /* per bond: the reach of the layer lines beside it (bg_router_rings) */
+  double ring_hug;        /* the largest bg_route_leg_hug over the rings */
   int end_zone;           /* a bond route pays COST_END within END_NEAR of another bond's end
                              (the repair of false T's, bg_route_blocked_bonds), else a crossing */
   int group;              /* the current route's source: a route may start off the earlier
@@ -131,7 +140,8 @@ typedef struct port {
   int dir;      /* the normal: 0 +x, 1 -x, 2 +y, 3 -y */
   double base;  /* of the port itself (a corner) */
   double cost;  /* and of its stub */
-  int diag;     /* a bond's diagonal way out of a box whose sides are taken: at is stub */
+  int diag;     /* 1: a bond's diagonal way out of a box whose sides are taken: at is stub;
+                   2: a signal's diagonal stub out of a corner past the layer lines (ring_escape) */
 } port;
 
 static const bg_vec DIRV[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -171,7 +181,8 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
 /* What a route costs (diagram_route_cost.c). */
 /* Segment p-q against segment a-b: 1 crossing, 2 on one line, 3 side by
  * side (*run: for how long), else 0 (in full at its definition). */
-int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double *run, int ends);
+int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, double hug, double *run, int ends);
+double bg_route_leg_hug(const bg_router *r, int leg);
 /* What the current route's `ends` argument is: 0 a signal, 1 a bond, 2 a bond in end_zone. */
 static inline int bg_route_ends(const bg_router *r) { return r->bond < 0 ? 0 : r->end_zone ? 2 : 1; }
 /* Whether index segment s is the current route's own (bg_route_detour). */

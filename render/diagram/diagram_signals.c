@@ -258,12 +258,32 @@ static void fence_frames(bg_diagram *d, bg_router *rt) {
   }
 }
 
+/* How far the path and loop lines beside each bond reach from it
+ * (bg_router_rings): the outermost of those drawn on its fuller side
+ * (bg_layers_prepare counted them), with half its width. NULL when no
+ * layer is drawn. */
+static double *layer_rings(const bg_diagram *d) {
+  double *ring = NULL;
+  for (int b = 0; d->side_total && b < d->m->nbond; b++) {
+    int most = d->side_total[2 * b] > d->side_total[2 * b + 1] ? d->side_total[2 * b] : d->side_total[2 * b + 1];
+    if (!most) continue;
+    if (!ring) ring = bg_xcalloc((size_t)d->m->nbond, sizeof *ring);
+    ring[b] = d->st.layer_offset + bg_layer_step(&d->st) * (most - 1) + d->st.layer_width / 2;
+  }
+  return ring;
+}
+
+/* Needs bg_layers_prepare first: the routes keep clear of the layer lines
+ * round the nodes they leave. */
 void bg_route_signals(bg_diagram *d) {
   bg_router *rt = bg_router_new(d->L, d->m->nbond, NULL, 1);
+  double *ring = layer_rings(d);
+  bg_router_rings(rt, ring);
   fence_frames(d, rt);
   walk_signals(d, rt);
   detour_routes(d, rt);
   bg_router_free(rt);
+  free(ring);
 }
 
 void bg_draw_signals(bg_diagram *d) {

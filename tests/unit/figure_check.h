@@ -732,7 +732,10 @@ static int fc_steps(const fc_line *l) {
 static int fc_beside_layer(const fc_line *l, const fc_line *o) {
   for (int p = 0; p < l->nseg; p++)
     for (int q = 0; q < o->nseg; q++)
-      if (fc_seg_beside(&l->seg[p], &o->seg[q], 3, 8)) return 1;
+      if (fc_seg_beside(&l->seg[p], &o->seg[q], 3, 8)) {
+        if (fc_explain) printf("  (signal segment %.1f,%.1f - %.1f,%.1f)\n", l->seg[p].x0, l->seg[p].y0, l->seg[p].x1, l->seg[p].y1);
+        return 1;
+      }
   return 0;
 }
 

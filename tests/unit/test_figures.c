@@ -358,16 +358,18 @@ static const char *const show_names[] = {"default", "all"};
  * signal's route). Last column (sig_on_layers): signals running within
  * 3 pt of a path or loop line for more than 8 pt, 4 / 4 / 6 with every
  * layer (internal_mod_r 2 / 2 / 3, series_motor_L 1, slider_crank 1 / 1 /
- * 2): a signal out of a junction leaves by a corner port into the rings
- * the layers draw round the junction's bonds, which the router, run before
- * them, does not know (left open; docs/drawing.md). */
+ * 2): a signal out of a junction left by a corner port into the rings
+ * the layers draw round the junction's bonds, which the router did not
+ * know; 0 since it does (bg_router_rings: the layers are counted before
+ * the routes) and such a port leaves on a diagonal past the lines
+ * (ring_escape, diagram_route.c). */
 static const fc_stats limits[3][2] = {
     {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4}},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4}},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{136, 1, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6}},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -452,12 +454,17 @@ static const fc_stats limits[3][2] = {
  * bond away from its ends: signal crossings 60 / 63 / 63 / 64 / 60 / 71 ->
  * 63 / 63 / 63 / 64 / 64 / 73 (reactions12, reactions20), and reactions12's
  * two steps in slides with every layer gone (0).
+ * With every layer the routes keep off the path and loop lines (the
+ * router knows each bond's lines: bg_router_rings): reactions20's signals
+ * rerouted, signal crossings with every layer 63 / 64 / 73 -> 66 / 62 / 73
+ * (c3 -> k20 across three bonds in default; 85 held-out models with every
+ * layer 4 072 -> 4 002).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 66, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 62, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0},
      {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
@@ -505,7 +512,9 @@ static void count_scene(const bg_model *m, const bg_scene *s, fc_stats *st) {
 static bg_diagram *default_drawing(fx *f, const char *name, const char *text, const char *layout) {
   int rc = fm_load(f, name, text);
   BG_T_REPORT(rc == 0, "%s compiles", name);
-  bg_render_opts o = {.show = BG_SHOW_DEFAULT, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
+  /* BG_FIGURES_SHOW=all (development): every layer instead of the default ones */
+  unsigned show = getenv("BG_FIGURES_SHOW") && !strcmp(getenv("BG_FIGURES_SHOW"), "all") ? BG_SHOW_ALL : BG_SHOW_DEFAULT;
+  bg_render_opts o = {.show = show, .style = "default", .style_dir = BG_SOURCE_DIR "/styles", .layout = layout};
   bg_diagram *d = rc == 0 ? bg_diagram_build(f->m, &f->a, &o, &f->dg) : NULL;
   OK(rc != 0 || d != NULL);
   return d;
@@ -1088,7 +1097,8 @@ static void test_many_one_ports(void) {
 
 /* Development: BG_FIGURES_MEASURE=a.bg:b.bg measures model files of one's
  * own (held-out models) with the large figures' counts, in the layout
- * BG_FIGURES_LAYOUT (default: the model's own), default style and layers.
+ * BG_FIGURES_LAYOUT (default: the model's own), default style and layers
+ * (every layer with BG_FIGURES_SHOW=all).
  * Prints a row per file; asserts only that each loads and draws. */
 /* The text of file path into src (appended); 0 when it cannot be read. */
 static int read_text(const char *path, bg_strbuf *src) {
@@ -1565,6 +1575,52 @@ static void test_signals_clear_of_bond_ends(void) {
                     files[i], styles[si], show_names[k], t->sig_at_ends, t->steps, t->sig_through, t->sig_oblique,
                     t->sig_cross);
       }
+  }
+}
+
+/* Signals clear of the path and loop lines (issue 31): with every layer a
+ * signal out of a junction left by a corner port straight into the lines
+ * the layers draw round the junction's bonds and ran along one of them
+ * (internal_mod_r's js -> Ra, series_motor_L's ji -> K, slider_crank's
+ * w -> phi; 4 / 4 / 6 signals on layer lines over the examples). Now the
+ * router knows each bond's lines (bg_router_rings) and such a port leaves
+ * on a 45 degree stub out past them: in every style no signal runs along a
+ * layer line, each of these leaves its junction on the diagonal (its first
+ * leg as long across as along, more than 6 pt each way) and crosses no
+ * bond. */
+static void test_signals_clear_of_layers(void) {
+  static const char *const files[] = {"internal_mod_r", "series_motor_L", "slider_crank"};
+  static const char *const signals[] = {"js->Ra", "ji->K", "w->phi"};
+  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+    fx f;
+    OK(fx_load(&f, files[i], -1, NULL, 0, NULL, NULL) == 0);
+    for (int si = 0; f.m && si < 3; si++) {
+      bg_diagram *d = build(&f, styles[si], BG_SHOW_ALL, 0, 0);
+      OK(d != NULL);
+      if (!d) continue;
+      fc_stats st = {0};
+      count_scene(f.m, bg_diagram_scene(d), &st);
+      fc_scene fs;
+      fc_read(bg_diagram_scene(d), &fs);
+      int found = 0, diagonal = 0, crossed = 0;
+      for (int k = 0; k < fs.nline; k++) {
+        const fc_line *l = &fs.line[k];
+        if (l->kind != FC_SIGNAL || !l->name || strcmp(l->name, signals[i]) || l->nseg < 1) continue;
+        double dx = fabs(l->seg[0].x1 - l->seg[0].x0), dy = fabs(l->seg[0].y1 - l->seg[0].y0);
+        found = 1, diagonal = fabs(dx - dy) < 0.01 && dx > 6;
+        for (int b = 0; b < fs.nline; b++) {
+          int ob = 0, at_end = 0;
+          crossed += fs.line[b].kind == FC_BOND && fc_sig_cross(l, &fs.line[b], &ob, &at_end);
+        }
+      }
+      BG_T_REPORT(st.sig_on_layers == 0 && found && diagonal && !crossed,
+                  "%s %s, every layer: %d signals along layer lines, %s leaves its junction %s, %d bonds crossed",
+                  files[i], styles[si], st.sig_on_layers, signals[i], found ? (diagonal ? "diagonally" : "straight") : "(not found)",
+                  crossed);
+      fc_free(&fs);
+      bg_diagram_free(d);
+    }
+    fx_free(&f);
   }
 }
 
@@ -2328,14 +2384,16 @@ static void test_signals_face(void) {
  * every layer, that bond at the grid's own angle (layers keep their room:
  * diagonal_leaves) with 1 / 2 / 2 path lines crossing it obliquely. */
 /* Last column (sig_on_layers): the pendulum's signal out of its junction
- * along the layers' ring, with every layer (as the examples'). */
+ * along the layers' ring, with every layer (as the examples'), 1 -> 0 since
+ * a signal leaves a junction's corner on a diagonal past the lines
+ * (ring_escape, diagram_route.c). */
 static const fc_stats limits_pages[3][2] = {
     {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
@@ -2438,6 +2496,7 @@ int main(void) {
   RUN(test_bridges);
   RUN(test_fans);
   RUN(test_arrows_at_labels);
+  RUN(test_signals_clear_of_layers);
   RUN(test_aligned_signals);
   RUN(test_signals_off_frames);
   RUN(test_wide_chains_fold);

@@ -5,7 +5,8 @@
  * distinct port lines in one window looped for ever); and the detour pass
  * keeps its index equal to what it draws when two U's fall on one segment
  * (before, the first U's remainder stayed whole in the index, so later
- * detours paid for a line that is not drawn). */
+ * detours paid for a line that is not drawn); and a run beside a bond's
+ * path and loop lines is priced (bg_router_rings). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -116,8 +117,53 @@ static void test_two_detours_on_one_segment(void) {
   bg_sb_free(&src);
 }
 
+/* A run beside a bond with path and loop lines (bg_router_rings): among
+ * them or within RING_NEAR of the outermost it costs COST_RING a point,
+ * beyond that COST_HUG up to HUG past them (where the bond's number goes),
+ * and nothing further out; without lines 13 pt off is free. */
+static void test_runs_beside_rings(void) {
+  bg_strbuf src = {0};
+  fm_ladder(&src, 4);
+  fx f;
+  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
+  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+  OK(d != NULL);
+  const bg_diagram_layout *L = d->L;
+  int b = -1; /* the longest level bond */
+  double len = 0;
+  for (int k = 0; k < f.m->nbond; k++) {
+    bg_vec t = L->bg[k].tail, h = L->bg[k].head;
+    if (L->bg[k].bendn == 0 && fabs(t.y - h.y) < 0.01 && fabs(h.x - t.x) > len) b = k, len = fabs(h.x - t.x);
+  }
+  OK(b >= 0 && len > 60);
+  if (b >= 0) {
+    double *ring = calloc((size_t)f.m->nbond, sizeof *ring), x0 = fmin(L->bg[b].tail.x, L->bg[b].head.x) + 20;
+    ring[b] = 10;
+    bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+    r->from_node = r->to_node = r->group = r->bond = -1;
+    double y = L->bg[b].tail.y, run = 30;
+    /* the extra cost of a 30 pt run at `off` pt below the bond (nothing else is that near) */
+#define EXTRA(off) (bg_route_seg_cost(r, bg_v(x0, y + (off)), bg_v(x0 + run, y + (off)), -1) - run)
+    double bare = EXTRA(13);
+    bg_router_rings(r, ring);
+    double among = EXTRA(12), past = EXTRA(16), far = EXTRA(23);
+#undef EXTRA
+    OK(fabs(bare) < 1e-6);                    /* no lines: 13 pt off is free */
+    OK(fabs(among - COST_RING * run) < 1e-6); /* 2 pt past the outermost line: beside it */
+    OK(fabs(past - COST_HUG * run) < 1e-6);   /* past it, where the number goes */
+    OK(fabs(far) < 1e-6);                     /* HUG past the lines: free */
+    bg_router_free(r);
+    free(ring);
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
 int main(void) {
   test_axis_lines_bounded();
   test_two_detours_on_one_segment();
+  test_runs_beside_rings();
   return bg_t_done();
 }
