@@ -12,8 +12,8 @@ LEVELS = [
     ["diagram_route_near"],                                    # the router's near index
     ["diagram_route_cost", "diagram_route_grid"],              # its costs; its grid of lines
     ["diagram_route_search", "diagram_route_branch"],          # its A* search; branches
-    ["diagram_geom", "diagram_place", "diagram_route", "diagram_route_detour", "diagram_route_adjacent",
-     "layout_rows"],  # helpers
+    ["diagram_geom", "diagram_place", "diagram_route", "diagram_route_detour", "diagram_route_nudge",
+     "diagram_route_adjacent", "layout_rows"],  # helpers
     ["layout"],                                                # Graphviz
     ["diagram_grid", "diagram_layers", "diagram_marks", "diagram_signals", "diagram_parts",
      "diagram_fields", "diagram_frames", "diagram_dot", "diagram_tips", "diagram_bonds",

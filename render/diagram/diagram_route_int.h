@@ -177,6 +177,9 @@ void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, nea
 void bg_near_signals(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);
 /* A routed segment a-b added, of source group (sgrp). */
 void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
+/* Routed segment s moved to a-b (bg_route_nudge): its index entry keeps its
+ * number, so a route's range of segments still holds it. */
+void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b);
 
 /* What a route costs (diagram_route_cost.c). */
 /* Segment p-q against segment a-b: 1 crossing, 2 on one line, 3 side by

@@ -200,16 +200,9 @@ void bg_near_signals(near_index *ix, double x0, double y0, double x1, double y1,
       }
 }
 
-void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
-  if (ix->nseg == ix->capseg) {
-    ix->capseg = 2 * ix->capseg + 16;
-    ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
-    ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
-    ix->sgrp = bg_xrealloc(ix->sgrp, (size_t)ix->capseg * sizeof *ix->sgrp);
-    ix->slast = bg_xrealloc(ix->slast, (size_t)ix->capseg);
-  }
-  int s = ix->nseg++;
-  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group, ix->slast[s] = 0;
+/* Segment s listed in the cells its box a-b meets (again: a cell that
+ * lists it twice is harmless, queries list each segment once). */
+static void list_signal(near_index *ix, int s, bg_vec a, bg_vec b) {
   int r[4];
   bg_near_cells(ix, fmin(a.x, b.x), fmin(a.y, b.y), fmax(a.x, b.x), fmax(a.y, b.y), r);
   for (int cy = r[1]; cy <= r[3]; cy++)
@@ -222,4 +215,22 @@ void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
       size_t c = (size_t)cy * (size_t)ix->nx + (size_t)cx;
       ix->sig_seg[ix->nsig] = s, ix->sig_next[ix->nsig] = ix->sig_head[c], ix->sig_head[c] = ix->nsig++;
     }
+}
+
+void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b) {
+  ix->sa[s] = a, ix->sb[s] = b;
+  list_signal(ix, s, a, b); /* the cells it left still list it: it is tested where it is */
+}
+
+void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
+  if (ix->nseg == ix->capseg) {
+    ix->capseg = 2 * ix->capseg + 16;
+    ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
+    ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
+    ix->sgrp = bg_xrealloc(ix->sgrp, (size_t)ix->capseg * sizeof *ix->sgrp);
+    ix->slast = bg_xrealloc(ix->slast, (size_t)ix->capseg);
+  }
+  int s = ix->nseg++;
+  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group, ix->slast[s] = 0;
+  list_signal(ix, s, a, b);
 }

@@ -239,6 +239,16 @@ static void detour_routes(bg_diagram *d, bg_router *rt) {
   }
 }
 
+/* Then each route's segments moved off other sources' signals they run a
+ * few points beside (bg_route_nudge), past a branch's shared stretch and
+ * the segment it leaves it by. */
+static void nudge_routes(bg_diagram *d, bg_router *rt) {
+  for (int k = 0; k < d->nroutes; k++) {
+    int b = d->routes[k].branch_k;
+    bg_route_nudge(rt, k, b < 0 ? 0 : b + 2, d->routes[k].pts, d->routes[k].n);
+  }
+}
+
 /* The frames drawn so far (bg_draw_frames, before the routes) fence the
  * routes: a signal run along a frame's border read as part of it (issue
  * 31: two motors' speed signals along their frames' bottoms, 1 pt off). */
@@ -282,6 +292,7 @@ void bg_route_signals(bg_diagram *d) {
   fence_frames(d, rt);
   walk_signals(d, rt);
   detour_routes(d, rt);
+  nudge_routes(d, rt);
   bg_router_free(rt);
   free(ring);
 }

@@ -60,6 +60,7 @@ typedef struct fc_stats {
   int on_frames;             /* bonds and signals running along a frame's border, within 2 pt for more than 8 pt (fc_on_frame) */
   int sig_at_ends;           /* of sig_cross, those at a bond's end, among its half arrow or stroke (fc_sig_cross) */
   int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt (fc_beside_layer) */
+  int sig_beside;            /* signal pairs of different sources side by side within 5 pt for more than 20 pt (fc_sig_beside) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -727,6 +728,24 @@ static int fc_steps(const fc_line *l) {
   return n;
 }
 
+/* Whether signals l and m, from different sources (the names' parts
+ * before "->"; one source's lines branch off each other), run side by side
+ * within 5 pt for more than 20 pt: two lines a few points apart read as
+ * one double line. */
+static int fc_sig_beside(const fc_line *l, const fc_line *m) {
+  const char *a = l->name ? strstr(l->name, "->") : NULL, *b = m->name ? strstr(m->name, "->") : NULL;
+  if (!a || !b || (a - l->name == b - m->name && !strncmp(l->name, m->name, (size_t)(a - l->name)))) return 0;
+  for (int p = 0; p < fc_body(l); p++)
+    for (int q = 0; q < fc_body(m); q++)
+      if (fc_seg_beside(&l->seg[p], &m->seg[q], 5, 20)) {
+        if (fc_explain)
+          printf("  signals %s and %s side by side at (%.0f, %.0f)-(%.0f, %.0f)\n", l->name, m->name, l->seg[p].x0,
+                 l->seg[p].y0, l->seg[p].x1, l->seg[p].y1);
+        return 1;
+      }
+  return 0;
+}
+
 /* Whether signal l runs along path or loop line o: within 3 pt for more
  * than 8 pt, where it reads as part of the path. */
 static int fc_beside_layer(const fc_line *l, const fc_line *o) {
@@ -755,6 +774,7 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
           if (fc_explain) printf("  signal %s crosses bond %d%s\n", l->name, m->id, ob ? " obliquely" : "");
         }
         st->sig_at_ends += at_end;
+        if (fc_explain && at_end) printf("  signal %s crosses bond %d at its end\n", l->name, m->id);
       }
       if (l->kind == FC_OVERLAY && m->kind == FC_BOND) { /* a modulation's jump straight across */
         if (fc_layer_oblique(l, m)) {
@@ -766,6 +786,7 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
         st->false_tees++;
         if (fc_explain) printf("  false T: bond %d ends on bond %d\n", l->id, m->id);
       }
+      if (k > j && l->kind == FC_SIGNAL && m->kind == FC_SIGNAL && fc_sig_beside(l, m)) st->sig_beside++;
       if (k > j && (l->kind == FC_BOND || l->kind == FC_SIGNAL) && (m->kind == FC_BOND || m->kind == FC_SIGNAL) &&
           fc_lines_overlap(l, m)) {
         st->overlaps++, st->bond_overlaps += l->kind == FC_BOND || m->kind == FC_BOND;

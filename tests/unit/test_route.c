@@ -5,8 +5,9 @@
  * distinct port lines in one window looped for ever); and the detour pass
  * keeps its index equal to what it draws when two U's fall on one segment
  * (before, the first U's remainder stayed whole in the index, so later
- * detours paid for a line that is not drawn); and a run beside a bond's
- * path and loop lines is priced (bg_router_rings). */
+ * detours paid for a line that is not drawn); a run beside a bond's
+ * path and loop lines is priced (bg_router_rings); and a signal a few
+ * points beside another source's is moved off it (bg_route_nudge). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -161,9 +162,51 @@ static void test_runs_beside_rings(void) {
   bg_sb_free(&src);
 }
 
+/* Two signals of different sources 4 pt apart for 200 pt: the later
+ * route's segment between two bends moves across, whole, to 6 pt off the
+ * other (its neighbours stretch, its ends stay), and the index follows; a
+ * route of the same source beside it stays (a branch runs off its trunk). */
+static void test_nudge_apart(void) {
+  bg_strbuf src = {0};
+  fm_ladder(&src, 4);
+  fx f;
+  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
+  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
+  OK(d != NULL);
+  if (d) {
+    const bg_diagram_layout *L = d->L;
+    for (int same = 0; same < 2; same++) {
+      bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+      double x0 = r->fx1 + 100, y0 = r->fy0; /* clear of the figure */
+      bg_vec other[2] = {bg_v(x0 + 104, y0 - 50), bg_v(x0 + 104, y0 + 250)};
+      r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
+      bg_route_keep(r, other, 2);
+      bg_vec pts[4] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 200), bg_v(x0 + 200, y0 + 200)};
+      r->group = same ? 7 : 3;
+      bg_route_keep(r, pts, 4);
+      int moved = bg_route_nudge(r, 1, 0, pts, 4);
+      if (same) {
+        INT_EQ(moved, 0);
+        OK(pts[1].x == x0 + 100);
+      } else {
+        INT_EQ(moved, 1);
+        OK(fabs(pts[1].x - (x0 + 98)) < 1e-9 && fabs(pts[2].x - (x0 + 98)) < 1e-9); /* 6 pt off, away */
+        OK(pts[1].y == y0 && pts[2].y == y0 + 200 && pts[0].x == x0 && pts[3].x == x0 + 200);
+        OK(indexed(r, 3, pts[1], pts[2]) && indexed(r, 3, pts[0], pts[1]) && indexed(r, 3, pts[2], pts[3]));
+      }
+      bg_router_free(r);
+    }
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+  bg_sb_free(&src);
+}
+
 int main(void) {
   test_axis_lines_bounded();
   test_two_detours_on_one_segment();
   test_runs_beside_rings();
+  test_nudge_apart();
   return bg_t_done();
 }

@@ -1,0 +1,175 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Two signals from different sources that the search laid side by side a
+ * few points apart read as one double line (randnet30_1's c3 -> k4 and
+ * c13 -> k15 ran 4 pt apart for 1 100 pt, issue 31). The search does not
+ * see it: priced there, the routes stepped sideways to keep clear for part
+ * of the way (more steps and crossings than pairs mended). Once every
+ * route is drawn, a segment that runs within SIG_BESIDE of another
+ * source's signal is moved across, whole, to SIG_NEAR off it (its two
+ * neighbours stretch, or at a route's end its port slides along the box),
+ * where that crosses and passes nothing it did not. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diagram/diagram_route_int.h"
+
+#define SIG_BESIDE 6.0 /* nearer than this beside another source's signal: one double line (the
+                          checker's 5 and a point: 5 moved fewer, with more steps) */
+#define SIG_NEAR 6.0   /* where a moved segment goes */
+#define MIN_LEG 8.0    /* a stretched neighbour keeps at least this (shorter, between two parallel
+                          legs, reads as a step; the arrow's leg 10) */
+
+/* How far segment p-q (axis-parallel) runs within SIG_BESIDE of other
+ * sources' signals (group >= 0, not `group`), summed; *nearest gets the
+ * offset of the nearest of them across p-q (along its left normal). */
+static double near_run(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest) {
+  double len = bg_vlen(bg_vsub(q, p)), total = 0;
+  *nearest = INFINITY;
+  if (len <= 0) return 0;
+  bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len), nrm = bg_v(-u.y, u.x);
+  bg_near_signals(&r->ix, fmin(p.x, q.x) - SIG_BESIDE, fmin(p.y, q.y) - SIG_BESIDE, fmax(p.x, q.x) + SIG_BESIDE,
+                  fmax(p.y, q.y) + SIG_BESIDE, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j], g = r->ix.sgrp[s];
+    if (g < 0 || g == group) continue;
+    bg_vec a = r->ix.sa[s], b = r->ix.sb[s], v = bg_vsub(b, a);
+    double lv = bg_vlen(v);
+    if (lv <= 0 || fabs(v.x * u.y - v.y * u.x) > 0.02 * lv) continue; /* not parallel */
+    double off = (a.x - p.x) * nrm.x + (a.y - p.y) * nrm.y;
+    if (fabs(off) >= SIG_BESIDE) continue;
+    double t0 = (a.x - p.x) * u.x + (a.y - p.y) * u.y, t1 = (b.x - p.x) * u.x + (b.y - p.y) * u.y;
+    double shared = fmin(len, fmax(t0, t1)) - fmax(0, fmin(t0, t1));
+    if (shared <= 1) continue;
+    total += shared;
+    if (fabs(off) < fabs(*nearest)) *nearest = off;
+  }
+  return total;
+}
+
+/* Whether segment s of the index is one of the route's own, pts[0..n-1]. */
+static int own_segment(const bg_router *r, int s, const bg_vec *pts, int n) {
+  for (int j = 0; j + 1 < n; j++)
+    if (bg_vlen(bg_vsub(r->ix.sa[s], pts[j])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[j + 1])) < 1e-9) return 1;
+  return 0;
+}
+
+/* Whether another route of the route's source (a branch, or the trunk a
+ * branch is taken off) starts, ends or runs on segment p-q: moving it
+ * would leave the branch's dot beside the line. */
+static int branched_on(bg_router *r, bg_vec p, bg_vec q, int group, const bg_vec *pts, int n) {
+  bg_near_signals(&r->ix, fmin(p.x, q.x) - 1, fmin(p.y, q.y) - 1, fmax(p.x, q.x) + 1, fmax(p.y, q.y) + 1, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    if (r->ix.sgrp[s] != group || bg_vlen(bg_vsub(r->ix.sb[s], r->ix.sa[s])) <= 0 || own_segment(r, s, pts, n)) continue;
+    if (bg_point_seg(r->ix.sa[s], p, q) < 0.01 || bg_point_seg(r->ix.sb[s], p, q) < 0.01 ||
+        bg_point_seg(p, r->ix.sa[s], r->ix.sb[s]) < 0.01 || bg_point_seg(q, r->ix.sa[s], r->ix.sb[s]) < 0.01)
+      return 1;
+  }
+  return 0;
+}
+
+/* The index segment of route rt that runs from a to b, or -1: among its
+ * own (seg0 .. seg1) first, then those added since (a U round a one-port,
+ * bg_route_detour), of its group. */
+static int index_segment(const bg_router *r, const struct routed *rt, bg_vec a, bg_vec b) {
+  for (int pass = 0; pass < 2; pass++)
+    for (int s = pass ? rt->seg1 : rt->seg0; s < (pass ? r->ix.nseg : rt->seg1); s++)
+      if (r->ix.sgrp[s] == rt->group && bg_vlen(bg_vsub(r->ix.sa[s], a)) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], b)) < 1e-9)
+        return s;
+  return -1;
+}
+
+/* What the segments q[0..m] cost past their length (bg_route_seg_cost:
+ * crossings, runs through boxes or beside bonds, a bond's number or end
+ * passed), and (*near) how far segment q[mid]-q[mid+1] runs beside other
+ * sources' signals. */
+static double penalty(bg_router *r, const bg_vec *q, int m, int mid, int group, double *near) {
+  double c = 0, nearest;
+  for (int k = 0; k < m; k++) c += bg_route_seg_cost(r, q[k], q[k + 1], -1) - bg_vlen(bg_vsub(q[k + 1], q[k]));
+  *near = near_run(r, q[mid], q[mid + 1], group, &nearest);
+  return c;
+}
+
+/* Whether a-b runs along unit vector w (either way). */
+static int along(bg_vec a, bg_vec b, bg_vec w) {
+  bg_vec v = bg_vsub(b, a);
+  return fabs(v.x * w.y - v.y * w.x) < 1e-6;
+}
+
+/* Whether route end e (on node n's box side, or 1.5 pt off it at a target)
+ * may slide along the side to e + shift w: it stays on the side, 1 pt in
+ * from its corners (a target's arrow over the text: the pad and 1.5 pt in,
+ * as node_ports puts it), its segment leaving at right angles (along u). */
+static int slides(const bg_router *r, int n, bg_vec e, bg_vec u, bg_vec w, double shift, int target) {
+  const bg_diagram_layout *L = r->L;
+  if (n < 0 || n >= L->nnode) return 0;
+  double hw = L->nw[n] / 2, hh = L->nh[n] / 2, gap = target ? 1.5 : 0, out = fabs(u.x) > 0.5 ? hw : hh;
+  bg_vec c = bg_v(L->nx[n], L->ny[n]);
+  double off = fabs(u.x) > 0.5 ? fabs(e.x - c.x) : fabs(e.y - c.y); /* the side's distance from the centre */
+  if (fabs(off - out - gap) > 0.01) return 0;                         /* not on a side at right angles */
+  double half = fabs(u.x) > 0.5 ? hh : hw, inset = target ? L->st.node_pad + 1.5 : 1;
+  double along_side = (fabs(u.x) > 0.5 ? e.y + w.y * shift - c.y : e.x + w.x * shift - c.x);
+  return fabs(along_side) <= half - inset;
+}
+
+/* Segment pts[i]-pts[i+1] of a route, its neighbours at right angles to
+ * it (or, at the route's ends, its port sliding along the box's side),
+ * moved across to SIG_NEAR (or 3 pt more) off the nearest signal beside
+ * it, on its side or past it, where that crosses and passes nothing it did
+ * not and runs less beside others; pts and the index follow. Returns
+ * whether it moved. */
+static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int n, int i, int from_port) {
+  bg_vec p = pts[i], q = pts[i + 1];
+  double len = bg_vlen(bg_vsub(q, p)), nearest;
+  int group = rt->group;
+  if (len <= 8 || (fabs(p.x - q.x) > 1e-9 && fabs(p.y - q.y) > 1e-9)) return 0;
+  if (near_run(r, p, q, group, &nearest) <= 8) return 0;
+  bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len), nrm = bg_v(-u.y, u.x);
+  int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, m = hi - lo, mid = i - lo;
+  if (i == 0 && !from_port) return 0; /* a branch's start on its trunk stays */
+  if ((i > 0 && !along(pts[i - 1], p, nrm)) || (i + 2 < n && !along(q, pts[i + 2], nrm))) return 0;
+  int own[3];
+  for (int k = 0; k < m; k++)
+    if ((own[k] = index_segment(r, rt, pts[lo + k], pts[lo + k + 1])) < 0 ||
+        branched_on(r, pts[lo + k], pts[lo + k + 1], group, pts, n))
+      return 0;
+  bg_vec keep[3], old[4], chosen[4];
+  memcpy(old, pts + lo, (size_t)(m + 1) * sizeof *old);
+  for (int k = 0; k < m; k++) keep[k] = r->ix.sb[own[k]], r->ix.sb[own[k]] = r->ix.sa[own[k]]; /* parked */
+  double near0, pen0 = penalty(r, old, m, mid, group, &near0), best = near0, side = nearest > 0 ? 1 : -1;
+  int found = 0;
+  for (int t = 0; t < 4; t++) { /* away from the nearest by what it takes, or 3 pt more; then past it */
+    double shift = t < 2 ? -side * (SIG_NEAR + 3 * t - fabs(nearest)) : side * (fabs(nearest) + SIG_NEAR + 3 * (t - 2));
+    bg_vec moved[4];
+    memcpy(moved, old, sizeof moved);
+    moved[mid] = bg_vadd(p, bg_vscale(nrm, shift)), moved[mid + 1] = bg_vadd(q, bg_vscale(nrm, shift));
+    if (i == 0 && !slides(r, rt->from, p, u, nrm, shift, 0)) continue;
+    if (i + 2 == n && !slides(r, rt->to, q, bg_vscale(u, -1), nrm, shift, 1)) continue;
+    int ok = 1;
+    for (int k = 0; k < m; k++) { /* a neighbour neither turned round nor left shorter than MIN_LEG */
+      if (k == mid) continue;
+      bg_vec a = bg_vsub(moved[k + 1], moved[k]), a0 = bg_vsub(old[k + 1], old[k]);
+      double least = lo + k + 2 == n ? 10 : MIN_LEG; /* the arrow's leg */
+      ok &= a.x * a0.x + a.y * a0.y > 0 && bg_vlen(a) >= least;
+    }
+    if (!ok) continue;
+    double near, pen = penalty(r, moved, m, mid, group, &near);
+    /* nothing crossed or passed that was not before, and less beside others */
+    if (pen <= pen0 + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
+  }
+  for (int k = 0; k < m; k++) r->ix.sb[own[k]] = keep[k];
+  if (!found) return 0;
+  for (int k = 0; k < m; k++) bg_near_move_signal(&r->ix, own[k], chosen[k], chosen[k + 1]);
+  pts[i] = chosen[mid], pts[i + 1] = chosen[mid + 1];
+  return 1;
+}
+
+int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int n) {
+  if (k < 0 || k >= r->nroute || r->route[k].group < 0) return 0;
+  const struct routed *rt = &r->route[k];
+  r->from_node = rt->from, r->to_node = rt->to, r->group = rt->group, r->bond = -1;
+  int moved = 0;
+  for (int i = first < 0 ? 0 : first; i + 1 < n; i++) moved += nudge_segment(r, rt, pts, n, i, first <= 0);
+  return moved;
+}
