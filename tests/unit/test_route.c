@@ -76,17 +76,25 @@ static int indexed(const bg_router *r, int g, bg_vec a, bg_vec b) {
   return 0;
 }
 
+/* A four-section RC ladder (figure_models.h) compiled into f and drawn in
+ * the default style: the layout the router tests run on. */
+static bg_diagram *ladder_drawing(fx *f) {
+  bg_strbuf src = {0};
+  fm_ladder(&src, 4);
+  OK(fm_load(f, "ladder4", bg_sb_str(&src)) == 0);
+  bg_sb_free(&src);
+  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
+  bg_diagram *d = bg_diagram_build(f->m, &f->a, &o, &f->dg);
+  OK(d != NULL);
+  return d;
+}
+
 /* A straight route across two one-ports' bonds of an RC ladder (the R's
  * and C's above the junction row) goes round both; the index then holds
  * exactly the drawn segments of the route's group, none else. */
 static void test_two_detours_on_one_segment(void) {
-  bg_strbuf src = {0};
-  fm_ladder(&src, 4);
   fx f;
-  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
-  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-  OK(d != NULL);
+  bg_diagram *d = ladder_drawing(&f);
   const bg_diagram_layout *L = d->L;
   int c0 = bg_model_find_elem(f.m, "C0"), r1 = bg_model_find_elem(f.m, "R1");
   int n0 = bg_model_find_elem(f.m, "n0"), s2 = bg_model_find_elem(f.m, "s2");
@@ -115,7 +123,6 @@ static void test_two_detours_on_one_segment(void) {
   bg_router_free(r);
   bg_diagram_free(d);
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 /* A run beside a bond with path and loop lines (bg_router_rings): among
@@ -123,13 +130,8 @@ static void test_two_detours_on_one_segment(void) {
  * beyond that COST_HUG up to HUG past them (where the bond's number goes),
  * and nothing further out; without lines 13 pt off is free. */
 static void test_runs_beside_rings(void) {
-  bg_strbuf src = {0};
-  fm_ladder(&src, 4);
   fx f;
-  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
-  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-  OK(d != NULL);
+  bg_diagram *d = ladder_drawing(&f);
   const bg_diagram_layout *L = d->L;
   int b = -1; /* the longest level bond */
   double len = 0;
@@ -159,7 +161,6 @@ static void test_runs_beside_rings(void) {
   }
   bg_diagram_free(d);
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 /* Two signals of different sources 4 pt apart for 200 pt: the later
@@ -167,13 +168,8 @@ static void test_runs_beside_rings(void) {
  * other (its neighbours stretch, its ends stay), and the index follows; a
  * route of the same source beside it stays (a branch runs off its trunk). */
 static void test_nudge_apart(void) {
-  bg_strbuf src = {0};
-  fm_ladder(&src, 4);
   fx f;
-  OK(fm_load(&f, "ladder4", bg_sb_str(&src)) == 0);
-  bg_render_opts o = {.style = "default", .style_dir = BG_SOURCE_DIR "/styles"};
-  bg_diagram *d = bg_diagram_build(f.m, &f.a, &o, &f.dg);
-  OK(d != NULL);
+  bg_diagram *d = ladder_drawing(&f);
   if (d) {
     const bg_diagram_layout *L = d->L;
     for (int same = 0; same < 2; same++) {
@@ -200,7 +196,6 @@ static void test_nudge_apart(void) {
   }
   bg_diagram_free(d);
   fx_free(&f);
-  bg_sb_free(&src);
 }
 
 int main(void) {
