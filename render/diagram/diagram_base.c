@@ -171,7 +171,7 @@ bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i) {
   return d->st.layer_color[c];
 }
 
-double bg_layer_step(const bg_style *st) { return fmax(3, 2.5 * st->layer_width); }
+double bg_layer_line(const bg_style *st, int k) { return st->layer_offset + fmax(3, 2.5 * st->layer_width) * k; }
 
 void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]) {
   static const double pat[4][2] = {{5, 2.5}, {1.5, 2}, {8, 3}, {3, 3}};

@@ -69,8 +69,7 @@ static double layers_beside(const bg_diagram *d, int b, bg_vec dir, bg_vec n) {
   int on_left = left.x * n.x + left.y * n.y > 0;
   int used = d->side_use[2 * b + (fwd == on_left ? 0 : 1)];
   if (!used) return 3.5;
-  double step = bg_layer_step(&d->st);
-  return d->st.layer_offset + step * (used - 1) + d->st.layer_width / 2 + 2.5;
+  return bg_layer_line(&d->st, used - 1) + d->st.layer_width / 2 + 2.5;
 }
 
 /* Places text beside bond b, on the barb side (side 1) or opposite (-1),

@@ -2051,7 +2051,7 @@ static double layer_band(const grid *g) {
   for (int b = 0; b < d->m->nbond; b++) most = use[b] > most ? use[b] : most;
   free(use);
   if (most > 6) most = 6;
-  return most ? d->st.layer_offset + bg_layer_step(&d->st) * (most - 1) : 0;
+  return most ? bg_layer_line(&d->st, most - 1) : 0;
 }
 
 /* The grid lines (columns or rows, centres c[0..n) in points) whose boxes

@@ -132,9 +132,10 @@ int bg_diagram_muted(const bg_diagram *d);
 /* The layer colour and dash of path (kind 'p') or loop ('l') i. */
 bg_rgba bg_layer_color(const bg_diagram *d, int kind, int i);
 void bg_layer_dash(const bg_diagram *d, int kind, int i, double dash[2]);
-/* How far apart the path and loop lines stacked on a bond side run (3 pt,
- * more for thick lines); the first runs st->layer_offset from the bond. */
-double bg_layer_step(const bg_style *st);
+/* How far from its bond the k-th path or loop line stacked on a side runs
+ * (k from 0): the first st->layer_offset off, each next 3 pt further (more
+ * for thick lines). */
+double bg_layer_line(const bg_style *st, int k);
 /* Whether bond b ends at a store in derivative causality (its stroke drawn
  * in the derivative colour, doubled in print). */
 int bg_bond_derivative(const bg_model *m, const bg_analysis *a, int b);

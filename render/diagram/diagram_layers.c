@@ -92,8 +92,7 @@ static int side_rank(const bg_diagram *d, int side, int key) {
 static void seg_geom(bg_diagram *d, seg *s, int key) {
   s->dir = bg_vunit(bg_vsub(centre(d, s->v), centre(d, s->u)));
   s->n = bg_vleft(s->dir);
-  double step = bg_layer_step(&d->st);
-  s->off = d->st.layer_offset + step * side_rank(d, 2 * s->b + (s->fwd ? 0 : 1), key);
+  s->off = bg_layer_line(&d->st, side_rank(d, 2 * s->b + (s->fwd ? 0 : 1), key));
 }
 
 /* One more layer on each side of a bond this polyline ran along (once for

@@ -8,6 +8,12 @@
 #include "diagram/diagram_route_int.h"
 
 /* ---------------------------------------------------------------- segment tests */
+/* The distance of point a from the line through p and q. */
+static double line_dist(bg_vec p, bg_vec q, bg_vec a) {
+  bg_vec u = bg_vsub(q, p);
+  return fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / bg_vlen(u);
+}
+
 /* Segment p-q (axis-parallel, from the grid) against segment a-b: 1 when
  * they cross at a point inside a-b (not within 0.5 pt of its ends) and in
  * p-q's half-open extent [lower end, upper end), so a crossing at a grid
@@ -26,7 +32,7 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
   if (lu <= 0 || lv <= 0) return 0;
   double den = u.x * v.y - u.y * v.x;
   if (fabs(den) < 0.02 * lu * lv) { /* parallel: on one line? */
-    double dist = fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / lu;
+    double dist = line_dist(p, q, a);
     if (dist >= hug) return 0;
     double t0 = ((a.x - p.x) * u.x + (a.y - p.y) * u.y) / lu, t1 = ((b.x - p.x) * u.x + (b.y - p.y) * u.y) / lu;
     double lo = fmax(0, fmin(t0, t1)), hi = fmin(lu, fmax(t0, t1));
@@ -58,13 +64,13 @@ static int own_bond(const bg_router *r, int b) {
   return 0;
 }
 
-/* How far beside leg k a parallel run costs (bg_route_hug_cost): HUG,
- * or beside a bond with path and loop lines (bg_router_rings) HUG past the
- * outermost of them, as they move its number out. */
-double bg_route_leg_hug(const bg_router *r, int leg) {
-  double ring = r->ring ? r->ring[r->ix.lbond[leg]] : 0;
-  return ring > 0 ? ring + HUG : HUG;
-}
+/* How far the path and loop lines beside leg k's bond reach (0: none). */
+static double leg_ring(const bg_router *r, int leg) { return r->ring ? r->ring[r->ix.lbond[leg]] : 0; }
+
+/* How far beside leg k a parallel run costs (hug_cost): HUG, or beside a
+ * bond with path and loop lines (bg_router_rings) HUG past the outermost of
+ * them, as they move its number out. */
+double bg_route_leg_hug(const bg_router *r, int leg) { return leg_ring(r, leg) + HUG; }
 
 /* What a point of a run beside leg k, `dist` pt off it, costs: COST_HUG
  * within HUG (read as a doubled bond, over its number); beside a bond with
@@ -73,15 +79,9 @@ double bg_route_leg_hug(const bg_router *r, int leg) {
  * with two loop lines a side, 2.6 pt beside the outer one, issue 31), then
  * COST_HUG for HUG more (over its number, which they moved out). */
 static double hug_cost(const bg_router *r, int leg, double dist) {
-  double ring = r->ring ? r->ring[r->ix.lbond[leg]] : 0;
+  double ring = leg_ring(r, leg);
   if (ring > 0 && dist < ring + RING_NEAR) return COST_RING;
   return dist < bg_route_leg_hug(r, leg) ? COST_HUG : 0;
-}
-
-/* The distance of point a from the line through p and q. */
-static double line_dist(bg_vec p, bg_vec q, bg_vec a) {
-  bg_vec u = bg_vsub(q, p);
-  return fabs((a.x - p.x) * u.y - (a.y - p.y) * u.x) / bg_vlen(u);
 }
 
 /* What crossing leg k of the near index costs the current route. */

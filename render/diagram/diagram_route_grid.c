@@ -94,7 +94,8 @@ int bg_route_nearest_line(const double *a, int n, double v) {
 
 /* The lanes beside every node box in window [wx0,wx1]×[wy0,wy1] as
  * candidate lines, and with layer lines drawn (bg_router_rings) those
- * RING_GAP past the outermost beside each bond. */
+ * HUG past the outermost beside each axis-parallel bond (where a run beside
+ * it is free: hug_cost). */
 void bg_route_add_lanes(bg_router *r, double wx0, double wy0, double wx1, double wy1) {
   const bg_diagram_layout *L = r->L;
   /* the nodes in the window's cells; in a window of more than 1 024 cells

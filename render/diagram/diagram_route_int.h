@@ -39,8 +39,8 @@
 #define HUG 12.0
 #define RING_NEAR 3.5         /* a signal nearer a bond's outermost path or loop line runs beside it
                                  (the figures checker's "beside": 3 pt; bg_router_rings) */
-#define RING_GAP 6.0          /* where a signal runs past a bond's outermost layer line: a diagonal
-                                 stub's end (ring_escape), a candidate line (bg_route_add_lanes) */
+#define RING_GAP 6.0          /* how far past a bond's outermost layer line a diagonal stub out of a
+                                 corner ends (ring_escape) */
 #define COST_CORNER 20.0      /* a port at a box's corner, not on a side */
 #define COST_NUMBER 40.0      /* passing a bond's middle, where its number goes */
 #define COST_OBLIQUE 2.5      /* times a crossing, for a slanted bond (not at a right angle) */

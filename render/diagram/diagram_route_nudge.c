@@ -82,12 +82,10 @@ static int index_segment(const bg_router *r, const struct routed *rt, bg_vec a, 
 
 /* What the segments q[0..m] cost past their length (bg_route_seg_cost:
  * crossings, runs through boxes or beside bonds, a bond's number or end
- * passed), and (*near) how far segment q[mid]-q[mid+1] runs beside other
- * sources' signals. */
-static double penalty(bg_router *r, const bg_vec *q, int m, int mid, int group, double *near) {
-  double c = 0, nearest;
+ * passed). */
+static double penalty(bg_router *r, const bg_vec *q, int m) {
+  double c = 0;
   for (int k = 0; k < m; k++) c += bg_route_seg_cost(r, q[k], q[k + 1], -1) - bg_vlen(bg_vsub(q[k + 1], q[k]));
-  *near = near_run(r, q[mid], q[mid + 1], group, &nearest);
   return c;
 }
 
@@ -124,7 +122,8 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   double len = bg_vlen(bg_vsub(q, p)), nearest;
   int group = rt->group;
   if (len <= 8 || (fabs(p.x - q.x) > 1e-9 && fabs(p.y - q.y) > 1e-9)) return 0;
-  if (near_run(r, p, q, group, &nearest) <= 8) return 0;
+  double best = near_run(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
+  if (best <= 8) return 0;
   bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len), nrm = bg_v(-u.y, u.x);
   int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, m = hi - lo, mid = i - lo;
   if (i == 0 && !from_port) return 0; /* a branch's start on its trunk stays */
@@ -137,7 +136,7 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   bg_vec keep[3], old[4], chosen[4];
   memcpy(old, pts + lo, (size_t)(m + 1) * sizeof *old);
   for (int k = 0; k < m; k++) keep[k] = r->ix.sb[own[k]], r->ix.sb[own[k]] = r->ix.sa[own[k]]; /* parked */
-  double near0, pen0 = penalty(r, old, m, mid, group, &near0), best = near0, side = nearest > 0 ? 1 : -1;
+  double pen0 = penalty(r, old, m), side = nearest > 0 ? 1 : -1;
   int found = 0;
   for (int t = 0; t < 4; t++) { /* away from the nearest by what it takes, or 3 pt more; then past it */
     double shift = t < 2 ? -side * (SIG_NEAR + 3 * t - fabs(nearest)) : side * (fabs(nearest) + SIG_NEAR + 3 * (t - 2));
@@ -154,7 +153,7 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
       ok &= a.x * a0.x + a.y * a0.y > 0 && bg_vlen(a) >= least;
     }
     if (!ok) continue;
-    double near, pen = penalty(r, moved, m, mid, group, &near);
+    double moved_nearest, near = near_run(r, moved[mid], moved[mid + 1], group, &moved_nearest), pen = penalty(r, moved, m);
     /* nothing crossed or passed that was not before, and less beside others */
     if (pen <= pen0 + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
   }

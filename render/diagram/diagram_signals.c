@@ -278,7 +278,7 @@ static double *layer_rings(const bg_diagram *d) {
     int most = d->side_total[2 * b] > d->side_total[2 * b + 1] ? d->side_total[2 * b] : d->side_total[2 * b + 1];
     if (!most) continue;
     if (!ring) ring = bg_xcalloc((size_t)d->m->nbond, sizeof *ring);
-    ring[b] = d->st.layer_offset + bg_layer_step(&d->st) * (most - 1) + d->st.layer_width / 2;
+    ring[b] = bg_layer_line(&d->st, most - 1) + d->st.layer_width / 2;
   }
   return ring;
 }
