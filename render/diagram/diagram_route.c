@@ -335,7 +335,7 @@ void bg_route_keep(bg_router *r, const bg_vec *pts, int n) {
     r->caproute = 2 * r->caproute + 16;
     r->route = bg_xrealloc(r->route, (size_t)r->caproute * sizeof *r->route);
   }
-  r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group};
+  r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group, 0, 0};
   for (int i = 0; i + 1 < n; i++) bg_near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group);
   if (n >= 2) r->ix.slast[r->ix.nseg - 1] = 1;
 }

@@ -48,74 +48,95 @@ static int branch_off(bg_router *r, bg_vec p, bg_vec q) {
   return 0;
 }
 
-/* Segment pts[i]-pts[i+1] round one one-port whose bond it crosses: the U's
- * four points into u (returns 1), else 0. */
+/* The U off p-q (unit u, length len) round the one-port whose bond leg
+ * `leg` it crosses, into u4, the nearest clear of 3, 6 or 9 pt; returns
+ * where along p-q it starts, or -1 when none is clear. */
+static double leg_detour(bg_router *r, bg_vec p, bg_vec u, double len, int leg, bg_vec u4[4]) {
+  const bg_diagram_layout *L = r->L;
+  bg_vec w;
+  int e = leg_one_port(r, leg, &w);
+  if (e < 0 || fabs(u.x * w.x + u.y * w.y) > 0.01 || (fabs(u.x) > 1e-9 && fabs(u.y) > 1e-9)) return -1;
+  bg_vec a = r->ix.la[leg], z = r->ix.lb[leg];
+  double den = u.x * w.y - u.y * w.x, t = ((a.x - p.x) * w.y - (a.y - p.y) * w.x) / den; /* the crossing along p-q */
+  bg_vec X = bg_vadd(p, bg_vscale(u, t)), n = bg_v(-u.y, u.x);
+  w = n.x * w.x + n.y * w.y > 0 ? n : bg_vscale(n, -1); /* the U's legs on the axes, as the route's */
+  double a0 = 1e300, a1 = -1e300, depth = 0;
+  for (int k = 0; k < 6; k++) { /* the element's box and the bond's end must lie inside the U */
+    bg_vec c = k == 4 ? a : k == 5 ? z
+               : bg_v(L->nx[e] + (k & 1 ? 0.5 : -0.5) * L->nw[e], L->ny[e] + (k & 2 ? 0.5 : -0.5) * L->nh[e]);
+    double du = (c.x - X.x) * u.x + (c.y - X.y) * u.y, dw = (c.x - X.x) * w.x + (c.y - X.y) * w.y;
+    if (k >= 4 && dw < 0) continue; /* the leg's other end, behind the crossing */
+    a0 = fmin(a0, du), a1 = fmax(a1, du), depth = fmax(depth, dw);
+  }
+  double start = -1;
+  for (int g = 0; g < 3; g++) { /* the nearest clear U first, off other lines, not beside them if any */
+    static const double gap[3] = {3, 6, 9};
+    double d = depth + gap[g], nearest;
+    bg_vec c[4];
+    if (t + a0 - gap[g] < 1 || t + a1 + gap[g] > len - 1 || 2 * d > DETOUR_MAX) continue;
+    c[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), c[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
+    c[1] = bg_vadd(c[0], bg_vscale(w, d)), c[2] = bg_vadd(c[3], bg_vscale(w, d));
+    if (branch_off(r, c[0], c[3])) continue;
+    double extra = 0, beside = 0;
+    for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, c[k], c[k + 1], -1) - bg_vlen(bg_vsub(c[k + 1], c[k]));
+    if (extra >= COST_CROSS_BOND / 2) continue; /* a bond crossed, a box run through, a line run on */
+    for (int k = 0; k < 3; k++) beside += bg_route_beside_others(r, c[k], c[k + 1], r->group, &nearest);
+    if (start < 0) start = t + a0 - gap[g], memcpy(u4, c, sizeof c);
+    if (beside <= 8) return t + a0 - gap[g] + (memcpy(u4, c, sizeof c), 0);
+  }
+  return start;
+}
+
+/* Segment pts[i]-pts[i+1] round the first one-port along it whose bond it
+ * crosses and a U avoids (the caller goes on along the rest, so a U
+ * further on is not taken before a nearer one): the U's four points into
+ * u4 (returns 1), else 0. */
 static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) {
   const bg_diagram_layout *L = r->L;
   bg_vec p = pts[i], q = pts[i + 1];
-  double len = bg_vlen(bg_vsub(q, p));
+  double len = bg_vlen(bg_vsub(q, p)), first = INFINITY;
   if (len <= 0 || (r->group >= 0 && bg_route_group_runs_on(r, p, q))) return 0;
   bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len);
   bg_near_box(&r->ix, fmin(p.x, q.x), fmin(p.y, q.y), fmax(p.x, q.x), fmax(p.y, q.y), &r->nl);
   int nk = r->nl.n, *legs = bg_xcalloc((size_t)nk + 1, sizeof *legs);
   for (int j = 0; j < nk; j++) legs[j] = r->nl.k[j];
-  int found = 0;
-  for (int j = 0; j < nk && !found; j++) {
+  for (int j = 0; j < nk; j++) {
     int leg = legs[j] - L->nnode;
-    bg_vec w;
+    bg_vec cand[4];
     if (leg < 0 || bg_route_seg_meet(p, q, r->ix.la[leg], r->ix.lb[leg], 3, HUG, NULL, 0) != 1) continue;
-    int e = leg_one_port(r, leg, &w);
-    if (e < 0 || fabs(u.x * w.x + u.y * w.y) > 0.01 || (fabs(u.x) > 1e-9 && fabs(u.y) > 1e-9)) continue;
-    bg_vec a = r->ix.la[leg], z = r->ix.lb[leg];
-    double den = u.x * w.y - u.y * w.x, t = ((a.x - p.x) * w.y - (a.y - p.y) * w.x) / den; /* the crossing along p-q */
-    bg_vec X = bg_vadd(p, bg_vscale(u, t)), n = bg_v(-u.y, u.x);
-    w = n.x * w.x + n.y * w.y > 0 ? n : bg_vscale(n, -1); /* the U's legs on the axes, as the route's */
-    double a0 = 1e300, a1 = -1e300, depth = 0;
-    for (int k = 0; k < 6; k++) { /* the element's box and the bond's end must lie inside the U */
-      bg_vec c = k == 4 ? a : k == 5 ? z
-                 : bg_v(L->nx[e] + (k & 1 ? 0.5 : -0.5) * L->nw[e], L->ny[e] + (k & 2 ? 0.5 : -0.5) * L->nh[e]);
-      double du = (c.x - X.x) * u.x + (c.y - X.y) * u.y, dw = (c.x - X.x) * w.x + (c.y - X.y) * w.y;
-      if (k >= 4 && dw < 0) continue; /* the leg's other end, behind the crossing */
-      a0 = fmin(a0, du), a1 = fmax(a1, du), depth = fmax(depth, dw);
-    }
-    for (int g = 0; g < 3 && !found; g++) { /* the nearest clear U first, off other lines */
-      static const double gap[3] = {3, 6, 9};
-      double d = depth + gap[g];
-      if (t + a0 - gap[g] < 1 || t + a1 + gap[g] > len - 1 || 2 * d > DETOUR_MAX) continue;
-      u4[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), u4[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
-      u4[1] = bg_vadd(u4[0], bg_vscale(w, d)), u4[2] = bg_vadd(u4[3], bg_vscale(w, d));
-      if (branch_off(r, u4[0], u4[3])) continue;
-      double extra = 0;
-      for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, u4[k], u4[k + 1], -1) - bg_vlen(bg_vsub(u4[k + 1], u4[k]));
-      found = extra < COST_CROSS_BOND / 2; /* no bond crossed, no box run through, no line run on */
-    }
+    double at = leg_detour(r, p, u, len, leg, cand);
+    if (at >= 0 && at < first) first = at, memcpy(u4, cand, sizeof cand);
   }
   free(legs);
-  return found;
+  return first < INFINITY;
 }
 
 int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap) {
-  if (k < 0 || k >= r->nroute) return n;
-  const struct routed *rt = &r->route[k];
+  if (k < 0 || k >= r->nroute || r->route[k].add1 < 0) return n;
+  struct routed *rt = &r->route[k];
   r->from_node = rt->from, r->to_node = rt->to, r->group = rt->group, r->bond = -1;
-  r->skip0 = rt->seg0, r->skip1 = rt->seg1, r->skip2 = r->ix.nseg;
+  r->skip0 = rt->seg0, r->skip1 = rt->seg1, r->add0 = rt->add0, r->add1 = rt->add1, r->skip2 = r->ix.nseg;
   for (int i = first < 0 ? 0 : first; i + 1 < n && n + 4 <= cap; i++) {
     bg_vec u4[4];
     if (!detour_segment(r, pts, i, u4)) continue;
     /* the index: the crossing segment cut short at the U, the rest added;
-     * that segment is the route's own or, for a second U on one segment,
-     * the rest the first U added (from skip2 on) */
-    for (int s = rt->seg0; s < r->ix.nseg; s = s + 1 == rt->seg1 ? r->skip2 : s + 1)
-      if (bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9) {
-        r->ix.sb[s] = u4[0];
-        break;
-      }
+     * that segment is the route's own, or the rest an earlier U added (in
+     * this call, from skip2 on, or an earlier one, add0 to add1) */
+    const int from[3] = {r->skip0, r->add0, r->skip2}, to[3] = {r->skip1, r->add1, r->ix.nseg};
+    for (int range = 0, cut = 0; range < 3 && !cut; range++)
+      for (int s = from[range]; s < to[range] && !cut; s++)
+        if (bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9)
+          r->ix.sb[s] = u4[0], cut = 1;
     for (int j = 0; j < 3; j++) bg_near_add_signal(&r->ix, u4[j], u4[j + 1], rt->group);
     bg_near_add_signal(&r->ix, u4[3], pts[i + 1], rt->group);
     memmove(pts + i + 5, pts + i + 1, (size_t)(n - i - 1) * sizeof *pts);
     memcpy(pts + i + 1, u4, sizeof u4);
     n += 4, i += 3; /* on with the rest of the crossing segment */
   }
-  r->skip0 = r->skip1 = 0, r->skip2 = INT_MAX;
+  if (r->ix.nseg > r->skip2) { /* this call's U's, for a second call; untracked after two */
+    int again = rt->add1 > rt->add0;
+    rt->add0 = r->skip2, rt->add1 = again ? -1 : r->ix.nseg;
+  }
+  r->skip0 = r->skip1 = r->add0 = r->add1 = 0, r->skip2 = INT_MAX;
   return n;
 }

@@ -127,10 +127,13 @@ struct bg_router {
   /* every route so far (bg_route_detour): its segments in the index, ends, group */
   struct routed {
     int seg0, seg1, from, to, group;
+    int add0, add1; /* the index segments its first U's added (bg_route_detour), past seg1;
+                       add1 < 0: U's from a second call too, not tracked (no third) */
   } *route;
   int nroute, caproute;
   int skip0, skip1, skip2; /* index segments of the current route (bg_route_detour): skip0
                               to skip1, and from skip2 on (INT_MAX: none) */
+  int add0, add1;          /* and add0 to add1 (its earlier U's) */
 };
 
 /* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */
@@ -188,6 +191,10 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
 double bg_route_leg_hug(const bg_router *r, int leg);
 /* What the current route's `ends` argument is: 0 a signal, 1 a bond, 2 a bond in end_zone. */
 static inline int bg_route_ends(const bg_router *r) { return r->bond < 0 ? 0 : r->end_zone ? 2 : 1; }
+/* How far axis-parallel segment p-q runs within SIG_BESIDE of signals of
+ * sources other than `group`, summed; *nearest gets the offset of the
+ * nearest across it (diagram_route_nudge.c). */
+double bg_route_beside_others(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest);
 /* Whether index segment s is the current route's own (bg_route_detour). */
 int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's

@@ -23,7 +23,7 @@
 /* How far segment p-q (axis-parallel) runs within SIG_BESIDE of other
  * sources' signals (group >= 0, not `group`), summed; *nearest gets the
  * offset of the nearest of them across p-q (along its left normal). */
-static double near_run(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest) {
+double bg_route_beside_others(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest) {
   double len = bg_vlen(bg_vsub(q, p)), total = 0;
   *nearest = INFINITY;
   if (len <= 0) return 0;
@@ -37,7 +37,7 @@ static double near_run(bg_router *r, bg_vec p, bg_vec q, int group, double *near
     double lv = bg_vlen(v);
     if (lv <= 0 || fabs(v.x * u.y - v.y * u.x) > 0.02 * lv) continue; /* not parallel */
     double off = (a.x - p.x) * nrm.x + (a.y - p.y) * nrm.y;
-    if (fabs(off) >= SIG_BESIDE) continue;
+    if (fabs(off) >= SIG_BESIDE - 1e-6) continue; /* SIG_NEAR off is clear (rounding aside) */
     double t0 = (a.x - p.x) * u.x + (a.y - p.y) * u.y, t1 = (b.x - p.x) * u.x + (b.y - p.y) * u.y;
     double shared = fmin(len, fmax(t0, t1)) - fmax(0, fmin(t0, t1));
     if (shared <= 1) continue;
@@ -54,19 +54,27 @@ static int own_segment(const bg_router *r, int s, const bg_vec *pts, int n) {
   return 0;
 }
 
-/* Whether another route of the route's source (a branch, or the trunk a
- * branch is taken off) starts, ends or runs on segment p-q: moving it
- * would leave the branch's dot beside the line. */
-static int branched_on(bg_router *r, bg_vec p, bg_vec q, int group, const bg_vec *pts, int n) {
-  bg_near_signals(&r->ix, fmin(p.x, q.x) - 1, fmin(p.y, q.y) - 1, fmax(p.x, q.x) + 1, fmax(p.y, q.y) + 1, &r->nl);
+/* Where other routes of the route's source (a branch, or the trunk a
+ * branch is taken off) meet segment a-b, whose end `moving` (a, b, or
+ * neither: NULL) moves: their ends on a-b go into feet[] (at most
+ * MAX_FEET). Returns how many, or -1 where they cannot follow: one runs
+ * on a-b, or meets it at the moving end. */
+#define MAX_FEET 8
+static int branch_feet(bg_router *r, bg_vec a, bg_vec b, const bg_vec *moving, int group, const bg_vec *pts, int n,
+                       bg_vec *feet) {
+  int nf = 0;
+  bg_near_signals(&r->ix, fmin(a.x, b.x) - 1, fmin(a.y, b.y) - 1, fmax(a.x, b.x) + 1, fmax(a.y, b.y) + 1, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];
-    if (r->ix.sgrp[s] != group || bg_vlen(bg_vsub(r->ix.sb[s], r->ix.sa[s])) <= 0 || own_segment(r, s, pts, n)) continue;
-    if (bg_point_seg(r->ix.sa[s], p, q) < 0.01 || bg_point_seg(r->ix.sb[s], p, q) < 0.01 ||
-        bg_point_seg(p, r->ix.sa[s], r->ix.sb[s]) < 0.01 || bg_point_seg(q, r->ix.sa[s], r->ix.sb[s]) < 0.01)
-      return 1;
+    bg_vec sa = r->ix.sa[s], sb = r->ix.sb[s];
+    if (r->ix.sgrp[s] != group || bg_vlen(bg_vsub(sb, sa)) <= 0 || own_segment(r, s, pts, n)) continue;
+    int on_a = bg_point_seg(sa, a, b) < 0.01, on_b = bg_point_seg(sb, a, b) < 0.01;
+    if (on_a && on_b) return -1; /* runs on it */
+    if (moving && bg_point_seg(*moving, sa, sb) < 0.01) return -1;
+    if ((on_a || on_b) && nf == MAX_FEET) return -1;
+    if (on_a || on_b) feet[nf++] = on_a ? sa : sb;
   }
-  return 0;
+  return nf;
 }
 
 /* The index segment of route rt that runs from a to b, or -1: among its
@@ -87,6 +95,14 @@ static double penalty(bg_router *r, const bg_vec *q, int m) {
   double c = 0;
   for (int k = 0; k < m; k++) c += bg_route_seg_cost(r, q[k], q[k + 1], -1) - bg_vlen(bg_vsub(q[k + 1], q[k]));
   return c;
+}
+
+/* How far the segments q[0..m] run beside other sources' signals, summed:
+ * a move counts what its stretched neighbours come to run beside too. */
+static double beside_all(bg_router *r, const bg_vec *q, int m, int group) {
+  double total = 0, nearest;
+  for (int k = 0; k < m; k++) total += bg_route_beside_others(r, q[k], q[k + 1], group, &nearest);
+  return total;
 }
 
 /* Whether a-b runs along unit vector w (either way). */
@@ -122,21 +138,27 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   double len = bg_vlen(bg_vsub(q, p)), nearest;
   int group = rt->group;
   if (len <= 8 || (fabs(p.x - q.x) > 1e-9 && fabs(p.y - q.y) > 1e-9)) return 0;
-  double best = near_run(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
+  double best = bg_route_beside_others(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
   if (best <= 8) return 0;
   bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len), nrm = bg_v(-u.y, u.x);
   int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, m = hi - lo, mid = i - lo;
   if (i == 0 && !from_port) return 0; /* a branch's start on its trunk stays */
   if ((i > 0 && !along(pts[i - 1], p, nrm)) || (i + 2 < n && !along(q, pts[i + 2], nrm))) return 0;
-  int own[3];
-  for (int k = 0; k < m; k++)
-    if ((own[k] = index_segment(r, rt, pts[lo + k], pts[lo + k + 1])) < 0 ||
-        branched_on(r, pts[lo + k], pts[lo + k + 1], group, pts, n))
-      return 0;
+  /* a branch may leave a neighbour where the neighbour, stretched or
+   * shortened at its moving end, still passes; none may leave the segment */
+  int own[3], nfeet[3];
+  bg_vec feet[3][MAX_FEET];
+  for (int k = 0; k < m; k++) {
+    const bg_vec *moving = k == mid ? NULL : k < mid ? &pts[lo + k + 1] : &pts[lo + k];
+    if ((own[k] = index_segment(r, rt, pts[lo + k], pts[lo + k + 1])) < 0) return 0;
+    nfeet[k] = branch_feet(r, pts[lo + k], pts[lo + k + 1], moving, group, pts, n, feet[k]);
+    if (nfeet[k] < 0 || (k == mid && nfeet[k] > 0)) return 0;
+  }
   bg_vec keep[3], old[4], chosen[4];
   memcpy(old, pts + lo, (size_t)(m + 1) * sizeof *old);
   for (int k = 0; k < m; k++) keep[k] = r->ix.sb[own[k]], r->ix.sb[own[k]] = r->ix.sa[own[k]]; /* parked */
   double pen0 = penalty(r, old, m), side = nearest > 0 ? 1 : -1;
+  best = beside_all(r, old, m, group);
   int found = 0;
   for (int t = 0; t < 4; t++) { /* away from the nearest by what it takes, or 3 pt more; then past it */
     double shift = t < 2 ? -side * (SIG_NEAR + 3 * t - fabs(nearest)) : side * (fabs(nearest) + SIG_NEAR + 3 * (t - 2));
@@ -151,10 +173,11 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
       bg_vec a = bg_vsub(moved[k + 1], moved[k]), a0 = bg_vsub(old[k + 1], old[k]);
       double least = lo + k + 2 == n ? 10 : MIN_LEG; /* the arrow's leg */
       ok &= a.x * a0.x + a.y * a0.y > 0 && bg_vlen(a) >= least;
+      for (int f = 0; f < nfeet[k]; f++) ok &= bg_point_seg(feet[k][f], moved[k], moved[k + 1]) < 0.01;
     }
     if (!ok) continue;
-    double moved_nearest, near = near_run(r, moved[mid], moved[mid + 1], group, &moved_nearest), pen = penalty(r, moved, m);
-    /* nothing crossed or passed that was not before, and less beside others */
+    double near = beside_all(r, moved, m, group), pen = penalty(r, moved, m);
+    /* nothing crossed or passed that was not before, and less beside others (its neighbours too) */
     if (pen <= pen0 + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
   }
   for (int k = 0; k < m; k++) r->ix.sb[own[k]] = keep[k];

@@ -293,6 +293,8 @@ void bg_route_signals(bg_diagram *d) {
   walk_signals(d, rt);
   detour_routes(d, rt);
   nudge_routes(d, rt);
+  detour_routes(d, rt); /* the room a U needs, freed by the nudges */
+  nudge_routes(d, rt);  /* and the U's off others' lines */
   bg_router_free(rt);
   free(ring);
 }

@@ -125,6 +125,73 @@ static void test_two_detours_on_one_segment(void) {
   fx_free(&f);
 }
 
+/* Drawn and indexed segments of group g agree: every drawn segment in the
+ * index, and no other live one (a U's remainder left whole besides). */
+static void index_matches(const bg_router *r, int g, const bg_vec *pts, int n) {
+  int drawn = 0, live = 0;
+  for (int i = 0; i + 1 < n; i++) drawn += indexed(r, g, pts[i], pts[i + 1]);
+  for (int s = 0; s < r->ix.nseg; s++) live += r->ix.sgrp[s] == g && bg_vlen(bg_vsub(r->ix.sa[s], r->ix.sb[s])) > 1e-9;
+  INT_EQ(drawn, n - 1);
+  INT_EQ(live, n - 1);
+}
+
+/* A segment crossing two one-ports' bonds goes round both whichever way it
+ * runs: the U nearest its start first, as the pass goes on along the rest
+ * (right to left it took R1's U only when C0's bond came first in the
+ * index's order and the part before it was passed over). A second call,
+ * once a line on R1's U has moved (bg_route_nudge), takes that U too, on
+ * the remainder the first call's U round C0 left, and cuts it in the index
+ * (the route's own, add0..add1; before, left whole beside the U). */
+static void test_detours_nearest_first_and_again(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  const bg_diagram_layout *L = d->L;
+  int c0 = bg_model_find_elem(f.m, "C0"), r1 = bg_model_find_elem(f.m, "R1");
+  int n0 = bg_model_find_elem(f.m, "n0"), s2 = bg_model_find_elem(f.m, "s2");
+  OK(c0 >= 0 && r1 >= 0 && n0 >= 0 && s2 >= 0);
+  double y = (L->ny[c0] + L->nh[c0] / 2 + L->ny[n0] - L->nh[n0] / 2) / 2;
+  const int g = 5;
+  { /* right to left */
+    bg_vec pts[16] = {bg_v(L->nx[r1] + 30, y), bg_v(L->nx[c0] - 30, y)};
+    bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+    r->from_node = n0, r->to_node = s2, r->group = g, r->bond = -1;
+    bg_route_keep(r, pts, 2);
+    int n = bg_route_detour(r, 0, 0, pts, 2, 16);
+    INT_EQ(n, 10);
+    if (n == 10) {
+      OK(pts[1].x > L->nx[r1] && pts[4].x < L->nx[r1] && pts[5].x > L->nx[c0] && pts[8].x < L->nx[c0]);
+      index_matches(r, g, pts, n);
+    }
+    bg_router_free(r);
+  }
+  { /* left to right, R1's U first blocked by lines on its three tops */
+    bg_vec pts[16] = {bg_v(L->nx[c0] - 30, y), bg_v(L->nx[r1] + 30, y)};
+    bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+    double top = L->ny[r1] - L->nh[r1] / 2;
+    r->from_node = r->to_node = -1, r->bond = -1, r->group = 9;
+    for (int k = 1; k <= 3; k++) {
+      bg_vec line[2] = {bg_v(L->nx[r1] - 60, top - 3 * k), bg_v(L->nx[r1] + 60, top - 3 * k)};
+      bg_route_keep(r, line, 2);
+    }
+    r->from_node = n0, r->to_node = s2, r->group = g;
+    bg_route_keep(r, pts, 2);
+    int n = bg_route_detour(r, 3, 0, pts, 2, 16);
+    INT_EQ(n, 6); /* C0's U only */
+    OK(n == 6 && pts[1].x < L->nx[c0] && pts[4].x > L->nx[c0]);
+    for (int s = 0; s < r->ix.nseg; s++) /* the lines moved well clear */
+      if (r->ix.sgrp[s] == 9) bg_near_move_signal(&r->ix, s, bg_vadd(r->ix.sa[s], bg_v(0, -200)), bg_vadd(r->ix.sb[s], bg_v(0, -200)));
+    n = bg_route_detour(r, 3, 0, pts, n, 16);
+    INT_EQ(n, 10);
+    if (n == 10) {
+      OK(pts[1].x < L->nx[c0] && pts[4].x > L->nx[c0] && pts[5].x < L->nx[r1] && pts[8].x > L->nx[r1]);
+      index_matches(r, g, pts, n);
+    }
+    bg_router_free(r);
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
 /* A run beside a bond with path and loop lines (bg_router_rings): among
  * them or within RING_NEAR of the outermost it costs COST_RING a point,
  * beyond that COST_HUG up to HUG past them (where the bond's number goes),
@@ -198,10 +265,47 @@ static void test_nudge_apart(void) {
   fx_free(&f);
 }
 
+/* A branch of the route's source taken off a neighbour of the segment
+ * moves nothing where its foot stays on the neighbour once stretched or
+ * cut short: the segment moves (before, any branch on a neighbour held it,
+ * as reactions20's c11 -> k4 beside c15 -> k16 for 97 pt); a foot on the
+ * part a move away would cut off sends it past the other line instead (the
+ * leg stretched), and one on the segment itself holds it. */
+static void test_nudge_carries_branches(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  if (d) {
+    const bg_diagram_layout *L = d->L;
+    const double foot[3] = {50, 99, -1}; /* along the first leg; -1: on the segment */
+    for (int c = 0; c < 3; c++) {
+      bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+      double x0 = r->fx1 + 100, y0 = r->fy0;
+      bg_vec other[2] = {bg_v(x0 + 104, y0 - 50), bg_v(x0 + 104, y0 + 250)};
+      r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
+      bg_route_keep(r, other, 2);
+      bg_vec pts[4] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 200), bg_v(x0 + 200, y0 + 200)};
+      r->group = 3;
+      bg_route_keep(r, pts, 4);
+      bg_vec at = foot[c] < 0 ? bg_v(x0 + 100, y0 + 80) : bg_v(x0 + foot[c], y0);
+      bg_vec branch[2] = {at, foot[c] < 0 ? bg_vadd(at, bg_v(-60, 0)) : bg_vadd(at, bg_v(0, -60))};
+      bg_route_keep(r, branch, 2);
+      int moved = bg_route_nudge(r, 1, 0, pts, 4);
+      INT_EQ(moved, c < 2);
+      OK(fabs(pts[1].x - (x0 + (c == 0 ? 98 : c == 1 ? 110 : 100))) < 1e-9 && pts[2].x == pts[1].x);
+      OK(bg_point_seg(at, pts[0], pts[1]) < 1e-9 || c == 2); /* the foot on the leg still */
+      bg_router_free(r);
+    }
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
 int main(void) {
   test_axis_lines_bounded();
   test_two_detours_on_one_segment();
   test_runs_beside_rings();
   test_nudge_apart();
+  test_detours_nearest_first_and_again();
+  test_nudge_carries_branches();
   return bg_t_done();
 }
