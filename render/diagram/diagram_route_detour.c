@@ -68,23 +68,18 @@ static double leg_detour(bg_router *r, bg_vec p, bg_vec u, double len, int leg, 
     if (k >= 4 && dw < 0) continue; /* the leg's other end, behind the crossing */
     a0 = fmin(a0, du), a1 = fmax(a1, du), depth = fmax(depth, dw);
   }
-  double start = -1;
-  for (int g = 0; g < 3; g++) { /* the nearest clear U first, off other lines, not beside them if any */
+  for (int g = 0; g < 3; g++) { /* the nearest clear U first, off other lines */
     static const double gap[3] = {3, 6, 9};
-    double d = depth + gap[g], nearest;
-    bg_vec c[4];
+    double d = depth + gap[g];
     if (t + a0 - gap[g] < 1 || t + a1 + gap[g] > len - 1 || 2 * d > DETOUR_MAX) continue;
-    c[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), c[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
-    c[1] = bg_vadd(c[0], bg_vscale(w, d)), c[2] = bg_vadd(c[3], bg_vscale(w, d));
-    if (branch_off(r, c[0], c[3])) continue;
-    double extra = 0, beside = 0;
-    for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, c[k], c[k + 1], -1) - bg_vlen(bg_vsub(c[k + 1], c[k]));
-    if (extra >= COST_CROSS_BOND / 2) continue; /* a bond crossed, a box run through, a line run on */
-    for (int k = 0; k < 3; k++) beside += bg_route_beside_others(r, c[k], c[k + 1], r->group, &nearest);
-    if (start < 0) start = t + a0 - gap[g], memcpy(u4, c, sizeof c);
-    if (beside <= 8) return t + a0 - gap[g] + (memcpy(u4, c, sizeof c), 0);
+    u4[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), u4[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
+    u4[1] = bg_vadd(u4[0], bg_vscale(w, d)), u4[2] = bg_vadd(u4[3], bg_vscale(w, d));
+    if (branch_off(r, u4[0], u4[3])) continue;
+    double extra = 0;
+    for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, u4[k], u4[k + 1], -1) - bg_vlen(bg_vsub(u4[k + 1], u4[k]));
+    if (extra < COST_CROSS_BOND / 2) return t + a0 - gap[g]; /* no bond crossed, no box run through, no line run on */
   }
-  return start;
+  return -1;
 }
 
 /* Segment pts[i]-pts[i+1] round the first one-port along it whose bond it

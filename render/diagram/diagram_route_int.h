@@ -191,10 +191,6 @@ int bg_route_seg_meet(bg_vec p, bg_vec q, bg_vec a, bg_vec b, double near, doubl
 double bg_route_leg_hug(const bg_router *r, int leg);
 /* What the current route's `ends` argument is: 0 a signal, 1 a bond, 2 a bond in end_zone. */
 static inline int bg_route_ends(const bg_router *r) { return r->bond < 0 ? 0 : r->end_zone ? 2 : 1; }
-/* How far axis-parallel segment p-q runs within SIG_BESIDE of signals of
- * sources other than `group`, summed; *nearest gets the offset of the
- * nearest across it (diagram_route_nudge.c). */
-double bg_route_beside_others(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest);
 /* Whether index segment s is the current route's own (bg_route_detour). */
 int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's

@@ -23,7 +23,7 @@
 /* How far segment p-q (axis-parallel) runs within SIG_BESIDE of other
  * sources' signals (group >= 0, not `group`), summed; *nearest gets the
  * offset of the nearest of them across p-q (along its left normal). */
-double bg_route_beside_others(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest) {
+static double near_run(bg_router *r, bg_vec p, bg_vec q, int group, double *nearest) {
   double len = bg_vlen(bg_vsub(q, p)), total = 0;
   *nearest = INFINITY;
   if (len <= 0) return 0;
@@ -101,7 +101,7 @@ static double penalty(bg_router *r, const bg_vec *q, int m) {
  * a move counts what its stretched neighbours come to run beside too. */
 static double beside_all(bg_router *r, const bg_vec *q, int m, int group) {
   double total = 0, nearest;
-  for (int k = 0; k < m; k++) total += bg_route_beside_others(r, q[k], q[k + 1], group, &nearest);
+  for (int k = 0; k < m; k++) total += near_run(r, q[k], q[k + 1], group, &nearest);
   return total;
 }
 
@@ -138,7 +138,7 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   double len = bg_vlen(bg_vsub(q, p)), nearest;
   int group = rt->group;
   if (len <= 8 || (fabs(p.x - q.x) > 1e-9 && fabs(p.y - q.y) > 1e-9)) return 0;
-  double best = bg_route_beside_others(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
+  double best = near_run(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
   if (best <= 8) return 0;
   bg_vec u = bg_vscale(bg_vsub(q, p), 1 / len), nrm = bg_v(-u.y, u.x);
   int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, m = hi - lo, mid = i - lo;
