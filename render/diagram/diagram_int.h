@@ -230,8 +230,8 @@ int bg_route_branch(const bg_router *r, bg_vec *at);
 /* Route k (the k-th bg_route), pts[0..n-1] as kept, after all are routed:
  * each crossing of a one-port's bond on its segments from `first` on that
  * a short U round the one-port avoids, taken (at most cap points; the
- * index follows). Called at most twice per route (again after
- * bg_route_nudge has made room). Returns the new number of points. */
+ * index follows). Called again (after bg_route_nudge has made room), the
+ * U's taken before are the route's own. Returns the new number of points. */
 int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap);
 /* Route k, pts[0..n-1] as kept, after all are routed and taken round the
  * one-ports: each segment from `first` on that runs a few points beside

@@ -38,7 +38,7 @@
 
 bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int signals) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
-  r->L = L, r->group = r->branch_k = r->bond = -1, r->skip2 = INT_MAX, r->signals = signals;
+  r->L = L, r->group = r->branch_k = r->bond = r->own = -1, r->signals = signals;
   bg_near_build(L, nbond, skip, signals, &r->ix);
   r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
   for (int k = 0; k < L->nnode; k++)
@@ -328,15 +328,16 @@ int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const dou
   return n;
 }
 
-void bg_route_fence(bg_router *r, bg_vec a, bg_vec b) { bg_near_add_signal(&r->ix, a, b, GROUP_FENCE); }
+void bg_route_fence(bg_router *r, bg_vec a, bg_vec b) { bg_near_add_signal(&r->ix, a, b, GROUP_FENCE, -1); }
 
 void bg_route_keep(bg_router *r, const bg_vec *pts, int n) {
   if (r->nroute == r->caproute) {
     r->caproute = 2 * r->caproute + 16;
     r->route = bg_xrealloc(r->route, (size_t)r->caproute * sizeof *r->route);
   }
-  r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group, 0, 0};
-  for (int i = 0; i + 1 < n; i++) bg_near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group);
+  r->route[r->nroute++] = (struct routed){r->ix.nseg, r->ix.nseg + n - 1, r->from_node, r->to_node, r->group};
+  for (int i = 0; i + 1 < n; i++)
+    bg_near_add_signal(&r->ix, pts[i], pts[i + 1], r->bond >= 0 ? -2 - r->bond : r->group, r->nroute - 1);
   if (n >= 2) r->ix.slast[r->ix.nseg - 1] = 1;
 }
 

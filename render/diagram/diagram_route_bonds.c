@@ -250,7 +250,7 @@ static void keep_clear(bg_router *r, int b) {
   bg_vec u = bg_vscale(d, 1 / len), n = bg_v(-u.y * CLEAR, u.x * CLEAR);
   bg_vec a = bg_vadd(t, bg_vscale(u, 6)), z = bg_vsub(h, bg_vscale(u, 6));
   for (int k = -1; k <= 1; k += 2)
-    bg_near_add_signal(&r->ix, bg_vadd(a, bg_vscale(n, k)), bg_vadd(z, bg_vscale(n, k)), -2 - b);
+    bg_near_add_signal(&r->ix, bg_vadd(a, bg_vscale(n, k)), bg_vadd(z, bg_vscale(n, k)), -2 - b, -1);
 }
 
 /* Routes the bonds marked in route[]: those marked 1 in the bonds' order,

@@ -111,7 +111,7 @@ static double at_end_cost(const bg_router *r, int leg, double at) {
 /* Whether index segment s is the current route's own (bg_route_detour:
  * its first segments and those it added since). */
 int bg_route_own_segment(const bg_router *r, int s) {
-  return (s >= r->skip0 && s < r->skip1) || (s >= r->add0 && s < r->add1) || s >= r->skip2;
+  return r->own >= 0 && r->ix.sroute[s] == r->own;
 }
 
 /* What crossing routed segment s costs: a signal's, or a bond routed

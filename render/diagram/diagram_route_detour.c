@@ -107,31 +107,27 @@ static int detour_segment(bg_router *r, const bg_vec *pts, int i, bg_vec u4[4]) 
 }
 
 int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap) {
-  if (k < 0 || k >= r->nroute || r->route[k].add1 < 0) return n;
-  struct routed *rt = &r->route[k];
-  r->from_node = rt->from, r->to_node = rt->to, r->group = rt->group, r->bond = -1;
-  r->skip0 = rt->seg0, r->skip1 = rt->seg1, r->add0 = rt->add0, r->add1 = rt->add1, r->skip2 = r->ix.nseg;
+  if (k < 0 || k >= r->nroute) return n;
+  const struct routed *rt = &r->route[k];
+  r->from_node = rt->from, r->to_node = rt->to, r->group = rt->group, r->bond = -1, r->own = k;
   for (int i = first < 0 ? 0 : first; i + 1 < n && n + 4 <= cap; i++) {
     bg_vec u4[4];
     if (!detour_segment(r, pts, i, u4)) continue;
-    /* the index: the crossing segment cut short at the U, the rest added;
-     * that segment is the route's own, or the rest an earlier U added (in
-     * this call, from skip2 on, or an earlier one, add0 to add1) */
-    const int from[3] = {r->skip0, r->add0, r->skip2}, to[3] = {r->skip1, r->add1, r->ix.nseg};
-    for (int range = 0, cut = 0; range < 3 && !cut; range++)
-      for (int s = from[range]; s < to[range] && !cut; s++)
-        if (bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9)
-          r->ix.sb[s] = u4[0], cut = 1;
-    for (int j = 0; j < 3; j++) bg_near_add_signal(&r->ix, u4[j], u4[j + 1], rt->group);
-    bg_near_add_signal(&r->ix, u4[3], pts[i + 1], rt->group);
+    /* the index: the crossing segment (the route's own, or the rest an
+     * earlier U added, in this call or an earlier one) cut short at the U,
+     * the rest added */
+    for (int s = rt->seg0; s < r->ix.nseg; s++)
+      if (r->ix.sroute[s] == k && bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 &&
+          bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9) {
+        r->ix.sb[s] = u4[0];
+        break;
+      }
+    for (int j = 0; j < 3; j++) bg_near_add_signal(&r->ix, u4[j], u4[j + 1], rt->group, k);
+    bg_near_add_signal(&r->ix, u4[3], pts[i + 1], rt->group, k);
     memmove(pts + i + 5, pts + i + 1, (size_t)(n - i - 1) * sizeof *pts);
     memcpy(pts + i + 1, u4, sizeof u4);
     n += 4, i += 3; /* on with the rest of the crossing segment */
   }
-  if (r->ix.nseg > r->skip2) { /* this call's U's, for a second call; untracked after two */
-    int again = rt->add1 > rt->add0;
-    rt->add0 = r->skip2, rt->add1 = again ? -1 : r->ix.nseg;
-  }
-  r->skip0 = r->skip1 = r->add0 = r->add1 = 0, r->skip2 = INT_MAX;
+  r->own = -1;
   return n;
 }

@@ -70,6 +70,7 @@ typedef struct near_index {
   int *sgrp; /* per segment: its signal's source (bg_route's group), -1 none;
                 a routed bond b's: -2 - b (seg_cross_cost: dear when it is one of
                 the current route's own); a frame's border: GROUP_FENCE */
+  int *sroute;          /* per segment: the route it is drawn for (bg_router's route[]), -1 none */
   unsigned char *slast; /* per segment: the last of its route (it ends in the arrowhead) */
   int nseg, capseg;
   int *seg_stamp, capstamp;
@@ -127,13 +128,9 @@ struct bg_router {
   /* every route so far (bg_route_detour): its segments in the index, ends, group */
   struct routed {
     int seg0, seg1, from, to, group;
-    int add0, add1; /* the index segments its first U's added (bg_route_detour), past seg1;
-                       add1 < 0: U's from a second call too, not tracked (no third) */
   } *route;
   int nroute, caproute;
-  int skip0, skip1, skip2; /* index segments of the current route (bg_route_detour): skip0
-                              to skip1, and from skip2 on (INT_MAX: none) */
-  int add0, add1;          /* and add0 to add1 (its earlier U's) */
+  int own; /* the route whose index segments are the current route's own (bg_route_detour), -1 none */
 };
 
 /* An end of a signal: where it leaves (or enters) a box, or a point on a bond. */
@@ -178,8 +175,9 @@ void bg_near_free(near_index *ix);
 void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);
 /* The routed signal segments listed in the cells box meets, each once. */
 void bg_near_signals(near_index *ix, double x0, double y0, double x1, double y1, near_list *out);
-/* A routed segment a-b added, of source group (sgrp). */
-void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group);
+/* A routed segment a-b added, of source group (sgrp), drawn for route
+ * `route` (bg_router's route[]; -1 none: a fence, a bond's clearance). */
+void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group, int route);
 /* Routed segment s moved to a-b (bg_route_nudge): its index entry keeps its
  * number, so a route's range of segments still holds it. */
 void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b);

@@ -157,7 +157,7 @@ void bg_near_build(const bg_diagram_layout *L, int nbond, const unsigned char *s
 void bg_near_free(near_index *ix) {
   free(ix->adr), free(ix->item), free(ix->la), free(ix->lb), free(ix->lbond), free(ix->lmid), free(ix->mid);
   free(ix->lpos), free(ix->llen), free(ix->stamp);
-  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->slast), free(ix->seg_stamp);
+  free(ix->sig_head), free(ix->sig_next), free(ix->sig_seg), free(ix->sa), free(ix->sb), free(ix->sgrp), free(ix->sroute), free(ix->slast), free(ix->seg_stamp);
 }
 
 void bg_near_box(near_index *ix, double x0, double y0, double x1, double y1, near_list *out) {
@@ -222,15 +222,16 @@ void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b) {
   list_signal(ix, s, a, b); /* the cells it left still list it: it is tested where it is */
 }
 
-void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group) {
+void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group, int route) {
   if (ix->nseg == ix->capseg) {
     ix->capseg = 2 * ix->capseg + 16;
     ix->sa = bg_xrealloc(ix->sa, (size_t)ix->capseg * sizeof *ix->sa);
     ix->sb = bg_xrealloc(ix->sb, (size_t)ix->capseg * sizeof *ix->sb);
     ix->sgrp = bg_xrealloc(ix->sgrp, (size_t)ix->capseg * sizeof *ix->sgrp);
+    ix->sroute = bg_xrealloc(ix->sroute, (size_t)ix->capseg * sizeof *ix->sroute);
     ix->slast = bg_xrealloc(ix->slast, (size_t)ix->capseg);
   }
   int s = ix->nseg++;
-  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group, ix->slast[s] = 0;
+  ix->sa[s] = a, ix->sb[s] = b, ix->sgrp[s] = group, ix->sroute[s] = route, ix->slast[s] = 0;
   list_signal(ix, s, a, b);
 }

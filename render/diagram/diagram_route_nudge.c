@@ -47,27 +47,19 @@ static double near_run(bg_router *r, bg_vec p, bg_vec q, int group, double *near
   return total;
 }
 
-/* Whether segment s of the index is one of the route's own, pts[0..n-1]. */
-static int own_segment(const bg_router *r, int s, const bg_vec *pts, int n) {
-  for (int j = 0; j + 1 < n; j++)
-    if (bg_vlen(bg_vsub(r->ix.sa[s], pts[j])) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], pts[j + 1])) < 1e-9) return 1;
-  return 0;
-}
-
 /* Where other routes of the route's source (a branch, or the trunk a
  * branch is taken off) meet segment a-b, whose end `moving` (a, b, or
  * neither: NULL) moves: their ends on a-b go into feet[] (at most
  * MAX_FEET). Returns how many, or -1 where they cannot follow: one runs
  * on a-b, or meets it at the moving end. */
 #define MAX_FEET 8
-static int branch_feet(bg_router *r, bg_vec a, bg_vec b, const bg_vec *moving, int group, const bg_vec *pts, int n,
-                       bg_vec *feet) {
+static int branch_feet(bg_router *r, bg_vec a, bg_vec b, const bg_vec *moving, int group, int route, bg_vec *feet) {
   int nf = 0;
   bg_near_signals(&r->ix, fmin(a.x, b.x) - 1, fmin(a.y, b.y) - 1, fmax(a.x, b.x) + 1, fmax(a.y, b.y) + 1, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];
     bg_vec sa = r->ix.sa[s], sb = r->ix.sb[s];
-    if (r->ix.sgrp[s] != group || bg_vlen(bg_vsub(sb, sa)) <= 0 || own_segment(r, s, pts, n)) continue;
+    if (r->ix.sgrp[s] != group || bg_vlen(bg_vsub(sb, sa)) <= 0 || r->ix.sroute[s] == route) continue;
     int on_a = bg_point_seg(sa, a, b) < 0.01, on_b = bg_point_seg(sb, a, b) < 0.01;
     if (on_a && on_b) return -1; /* runs on it */
     if (moving && bg_point_seg(*moving, sa, sb) < 0.01) return -1;
@@ -77,14 +69,12 @@ static int branch_feet(bg_router *r, bg_vec a, bg_vec b, const bg_vec *moving, i
   return nf;
 }
 
-/* The index segment of route rt that runs from a to b, or -1: among its
- * own (seg0 .. seg1) first, then those added since (a U round a one-port,
- * bg_route_detour), of its group. */
-static int index_segment(const bg_router *r, const struct routed *rt, bg_vec a, bg_vec b) {
-  for (int pass = 0; pass < 2; pass++)
-    for (int s = pass ? rt->seg1 : rt->seg0; s < (pass ? r->ix.nseg : rt->seg1); s++)
-      if (r->ix.sgrp[s] == rt->group && bg_vlen(bg_vsub(r->ix.sa[s], a)) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], b)) < 1e-9)
-        return s;
+/* The index segment of route k that runs from a to b, or -1: its own
+ * (seg0 .. seg1) or one added since (a U round a one-port, bg_route_detour). */
+static int index_segment(const bg_router *r, int k, bg_vec a, bg_vec b) {
+  for (int s = r->route[k].seg0; s < r->ix.nseg; s++)
+    if (r->ix.sroute[s] == k && bg_vlen(bg_vsub(r->ix.sa[s], a)) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], b)) < 1e-9)
+      return s;
   return -1;
 }
 
@@ -136,7 +126,7 @@ static int slides(const bg_router *r, int n, bg_vec e, bg_vec u, bg_vec w, doubl
 static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int n, int i, int from_port) {
   bg_vec p = pts[i], q = pts[i + 1];
   double len = bg_vlen(bg_vsub(q, p)), nearest;
-  int group = rt->group;
+  int group = rt->group, route = (int)(rt - r->route);
   if (len <= 8 || (fabs(p.x - q.x) > 1e-9 && fabs(p.y - q.y) > 1e-9)) return 0;
   double best = near_run(r, p, q, group, &nearest); /* its own segments are not counted: parking them changes nothing */
   if (best <= 8) return 0;
@@ -150,8 +140,8 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   bg_vec feet[3][MAX_FEET];
   for (int k = 0; k < m; k++) {
     const bg_vec *moving = k == mid ? NULL : k < mid ? &pts[lo + k + 1] : &pts[lo + k];
-    if ((own[k] = index_segment(r, rt, pts[lo + k], pts[lo + k + 1])) < 0) return 0;
-    nfeet[k] = branch_feet(r, pts[lo + k], pts[lo + k + 1], moving, group, pts, n, feet[k]);
+    if ((own[k] = index_segment(r, route, pts[lo + k], pts[lo + k + 1])) < 0) return 0;
+    nfeet[k] = branch_feet(r, pts[lo + k], pts[lo + k + 1], moving, group, route, feet[k]);
     if (nfeet[k] < 0 || (k == mid && nfeet[k] > 0)) return 0;
   }
   bg_vec keep[3], old[4], chosen[4];

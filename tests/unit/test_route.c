@@ -141,7 +141,8 @@ static void index_matches(const bg_router *r, int g, const bg_vec *pts, int n) {
  * index's order and the part before it was passed over). A second call,
  * once a line on R1's U has moved (bg_route_nudge), takes that U too, on
  * the remainder the first call's U round C0 left, and cuts it in the index
- * (the route's own, add0..add1; before, left whole beside the U). */
+ * (the index knows each segment's route; before, the first call's U's
+ * were another line to the second, the remainder left whole beside the U). */
 static void test_detours_nearest_first_and_again(void) {
   fx f;
   bg_diagram *d = ladder_drawing(&f);
