@@ -20,7 +20,6 @@
  * This file holds the ports, the searches tried in turn and the router;
  * the near index, the costs, the grid, the search, branches and the U round
  * a one-port are files of their own (diagram_route_int.h lists them). */
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

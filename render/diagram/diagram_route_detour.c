@@ -7,7 +7,6 @@
  * fc_avoidable). The search misses some (its lines lie LANE off the boxes,
  * its window ends, a bend costs); this takes those whose U adds at most
  * DETOUR_MAX pt, stays within the segment, and crosses no bond and no box. */
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

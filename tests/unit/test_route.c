@@ -89,40 +89,21 @@ static bg_diagram *ladder_drawing(fx *f) {
   return d;
 }
 
-/* A straight route across two one-ports' bonds of an RC ladder (the R's
- * and C's above the junction row) goes round both; the index then holds
- * exactly the drawn segments of the route's group, none else. */
-static void test_two_detours_on_one_segment(void) {
-  fx f;
-  bg_diagram *d = ladder_drawing(&f);
-  const bg_diagram_layout *L = d->L;
-  int c0 = bg_model_find_elem(f.m, "C0"), r1 = bg_model_find_elem(f.m, "R1");
-  int n0 = bg_model_find_elem(f.m, "n0"), s2 = bg_model_find_elem(f.m, "s2");
-  OK(c0 >= 0 && r1 >= 0 && n0 >= 0 && s2 >= 0);
-  /* the layout this test is written for: C0 and R1 above their junctions */
-  OK(L->ny[c0] < L->ny[n0] - 20 && fabs(L->ny[r1] - L->ny[c0]) < 1 && L->nx[r1] > L->nx[c0] + 60);
-  double y = (L->ny[c0] + L->nh[c0] / 2 + L->ny[n0] - L->nh[n0] / 2) / 2; /* between the boxes */
-  bg_vec pts[16] = {bg_v(L->nx[c0] - 30, y), bg_v(L->nx[r1] + 30, y)};
-  bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
-  const int g = 5;
-  r->from_node = n0, r->to_node = s2, r->group = g, r->bond = -1;
-  bg_route_keep(r, pts, 2);
-  int n = bg_route_detour(r, 0, 0, pts, 2, 16);
-  INT_EQ(n, 10); /* two U's of four points each */
-  if (n == 10) {
-    /* each U lies above its element's box */
-    OK(pts[2].y < L->ny[c0] - L->nh[c0] / 2 && pts[6].y < L->ny[r1] - L->nh[r1] / 2);
-    OK(pts[1].x < L->nx[c0] && pts[4].x > L->nx[c0] && pts[5].x < L->nx[r1] && pts[8].x > L->nx[r1]);
-    int drawn = 0, live = 0;
-    for (int i = 0; i + 1 < n; i++) drawn += indexed(r, g, pts[i], pts[i + 1]);
-    for (int s = 0; s < r->ix.nseg; s++) live += r->ix.sgrp[s] == g && bg_vlen(bg_vsub(r->ix.sa[s], r->ix.sb[s])) > 1e-9;
-    INT_EQ(drawn, 9);
-    INT_EQ(live, 9); /* not the first U's remainder whole besides */
-    OK(!indexed(r, g, pts[4], pts[9]));
-  }
-  bg_router_free(r);
-  bg_diagram_free(d);
-  fx_free(&f);
+/* The ladder's elements the detour tests go round (C0 and R1, above their
+ * junctions n0 and s2) and the height between C0's box and n0's where a
+ * line under them runs; 0 when the layout is not the one they are written
+ * for. */
+typedef struct ladder_row {
+  int c0, r1, n0, s2;
+  double y;
+} ladder_row;
+
+static int ladder_row_of(const bg_model *m, const bg_diagram_layout *L, ladder_row *w) {
+  w->c0 = bg_model_find_elem(m, "C0"), w->r1 = bg_model_find_elem(m, "R1");
+  w->n0 = bg_model_find_elem(m, "n0"), w->s2 = bg_model_find_elem(m, "s2");
+  if (w->c0 < 0 || w->r1 < 0 || w->n0 < 0 || w->s2 < 0) return 0;
+  w->y = (L->ny[w->c0] + L->nh[w->c0] / 2 + L->ny[w->n0] - L->nh[w->n0] / 2) / 2;
+  return L->ny[w->c0] < L->ny[w->n0] - 20 && fabs(L->ny[w->r1] - L->ny[w->c0]) < 1 && L->nx[w->r1] > L->nx[w->c0] + 60;
 }
 
 /* Drawn and indexed segments of group g agree: every drawn segment in the
@@ -133,6 +114,34 @@ static void index_matches(const bg_router *r, int g, const bg_vec *pts, int n) {
   for (int s = 0; s < r->ix.nseg; s++) live += r->ix.sgrp[s] == g && bg_vlen(bg_vsub(r->ix.sa[s], r->ix.sb[s])) > 1e-9;
   INT_EQ(drawn, n - 1);
   INT_EQ(live, n - 1);
+}
+
+/* A straight route across two one-ports' bonds of an RC ladder (the R's
+ * and C's above the junction row) goes round both; the index then holds
+ * exactly the drawn segments of the route's group, none else. */
+static void test_two_detours_on_one_segment(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  const bg_diagram_layout *L = d->L;
+  ladder_row w;
+  OK(ladder_row_of(f.m, L, &w));
+  bg_vec pts[16] = {bg_v(L->nx[w.c0] - 30, w.y), bg_v(L->nx[w.r1] + 30, w.y)};
+  bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+  const int g = 5;
+  r->from_node = w.n0, r->to_node = w.s2, r->group = g, r->bond = -1;
+  bg_route_keep(r, pts, 2);
+  int n = bg_route_detour(r, 0, 0, pts, 2, 16);
+  INT_EQ(n, 10); /* two U's of four points each */
+  if (n == 10) {
+    /* each U lies above its element's box */
+    OK(pts[2].y < L->ny[w.c0] - L->nh[w.c0] / 2 && pts[6].y < L->ny[w.r1] - L->nh[w.r1] / 2);
+    OK(pts[1].x < L->nx[w.c0] && pts[4].x > L->nx[w.c0] && pts[5].x < L->nx[w.r1] && pts[8].x > L->nx[w.r1]);
+    index_matches(r, g, pts, n); /* not the first U's remainder whole besides */
+    OK(!indexed(r, g, pts[4], pts[9]));
+  }
+  bg_router_free(r);
+  bg_diagram_free(d);
+  fx_free(&f);
 }
 
 /* A segment crossing two one-ports' bonds goes round both whichever way it
@@ -147,11 +156,10 @@ static void test_detours_nearest_first_and_again(void) {
   fx f;
   bg_diagram *d = ladder_drawing(&f);
   const bg_diagram_layout *L = d->L;
-  int c0 = bg_model_find_elem(f.m, "C0"), r1 = bg_model_find_elem(f.m, "R1");
-  int n0 = bg_model_find_elem(f.m, "n0"), s2 = bg_model_find_elem(f.m, "s2");
-  OK(c0 >= 0 && r1 >= 0 && n0 >= 0 && s2 >= 0);
-  double y = (L->ny[c0] + L->nh[c0] / 2 + L->ny[n0] - L->nh[n0] / 2) / 2;
-  const int g = 5;
+  ladder_row w;
+  OK(ladder_row_of(f.m, L, &w));
+  const int c0 = w.c0, r1 = w.r1, n0 = w.n0, s2 = w.s2, g = 5;
+  const double y = w.y;
   { /* right to left */
     bg_vec pts[16] = {bg_v(L->nx[r1] + 30, y), bg_v(L->nx[c0] - 30, y)};
     bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
