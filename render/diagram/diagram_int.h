@@ -239,7 +239,7 @@ int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap)
  * along the box's side; the first stays when `first` > 0), where that
  * costs no more (diagram_route_nudge.c); the index follows. Returns how
  * many moved. */
-int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int n);
+int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int *n);
 /* A line drawn before the routes that they must not run along (a frame's
  * border: a signal beside it reads as part of the frame), cheap to cross. */
 void bg_route_fence(bg_router *r, bg_vec a, bg_vec b);

@@ -177,11 +177,74 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   return 1;
 }
 
-int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int n) {
+/* Whether v runs along an axis. */
+static int axial(bg_vec v) { return fabs(v.x) < 1e-9 || fabs(v.y) < 1e-9; }
+
+/* A step by a route's end: the leg into the port (the arrow's, or at a
+ * source the stub, not a branch's start) a few points across from the leg
+ * before it, both going the same way (tower_damper's I : m3 -> act in
+ * print: round its junction on the corner's line, then 3.2 pt across to the
+ * arrow's port). Points from the interior towards the port: O (the one
+ * before, if any), P, Q (the leg before), R (the step's end), E the port.
+ * Either the port slides along its side by the step, or the leg before
+ * moves across by it (O-P stretching or shrinking, never under MIN_LEG),
+ * where the one straight leg left crosses and passes nothing the legs
+ * before did not: the step and its corner are dropped. Returns the new
+ * number of points. */
+static int unstep_end(bg_router *r, int route, bg_vec *pts, int n, int at_start) {
+  const struct routed *rt = &r->route[route];
+  if (n < 4) return n;
+  int has_o = n >= 5, ix[5]; /* O, P, Q, R, E as indices into pts */
+  for (int k = 0; k < 5; k++) ix[k] = at_start ? 4 - k : n - 5 + k;
+  bg_vec P = pts[ix[1]], Q = pts[ix[2]], R = pts[ix[3]], E = pts[ix[4]];
+  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q), c = bg_vsub(E, R);
+  double la = bg_vlen(a), lb = bg_vlen(b), lc = bg_vlen(c);
+  if (la <= 0 || lc <= 0 || lb <= 0 || lb >= MIN_LEG) return n;
+  if (!axial(a) || !axial(b) || !axial(c)) return n; /* a diagonal stub stays */
+  if ((a.x * c.x + a.y * c.y) < 0.999 * la * lc || fabs(a.x * b.x + a.y * b.y) > 0.01 * la * lb) return n;
+  /* the index segments O-P, P-Q, Q-R, R-E (each as the route runs); no
+   * branch of the source on the step or the port's leg */
+  int seg[4] = {-1, -1, -1, -1};
+  bg_vec feet[MAX_FEET];
+  for (int k = has_o ? 0 : 1; k < 4; k++) {
+    int lo = ix[k] < ix[k + 1] ? ix[k] : ix[k + 1];
+    if ((seg[k] = index_segment(r, route, pts[lo], pts[lo + 1])) < 0) return n;
+  }
+  for (int k = 2; k < 4; k++)
+    if (branch_feet(r, r->ix.sa[seg[k]], r->ix.sb[seg[k]], NULL, rt->group, route, feet) != 0) return n;
+  int moves_leg = !slides(r, at_start ? rt->from : rt->to, E, bg_vscale(c, -1 / lc), bg_vscale(b, -1 / lb), lb, !at_start);
+  bg_vec O = has_o ? pts[ix[0]] : P, P2 = moves_leg ? bg_vadd(P, b) : P, E2 = moves_leg ? E : bg_vsub(E, b);
+  if (moves_leg) { /* O-P keeps its way and MIN_LEG; no branch on the leg that moves or on O-P */
+    bg_vec o = bg_vsub(P, O), o2 = bg_vsub(P2, O);
+    if (!has_o || o.x * o2.x + o.y * o2.y <= 0 || bg_vlen(o2) < MIN_LEG) return n;
+    for (int k = 0; k < 2; k++)
+      if (branch_feet(r, r->ix.sa[seg[k]], r->ix.sb[seg[k]], NULL, rt->group, route, feet) != 0) return n;
+  }
+  bg_vec keep[4], old[5] = {O, P, Q, R, E}, line[3] = {O, P2, E2};
+  int from = has_o ? 0 : 1;
+  for (int k = from; k < 4; k++) keep[k] = r->ix.sb[seg[k]], r->ix.sb[seg[k]] = r->ix.sa[seg[k]]; /* parked */
+  int ok = penalty(r, line + from, 2 - from) <= penalty(r, old + from, 4 - from) + 0.01;
+  for (int k = from; k < 4; k++) r->ix.sb[seg[k]] = keep[k];
+  if (!ok) return n;
+  /* the index: O-P to O-P2, P-Q to the straight leg, the step and the
+   * port's leg left as points; each as the route runs */
+  if (moves_leg) bg_near_move_signal(&r->ix, seg[0], at_start ? P2 : O, at_start ? O : P2);
+  bg_near_move_signal(&r->ix, seg[1], at_start ? E2 : P2, at_start ? P2 : E2);
+  bg_near_move_signal(&r->ix, seg[2], Q, Q), bg_near_move_signal(&r->ix, seg[3], Q, Q);
+  if (!at_start) r->ix.slast[seg[1]] = r->ix.slast[seg[3]], r->ix.slast[seg[3]] = 0;
+  pts[ix[1]] = P2, pts[ix[4]] = E2;
+  if (!at_start) pts[n - 3] = pts[n - 1];
+  else memmove(pts + 1, pts + 3, (size_t)(n - 3) * sizeof *pts);
+  return n - 2;
+}
+
+int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int *n) {
   if (k < 0 || k >= r->nroute || r->route[k].group < 0) return 0;
   const struct routed *rt = &r->route[k];
   r->from_node = rt->from, r->to_node = rt->to, r->group = rt->group, r->bond = -1;
-  int moved = 0;
-  for (int i = first < 0 ? 0 : first; i + 1 < n; i++) moved += nudge_segment(r, rt, pts, n, i, first <= 0);
-  return moved;
+  int moved = 0, before = *n;
+  for (int i = first < 0 ? 0 : first; i + 1 < *n; i++) moved += nudge_segment(r, rt, pts, *n, i, first <= 0);
+  *n = unstep_end(r, k, pts, *n, 0);
+  if (first <= 0) *n = unstep_end(r, k, pts, *n, 1);
+  return moved + (before - *n) / 2;
 }

@@ -248,7 +248,7 @@ static int nudge_routes(bg_diagram *d, bg_router *rt) {
   int moved = 0;
   for (int k = 0; k < d->nroutes; k++) {
     int b = d->routes[k].branch_k;
-    moved += bg_route_nudge(rt, k, b < 0 ? 0 : b + 2, d->routes[k].pts, d->routes[k].n);
+    moved += bg_route_nudge(rt, k, b < 0 ? 0 : b + 2, d->routes[k].pts, &d->routes[k].n);
   }
   return moved;
 }

@@ -1647,9 +1647,13 @@ static void test_signals_clear_of_layers(void) {
  * Once routed, a segment a few points beside another source's signal is
  * moved across, whole, where that crosses and passes nothing new
  * (bg_route_nudge): none left here in any style or layer set, and the
- * signals still cross no bond at its end or obliquely. */
+ * signals still cross no bond at its end or obliquely. No step either:
+ * tower_damper's I : m3 -> act in print went round its junction on the
+ * corner's line and stepped 3.2 pt across to the arrow's port, which now
+ * slides along act's top instead (unstep_end). */
 static void test_signals_apart(void) {
-  static const char *const rel[] = {"examples/gallery/pendulum.bg", "tests/data/figures/platoon.bg"};
+  static const char *const rel[] = {"examples/gallery/pendulum.bg", "tests/data/figures/platoon.bg",
+                                    "tests/data/figures/tower_damper.bg"};
   for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
     fx f;
     if (file_model(&f, rel[i], strrchr(rel[i], '/') + 1) != 0) continue;

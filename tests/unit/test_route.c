@@ -7,7 +7,10 @@
  * (before, the first U's remainder stayed whole in the index, so later
  * detours paid for a line that is not drawn); a run beside a bond's
  * path and loop lines is priced (bg_router_rings); and a signal a few
- * points beside another source's is moved off it (bg_route_nudge). */
+ * points beside another source's is moved off it (bg_route_nudge), a
+ * branch's foot on a neighbour moving with it; the detour pass takes a
+ * segment's U's nearest first and knows its earlier U's on a second call;
+ * and a small step by a route's end is straightened (unstep_end). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -257,7 +260,7 @@ static void test_nudge_apart(void) {
       bg_vec pts[4] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 200), bg_v(x0 + 200, y0 + 200)};
       r->group = same ? 7 : 3;
       bg_route_keep(r, pts, 4);
-      int moved = bg_route_nudge(r, 1, 0, pts, 4);
+      int n = 4, moved = bg_route_nudge(r, 1, 0, pts, &n);
       if (same) {
         INT_EQ(moved, 0);
         OK(pts[1].x == x0 + 100);
@@ -298,12 +301,48 @@ static void test_nudge_carries_branches(void) {
       bg_vec at = foot[c] < 0 ? bg_v(x0 + 100, y0 + 80) : bg_v(x0 + foot[c], y0);
       bg_vec branch[2] = {at, foot[c] < 0 ? bg_vadd(at, bg_v(-60, 0)) : bg_vadd(at, bg_v(0, -60))};
       bg_route_keep(r, branch, 2);
-      int moved = bg_route_nudge(r, 1, 0, pts, 4);
+      int n = 4, moved = bg_route_nudge(r, 1, 0, pts, &n);
       INT_EQ(moved, c < 2);
       OK(fabs(pts[1].x - (x0 + (c == 0 ? 98 : c == 1 ? 110 : 100))) < 1e-9 && pts[2].x == pts[1].x);
       OK(bg_point_seg(at, pts[0], pts[1]) < 1e-9 || c == 2); /* the foot on the leg still */
       bg_router_free(r);
     }
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
+/* A step by a route's end (unstep_end): the arrow's leg 3 pt across from
+ * the leg before it, both going down onto C0's top. Where the port may
+ * slide along the top by 3 pt it does, and the route is one straight line;
+ * where it may not (the port at the side's end), the leg before moves
+ * across by 3 pt instead, the leg before that stretching. Before, both
+ * were drawn with the step (tower_damper's I : m3 -> act, print and
+ * slides). */
+static void test_unstep_at_the_arrow(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  const bg_diagram_layout *L = d->L;
+  ladder_row w;
+  OK(ladder_row_of(f.m, L, &w));
+  double top = L->ny[w.c0] - L->nh[w.c0] / 2, tip = top - 1.5, edge = L->nx[w.c0] - (L->nw[w.c0] / 2 - L->st.node_pad - 1.5);
+  for (int at_edge = 0; at_edge < 2; at_edge++) {
+    bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+    double x = at_edge ? edge : L->nx[w.c0] - 2, y0 = top - 160, y1 = top - 40;
+    bg_vec pts[5] = {bg_v(x - 43, y0), bg_v(x - 3, y0), bg_v(x - 3, y1), bg_v(x, y1), bg_v(x, tip)};
+    r->from_node = -1, r->to_node = w.c0, r->group = 3, r->bond = -1;
+    bg_route_keep(r, pts, 5);
+    int n = 5;
+    bg_route_nudge(r, 0, 0, pts, &n);
+    INT_EQ(n, 3);
+    if (n == 3) {
+      if (at_edge) /* the leg moved over to the port */
+        OK(pts[0].x == x - 43 && pts[1].x == x && pts[1].y == y0 && pts[2].x == x && pts[2].y == tip);
+      else /* the port slid under the leg */
+        OK(pts[1].x == x - 3 && pts[1].y == y0 && pts[2].x == x - 3 && pts[2].y == tip);
+      index_matches(r, 3, pts, n);
+    }
+    bg_router_free(r);
   }
   bg_diagram_free(d);
   fx_free(&f);
@@ -316,5 +355,6 @@ int main(void) {
   test_nudge_apart();
   test_detours_nearest_first_and_again();
   test_nudge_carries_branches();
+  test_unstep_at_the_arrow();
   return bg_t_done();
 }
