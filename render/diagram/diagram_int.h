@@ -233,12 +233,14 @@ int bg_route_branch(const bg_router *r, bg_vec *at);
  * index follows). Called again (after bg_route_nudge has made room), the
  * U's taken before are the route's own. Returns the new number of points. */
 int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap);
-/* Route k, pts[0..n-1] as kept, after all are routed and taken round the
+/* Route k, pts[0..*n-1] as kept, after all are routed and taken round the
  * one-ports: each segment from `first` on that runs a few points beside
  * another source's signal moved across, whole (at an end its port sliding
  * along the box's side; the first stays when `first` > 0), where that
- * costs no more (diagram_route_nudge.c); the index follows. Returns how
- * many moved. */
+ * costs no more, then a small step by either end (the start's only when
+ * `first` <= 0) straightened, its two points dropped (*n gets the new
+ * length; diagram_route_nudge.c); the index follows. Returns how many
+ * moves were made. */
 int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int *n);
 /* A line drawn before the routes that they must not run along (a frame's
  * border: a signal beside it reads as part of the frame), cheap to cross. */
