@@ -108,6 +108,12 @@ static double at_end_cost(const bg_router *r, int leg, double at) {
   return fmin(along, len - along) < arrow_zone(r, len) ? COST_AT_END : 0;
 }
 
+double bg_route_path_penalty(bg_router *r, const bg_vec *q, int m) {
+  double c = 0;
+  for (int k = 0; k < m; k++) c += bg_route_seg_cost(r, q[k], q[k + 1], -1) - bg_vlen(bg_vsub(q[k + 1], q[k]));
+  return c;
+}
+
 /* Whether index segment s is the current route's own (bg_route_detour:
  * its first segments and those it added since). */
 int bg_route_own_segment(const bg_router *r, int s) {

@@ -74,9 +74,7 @@ static double leg_detour(bg_router *r, bg_vec p, bg_vec u, double len, int leg, 
     u4[0] = bg_vadd(X, bg_vscale(u, a0 - gap[g])), u4[3] = bg_vadd(X, bg_vscale(u, a1 + gap[g]));
     u4[1] = bg_vadd(u4[0], bg_vscale(w, d)), u4[2] = bg_vadd(u4[3], bg_vscale(w, d));
     if (branch_off(r, u4[0], u4[3])) continue;
-    double extra = 0;
-    for (int k = 0; k < 3; k++) extra += bg_route_seg_cost(r, u4[k], u4[k + 1], -1) - bg_vlen(bg_vsub(u4[k + 1], u4[k]));
-    if (extra < COST_CROSS_BOND / 2) return t + a0 - gap[g]; /* no bond crossed, no box run through, no line run on */
+    if (bg_route_path_penalty(r, u4, 3) < COST_CROSS_BOND / 2) return t + a0 - gap[g]; /* no bond crossed, no box run through, no line run on */
   }
   return -1;
 }

@@ -194,6 +194,10 @@ int bg_route_own_segment(const bg_router *r, int s);
 /* The cost of segment p-q against the nodes and legs near it (node skip's
  * box no obstacle). */
 double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip);
+/* What the polyline q[0..m] costs past its length (bg_route_seg_cost, no
+ * box skipped: crossings, runs through boxes or beside bonds, a bond's
+ * number or end passed). */
+double bg_route_path_penalty(bg_router *r, const bg_vec *q, int m);
 /* Every edge of the grid's cost into r->hcost and r->vcost. */
 void bg_route_grid_costs(bg_router *r);
 

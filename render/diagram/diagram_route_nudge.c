@@ -78,13 +78,15 @@ static int index_segment(const bg_router *r, int k, bg_vec a, bg_vec b) {
   return -1;
 }
 
-/* What the segments q[0..m] cost past their length (bg_route_seg_cost:
- * crossings, runs through boxes or beside bonds, a bond's number or end
- * passed). */
-static double penalty(bg_router *r, const bg_vec *q, int m) {
-  double c = 0;
-  for (int k = 0; k < m; k++) c += bg_route_seg_cost(r, q[k], q[k + 1], -1) - bg_vlen(bg_vsub(q[k + 1], q[k]));
-  return c;
+/* The route's index segments seg[0..m) parked (a point each, their old
+ * ends into keep) while a move is priced, so it does not meet itself;
+ * then put back. */
+static void park(bg_router *r, const int *seg, int m, bg_vec *keep) {
+  for (int k = 0; k < m; k++) keep[k] = r->ix.sb[seg[k]], r->ix.sb[seg[k]] = r->ix.sa[seg[k]];
+}
+
+static void unpark(bg_router *r, const int *seg, int m, const bg_vec *keep) {
+  for (int k = 0; k < m; k++) r->ix.sb[seg[k]] = keep[k];
 }
 
 /* How far the segments q[0..m] run beside other sources' signals, summed:
@@ -146,8 +148,8 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
   }
   bg_vec keep[3], old[4], chosen[4];
   memcpy(old, pts + lo, (size_t)(m + 1) * sizeof *old);
-  for (int k = 0; k < m; k++) keep[k] = r->ix.sb[own[k]], r->ix.sb[own[k]] = r->ix.sa[own[k]]; /* parked */
-  double pen0 = penalty(r, old, m), side = nearest > 0 ? 1 : -1;
+  park(r, own, m, keep);
+  double pen0 = bg_route_path_penalty(r, old, m), side = nearest > 0 ? 1 : -1;
   best = beside_all(r, old, m, group);
   int found = 0;
   for (int t = 0; t < 4; t++) { /* away from the nearest by what it takes, or 3 pt more; then past it */
@@ -166,11 +168,11 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
       for (int f = 0; f < nfeet[k]; f++) ok &= bg_point_seg(feet[k][f], moved[k], moved[k + 1]) < 0.01;
     }
     if (!ok) continue;
-    double near = beside_all(r, moved, m, group), pen = penalty(r, moved, m);
+    double near = beside_all(r, moved, m, group), pen = bg_route_path_penalty(r, moved, m);
     /* nothing crossed or passed that was not before, and less beside others (its neighbours too) */
     if (pen <= pen0 + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
   }
-  for (int k = 0; k < m; k++) r->ix.sb[own[k]] = keep[k];
+  unpark(r, own, m, keep);
   if (!found) return 0;
   for (int k = 0; k < m; k++) bg_near_move_signal(&r->ix, own[k], chosen[k], chosen[k + 1]);
   pts[i] = chosen[mid], pts[i + 1] = chosen[mid + 1];
@@ -222,9 +224,9 @@ static int unstep_end(bg_router *r, int route, bg_vec *pts, int n, int at_start)
   }
   bg_vec keep[4], old[5] = {O, P, Q, R, E}, line[3] = {O, P2, E2};
   int from = has_o ? 0 : 1;
-  for (int k = from; k < 4; k++) keep[k] = r->ix.sb[seg[k]], r->ix.sb[seg[k]] = r->ix.sa[seg[k]]; /* parked */
-  int ok = penalty(r, line + from, 2 - from) <= penalty(r, old + from, 4 - from) + 0.01;
-  for (int k = from; k < 4; k++) r->ix.sb[seg[k]] = keep[k];
+  park(r, seg + from, 4 - from, keep);
+  int ok = bg_route_path_penalty(r, line + from, 2 - from) <= bg_route_path_penalty(r, old + from, 4 - from) + 0.01;
+  unpark(r, seg + from, 4 - from, keep);
   if (!ok) return n;
   /* the index: O-P to O-P2, P-Q to the straight leg, the step and the
    * port's leg left as points; each as the route runs */
