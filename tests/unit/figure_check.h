@@ -61,6 +61,7 @@ typedef struct fc_stats {
   int sig_at_ends;           /* of sig_cross, those at a bond's end, among its half arrow or stroke (fc_sig_cross) */
   int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt (fc_beside_layer) */
   int sig_beside;            /* signal pairs of different sources side by side within 5 pt for more than 20 pt (fc_sig_beside) */
+  int sig_touch;             /* signal pairs of different sources where a corner or end of one lies on the other (fc_sig_touch) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -732,9 +733,13 @@ static int fc_steps(const fc_line *l) {
  * before "->"; one source's lines branch off each other), run side by side
  * within 5 pt for more than 20 pt: two lines a few points apart read as
  * one double line. */
-static int fc_sig_beside(const fc_line *l, const fc_line *m) {
+static int fc_other_sources(const fc_line *l, const fc_line *m) {
   const char *a = l->name ? strstr(l->name, "->") : NULL, *b = m->name ? strstr(m->name, "->") : NULL;
-  if (!a || !b || (a - l->name == b - m->name && !strncmp(l->name, m->name, (size_t)(a - l->name)))) return 0;
+  return a && b && !(a - l->name == b - m->name && !strncmp(l->name, m->name, (size_t)(a - l->name)));
+}
+
+static int fc_sig_beside(const fc_line *l, const fc_line *m) {
+  if (!fc_other_sources(l, m)) return 0;
   for (int p = 0; p < fc_body(l); p++)
     for (int q = 0; q < fc_body(m); q++)
       if (fc_seg_beside(&l->seg[p], &m->seg[q], 5, 20)) {
@@ -744,6 +749,48 @@ static int fc_sig_beside(const fc_line *l, const fc_line *m) {
         return 1;
       }
   return 0;
+}
+
+/* Whether a corner or an end of signal l lies on signal m (within 1 pt),
+ * or m crosses l's arrowhead (the line stops 4.8 pt short of the tip, the
+ * head is 6 pt long), m from another source: two signals meeting end to
+ * end, or at a corner, read as one line that turns or branches (which
+ * source feeds which arrow cannot be told), an end on the other's line as
+ * a T, a line through an arrowhead as ending there. */
+/* Signal l's arrowhead as a segment along its axis: 1 and *head, else 0. */
+static int fc_head(const fc_line *l, fc_seg *head) {
+  const fc_seg *e = l->nseg > 0 ? &l->seg[l->nseg - 1] : NULL;
+  double len = e ? fc_seg_len(e) : 0;
+  if (len <= 0) return 0;
+  double ux = (e->x1 - e->x0) / len, uy = (e->y1 - e->y0) / len;
+  *head = (fc_seg){e->x1 - 1.2 * ux, e->y1 - 1.2 * uy, e->x1 + 4.8 * ux, e->y1 + 4.8 * uy};
+  return 1;
+}
+
+/* Whether segment s passes within 1 pt of a corner or an end of signal m,
+ * or crosses its arrowhead. */
+static int fc_seg_touches(const fc_seg *s, const fc_line *m) {
+  for (int p = 0; p <= m->nseg && m->nseg > 0; p++) {
+    double x = p < m->nseg ? m->seg[p].x0 : m->seg[p - 1].x1, y = p < m->nseg ? m->seg[p].y0 : m->seg[p - 1].y1;
+    if (fc_pt_seg(x, y, s) < 1) return 1;
+  }
+  fc_seg head;
+  return fc_head(m, &head) && fc_cross(s, &head);
+}
+
+static int fc_sig_touch_one(const fc_line *l, const fc_line *m) {
+  for (int q = 0; q < m->nseg; q++)
+    if (fc_seg_touches(&m->seg[q], l)) {
+      if (fc_explain)
+        printf("  signal %s touches signal %s (a corner, an end or the arrowhead) at (%.1f, %.1f)-(%.1f, %.1f)\n",
+               m->name, l->name, m->seg[q].x0, m->seg[q].y0, m->seg[q].x1, m->seg[q].y1);
+      return 1;
+    }
+  return 0;
+}
+
+static int fc_sig_touch(const fc_line *l, const fc_line *m) {
+  return fc_other_sources(l, m) && (fc_sig_touch_one(l, m) || fc_sig_touch_one(m, l));
 }
 
 /* Whether signal l runs along path or loop line o: within 3 pt for more
@@ -787,6 +834,7 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
         if (fc_explain) printf("  false T: bond %d ends on bond %d\n", l->id, m->id);
       }
       if (k > j && l->kind == FC_SIGNAL && m->kind == FC_SIGNAL && fc_sig_beside(l, m)) st->sig_beside++;
+      if (k > j && l->kind == FC_SIGNAL && m->kind == FC_SIGNAL && fc_sig_touch(l, m)) st->sig_touch++;
       if (k > j && (l->kind == FC_BOND || l->kind == FC_SIGNAL) && (m->kind == FC_BOND || m->kind == FC_SIGNAL) &&
           fc_lines_overlap(l, m)) {
         st->overlaps++, st->bond_overlaps += l->kind == FC_BOND || m->kind == FC_BOND;
@@ -1093,7 +1141,9 @@ static int fc_seg_along(const fc_seg *a, const fc_seg *b) {
   return fmin(la, fmax(t0, t1)) - fmax(0, fmin(t0, t1)) > 2;
 }
 
-/* Whether seg crosses (or runs through) anything the U must keep off. */
+/* Whether seg crosses (or runs through) anything the U must keep off:
+ * for a signal's U also another source's signal touched (fc_seg_touches
+ * both ways: through its corner, end or arrowhead, or the U's corner on it). */
 static int fc_detour_blocked(const fc_scene *f, const fc_seg *seg, int nseg, int lj, int bk, int bond_l) {
   for (int j = 0; j < f->nline; j++) {
     const fc_line *o = &f->line[j];
@@ -1102,6 +1152,9 @@ static int fc_detour_blocked(const fc_scene *f, const fc_seg *seg, int nseg, int
       for (int q = 0; q < o->nseg - o->barb; q++)
         if (((o->kind == FC_BOND || bond_l) && fc_cross(&seg[p], &o->seg[q])) || fc_seg_along(&seg[p], &o->seg[q]))
           return 1;
+    if (bond_l || o->kind != FC_SIGNAL || !fc_other_sources(&f->line[lj], o)) continue;
+    for (int p = 0; p < nseg; p++)
+      if (fc_seg_touches(&seg[p], o) || fc_line_pt(o, seg[p].x0, seg[p].y0, 0) < 1) return 1;
   }
   for (int i = 0; i < f->nbox; i++) {
     if (f->box[i].kind != FC_NODE) continue;
