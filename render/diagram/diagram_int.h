@@ -12,6 +12,9 @@
 /* <math.h> constants are not C11 */
 #define BG_PI 3.14159265358979323846
 #define BG_SQRT1_2 0.70710678118654752440
+/* A signal's arrowhead: its length (diagram_signals.c draws it; the
+ * router keeps other signals off it, diagram_route_cost.c). */
+#define BG_SIGNAL_ARROW 6.0
 
 typedef struct bg_vec {
   double x, y;

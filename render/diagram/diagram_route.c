@@ -320,7 +320,7 @@ int bg_route_ports(bg_router *r, port *ps, int nps, port *pt, int npt, const dou
   if (seeded) r->branch_k = 0, r->branch_at = pts[0]; /* taken off an earlier route where it starts */
   else r->branch_k = bg_route_shared_prefix(r, pts, n, &r->branch_at);
   if (bg_route_group_rejoins(r, pts, n, r->branch_k, r->branch_at)) { /* not a branch: again, keeping off them */
-    r->group = -1;
+    r->whole = 1;
     return bg_route_ports(r, ps, nps, pt, npt, a, b, pts, cap);
   }
   bg_route_keep(r, pts, n);
@@ -350,7 +350,7 @@ int bg_route(bg_router *r, const bg_model *m, int from_node, int from_bond, int 
   const bg_diagram_layout *L = r->L;
   bg_vec from_pt = bg_v(0, 0);
   port ps[22], pt[22]; /* node_ports' 20 and aligned_ports' 2 */
-  r->from_node = from_node, r->to_node = to, r->group = group, r->bond = -1;
+  r->from_node = from_node, r->to_node = to, r->group = group, r->bond = -1, r->whole = 0;
   int nps = 0, npt = node_ports(r, m, to, 1.5, pt);
   if (from_node >= 0) {
     nps = node_ports(r, m, from_node, 0, ps);

@@ -53,7 +53,7 @@ int bg_route_group_runs_on(bg_router *r, bg_vec p, bg_vec q) {
  * (k, at from bg_route_shared_prefix; k -1: from its start), runs on them again:
  * then it cannot be drawn as a branch. */
 int bg_route_group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec at) {
-  if (r->group < 0) return 0;
+  if (r->group < 0 || r->whole) return 0;
   for (int i = k < 0 ? 0 : k; i + 1 < n; i++)
     if (bg_route_group_runs_on(r, i == k ? at : pts[i], pts[i + 1])) return 1;
   return 0;
@@ -66,7 +66,7 @@ int bg_route_group_rejoins(bg_router *r, const bg_vec *pts, int n, int k, bg_vec
  * does not start on them or keeps on them to within 10 pt of its tip
  * (then it is drawn whole). */
 int bg_route_shared_prefix(bg_router *r, const bg_vec *pts, int n, bg_vec *at) {
-  if (r->group < 0 || n < 2) return -1;
+  if (r->group < 0 || r->whole || n < 2) return -1;
   for (int i = 0; i + 1 < n; i++) {
     double len = bg_vlen(bg_vsub(pts[i + 1], pts[i])), reach = group_reach(r, pts[i], pts[i + 1]);
     if (reach >= len - 0.01) continue;
@@ -91,7 +91,7 @@ int bg_route_branch(const bg_router *r, bg_vec *at) {
 enum { NEAREST_RINGS = 12 };
 int bg_route_group_nearest(bg_router *r, bg_vec c, bg_vec *out) {
   const near_index *ix = &r->ix;
-  if (r->group < 0 || !ix->nseg) return 0;
+  if (r->group < 0 || r->whole || !ix->nseg) return 0;
   int cc[4];
   bg_near_cells(ix, c.x, c.y, c.x, c.y, cc);
   double best = INFINITY;

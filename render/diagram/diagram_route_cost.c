@@ -127,6 +127,68 @@ static double seg_cross_cost(const bg_router *r, int s) {
   return g <= -2 && g != GROUP_FENCE && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
 }
 
+/* Whether routed segment s is a line of another signal than the current
+ * route's source's (a signal route's only), whose ends, corners and
+ * arrowhead the route keeps off (touch_cost): a signal's (sgrp its source,
+ * or -1 with a route: one drawn apart from its source's others), not a
+ * fence's or a bond's; a segment left as a point (bg_route_nudge's
+ * dropped step) has none. */
+static int other_signal(const bg_router *r, int s) {
+  int g = r->ix.sgrp[s];
+  if (r->bond >= 0 || (g >= 0 ? g == r->group : g != -1 || r->ix.sroute[s] < 0)) return 0;
+  return r->ix.sb[s].x != r->ix.sa[s].x || r->ix.sb[s].y != r->ix.sa[s].y;
+}
+
+/* Routed segment s's arrowhead and the 2 pt behind it (its last TIP_ZONE
+ * pt, when it ends its route): 1 and *a-*b, else 0. */
+static int tip_zone(const near_index *ix, int s, bg_vec *a, bg_vec *b) {
+  bg_vec d = bg_vsub(ix->sb[s], ix->sa[s]);
+  double len = bg_vlen(d);
+  if (!ix->slast[s] || len <= 0) return 0;
+  *b = ix->sb[s], *a = len <= TIP_ZONE ? ix->sa[s] : bg_vsub(*b, bg_vscale(d, TIP_ZONE / len));
+  return 1;
+}
+
+/* What segment p-q pays for touching routed segment s of another signal
+ * (other_signal): COST_TOUCH for passing within TOUCH_NEAR of s's start (a
+ * corner, or the route's start: each corner once, as the start of the
+ * segment after it) or, when s ends its route, of its tip, and for
+ * crossing s's arrowhead. Two signals
+ * meeting at a corner or end to end, or one through another's arrowhead,
+ * read as one line turning, a branch or a T (reactions20's c4 -> k3 and
+ * c11 -> k4 had one corner, each turning onto the other's line: a cross of
+ * two arrows and two sources, issue 31). */
+/* Whether point e lies within TOUCH_NEAR of segment p-q (its box first: most do not). */
+static int touches(bg_vec e, bg_vec p, bg_vec q) {
+  if (e.x < fmin(p.x, q.x) - TOUCH_NEAR || e.x > fmax(p.x, q.x) + TOUCH_NEAR || e.y < fmin(p.y, q.y) - TOUCH_NEAR ||
+      e.y > fmax(p.y, q.y) + TOUCH_NEAR)
+    return 0;
+  return bg_point_seg(e, p, q) < TOUCH_NEAR;
+}
+
+static double touch_cost(const bg_router *r, int s, bg_vec p, bg_vec q) {
+  double c = 0;
+  if (touches(r->ix.sa[s], p, q)) c += COST_TOUCH;
+  if (r->ix.slast[s] && touches(r->ix.sb[s], p, q)) c += COST_TOUCH;
+  bg_vec a, b;
+  if (tip_zone(&r->ix, s, &a, &b) && bg_route_seg_meet(p, q, a, b, 3, HUG, NULL, 0) == 1) c += COST_TOUCH;
+  return c;
+}
+
+double bg_route_tip_cost(bg_router *r, bg_vec stub, bg_vec at) {
+  bg_vec d = bg_vsub(at, stub);
+  double len = bg_vlen(d), c = 0;
+  if (r->bond >= 0 || len <= 0) return 0;
+  bg_vec a = len <= TIP_ZONE ? stub : bg_vsub(at, bg_vscale(d, TIP_ZONE / len));
+  bg_near_signals(&r->ix, fmin(a.x, at.x) - 1, fmin(a.y, at.y) - 1, fmax(a.x, at.x) + 1, fmax(a.y, at.y) + 1, &r->nl);
+  for (int j = 0; j < r->nl.n; j++) {
+    int s = r->nl.k[j];
+    if (other_signal(r, s) && !bg_route_own_segment(r, s) && bg_route_seg_meet(a, at, r->ix.sa[s], r->ix.sb[s], 3, HUG, NULL, 0) == 1)
+      c += COST_TOUCH;
+  }
+  return c;
+}
+
 /* What a segment p-q costs: its length, and the penalties for what it meets. */
 double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
   const bg_diagram_layout *L = r->L;
@@ -160,6 +222,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     if (bg_route_own_segment(r, s)) continue; /* the route itself (bg_route_detour) */
     int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, HUG, NULL, 0);
     cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
+    if (other_signal(r, s)) cost += touch_cost(r, s, p, q);
   }
   return cost;
 }
@@ -230,6 +293,18 @@ static void line_meet(const double *A, int n, int horiz, double at, bg_vec a, bg
   if (i < 0) return;
   double extra = leg >= 0 ? at_end_cost(r, leg, s * lv) : 0;
   out[i] += (ends == 2 && from_end <= END_NEAR ? COST_END : cross) + extra;
+}
+
+/* COST_TOUCH added to every edge of the grid line at `at` (over the
+ * vertices A[0..n-1], horizontal when horiz) that passes within TOUCH_NEAR
+ * of point e (touch_cost's corners and tips, edge by edge). */
+static void touch_line(const double *A, int n, int horiz, double at, bg_vec e, double *out) {
+  double dc = fabs(across(e, horiz) - at);
+  if (dc >= TOUCH_NEAR) return;
+  double half = sqrt(TOUCH_NEAR * TOUCH_NEAR - dc * dc);
+  int i0, i1;
+  edge_range(A, n, along(e, horiz) - half, along(e, horiz) + half, &i0, &i1);
+  for (int i = i0; i <= i1; i++) out[i] += COST_TOUCH;
 }
 
 /* The grid lines (of A[0..n-1]) at lo..hi, both included: *j0 .. *j1. */
@@ -309,12 +384,27 @@ void bg_route_grid_costs(bg_router *r) {
   }
   bg_near_signals(&r->ix, X[0] - 3, Y[0] - 3, X[nx - 1] + 3, Y[ny - 1] + 3, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
-    bg_vec a = r->ix.sa[r->nl.k[jj]], b = r->ix.sb[r->nl.k[jj]];
-    double cross = seg_cross_cost(r, r->nl.k[jj]);
-    int j0, j1;
+    int s = r->nl.k[jj], other = other_signal(r, s), tip = other && r->ix.slast[s];
+    bg_vec a = r->ix.sa[s], b = r->ix.sb[s];
+    double cross = seg_cross_cost(r, s);
+    int j0, j1; /* touch_cost's corners and tips: lines within TOUCH_NEAR (< 3) of them are among these */
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, r, -1, &r->hcost[j * nx]);
+    for (int j = j0; j <= j1; j++) {
+      line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, r, -1, &r->hcost[j * nx]);
+      if (other) touch_line(X, nx, 1, Y[j], a, &r->hcost[j * nx]);
+      if (tip) touch_line(X, nx, 1, Y[j], b, &r->hcost[j * nx]);
+    }
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
-    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, r, -1, &r->vcost[j * ny]);
+    for (int j = j0; j <= j1; j++) {
+      line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, r, -1, &r->vcost[j * ny]);
+      if (other) touch_line(Y, ny, 0, X[j], a, &r->vcost[j * ny]);
+      if (tip) touch_line(Y, ny, 0, X[j], b, &r->vcost[j * ny]);
+    }
+    bg_vec za, zb; /* the arrowhead's zone, crossed (touch_cost) */
+    if (!tip || !tip_zone(&r->ix, s, &za, &zb)) continue;
+    line_range(Y, ny, fmin(za.y, zb.y), fmax(za.y, zb.y), &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(X, nx, 1, Y[j], za, zb, COST_TOUCH, 0, 0, r, -1, &r->hcost[j * nx]);
+    line_range(X, nx, fmin(za.x, zb.x), fmax(za.x, zb.x), &j0, &j1);
+    for (int j = j0; j <= j1; j++) line_meet(Y, ny, 0, X[j], za, zb, COST_TOUCH, 0, 0, r, -1, &r->vcost[j * ny]);
   }
 }

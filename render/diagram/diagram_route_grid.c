@@ -162,7 +162,7 @@ void bg_route_add_ports(bg_router *r, const port *ps, int nps, const port *pt, i
  * off. */
 enum { GROUP_LINES = 24 };
 static void add_group_lines(bg_router *r, double wx0, double wy0, double wx1, double wy1) {
-  if (r->group < 0) return;
+  if (r->group < 0 || r->whole) return;
   bg_near_signals(&r->ix, wx0, wy0, wx1, wy1, &r->nl);
   int added = 0;
   for (int j = 0; j < r->nl.n && added < GROUP_LINES; j++) {

@@ -27,6 +27,11 @@
 #define COST_CROSS_SIGNAL 6.0
 #define GROUP_FENCE INT_MIN /* near_index.sgrp of a frame's border (bg_route_fence) */
 #define COST_SHARE 900.0      /* running on another signal: read as one line */
+#define COST_TOUCH 120.0      /* (touch_cost) through another source's signal's corner or end, or
+                                 across its arrowhead: read as one line turning into the other, a
+                                 branch or a T, so which source feeds which arrow cannot be told */
+#define TOUCH_NEAR 1.5        /* how near a corner or an end counts as through it */
+#define TIP_ZONE (BG_SIGNAL_ARROW + 1.0) /* a route's last pt before its tip: its arrowhead and 1 pt */
 #define COST_BLOCK 1e6       /* through a node box or along a bond: dearer than any detour */
 #define COST_END 2000.0       /* (end_zone) a bond crossing another bond within END_NEAR pt of its
                                  end, inside or past it: read as that bond ending on it (a false
@@ -121,6 +126,8 @@ struct bg_router {
                              (the repair of false T's, bg_route_blocked_bonds), else a crossing */
   int group;              /* the current route's source: a route may start off the earlier
                              routes of the same one (a signal branching), -1: none */
+  int whole;              /* the current route is drawn whole, no branch (it ran on its
+                             source's earlier routes again after leaving them) */
   int branch_k;           /* the last route's shared stretch (bg_route_branch) */
   int seeded;             /* the last search's route starts on its source's earlier routes
                              (seed_branches: a branch taken off them) */
@@ -198,6 +205,10 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip);
  * box skipped: crossings, runs through boxes or beside bonds, a bond's
  * number or end passed). */
 double bg_route_path_penalty(bg_router *r, const bg_vec *q, int m);
+/* What a route ending at `at` from its target port's stub pays for the
+ * other signals that cross its arrowhead (its last TIP_ZONE pt):
+ * COST_TOUCH each (the later route's side of touch_cost). */
+double bg_route_tip_cost(bg_router *r, bg_vec stub, bg_vec at);
 /* Every edge of the grid's cost into r->hcost and r->vcost. */
 void bg_route_grid_costs(bg_router *r);
 

@@ -7,7 +7,9 @@
  * route is drawn, a segment that runs within SIG_BESIDE of another
  * source's signal is moved across, whole, to SIG_NEAR off it (its two
  * neighbours stretch, or at a route's end its port slides along the box),
- * where that crosses and passes nothing it did not. */
+ * where that crosses and passes nothing it did not. Then a small step (two
+ * legs going the same way a few points apart) is straightened, by a route's
+ * end (unstep_end) or inside it (unstep_mid), where that passes nothing more. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -170,7 +172,7 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
     if (!ok) continue;
     double near = beside_all(r, moved, m, group), pen = bg_route_path_penalty(r, moved, m);
     /* nothing crossed or passed that was not before, and less beside others (its neighbours too) */
-    if (pen <= pen0 + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
+    if (pen <= pen0 + fmin(COST_HUG * (best - near), 60) + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
   }
   unpark(r, own, m, keep);
   if (!found) return 0;
@@ -240,6 +242,81 @@ static int unstep_end(bg_router *r, int route, bg_vec *pts, int n, int at_start)
   return n - 2;
 }
 
+/* A step inside a route: legs P-Q and R-S going the same way, joined by
+ * Q-R under MIN_LEG across (randnet40_3's c17 -> k38 stepped 5 pt down to
+ * pass below an arrowhead, issue 31). Either leg moves across by the step
+ * onto the other's line: P-Q (the leg O-P before it stretching or
+ * shrinking at P) or R-S (S-T after it at S), each neighbour keeping its
+ * way and MIN_LEG (the arrow's leg 10), no branch of the source on a leg
+ * that moves or at a corner that moves, where the one straight leg left
+ * crosses and passes nothing the legs did not: Q and R dropped. Q is
+ * pts[i]; as in nudge_segment, no segment before `first` moves and none
+ * before first - 1 stretches. Returns the new number of points. */
+static int unstep_mid(bg_router *r, int route, bg_vec *pts, int n, int i, int first) {
+  const struct routed *rt = &r->route[route];
+  if (i < 2 || i + 3 >= n) return n; /* a step by an end is unstep_end's */
+  bg_vec P = pts[i - 1], Q = pts[i], R = pts[i + 1], S = pts[i + 2];
+  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q), c = bg_vsub(S, R);
+  double la = bg_vlen(a), lb = bg_vlen(b), lc = bg_vlen(c);
+  if (la <= 0 || lc <= 0 || lb <= 0 || lb >= MIN_LEG || !axial(a) || !axial(b) || !axial(c)) return n;
+  if ((a.x * c.x + a.y * c.y) < 0.999 * la * lc || fabs(a.x * b.x + a.y * b.y) > 0.01 * la * lb) return n;
+  double best = INFINITY;
+  int choice = -1;
+  bg_vec line[4], keep[4], feet[MAX_FEET];
+  for (int opt = 0; opt < 2; opt++) {
+    /* the points O P Q R S T from lo, the four index segments from lo */
+    int lo = opt ? i - 1 : i - 2, seg[4];
+    if (lo < first - 1) continue;
+    int ok = 1;
+    for (int k = 0; k < 4 && ok; k++) ok = (seg[k] = index_segment(r, route, pts[lo + k], pts[lo + k + 1])) >= 0;
+    if (!ok) continue;
+    /* the neighbour that stretches (k 0 for P-Q, 3 for R-S), the legs that move */
+    int nb = opt ? 3 : 0;
+    bg_vec far = opt ? pts[lo + 4] : pts[lo], corner = opt ? S : P, moved = opt ? bg_vsub(S, b) : bg_vadd(P, b);
+    bg_vec o = bg_vsub(corner, far), o2 = bg_vsub(moved, far);
+    double least = opt && lo + 4 == n - 1 ? 10 : MIN_LEG;
+    if (bg_vlen(o) <= 0 || o.x * o2.x + o.y * o2.y <= 0 || bg_vlen(o2) < least || fabs(o.x * a.x + o.y * a.y) > 0.01 * bg_vlen(o) * la)
+      continue; /* the neighbour at right angles, keeping its way */
+    for (int k = 0; k < 4 && ok; k++) {
+      int stays = opt ? k == 0 : k == 3; /* the leg that keeps its line */
+      if (stays) continue;
+      if (k == nb) {
+        int nf = branch_feet(r, r->ix.sa[seg[k]], r->ix.sb[seg[k]], &corner, rt->group, route, feet);
+        for (int f = 0; nf > 0 && f < nf; f++) ok &= bg_point_seg(feet[f], far, moved) < 0.01;
+        ok &= nf >= 0;
+      } else
+        ok &= branch_feet(r, r->ix.sa[seg[k]], r->ix.sb[seg[k]], NULL, rt->group, route, feet) == 0;
+    }
+    if (!ok) continue;
+    bg_vec old[5], now[3];
+    for (int k = 0; k < 5; k++) old[k] = pts[lo + k];
+    if (opt) now[0] = P, now[1] = moved, now[2] = pts[lo + 4];
+    else now[0] = pts[lo], now[1] = moved, now[2] = S;
+    park(r, seg, 4, keep);
+    double pen = bg_route_path_penalty(r, now, 2), pen0 = bg_route_path_penalty(r, old, 4);
+    unpark(r, seg, 4, keep);
+    if (pen <= pen0 + 0.01 && pen < best) best = pen, choice = opt, memcpy(line, now, sizeof now);
+  }
+  if (choice < 0) return n;
+  int lo = choice ? i - 1 : i - 2, seg[4];
+  for (int k = 0; k < 4; k++) seg[k] = index_segment(r, route, pts[lo + k], pts[lo + k + 1]);
+  /* the index, each as the route runs: the stretched neighbour and the
+   * straight leg, the other two left as points on it */
+  if (choice) {
+    bg_near_move_signal(&r->ix, seg[0], line[0], line[1]);
+    bg_near_move_signal(&r->ix, seg[1], line[1], line[1]), bg_near_move_signal(&r->ix, seg[2], line[1], line[1]);
+    bg_near_move_signal(&r->ix, seg[3], line[1], line[2]);
+  } else {
+    bg_near_move_signal(&r->ix, seg[0], line[0], line[1]), bg_near_move_signal(&r->ix, seg[1], line[1], line[2]);
+    bg_near_move_signal(&r->ix, seg[2], line[2], line[2]), bg_near_move_signal(&r->ix, seg[3], line[2], line[2]);
+    r->ix.slast[seg[1]] = r->ix.slast[seg[3]], r->ix.slast[seg[3]] = 0;
+  }
+  /* the points: Q and R dropped, the moved corner in place */
+  pts[choice ? i + 2 : i - 1] = line[1];
+  memmove(pts + i, pts + i + 2, (size_t)(n - i - 2) * sizeof *pts);
+  return n - 2;
+}
+
 int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int *n) {
   if (k < 0 || k >= r->nroute || r->route[k].group < 0) return 0;
   const struct routed *rt = &r->route[k];
@@ -248,5 +325,6 @@ int bg_route_nudge(bg_router *r, int k, int first, bg_vec *pts, int *n) {
   for (int i = first < 0 ? 0 : first; i + 1 < *n; i++) moved += nudge_segment(r, rt, pts, *n, i, first <= 0);
   *n = unstep_end(r, k, pts, *n, 0);
   if (first <= 0) *n = unstep_end(r, k, pts, *n, 1);
+  for (int i = 2; i + 3 < *n; i++) *n = unstep_mid(r, k, pts, *n, i, first < 0 ? 0 : first);
   return moved + (before - *n) / 2;
 }

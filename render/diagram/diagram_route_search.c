@@ -49,7 +49,7 @@ enum { FROM_BRANCH = -1000 };
  * of one side of the source). The lines of those routes are the grid's
  * (add_group_lines keeps them whole), so their vertices lie on them. */
 static void seed_branches(bg_router *r) {
-  if (r->group < 0) return;
+  if (r->group < 0 || r->whole) return;
   int nx = r->nxl, ny = r->nyl;
   bg_near_signals(&r->ix, r->X[0] - 1, r->Y[0] - 1, r->X[nx - 1] + 1, r->Y[ny - 1] + 1, &r->nl);
   for (int jj = 0; jj < r->nl.n; jj++) {
@@ -176,7 +176,8 @@ static int route_grid(bg_router *r, port *ps, int nps, port *pt, int npt, double
   if (r->gap > max_gap) return 0;
   bg_route_snap_ports(r, ps, nps), bg_route_snap_ports(r, pt, npt);
   for (int i = 0; i < nps; i++) ps[i].cost = ps[i].base + bg_route_seg_cost(r, ps[i].at, ps[i].stub, r->from_node);
-  for (int i = 0; i < npt; i++) pt[i].cost = pt[i].base + bg_route_seg_cost(r, pt[i].stub, pt[i].at, r->to_node);
+  for (int i = 0; i < npt; i++)
+    pt[i].cost = pt[i].base + bg_route_seg_cost(r, pt[i].stub, pt[i].at, r->to_node) + bg_route_tip_cost(r, pt[i].stub, pt[i].at);
   int n = 0;
   *cost = search(r, ps, nps, pt, npt, pts, cap, &n);
   return n;

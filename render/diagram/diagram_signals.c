@@ -18,7 +18,8 @@ static bg_vec node_exit(const bg_diagram_layout *d, int n, bg_vec toward, double
 }
 
 /* ---------------------------------------------------------------- drawing */
-enum { ALEN = 6, AWID = 4 };
+#define ALEN BG_SIGNAL_ARROW
+enum { AWID = 4 };
 
 /* Roles: "KIND NAME" for the line ("signal w->T", counted by the tests),
  * "KIND-arrow NAME" and "KIND-dot NAME" for the marks. */

@@ -486,22 +486,28 @@ static const fc_stats limits[3][2] = {
  * side, 2 / 0 / 1 / 0 / 0 / 1 once bg_route_nudge moved them apart ->
  * 1 / 0 / 0 / 0 / 0 / 0 since a segment SIG_NEAR off another counts as
  * clear (by rounding it had not) and a branch taken off a neighbour that
- * keeps its foot no longer holds a segment; the one left is reactions20's
+ * keeps its foot no longer holds a segment; the one left was reactions20's
  * c11 -> k4 beside c15 -> k16 for 97 pt, between C : c16's label and a
- * signal its arrow's leg meets end to end.
+ * signal its arrow's leg met end to end.
  * Last column (fc_sig_touch): signals of different sources touching, a
  * corner or end of one on the other or a line across the other's
- * arrowhead, as measured when it was added: reactions20's c4 -> k3 and
- * c11 -> k4 turn at one point, each onto the other's line (a cross of two
- * arrows and two sources), and lines pass through arrowheads.
+ * arrowhead, 2 / 2 / 0 / 1 / 0 / 1 -> 0 since a route pays COST_TOUCH
+ * there (touch_cost, diagram_route_cost.c): reactions20's c4 -> k3 and
+ * c11 -> k4 had turned at one point, each onto the other's line (a cross
+ * of two arrows and two sources). Routes moved with it: signal crossings
+ * in the default style 63 -> 61, and reactions20's pair beside each other
+ * 1 -> 0 (default), 0 -> 1 -> 0 (every layer: a route that ran on its
+ * source's lines again was drawn whole without its source, so the nudge
+ * pass skipped it; it keeps its source now, and a nudge may take a run
+ * nearer a bond, up to 60 pt of price, to end a double line).
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 1, 2},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 66, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 61, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 66, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 62, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 62, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
     {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
@@ -755,14 +761,19 @@ static const struct {
                   short bonds leave no other crossing within the search's window; 72 -> 73
                   with signals moved off others' side: c63 -> k105 across bond 163's
                   end, not priced where the checker's gap reaches past the router's;
-                  73 -> 71 with the second detour pass) */
+                  73 -> 71 with the second detour pass, 71 -> 70 with routes kept off
+                  other signals' corners and arrowheads) */
   int touching; /* limit: signal pairs of different sources touching (fc_sig_touch: a
                    corner or end of one on the other, a line across the other's
-                   arrowhead), as measured when it was added */
+                   arrowhead; bench_reactions300 137 -> 31, modladder120 35 -> 0 and
+                   reactions60 7 -> 0 since a route pays COST_TOUCH there,
+                   bench_reactions300's pairs side by side 99 -> 49 and steps 14 -> 6
+                   with it, the rest where its bands' long runs leave no other way in
+                   the window) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 3, 3, 1, 311, 1, 15, 71, 137},
-    {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0, 0, 0, 35},
-    {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0, 0, 0, 7},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 3, 3, 1, 311, 1, 15, 70, 31},
+    {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0, 0, 0, 0},
+    {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0, 0, 0, 0},
     {{"masses520", fm_masses, 520}, NULL, 0, 0, 0, 0, 0, 0, 0, 0}, /* 2 601 nodes: rows by default */
     {{"two260", fm_two_chains, 260}, NULL, 0, 0, 0, 0, 0, 0, 0, 0}, /* 2 082 nodes in two parts */
     {{"outers110", fm_outers, 110}, NULL, 0, 0, 0, 0, 0, 1, 0, 0}, /* 2 202 nodes, frames three deep */
@@ -980,11 +991,15 @@ static void test_held_out_models(void) {
   INT_EQ(tot.crowded, 0);
   INT_EQ(tot.tips_beside, 0); /* 13 before a target's corner ports stood over its text */
   /* lines stepping 2.6 to 7.6 pt between two lanes of the grid (10 before
-   * signals kept off bonds' ends) */
-  OK(tot.steps <= 6);
-  /* signals of different sources touching (fc_sig_touch), as measured
-   * when it was added */
-  OK(tot.sig_touch <= 33);
+   * signals kept off bonds' ends); 5 -> 7 since routes keep off other
+   * signals' corners and arrowheads (touch_cost): randnet40_3's c17 -> k38
+   * steps 5 pt down to pass below the arrow into k17 rather than
+   * through its tip, and c26 -> k29 to pass 16 pt off a bond instead of 11
+   * (unstep_mid finds no straight way that crosses nothing more) */
+  OK(tot.steps <= 7);
+  /* signals of different sources touching (fc_sig_touch): 33 before a
+   * route paid COST_TOUCH for another's corner, end or arrowhead */
+  INT_EQ(tot.sig_touch, 0);
   /* signals across a bond among its half arrow or stroke, or between its
    * end and its node: 153 before a signal router charged COST_AT_END there
    * and held bonds as reaching their nodes; 5 left in dense nets where the

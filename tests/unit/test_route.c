@@ -10,7 +10,10 @@
  * points beside another source's is moved off it (bg_route_nudge), a
  * branch's foot on a neighbour moving with it; the detour pass takes a
  * segment's U's nearest first and knows its earlier U's on a second call;
- * and a small step by a route's end is straightened (unstep_end). */
+ * a small step by a route's end is straightened (unstep_end), and one
+ * inside a route (unstep_mid); and a route pays for passing through
+ * another source's corner or across its arrowhead (touch_cost), and for
+ * another's line across its own arrowhead (bg_route_tip_cost). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -348,6 +351,81 @@ static void test_unstep_at_the_arrow(void) {
   fx_free(&f);
 }
 
+/* What a segment pays for touching another source's signal: an L from
+ * (x0, y0) right 100 pt, then down 100 pt to its tip. Meeting its corner
+ * end to end (the line carried on up from it) costs COST_TOUCH; crossing
+ * its last leg 3 pt above the tip, through the arrowhead, COST_TOUCH more
+ * than a crossing; in the leg's middle a crossing's COST_CROSS_SIGNAL only;
+ * the same lines of the L's own source cost no touch. A route's own
+ * arrowhead: a target stub whose last 7 pt another signal crosses pays
+ * COST_TOUCH, one crossed 8 pt back nothing. */
+static void test_touch_costs(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  if (d) {
+    bg_router *r = bg_router_new(d->L, f.m->nbond, NULL, 1);
+    double x0 = r->fx1 + 100, y0 = r->fy0; /* clear of the figure */
+    bg_vec ell[3] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 100)};
+    r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
+    bg_route_keep(r, ell, 3);
+    for (int same = 0; same < 2; same++) {
+      r->group = same ? 7 : 3;
+#define EXTRA(ax, ay, bx, by) (bg_route_seg_cost(r, bg_v(ax, ay), bg_v(bx, by), -1) - hypot((bx) - (ax), (by) - (ay)))
+      double end_to_end = EXTRA(x0 + 100, y0 - 60, x0 + 100, y0 - 1);
+      double head = EXTRA(x0 + 50, y0 + 97, x0 + 150, y0 + 97), middle = EXTRA(x0 + 50, y0 + 50, x0 + 150, y0 + 50);
+#undef EXTRA
+      OK(fabs(end_to_end - (same ? 0 : COST_TOUCH)) < 1e-6);
+      OK(fabs(head - COST_CROSS_SIGNAL - (same ? 0 : COST_TOUCH)) < 1e-6);
+      OK(fabs(middle - COST_CROSS_SIGNAL) < 1e-6);
+    }
+    r->group = 3;
+    OK(fabs(bg_route_tip_cost(r, bg_v(x0 + 107, y0 + 50), bg_v(x0 + 97, y0 + 50)) - COST_TOUCH) < 1e-6);
+    OK(fabs(bg_route_tip_cost(r, bg_v(x0 + 118, y0 + 50), bg_v(x0 + 108, y0 + 50))) < 1e-6);
+    r->group = 7;
+    OK(fabs(bg_route_tip_cost(r, bg_v(x0 + 107, y0 + 50), bg_v(x0 + 97, y0 + 50))) < 1e-6);
+    bg_router_free(r);
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
+/* A step inside a route (unstep_mid): legs at y0 and y0 + 5 joined by a
+ * 5 pt leg. In the clear the leg before moves down onto the leg after's
+ * line (the first leg stretching by 5 pt); where another source's line
+ * below would be crossed, the leg after moves up instead (the last leg
+ * stretching); the two corners of the step dropped, the index following. */
+static void test_unstep_inside(void) {
+  fx f;
+  bg_diagram *d = ladder_drawing(&f);
+  if (d) {
+    for (int blocked = 0; blocked < 2; blocked++) {
+      bg_router *r = bg_router_new(d->L, f.m->nbond, NULL, 1);
+      double x0 = r->fx1 + 100, y0 = r->fy0 + 100;
+      r->from_node = r->to_node = -1, r->bond = -1, r->group = 9;
+      bg_vec other[2] = {bg_v(x0 + 50, y0 + 2), bg_v(x0 + 50, y0 + 40)};
+      if (blocked) bg_route_keep(r, other, 2);
+      bg_vec pts[6] = {bg_v(x0, y0 - 60), bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 5),
+                       bg_v(x0 + 200, y0 + 5), bg_v(x0 + 200, y0 + 100)};
+      r->group = 3;
+      bg_route_keep(r, pts, 6);
+      int n = 6;
+      bg_route_nudge(r, blocked, 0, pts, &n);
+      INT_EQ(n, 4);
+      if (n == 4) {
+        OK(pts[0].x == x0 && pts[0].y == y0 - 60 && pts[3].x == x0 + 200 && pts[3].y == y0 + 100);
+        if (blocked) /* the leg after moved up */
+          OK(pts[1].x == x0 && pts[1].y == y0 && pts[2].x == x0 + 200 && pts[2].y == y0);
+        else /* the leg before moved down */
+          OK(pts[1].x == x0 && pts[1].y == y0 + 5 && pts[2].x == x0 + 200 && pts[2].y == y0 + 5);
+        index_matches(r, 3, pts, n);
+      }
+      bg_router_free(r);
+    }
+  }
+  bg_diagram_free(d);
+  fx_free(&f);
+}
+
 int main(void) {
   test_axis_lines_bounded();
   test_two_detours_on_one_segment();
@@ -356,5 +434,7 @@ int main(void) {
   test_detours_nearest_first_and_again();
   test_nudge_carries_branches();
   test_unstep_at_the_arrow();
+  test_touch_costs();
+  test_unstep_inside();
   return bg_t_done();
 }
