@@ -284,13 +284,21 @@ static void overview(rp_doc *d, const bg_scene *s, const double r[4], const tili
   d->y += r[3] * sc + 6;
 }
 
-/* The region r (x, y, w, h of scene s) over t->nx x t->ny pages. */
+/* The region r (x, y, w, h of scene s) over t->nx x t->ny pages: a page
+ * each, or with `pack` each below the one before while the page (in the
+ * same orientation) holds it with its caption: a highlight too wide for a
+ * page is a strip whose parts each took a page of their own, three
+ * quarters of it empty (hydraulic_bridge's path 3, issue 31). */
+#define TILE_CAPTION 14.0 /* a part's caption line and the gap below it */
 static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const tiling *t,
-                       int landscape, const char *what) {
+                       int landscape, const char *what, int pack) {
   for (int j = 0; j < t->ny; j++)
     for (int i = 0; i < t->nx; i++) {
       if (!t->num[j * t->nx + i]) continue;
-      rp_new_page(d, landscape);
+      const rp_page *p = d->npage ? d->page[d->npage - 1] : NULL;
+      int same_way = p && (p->sc.width > p->sc.height) == (landscape != 0);
+      if (pack && same_way && rp_room(d) >= 8 + TILE_CAPTION + t->th * t->scale) d->y += 8;
+      else rp_new_page(d, landscape);
       char cap[256];
       if (t->nused == 1) snprintf(cap, sizeof cap, "%s, at %.0f %%", what, 100 * t->scale);
       else
@@ -471,7 +479,7 @@ void rp_sec_diagram(rp_ctx *c) {
     overview(d, s, r, &t, lh < 0.6 * rp_room(d) ? lh : 0);
   }
   if (!own) place_legend(d, s, &g, t.scale, land);
-  emit_tiles(d, s, r, &t, land, "Diagram");
+  emit_tiles(d, s, r, &t, land, "Diagram", 0);
 }
 
 /* ---------------------------------------------------------------- section 3: choice */
@@ -658,7 +666,9 @@ static void show_one(rp_ctx *c, const hl *h) {
   if (cropped) bg_sb_puts(&x, " The diagram is cropped to the highlighted item.");
   if (sc >= smin) {
     const bg_scene *k = keep_cropped(c, dg, r);
-    rp_subsection(d, bg_sb_str(&t), 16 + r[3] * sc);
+    /* the heading kept with its text and the whole diagram (16 pt for the
+     * text overran the page by up to its second line) */
+    rp_subsection(d, bg_sb_str(&t), rp_para_height(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0) + 4 + r[3] * sc);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
     d->y += 4;
     rp_place(d, k, r[0], r[1], r[2], r[3], rp_left() + (cw - r[2] * sc) / 2, d->y, sc);
@@ -668,10 +678,10 @@ static void show_one(rp_ctx *c, const hl *h) {
     plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, 1, MAX_HL_TILES, &tl);
     const bg_scene *k = keep_cropped(c, dg, r); /* every tile lies inside r */
     rp_subsection(d, bg_sb_str(&t), 30);
-    if (tl.nused == 1) bg_sb_puts(&x, " It follows on a page of its own.");
-    else bg_sb_printf(&x, " It follows on %d pages.", tl.nused);
+    if (tl.nused == 1) bg_sb_puts(&x, " It follows at a readable scale.");
+    else bg_sb_printf(&x, " It follows in %d parts, one below the other.", tl.nused);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
-    emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t));
+    emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t), 1);
   }
   bg_sb_free(&t);
   bg_sb_free(&x);

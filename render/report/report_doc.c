@@ -128,6 +128,15 @@ void rp_para(rp_doc *d, const char *markup, double size, double indent, double h
   rp_lines_free(&l);
 }
 
+double rp_para_height(const rp_doc *d, const char *markup, double size, double indent, double hang) {
+  double w = rp_content_w(d) - indent;
+  rp_lines l;
+  rp_wrap(d->font, size, markup, w, w - hang, &l);
+  double h = l.n * rp_line_height(d->font, size);
+  rp_lines_free(&l);
+  return h;
+}
+
 /* ---------------------------------------------------------------- headings */
 void rp_section(rp_doc *d, const char *title, int numbered, int newpage, double keep) {
   double lh = rp_line_height(d->font, RP_SIZE_H1);
@@ -151,7 +160,7 @@ void rp_section(rp_doc *d, const char *title, int numbered, int newpage, double 
 
 void rp_subsection(rp_doc *d, const char *title, double keep) {
   double lh = rp_line_height(d->font, RP_SIZE_H2);
-  rp_need(d, lh + 10 + keep);
+  rp_need(d, lh + 12 + keep); /* the gap above and below the heading: keep whole below it */
   rp_gap(d, 8);
   rp_outline(d, title, 1, d->y);
   bg_strbuf b = {0};

@@ -136,6 +136,8 @@ void rp_outline(rp_doc *d, const char *title, int level, double y);
 /* A wrapped paragraph at the cursor; lines that do not fit go on the next
  * page. indent: from the left margin; hang: further indent of lines 2... */
 void rp_para(rp_doc *d, const char *markup, double size, double indent, double hang, bg_rgba color);
+/* The height rp_para gives the paragraph (its lines at their line height). */
+double rp_para_height(const rp_doc *d, const char *markup, double size, double indent, double hang);
 /* One text item at (x, y) (top-left unless halign given), no wrapping. */
 bg_scene_item *rp_text(rp_doc *d, const char *markup, double x, double y, double size,
                        double halign, bg_rgba color);

@@ -302,6 +302,43 @@ static void sections_free(rp_ctx *c, bg_diags *dg) {
   bg_diags_free(dg);
 }
 
+/* A highlight too wide for a page at a readable scale is a strip cut into
+ * parts: each part goes below the one before while the page holds it (each
+ * took a page of its own, three quarters of it empty: hydraulic_bridge's
+ * causal path 3 in two parts on two pages). Every part lies inside its
+ * page's content area, and some page of the section holds two. */
+static void test_highlight_parts_packed(const char *name) {
+  efx f;
+  OK(efx_load(&f, name, NULL, -1, NULL, 0) == 0);
+  if (!f.m) {
+    efx_free(&f);
+    return;
+  }
+  bg_render_opts o;
+  bg_report_input in;
+  bg_diags dg;
+  rp_ctx c;
+  sections_2_3(&f, &o, &in, &dg, &c, 0);
+  int parts = 0, most = 0, inside = 1;
+  for (int p = 0; p < c.body.npage; p++) {
+    const rp_page *pg = c.body.page[p];
+    int here = 0;
+    for (int i = 0; i < pg->sc.nitem; i++) {
+      const bg_scene_item *it = &pg->sc.item[i];
+      here += it->kind == BG_ITEM_TEXT && it->text && strstr(it->text, ", part ") && strncmp(it->text, "Diagram", 7);
+    }
+    for (int k = 0; here && k < pg->nplace; k++) {
+      const bg_surface_place *pl = &pg->place[k];
+      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 && pl->y + pl->sh * pl->scale <= pg->sc.height - RP_MARGIN_BOTTOM + 1e-6;
+    }
+    parts += here, most = here > most ? here : most;
+  }
+  BG_T_REPORT(parts >= 2 && most >= 2 && inside, "%s: %d highlight parts, at most %d on a page, inside %d", name, parts,
+              most, inside);
+  sections_free(&c, &dg);
+  efx_free(&f);
+}
+
 /* Sections 2 and 3 alone: the full diagram is the one layout; every
  * highlighted diagram is drawn from it, on its page, with every node it
  * keeps where it is there; want highlights are drawn (at most 12, whatever
@@ -433,6 +470,7 @@ int main(void) {
   test_report("bond_loop");
   test_report("hydraulic_bridge");
   test_highlights_share_layout("hydraulic_bridge", NULL, 8, 8, 0);
+  test_highlight_parts_packed("hydraulic_bridge");
   test_highlights_share_layout("bond_loop", NULL, 3, 0, 0);
   char *chain = chain_model(200); /* 401 elements: no lower cap for large models */
   test_highlights_share_layout(NULL, chain, 12, 12, 0);
