@@ -139,7 +139,7 @@ static int other_signal(const bg_router *r, int s) {
   return r->ix.sb[s].x != r->ix.sa[s].x || r->ix.sb[s].y != r->ix.sa[s].y;
 }
 
-/* Routed segment s's arrowhead and the 2 pt behind it (its last TIP_ZONE
+/* Routed segment s's arrowhead and the 1 pt behind it (its last TIP_ZONE
  * pt, when it ends its route): 1 and *a-*b, else 0. */
 static int tip_zone(const near_index *ix, int s, bg_vec *a, bg_vec *b) {
   bg_vec d = bg_vsub(ix->sb[s], ix->sa[s]);
@@ -149,15 +149,6 @@ static int tip_zone(const near_index *ix, int s, bg_vec *a, bg_vec *b) {
   return 1;
 }
 
-/* What segment p-q pays for touching routed segment s of another signal
- * (other_signal): COST_TOUCH for passing within TOUCH_NEAR of s's start (a
- * corner, or the route's start: each corner once, as the start of the
- * segment after it) or, when s ends its route, of its tip, and for
- * crossing s's arrowhead. Two signals
- * meeting at a corner or end to end, or one through another's arrowhead,
- * read as one line turning, a branch or a T (reactions20's c4 -> k3 and
- * c11 -> k4 had one corner, each turning onto the other's line: a cross of
- * two arrows and two sources, issue 31). */
 /* Whether point e lies within TOUCH_NEAR of segment p-q (its box first: most do not). */
 static int touches(bg_vec e, bg_vec p, bg_vec q) {
   if (e.x < fmin(p.x, q.x) - TOUCH_NEAR || e.x > fmax(p.x, q.x) + TOUCH_NEAR || e.y < fmin(p.y, q.y) - TOUCH_NEAR ||
@@ -166,6 +157,15 @@ static int touches(bg_vec e, bg_vec p, bg_vec q) {
   return bg_point_seg(e, p, q) < TOUCH_NEAR;
 }
 
+/* What segment p-q pays for touching routed segment s of another signal
+ * (other_signal): COST_TOUCH for passing within TOUCH_NEAR of s's start (a
+ * corner, or the route's start: each corner once, as the start of the
+ * segment after it) or, when s ends its route, of its tip, and for
+ * crossing s's arrowhead. Two signals meeting at a corner or end to end,
+ * or one through another's arrowhead, read as one line turning, a branch
+ * or a T (reactions20's c4 -> k3 and c11 -> k4 had one corner, each
+ * turning onto the other's line: a cross of two arrows and two sources,
+ * issue 31). */
 static double touch_cost(const bg_router *r, int s, bg_vec p, bg_vec q) {
   double c = 0;
   if (touches(r->ix.sa[s], p, q)) c += COST_TOUCH;
