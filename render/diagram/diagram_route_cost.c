@@ -129,13 +129,13 @@ static double seg_cross_cost(const bg_router *r, int s) {
 
 /* Whether routed segment s is a line of another signal than the current
  * route's source's (a signal route's only), whose ends, corners and
- * arrowhead the route keeps off (touch_cost): a signal's (sgrp its source,
- * or -1 with a route: one drawn apart from its source's others), not a
- * fence's or a bond's; a segment left as a point (bg_route_nudge's
- * dropped step) has none. */
+ * arrowhead the route keeps off (touch_cost): a signal's (sgrp its source:
+ * every signal route keeps one, a route drawn whole too), not a fence's or
+ * a bond's; a segment left as a point (bg_route_nudge's dropped step) has
+ * none. */
 static int other_signal(const bg_router *r, int s) {
   int g = r->ix.sgrp[s];
-  if (r->bond >= 0 || (g >= 0 ? g == r->group : g != -1 || r->ix.sroute[s] < 0)) return 0;
+  if (r->bond >= 0 || g < 0 || g == r->group) return 0;
   return r->ix.sb[s].x != r->ix.sa[s].x || r->ix.sb[s].y != r->ix.sa[s].y;
 }
 
