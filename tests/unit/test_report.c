@@ -292,6 +292,21 @@ static void sections_2_3(efx *f, bg_render_opts *o, bg_report_input *in, bg_diag
   OK(!c->failed && c->ndiag == 1 && c->full == c->diag[0]);
 }
 
+/* The model (an example's name, or text) loaded into f and its sections 2
+ * and 3 into c (sections_2_3): 1, or 0 when it does not load (reported;
+ * f freed). */
+static int load_sections(efx *f, const char *name, const char *text, bg_render_opts *o, bg_report_input *in,
+                         bg_diags *dg, rp_ctx *c, int hl_full_items) {
+  OK(efx_load(f, name, text, -1, NULL, 0) == 0);
+  OK(f->m != NULL);
+  if (!f->m) {
+    efx_free(f);
+    return 0;
+  }
+  sections_2_3(f, o, in, dg, c, hl_full_items);
+  return 1;
+}
+
 static void sections_free(rp_ctx *c, bg_diags *dg) {
   INT_EQ(dg->nerrors, 0);
   for (int i = 0; i < c->ndiag; i++) bg_diagram_free(c->diag[i]);
@@ -309,16 +324,11 @@ static void sections_free(rp_ctx *c, bg_diags *dg) {
  * page's content area, and some page of the section holds two. */
 static void test_highlight_parts_packed(const char *name) {
   efx f;
-  OK(efx_load(&f, name, NULL, -1, NULL, 0) == 0);
-  if (!f.m) {
-    efx_free(&f);
-    return;
-  }
   bg_render_opts o;
   bg_report_input in;
   bg_diags dg;
   rp_ctx c;
-  sections_2_3(&f, &o, &in, &dg, &c, 0);
+  if (!load_sections(&f, name, NULL, &o, &in, &dg, &c, 0)) return;
   int parts = 0, most = 0, inside = 1;
   for (int p = 0; p < c.body.npage; p++) {
     const rp_page *pg = c.body.page[p];
@@ -348,17 +358,11 @@ static void test_highlight_parts_packed(const char *name) {
 static void test_highlights_share_layout(const char *name, const char *text, int want,
                                          int cropped, int hl_full_items) {
   efx f;
-  OK(efx_load(&f, name, text, -1, NULL, 0) == 0);
-  OK(f.m != NULL);
-  if (!f.m) {
-    efx_free(&f);
-    return;
-  }
   bg_render_opts o;
   bg_report_input in;
   bg_diags dg;
   rp_ctx c;
-  sections_2_3(&f, &o, &in, &dg, &c, hl_full_items);
+  if (!load_sections(&f, name, text, &o, &in, &dg, &c, hl_full_items)) return;
   const char *what = name ? name : "inline";
   BG_T_REPORT(c.nhl == want, "%s: %d highlighted diagrams, %d expected", what, c.nhl, want);
   bg_strbuf full = {0};
