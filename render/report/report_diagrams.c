@@ -642,6 +642,9 @@ static void hl_text(const rp_ctx *c, const hl *h, bg_strbuf *t) {
 }
 
 /* Draws one highlighted diagram at the cursor (two fit on a page when small). */
+#define HL_SHRINK 0.75 /* a highlight drawn at least this share of its scale to fit the room
+                          left on a page: reactions20's path 2 left the section's first page
+                          82 % empty, wanting 100 % where 89 % fitted */
 static void show_one(rp_ctx *c, const hl *h) {
   bg_diagram *dg = build_highlight(c, h->kind, h->index + 1);
   if (!dg) return;
@@ -667,8 +670,13 @@ static void show_one(rp_ctx *c, const hl *h) {
   if (sc >= smin) {
     const bg_scene *k = keep_cropped(c, dg, r);
     /* the heading kept with its text and the whole diagram (16 pt for the
-     * text overran the page by up to its second line) */
-    rp_subsection(d, bg_sb_str(&t), rp_para_height(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0) + 4 + r[3] * sc);
+     * text overran the page by up to its second line); where the page's
+     * room left holds it a little smaller, still readable, it goes there */
+    double text = rp_para_height(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0) + 4;
+    double room = rp_room(d) - rp_line_height(d->font, RP_SIZE_H2) - 12 - text;
+    double fits = fit_scale(r[2], r[3], cw, room, 1);
+    if (r[3] * sc > room && fits >= smin && fits >= HL_SHRINK * sc) sc = fits;
+    rp_subsection(d, bg_sb_str(&t), text + r[3] * sc);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
     d->y += 4;
     rp_place(d, k, r[0], r[1], r[2], r[3], rp_left() + (cw - r[2] * sc) / 2, d->y, sc);

@@ -349,6 +349,35 @@ static void test_highlight_parts_packed(const char *name) {
   efx_free(&f);
 }
 
+/* Every diagram placed in sections 2 and 3 lies inside its page's content
+ * area, and the page that starts section 3 holds want highlights: one that
+ * fits the room left at no less than HL_SHRINK of its scale goes there
+ * (delta's path 2 left that page 45 % empty, reactions20's path 2 82 %). */
+static void test_highlights_fill(const char *name, const char *text, int want) {
+  efx f;
+  bg_render_opts o;
+  bg_report_input in;
+  bg_diags dg;
+  rp_ctx c;
+  if (!load_sections(&f, name, text, &o, &in, &dg, &c, 0)) return;
+  int first = -1, inside = 1;
+  for (int i = 0; i < c.body.nhead && first < 0; i++)
+    if (strstr(c.body.head[i].title, "Highlighted")) first = c.body.head[i].page;
+  for (int p = 0; p < c.body.npage; p++) {
+    const rp_page *pg = c.body.page[p];
+    for (int k = 0; k < pg->nplace; k++) {
+      const bg_surface_place *pl = &pg->place[k];
+      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 && pl->y + pl->sh * pl->scale <= pg->sc.height - RP_MARGIN_BOTTOM + 1e-6;
+    }
+  }
+  const char *what = name ? name : "inline";
+  BG_T_REPORT(first >= 0 && c.body.page[first]->nplace == want && inside,
+              "%s: %d highlights on section 3's first page (%d expected), all inside %d", what,
+              first >= 0 ? c.body.page[first]->nplace : -1, want, inside);
+  sections_free(&c, &dg);
+  efx_free(&f);
+}
+
 /* Sections 2 and 3 alone: the full diagram is the one layout; every
  * highlighted diagram is drawn from it, on its page, with every node it
  * keeps where it is there; want highlights are drawn (at most 12, whatever
@@ -475,6 +504,9 @@ int main(void) {
   test_report("hydraulic_bridge");
   test_highlights_share_layout("hydraulic_bridge", NULL, 8, 8, 0);
   test_highlight_parts_packed("hydraulic_bridge");
+  test_highlights_fill("delta", NULL, 2);
+  test_highlights_fill("hydraulic_bridge", NULL, 2);
+  test_highlights_fill("loop_class1", NULL, 1); /* its path 2 would be under HL_SHRINK */
   test_highlights_share_layout("bond_loop", NULL, 3, 0, 0);
   char *chain = chain_model(200); /* 401 elements: no lower cap for large models */
   test_highlights_share_layout(NULL, chain, 12, 12, 0);
