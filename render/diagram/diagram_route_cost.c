@@ -139,13 +139,19 @@ static int other_signal(const bg_router *r, int s) {
   return r->ix.sb[s].x != r->ix.sa[s].x || r->ix.sb[s].y != r->ix.sa[s].y;
 }
 
-/* Routed segment s's arrowhead and the 1 pt behind it (its last TIP_ZONE
- * pt, when it ends its route): 1 and *a-*b, else 0. */
-static int tip_zone(const near_index *ix, int s, bg_vec *a, bg_vec *b) {
-  bg_vec d = bg_vsub(ix->sb[s], ix->sa[s]);
+/* Where the last TIP_ZONE pt of leg from-tip start (from itself on a
+ * shorter leg): the arrowhead and the 1 pt behind it. */
+static bg_vec tip_start(bg_vec from, bg_vec tip) {
+  bg_vec d = bg_vsub(tip, from);
   double len = bg_vlen(d);
-  if (!ix->slast[s] || len <= 0) return 0;
-  *b = ix->sb[s], *a = len <= TIP_ZONE ? ix->sa[s] : bg_vsub(*b, bg_vscale(d, TIP_ZONE / len));
+  return len <= TIP_ZONE ? from : bg_vsub(tip, bg_vscale(d, TIP_ZONE / len));
+}
+
+/* Routed segment s's arrowhead zone (tip_start to its tip, when it ends
+ * its route): 1 and *a-*b, else 0. */
+static int tip_zone(const near_index *ix, int s, bg_vec *a, bg_vec *b) {
+  if (!ix->slast[s] || bg_vlen(bg_vsub(ix->sb[s], ix->sa[s])) <= 0) return 0;
+  *b = ix->sb[s], *a = tip_start(ix->sa[s], ix->sb[s]);
   return 1;
 }
 
@@ -176,10 +182,9 @@ static double touch_cost(const bg_router *r, int s, bg_vec p, bg_vec q) {
 }
 
 double bg_route_tip_cost(bg_router *r, bg_vec stub, bg_vec at) {
-  bg_vec d = bg_vsub(at, stub);
-  double len = bg_vlen(d), c = 0;
-  if (r->bond >= 0 || len <= 0) return 0;
-  bg_vec a = len <= TIP_ZONE ? stub : bg_vsub(at, bg_vscale(d, TIP_ZONE / len));
+  double c = 0;
+  if (r->bond >= 0 || bg_vlen(bg_vsub(at, stub)) <= 0) return 0;
+  bg_vec a = tip_start(stub, at);
   bg_near_signals(&r->ix, fmin(a.x, at.x) - 1, fmin(a.y, at.y) - 1, fmax(a.x, at.x) + 1, fmax(a.y, at.y) + 1, &r->nl);
   for (int j = 0; j < r->nl.n; j++) {
     int s = r->nl.k[j];

@@ -113,12 +113,8 @@ int bg_route_detour(bg_router *r, int k, int first, bg_vec *pts, int n, int cap)
     /* the index: the crossing segment (the route's own, or the rest an
      * earlier U added, in this call or an earlier one) cut short at the U,
      * the rest added */
-    for (int s = rt->seg0; s < r->ix.nseg; s++)
-      if (r->ix.sroute[s] == k && bg_vlen(bg_vsub(r->ix.sa[s], pts[i])) < 1e-9 &&
-          bg_vlen(bg_vsub(r->ix.sb[s], pts[i + 1])) < 1e-9) {
-        r->ix.sb[s] = u4[0];
-        break;
-      }
+    int s = bg_near_route_segment(&r->ix, rt->seg0, k, pts[i], pts[i + 1]);
+    if (s >= 0) r->ix.sb[s] = u4[0];
     for (int j = 0; j < 3; j++) bg_near_add_signal(&r->ix, u4[j], u4[j + 1], rt->group, k);
     bg_near_add_signal(&r->ix, u4[3], pts[i + 1], rt->group, k);
     memmove(pts + i + 5, pts + i + 1, (size_t)(n - i - 1) * sizeof *pts);

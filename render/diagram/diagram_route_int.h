@@ -185,6 +185,10 @@ void bg_near_signals(near_index *ix, double x0, double y0, double x1, double y1,
 /* A routed segment a-b added, of source group (sgrp), drawn for route
  * `route` (bg_router's route[]; -1 none: a fence, a bond's clearance). */
 void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group, int route);
+/* The segment of route `route` that runs from a to b (within 1e-9 pt), of
+ * those from index segment `from` on (the route's first: later ones are
+ * its U's, bg_route_detour), or -1. */
+int bg_near_route_segment(const near_index *ix, int from, int route, bg_vec a, bg_vec b);
 /* Routed segment s moved to a-b (bg_route_nudge): its index entry keeps its
  * number, so a route's range of segments still holds it. */
 void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b);

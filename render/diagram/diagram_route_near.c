@@ -222,6 +222,13 @@ void bg_near_move_signal(near_index *ix, int s, bg_vec a, bg_vec b) {
   list_signal(ix, s, a, b); /* the cells it left still list it: it is tested where it is */
 }
 
+int bg_near_route_segment(const near_index *ix, int from, int route, bg_vec a, bg_vec b) {
+  for (int s = from; s < ix->nseg; s++)
+    if (ix->sroute[s] == route && bg_vlen(bg_vsub(ix->sa[s], a)) < 1e-9 && bg_vlen(bg_vsub(ix->sb[s], b)) < 1e-9)
+      return s;
+  return -1;
+}
+
 void bg_near_add_signal(near_index *ix, bg_vec a, bg_vec b, int group, int route) {
   if (ix->nseg == ix->capseg) {
     ix->capseg = 2 * ix->capseg + 16;

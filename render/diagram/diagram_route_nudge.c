@@ -19,6 +19,9 @@
 #define SIG_BESIDE 6.0 /* nearer than this beside another source's signal: one double line (the
                           checker's 5 and a point: 5 moved fewer, with more steps) */
 #define SIG_NEAR 6.0   /* where a moved segment goes */
+#define NUDGE_PRICE 60.0 /* the most a move may add to a route's price to end a double line: COST_HUG
+                            a point of the run it ends, up to this (no crossed bond, touch or shared
+                            run fits; reactions20's 2-pt move priced 41 pt by a bond's layer lines) */
 #define MIN_LEG 8.0    /* a stretched neighbour keeps at least this (shorter, between two parallel
                           legs, reads as a step; the arrow's leg 10) */
 
@@ -74,10 +77,7 @@ static int branch_feet(bg_router *r, bg_vec a, bg_vec b, const bg_vec *moving, i
 /* The index segment of route k that runs from a to b, or -1: its own
  * (seg0 .. seg1) or one added since (a U round a one-port, bg_route_detour). */
 static int index_segment(const bg_router *r, int k, bg_vec a, bg_vec b) {
-  for (int s = r->route[k].seg0; s < r->ix.nseg; s++)
-    if (r->ix.sroute[s] == k && bg_vlen(bg_vsub(r->ix.sa[s], a)) < 1e-9 && bg_vlen(bg_vsub(r->ix.sb[s], b)) < 1e-9)
-      return s;
-  return -1;
+  return bg_near_route_segment(&r->ix, r->route[k].seg0, k, a, b);
 }
 
 /* The route's index segments seg[0..m) parked (a point each, their old
@@ -172,7 +172,7 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
     if (!ok) continue;
     double near = beside_all(r, moved, m, group), pen = bg_route_path_penalty(r, moved, m);
     /* nothing crossed or passed that was not before, and less beside others (its neighbours too) */
-    if (pen <= pen0 + fmin(COST_HUG * (best - near), 60) + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
+    if (pen <= pen0 + fmin(COST_HUG * (best - near), NUDGE_PRICE) + 0.01 && near < best - 8) best = near, memcpy(chosen, moved, sizeof chosen), found = 1;
   }
   unpark(r, own, m, keep);
   if (!found) return 0;
@@ -183,6 +183,16 @@ static int nudge_segment(bg_router *r, const struct routed *rt, bg_vec *pts, int
 
 /* Whether v runs along an axis. */
 static int axial(bg_vec v) { return fabs(v.x) < 1e-9 || fabs(v.y) < 1e-9; }
+
+/* Whether Q-R is a small step between legs P-Q and R-S: all three on the
+ * axes (a diagonal stub stays), P-Q and R-S going the same way, Q-R across
+ * them and under MIN_LEG. */
+static int small_step(bg_vec P, bg_vec Q, bg_vec R, bg_vec S) {
+  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q), c = bg_vsub(S, R);
+  double la = bg_vlen(a), lb = bg_vlen(b), lc = bg_vlen(c);
+  if (la <= 0 || lc <= 0 || lb <= 0 || lb >= MIN_LEG || !axial(a) || !axial(b) || !axial(c)) return 0;
+  return a.x * c.x + a.y * c.y >= 0.999 * la * lc && fabs(a.x * b.x + a.y * b.y) <= 0.01 * la * lb;
+}
 
 /* A step by a route's end: the leg into the port (the arrow's, or at a
  * source the stub, not a branch's start) a few points across from the leg
@@ -201,11 +211,9 @@ static int unstep_end(bg_router *r, int route, bg_vec *pts, int n, int at_start)
   int has_o = n >= 5, ix[5]; /* O, P, Q, R, E as indices into pts */
   for (int k = 0; k < 5; k++) ix[k] = at_start ? 4 - k : n - 5 + k;
   bg_vec P = pts[ix[1]], Q = pts[ix[2]], R = pts[ix[3]], E = pts[ix[4]];
-  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q), c = bg_vsub(E, R);
-  double la = bg_vlen(a), lb = bg_vlen(b), lc = bg_vlen(c);
-  if (la <= 0 || lc <= 0 || lb <= 0 || lb >= MIN_LEG) return n;
-  if (!axial(a) || !axial(b) || !axial(c)) return n; /* a diagonal stub stays */
-  if ((a.x * c.x + a.y * c.y) < 0.999 * la * lc || fabs(a.x * b.x + a.y * b.y) > 0.01 * la * lb) return n;
+  if (!small_step(P, Q, R, E)) return n;
+  bg_vec b = bg_vsub(R, Q), c = bg_vsub(E, R);
+  double lb = bg_vlen(b), lc = bg_vlen(c);
   /* the index segments O-P, P-Q, Q-R, R-E (each as the route runs); no
    * branch of the source on the step or the port's leg */
   int seg[4] = {-1, -1, -1, -1};
@@ -256,16 +264,14 @@ static int unstep_mid(bg_router *r, int route, bg_vec *pts, int n, int i, int fi
   const struct routed *rt = &r->route[route];
   if (i < 2 || i + 3 >= n) return n; /* a step by an end is unstep_end's */
   bg_vec P = pts[i - 1], Q = pts[i], R = pts[i + 1], S = pts[i + 2];
-  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q), c = bg_vsub(S, R);
-  double la = bg_vlen(a), lb = bg_vlen(b), lc = bg_vlen(c);
-  if (la <= 0 || lc <= 0 || lb <= 0 || lb >= MIN_LEG || !axial(a) || !axial(b) || !axial(c)) return n;
-  if ((a.x * c.x + a.y * c.y) < 0.999 * la * lc || fabs(a.x * b.x + a.y * b.y) > 0.01 * la * lb) return n;
-  double best = INFINITY;
-  int choice = -1;
+  if (!small_step(P, Q, R, S)) return n;
+  bg_vec a = bg_vsub(Q, P), b = bg_vsub(R, Q);
+  double la = bg_vlen(a), best = INFINITY;
+  int choice = -1, segs[2][4];
   bg_vec line[4], keep[4], feet[MAX_FEET];
   for (int opt = 0; opt < 2; opt++) {
     /* the points O P Q R S T from lo, the four index segments from lo */
-    int lo = opt ? i - 1 : i - 2, seg[4];
+    int lo = opt ? i - 1 : i - 2, *seg = segs[opt];
     if (lo < first - 1) continue;
     int ok = 1;
     for (int k = 0; k < 4 && ok; k++) ok = (seg[k] = index_segment(r, route, pts[lo + k], pts[lo + k + 1])) >= 0;
@@ -298,8 +304,7 @@ static int unstep_mid(bg_router *r, int route, bg_vec *pts, int n, int i, int fi
     if (pen <= pen0 + 0.01 && pen < best) best = pen, choice = opt, memcpy(line, now, sizeof now);
   }
   if (choice < 0) return n;
-  int lo = choice ? i - 1 : i - 2, seg[4];
-  for (int k = 0; k < 4; k++) seg[k] = index_segment(r, route, pts[lo + k], pts[lo + k + 1]);
+  const int *seg = segs[choice];
   /* the index, each as the route runs: the stretched neighbour and the
    * straight leg, the other two left as points on it */
   if (choice) {
