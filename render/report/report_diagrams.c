@@ -673,7 +673,7 @@ static void show_one(rp_ctx *c, const hl *h) {
      * text overran the page by up to its second line); where the page's
      * room left holds it a little smaller, still readable, it goes there */
     double text = rp_para_height(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0) + 4;
-    double room = rp_room(d) - rp_line_height(d->font, RP_SIZE_H2) - 12 - text;
+    double room = rp_room(d) - rp_subsection_height(d) - text;
     double fits = fit_scale(r[2], r[3], cw, room, 1);
     if (r[3] * sc > room && fits >= smin && fits >= HL_SHRINK * sc) sc = fits;
     rp_subsection(d, bg_sb_str(&t), text + r[3] * sc);

@@ -158,9 +158,11 @@ void rp_section(rp_doc *d, const char *title, int numbered, int newpage, double 
   d->y += 10;
 }
 
+double rp_subsection_height(const rp_doc *d) { return rp_line_height(d->font, RP_SIZE_H2) + 12; }
+
 void rp_subsection(rp_doc *d, const char *title, double keep) {
   double lh = rp_line_height(d->font, RP_SIZE_H2);
-  rp_need(d, lh + 12 + keep); /* the gap above and below the heading: keep whole below it */
+  rp_need(d, rp_subsection_height(d) + keep); /* the gaps above (8) and below (4): keep whole below it */
   rp_gap(d, 8);
   rp_outline(d, title, 1, d->y);
   bg_strbuf b = {0};

@@ -131,6 +131,8 @@ void rp_gap(rp_doc *d, double h);
  * at least keep points of what follows. newpage: start on a fresh page. */
 void rp_section(rp_doc *d, const char *title, int numbered, int newpage, double keep);
 void rp_subsection(rp_doc *d, const char *title, double keep);
+/* The room a subsection's heading takes, its gaps above and below included. */
+double rp_subsection_height(const rp_doc *d);
 /* Records an outline entry without drawing anything. */
 void rp_outline(rp_doc *d, const char *title, int level, double y);
 /* A wrapped paragraph at the cursor; lines that do not fit go on the next
