@@ -122,6 +122,16 @@ static void index_matches(const bg_router *r, int g, const bg_vec *pts, int n) {
   INT_EQ(live, n - 1);
 }
 
+/* A signal router over d's layout whose routes are kept as group g's, with
+ * no end nodes; *x0, *y0 (when given) a point clear of the figure, 100 pt
+ * right of it at its top. */
+static bg_router *router_for(const bg_diagram *d, const fx *f, int g, double *x0, double *y0) {
+  bg_router *r = bg_router_new(d->L, f->m->nbond, NULL, 1);
+  r->from_node = r->to_node = -1, r->bond = -1, r->group = g;
+  if (x0) *x0 = r->fx1 + 100, *y0 = r->fy0;
+  return r;
+}
+
 /* A straight route across two one-ports' bonds of an RC ladder (the R's
  * and C's above the junction row) goes round both; the index then holds
  * exactly the drawn segments of the route's group, none else. */
@@ -181,9 +191,8 @@ static void test_detours_nearest_first_and_again(void) {
   }
   { /* left to right, R1's U first blocked by lines on its three tops */
     bg_vec pts[16] = {bg_v(L->nx[c0] - 30, y), bg_v(L->nx[r1] + 30, y)};
-    bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
+    bg_router *r = router_for(d, &f, 9, NULL, NULL);
     double top = L->ny[r1] - L->nh[r1] / 2;
-    r->from_node = r->to_node = -1, r->bond = -1, r->group = 9;
     for (int k = 1; k <= 3; k++) {
       bg_vec line[2] = {bg_v(L->nx[r1] - 60, top - 3 * k), bg_v(L->nx[r1] + 60, top - 3 * k)};
       bg_route_keep(r, line, 2);
@@ -253,12 +262,10 @@ static void test_nudge_apart(void) {
   fx f;
   bg_diagram *d = ladder_drawing(&f);
   if (d) {
-    const bg_diagram_layout *L = d->L;
     for (int same = 0; same < 2; same++) {
-      bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
-      double x0 = r->fx1 + 100, y0 = r->fy0; /* clear of the figure */
+      double x0, y0;
+      bg_router *r = router_for(d, &f, 7, &x0, &y0);
       bg_vec other[2] = {bg_v(x0 + 104, y0 - 50), bg_v(x0 + 104, y0 + 250)};
-      r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
       bg_route_keep(r, other, 2);
       bg_vec pts[4] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 200), bg_v(x0 + 200, y0 + 200)};
       r->group = same ? 7 : 3;
@@ -290,13 +297,11 @@ static void test_nudge_carries_branches(void) {
   fx f;
   bg_diagram *d = ladder_drawing(&f);
   if (d) {
-    const bg_diagram_layout *L = d->L;
     const double foot[3] = {50, 99, -1}; /* along the first leg; -1: on the segment */
     for (int c = 0; c < 3; c++) {
-      bg_router *r = bg_router_new(L, f.m->nbond, NULL, 1);
-      double x0 = r->fx1 + 100, y0 = r->fy0;
+      double x0, y0;
+      bg_router *r = router_for(d, &f, 7, &x0, &y0);
       bg_vec other[2] = {bg_v(x0 + 104, y0 - 50), bg_v(x0 + 104, y0 + 250)};
-      r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
       bg_route_keep(r, other, 2);
       bg_vec pts[4] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 200), bg_v(x0 + 200, y0 + 200)};
       r->group = 3;
@@ -363,10 +368,9 @@ static void test_touch_costs(void) {
   fx f;
   bg_diagram *d = ladder_drawing(&f);
   if (d) {
-    bg_router *r = bg_router_new(d->L, f.m->nbond, NULL, 1);
-    double x0 = r->fx1 + 100, y0 = r->fy0; /* clear of the figure */
+    double x0, y0;
+    bg_router *r = router_for(d, &f, 7, &x0, &y0);
     bg_vec ell[3] = {bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 100)};
-    r->from_node = r->to_node = -1, r->bond = -1, r->group = 7;
     bg_route_keep(r, ell, 3);
     for (int same = 0; same < 2; same++) {
       r->group = same ? 7 : 3;
@@ -399,9 +403,9 @@ static void test_unstep_inside(void) {
   bg_diagram *d = ladder_drawing(&f);
   if (d) {
     for (int blocked = 0; blocked < 2; blocked++) {
-      bg_router *r = bg_router_new(d->L, f.m->nbond, NULL, 1);
-      double x0 = r->fx1 + 100, y0 = r->fy0 + 100;
-      r->from_node = r->to_node = -1, r->bond = -1, r->group = 9;
+      double x0, y0;
+      bg_router *r = router_for(d, &f, 9, &x0, &y0);
+      y0 += 100;
       bg_vec other[2] = {bg_v(x0 + 50, y0 + 2), bg_v(x0 + 50, y0 + 40)};
       if (blocked) bg_route_keep(r, other, 2);
       bg_vec pts[6] = {bg_v(x0, y0 - 60), bg_v(x0, y0), bg_v(x0 + 100, y0), bg_v(x0 + 100, y0 + 5),
