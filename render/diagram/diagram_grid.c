@@ -2166,6 +2166,35 @@ static void to_points(grid *g) {
   free(cx), free(cy);
 }
 
+/* The offset (along both axes: a diagonal bond) of one-port w from its hub
+ * on a diagonal cell whose centres lie `along` apart on the longer axis
+ * (x when along_x) and `across` on the other (boxes w, h): `across`, or,
+ * with a label k in the cell beside the hub that w moves towards (-1:
+ * none), far enough out for w's box to stay an em off k's. */
+static double diagonal_offset(const double *w, const double *h, int k, int one_port, int along_x, double across,
+                              double em) {
+  if (k < 0) return across;
+  double need = (along_x ? w[one_port] + w[k] : h[one_port] + h[k]) / 2 + em;
+  return fmax(across, need);
+}
+
+/* Whether one-port w on a diagonal cell of hub v may move out by `out`
+ * along the shorter axis (y when along_x): the two cells beyond it that way
+ * are free, or its box (reference sizes) stays on its own side of the
+ * middle between its row (column) and theirs. */
+static int room_outward(const grid *g, int v, int w, int along_x, double out, const double *rx, int x0, int x1,
+                        const double *ry, int y0, int y1) {
+  int o = along_x ? sgn(g->gy[w] - g->gy[v]) : sgn(g->gx[w] - g->gx[v]);
+  int cx = along_x ? g->gx[w] : g->gx[w] + o, cy = along_x ? g->gy[w] + o : g->gy[w];
+  int bx = along_x ? g->gx[v] : cx, by = along_x ? cy : g->gy[v];
+  if (cell_free(g, cx, cy) && cell_free(g, bx, by)) return 1;
+  if (along_x ? cy < y0 || cy > y1 : cx < x0 || cx > x1) return 0; /* a route's cell outside the nodes' range */
+  double here = along_x ? ry[g->gy[w] - y0] : rx[g->gx[w] - x0];
+  double there = along_x ? ry[cy - y0] : rx[cx - x0]; /* the range covers every node's cell */
+  double half = along_x ? g->rh[w] / 2 : g->rw[w] / 2;
+  return out + half <= fabs(there - here) / 2;
+}
+
 /* A one-port on a diagonal cell of its hub (the hub's four sides taken, as
  * at a grid's inner junction or a species of many reactions) drew its bond
  * from centre to centre at whatever angle the column and row sizes gave
@@ -2174,7 +2203,10 @@ static void to_points(grid *g) {
  * between their centres is diagonal, if its label then stays clear of the
  * hub's bonds along that axis (a causal stroke's half length and a gap)
  * and the bond stays at least 2.5 half arrows long, and the cell it moves
- * towards holds no node (its own cell held nothing else). */
+ * towards holds no bond's run (its own cell held nothing else). Where that
+ * cell holds a label (the I above a mass's junction, its R on the
+ * diagonal: 25 degrees), the one-port stops an em short of it and moves
+ * out along the shorter axis by as much (diagonal_offset). */
 static void diagonal_leaves(grid *g) {
   bg_diagram_layout *d = g->d;
   if (layer_band(g) > 0) return; /* path and loop lines beside every bond: the longer slant keeps their room */
@@ -2197,20 +2229,30 @@ static void diagonal_leaves(grid *g) {
     int q = 2 * (g->gy[w] > g->gy[v]) + (g->gx[w] > g->gx[v]);
     if (barb_quadrants(g, v) & (1 << q)) continue; /* nearer the barb, its stroke would touch it */
     double ax = fabs(rx[g->gx[w] - x0] - rx[g->gx[v] - x0]), ay = fabs(ry[g->gy[w] - y0] - ry[g->gy[v] - y0]);
-    double half_along = ax > ay ? g->rw[w] / 2 : g->rh[w] / 2;
-    double t = fmin(ax, ay); /* the new offset along the longer axis */
+    int along_x = ax > ay, tx = along_x ? g->gx[v] : g->gx[w], ty = along_x ? g->gy[w] : g->gy[v];
+    /* the cell it moves towards (beside the hub) holds a bond's run in a
+     * grid; a label there (series_conductances' R : Ra above its junction)
+     * is kept an em off (k: its node, -1 none) */
+    int k = g->val[cell_slot(g, cell_key(tx, ty))];
+    if (k < 0) k = -1;
+    else if (!own_node(d, k)) continue;
+    double along = fmax(ax, ay), across = fmin(ax, ay);
+    double t = diagonal_offset(g->rw, g->rh, k, w, along_x, across, g->ref->font_size); /* both offsets */
+    if (t > along || (t > across && !room_outward(g, v, w, along_x, t - across, rx, x0, x1, ry, y0, y1))) continue;
+    double half_along = along_x ? g->rw[w] / 2 : g->rh[w] / 2;
     /* the bond enters the label's box at its nearer edge; the junction's end
      * circle at 45 degrees is about 7.3 line widths (diagram_geom.c) */
     double body = (t - fmin(g->rw[w], g->rh[w]) / 2) / BG_SQRT1_2 - 7.5 * lw;
     if (t - half_along < clear || body < least) continue;
-    /* the cell it moves towards (beside the hub) holds a bond's run in a
-     * grid; a label there (series_conductances' R : Ra above its junction)
-     * would be crowded */
-    int along_x = ax > ay, tx = along_x ? g->gx[v] : g->gx[w], ty = along_x ? g->gy[w] : g->gy[v];
-    if (g->val[cell_slot(g, cell_key(tx, ty))] >= 0) continue;
-    double dx = d->nx[w] - d->nx[v], dy = d->ny[w] - d->ny[v], own = fmin(fabs(dx), fabs(dy));
-    if (along_x && fabs(dx) > own) d->nx[w] = d->nx[v] + (dx > 0 ? own : -own);
-    else if (!along_x && fabs(dy) > own) d->ny[w] = d->ny[v] + (dy > 0 ? own : -own);
+    if (k >= 0) { /* the diagonal bond passes the label's corner */
+      double beside = fmin(ax, ay) - (along_x ? g->rh[k] : g->rw[k]) / 2 - (along_x ? g->rw[k] : g->rh[k]) / 2;
+      if (beside * BG_SQRT1_2 < clear) continue;
+    }
+    double dx = d->nx[w] - d->nx[v], dy = d->ny[w] - d->ny[v], on = along_x ? fabs(dx) : fabs(dy);
+    double own = diagonal_offset(d->nw, d->nh, k, w, along_x, along_x ? fabs(dy) : fabs(dx), d->st.font_size);
+    if (on <= own) continue; /* this style's cell is no longer along that axis */
+    d->nx[w] = d->nx[v] + (dx > 0 ? own : -own);
+    d->ny[w] = d->ny[v] + (dy > 0 ? own : -own);
   }
   free(rx), free(ry);
 }

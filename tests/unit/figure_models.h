@@ -217,6 +217,24 @@ __attribute__((unused)) static void fm_outers(bg_strbuf *b, int n) {
   bg_sb_printf(b, "bond O%d.n -> load\n", n - 1);
 }
 
+/* A chain of n damped masses (issue 31, one-ports at 45 degrees beside a
+ * label): each a 1-junction with its inertia, damper and force, the next
+ * one through a 0-junction with a spring. Five bonds a mass: its four
+ * sides taken, one one-port on a diagonal cell, beside the cell above or
+ * below the junction that another one-port's label holds. */
+__attribute__((unused)) static void fm_damped_masses(bg_strbuf *b, int n) {
+  bg_sb_printf(b, "model damped%d\nSe U = 1\n", n);
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "1 v%d\nI m%d = 1\nR b%d = 0.1\nSe F%d = 1\n", i, i, i, i);
+    if (i + 1 < n) bg_sb_printf(b, "0 s%d\nC k%d = 1\n", i, i);
+  }
+  bg_sb_puts(b, "bond U -> v0\n");
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "bond v%d -> m%d\nbond v%d -> b%d\nbond F%d -> v%d\n", i, i, i, i, i, i);
+    if (i + 1 < n) bg_sb_printf(b, "bond v%d -> s%d\nbond s%d -> k%d\nbond s%d -> v%d\n", i, i, i, i, i, i + 1);
+  }
+}
+
 static void fm_nested(bg_strbuf *b) {
   bg_sb_puts(b, "model nested\n"
                 "submodel Inner\n  port p, n\n  1 js\n  R r = 1\n  0 jc\n  C c = 1\n"

@@ -762,7 +762,9 @@ static const struct {
                   with signals moved off others' side: c63 -> k105 across bond 163's
                   end, not priced where the checker's gap reaches past the router's;
                   73 -> 71 with the second detour pass, 71 -> 70 with routes kept off
-                  other signals' corners and arrowheads) */
+                  other signals' corners and arrowheads, 70 -> 71 with causal strokes
+                  kept apart: c74 -> k203 across bond 1125's end, its junction's
+                  circle grown) */
   int touching; /* limit: signal pairs of different sources touching (fc_sig_touch: a
                    corner or end of one on the other, a line across the other's
                    arrowhead; bench_reactions300 137 -> 31, modladder120 35 -> 0 and
@@ -1455,6 +1457,68 @@ static void test_bridges(void) {
       BG_T_REPORT(hub_bonds >= 12 && off_axis == 0 && st.crossings <= 1 && st.touching == 0,
                   "%s %s: %d hub bonds, %d legs off the axes (0), crossings %d (at most 1), strokes touching %d",
                   name[c], styles[si], hub_bonds, off_axis, st.crossings, st.touching);
+      fc_free(&sc);
+      bg_diagram_free(d);
+    }
+    fx_free(&f);
+  }
+}
+
+/* Issue 31, a one-port on a diagonal cell beside another one-port's label
+ * (diagonal_leaves, diagram_grid.c): a chain of masses (fm_damped_masses), each
+ * a 1-junction with its inertia above, its force below and its damper on
+ * the diagonal, and the H-bridge's armature (tests/data/figures/hbridge.bg,
+ * its inductance beside the armature resistance). The one-port did not
+ * move to 45 degrees when the cell it moves towards held a label: the
+ * dampers ran at 20 degrees, the inductance at 27 (held-out states20: 18
+ * such bonds). Now it stops an em short of that label and moves out as
+ * far: every slanted bond is one of these at 45 degrees (forced: its
+ * junction's four sides taken), in every style, and each damper's label
+ * keeps an em (the style's font size) off the inertia's. */
+static void test_diagonal_beside_label(void) {
+  for (int c = 0; c < 2; c++) {
+    fx f;
+    int rc;
+    if (c == 0) {
+      bg_strbuf src = {0};
+      fm_damped_masses(&src, 6);
+      rc = fm_load(&f, "damped", bg_sb_str(&src));
+      bg_sb_free(&src);
+    } else {
+      rc = file_model(&f, "tests/data/figures/hbridge.bg", "hbridge");
+    }
+    for (int si = 0; rc == 0 && si < 3; si++) {
+      fc_stats st = {0};
+      bg_diagram *d = style_drawing(&f, si, NULL);
+      if (!d) continue;
+      count_scene(f.m, bg_diagram_scene(d), &st);
+      int want = c == 0 ? 5 : 1; /* the last mass's damper has the free side */
+      BG_T_REPORT(st.slanted == 0 && st.diagonals == want, "%s %s: slanted %d (0), at 45 degrees %d (%d)",
+                  c ? "hbridge" : "masses", styles[si], st.slanted, st.diagonals, want);
+      fc_scene sc;
+      fc_read(bg_diagram_scene(d), &sc);
+      int *box = fc_elem_boxes(f.m, &sc), near = 0;
+      for (int i = 0; c == 0 && i < 5; i++) {
+        char r[8], in[8];
+        snprintf(r, sizeof r, "b%d", i), snprintf(in, sizeof in, "m%d", i);
+        int er = -1, ei = -1;
+        for (int e = 0; e < f.m->nelem; e++) {
+          if (!strcmp(f.m->elem_name[e], r)) er = e;
+          if (!strcmp(f.m->elem_name[e], in)) ei = e;
+        }
+        if (er < 0 || ei < 0 || box[er] < 0 || box[ei] < 0) {
+          near++;
+          continue;
+        }
+        const fc_box *a = &sc.box[box[er]], *z = &sc.box[box[ei]];
+        double gap = fmax(fmax(a->x0 - z->x1, z->x0 - a->x1), fmax(a->y0 - z->y1, z->y0 - a->y1));
+        if (gap < d->st.font_size - 0.5) {
+          near++;
+          printf("  masses %s: R : %s %.1f pt off I : %s\n", styles[si], r, gap, in);
+        }
+      }
+      INT_EQ(near, 0);
+      free(box);
       fc_free(&sc);
       bg_diagram_free(d);
     }
@@ -2591,6 +2655,7 @@ int main(void) {
   RUN(test_two_row_meshes);
   RUN(test_meshes_with_chains);
   RUN(test_bridges);
+  RUN(test_diagonal_beside_label);
   RUN(test_fans);
   RUN(test_arrows_at_labels);
   RUN(test_signals_clear_of_layers);
