@@ -4,6 +4,8 @@
 #include <stdlib.h>
 
 #include "diagram/diagram_int.h"
+#include "diagram/diagram_route_int.h"
+#include "base/sort.h"
 
 static bg_vec node_centre(const bg_diagram_layout *d, int n) { return bg_v(d->nx[n], d->ny[n]); }
 
@@ -105,31 +107,65 @@ static bg_vec leave_dir(const bg_diagram_layout *d, int b, int n) {
   return d->m->bond_tail[b] == n ? g->tdir : bg_vscale(g->hdir, -1);
 }
 
+/* The bars of bond b's causal stroke at junction j when it is there, bond b
+ * ending at radius r: their ends in e0[], e1[] (a derivative stroke that the
+ * style doubles has its second bar 2.5 line widths further out). Returns how
+ * many: 0 when the stroke is at b's other end. */
+static int stroke_bars(const bg_diagram_layout *d, int j, int b, double r, bg_vec e0[2], bg_vec e1[2]) {
+  const bg_model *m = d->m;
+  int st = d->a->bond_stroke[b];
+  if (!((st == BG_STROKE_HEAD && m->bond_head[b] == j) || (st == BG_STROKE_TAIL && m->bond_tail[b] == j))) return 0;
+  double w = d->st.line_width;
+  bg_vec c = bg_v(d->nx[j], d->ny[j]), v = leave_dir(d, b, j), n = bg_vscale(bg_vleft(v), 4.5 * w);
+  int bars = d->st.derivative_double && bg_bond_derivative(m, d->a, b) ? 2 : 1;
+  for (int k = 0; k < bars; k++) {
+    bg_vec e = bg_vadd(c, bg_vscale(v, r + 2.5 * w * k));
+    e0[k] = bg_vadd(e, n), e1[k] = bg_vsub(e, n);
+  }
+  return bars;
+}
+
+/* The distance between segments a0-a1 and b0-b1 (0 where they cross). */
+static double seg_seg(bg_vec a0, bg_vec a1, bg_vec b0, bg_vec b1) {
+  bg_vec da = bg_vsub(a1, a0), db = bg_vsub(b1, b0);
+  double s0 = da.x * (b0.y - a0.y) - da.y * (b0.x - a0.x), s1 = da.x * (b1.y - a0.y) - da.y * (b1.x - a0.x);
+  double t0 = db.x * (a0.y - b0.y) - db.y * (a0.x - b0.x), t1 = db.x * (a1.y - b0.y) - db.y * (a1.x - b0.x);
+  if (s0 * s1 < 0 && t0 * t1 < 0) return 0;
+  return fmin(fmin(bg_point_seg(a0, b0, b1), bg_point_seg(a1, b0, b1)),
+              fmin(bg_point_seg(b0, a0, a1), bg_point_seg(b1, a0, a1)));
+}
+
 /* Whether bond bk's causal stroke, at radius rk from junction j's centre,
  * comes within its own and a bond's half width (and half a line width
  * more) of the half arrow of bond bi ending at j at radius ri: the angle
  * rule below keeps a stroke off the neighbouring lines, but a barb leans
  * back from its end towards one neighbour (a one-port at 45 degrees
- * between two bonds whose barbs lean its way: reactions12's s0). A
- * derivative stroke that the style doubles has its second bar 2.5 line
- * widths further out, nearer a barb leaning that way (a junction of many
- * inertias in print, issue 31). */
+ * between two bonds whose barbs lean its way: reactions12's s0), and a
+ * doubled derivative stroke's second bar is nearer a barb leaning that
+ * way (a junction of many inertias in print, issue 31). */
 static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, int bk, double rk) {
-  const bg_model *m = d->m;
-  int st = d->a->bond_stroke[bk];
-  if (m->bond_head[bi] != j || !((st == BG_STROKE_HEAD && m->bond_head[bk] == j) || (st == BG_STROKE_TAIL && m->bond_tail[bk] == j)))
-    return 0;
-  double w = d->st.line_width, half = 4.5 * w;
-  bg_vec c = bg_v(d->nx[j], d->ny[j]);
-  bg_vec u = leave_dir(d, bi, j), h = bg_vadd(c, bg_vscale(u, ri)), tip = bg_barb_tip(d, h, bg_vscale(u, -1));
-  bg_vec v = leave_dir(d, bk, j), n = bg_vscale(bg_vleft(v), half);
-  int bars = d->st.derivative_double && bg_bond_derivative(m, d->a, bk) ? 2 : 1;
-  for (int k = 0; k < bars; k++) {
-    bg_vec e = bg_vadd(c, bg_vscale(v, rk + 2.5 * w * k)), e0 = bg_vadd(e, n), e1 = bg_vsub(e, n);
-    double dist = fmin(fmin(bg_point_seg(e0, h, tip), bg_point_seg(e1, h, tip)),
-                       fmin(bg_point_seg(h, e0, e1), bg_point_seg(tip, e0, e1)));
-    if (dist < 1.75 * w) return 1;
-  }
+  if (d->m->bond_head[bi] != j) return 0;
+  bg_vec e0[2], e1[2];
+  int bars = stroke_bars(d, j, bk, rk, e0, e1);
+  double w = d->st.line_width;
+  bg_vec u = leave_dir(d, bi, j), h = bg_vadd(bg_v(d->nx[j], d->ny[j]), bg_vscale(u, ri));
+  bg_vec tip = bg_barb_tip(d, h, bg_vscale(u, -1));
+  for (int k = 0; k < bars; k++)
+    if (seg_seg(e0[k], e1[k], h, tip) < 1.75 * w) return 1;
+  return 0;
+}
+
+/* Whether the causal strokes of bonds bi and bk at junction j (radii ri,
+ * rk) come within their width and half a line width of each other: two
+ * bonds 45 degrees apart or less, both strokes at the junction, drew their
+ * bars end to end (issue 31: a tree's junction of eight bonds ringed by its
+ * strokes, an octagon; 720 such pairs in 38 of the 85 held-out models). */
+static int stroke_on_stroke(const bg_diagram_layout *d, int j, int bi, double ri, int bk, double rk) {
+  bg_vec a0[2], a1[2], b0[2], b1[2];
+  int na = stroke_bars(d, j, bi, ri, a0, a1), nk = na ? stroke_bars(d, j, bk, rk, b0, b1) : 0;
+  for (int p = 0; p < na; p++)
+    for (int q = 0; q < nk; q++)
+      if (seg_seg(a0[p], a1[p], b0[q], b1[q]) < 2 * d->st.line_width) return 1;
   return 0;
 }
 
@@ -151,11 +187,12 @@ static double angle_radius(const bg_diagram_layout *d, int j, double amin, doubl
  * other junctions keep the small circle (a random graph's: a larger one
  * brought touching strokes and false T's). */
 #define RING_ONE_PORTS 8
-static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest) {
+static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest, int *ring) {
   const bg_model *m = d->m;
   double cap = 1.5 * fmax(d->nw[j], d->nh[j]), shortest = INFINITY;
   int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j], one_ports = 0;
   *sharpest = BG_PI / 12; /* a tiny angle is not cured by distance */
+  *ring = 0;
   for (int i = 0; i < nb; i++) {
     int o = m->bond_tail[bs[i]] == j ? m->bond_head[bs[i]] : m->bond_tail[bs[i]];
     one_ports += m->elem_nbond[o] == 1;
@@ -169,7 +206,7 @@ static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest) {
     if (g->bendn) continue;  /* routed: its first leg bounds only its own radius (bent_radius) */
     shortest = fmin(shortest, bg_vlen(bg_vsub(tail ? g->head : g->tail, c)));
   }
-  *sharpest = BG_PI / 90;
+  *sharpest = BG_PI / 90, *ring = 1;
   return shortest < INFINITY ? fmax(cap, 0.4 * shortest) : cap;
 }
 
@@ -194,19 +231,146 @@ static void bent_radius(bg_diagram_layout *d, int j, double r) {
   }
 }
 
-/* Whether some stroke and barb at junction j are too close with the bonds'
- * radii as they are (stroke_on_barb); with only >= 0 only the pairs with
- * bond `only` in them. */
-static int any_stroke_on_barb(const bg_diagram_layout *d, int j, int only) {
+/* Junction j's bonds (their places in its bond list) in the order of the
+ * directions they leave it by: strokes are checked against their
+ * neighbours in it alone (two bars at one radius touch only at a small
+ * angle; a junction of thousands of one-ports checked every pair). */
+typedef struct angle_rank {
+  double a;
+  int i;
+} angle_rank;
+
+static int angle_cmp(const void *x, const void *y, void *ctx) {
+  (void)ctx;
+  const angle_rank *p = x, *q = y;
+  return p->a < q->a ? -1 : p->a > q->a ? 1 : p->i - q->i;
+}
+
+static int *bonds_by_angle(const bg_diagram_layout *d, int j) {
+  int nb = d->m->elem_nbond[j], *bs = d->m->elem_bonds + d->m->elem_bondadr[j];
+  angle_rank *r = bg_xcalloc((size_t)nb + 1, sizeof *r);
+  for (int i = 0; i < nb; i++) {
+    bg_vec u = leave_dir(d, bs[i], j);
+    r[i] = (angle_rank){atan2(u.y, u.x), i};
+  }
+  bg_sort(r, (size_t)nb, sizeof *r, angle_cmp, NULL);
+  int *order = bg_xcalloc((size_t)nb + 1, sizeof *order);
+  for (int i = 0; i < nb; i++) order[i] = r[i].i;
+  free(r);
+  return order;
+}
+
+#define STROKE_NEIGHBOURS 2 /* each way round: the next bond's bar, or the one after over a bond with none */
+
+/* Whether some stroke at junction j is too close to a barb (stroke_on_barb)
+ * or, with order (nullable), to another stroke (stroke_on_stroke, among
+ * neighbours in order) with the bonds' radii as they are; with only >= 0
+ * only the pairs with bond `only` in them (its bonds' count of tests, not
+ * their square: a ring of thousands of one-ports staggers each). */
+static int any_stroke_clash(const bg_diagram_layout *d, int j, const int *order, int only) {
   const bg_model *m = d->m;
   if (!d->a || !d->a->bond_stroke) return 0;
   int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+  if (only >= 0) {
+    double ro = *bond_radius(d, only, j);
+    for (int k = 0; k < nb; k++) {
+      double rk = *bond_radius(d, bs[k], j);
+      if (bs[k] != only && (stroke_on_barb(d, j, bs[k], rk, only, ro) || stroke_on_barb(d, j, only, ro, bs[k], rk)))
+        return 1;
+    }
+    int at = -1;
+    for (int p = 0; order && p < nb && at < 0; p++)
+      if (bs[order[p]] == only) at = p;
+    for (int s = -STROKE_NEIGHBOURS; at >= 0 && s <= STROKE_NEIGHBOURS; s++) {
+      int bk = bs[order[((at + s) % nb + nb) % nb]];
+      if (bk != only && stroke_on_stroke(d, j, only, ro, bk, *bond_radius(d, bk, j))) return 1;
+    }
+    return 0;
+  }
   for (int i = 0; i < nb; i++)
     for (int k = 0; k < nb; k++)
-      if (k != i && (only < 0 || bs[i] == only || bs[k] == only) &&
-          stroke_on_barb(d, j, bs[i], *bond_radius(d, bs[i], j), bs[k], *bond_radius(d, bs[k], j)))
+      if (k != i && stroke_on_barb(d, j, bs[i], *bond_radius(d, bs[i], j), bs[k], *bond_radius(d, bs[k], j)))
         return 1;
+  for (int p = 0; order && p < nb; p++)
+    for (int s = 1; s <= STROKE_NEIGHBOURS && s < nb; s++) { /* a pair twice when nb <= 4: only time */
+      int bi = bs[order[p]], bk = bs[order[(p + s) % nb]];
+      if (stroke_on_stroke(d, j, bi, *bond_radius(d, bi, j), bk, *bond_radius(d, bk, j))) return 1;
+    }
   return 0;
+}
+
+/* The bonds' lines near a point, for off_the_lines: the router's near
+ * index of the legs as pass 0 holds them, built when first asked. */
+typedef struct lines_near {
+  near_index ix;
+  near_list nl;
+  int built;
+} lines_near;
+
+/* Whether point e and bars e0-e1 (bars of them) keep 1.75 line widths off
+ * segment p-q. */
+static int clear_of(const bg_diagram_layout *d, bg_vec e, const bg_vec *e0, const bg_vec *e1, int bars, bg_vec p,
+                    bg_vec q) {
+  double w = d->st.line_width;
+  if (bg_point_seg(e, p, q) < 1.75 * w) return 0;
+  for (int a = 0; a < bars; a++)
+    if (seg_seg(e0[a], e1[a], p, q) < 1.75 * w) return 0;
+  return 1;
+}
+
+/* Whether bond b's end at junction j and its stroke's bars there keep 1.75
+ * line widths off every other bond's line (a bond moved out along its own
+ * may come to end on a neighbour that leaves j off the radial, a routed
+ * bond's or the rows layout's, or on a routed bond passing the junction:
+ * a false T). j's own bonds from their ends on its circle; the others'
+ * legs from the index (ln), as pass 0 holds them. */
+static int off_the_lines(bg_diagram_layout *d, int j, int b, lines_near *ln) {
+  const bg_model *m = d->m;
+  int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+  double w = d->st.line_width, rb = *bond_radius(d, b, j);
+  bg_vec c = bg_v(d->nx[j], d->ny[j]), e = bg_vadd(c, bg_vscale(leave_dir(d, b, j), rb)), e0[2], e1[2];
+  int bars = stroke_bars(d, j, b, rb, e0, e1);
+  for (int i = 0; i < nb; i++) {
+    int k = bs[i], tail = m->bond_tail[k] == j;
+    if (k == b || d->bg[k].spln) continue;
+    bg_vec p = bg_vadd(c, bg_vscale(leave_dir(d, k, j), *bond_radius(d, k, j)));
+    bg_vec q = d->bg[k].bendn ? route_pt(d, k, tail ? 1 : d->bg[k].bendn) : tail ? d->bg[k].head : d->bg[k].tail;
+    if (!clear_of(d, e, e0, e1, bars, p, q)) return 0;
+  }
+  if (!ln->built) bg_near_build(d, m->nbond, NULL, 0, &ln->ix), ln->built = 1;
+  double reach = 4.5 * w + 2 * w;
+  bg_near_box(&ln->ix, e.x - reach, e.y - reach, e.x + reach, e.y + reach, &ln->nl);
+  for (int i = 0; i < ln->nl.n; i++) {
+    int leg = ln->nl.k[i] - d->nnode, k = leg >= 0 ? ln->ix.lbond[leg] : -1;
+    if (k < 0 || k == b || m->bond_tail[k] == j || m->bond_head[k] == j) continue;
+    if (!clear_of(d, e, e0, e1, bars, ln->ix.la[leg], ln->ix.lb[leg])) return 0;
+  }
+  return 1;
+}
+
+/* Strokes that still clash at junction j once its circle (radius r) has
+ * grown as far as it may (junction_radii): a straight bond of the pair
+ * leaves further out, by up to a bar's length, while it stays 2.5 half
+ * arrows long and its end and bars keep off every line (off_the_lines),
+ * so the two bars lie one beyond the other (issue 31: one-ports 15 to 25
+ * degrees apart round a ring of one-ports or a large tree's junction, hub
+ * bonds slanted a few degrees apart in a random graph, their bars end to
+ * end). The first clashing bond in the junction's list moves. */
+static void stagger_strokes(bg_diagram_layout *d, int j, const int *order, double r, lines_near *ln) {
+  const bg_model *m = d->m;
+  double w = d->st.line_width, least = 2.5 * 7 * w, most = r + 9 * w;
+  int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
+  bg_vec c = bg_v(d->nx[j], d->ny[j]);
+  for (int i = 0; i < nb; i++) {
+    int b = bs[i];
+    if (d->bg[b].bendn || d->bg[b].spln) continue;
+    double *rb = bond_radius(d, b, j);
+    if (!any_stroke_clash(d, j, order, b)) continue;
+    bg_vec far = m->bond_tail[b] == j ? d->bg[b].head : d->bg[b].tail; /* its other end (pass 0) */
+    double room = bg_vlen(bg_vsub(far, c)) - least, was = *rb;
+    while (*rb < fmin(most, room) && any_stroke_clash(d, j, order, b)) *rb = fmin(fmin(most, room), *rb + 0.25 * w);
+    if (any_stroke_clash(d, j, order, b) || !off_the_lines(d, j, b, ln)) *rb = was; /* no place clear: as it was */
+  }
 }
 
 /* Junction end circles: around the label, and far enough out that a causal
@@ -226,9 +390,11 @@ static void junction_radii(bg_diagram_layout *d) {
   d->jr = bg_arena_alloc(&d->arena, ((size_t)d->nnode + 1) * sizeof(double));
   d->bjr = bg_arena_alloc(&d->arena, (2 * (size_t)m->nbond + 2) * sizeof(double));
   double w = d->st.line_width, least = 2.5 * 7 * w;
+  lines_near ln = {0};
   for (int j = 0; j < m->nelem; j++) {
     if (!bg_elem_is_junction(m->elem_kind[j]) || !bg_node_shown(d, j)) continue;
-    double sharpest, cap = radius_cap(d, j, &sharpest), amin = BG_PI / 2;
+    int ring;
+    double sharpest, cap = radius_cap(d, j, &sharpest, &ring), amin = BG_PI / 2;
     int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
     double *own = bg_xcalloc((size_t)nb + 1, sizeof *own);
     for (int i = 0; i < nb; i++) {
@@ -241,10 +407,20 @@ static void junction_radii(bg_diagram_layout *d) {
       amin = fmin(amin, own[i]);
     }
     double r = angle_radius(d, j, amin, sharpest, cap);
+    int *order = bonds_by_angle(d, j);
     for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
-    while (r < cap && any_stroke_on_barb(d, j, -1)) {
-      r = fmin(cap, r + 0.25 * w);
-      for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
+    /* strokes on barbs up to the cap; strokes on strokes up to one and a
+     * half times the label, but not round a ring of one-ports (grown for
+     * them, a ring's circle put its bonds' ends 35 pt out, read as not
+     * joined, and moved the routes of a tree's bonds onto other ends):
+     * those are staggered (stagger_strokes) */
+    for (int pass = 0; pass < 2; pass++) {
+      double top = pass ? fmin(cap, 1.5 * fmax(d->nw[j], d->nh[j])) : cap;
+      if (pass && ring) break; /* its strokes a few degrees apart: staggered instead */
+      while (r < top && any_stroke_clash(d, j, pass ? order : NULL, -1)) {
+        r = fmin(top, r + 0.25 * w);
+        for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
+      }
     }
     d->jr[j] = r;
     bent_radius(d, j, r);
@@ -256,10 +432,13 @@ static void junction_radii(bg_diagram_layout *d) {
       if (bg_vlen(bg_vsub(far, bg_vadd(c, bg_vscale(u, r)))) >= least) continue;
       double *rb = bond_radius(d, b, j);
       *rb = fmin(r, angle_radius(d, j, own[i], sharpest, cap));
-      while (*rb < r && any_stroke_on_barb(d, j, b)) *rb = fmin(r, *rb + 0.25 * w);
+      while (*rb < r && any_stroke_clash(d, j, order, b)) *rb = fmin(r, *rb + 0.25 * w);
     }
-    free(own);
+    stagger_strokes(d, j, order, r, &ln);
+    free(own), free(order);
   }
+  if (ln.built) bg_near_free(&ln.ix);
+  free(ln.nl.k);
 }
 
 static bg_vec spl_pt(const bg_diagram_layout *d, int i) { return bg_v(d->splx[i], d->sply[i]); }

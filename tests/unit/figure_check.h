@@ -302,11 +302,12 @@ static int fc_short(const fc_line *l) {
 static int fc_touching(const fc_scene *f, const fc_line *st) {
   for (int j = 0; j < f->nline; j++) {
     const fc_line *b = &f->line[j];
-    if (b->kind != FC_BOND || b->id == st->id) continue;
+    if ((b->kind != FC_BOND && b->kind != FC_STROKE) || b->id == st->id) continue;
     for (int p = 0; p < st->nseg; p++)
       for (int q = 0; q < b->nseg; q++)
         if (fc_seg_seg(&st->seg[p], &b->seg[q]) < (st->width + b->width) / 2) {
-          if (fc_explain) printf("  touching: the stroke of bond %d meets bond %d\n", st->id, b->id);
+          if (fc_explain)
+            printf("  touching: the stroke of bond %d meets %s %d\n", st->id, b->kind == FC_BOND ? "bond" : "the stroke of bond", b->id);
           return 1;
         }
   }

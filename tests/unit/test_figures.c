@@ -70,14 +70,20 @@ static void test_checker(void) {
   bg_scene_text(&s, "6", 650, 8, 8, 0.5, 0.5, ink, "number bond=6");
   double nw = s.item[s.nitem - 1].tw;
   bg_scene_text(&s, "12", 650 - nw / 2 - 1, 8, 8, 1, 0.5, ink, "conflict-text 4");
+  /* two strokes end to end (a junction's bonds 45 degrees apart, both
+   * strokes there): each touches the other; two 3 pt apart do not */
+  line(&s, "stroke bond=7", 800, -4.5, 800, 4.5);
+  line(&s, "stroke bond=8", 800.5, 5, 807, 11.5);
+  line(&s, "stroke bond=9", 850, -4.5, 850, 4.5);
+  line(&s, "stroke bond=10", 853, 5, 859.5, 11.5);
   fc_stats st = {0};
   fc_count(&s, &st);
   INT_EQ(st.bonds, 6);
   INT_EQ(st.short_bonds, 1);
   INT_EQ(st.slanted, 1);
   INT_EQ(st.crossings, 1);
-  INT_EQ(st.strokes, 2);
-  INT_EQ(st.touching, 1);
+  INT_EQ(st.strokes, 6);
+  INT_EQ(st.touching, 3);
   INT_EQ(st.labels, 12);
   INT_EQ(st.over, 2);
   INT_EQ(st.numbers, 3);
@@ -773,7 +779,7 @@ static const struct {
                    with it, the rest where its bands' long runs leave no other way in
                    the window) */
 } large[] = {
-    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 3, 3, 1, 311, 1, 15, 70, 31},
+    {{"bench_reactions300", fm_reactions_bench, 300}, "rows", 3, 3, 1, 311, 1, 15, 71, 31},
     {{"modladder120", fm_modladder, 120}, "rows", 0, 0, 0, 0, 0, 0, 0, 0},
     {{"reactions60", fm_reactions, 60}, NULL, 0, 0, 0, 21, 0, 0, 0, 0},
     {{"masses520", fm_masses, 520}, NULL, 0, 0, 0, 0, 0, 0, 0, 0}, /* 2 601 nodes: rows by default */
