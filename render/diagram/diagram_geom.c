@@ -235,25 +235,14 @@ static void bent_radius(bg_diagram_layout *d, int j, double r) {
  * directions they leave it by: strokes are checked against their
  * neighbours in it alone (two bars at one radius touch only at a small
  * angle; a junction of thousands of one-ports checked every pair). */
-typedef struct angle_rank {
-  double a;
-  int i;
-} angle_rank;
-
-static int angle_cmp(const void *x, const void *y, void *ctx) {
-  (void)ctx;
-  const angle_rank *p = x, *q = y;
-  return p->a < q->a ? -1 : p->a > q->a ? 1 : p->i - q->i;
-}
-
 static int *bonds_by_angle(const bg_diagram_layout *d, int j) {
   int nb = d->m->elem_nbond[j], *bs = d->m->elem_bonds + d->m->elem_bondadr[j];
-  angle_rank *r = bg_xcalloc((size_t)nb + 1, sizeof *r);
+  bg_keyed *r = bg_xcalloc((size_t)nb + 1, sizeof *r);
   for (int i = 0; i < nb; i++) {
     bg_vec u = leave_dir(d, bs[i], j);
-    r[i] = (angle_rank){atan2(u.y, u.x), i};
+    r[i] = (bg_keyed){atan2(u.y, u.x), i};
   }
-  bg_sort(r, (size_t)nb, sizeof *r, angle_cmp, NULL);
+  bg_sort_keyed(r, (size_t)nb);
   int *order = bg_xcalloc((size_t)nb + 1, sizeof *order);
   for (int i = 0; i < nb; i++) order[i] = r[i].i;
   free(r);

@@ -107,18 +107,6 @@ static int by_ang(const void *a, const void *b, void *ctx) {
   return (p->ang > q->ang) - (p->ang < q->ang);
 }
 
-typedef struct leaf_at {
-  double ang;
-  int i;
-} leaf_at;
-
-static int by_leaf_ang(const void *a, const void *b, void *ctx) {
-  (void)ctx;
-  const leaf_at *p = a, *q = b;
-  if (p->ang != q->ang) return (p->ang > q->ang) - (p->ang < q->ang);
-  return p->i - q->i;
-}
-
 /* Every slot of the rectangle (A, B), y down, sorted by angle. */
 static slot *list_slots(const ring_box *b, double A, double B, int closed, int *ns) {
   int nv, nh, corner, cap = ring_slots(b, A, B, closed, &nv, &nh, &corner);
@@ -200,9 +188,9 @@ void bg_layout_ring(int n, const double *angle, double w, double h, double xgap,
   }
   int ns;
   slot *s = list_slots(&b, A, B, closed, &ns);
-  leaf_at *l = bg_xmalloc((size_t)n * sizeof *l + 1);
-  for (int i = 0; i < n; i++) l[i] = (leaf_at){remainder(angle[i], 2 * RING_PI), i};
-  bg_sort(l, (size_t)n, sizeof *l, by_leaf_ang, NULL);
+  bg_keyed *l = bg_xmalloc((size_t)n * sizeof *l + 1);
+  for (int i = 0; i < n; i++) l[i] = (bg_keyed){remainder(angle[i], 2 * RING_PI), i};
+  bg_sort_keyed(l, (size_t)n);
   /* leaf i of the sorted ones on slot r + i * ns / n: the empty slots spread
    * evenly, the turn r the one nearest the wanted angles */
   double best = INFINITY;
@@ -210,7 +198,7 @@ void bg_layout_ring(int n, const double *angle, double w, double h, double xgap,
   for (int r = 0; r < ns; r++) {
     double cost = 0;
     for (int i = 0; i < n && cost < best; i++)
-      cost += fabs(remainder(l[i].ang - s[(r + (long long)i * ns / n) % ns].ang, 2 * RING_PI));
+      cost += fabs(remainder(l[i].key - s[(r + (long long)i * ns / n) % ns].ang, 2 * RING_PI));
     if (cost < best) best = cost, turn = r;
   }
   for (int i = 0; i < n; i++) {

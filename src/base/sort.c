@@ -39,3 +39,12 @@ static int by_value(const void *a, const void *b) {
 void bg_sort_doubles(double *v, size_t n) {
   if (n > 1) qsort(v, n, sizeof *v, by_value);
 }
+
+static int by_key(const void *a, const void *b, void *ctx) {
+  (void)ctx;
+  const bg_keyed *p = a, *q = b;
+  if (p->key != q->key) return (p->key > q->key) - (p->key < q->key);
+  return p->i - q->i;
+}
+
+void bg_sort_keyed(bg_keyed *v, size_t n) { bg_sort(v, n, sizeof *v, by_key, NULL); }

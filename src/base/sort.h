@@ -17,4 +17,12 @@ void bg_sort(void *base, size_t n, size_t size, bg_sort_cmp cmp, void *ctx);
 int bg_natural_cmp(const char *a, const char *b);
 /* v[0..n) in increasing order (NaN-free: the callers drop them). */
 void bg_sort_doubles(double *v, size_t n);
+/* A value and the index it belongs to; bg_sort_keyed puts v[0..n) in
+ * increasing order of key, ties by index (an order that does not depend on
+ * the sort's own). */
+typedef struct bg_keyed {
+  double key;
+  int i;
+} bg_keyed;
+void bg_sort_keyed(bg_keyed *v, size_t n);
 #endif
