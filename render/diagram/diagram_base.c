@@ -32,6 +32,15 @@ bg_vec bg_seg_nearest(bg_vec c, bg_vec p, bg_vec q) {
 /* Distance from point c to the segment p-q. */
 double bg_point_seg(bg_vec c, bg_vec p, bg_vec q) { return bg_vlen(bg_vsub(c, bg_seg_nearest(c, p, q))); }
 
+double bg_seg_seg(bg_vec a0, bg_vec a1, bg_vec b0, bg_vec b1) {
+  bg_vec da = bg_vsub(a1, a0), db = bg_vsub(b1, b0);
+  double s0 = da.x * (b0.y - a0.y) - da.y * (b0.x - a0.x), s1 = da.x * (b1.y - a0.y) - da.y * (b1.x - a0.x);
+  double t0 = db.x * (a0.y - b0.y) - db.y * (a0.x - b0.x), t1 = db.x * (a1.y - b0.y) - db.y * (a1.x - b0.x);
+  if (s0 * s1 < 0 && t0 * t1 < 0) return 0;
+  return fmin(fmin(bg_point_seg(a0, b0, b1), bg_point_seg(a1, b0, b1)),
+              fmin(bg_point_seg(b0, a0, a1), bg_point_seg(b1, a0, a1)));
+}
+
 bg_vec bg_vleft(bg_vec d) { return bg_v(d.y, -d.x); }
 
 bg_vec bg_vunit(bg_vec a) {

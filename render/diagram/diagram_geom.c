@@ -125,16 +125,6 @@ static int stroke_bars(const bg_diagram_layout *d, int j, int b, double r, bg_ve
   return bars;
 }
 
-/* The distance between segments a0-a1 and b0-b1 (0 where they cross). */
-static double seg_seg(bg_vec a0, bg_vec a1, bg_vec b0, bg_vec b1) {
-  bg_vec da = bg_vsub(a1, a0), db = bg_vsub(b1, b0);
-  double s0 = da.x * (b0.y - a0.y) - da.y * (b0.x - a0.x), s1 = da.x * (b1.y - a0.y) - da.y * (b1.x - a0.x);
-  double t0 = db.x * (a0.y - b0.y) - db.y * (a0.x - b0.x), t1 = db.x * (a1.y - b0.y) - db.y * (a1.x - b0.x);
-  if (s0 * s1 < 0 && t0 * t1 < 0) return 0;
-  return fmin(fmin(bg_point_seg(a0, b0, b1), bg_point_seg(a1, b0, b1)),
-              fmin(bg_point_seg(b0, a0, a1), bg_point_seg(b1, a0, a1)));
-}
-
 /* Whether bond bk's causal stroke, at radius rk from junction j's centre,
  * comes within its own and a bond's half width (and half a line width
  * more) of the half arrow of bond bi ending at j at radius ri: the angle
@@ -151,7 +141,7 @@ static int stroke_on_barb(const bg_diagram_layout *d, int j, int bi, double ri, 
   bg_vec u = leave_dir(d, bi, j), h = bg_vadd(bg_v(d->nx[j], d->ny[j]), bg_vscale(u, ri));
   bg_vec tip = bg_barb_tip(d, h, bg_vscale(u, -1));
   for (int k = 0; k < bars; k++)
-    if (seg_seg(e0[k], e1[k], h, tip) < 1.75 * w) return 1;
+    if (bg_seg_seg(e0[k], e1[k], h, tip) < 1.75 * w) return 1;
   return 0;
 }
 
@@ -165,7 +155,7 @@ static int stroke_on_stroke(const bg_diagram_layout *d, int j, int bi, double ri
   int na = stroke_bars(d, j, bi, ri, a0, a1), nk = na ? stroke_bars(d, j, bk, rk, b0, b1) : 0;
   for (int p = 0; p < na; p++)
     for (int q = 0; q < nk; q++)
-      if (seg_seg(a0[p], a1[p], b0[q], b1[q]) < 2 * d->st.line_width) return 1;
+      if (bg_seg_seg(a0[p], a1[p], b0[q], b1[q]) < 2 * d->st.line_width) return 1;
   return 0;
 }
 
@@ -187,9 +177,13 @@ static double angle_radius(const bg_diagram_layout *d, int j, double amin, doubl
  * other junctions keep the small circle (a random graph's: a larger one
  * brought touching strokes and false T's). */
 #define RING_ONE_PORTS 8
+
+/* One and a half times junction j's label: the end circle's usual cap. */
+static double label_radius(const bg_diagram_layout *d, int j) { return 1.5 * fmax(d->nw[j], d->nh[j]); }
+
 static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest, int *ring) {
   const bg_model *m = d->m;
-  double cap = 1.5 * fmax(d->nw[j], d->nh[j]), shortest = INFINITY;
+  double cap = label_radius(d, j), shortest = INFINITY;
   int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j], one_ports = 0;
   *sharpest = BG_PI / 12; /* a tiny angle is not cured by distance */
   *ring = 0;
@@ -218,7 +212,7 @@ static double radius_cap(const bg_diagram_layout *d, int j, double *sharpest, in
  * ring's 1-junction stayed on a circle of 24 pt, 21 of them touching. */
 static void bent_radius(bg_diagram_layout *d, int j, double r) {
   const bg_model *m = d->m;
-  double label = 1.5 * fmax(d->nw[j], d->nh[j]);
+  double label = label_radius(d, j);
   if (r <= label) return;
   int nb = m->elem_nbond[j], *bs = m->elem_bonds + m->elem_bondadr[j];
   bg_vec c = bg_v(d->nx[j], d->ny[j]);
@@ -303,7 +297,7 @@ static int clear_of(const bg_diagram_layout *d, bg_vec e, const bg_vec *e0, cons
   double w = d->st.line_width;
   if (bg_point_seg(e, p, q) < 1.75 * w) return 0;
   for (int a = 0; a < bars; a++)
-    if (seg_seg(e0[a], e1[a], p, q) < 1.75 * w) return 0;
+    if (bg_seg_seg(e0[a], e1[a], p, q) < 1.75 * w) return 0;
   return 1;
 }
 
@@ -356,10 +350,22 @@ static void stagger_strokes(bg_diagram_layout *d, int j, const int *order, doubl
     double *rb = bond_radius(d, b, j);
     if (!any_stroke_clash(d, j, order, b)) continue;
     bg_vec far = m->bond_tail[b] == j ? d->bg[b].head : d->bg[b].tail; /* its other end (pass 0) */
-    double room = bg_vlen(bg_vsub(far, c)) - least, was = *rb;
-    while (*rb < fmin(most, room) && any_stroke_clash(d, j, order, b)) *rb = fmin(fmin(most, room), *rb + 0.25 * w);
+    double top = fmin(most, bg_vlen(bg_vsub(far, c)) - least), was = *rb;
+    while (*rb < top && any_stroke_clash(d, j, order, b)) *rb = fmin(top, *rb + 0.25 * w);
     if (any_stroke_clash(d, j, order, b) || !off_the_lines(d, j, b, ln)) *rb = was; /* no place clear: as it was */
   }
+}
+
+/* Junction j's common radius r grown a quarter line width at a time, up to
+ * top, while its strokes clash (any_stroke_clash with order, nullable);
+ * every bond's end put on it. Returns the radius. */
+static double grow_circle(bg_diagram_layout *d, int j, const int *order, double r, double top) {
+  int nb = d->m->elem_nbond[j], *bs = d->m->elem_bonds + d->m->elem_bondadr[j];
+  while (r < top && any_stroke_clash(d, j, order, -1)) {
+    r = fmin(top, r + 0.25 * d->st.line_width);
+    for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
+  }
+  return r;
 }
 
 /* Junction end circles: around the label, and far enough out that a causal
@@ -403,14 +409,8 @@ static void junction_radii(bg_diagram_layout *d) {
      * them, a ring's circle put its bonds' ends 35 pt out, read as not
      * joined, and moved the routes of a tree's bonds onto other ends):
      * those are staggered (stagger_strokes) */
-    for (int pass = 0; pass < 2; pass++) {
-      double top = pass ? fmin(cap, 1.5 * fmax(d->nw[j], d->nh[j])) : cap;
-      if (pass && ring) break; /* its strokes a few degrees apart: staggered instead */
-      while (r < top && any_stroke_clash(d, j, pass ? order : NULL, -1)) {
-        r = fmin(top, r + 0.25 * w);
-        for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
-      }
-    }
+    r = grow_circle(d, j, NULL, r, cap);
+    if (!ring) r = grow_circle(d, j, order, r, fmin(cap, label_radius(d, j)));
     d->jr[j] = r;
     bent_radius(d, j, r);
     for (int i = 0; i < nb; i++) {

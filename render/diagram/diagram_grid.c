@@ -2202,9 +2202,9 @@ static int room_outward(const grid *g, int v, int w, int along_x, double out, co
  * one-port moves along the longer axis towards its hub until the line
  * between their centres is diagonal, if its label then stays clear of the
  * hub's bonds along that axis (a causal stroke's half length and a gap)
- * and the bond stays at least 2.5 half arrows long, and the cell it moves
- * towards holds no bond's run (its own cell held nothing else). Where that
- * cell holds a label (the I above a mass's junction, its R on the
+ * and the bond stays at least 2.5 half arrows long (its own cell held
+ * nothing else; the cell it moves towards may hold a bond's run). Where
+ * that cell holds a label (the I above a mass's junction, its R on the
  * diagonal: 25 degrees), the one-port stops an em short of it and moves
  * out along the shorter axis by as much (diagonal_offset). */
 static void diagonal_leaves(grid *g) {
@@ -2244,10 +2244,8 @@ static void diagonal_leaves(grid *g) {
      * circle at 45 degrees is about 7.3 line widths (diagram_geom.c) */
     double body = (t - fmin(g->rw[w], g->rh[w]) / 2) / BG_SQRT1_2 - 7.5 * lw;
     if (t - half_along < clear || body < least) continue;
-    if (k >= 0) { /* the diagonal bond passes the label's corner */
-      double beside = fmin(ax, ay) - (along_x ? g->rh[k] : g->rw[k]) / 2 - (along_x ? g->rw[k] : g->rh[k]) / 2;
-      if (beside * BG_SQRT1_2 < clear) continue;
-    }
+    /* the diagonal bond passes the label's corner */
+    if (k >= 0 && (across - (g->rw[k] + g->rh[k]) / 2) * BG_SQRT1_2 < clear) continue;
     double dx = d->nx[w] - d->nx[v], dy = d->ny[w] - d->ny[v], on = along_x ? fabs(dx) : fabs(dy);
     double own = diagonal_offset(d->nw, d->nh, k, w, along_x, along_x ? fabs(dy) : fabs(dx), d->st.font_size);
     if (on <= own) continue; /* this style's cell is no longer along that axis */

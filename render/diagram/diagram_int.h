@@ -126,6 +126,7 @@ bg_vec bg_vunit(bg_vec a);
 bg_vec bg_vleft(bg_vec d); /* left of travel on a y-down page */
 double bg_vlen(bg_vec a);
 double bg_point_seg(bg_vec c, bg_vec p, bg_vec q); /* distance from c to segment p-q */
+double bg_seg_seg(bg_vec a0, bg_vec a1, bg_vec b0, bg_vec b1); /* distance between two segments, 0 where they cross */
 bg_vec bg_seg_nearest(bg_vec c, bg_vec p, bg_vec q); /* the point of segment p-q nearest c */
 /* Where the ray from a box's centre towards p leaves the box (half sizes hw, hh). */
 bg_vec bg_box_exit(bg_vec c, double hw, double hh, bg_vec p);
