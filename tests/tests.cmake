@@ -6,7 +6,7 @@ set(BG_SLOW_TESTS valgrind_outputs fuzz_short render_examples render api index_a
     report_cli threads install equations_json sim_iteration sim_accuracy verify_bound
     symbols_rule figures scale fonts contrib components fmu_cli transform_cli linear_cli
     plot_cli mutated_models sim_bridge sim_time_events include_rule deb html_browser html_report
-    large_memory)
+    large_memory gallery export_keywords export_parts export_events)
 # The tests' Python: Debian's /usr/bin/python3 (with the packages tools/deps.sh
 # installs), put first on every test's PATH as build/tests/bin/python3. The
 # scripts call `python3` hundreds of times; a version manager's shim found
@@ -96,7 +96,7 @@ set_tests_properties(property_short property_shrink property_found PROPERTIES TI
                      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_property(TEST property_short APPEND PROPERTY LABELS slow)
 bg_label(property_shrink)
-bg_label(property_found)
+set_property(TEST property_found APPEND PROPERTY LABELS slow)
 
 # test_threads drives runs through the outputs table (src/output), which the
 # executable and libbgdraw compile in; the test links the renderers directly.
