@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/sort.h"
 #include "diagram/diagram_route_int.h"
 
 #define COST_DIAG 60.0 /* a bond's diagonal way out: a slanted leg */
@@ -219,7 +220,10 @@ static int route_bond(bg_router *r, const bg_model *m, int b, const unsigned cha
   double z[4] = {L->nx[h] - L->nw[h] / 2, L->ny[h] - L->nh[h] / 2, L->nx[h] + L->nw[h] / 2, L->ny[h] + L->nh[h] / 2};
   bg_vec pts[256];
   int n = bg_route_ports(r, ps, nps, pt, npt, a, z, pts, 256), nc = 0;
-  if (n < 3) return 0; /* one straight leg: the centres in line */
+  /* one straight leg on the centres' line: drawn straight; off it (two
+   * corner ports, a twin's way beside its partner) the corners are kept */
+  bg_vec ct = bg_v(L->nx[t], L->ny[t]), ch = bg_v(L->nx[h], L->ny[h]);
+  if (n < 2 || (n == 2 && bg_point_seg(pts[0], ct, ch) < 0.5 && bg_point_seg(pts[1], ct, ch) < 0.5)) return 0;
   int dt = bond_end(L, t, &pts[0], &pts[1], taken), dh = bond_end(L, h, &pts[n - 1], &pts[n - 2], taken);
   for (int i = dt ? 0 : 1; i <= (dh ? n - 1 : n - 2) && nc < cap; i++) bx[nc] = pts[i].x, by[nc++] = pts[i].y;
   return nc;
@@ -511,6 +515,47 @@ static int bond_bundled(const bg_diagram_layout *L, const bg_model *m, int b, co
   return 0;
 }
 
+/* Twin bonds: two straight bonds between the same two nodes (a junction
+ * pair joined twice, a two-port field's both ports on one junction) are one
+ * line, read as one bond with two numbers (issue 31: a generated model's
+ * bonds 6 and 22 on one line; 12 of 60 property-campaign models join a pair
+ * twice, the layout's elbows and the passes above part the others). Each
+ * pair's straight bonds after its first are marked in twin; how many.
+ * Pairs found by sorting (linear after the sort). */
+static int mark_twins(const bg_diagram_layout *L, unsigned char *twin) {
+  int nb = L->m->nbond, n = 0;
+  bg_keyed *v = bg_xcalloc((size_t)nb + 1, sizeof *v);
+  for (int b = 0; b < nb; b++) {
+    const bg_bond_geom *g = &L->bg[b];
+    if ((L->bond_hidden && L->bond_hidden[b]) || g->spln || g->bendn) continue;
+    int t = bg_route_end_node(L, b, 0), h = bg_route_end_node(L, b, 1);
+    if (t < 0 || h < 0 || t == h) continue;
+    v[n].key = (double)(t < h ? t : h) * ((double)L->nnode + 1) + (t < h ? h : t), v[n++].i = b;
+  }
+  bg_sort_keyed(v, (size_t)n);
+  int found = 0;
+  for (int k = 1; k < n; k++)
+    if (v[k].key == v[k - 1].key) twin[v[k].i] = 1, found++;
+  free(v);
+  return found;
+}
+
+/* The twins left after the passes (the layout holding routes p) routed
+ * round, against the bonds as drawn, off their ends; kept whatever they
+ * cross (two bonds on one line read as one: a crossing reads right).
+ * Returns the routes kept; *nmore: the bonds routed. */
+static bond_routes untwin(bg_diagram_layout *L, bond_routes p, const bond_routes *orig, int *nmore) {
+  unsigned char *twin = bg_xcalloc((size_t)L->m->nbond + 1, 1);
+  *nmore = mark_twins(L, twin);
+  if (*nmore) {
+    bond_routes q = {0};
+    route_pass(L, twin, NULL, 1, &q);
+    p = kept(L, 1, p, q, orig);
+  }
+  free(twin);
+  return p;
+}
+
 int bg_route_blocked_bonds(bg_diagram_layout *L) {
   const bg_model *m = L->m;
   int nb = m->nbond, nblocked = 0;
@@ -537,6 +582,8 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   }
   int nlifted = 0, nuntee = 0;
   p = second_pass(L, blocked, p, &orig, &nlifted);
+  int ntwins = 0;
+  p = untwin(L, p, &orig, &ntwins);
   unsigned char *routed = bg_xcalloc((size_t)nb + 1, 1);
   for (int b = 0; b < nb; b++) routed[b] = L->bg[b].bendn > 0; /* routed here, or the layout's elbows */
   for (int round = 0, more = 1; round < 3 && more; round++) { /* each round's routes move other ends */
@@ -545,5 +592,5 @@ int bg_route_blocked_bonds(bg_diagram_layout *L) {
   }
   free(blocked), free(routed);
   if (p.adr != orig.adr) routes_free(&orig);
-  return nblocked + nlifted + nuntee;
+  return nblocked + nlifted + nuntee + ntwins;
 }

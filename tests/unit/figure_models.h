@@ -534,6 +534,34 @@ __attribute__((unused)) static void fm_make_nested(bg_strbuf *b, int n) { (void)
 __attribute__((unused)) static void fm_make_branchy(bg_strbuf *b, int n) { fm_branchy(b, n, 7u + (unsigned)n); }
 __attribute__((unused)) static void fm_make_stages(bg_strbuf *b, int n) { fm_stages(b, n); }
 __attribute__((unused)) static void fm_make_randtree(bg_strbuf *b, int n) { fm_randtree(b, n, 7919u + (unsigned)n); }
+/* Twin bonds (issue 31): a random tree of n junctions (1 and 0 in turn)
+ * whose every third tree bond is doubled (two bonds between the same
+ * junctions, as property-campaign models join a pair twice), one to three
+ * one-ports on each junction so that most have every side taken, a source
+ * at the root, and every fourth junction with a two-port C field whose both
+ * ports are its bonds. */
+__attribute__((unused)) static void fm_twins(bg_strbuf *b, int n, unsigned seed) {
+  static const char *kind[] = {"R", "I", "C"};
+  bg_sb_printf(b, "model twins%d_%u\nSe U = 1\n", n, seed);
+  int *parent = calloc((size_t)n, sizeof *parent);
+  for (int i = 1; i < n; i++) parent[i] = (int)(fm_rand(&seed) % (unsigned)i);
+  for (int i = 0; i < n; i++) {
+    bg_sb_printf(b, "%d j%d\n", i % 2, i);
+    int k = 1 + (int)(fm_rand(&seed) % 3);
+    for (int w = 0; w < k; w++) bg_sb_printf(b, "%s w%d_%d = 1\n", kind[fm_rand(&seed) % 3], i, w);
+    if (i % 4 == 3) bg_sb_printf(b, "C K%d(pa, pb) : energy = pa.q^2/2 + pb.q^2/2 + 0.2*pa.q*pb.q\n", i);
+    bg_sb_printf(b, "bond j%d -> w%d_0\n", i, i);
+    for (int w = 1; w < k; w++) bg_sb_printf(b, "bond w%d_%d -> j%d\n", i, w, i);
+    if (i % 4 == 3) bg_sb_printf(b, "bond j%d -> K%d.pa\nbond j%d -> K%d.pb\n", i, i, i, i);
+  }
+  bg_sb_puts(b, "bond U -> j0\n");
+  for (int i = 1; i < n; i++) {
+    bg_sb_printf(b, "bond j%d -> j%d\n", parent[i], i);
+    if (i % 3 == 0) bg_sb_printf(b, "bond j%d -> j%d\n", i, parent[i]);
+  }
+  free(parent);
+}
+
 /* A chain of n moving-plate transducers (a two-port C field between an
  * electrical 1-junction with a series R and a mechanical one with a mass
  * and a spring), each mechanical junction feeding the next electrical
