@@ -312,6 +312,48 @@ static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const ti
     }
 }
 
+/* A cropped highlight of one column of parts (tiling t: nx 1, ny > 1)
+ * flowed like text from the room left below its heading: the first part as
+ * tall as that room, the others a page each (the last as tall as what is
+ * left), neighbours sharing TILE_OVERLAP. Its heading and text had stood at
+ * the foot of a page whose rest stayed empty, the parts on the pages after
+ * (a 60-bond model's report: five highlights so, up to 60 % of a page
+ * empty). heights[0..n): each part's height in diagram points; n, or 0
+ * when the room left is under FLOW_MIN of a page's or the parts would be
+ * more than MAX_HL_TILES (the even parts are kept then). */
+#define FLOW_MIN 0.3
+static int flow_parts(const rp_doc *d, const double r[4], const tiling *t, double room0, double *heights) {
+  double full = rp_page_room(d) - 14 - 8 - TILE_CAPTION, page = rp_page_room(d);
+  if (t->nx != 1 || t->ny < 2 || room0 < FLOW_MIN * page) return 0;
+  double h0 = room0 / t->scale, hf = full / t->scale, y = 0;
+  if (h0 <= TILE_OVERLAP || hf <= TILE_OVERLAP) return 0;
+  int n = 0;
+  for (double h = h0;; h = hf) {
+    if (n == MAX_HL_TILES) return 0;
+    heights[n++] = fmin(h, r[3] - y);
+    if (y + h >= r[3]) return n;
+    y += h - TILE_OVERLAP;
+  }
+}
+
+/* The parts flow_parts planned, the first at the cursor, each next one
+ * below the one before while the page holds it, else on a new page. */
+static void emit_flow(rp_doc *d, const bg_scene *s, const double r[4], double scale, const double *heights, int n,
+                      const char *what) {
+  double y = r[1];
+  for (int i = 0; i < n; i++) {
+    if (i == 0 || rp_room(d) >= 8 + TILE_CAPTION + heights[i] * scale) d->y += 8;
+    else rp_new_page(d, 0);
+    char cap[256];
+    snprintf(cap, sizeof cap, "%s, part %d of %d, at %.0f %%", what, i + 1, n, 100 * scale);
+    rp_para(d, cap, RP_SIZE_SMALL, 0, 0, rp_grey);
+    d->y += 2;
+    rp_place(d, s, r[0], y, r[2], heights[i], rp_left(), d->y, scale);
+    d->y += heights[i] * scale;
+    y += heights[i] - TILE_OVERLAP;
+  }
+}
+
 /* ---------------------------------------------------------------- section 2 */
 static void diagram_caption(rp_ctx *c, bg_diagram *dg) {
   bg_strbuf b = {0};
@@ -685,11 +727,23 @@ static void show_one(rp_ctx *c, const hl *h) {
     tiling tl; /* planned on the whole scene, as before the crop */
     plan_tiles(s, r, cw, rp_page_room(d) - 14, smin, 1, MAX_HL_TILES, &tl);
     const bg_scene *k = keep_cropped(c, dg, r); /* every tile lies inside r */
+    /* the room below the heading and its text (the text measured with the
+     * most parts it can announce) for a first part flowed there */
+    bg_strbuf most = {0};
+    bg_sb_printf(&most, "%s It follows in %d parts, one below the other.", bg_sb_str(&x), MAX_HL_TILES);
+    double text = rp_para_height(d, bg_sb_str(&most), RP_SIZE_BODY, 0, 0);
+    bg_sb_free(&most);
+    double heights[MAX_HL_TILES];
+    int nflow = 0;
+    if (rp_room(d) >= rp_subsection_height(d) + 30)
+      nflow = flow_parts(d, r, &tl, rp_room(d) - rp_subsection_height(d) - text - 8 - TILE_CAPTION - 2, heights);
     rp_subsection(d, bg_sb_str(&t), 30);
-    if (tl.nused == 1) bg_sb_puts(&x, " It follows at a readable scale.");
-    else bg_sb_printf(&x, " It follows in %d parts, one below the other.", tl.nused);
+    int parts = nflow ? nflow : tl.nused;
+    if (parts == 1) bg_sb_puts(&x, " It follows at a readable scale.");
+    else bg_sb_printf(&x, " It follows in %d parts, one below the other.", parts);
     rp_para(d, bg_sb_str(&x), RP_SIZE_BODY, 0, 0, rp_ink);
-    emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t), 1);
+    if (nflow) emit_flow(d, k, r, tl.scale, heights, nflow, bg_sb_str(&t));
+    else emit_tiles(d, k, r, &tl, 0, bg_sb_str(&t), 1);
   }
   bg_sb_free(&t);
   bg_sb_free(&x);

@@ -2,8 +2,8 @@
 /* Models the figure tests generate (issue 31: measure on models nobody
  * tuned the drawing to): chains, ladders, grids of RC cells, random trees,
  * reaction networks with many modulating signals and three-level
- * submodels, as .bg text, compiled and analysed like an example. Include
- * after analysis_fixture.h. */
+ * submodels, as .bg text, compiled and analysed like an example (fm_load:
+ * include after analysis_fixture.h). */
 #ifndef BG_TEST_FIGURE_MODELS_H
 #define BG_TEST_FIGURE_MODELS_H
 #include <stdio.h>
@@ -12,6 +12,7 @@
 
 #include "base/strbuf.h"
 
+#ifdef BG_TEST_ANALYSIS_FIXTURE_H /* the generators alone elsewhere (test_report.c) */
 /* Compiles and analyses `text` as if it were examples/NAME.bg. */
 static int fm_load(fx *f, const char *name, const char *text) {
   memset(f, 0, sizeof *f);
@@ -27,6 +28,7 @@ static int fm_load(fx *f, const char *name, const char *text) {
   bg_analysis_run(f->m, &f->a, NULL);
   return 0;
 }
+#endif
 
 /* A source, then n elements, each on its own junction (1, 0, 1, ...): R, I,
  * C in turn. */
@@ -42,7 +44,7 @@ __attribute__((unused)) static void fm_chain(bg_strbuf *b, int n) {
 }
 
 /* An RC ladder of k sections (series R on a 1-junction, shunt C on a 0-junction) and a load. */
-static void fm_ladder(bg_strbuf *b, int k) {
+__attribute__((unused)) static void fm_ladder(bg_strbuf *b, int k) {
   bg_sb_printf(b, "model ladder%d\nSe U = 1\nR load = 10\n", k);
   for (int i = 0; i < k; i++) bg_sb_printf(b, "1 s%d\nR R%d = 1\n0 n%d\nC C%d = 1\n", i, i, i, i);
   bg_sb_puts(b, "bond U -> s0\n");

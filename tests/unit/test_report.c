@@ -10,6 +10,7 @@
 
 #include "harness.h" /* first: <math.h> for eqs_fixture.h */
 #include "eqs_fixture.h"
+#include "figure_models.h"
 #include "base/fileio.h"
 #include "equations/equations.h"
 #include "report/report_int.h"
@@ -474,6 +475,48 @@ static void test_large_highlights(const char *name, const char *text) {
 }
 
 /* A chain of junctions with an R, I or C on each: 2n + 1 elements. */
+/* A highlight cropped to its item and cut into one column of parts flows
+ * from the room left below its heading (flow_parts, report_diagrams.c):
+ * its first part on the heading's page, not the heading and its text at
+ * the foot of a page left empty and the parts on the pages after. Held-out
+ * reaction networks (fm_randnet: a tall drawing, each path's crop a column
+ * of parts): every such first part ("part 1 of N, at", no row and column)
+ * lies on its heading's page, and at least want flowed. Before:
+ * randnet40_1's report took 41 pages, randnet60_1's 61 (each highlight
+ * flowed here had its heading alone at a page's foot), now 40 and 59. */
+static void test_highlight_parts_flow(int n, unsigned seed, int want) {
+  bg_strbuf src = {0};
+  fm_randnet(&src, n, seed);
+  efx f;
+  bg_render_opts o;
+  bg_report_input in;
+  bg_diags dg;
+  rp_ctx c;
+  int ok = load_sections(&f, NULL, bg_sb_str(&src), &o, &in, &dg, &c, 0);
+  bg_sb_free(&src);
+  if (!ok) return;
+  int flowed = 0, apart = 0;
+  for (int i = 0; i < c.body.nhead; i++) {
+    const char *title = c.body.head[i].title;
+    char first[300];
+    snprintf(first, sizeof first, "%s, part 1 of ", title);
+    for (int p = 0; p < c.body.npage; p++) {
+      const rp_page *pg = c.body.page[p];
+      for (int k = 0; k < pg->sc.nitem; k++) {
+        const char *t = pg->sc.item[k].text;
+        if (pg->sc.item[k].kind != BG_ITEM_TEXT || !t || strncmp(t, first, strlen(first)) || strstr(t, "(row"))
+          continue;
+        flowed++;
+        if (p != c.body.head[i].page) apart++, printf("  randnet%d_%u: %s on page %d, its heading on %d\n", n, seed, t, p + 1, c.body.head[i].page + 1);
+      }
+    }
+  }
+  BG_T_REPORT(flowed >= want && apart == 0, "randnet%d_%u: %d highlights flowed (at least %d), %d apart from their heading",
+              n, seed, flowed, want, apart);
+  sections_free(&c, &dg);
+  efx_free(&f);
+}
+
 static char *chain_model(int n) {
   bg_strbuf b = {0};
   bg_sb_puts(&b, "model chain\nSe U = 1\n");
@@ -502,6 +545,8 @@ int main(void) {
   test_highlights_fill("delta", NULL, 2);
   test_highlights_fill("hydraulic_bridge", NULL, 2);
   test_highlights_fill("loop_class1", NULL, 1); /* its path 2 would be under HL_SHRINK */
+  test_highlight_parts_flow(40, 7959u, 1); /* test_figures' randnet40_1 */
+  test_highlight_parts_flow(60, 7979u, 2); /* and randnet60_1 */
   test_highlights_share_layout("bond_loop", NULL, 3, 0, 0);
   char *chain = chain_model(200); /* 401 elements: no lower cap for large models */
   test_highlights_share_layout(NULL, chain, 12, 12, 0);
