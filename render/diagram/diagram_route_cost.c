@@ -127,6 +127,16 @@ static double seg_cross_cost(const bg_router *r, int s) {
   return g <= -2 && g != GROUP_FENCE && own_bond(r, -2 - g) ? COST_CROSS_OWN : COST_CROSS_SIGNAL;
 }
 
+/* What running on routed segment s costs: COST_SHARE (two signals read
+ * as one line), but for a bond's route on another routed bond's, which
+ * reads as one bond (issue 31: a held-out model's bonds 60 and 73 shared
+ * 95 pt into a crowded junction's corner, one's neighbour ending on both):
+ * COST_BLOCK, as along a bond's own line. */
+static double share_cost(const bg_router *r, int s) {
+  int g = r->ix.sgrp[s];
+  return r->bond >= 0 && g <= -2 && g != GROUP_FENCE && r->ix.sroute[s] >= 0 ? COST_BLOCK : COST_SHARE;
+}
+
 /* Whether routed segment s is a line of another signal than the current
  * route's source's (a signal route's only), whose ends, corners and
  * arrowhead the route keeps off (touch_cost): a signal's (sgrp its source:
@@ -226,7 +236,7 @@ double bg_route_seg_cost(bg_router *r, bg_vec p, bg_vec q, int skip) {
     int s = r->nl.k[j];
     if (bg_route_own_segment(r, s)) continue; /* the route itself (bg_route_detour) */
     int hit = bg_route_seg_meet(p, q, r->ix.sa[s], r->ix.sb[s], 3, HUG, NULL, 0);
-    cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? COST_SHARE : 0;
+    cost += hit == 1 ? seg_cross_cost(r, s) : hit == 2 ? share_cost(r, s) : 0;
     if (other_signal(r, s)) cost += touch_cost(r, s, p, q);
   }
   return cost;
@@ -391,17 +401,17 @@ void bg_route_grid_costs(bg_router *r) {
   for (int jj = 0; jj < r->nl.n; jj++) { /* routed signals: crossed, or run on (within 3 pt) */
     int s = r->nl.k[jj], other = other_signal(r, s), tip = other && r->ix.slast[s];
     bg_vec a = r->ix.sa[s], b = r->ix.sb[s];
-    double cross = seg_cross_cost(r, s);
+    double cross = seg_cross_cost(r, s), share = share_cost(r, s);
     int j0, j1; /* touch_cost's corners and tips: lines within TOUCH_NEAR (< 3) of them are among these */
     line_range(Y, ny, fmin(a.y, b.y) - 3, fmax(a.y, b.y) + 3, &j0, &j1);
     for (int j = j0; j <= j1; j++) {
-      line_meet(X, nx, 1, Y[j], a, b, cross, COST_SHARE, 0, r, -1, &r->hcost[j * nx]);
+      line_meet(X, nx, 1, Y[j], a, b, cross, share, 0, r, -1, &r->hcost[j * nx]);
       if (other) touch_line(X, nx, 1, Y[j], a, &r->hcost[j * nx]);
       if (tip) touch_line(X, nx, 1, Y[j], b, &r->hcost[j * nx]);
     }
     line_range(X, nx, fmin(a.x, b.x) - 3, fmax(a.x, b.x) + 3, &j0, &j1);
     for (int j = j0; j <= j1; j++) {
-      line_meet(Y, ny, 0, X[j], a, b, cross, COST_SHARE, 0, r, -1, &r->vcost[j * ny]);
+      line_meet(Y, ny, 0, X[j], a, b, cross, share, 0, r, -1, &r->vcost[j * ny]);
       if (other) touch_line(Y, ny, 0, X[j], a, &r->vcost[j * ny]);
       if (tip) touch_line(Y, ny, 0, X[j], b, &r->vcost[j * ny]);
     }

@@ -1552,6 +1552,32 @@ static void test_twin_bonds(void) {
                   styles[si], show_names[k], twins[si][k], through[si][k]);
 }
 
+/* A bond's route on another routed bond's line (issue 31): the router
+ * priced running on a routed segment as a signal's COST_SHARE, also for a
+ * bond on a bond, so a held-out property-campaign model's bonds 60 and 73
+ * came into a nine-bond junction's corner on one line for 95 pt
+ * (tests/data/figures/crowded_junction.bg; share_cost,
+ * diagram_route_cost.c). Before: a bond on a line in the default and
+ * the slides style (default layers); now one, in slides: bond 60 leaves
+ * its junction (every side taken) by a corner that every way on is blocked
+ * from, and the route round the outside jogs 8 pt along bond 45 out of it
+ * (left, docs/drawing.md). */
+static void test_bond_routes_apart(void) {
+  fc_explain = getenv("BG_FIGURES_VERBOSE") && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  fx f;
+  if (file_model(&f, "tests/data/figures/crowded_junction.bg", "crowded_junction") == 0) {
+    fc_stats tot[3][2] = {{{0}}};
+    measure_model(&f, "crowded_junction", tot, getenv("BG_FIGURES_VERBOSE") != NULL);
+    for (int si = 0; si < 3; si++)
+      for (int k = 0; k < 2; k++) {
+        int want = si == 2 && k == 0; /* the jog out of the corner */
+        BG_T_REPORT(tot[si][k].bond_overlaps <= want, "crowded_junction %s %s: %d bonds on lines (at most %d)",
+                    styles[si], show_names[k], tot[si][k].bond_overlaps, want);
+      }
+  }
+  fx_free(&f);
+}
+
 static void test_diagonal_beside_label(void) {
   for (int c = 0; c < 2; c++) {
     fx f;
@@ -2734,6 +2760,7 @@ int main(void) {
   RUN(test_bridges);
   RUN(test_diagonal_beside_label);
   RUN(test_twin_bonds);
+  RUN(test_bond_routes_apart);
   RUN(test_fans);
   RUN(test_arrows_at_labels);
   RUN(test_signals_clear_of_layers);
