@@ -481,7 +481,8 @@ static void test_large_highlights(const char *name, const char *text) {
  * the foot of a page left empty and the parts on the pages after. Held-out
  * reaction networks (fm_randnet: a tall drawing, each path's crop a column
  * of parts): every such first part ("part 1 of N, at", no row and column)
- * lies on its heading's page, and at least want flowed. Before:
+ * lies on its heading's page, at least want flowed, and every diagram
+ * placed lies inside its page's content area. Before:
  * randnet40_1's report took 41 pages, randnet60_1's 61 (each highlight
  * flowed here had its heading alone at a page's foot), now 40 and 59. */
 static void test_highlight_parts_flow(int n, unsigned seed, int want) {
@@ -511,8 +512,16 @@ static void test_highlight_parts_flow(int n, unsigned seed, int want) {
       }
     }
   }
-  BG_T_REPORT(flowed >= want && apart == 0, "randnet%d_%u: %d highlights flowed (at least %d), %d apart from their heading",
-              n, seed, flowed, want, apart);
+  int inside = 1; /* every part within its page's content area */
+  for (int p = 0; p < c.body.npage; p++)
+    for (int k = 0; k < c.body.page[p]->nplace; k++) {
+      const bg_surface_place *pl = &c.body.page[p]->place[k];
+      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 &&
+                pl->y + pl->sh * pl->scale <= c.body.page[p]->sc.height - RP_MARGIN_BOTTOM + 1e-6;
+    }
+  BG_T_REPORT(flowed >= want && apart == 0 && inside,
+              "randnet%d_%u: %d highlights flowed (at least %d), %d apart from their heading, all inside %d", n, seed,
+              flowed, want, apart, inside);
   sections_free(&c, &dg);
   efx_free(&f);
 }
