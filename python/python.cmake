@@ -5,16 +5,13 @@
 # folder (python/sitedir.py) beside a _config.py that finds the installed
 # library (install component python3-bgdraw, Debian's name for such a
 # package; tools/packaging.cmake packages the components it lists). The
-# interpreter: -DPython3_EXECUTABLE=..., else Debian's /usr/bin/python3 (whose
-# python3-numpy, python3-pytest and Jupyter packages the package and its
-# tests use), else the first python3 found.
+# interpreter: Python3_EXECUTABLE, chosen in CMakeLists.txt (Debian's
+# /usr/bin/python3 by default, whose python3-numpy, python3-pytest and
+# Jupyter packages the package and its tests use).
 option(BG_PYTHON "Build and install the Python package" ON)
 set(BG_PYTHON_SITEDIR "" CACHE STRING
     "Where to install the Python package (relative: to the prefix); empty: the interpreter's site folder")
 if(BG_PYTHON)
-  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
-    set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "the Python interpreter of the bgdraw package")
-  endif()
   find_package(Python3 COMPONENTS Interpreter)
   if(NOT Python3_Interpreter_FOUND)
     message(STATUS "bgdraw: no Python 3 interpreter: the Python package is not built")

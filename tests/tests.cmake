@@ -6,17 +6,14 @@ set(BG_SLOW_TESTS valgrind_outputs fuzz_short render_examples render api index_a
     report_cli threads install equations_json sim_iteration sim_accuracy verify_bound
     symbols_rule figures scale fonts contrib components fmu_cli transform_cli linear_cli
     plot_cli mutated_models sim_bridge sim_time_events include_rule deb html_browser html_report
-    large_memory gallery export_keywords export_parts export_events)
-# The tests' Python: Debian's /usr/bin/python3 (with the packages tools/deps.sh
-# installs), put first on every test's PATH as build/tests/bin/python3. The
-# scripts call `python3` hundreds of times; a version manager's shim found
-# first on PATH (pyenv's costs 0.4 s a call) doubled property_found's time
-# and lacks NumPy and SciPy. Elsewhere: the first python3 found.
-if(EXISTS /usr/bin/python3)
-  set(BG_TEST_PYTHON /usr/bin/python3)
-else()
-  find_program(BG_TEST_PYTHON python3 REQUIRED)
-endif()
+    large_memory gallery export_keywords export_parts export_events property_found)
+# The tests' Python: the package's interpreter (Python3_EXECUTABLE, chosen in
+# CMakeLists.txt: Debian's /usr/bin/python3 by default), put first on every
+# test's PATH as build/tests/bin/python3. The scripts call `python3`
+# hundreds of times; a version manager's shim found first on PATH (pyenv's
+# costs 0.4 s a call) doubled property_found's time and lacks NumPy and SciPy.
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
+set(BG_TEST_PYTHON ${Python3_EXECUTABLE})
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/tests/bin)
 file(CREATE_LINK ${BG_TEST_PYTHON} ${CMAKE_BINARY_DIR}/tests/bin/python3 SYMBOLIC)
 
@@ -96,7 +93,7 @@ set_tests_properties(property_short property_shrink property_found PROPERTIES TI
                      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_property(TEST property_short APPEND PROPERTY LABELS slow)
 bg_label(property_shrink)
-set_property(TEST property_found APPEND PROPERTY LABELS slow)
+bg_label(property_found)
 
 # test_threads drives runs through the outputs table (src/output), which the
 # executable and libbgdraw compile in; the test links the renderers directly.

@@ -319,8 +319,9 @@ static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const ti
  * the foot of a page whose rest stayed empty, the parts on the pages after
  * (a 60-bond model's report: five highlights so, up to 60 % of a page
  * empty). heights[0..n): each part's height in diagram points; n, or 0
- * when the room left is under FLOW_MIN of a page's or the parts would be
- * more than MAX_HL_TILES (the even parts are kept then). */
+ * when the room left is under FLOW_MIN of a page's (so also when the
+ * heading itself goes to the next page) or the parts would be more than
+ * MAX_HL_TILES (the even parts are kept then). */
 #define FLOW_MIN 0.3
 static int flow_parts(const rp_doc *d, const double r[4], const tiling *t, double room0, double *heights) {
   double full = rp_page_room(d) - 14 - 8 - TILE_CAPTION, page = rp_page_room(d);
@@ -734,9 +735,7 @@ static void show_one(rp_ctx *c, const hl *h) {
     double text = rp_para_height(d, bg_sb_str(&most), RP_SIZE_BODY, 0, 0);
     bg_sb_free(&most);
     double heights[MAX_HL_TILES];
-    int nflow = 0;
-    if (rp_room(d) >= rp_subsection_height(d) + 30)
-      nflow = flow_parts(d, r, &tl, rp_room(d) - rp_subsection_height(d) - text - 8 - TILE_CAPTION - 2, heights);
+    int nflow = flow_parts(d, r, &tl, rp_room(d) - rp_subsection_height(d) - text - 8 - TILE_CAPTION - 2, heights);
     rp_subsection(d, bg_sb_str(&t), 30);
     int parts = nflow ? nflow : tl.nused;
     if (parts == 1) bg_sb_puts(&x, " It follows at a readable scale.");

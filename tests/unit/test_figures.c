@@ -612,6 +612,14 @@ static int file_faults(const char *rel, const char *name, fc_stats st[3]) {
 
 /* One model in every style and layer set, added to tot; the arrangement
  * of each style compared with the default style's (same layers). */
+/* BG_FIGURES_VERBOSE: whether it is set (the counts printed), and with 2
+ * or more each fault explained (fc_explain, set here). */
+static int figures_verbose(void) {
+  const char *v = getenv("BG_FIGURES_VERBOSE");
+  fc_explain = v && atoi(v) >= 2;
+  return v != NULL;
+}
+
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
   for (int k = 0; k < 2; k++) {
     bg_diagram *first = NULL;
@@ -638,8 +646,7 @@ static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbo
 
 static void measure(fc_stats tot[3][2]) {
   char *names[256];
-  int n = bg_t_list_examples(names, 256), verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int n = bg_t_list_examples(names, 256), verbose = figures_verbose();
   OK(n >= 17);
   for (int i = 0; i < n; i++) {
     fx f;
@@ -695,8 +702,7 @@ static void dump_model(const char *name, const bg_strbuf *src) {
 }
 
 static void test_generated(void) {
-  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int verbose = figures_verbose();
   fc_stats tot[3][2] = {{{0}}};
   for (size_t g = 0; g < sizeof generated / sizeof generated[0]; g++) {
     bg_strbuf src = {0};
@@ -828,8 +834,7 @@ static int corners_by_diagonals(const bg_model *m, const bg_scene *s) {
 }
 
 static void test_large_figures(void) {
-  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  figures_verbose();
   printf("%-34s %s\n", "", header);
   for (size_t g = 0; g < sizeof large / sizeof large[0]; g++) {
     bg_strbuf src = {0};
@@ -970,8 +975,7 @@ static void test_large_forests(void) {
  * another bond leaves by), no line through an element's label; one bond
  * drawn along another's line for 7 pt, as before (left). */
 static void test_held_out_models(void) {
-  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int verbose = figures_verbose();
   fc_stats tot = {0};
   for (int size = 40; size <= 160; size += 20)
     for (unsigned seed = 1; seed <= 3; seed++) {
@@ -1096,8 +1100,7 @@ static void test_many_one_ports(void) {
     int n, one, bus;
   } cases[] = {{9, 0, 0},  {12, 0, 0}, {20, 0, 0}, {40, 0, 0}, {100, 0, 0}, {12, 1, 0},
                {40, 1, 0}, {100, 1, 0}, {9, 0, 1}, {14, 0, 1}, {24, 1, 1}};
-  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int verbose = figures_verbose();
   fc_stats tot[2] = {{0}}, rows = {0};
   for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
     bg_strbuf src = {0};
@@ -1189,7 +1192,7 @@ static int read_text(const char *path, bg_strbuf *src) {
 static void test_measure_files(void) {
   const char *list = getenv("BG_FIGURES_MEASURE");
   if (!list) return;
-  fc_explain = getenv("BG_FIGURES_VERBOSE") && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  figures_verbose();
   printf("%-34s %s\n", "", header);
   char *paths = strdup(list);
   for (char *save = NULL, *p = strtok_r(paths, ":", &save); p; p = strtok_r(NULL, ":", &save)) {
@@ -1518,8 +1521,7 @@ static int twin_overlaps(const bg_model *m, const bg_scene *s, const char *what)
 }
 
 static void test_twin_bonds(void) {
-  int verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  figures_verbose();
   int models = 0, twins[3][2] = {{0}}, through[3][2] = {{0}};
   for (int n = 6; n <= 22; n += 4)
     for (unsigned seed = 1; seed <= 3; seed++) {
@@ -1563,11 +1565,11 @@ static void test_twin_bonds(void) {
  * from, and the route round the outside jogs 8 pt along bond 45 out of it
  * (left, docs/drawing.md). */
 static void test_bond_routes_apart(void) {
-  fc_explain = getenv("BG_FIGURES_VERBOSE") && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int verbose = figures_verbose();
   fx f;
   if (file_model(&f, "tests/data/figures/crowded_junction.bg", "crowded_junction") == 0) {
     fc_stats tot[3][2] = {{{0}}};
-    measure_model(&f, "crowded_junction", tot, getenv("BG_FIGURES_VERBOSE") != NULL);
+    measure_model(&f, "crowded_junction", tot, verbose);
     for (int si = 0; si < 3; si++)
       for (int k = 0; k < 2; k++) {
         int want = si == 2 && k == 0; /* the jog out of the corner */
@@ -1795,7 +1797,7 @@ static void test_signals_off_frames(void) {
  * from its arrow, two bends cost less). */
 static void test_signals_clear_of_bond_ends(void) {
   static const char *const files[] = {"platoon", "tower_damper"};
-  fc_explain = getenv("BG_FIGURES_VERBOSE") && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  figures_verbose();
   for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
     fc_stats st[3][2];
     int arrows[3][2];
@@ -2712,8 +2714,7 @@ static int list_page_models(const char *folder, char **names, int cap) {
 static void test_pages(void) {
   fc_stats tot[3][2] = {{{0}}}, ring[3][2] = {{{0}}};
   const char *folders[] = {"tutorial", "gallery"};
-  int models = 0, rings = 0, verbose = getenv("BG_FIGURES_VERBOSE") != NULL;
-  fc_explain = verbose && atoi(getenv("BG_FIGURES_VERBOSE")) >= 2;
+  int models = 0, rings = 0, verbose = figures_verbose();
   for (int fi = 0; fi < 2; fi++) {
     char *names[64];
     int n = list_page_models(folders[fi], names, 64);

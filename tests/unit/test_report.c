@@ -345,6 +345,20 @@ static void test_highlight_parts_packed(const char *name) {
   efx_free(&f);
 }
 
+/* Whether every diagram placed in document d lies inside its page's
+ * content area (vertically: between the top and bottom margins). */
+static int all_inside(const rp_doc *d) {
+  int inside = 1;
+  for (int p = 0; p < d->npage; p++) {
+    const rp_page *pg = d->page[p];
+    for (int k = 0; k < pg->nplace; k++) {
+      const bg_surface_place *pl = &pg->place[k];
+      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 && pl->y + pl->sh * pl->scale <= pg->sc.height - RP_MARGIN_BOTTOM + 1e-6;
+    }
+  }
+  return inside;
+}
+
 /* Every diagram placed in sections 2 and 3 lies inside its page's content
  * area, and the page that starts section 3 holds want highlights: one that
  * fits the room left at no less than HL_SHRINK of its scale goes there
@@ -356,16 +370,9 @@ static void test_highlights_fill(const char *name, const char *text, int want) {
   bg_diags dg;
   rp_ctx c;
   if (!load_sections(&f, name, text, &o, &in, &dg, &c, 0)) return;
-  int first = -1, inside = 1;
+  int first = -1, inside = all_inside(&c.body);
   for (int i = 0; i < c.body.nhead && first < 0; i++)
     if (strstr(c.body.head[i].title, "Highlighted")) first = c.body.head[i].page;
-  for (int p = 0; p < c.body.npage; p++) {
-    const rp_page *pg = c.body.page[p];
-    for (int k = 0; k < pg->nplace; k++) {
-      const bg_surface_place *pl = &pg->place[k];
-      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 && pl->y + pl->sh * pl->scale <= pg->sc.height - RP_MARGIN_BOTTOM + 1e-6;
-    }
-  }
   const char *what = name ? name : "inline";
   BG_T_REPORT(first >= 0 && c.body.page[first]->nplace == want && inside,
               "%s: %d highlights on section 3's first page (%d expected), all inside %d", what,
@@ -512,13 +519,7 @@ static void test_highlight_parts_flow(int n, unsigned seed, int want) {
       }
     }
   }
-  int inside = 1; /* every part within its page's content area */
-  for (int p = 0; p < c.body.npage; p++)
-    for (int k = 0; k < c.body.page[p]->nplace; k++) {
-      const bg_surface_place *pl = &c.body.page[p]->place[k];
-      inside &= pl->y >= RP_MARGIN_TOP - 1e-6 &&
-                pl->y + pl->sh * pl->scale <= c.body.page[p]->sc.height - RP_MARGIN_BOTTOM + 1e-6;
-    }
+  int inside = all_inside(&c.body);
   BG_T_REPORT(flowed >= want && apart == 0 && inside,
               "randnet%d_%u: %d highlights flowed (at least %d), %d apart from their heading, all inside %d", n, seed,
               flowed, want, apart, inside);
