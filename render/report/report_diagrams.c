@@ -734,9 +734,22 @@ static void show_one(rp_ctx *c, const hl *h) {
     bg_sb_printf(&most, "%s It follows in %d parts, one below the other.", bg_sb_str(&x), MAX_HL_TILES);
     double text = rp_para_height(d, bg_sb_str(&most), RP_SIZE_BODY, 0, 0);
     bg_sb_free(&most);
-    double heights[MAX_HL_TILES];
-    int nflow = flow_parts(d, r, &tl, rp_room(d) - rp_subsection_height(d) - text - 8 - TILE_CAPTION - 2, heights);
-    rp_subsection(d, bg_sb_str(&t), 30);
+    double heights[MAX_HL_TILES], above = rp_subsection_height(d) + text + 8 + TILE_CAPTION + 2;
+    int nflow = flow_parts(d, r, &tl, rp_room(d) - above, heights);
+    /* The heading is kept with its first part (issue 31: a 60-bond model's
+     * report had five headings with their text alone at a page's foot, the
+     * parts on the pages after): where the room left is too small to flow
+     * into, the heading goes to the next page and the parts flow from
+     * there; parts of two columns are planned a heading shorter, so the
+     * first fits under it, and the heading goes where the first part does. */
+    double keep = 30;
+    if (!nflow && (nflow = flow_parts(d, r, &tl, rp_page_room(d) - above, heights)))
+      keep = rp_room(d); /* too little room here to flow into: a new page */
+    else if (!nflow) {
+      plan_tiles(s, r, cw, rp_page_room(d) - above, smin, 1, MAX_HL_TILES, &tl);
+      keep = text + 8 + TILE_CAPTION + 2 + tl.th * tl.scale;
+    }
+    rp_subsection(d, bg_sb_str(&t), keep);
     int parts = nflow ? nflow : tl.nused;
     if (parts == 1) bg_sb_puts(&x, " It follows at a readable scale.");
     else bg_sb_printf(&x, " It follows in %d parts, one below the other.", parts);
