@@ -3,7 +3,7 @@
  * never needed; the checker's fc_adjacent counts them in the scene), for
  * the bond router's second pass (diagram_route_bonds.c): which pairs cross,
  * which bond of a pair to route or draw straight, and how many bonds a set
- * of changed bonds crosses. */
+ * of changed bonds crosses (or runs along). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -18,6 +18,26 @@ static int segs_cross(bg_vec a, bg_vec b, bg_vec c, bg_vec d) {
   if (lu <= 0 || lv <= 0 || fabs(den) < 1e-9 * lu * lv) return 0;
   double t = (w.x * v.y - w.y * v.x) / den, s = (w.x * u.y - w.y * u.x) / den;
   return t * lu > 0.5 && (1 - t) * lu > 0.5 && s * lv > 0.5 && (1 - s) * lv > 0.5;
+}
+
+/* Whether segments a-b and c-d run on one line: parallel within 1 degree,
+ * less than 1 pt apart, sharing more than 2 pt (the checker's bonds on
+ * lines, fc_seg_overlap), not from one point (two routes out of one port,
+ * which the false T's pass parts). */
+static int segs_along(bg_vec a, bg_vec b, bg_vec c, bg_vec d) {
+  bg_vec u = bg_vsub(b, a), v = bg_vsub(d, c);
+  double lu = bg_vlen(u), lv = bg_vlen(v);
+  if (lu < 2 || lv < 2) return 0;
+  bg_vec end[2] = {a, b}, oend[2] = {c, d};
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++)
+      if (bg_vlen(bg_vsub(end[i], oend[j])) < 0.5) return 0;
+  u = bg_vscale(u, 1 / lu), v = bg_vscale(v, 1 / lv);
+  if (fabs(u.x * v.y - u.y * v.x) > 0.0175) return 0;
+  bg_vec c0 = bg_vsub(c, a), d0 = bg_vsub(d, a);
+  if (fmax(fabs(c0.x * u.y - c0.y * u.x), fabs(d0.x * u.y - d0.y * u.x)) >= 1) return 0;
+  double t0 = c0.x * u.x + c0.y * u.y, t1 = d0.x * u.x + d0.y * u.y;
+  return fmin(lu, fmax(t0, t1)) - fmax(0, fmin(t0, t1)) > 2;
 }
 
 /* Whether bonds b and c cross as drawn (their lines from tail to head over
@@ -78,9 +98,28 @@ int bg_route_adjacent_crossings(const bg_diagram_layout *L, const unsigned char 
   return n;
 }
 
+/* Bonds b and c running on one line somewhere (legs as bonds_cross):
+ * drawn as one bond. */
+static int bonds_along(const bg_diagram_layout *L, int b, int c) {
+  const bg_bond_geom *gb = &L->bg[b], *gc = &L->bg[c];
+  if (gb->spln || gc->spln || (L->bond_hidden && (L->bond_hidden[b] || L->bond_hidden[c]))) return 0;
+  for (int i = 0; i <= gb->bendn; i++)
+    for (int j = 0; j <= gc->bendn; j++)
+      if (segs_along(bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i), bg_route_leg_end(L, c, j - 1),
+                     bg_route_leg_end(L, c, j)))
+        return 1;
+  return 0;
+}
+
+/* A pair of bonds on one line, as crossings: a route kept for fewer
+ * crossings must not put a bond on another (issue 31: the second pass took
+ * a twin's route that ran 6.7 pt along its partner into their junction's
+ * corner to uncross two bonds elsewhere, and the pair read as one bond). */
+#define ALONG_CROSSINGS 1000
+
 /* The pairs of crossing bonds as the layout draws them of which one is
- * marked in changed. Each changed bond is tried against the bonds whose
- * boxes meet its own, found through a grid of square cells over the
+ * marked in changed, a pair on one line counted ALONG_CROSSINGS times.
+ * Each changed bond is tried against the bonds whose boxes meet its own, found through a grid of square cells over the
  * drawing (each bond listed in the cells its box covers, a bond covering
  * more than 64 cells tried against every changed bond): trying every pair
  * made the bond router's second pass quadratic (a random tree of 12 000
@@ -139,7 +178,8 @@ int bg_route_crossings_of(const bg_diagram_layout *L, const unsigned char *chang
     if (!changed[b]) continue;
     /* a pair is counted once: from its changed bond, from the smaller of two */
 #define TRY(c)                                                                                                         \
-  if ((c) != b && seen[c] != b + 1 && (!changed[c] || (c) > b)) seen[c] = b + 1, n += bonds_cross(L, b, c)
+  if ((c) != b && seen[c] != b + 1 && (!changed[c] || (c) > b))                                                       \
+  seen[c] = b + 1, n += bonds_cross(L, b, c) ? 1 : bonds_along(L, b, c) ? ALONG_CROSSINGS : 0
     for (int i = 0; i < nbig; i++) TRY(big[i]);
     for (int k = 0; k < 4; k++) range[k] = (int)fmin(CELL_SPAN - 1, floor((box[b][k] - lo[k % 2]) / cell));
     if ((long)(range[2] - range[0] + 1) * (range[3] - range[1] + 1) > BIG_BOND) { /* a big one: every bond */

@@ -266,7 +266,8 @@ enum { BG_KEEP, BG_ROUTE, BG_STRAIGHTEN };
  * todo (nullable): of each pair, a slanted straight bond not routed
  * (route[] 0) marked BG_ROUTE, its partner with corners BG_STRAIGHTEN. */
 int bg_route_adjacent_crossings(const bg_diagram_layout *L, const unsigned char *route, unsigned char *todo);
-/* The pairs of crossing bonds as drawn of which one is marked in changed. */
+/* The pairs of crossing bonds as drawn of which one is marked in changed
+ * (a pair on one line counted as 1 000). */
 int bg_route_crossings_of(const bg_diagram_layout *L, const unsigned char *changed);
 
 /* The cheapest route between ports ps and pt whose boxes are a and b (see
