@@ -40,18 +40,22 @@ static int segs_along(bg_vec a, bg_vec b, bg_vec c, bg_vec d) {
   return fmin(lu, fmax(t0, t1)) - fmax(0, fmin(t0, t1)) > 2;
 }
 
-/* Whether bonds b and c cross as drawn (their lines from tail to head over
- * the corners, the half arrow not counted; a Graphviz curve not looked at). */
-static int bonds_cross(const bg_diagram_layout *L, int b, int c) {
+/* Whether some leg of bond b and some leg of bond c meet as `legs` tells
+ * (their lines from tail to head over the corners, the half arrow not
+ * counted; a Graphviz curve not looked at). */
+static int legs_meet(const bg_diagram_layout *L, int b, int c, int (*legs)(bg_vec, bg_vec, bg_vec, bg_vec)) {
   const bg_bond_geom *gb = &L->bg[b], *gc = &L->bg[c];
   if (gb->spln || gc->spln || (L->bond_hidden && (L->bond_hidden[b] || L->bond_hidden[c]))) return 0;
   for (int i = 0; i <= gb->bendn; i++)
     for (int j = 0; j <= gc->bendn; j++)
-      if (segs_cross(bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i), bg_route_leg_end(L, c, j - 1),
-                     bg_route_leg_end(L, c, j)))
+      if (legs(bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i), bg_route_leg_end(L, c, j - 1),
+               bg_route_leg_end(L, c, j)))
         return 1;
   return 0;
 }
+
+/* Whether bonds b and c cross as drawn. */
+static int bonds_cross(const bg_diagram_layout *L, int b, int c) { return legs_meet(L, b, c, segs_cross); }
 
 /* Whether bond b, drawn straight, runs off the axes (as the router's costs
  * tell a slanted line: the smaller extent more than 9 % of the larger). */
@@ -98,18 +102,8 @@ int bg_route_adjacent_crossings(const bg_diagram_layout *L, const unsigned char 
   return n;
 }
 
-/* Bonds b and c running on one line somewhere (legs as bonds_cross):
- * drawn as one bond. */
-static int bonds_along(const bg_diagram_layout *L, int b, int c) {
-  const bg_bond_geom *gb = &L->bg[b], *gc = &L->bg[c];
-  if (gb->spln || gc->spln || (L->bond_hidden && (L->bond_hidden[b] || L->bond_hidden[c]))) return 0;
-  for (int i = 0; i <= gb->bendn; i++)
-    for (int j = 0; j <= gc->bendn; j++)
-      if (segs_along(bg_route_leg_end(L, b, i - 1), bg_route_leg_end(L, b, i), bg_route_leg_end(L, c, j - 1),
-                     bg_route_leg_end(L, c, j)))
-        return 1;
-  return 0;
-}
+/* Whether bonds b and c run on one line somewhere: drawn as one bond. */
+static int bonds_along(const bg_diagram_layout *L, int b, int c) { return legs_meet(L, b, c, segs_along); }
 
 /* A pair of bonds on one line, as crossings: a route kept for fewer
  * crossings must not put a bond on another (issue 31: the second pass took
