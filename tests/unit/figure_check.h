@@ -174,8 +174,7 @@ static int fc_flatten(const bg_scene *s, const bg_scene_item *it, fc_seg **out) 
   return n;
 }
 
-/* Text boxes as placement sees them: the measured width, 80 % of pango's
- * logical height (its line gap trimmed). */
+/* A line's bounding box, over its segments. */
 static void fc_bound(fc_line *l) {
   l->x0 = l->y0 = 1e300, l->x1 = l->y1 = -1e300;
   for (int k = 0; k < l->nseg; k++) {
@@ -206,6 +205,8 @@ static double fc_bbox_box(const fc_line *l, double x0, double y0, double x1, dou
   return hypot(fmax(fmax(l->x0 - x1, x0 - l->x1), 0), fmax(fmax(l->y0 - y1, y0 - l->y1), 0));
 }
 
+/* Text boxes as placement sees them: the measured width, 80 % of pango's
+ * logical height (its line gap trimmed). */
 static fc_box fc_text_box(const bg_scene_item *it, int kind, int id, int loop) {
   double h = 0.8 * it->th, cx = it->x + (0.5 - it->halign) * it->tw;
   double cy = it->y + (0.5 - it->valign) * it->th;
