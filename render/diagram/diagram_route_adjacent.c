@@ -113,9 +113,10 @@ static int bonds_along(const bg_diagram_layout *L, int b, int c) { return legs_m
 
 /* The pairs of crossing bonds as the layout draws them of which one is
  * marked in changed, a pair on one line counted ALONG_CROSSINGS times.
- * Each changed bond is tried against the bonds whose boxes meet its own, found through a grid of square cells over the
- * drawing (each bond listed in the cells its box covers, a bond covering
- * more than 64 cells tried against every changed bond): trying every pair
+ * Each changed bond is tried against the bonds whose boxes meet its own,
+ * found through a grid of square cells over the drawing (each bond listed
+ * in the cells its box covers, a bond covering more than 64 cells tried
+ * against every changed bond): trying every pair
  * made the bond router's second pass quadratic (a random tree of 12 000
  * junctions spent a fifth of its layout here). */
 typedef struct cell_entry {

@@ -610,8 +610,6 @@ static int file_faults(const char *rel, const char *name, fc_stats st[3]) {
   return rc;
 }
 
-/* One model in every style and layer set, added to tot; the arrangement
- * of each style compared with the default style's (same layers). */
 /* BG_FIGURES_VERBOSE: whether it is set (the counts printed), and with 2
  * or more each fault explained (fc_explain, set here). */
 static int figures_verbose(void) {
@@ -620,6 +618,8 @@ static int figures_verbose(void) {
   return v != NULL;
 }
 
+/* One model in every style and layer set, added to tot; the arrangement
+ * of each style compared with the default style's (same layers). */
 static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbose) {
   for (int k = 0; k < 2; k++) {
     bg_diagram *first = NULL;
@@ -642,6 +642,16 @@ static void measure_model(fx *f, const char *name, fc_stats tot[3][2], int verbo
     }
     bg_diagram_free(first);
   }
+}
+
+/* Model file rel (compiled as name) in every style and layer set, added to
+ * tot (measure_model): 0, or nonzero when it does not compile (reported). */
+static int file_measure(const char *rel, const char *name, fc_stats tot[3][2], int verbose) {
+  fx f;
+  int rc = file_model(&f, rel, name);
+  if (rc == 0) measure_model(&f, name, tot, verbose);
+  fx_free(&f);
+  return rc;
 }
 
 static void measure(fc_stats tot[3][2]) {
@@ -1502,12 +1512,7 @@ static void test_bridges(void) {
 static int twin_overlaps(const bg_model *m, const bg_scene *s, const char *what) {
   fc_scene sc;
   fc_read(s, &sc);
-  int *idx = calloc((size_t)sc.nline + 1, sizeof *idx), n = 0;
-  for (int i = 0; i < sc.nline; i++) {
-    idx[i] = -1;
-    for (int b = 0; sc.line[i].kind == FC_BOND && b < m->nbond; b++)
-      if (m->bond_num[b] == sc.line[i].id) idx[i] = b;
-  }
+  int *idx = fc_model_bonds(m, &sc), n = 0;
   for (int i = 0; i < sc.nline; i++)
     for (int j = i + 1; idx[i] >= 0 && j < sc.nline; j++) {
       int a = idx[i], b = idx[j];
@@ -1569,19 +1574,14 @@ static void test_twin_bonds(void) {
  * from, and the route round the outside jogs 8 pt along bond 45 out of it
  * (left, docs/drawing.md). */
 static void test_bond_routes_apart(void) {
-  int verbose = figures_verbose();
-  fx f;
-  if (file_model(&f, "tests/data/figures/crowded_junction.bg", "crowded_junction") == 0) {
-    fc_stats tot[3][2] = {{{0}}};
-    measure_model(&f, "crowded_junction", tot, verbose);
-    for (int si = 0; si < 3; si++)
-      for (int k = 0; k < 2; k++) {
-        int want = si == 2 && k == 0; /* the jog out of the corner */
-        BG_T_REPORT(tot[si][k].bond_overlaps <= want, "crowded_junction %s %s: %d bonds on lines (at most %d)",
-                    styles[si], show_names[k], tot[si][k].bond_overlaps, want);
-      }
-  }
-  fx_free(&f);
+  fc_stats tot[3][2] = {{{0}}};
+  if (file_measure("tests/data/figures/crowded_junction.bg", "crowded_junction", tot, figures_verbose())) return;
+  for (int si = 0; si < 3; si++)
+    for (int k = 0; k < 2; k++) {
+      int want = si == 2 && k == 0; /* the jog out of the corner */
+      BG_T_REPORT(tot[si][k].bond_overlaps <= want, "crowded_junction %s %s: %d bonds on lines (at most %d)",
+                  styles[si], show_names[k], tot[si][k].bond_overlaps, want);
+    }
 }
 
 /* Issue 31, a junction whose four sides are taken and whose bonds to two
@@ -1599,17 +1599,13 @@ static void test_corners_for_bonds(void) {
   for (int i = 0; i < 2; i++) {
     char path[96];
     snprintf(path, sizeof path, "tests/data/figures/%s.bg", files[i]);
-    fx f;
-    if (file_model(&f, path, files[i]) == 0) {
-      fc_stats tot[3][2] = {{{0}}};
-      measure_model(&f, files[i], tot, verbose);
-      for (int si = 0; si < 3; si++)
-        for (int k = 0; k < 2; k++)
-          BG_T_REPORT(tot[si][k].adjacent == 0 && tot[si][k].bond_overlaps == 0,
-                      "%s %s %s: %d crossings of one node's lines, %d bonds on lines (0)", files[i], styles[si],
-                      show_names[k], tot[si][k].adjacent, tot[si][k].bond_overlaps);
-    }
-    fx_free(&f);
+    fc_stats tot[3][2] = {{{0}}};
+    if (file_measure(path, files[i], tot, verbose)) continue;
+    for (int si = 0; si < 3; si++)
+      for (int k = 0; k < 2; k++)
+        BG_T_REPORT(tot[si][k].adjacent == 0 && tot[si][k].bond_overlaps == 0,
+                    "%s %s %s: %d crossings of one node's lines, %d bonds on lines (0)", files[i], styles[si],
+                    show_names[k], tot[si][k].adjacent, tot[si][k].bond_overlaps);
   }
 }
 
