@@ -492,8 +492,8 @@ static void draw_all(bg_diagram *d) {
   if (d->keep_page) keep_page(d);
 }
 
-/* The layout stage: nodes measured and laid out, where the bonds run. */
-static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
+/* Nodes measured and laid out, where the bonds run. */
+static int lay_out_bonds(bg_diagram_layout *d, bg_diags *dg) {
   if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);
   bg_fields_prepare(d);
@@ -501,6 +501,54 @@ static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
   bg_geom_bonds(d);
   /* a straight bond never through another node's label (issue 31) */
   if (bg_route_blocked_bonds(d)) bg_geom_bonds(d);
+  return 0;
+}
+
+/* Whether style s lays out as the reference style (the built-in default)
+ * does: the same fonts, sizes, line widths, gaps and layer band (its
+ * colours and marks do not move anything). */
+static int reference_sizes(const bg_style *s) {
+  bg_style r;
+  bg_style_default(&r);
+  return !strcmp(s->font, r.font) && s->font_size == r.font_size && s->number_scale == r.number_scale &&
+         s->line_width == r.line_width && s->harpoon == r.harpoon && s->signal_width == r.signal_width &&
+         s->layer_width == r.layer_width && s->layer_offset == r.layer_offset && s->node_pad == r.node_pad &&
+         s->node_sep == r.node_sep && s->rank_sep == r.rank_sep && s->splines == r.splines;
+}
+
+static void layout_release(bg_diagram_layout *L);
+
+/* The one-ports that move to 45 degrees (bg_diagonal_choose), chosen in
+ * the reference style's layout: chosen in each style's own, where its
+ * larger labels left no room in one style and did in another, a one-port
+ * moved in the default style and stayed in its column in slides (issue
+ * 31: one arrangement for every style). NULL: d's own sizes are the
+ * reference's. */
+static double *reference_diagonals(const bg_diagram_layout *d) {
+  if (reference_sizes(&d->st)) return NULL;
+  if (!bg_diagonal_any(d)) return bg_xcalloc((size_t)d->m->nbond + 1, sizeof(double));
+  bg_diagram_layout *R = bg_xcalloc(1, sizeof *R);
+  R->refs = 1;
+  R->m = d->m, R->a = d->a, R->o = d->o, R->show = d->show;
+  R->o.log = NULL; /* its progress is d's */
+  bg_style_default(&R->st);
+  bg_diags quiet;
+  bg_diags_init(&quiet, NULL, NULL, 0);
+  double *chosen = lay_out_bonds(R, &quiet) == 0 ? bg_diagonal_choose(R)
+                                                  : bg_xcalloc((size_t)d->m->nbond + 1, sizeof *chosen);
+  bg_diags_free(&quiet);
+  layout_release(R);
+  return chosen;
+}
+
+/* The layout stage: nodes measured and laid out, where the bonds run, and
+ * the one-ports at 45 degrees where nothing is in the way now that it is
+ * known (diagram_diagonals.c). */
+static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
+  if (lay_out_bonds(d, dg) != 0) return -1;
+  double *chosen = reference_diagonals(d);
+  if (bg_diagonal_one_ports(d, chosen)) bg_geom_bonds(d);
+  free(chosen);
   return 0;
 }
 

@@ -402,6 +402,7 @@ static void junction_radii(bg_diagram_layout *d) {
       amin = fmin(amin, own[i]);
     }
     double r = angle_radius(d, j, amin, sharpest, cap);
+    if (d->jr_least) r = fmax(r, d->jr_least[j]); /* the routes keep their ends */
     int *order = bonds_by_angle(d, j);
     for (int i = 0; i < nb; i++) *bond_radius(d, bs[i], j) = r;
     /* strokes on barbs up to the cap; strokes on strokes up to one and a

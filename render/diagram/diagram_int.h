@@ -66,6 +66,8 @@ typedef struct bg_diagram_layout {
   bg_bond_geom *bg;          /* per bond */
   double *jr;                /* per node: radius of a junction's end circle, else 0 */
   double *bjr;               /* per bond end (2 b + 1: head): radius it leaves its junction at, else 0 */
+  const double *jr_least;    /* per node: the least radius of a junction's end circle (the one
+                                the bonds were routed for, bg_diagonal_one_ports), or NULL */
   bg_arena arena;
 } bg_diagram_layout;
 
@@ -261,6 +263,19 @@ void bg_router_free(bg_router *r);
  * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how
  * many. Call bg_geom_bonds again when it did any. */
 int bg_route_blocked_bonds(bg_diagram_layout *L);
+/* One-ports hanging off a junction at another slant moved to 45 degrees
+ * (diagram_diagonals.c, after the bond router). bg_diagonal_choose: those
+ * whose box and bond would stay clear of every other box and line, per
+ * bond: its one-port's new distance from the junction along the longer
+ * axis, as a share of its old one (0: it stays; free the array).
+ * bg_diagonal_one_ports moves those chosen (NULL: those L's own layout
+ * chooses) by those shares, where their places at 45 degrees exist in L's
+ * sizes; returns how many. Call bg_geom_bonds again when it moved any. */
+double *bg_diagonal_choose(const bg_diagram_layout *L);
+/* Whether L has a one-port that may move (its angle off an axis; its room
+ * not asked): without one, no other style's layout is needed to choose. */
+int bg_diagonal_any(const bg_diagram_layout *L);
+int bg_diagonal_one_ports(bg_diagram_layout *L, const double *chosen);
 
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */
