@@ -324,7 +324,10 @@ static void emit_tiles(rp_doc *d, const bg_scene *s, const double r[4], const ti
  * MAX_HL_TILES (the even parts are kept then). */
 #define FLOW_MIN 0.3
 static int flow_parts(const rp_doc *d, const double r[4], const tiling *t, double room0, double *heights) {
-  double full = rp_page_room(d) - 14 - 8 - TILE_CAPTION, page = rp_page_room(d);
+  /* a part after the first has a page of its own: its caption's line, 2 pt
+   * and itself (a heading's line and gap more were counted: 22 pt of every
+   * such page left empty) */
+  double page = rp_page_room(d), full = page - rp_line_height(d->font, RP_SIZE_SMALL) - 2 - 1;
   if (t->nx != 1 || t->ny < 2 || room0 < FLOW_MIN * page) return 0;
   double h0 = room0 / t->scale, hf = full / t->scale, y = 0;
   if (h0 <= TILE_OVERLAP || hf <= TILE_OVERLAP) return 0;
