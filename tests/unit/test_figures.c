@@ -1035,8 +1035,12 @@ static void test_held_out_models(void) {
    * hang at 45 degrees where nothing is in the way (diagram_diagonals.c):
    * randnet80_3's bond 11 one of them, the signal router's lanes moved
    * with its box and c52 -> k67 crosses bond 219 6.4 pt from its end
-   * (10 pt before), 700 pt away */
-  OK(tot.sig_at_ends <= 7);
+   * (10 pt before), 700 pt away; 9 since such a one-port moves out of its
+   * row where half as much room again would not keep it level
+   * (LEVEL_GROW): in randnet60_3, with a one-port moved out of its row
+   * (the figure 5 pt wider), c1 -> k9 crosses bonds 139 and 175 9.5 and
+   * 5.5 pt from their ends (its signal crossings 227 -> 222) */
+  OK(tot.sig_at_ends <= 9);
 }
 
 /* Length of bond number num as drawn (its line without the half arrow). */
@@ -1196,7 +1200,9 @@ static void test_many_one_ports(void) {
 /* Development: BG_FIGURES_MEASURE=a.bg:b.bg measures model files of one's
  * own (held-out models) with the large figures' counts, in the layout
  * BG_FIGURES_LAYOUT (default: the model's own), default style and layers
- * (every layer with BG_FIGURES_SHOW=all).
+ * (every layer with BG_FIGURES_SHOW=all); with BG_FIGURES_STYLES set, in
+ * every style and layer set instead (measure_model: a row each, the
+ * arrangement of each style against the default style's).
  * Prints a row per file; asserts only that each loads and draws. */
 /* The text of file path into src (appended); 0 when it cannot be read. */
 static int read_text(const char *path, bg_strbuf *src) {
@@ -1222,6 +1228,13 @@ static void test_measure_files(void) {
     if (!opened) continue;
     const char *name = strrchr(p, '/') ? strrchr(p, '/') + 1 : p;
     fx f;
+    if (getenv("BG_FIGURES_STYLES")) { /* every style and layer set, each style's arrangement against the default's */
+      fc_stats tot[3][2] = {{{0}}};
+      if (fm_load(&f, name, bg_sb_str(&src)) == 0) measure_model(&f, name, tot, 1);
+      fx_free(&f);
+      bg_sb_free(&src);
+      continue;
+    }
     bg_diagram *d = default_drawing(&f, name, bg_sb_str(&src), getenv("BG_FIGURES_LAYOUT"));
     if (d) {
       fc_stats st = {0};
@@ -1621,7 +1634,7 @@ static void test_corners_for_bonds(void) {
  * it (a half arrow's quadrant, a route's way in); of 100 held-out property
  * models' 311 slanted bonds, 208 were such. Two of those models
  * (tests/data/figures/diagonals_a and _b) had 9 and 18 slanted bonds in
- * every style with the default layers; they keep at most 6, 6, 7 and 9 in
+ * every style with the default layers; they keep at most 4, 4, 6 and 9 in
  * the default, print and slides styles, and nothing else grows: strokes
  * touching, numbers astray, crossings, crossings of one node's lines and
  * short bonds at most as many as before in each style (the counts
@@ -1635,7 +1648,7 @@ static void test_one_ports_at_45(void) {
     const char *name;
     int slanted[3], every_layer[3];            /* per style: default, print, slides */
     int touching[3], astray[3], crossings[3], adjacent[3], short_bonds[3]; /* before, default layers */
-  } files[] = {{"diagonals_a", {6, 6, 7}, {12, 11, 12}, {0, 1, 2}, {0, 0, 1}, {4, 5, 4}, {2, 3, 3}, {0, 0, 1}},
+  } files[] = {{"diagonals_a", {4, 4, 6}, {12, 11, 12}, {0, 1, 2}, {0, 0, 1}, {4, 5, 4}, {2, 3, 3}, {0, 0, 1}},
                {"diagonals_b", {9, 9, 9}, {28, 28, 28}, {0, 0, 0}, {0, 1, 1}, {17, 17, 15}, {4, 4, 2}, {0, 0, 1}}};
   for (int i = 0; i < 2; i++) {
     char path[96];
