@@ -267,15 +267,17 @@ int bg_route_blocked_bonds(bg_diagram_layout *L);
  * (diagram_diagonals.c, after the bond router). bg_diagonal_choose: those
  * whose box and bond would stay clear of every other box and line, per
  * bond: its one-port's new distance from the junction along the longer
- * axis, as a share of its old one (0: it stays; free the array).
- * bg_diagonal_one_ports moves those chosen (NULL: those L's own layout
- * chooses) by those shares, where their places at 45 degrees exist in L's
- * sizes; returns how many. Call bg_geom_bonds again when it moved any. */
+ * axis, as a share of its old one (negative: it stays level with its row
+ * or column; 0: it does not move; free the array). bg_diagonal_one_ports
+ * moves those chosen (NULL: those L's own layout chooses) by those shares,
+ * each where its place at 45 degrees exists and is clear in L's own sizes;
+ * returns how many. Call bg_geom_bonds again when it moved any.
+ * bg_diagonal_any: whether L has a one-port that may move (its angle off
+ * an axis; its room not asked): without one, no other style's layout is
+ * needed to choose. */
 double *bg_diagonal_choose(const bg_diagram_layout *L);
-/* Whether L has a one-port that may move (its angle off an axis; its room
- * not asked): without one, no other style's layout is needed to choose. */
-int bg_diagonal_any(const bg_diagram_layout *L);
 int bg_diagonal_one_ports(bg_diagram_layout *L, const double *chosen);
+int bg_diagonal_any(const bg_diagram_layout *L);
 
 /* A patch of background behind centred text at p, so it stays readable over
  * path and loop lines. */
