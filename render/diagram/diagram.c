@@ -526,7 +526,6 @@ static void layout_release(bg_diagram_layout *L);
  * reference's. */
 static double *reference_diagonals(const bg_diagram_layout *d) {
   if (reference_sizes(&d->st)) return NULL;
-  if (!bg_diagonal_any(d)) return bg_xcalloc((size_t)d->m->nbond + 1, sizeof(double));
   bg_diagram_layout *R = bg_xcalloc(1, sizeof *R);
   R->refs = 1;
   R->m = d->m, R->a = d->a, R->o = d->o, R->show = d->show;
@@ -546,6 +545,7 @@ static double *reference_diagonals(const bg_diagram_layout *d) {
  * known (diagram_diagonals.c). */
 static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
   if (lay_out_bonds(d, dg) != 0) return -1;
+  if (!bg_diagonal_any(d)) return 0; /* no one-port that may move: no index, no second layout */
   double *chosen = reference_diagonals(d);
   if (bg_diagonal_one_ports(d, chosen)) bg_geom_bonds(d);
   free(chosen);

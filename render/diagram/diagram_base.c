@@ -118,6 +118,34 @@ int bg_signal_from_node(const bg_diagram_layout *d, int i) {
   return bond >= 0 ? d->node_of[m->bond_head[bond]] : -1;
 }
 
+unsigned char *bg_signal_end_nodes(const bg_diagram_layout *d) {
+  const bg_model *m = d->m;
+  unsigned char *on = bg_xcalloc((size_t)d->nnode + 1, 1);
+  for (int i = 0; i < m->nsignal; i++) {
+    int from = bg_signal_from_node(d, i), to = d->node_of[m->signal_to[i]];
+    if (from >= 0 && from < d->nnode) on[from] = 1;
+    if (to >= 0 && to < d->nnode) on[to] = 1;
+  }
+  return on;
+}
+
+int *bg_layer_use(const bg_diagram_layout *d) {
+  const bg_analysis *a = d->a;
+  unsigned show = d->show;
+  if (d->o.layer_room > 0) show |= BG_SHOW_PATHS | BG_SHOW_LOOPS;
+  if (!a || d->o.layer_room < 0 || !(show & (BG_SHOW_PATHS | BG_SHOW_LOOPS))) return NULL;
+  int *use = bg_xcalloc((size_t)d->m->nbond + 1, sizeof(int));
+  for (int p = 0; (show & BG_SHOW_PATHS) && p < a->npath; p++)
+    for (int k = 0; k < a->path_n[p]; k++) use[a->path_bonds[a->path_adr[p] + k]]++;
+  for (int l = 0; (show & BG_SHOW_LOOPS) && l < a->ntloop; l++)
+    for (int k = 0; k < a->tloop_n[l]; k++) use[a->tloop_signals[a->tloop_adr[l] + k] / 2]++;
+  return use;
+}
+
+int bg_boxes_meet(const double a[4], const double b[4]) {
+  return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+}
+
 /* The element a bond variable of a state expression refers to: the junction
  * whose common variable it is (X.f of a 1-junction is its first bond's flow),
  * else the one-port on the bond, else a two-port. The expression keeps only

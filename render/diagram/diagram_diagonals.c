@@ -44,10 +44,6 @@ typedef struct slide {
   bg_vec p0, p, q;
 } slide;
 
-static int boxes_meet(const double a[4], const double b[4]) {
-  return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
-}
-
 /* The distance of segment p-q from box b (0 inside it). */
 static double seg_box(bg_vec p, bg_vec q, const double b[4]) {
   const double s[4] = {p.x, p.y, q.x, q.y};
@@ -100,7 +96,7 @@ static int place_clear(const bg_diagram_layout *L, near_index *ix, near_list *nl
       if (k == w || k == v) continue;
       double o[4] = {L->nx[k] - L->nw[k] / 2, L->ny[k] - L->nh[k] / 2, L->nx[k] + L->nw[k] / 2,
                      L->ny[k] + L->nh[k] / 2};
-      if (boxes_meet(g, o) || seg_box(p, q, o) < 1) return 0;
+      if (bg_boxes_meet(g, o) || seg_box(p, q, o) < 1) return 0;
       continue;
     }
     int leg = k - L->nnode, o = ix->lbond[leg];
@@ -114,26 +110,11 @@ static int place_clear(const bg_diagram_layout *L, near_index *ix, near_list *nl
   for (int i = 0; i < nmv; i++) {
     const double *o = mv[i].box;
     double og[4] = {o[0] - BOX_GAP, o[1] - BOX_GAP, o[2] + BOX_GAP, o[3] + BOX_GAP};
-    if (boxes_meet(g, o) || seg_box(p, q, og) <= 0 || seg_box(mv[i].p, mv[i].q, g) <= 0 ||
+    if (bg_boxes_meet(g, o) || seg_box(p, q, og) <= 0 || seg_box(mv[i].p, mv[i].q, g) <= 0 ||
         bg_seg_seg(p, q, mv[i].p, mv[i].q) < LINE_GAP)
       return 0;
   }
   return 1;
-}
-
-/* Per bond: whether path or loop lines are drawn beside it (as the grid
- * pass's layer_band counts them), or NULL when none is. */
-static unsigned char *layered_bonds(const bg_diagram_layout *L) {
-  const bg_analysis *a = L->a;
-  unsigned show = L->show;
-  if (L->o.layer_room > 0) show |= BG_SHOW_PATHS | BG_SHOW_LOOPS;
-  if (!a || L->o.layer_room < 0 || !(show & (BG_SHOW_PATHS | BG_SHOW_LOOPS))) return NULL;
-  unsigned char *use = bg_xcalloc((size_t)L->m->nbond + 1, 1);
-  for (int p = 0; (show & BG_SHOW_PATHS) && p < a->npath; p++)
-    for (int k = 0; k < a->path_n[p]; k++) use[a->path_bonds[a->path_adr[p] + k]] = 1;
-  for (int l = 0; (show & BG_SHOW_LOOPS) && l < a->ntloop; l++)
-    for (int k = 0; k < a->tloop_n[l]; k++) use[a->tloop_signals[a->tloop_adr[l] + k] / 2] = 1;
-  return use;
 }
 
 /* Per node: whether a signal shown starts or ends there, or NULL when none
@@ -142,21 +123,14 @@ static unsigned char *layered_bonds(const bg_diagram_layout *L) {
  * its junction's corner it sent them across more bonds (nine held-out
  * reaction networks: 25 signal crossings more, 2 signals touching). */
 static unsigned char *signal_ends(const bg_diagram_layout *L) {
-  const bg_model *m = L->m;
-  if (!(L->show & BG_SHOW_SIGNALS) || m->nsignal == 0) return NULL;
-  unsigned char *on = bg_xcalloc((size_t)L->nnode + 1, 1);
-  for (int i = 0; i < m->nsignal; i++) {
-    int from = bg_signal_from_node(L, i), to = L->node_of[m->signal_to[i]];
-    if (from >= 0 && from < L->nnode) on[from] = 1;
-    if (to >= 0 && to < L->nnode) on[to] = 1;
-  }
-  return on;
+  return (L->show & BG_SHOW_SIGNALS) && L->m->nsignal ? bg_signal_end_nodes(L) : NULL;
 }
 
-/* Whether a bond of junction v has path or loop lines beside it: they run
- * round the junction too, and the wider angle keeps their room (as the
- * grid pass keeps its one-ports where they are with the layers shown). */
-static int layered_junction(const bg_model *m, const unsigned char *layered, int v) {
+/* Whether a bond of junction v has path or loop lines beside it (layered:
+ * bg_layer_use, nullable): they run round the junction too, and the wider
+ * angle keeps their room (as the grid pass keeps its one-ports where they
+ * are with the layers shown). */
+static int layered_junction(const bg_model *m, const int *layered, int v) {
   for (int i = 0; layered && i < m->elem_nbond[v]; i++)
     if (layered[m->elem_bonds[m->elem_bondadr[v] + i]]) return 1;
   return 0;
@@ -183,7 +157,7 @@ static double number_reach(const bg_diagram_layout *L, int b) {
 /* Whether bond b is a straight one from junction v to one-port w (into
  * *w, *v) that may move: no path or loop lines round v, no signal at w, v
  * not ringed by its one-ports, and hanging 15 to 44 degrees off an axis. */
-static int slanted_one_port(const bg_diagram_layout *L, const unsigned char *layered, const unsigned char *signalled,
+static int slanted_one_port(const bg_diagram_layout *L, const int *layered, const unsigned char *signalled,
                             int b, int *w, int *v) {
   const bg_model *m = L->m;
   const bg_bond_geom *bg = &L->bg[b];
@@ -196,7 +170,8 @@ static int slanted_one_port(const bg_diagram_layout *L, const unsigned char *lay
 }
 
 int bg_diagonal_any(const bg_diagram_layout *L) {
-  unsigned char *layered = layered_bonds(L), *signalled = signal_ends(L);
+  int *layered = bg_layer_use(L);
+  unsigned char *signalled = signal_ends(L);
   int any = 0, w, v;
   for (int b = 0; b < L->m->nbond && !any; b++) any = slanted_one_port(L, layered, signalled, b, &w, &v);
   free(layered), free(signalled);
@@ -217,7 +192,7 @@ int bg_diagonal_any(const bg_diagram_layout *L) {
  * sizes allowed, it came to lie left of a label of another row in one
  * style and right of it in another (a 1 400-node tree: 909 label pairs in
  * another order in slides). */
-static int diagonal_place(const bg_diagram_layout *L, const unsigned char *layered, const unsigned char *signalled,
+static int diagonal_place(const bg_diagram_layout *L, const int *layered, const unsigned char *signalled,
                           int b, double at, slide *sl) {
   int w, v;
   if (!slanted_one_port(L, layered, signalled, b, &w, &v)) return 0;
@@ -260,7 +235,8 @@ static double *clear_moves(const bg_diagram_layout *L, const double *ref) {
   int nb = L->m->nbond, nmv = 0;
   double *at = bg_xcalloc((size_t)nb + 1, sizeof *at);
   if (nb == 0) return at;
-  unsigned char *layered = layered_bonds(L), *signalled = signal_ends(L);
+  int *layered = bg_layer_use(L);
+  unsigned char *signalled = signal_ends(L);
   near_index ix;
   near_list nl = {0};
   bg_near_build(L, nb, NULL, 0, &ix);

@@ -41,7 +41,7 @@ typedef struct grid {
   int *deg;
   int *gx, *gy;       /* grid cell per node */
   unsigned char *placed, *hub, *sides;
-  unsigned char *signalled; /* nodes where a signal starts or ends (signal_ends) */
+  unsigned char *signalled; /* nodes where a signal starts or ends (bg_signal_end_nodes) */
   unsigned char *mesh; /* hubs placed on a mesh's lattice (mesh_rows): their part is not folded */
   int *tree_par;      /* hubs: the hub they hang from in the tree drawing (-1: a root; assign_rows) */
   unsigned char *spine; /* hubs: on their root's row chain (the root, the child continuing it, ...) */
@@ -1617,18 +1617,6 @@ static void instance_centres(grid *g) {
 }
 
 /* Per node: whether a signal starts or ends there. */
-static unsigned char *signal_ends(const grid *g) {
-  const bg_diagram_layout *d = g->d;
-  const bg_model *m = d->m;
-  unsigned char *on = bg_xcalloc((size_t)g->n + 1, 1);
-  for (int i = 0; i < m->nsignal; i++) {
-    int from = bg_signal_from_node(d, i);
-    if (from >= 0 && from < g->n) on[from] = 1;
-    if (d->node_of[m->signal_to[i]] < g->n) on[d->node_of[m->signal_to[i]]] = 1;
-  }
-  return on;
-}
-
 /* The gaps between neighbouring grid columns and between rows (to_points):
  * at least 2.5 half arrows (7 line widths each) and the junction's end
  * circle, so that thick lines (slides) do not leave one-port bonds hardly
@@ -2047,15 +2035,8 @@ static void range(const grid *g, const int *cell, int *lo, int *hi) {
  * layers are shown (at most six counted), so numbers fit beyond them. */
 static double layer_band(const grid *g) {
   const bg_diagram_layout *d = g->d;
-  const bg_analysis *a = d->a;
-  unsigned show = d->show;
-  if (d->o.layer_room > 0) show |= BG_SHOW_PATHS | BG_SHOW_LOOPS;
-  if (!a || d->o.layer_room < 0 || !(show & (BG_SHOW_PATHS | BG_SHOW_LOOPS))) return 0;
-  int *use = bg_xcalloc((size_t)d->m->nbond + 1, sizeof(int)), most = 0;
-  for (int p = 0; (show & BG_SHOW_PATHS) && p < a->npath; p++)
-    for (int k = 0; k < a->path_n[p]; k++) use[a->path_bonds[a->path_adr[p] + k]]++;
-  for (int l = 0; (show & BG_SHOW_LOOPS) && l < a->ntloop; l++)
-    for (int k = 0; k < a->tloop_n[l]; k++) use[a->tloop_signals[a->tloop_adr[l] + k] / 2]++;
+  int *use = bg_layer_use(d), most = 0;
+  if (!use) return 0;
   for (int b = 0; b < d->m->nbond; b++) most = use[b] > most ? use[b] : most;
   free(use);
   if (most > 6) most = 6;
@@ -2377,7 +2358,7 @@ void bg_grid_place(bg_diagram_layout *d, const bg_style *ref, const double *rw, 
   classify(&g);
   find_parts(&g);
   state_signals(&g);
-  g.signalled = signal_ends(&g);
+  g.signalled = bg_signal_end_nodes(d);
   for (int v = 0; v < g.n; v++) g.placed[v] = !own_node(d, v); /* inside a box, a field's other port */
   int nh, *h = order_hubs(&g, &nh);
   assign_rows(&g, h, nh);

@@ -154,6 +154,15 @@ void bg_signal_states(bg_diagram_layout *d);
 int bg_signal_state(const bg_diagram_layout *d, int i);
 /* The node signal i is drawn from (element, integrator or bond head), or -1. */
 int bg_signal_from_node(const bg_diagram_layout *d, int i);
+/* Per node: whether a signal starts or ends there (bg_signal_from_node, its
+ * target's node), shown or not; free it. */
+unsigned char *bg_signal_end_nodes(const bg_diagram_layout *d);
+/* Per bond: how many path and loop lines are drawn beside it (the paths
+ * and loops shown, or all of them when the layout keeps their room), or
+ * NULL when none is; free it. */
+int *bg_layer_use(const bg_diagram_layout *d);
+/* Whether boxes a and b ({x0, y0, x1, y1}) overlap. */
+int bg_boxes_meet(const double a[4], const double b[4]);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */
 int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
 /* Whether node n is drawn (not an element hidden in a collapsed box). */
@@ -273,8 +282,8 @@ int bg_route_blocked_bonds(bg_diagram_layout *L);
  * each where its place at 45 degrees exists and is clear in L's own sizes;
  * returns how many. Call bg_geom_bonds again when it moved any.
  * bg_diagonal_any: whether L has a one-port that may move (its angle off
- * an axis; its room not asked): without one, no other style's layout is
- * needed to choose. */
+ * an axis; its room not asked): without one the pass is not run, nor
+ * another style's layout built to choose. */
 double *bg_diagonal_choose(const bg_diagram_layout *L);
 int bg_diagonal_one_ports(bg_diagram_layout *L, const double *chosen);
 int bg_diagonal_any(const bg_diagram_layout *L);

@@ -89,24 +89,20 @@ typedef struct moved_box {
   double b[4];
 } moved_box;
 
-static int boxes_meet(const double a[4], const double b[4]) {
-  return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
-}
-
 /* Whether the box b is clear of the nodes (but n and e) and legs the index
  * holds, of the one-ports moved so far, and inside the figure. */
 static int place_clear(bg_router *all, int n, int e, const double b[4], const moved_box *mv, int nmv) {
   const bg_diagram_layout *L = all->L;
   if (b[0] < all->fx0 || b[1] < all->fy0 || b[2] > all->fx1 || b[3] > all->fy1) return 0;
   for (int i = 0; i < nmv; i++)
-    if (boxes_meet(b, mv[i].b)) return 0;
+    if (bg_boxes_meet(b, mv[i].b)) return 0;
   bg_near_box(&all->ix, b[0], b[1], b[2], b[3], &all->nl);
   for (int j = 0; j < all->nl.n; j++) {
     int k = all->nl.k[j];
     if (k < L->nnode) {
       if (k == n || k == e || !bg_node_shown(L, k) || L->nw[k] <= 0) continue;
       double o[4] = {L->nx[k] - L->nw[k] / 2, L->ny[k] - L->nh[k] / 2, L->nx[k] + L->nw[k] / 2, L->ny[k] + L->nh[k] / 2};
-      if (boxes_meet(b, o)) return 0;
+      if (bg_boxes_meet(b, o)) return 0;
     } else if (seg_hits(all->ix.la[k - L->nnode], all->ix.lb[k - L->nnode], b[0], b[1], b[2], b[3])) {
       return 0;
     }
