@@ -146,6 +146,22 @@ int bg_boxes_meet(const double a[4], const double b[4]) {
   return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
 }
 
+int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1, dx = s[2] - s[0], dy = s[3] - s[1];
+  double p[4] = {-dx, dx, -dy, dy}, q[4] = {s[0] - x0, x1 - s[0], s[1] - y0, y1 - s[1]};
+  for (int k = 0; k < 4; k++) {
+    if (fabs(p[k]) < 1e-12) {
+      if (q[k] < 0) return 0;
+      continue;
+    }
+    double r = q[k] / p[k];
+    if (p[k] < 0 && r > t0) t0 = r;
+    if (p[k] > 0 && r < t1) t1 = r;
+    if (t0 > t1) return 0;
+  }
+  return 1;
+}
+
 /* The element a bond variable of a state expression refers to: the junction
  * whose common variable it is (X.f of a 1-junction is its first bond's flow),
  * else the one-port on the bond, else a two-port. The expression keeps only

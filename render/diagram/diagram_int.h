@@ -163,6 +163,8 @@ unsigned char *bg_signal_end_nodes(const bg_diagram_layout *d);
 int *bg_layer_use(const bg_diagram_layout *d);
 /* Whether boxes a and b ({x0, y0, x1, y1}) overlap. */
 int bg_boxes_meet(const double a[4], const double b[4]);
+/* Whether segment s[0],s[1] - s[2],s[3] meets box [x0,x1]×[y0,y1] (Liang-Barsky clipping). */
+int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1);
 /* Elements whose variables user state s integrates (at most cap, no repeats). */
 int bg_state_inputs(const bg_model *m, int s, int *out, int cap);
 /* Whether node n is drawn (not an element hidden in a collapsed box). */
@@ -303,8 +305,6 @@ void bg_obstacle_item(bg_diagram *d, int i);
 /* The same for a path or loop polyline: its segments remember their owner
  * (1, 2, ...); bond b's line is owned by -1 - b. */
 void bg_obstacle_owned(bg_diagram *d, int i, int owner);
-/* Whether segment s[0],s[1] - s[2],s[3] meets box [x0,x1]×[y0,y1] (Liang-Barsky clipping). */
-int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1);
 /* How many obstacles a w × h box centred at p touches (a box counts 10, a line 1). */
 int bg_place_score(bg_diagram *d, bg_vec p, double w, double h);
 /* The same, but it stops counting at limit and returns a value at or above

@@ -150,22 +150,6 @@ void bg_obstacle_owned(bg_diagram *d, int i, int owner) {
   }
 }
 
-int bg_seg_hits_box(const double *s, double x0, double y0, double x1, double y1) {
-  double t0 = 0, t1 = 1, dx = s[2] - s[0], dy = s[3] - s[1];
-  double p[4] = {-dx, dx, -dy, dy}, q[4] = {s[0] - x0, x1 - s[0], s[1] - y0, y1 - s[1]};
-  for (int k = 0; k < 4; k++) {
-    if (fabs(p[k]) < 1e-12) {
-      if (q[k] < 0) return 0;
-      continue;
-    }
-    double r = q[k] / p[k];
-    if (p[k] < 0 && r > t0) t0 = r;
-    if (p[k] > 0 && r < t1) t1 = r;
-    if (t0 > t1) return 0;
-  }
-  return 1;
-}
-
 /* What a w × h box centred at p touches: the score of bg_place_score, or
  * (owner > 0) how many segments of polylines other than owner's, or (owner
  * -1) how many boxes. */
