@@ -23,6 +23,8 @@ typedef struct bg_vec {
 /* Where a bond runs on the page. */
 typedef struct bg_bond_geom {
   bg_vec tail, head;   /* end points on the node boxes */
+  bg_vec ltail, lhead; /* the same before a causal stroke drew them back off a label's text
+                          (diagram_geom.c): text beside the bond goes along these */
   bg_vec tdir, hdir;   /* unit travel direction (tail → head) at each end */
   bg_vec mid, mdir;    /* middle point and direction there */
   int spladr, spln;    /* Graphviz spline points (page coordinates) or spln 0: straight */

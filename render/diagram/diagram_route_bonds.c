@@ -143,6 +143,7 @@ static int move_one_port(bg_router *all, const bg_model *m, int n, int o, int b,
   L->nx[e] = at.x, L->ny[e] = at.y;
   bg_bond_geom *g = &L->bg[best]; /* mirrored through c: every point, every direction turned */
   g->tail = bg_vsub(bg_vscale(c, 2), g->tail), g->head = bg_vsub(bg_vscale(c, 2), g->head);
+  g->ltail = bg_vsub(bg_vscale(c, 2), g->ltail), g->lhead = bg_vsub(bg_vscale(c, 2), g->lhead);
   g->mid = bg_vsub(bg_vscale(c, 2), g->mid);
   g->tdir = bg_vscale(g->tdir, -1), g->hdir = bg_vscale(g->hdir, -1), g->mdir = bg_vscale(g->mdir, -1);
   mv[(*nmv)++] = nb;

@@ -62,6 +62,7 @@ typedef struct fc_stats {
   int sig_on_layers;         /* signal × path or loop line pairs running side by side within 3 pt for more than 8 pt (fc_beside_layer) */
   int sig_beside;            /* signal pairs of different sources side by side within 5 pt for more than 20 pt (fc_sig_beside) */
   int sig_touch;             /* signal pairs of different sources where a corner or end of one lies on the other (fc_sig_touch) */
+  int stroke_text;           /* causal strokes whose bar comes within half a point of an element label's text (fc_stroke_text) */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -935,6 +936,22 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
   }
 }
 
+/* Whether causal stroke l's bar (its inked width) comes within half a
+ * point of an element label's text: a bond at 45 degrees reaching a label
+ * wider than tall a little way in from its corner put the bar's half
+ * towards the corner over the first glyph (issue 31). */
+static int fc_stroke_text(const fc_scene *f, const fc_line *l) {
+  double reach = l->width / 2 + 0.5;
+  for (int i = 0; i < f->nbox; i++) {
+    const fc_box *b = &f->box[i];
+    if (b->kind != FC_NODE || fc_bbox_box(l, b->x0, b->y0, b->x1, b->y1) >= reach || fc_line_box(l, b) >= reach)
+      continue;
+    if (fc_explain) printf("  stroke on text: bond %d's stroke %.2f pt from %s\n", l->id, fc_line_box(l, b), b->name);
+    return 1;
+  }
+  return 0;
+}
+
 static inline void fc_count(const bg_scene *s, fc_stats *st) {
   fc_scene f;
   fc_read(s, &f);
@@ -948,7 +965,7 @@ static inline void fc_count(const bg_scene *s, fc_stats *st) {
           if (fc_explain) printf("  crossing: bonds %d and %d\n", l->id, f.line[k].id);
         }
     }
-    if (l->kind == FC_STROKE) st->strokes++, st->touching += fc_touching(&f, l);
+    if (l->kind == FC_STROKE) st->strokes++, st->touching += fc_touching(&f, l), st->stroke_text += fc_stroke_text(&f, l);
   }
   for (int i = 0; i < f.nbox; i++) {
     const fc_box *b = &f.box[i];
