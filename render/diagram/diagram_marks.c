@@ -19,6 +19,9 @@ static void flash_path(bg_scene *s, bg_vec p, double size) {
   bg_scene_close(s);
 }
 
+#define RING_STEPS 6 /* rings 6 pt apart: a conflict text at most 30 pt beyond the nearest, by its flash */
+#define RING_DIRS 16
+
 static void draw_conflict(bg_diagram *d, int k) {
   const bg_analysis *a = d->a;
   const bg_style *st = &d->st;
@@ -42,7 +45,7 @@ static void draw_conflict(bg_diagram *d, int k) {
   bg_text_measure(st->font, size, text, &w, &h);
   w += 1, h *= 0.8;
   double extent = fabs(dir.x) * w / 2 + fabs(dir.y) * h / 2;
-  bg_vec cand[16];
+  bg_vec cand[16 + RING_STEPS * RING_DIRS];
   for (int i = 0; i < 4; i++) cand[i] = bg_vadd(p, bg_vscale(dir, 7 + extent + 5 * i));
   bg_vec side = bg_vleft(dir);
   for (int i = 0; i < 4; i++)
@@ -51,7 +54,16 @@ static void draw_conflict(bg_diagram *d, int k) {
   for (int i = 0; i < 4; i++) cand[8 + i] = bg_vadd(p, bg_vscale(dir, 27 + extent + 8 * i));
   for (int i = 0; i < 4; i++)
     cand[12 + i] = bg_vadd(p, bg_vscale(side, (i % 2 ? -1 : 1) * (6 + w / 2 + 8 * (i / 2))));
-  bg_vec q = cand[bg_place_best(d, cand, 16, w, h)];
+  /* none of those free: rings round the flash, nearest first, each
+   * starting from the free direction (issue 31: three held-out models'
+   * conflict texts lay over a bond beside the flash) */
+  for (int k = 0; k < RING_STEPS; k++)
+    for (int i = 0; i < RING_DIRS; i++) {
+      double a = atan2(dir.y, dir.x) + 2 * BG_PI * ((i + 1) / 2) * (i % 2 ? 1 : -1) / RING_DIRS;
+      bg_vec u = bg_v(cos(a), sin(a));
+      cand[16 + k * RING_DIRS + i] = bg_vadd(p, bg_vscale(u, 7 + fabs(u.x) * w / 2 + fabs(u.y) * h / 2 + 6 * k));
+    }
+  bg_vec q = cand[bg_place_best(d, cand, 16 + RING_STEPS * RING_DIRS, w, h)];
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind) bg_text_halo(d, text, q, size);
   bg_scene_text(&d->scene, text, q.x, q.y, size, 0.5, 0.5, bg_diagram_ink(d, st->conflict, hot), role);
 }

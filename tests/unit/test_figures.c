@@ -1718,6 +1718,25 @@ static void test_strokes_off_text(void) {
   bg_sb_free(&src);
 }
 
+/* Issue 31: a conflict's text is placed where nothing is, by its flash:
+ * where none of the sixteen places beside the flash was free, it went to
+ * the least crowded of them, over a bond (two held-out models, seeds 60039
+ * and 61001, in the default style); rings round the flash, nearest first,
+ * now find a free place (diagram_marks.c). Every label of the two is clear
+ * of lines and other labels in every style with the default layers (with
+ * every layer, path lines everywhere: not held). */
+static void test_conflict_text_free(void) {
+  int verbose = figures_verbose();
+  static const char *const files[] = {"tests/data/figures/conflict_text_a.bg", "tests/data/figures/conflict_text_b.bg"};
+  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+    fc_stats tot[3][2] = {{{0}}};
+    if (file_measure(files[i], files[i], tot, verbose)) continue;
+    for (int si = 0; si < 3; si++)
+      BG_T_REPORT(tot[si][0].over == 0 && tot[si][0].labels > 0, "%s %s: %d of %d labels over a line or label (0)",
+                  files[i], styles[si], tot[si][0].over, tot[si][0].labels);
+  }
+}
+
 static void test_diagonal_beside_label(void) {
   for (int c = 0; c < 2; c++) {
     fx f;
@@ -2905,6 +2924,7 @@ int main(void) {
   RUN(test_corners_for_bonds);
   RUN(test_one_ports_at_45);
   RUN(test_strokes_off_text);
+  RUN(test_conflict_text_free);
   RUN(test_fans);
   RUN(test_arrows_at_labels);
   RUN(test_signals_clear_of_layers);
