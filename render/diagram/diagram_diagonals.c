@@ -189,10 +189,10 @@ int bg_diagonal_any(const bg_diagram_layout *L) {
  * moves along the longer axis towards its junction, and out along the
  * shorter one where its label, its bond or its number need more room; out
  * by OUT_LEAST at least, and `further` pt more where it moves out (0
- * where it stays level with its row: no place). Choosing (at 0), so; else as the reference
- * style's layout chose (at: its share of the old distance along the
- * longer axis, negative where it stayed level with its row or column)
- * where this style's sizes allow it. Moved out by 2.8 pt in one style and
+ * where it stays level with its row: no such place). Choosing (at 0),
+ * so; else as the reference style's layout chose (at: its share of the
+ * old distance along the longer axis, negative where it stayed level with
+ * its row or column) where this style's sizes allow it. Moved out by 2.8 pt in one style and
  * not at all in another, a label came to lie above a label of its row in
  * one style and below it in the other; moved by as much as each style's
  * sizes allowed, it came to lie left of a label of another row in one

@@ -58,13 +58,13 @@ static bg_vec barb_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec d
   return isfinite(back) ? bg_vsub(end, bg_vscale(dir, back + 0.5 * d->st.line_width)) : end;
 }
 
-/* Bond end `end` at element n's label (dir: into its box) drawn back along the
- * bond, an eighth of a line width at a time and by at most `most`, until
- * the causal stroke's bar centred there keeps 0.6 pt off the label's text
- * (the box less its padding): a bond at 45 degrees
- * reaches a label wider than tall through its top or bottom edge a little
- * way in from the corner, and the bar's half towards the corner came over
- * the first glyph (`I : L15` in tests/data/figures/diagonals_b.bg; a
+/* Bond end `end` at element n's label (dir: into its box) drawn back
+ * along the bond, an eighth of a line width at a time and by at most
+ * `most`, until the causal stroke's bar centred there keeps 0.6 pt off the
+ * label's text (the box less its padding): a bond at 45 degrees reaches a
+ * label wider than tall through its top or bottom edge a little way in
+ * from the corner, and the bar's half towards the corner came over the
+ * first glyph (`I : L15` in tests/data/figures/diagonals_b.bg; a
  * 1 000-node tree had 61 such bars). Where the bond meets the edge
  * squarely the bar lies along the edge: nothing moves. */
 static bg_vec stroke_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec dir, double most) {

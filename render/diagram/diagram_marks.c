@@ -55,13 +55,13 @@ static void draw_conflict(bg_diagram *d, int k) {
   for (int i = 0; i < 4; i++)
     cand[12 + i] = bg_vadd(p, bg_vscale(side, (i % 2 ? -1 : 1) * (6 + w / 2 + 8 * (i / 2))));
   /* none of those free: rings round the flash, nearest first, each
-   * starting from the free direction (issue 31: three held-out models'
+   * starting from the free direction (issue 31: two held-out models'
    * conflict texts lay over a bond beside the flash) */
-  for (int k = 0; k < RING_STEPS; k++)
+  for (int ring = 0; ring < RING_STEPS; ring++)
     for (int i = 0; i < RING_DIRS; i++) {
       double a = atan2(dir.y, dir.x) + 2 * BG_PI * ((i + 1) / 2) * (i % 2 ? 1 : -1) / RING_DIRS;
       bg_vec u = bg_v(cos(a), sin(a));
-      cand[16 + k * RING_DIRS + i] = bg_vadd(p, bg_vscale(u, 7 + fabs(u.x) * w / 2 + fabs(u.y) * h / 2 + 6 * k));
+      cand[16 + ring * RING_DIRS + i] = bg_vadd(p, bg_vscale(u, 7 + fabs(u.x) * w / 2 + fabs(u.y) * h / 2 + 6 * ring));
     }
   bg_vec q = cand[bg_place_best(d, cand, 16 + RING_STEPS * RING_DIRS, w, h)];
   if (d->show & (BG_SHOW_PATHS | BG_SHOW_LOOPS) || d->o.highlight_kind) bg_text_halo(d, text, q, size);
