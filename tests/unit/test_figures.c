@@ -394,7 +394,7 @@ static const char *const show_names[] = {"default", "all"};
  * at a corner, an end or an arrowhead) are 0 in every example. The last
  * (fc_stroke_text: a causal stroke's bar within half a point of an element
  * label's text) 1 in every style and layer set -> 0: series_conductances'
- * bond 3 meets R : Rb 30 degrees off the horizontal a little way in from
+ * bond 3 met R : Rb 30 degrees off the horizontal a little way in from
  * the box's corner (stroke_clear, diagram_geom.c, draws its end back).
  * Slanted 1 -> 0 with the default layers, forced diagonals 0 -> 1: that
  * R : Rb moves to 45 degrees, 4 pt further out than the nearest place
