@@ -192,12 +192,12 @@ int bg_diagonal_any(const bg_diagram_layout *L) {
  * where it stays level with its row: no such place). Choosing (at 0),
  * so; else as the reference style's layout chose (at: its share of the
  * old distance along the longer axis, negative where it stayed level with
- * its row or column) where this style's sizes allow it. Moved out by 2.8 pt in one style and
- * not at all in another, a label came to lie above a label of its row in
- * one style and below it in the other; moved by as much as each style's
- * sizes allowed, it came to lie left of a label of another row in one
- * style and right of it in another (a 1 400-node tree: 909 label pairs in
- * another order in slides). */
+ * its row or column) where this style's sizes allow it. Moved out by
+ * 2.8 pt in one style and not at all in another, a label came to lie
+ * above a label of its row in one style and below it in the other; moved
+ * by as much as each style's sizes allowed, it came to lie left of a label
+ * of another row in one style and right of it in another (a 1 400-node
+ * tree: 909 label pairs in another order in slides). */
 static int diagonal_place(const bg_diagram_layout *L, const int *layered, const unsigned char *signalled,
                           int b, double at, double further, slide *sl) {
   int w, v;

@@ -87,7 +87,8 @@ static bg_vec stroke_clear(const bg_diagram_layout *d, int n, bg_vec end, bg_vec
   return end; /* no room on its bond: as it was */
 }
 
-/* The length of bond b's route between ltail and lhead. */
+/* The length of bond b's route between ltail and lhead (what text beside
+ * it is placed along, bg_geom_along). */
 static double label_length(const bg_diagram_layout *d, int b) {
   const bg_bond_geom *g = &d->bg[b];
   double len = 0;
@@ -126,20 +127,17 @@ static void route_geom(const bg_diagram_layout *d, int b, bg_bond_geom *g) {
   g->mid = bg_geom_along(d, b, 0.5, &g->mdir);
   /* never below 2.5 half arrows, the length the junction's end circle
    * keeps a one-port's bond (junction_radii, from the label's end) */
+  int at_h = stroke_at_label(d, b, h, 1), at_t = stroke_at_label(d, b, t, 0);
+  if (!at_h && !at_t) return;
   double spare = label_length(d, b) - 2.5 * 7 * d->st.line_width - 0.1; /* 0.1: the SVG's rounding */
-  if (stroke_at_label(d, b, h, 1)) g->head = stroke_clear(d, h, g->head, g->hdir, spare);
-  if (stroke_at_label(d, b, t, 0)) g->tail = stroke_clear(d, t, g->tail, bg_vscale(g->tdir, -1), spare);
+  if (at_h) g->head = stroke_clear(d, h, g->head, g->hdir, spare);
+  if (at_t) g->tail = stroke_clear(d, t, g->tail, bg_vscale(g->tdir, -1), spare);
 }
 
 bg_vec bg_geom_along(const bg_diagram_layout *d, int b, double t, bg_vec *dir) {
   const bg_bond_geom *g = &d->bg[b];
   int n = g->bendn;
-  double len = 0, want;
-  for (int i = 0; i <= n; i++) {
-    bg_vec p = i == 0 ? g->ltail : route_pt(d, b, i), q = i == n ? g->lhead : route_pt(d, b, i + 1);
-    len += bg_vlen(bg_vsub(q, p));
-  }
-  want = t * len;
+  double want = t * label_length(d, b);
   for (int i = 0; i <= n; i++) {
     bg_vec p = i == 0 ? g->ltail : route_pt(d, b, i), q = i == n ? g->lhead : route_pt(d, b, i + 1);
     double l = bg_vlen(bg_vsub(q, p));

@@ -1616,7 +1616,6 @@ static void instance_centres(grid *g) {
   free(cnt);
 }
 
-/* Per node: whether a signal starts or ends there. */
 /* The gaps between neighbouring grid columns and between rows (to_points):
  * at least 2.5 half arrows (7 line widths each) and the junction's end
  * circle, so that thick lines (slides) do not leave one-port bonds hardly
