@@ -63,6 +63,8 @@ typedef struct fc_stats {
   int sig_beside;            /* signal pairs of different sources side by side within 5 pt for more than 20 pt (fc_sig_beside) */
   int sig_touch;             /* signal pairs of different sources where a corner or end of one lies on the other (fc_sig_touch) */
   int stroke_text;           /* causal strokes whose bar comes within half a point of an element label's text (fc_stroke_text) */
+  int bond_at_ends;          /* bond pairs where one passes between the other's end and its node (fc_end_gap):
+                                a crossing hidden in the gap, read as a T or as crossing among the half arrow */
 } fc_stats;
 
 enum { FC_BOND, FC_SIGNAL, FC_OVERLAY, FC_STROKE, FC_LEADER, FC_FRAME, FC_OTHER }; /* line kinds */
@@ -479,6 +481,20 @@ static int fc_body(const fc_line *l) { return l->nseg - l->barb; }
  * than 0.35 of its length (its middle is the best a crossing can do), or
  * past it, within FC_END_GAP, between the bond and its node (*at_end only). */
 #define FC_END_GAP 6.0 /* pt past a bond's end: the gap to its node */
+/* Whether one of the first nseg segments of line l crosses the stretch
+ * past an end of bond b, from 0.5 to FC_END_GAP pt on towards its node. */
+static int fc_end_gap(const fc_line *l, int nseg, const fc_line *b) {
+  for (int e = 0; e < 2 && fc_body(b) > 0; e++) {
+    const fc_seg *v = &b->seg[e ? fc_body(b) - 1 : 0];
+    double len = fc_seg_len(v), ex = e ? v->x1 : v->x0, ey = e ? v->y1 : v->y0;
+    if (len <= 0) continue;
+    double dx = (e ? v->x1 - v->x0 : v->x0 - v->x1) / len, dy = (e ? v->y1 - v->y0 : v->y0 - v->y1) / len;
+    fc_seg gap = {ex + 0.5 * dx, ey + 0.5 * dy, ex + FC_END_GAP * dx, ey + FC_END_GAP * dy};
+    for (int p = 0; p < nseg; p++)
+      if (fc_cross(&l->seg[p], &gap)) return 1;
+  }
+  return 0;
+}
 static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique, int *at_end) {
   int n = 0;
   double total = 0;
@@ -503,17 +519,9 @@ static int fc_sig_cross(const fc_line *l, const fc_line *b, int *oblique, int *a
       }
   }
   /* past an end, between the bond and its node: read as crossing there */
-  for (int e = 0; e < 2 && fc_body(b) > 0; e++) {
-    const fc_seg *v = &b->seg[e ? fc_body(b) - 1 : 0];
-    double len = fc_seg_len(v), ex = e ? v->x1 : v->x0, ey = e ? v->y1 : v->y0;
-    if (len <= 0) continue;
-    double dx = (e ? v->x1 - v->x0 : v->x0 - v->x1) / len, dy = (e ? v->y1 - v->y0 : v->y0 - v->y1) / len;
-    fc_seg gap = {ex + 0.5 * dx, ey + 0.5 * dy, ex + FC_END_GAP * dx, ey + FC_END_GAP * dy};
-    for (int p = 0; p < l->nseg; p++)
-      if (fc_cross(&l->seg[p], &gap)) {
-        *at_end = 1;
-        if (fc_explain) printf("  signal %s passes between bond %d's end and its node\n", l->name, b->id);
-      }
+  if (fc_end_gap(l, l->nseg, b)) {
+    *at_end = 1;
+    if (fc_explain) printf("  signal %s passes between bond %d's end and its node\n", l->name, b->id);
   }
   return n;
 }
@@ -873,6 +881,10 @@ static void fc_count_31(const bg_scene *s, const fc_scene *f, fc_stats *st) {
       if (l->kind == FC_BOND && m->kind == FC_BOND && k != j && fc_false_tee(l, m)) {
         st->false_tees++;
         if (fc_explain) printf("  false T: bond %d ends on bond %d\n", l->id, m->id);
+      }
+      if (l->kind == FC_BOND && m->kind == FC_BOND && k != j && fc_end_gap(l, fc_body(l), m)) {
+        st->bond_at_ends++;
+        if (fc_explain) printf("  bond %d passes between bond %d's end and its node\n", l->id, m->id);
       }
       if (k > j && l->kind == FC_SIGNAL && m->kind == FC_SIGNAL && fc_sig_beside(l, m)) st->sig_beside++;
       if (k > j && l->kind == FC_SIGNAL && m->kind == FC_SIGNAL && fc_sig_touch(l, m)) st->sig_touch++;

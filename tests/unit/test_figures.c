@@ -258,6 +258,26 @@ static void test_checker_tips(void) {
   bg_scene_free(&s);
 }
 
+/* fc_end_gap: a bond whose leg runs through the few points between another
+ * bond's end and its node (a junction's end circle) hides a crossing there;
+ * one crossing beyond the end, or away from the ends, is not such. */
+static void test_checker_end_gap(void) {
+  bg_scene s;
+  bg_scene_init(&s, "DejaVu Sans");
+  bond(&s, 1, 0, 0, 100, 0);     /* its head at x 100, its node a few points on */
+  bond(&s, 2, 103, -30, 103, 30); /* down through that gap */
+  bond(&s, 3, 0, 100, 100, 100);
+  bond(&s, 4, 120, 70, 120, 130); /* 20 pt past bond 3's head: clear of it */
+  bond(&s, 5, 0, 200, 100, 200);
+  bond(&s, 6, 50, 170, 50, 230);  /* across bond 5's middle: a crossing, seen */
+  fc_stats st = {0};
+  fc_count(&s, &st);
+  INT_EQ(st.bond_at_ends, 1);
+  INT_EQ(st.crossings, 1);
+  INT_EQ(st.false_tees, 0);
+  bg_scene_free(&s);
+}
+
 static void test_checker_31(void) {
   bg_scene s;
   bg_scene_init(&s, "DejaVu Sans");
@@ -400,12 +420,12 @@ static const char *const show_names[] = {"default", "all"};
  * R : Rb moves to 45 degrees, 4 pt further out than the nearest place
  * (which met R : Ra's label; diagram_diagonals.c, FURTHER_STEP). */
 static const fc_stats limits[3][2] = {
-    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{136, 0, 136, 0, 136, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 283, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {136, 1, 136, 0, 220, 0, 134, 0, 84, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 584, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The same for the generated models (test_generated), as measured (the
@@ -517,26 +537,26 @@ static const fc_stats limits[3][2] = {
  * stroke of reactions12's and reactions20's feed on its label's text.
  * docs/drawing.md has the tables before and after. */
 static const fc_stats limits_generated[3][2] = {
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 61, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 66, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 62, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 61, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 66, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 63, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 62, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 38, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{1384, 6, 1384, 0, 1398, 0, 1384, 0, 0, 0, 0, 0, 0, 6, 0, 64, 0, 0, 0, 0, 14, 0, 0, 2767, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {1384, 16, 1384, 0, 2311, 0, 1384, 0, 913, 0, 0, 0, 0, 6, 0, 73, 0, 0, 0, 0, 14, 0, 0, 4344, 0, 0, 36, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 static void print_row(const char *what, const fc_stats *t) {
-  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
+  printf("%-34s %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d | %4d %4d %4d %4d %4d %4d %4d %4d %5d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d %4d\n",
          what, t->bonds, t->slanted, t->strokes, t->touching, t->labels, t->over, t->numbers, t->astray, t->tags,
          t->tags_far, t->crowded, t->through, t->lines_through, t->crossings, t->short_bonds, t->sig_cross,
          t->sig_oblique, t->overlaps, t->false_tees, t->tiny_bonds, t->frames, t->frame_cross, t->foreign, t->texts,
          t->small_text, t->arrangement, t->layer_oblique, t->spine_bent, t->sig_through, t->bond_overlaps,
          t->bare_branches, t->adjacent, t->avoidable, t->diagonals, t->nodes_overlap, t->tips_beside, t->steps, t->on_frames, t->sig_at_ends, t->sig_on_layers,
-         t->sig_beside, t->sig_touch, t->stroke_text);
+         t->sig_beside, t->sig_touch, t->stroke_text, t->bond_at_ends);
 }
 
 static const char *const header =
-    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step onfr send slay sibs stch sttx";
+    "bond slnt strk touc labl over numb astr tags tfar crwd thru lthr cros shrt | sigx sigo ovlp ftee tiny frms frmx frgn texts smll arrg lobl spin sthr bovl brch adjx avox diag novl tipb step onfr send slay sibs stch sttx bgap";
 
 /* Each style's and layer set's totals printed and held to their limits,
  * column by column. */
@@ -2819,12 +2839,12 @@ static void test_signals_face(void) {
  * a signal leaves a junction's corner on a diagonal past the lines
  * (ring_escape, diagram_route.c). */
 static const fc_stats limits_pages[3][2] = {
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
-    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
+    {{237, 0, 237, 0, 247, 0, 237, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 527, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+     {237, 1, 237, 0, 381, 0, 237, 0, 134, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10, 0, 0, 1016, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}},
 };
 
 /* The page models with a junction of more than eight bonds (the gallery's
@@ -2911,6 +2931,7 @@ static void test_pages(void) {
 
 int main(void) {
   RUN(test_checker);
+  RUN(test_checker_end_gap);
   RUN(test_checker_31);
   RUN(test_checker_tips);
   RUN(test_checker_adjacent);
