@@ -17,7 +17,7 @@ LEVELS = [
     ["layout"],                                                # Graphviz
     ["diagram_grid", "diagram_layers", "diagram_marks", "diagram_signals", "diagram_parts",
      "diagram_fields", "diagram_frames", "diagram_dot", "diagram_tips", "diagram_bonds",
-     "diagram_route_bonds", "diagram_diagonals"],  # passes
+     "diagram_route_bonds", "diagram_diagonals", "diagram_restyle"],  # passes
     ["diagram"],                                               # the driver
     ["render", "render_versions"],                             # the front door
 ]

@@ -316,6 +316,7 @@ static int run_layout(bg_diagram_layout *d, bg_diags *dg) {
     if (rows) scale_rows(d, gw, gh);
     if (grid) bg_grid_place(d, &ref, gw, gh, tree);
     bg_parts_spread(d);
+    d->ref_sized = grid || rows;
   }
   if (refsized) free(gw), free(gh);
   free(root);
@@ -493,14 +494,73 @@ static void draw_all(bg_diagram *d) {
 }
 
 /* Nodes measured and laid out, where the bonds run. */
+/* What bg_route_blocked_bonds did to a reference layout d, kept for the
+ * styles that follow it (bg_restyle_routes): the bonds it drew otherwise
+ * than before (bends: d's corners before it; they are freed here) and the
+ * nodes it moved (x, y: their centres before: the one-ports it mirrored). */
+static void keep_routes(bg_diagram_layout *d, const bg_layout *bends, const double *x, const double *y) {
+  const bg_layout *now = &d->lay;
+  int nb = d->m->nbond;
+  d->rerouted = bg_arena_alloc(&d->arena, (size_t)nb + 1);
+  d->mirrored = bg_arena_alloc(&d->arena, (size_t)d->nnode + 1);
+  memset(d->rerouted, 0, (size_t)nb + 1), memset(d->mirrored, 0, (size_t)d->nnode + 1);
+  for (int b = 0; b < nb; b++) {
+    int before = bends->bendn ? bends->bendn[b] : 0, after = now->bendn ? now->bendn[b] : 0, apart = before != after;
+    for (int k = 0; !apart && k < after; k++)
+      apart = bends->bendx[bends->bendadr[b] + k] != now->bendx[now->bendadr[b] + k] ||
+              bends->bendy[bends->bendadr[b] + k] != now->bendy[now->bendadr[b] + k];
+    d->rerouted[b] = (unsigned char)apart;
+  }
+  for (int v = 0; v < d->nnode; v++) d->mirrored[v] = (unsigned char)(x[v] != d->nx[v] || y[v] != d->ny[v]);
+}
+
+/* A copy of d's corners and centres before the bond router (keep_routes). */
+static void routes_before(const bg_diagram_layout *d, bg_layout *bends, double **x, double **y) {
+  const bg_layout *l = &d->lay;
+  int nb = d->m->nbond, total = l->bendn ? l->nbend : 0;
+  memset(bends, 0, sizeof *bends);
+  if (l->bendn) {
+    bends->bendadr = bg_xmalloc(((size_t)nb + 1) * sizeof(int)), bends->bendn = bg_xmalloc(((size_t)nb + 1) * sizeof(int));
+    bends->bendx = bg_xmalloc(((size_t)total + 1) * sizeof(double)), bends->bendy = bg_xmalloc(((size_t)total + 1) * sizeof(double));
+    memcpy(bends->bendadr, l->bendadr, (size_t)nb * sizeof(int)), memcpy(bends->bendn, l->bendn, (size_t)nb * sizeof(int));
+    memcpy(bends->bendx, l->bendx, (size_t)total * sizeof(double)), memcpy(bends->bendy, l->bendy, (size_t)total * sizeof(double));
+  }
+  *x = bg_xmalloc(((size_t)d->nnode + 1) * sizeof(double)), *y = bg_xmalloc(((size_t)d->nnode + 1) * sizeof(double));
+  memcpy(*x, d->nx, (size_t)d->nnode * sizeof(double)), memcpy(*y, d->ny, (size_t)d->nnode * sizeof(double));
+}
+
+/* Whether layout d follows its reference's routes: both laid out in the
+ * reference boxes, the same nodes and bonds. */
+static int follows_reference(const bg_diagram_layout *d) {
+  const bg_diagram_layout *R = d->ref;
+  return R && R->rerouted && R->ref_sized && d->ref_sized && R->nnode == d->nnode;
+}
+
 static int lay_out_bonds(bg_diagram_layout *d, bg_diags *dg) {
   if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);
   bg_fields_prepare(d);
   if (run_layout(d, dg) != 0) return -1;
   bg_geom_bonds(d);
-  /* a straight bond never through another node's label (issue 31) */
+  /* a straight bond never through another node's label (issue 31); in a
+   * style that follows the reference style's layout, where it ran there:
+   * routed again in this style's sizes, a route took another corner of its
+   * junction and pushed a one-port to the other side (issue 31: 48 label
+   * pairs of 100 held-out models in another order in print or slides) */
+  if (follows_reference(d)) {
+    bg_restyle_routes(d, d->ref);
+    bg_geom_bonds(d);
+    return 0;
+  }
+  bg_layout bends;
+  double *x = NULL, *y = NULL;
+  int keep = d->keeps_routes && d->ref_sized;
+  if (keep) routes_before(d, &bends, &x, &y);
   if (bg_route_blocked_bonds(d)) bg_geom_bonds(d);
+  if (keep) {
+    keep_routes(d, &bends, x, y);
+    free(bends.bendadr), free(bends.bendn), free(bends.bendx), free(bends.bendy), free(x), free(y);
+  }
   return 0;
 }
 
@@ -518,38 +578,51 @@ static int reference_sizes(const bg_style *s) {
 
 static void layout_release(bg_diagram_layout *L);
 
-/* The one-ports that move to 45 degrees (bg_diagonal_choose), chosen in
- * the reference style's layout: chosen in each style's own, where its
- * larger labels left no room in one style and did in another, a one-port
- * moved in the default style and stayed in its column in slides (issue
- * 31: one arrangement for every style). NULL: d's own sizes are the
- * reference's. */
-static double *reference_diagonals(const bg_diagram_layout *d) {
+/* The reference style's layout of d's model (d's own sizes are not the
+ * reference's), laid out as far as the bond router, keeping what the router
+ * did; NULL where d's sizes are the reference's, or it failed. A style
+ * then follows it: which one-ports the grid pass pulls in towards their
+ * hubs, where the routed bonds run (lay_out_bonds), which one-ports move
+ * to 45 degrees (lay_out): each decided in the reference's sizes, so a
+ * figure keeps its arrangement in every style (issue 31). */
+static bg_diagram_layout *reference_layout(const bg_diagram_layout *d) {
   if (reference_sizes(&d->st)) return NULL;
   bg_diagram_layout *R = bg_xcalloc(1, sizeof *R);
   R->refs = 1;
   R->m = d->m, R->a = d->a, R->o = d->o, R->show = d->show;
   R->o.log = NULL; /* its progress is d's */
+  R->keeps_routes = 1;
   bg_style_default(&R->st);
   bg_diags quiet;
   bg_diags_init(&quiet, NULL, NULL, 0);
-  double *chosen = lay_out_bonds(R, &quiet) == 0 ? bg_diagonal_choose(R)
-                                                  : bg_xcalloc((size_t)d->m->nbond + 1, sizeof *chosen);
+  int rc = lay_out_bonds(R, &quiet);
   bg_diags_free(&quiet);
+  if (rc == 0) return R;
   layout_release(R);
-  return chosen;
+  return NULL;
 }
 
 /* The layout stage: nodes measured and laid out, where the bonds run, and
  * the one-ports at 45 degrees where nothing is in the way now that it is
- * known (diagram_diagonals.c). */
+ * known (diagram_diagonals.c); in the reference style's layout's steps
+ * where d's sizes are not the reference's. */
 static int lay_out(bg_diagram_layout *d, bg_diags *dg) {
-  if (lay_out_bonds(d, dg) != 0) return -1;
-  if (!bg_diagonal_any(d)) return 0; /* no one-port that may move: no index, no second layout */
-  double *chosen = reference_diagonals(d);
-  if (bg_diagonal_one_ports(d, chosen)) bg_geom_bonds(d);
-  free(chosen);
-  return 0;
+  bg_diagram_layout *R = reference_layout(d);
+  d->ref = R;
+  int rc = lay_out_bonds(d, dg);
+  if (rc == 0 && bg_diagonal_any(d)) { /* no one-port that may move: no index */
+    /* chosen in the reference's layout: chosen in each style's own, where
+     * its larger labels left no room in one style and did in another, a
+     * one-port moved in the default style and stayed in its column in
+     * slides. NULL: d's own sizes are the reference's */
+    double *chosen = R ? bg_diagonal_choose(R)
+                       : reference_sizes(&d->st) ? NULL : bg_xcalloc((size_t)d->m->nbond + 1, sizeof *chosen);
+    if (bg_diagonal_one_ports(d, chosen)) bg_geom_bonds(d);
+    free(chosen);
+  }
+  d->ref = NULL;
+  layout_release(R);
+  return rc;
 }
 
 /* The scene stage: what the highlight touches, then everything drawn. */

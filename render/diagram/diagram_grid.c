@@ -2065,13 +2065,19 @@ static void lines_meeting(const double *c, int n, double a, double b, int *lo, i
  * or ring. Only there: elsewhere a row's one-ports stay in line. */
 static void pull_in(grid *g, double xgap, double ygap, const double *cx, const double *cy, int x0, int x1, int y0, int y1) {
   bg_diagram_layout *d = g->d;
+  /* in a style that follows the reference style's layout, those it pulled
+   * in and no other, each where its box keeps a quarter of a gap off the
+   * others: with half a gap, slides' wider labels kept a capacitor three
+   * rows below its hub that the default style drew beside its neighbour
+   * (issue 31: one arrangement in every style) */
+  const unsigned char *follow = d->ref && d->ref->pulled && d->ref->nnode == d->nnode ? d->ref->pulled : NULL;
   int nr = 0, *rings = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
   for (int v = 0; v < g->n; v++)
     if (g->ring_w[v] > 0) rings[nr++] = v;
   for (int w = 0; w < g->n; w++) {
     if (!own_node(d, w) || g->hub[w] || g->deg[w] != 1 || g->orbit[w] >= 0) continue;
     int v = other(g, g->adj[g->adr[w]], w), dx = g->gx[w] - g->gx[v], dy = g->gy[w] - g->gy[v], pushed = 0;
-    if (!g->hub[v] || g->ring_w[v] > 0 || abs(dx) > 1 || abs(dy) > 1 || (!dx && !dy)) continue;
+    if (!g->hub[v] || g->ring_w[v] > 0 || abs(dx) > 1 || abs(dy) > 1 || (!dx && !dy) || (follow && !follow[w])) continue;
     for (int k = 0; k < nr; k++) pushed |= (dx && g->gx[rings[k]] == g->gx[v]) || (dy && g->gy[rings[k]] == g->gy[v]);
     if (!pushed) continue;
     double x = dx ? d->nx[v] + dx * (d->nw[v] / 2 + xgap + d->nw[w] / 2) : d->nx[w];
@@ -2081,7 +2087,7 @@ static void pull_in(grid *g, double xgap, double ygap, const double *cx, const d
      * the cell, and whether the box fits there depends on the style */
     int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5 && fabs(x - d->nx[v]) <= fabs(d->nx[w] - d->nx[v]) + 0.01 &&
                 fabs(y - d->ny[v]) <= fabs(d->ny[w] - d->ny[v]) + 0.01;
-    double room = fmin(xgap, ygap) / 2; /* to any other box: half a gap */
+    double room = fmin(xgap, ygap) / (follow ? 4 : 2); /* to any other box: half a gap */
     /* the boxes it could meet: the rings (a ring's one-ports inside its
      * box), and the nodes of the cells near the place (every node was
      * tried: quadratic in a large forest with rings) */
@@ -2100,7 +2106,7 @@ static void pull_in(grid *g, double xgap, double ygap, const double *cx, const d
         clear = fabs(x - d->nx[u]) >= d->nw[w] / 2 + d->nw[u] / 2 + room ||
                 fabs(y - d->ny[u]) >= d->nh[w] / 2 + d->nh[u] / 2 + room;
       }
-    if (clear) d->nx[w] = x, d->ny[w] = y;
+    if (clear) d->nx[w] = x, d->ny[w] = y, d->pulled[w] = 1;
   }
   free(rings);
 }
@@ -2127,6 +2133,8 @@ static void to_points(grid *g) {
     if (own_node(d, v)) d->nx[v] = cx[g->gx[v] - x0], d->ny[v] = cy[g->gy[v] - y0];
   for (int v = 0; g->orbit && v < g->n; v++)
     if (g->orbit[v] >= 0) d->nx[v] += g->ring_x[v], d->ny[v] += g->ring_y[v];
+  d->pulled = bg_arena_alloc(&d->arena, (size_t)d->nnode + 1);
+  memset(d->pulled, 0, (size_t)d->nnode + 1);
   if (g->orbit) pull_in(g, xgap, ygap, cx, cy, x0, x1, y0, y1);
   for (int v = 0; v < g->n; v++) /* a field's other ports where their field is (boxes: bg_parts_spread) */
     if (!own_node(d, v)) d->nx[v] = d->nx[drawn_by(d, v)], d->ny[v] = d->ny[drawn_by(d, v)];

@@ -70,6 +70,15 @@ typedef struct bg_diagram_layout {
   double *bjr;               /* per bond end (2 b + 1: head): radius it leaves its junction at, else 0 */
   const double *jr_least;    /* per node: the least radius of a junction's end circle (the one
                                 the bonds were routed for, bg_diagonal_one_ports), or NULL */
+  /* One arrangement in every style (issue 31): a style whose sizes are not
+   * the reference style's follows the reference style's layout of the same
+   * model where the grid pass or rows laid both out in the reference boxes */
+  const struct bg_diagram_layout *ref; /* that layout while this one is laid out, or NULL */
+  int ref_sized;             /* laid out in the reference style's boxes (the grid pass, rows) */
+  int keeps_routes;          /* a reference: keeps what the passes below decided */
+  unsigned char *pulled;     /* per node: moved back towards its hub (the grid pass's pull_in) */
+  unsigned char *rerouted;   /* per bond: drawn otherwise by bg_route_blocked_bonds (a reference) */
+  unsigned char *mirrored;   /* per node: a one-port mirrored through its hub there (a reference) */
   bg_arena arena;
 } bg_diagram_layout;
 
@@ -111,7 +120,8 @@ struct bg_diagram {
  *           placement; signal routes (diagram_route_int.h); detours round one-ports
  *   passes: diagram_grid.c (layout stage), diagram_bonds.c, diagram_layers.c, diagram_marks.c,
  *           diagram_signals.c, diagram_parts.c, diagram_fields.c,
- *           diagram_frames.c, diagram_dot.c, diagram_tips.c, diagram_route_bonds.c
+ *           diagram_frames.c, diagram_dot.c, diagram_tips.c, diagram_route_bonds.c,
+ *           diagram_diagonals.c, diagram_restyle.c
  *   diagram.c  the driver: layout stage, then the scene stage calling each pass
  *   render.c   the front door (render.h) */
 
@@ -230,11 +240,14 @@ void bg_geom_arrowhead(bg_scene *s, bg_vec p, bg_vec dir, double len, double wid
 
 /* Orthogonal signal routes (diagram_route.c, its insides in diagram_route_*.c): a router holds the layout's
  * nodes and bond legs in a grid of cells and the routes given so far; the
- * legs of bonds marked in skip (nullable) are left out, as if not drawn;
- * for signals (not bonds) each bond reaches its nodes' boxes and a crossing
- * among its half arrow or stroke costs more (COST_AT_END). */
+ * legs of bonds marked in skip (nullable) are left out, as if not drawn.
+ * ends_clear (the signals, and the bonds the bond router routes again):
+ * each bond reaches its nodes' boxes (a line passing between a bond's end
+ * and its node crosses the bond there, hidden in the gap) and a crossing
+ * among its half arrow or stroke costs more (COST_AT_END); 0: the bonds as
+ * drawn (the checks round the bond router). */
 typedef struct bg_router bg_router;
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int signals);
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int ends_clear);
 /* The route from node from_node (or, when it is < 0, from the middle of
  * bond from_bond or near it) to node `to`: a polyline of horizontal and
  * vertical legs into pts (at most cap points), the first on the source,
@@ -276,6 +289,13 @@ void bg_router_free(bg_router *r);
  * (diagram_route_bonds.c), orthogonally round the boxes (their corners into L->lay); returns how
  * many. Call bg_geom_bonds again when it did any. */
 int bg_route_blocked_bonds(bg_diagram_layout *L);
+/* The bonds L's reference layout R routed again (R->rerouted) drawn as R
+ * routed them, their corners carried over into L's sizes, and the one-ports
+ * R mirrored through their hubs mirrored here too (diagram_restyle.c): the
+ * same routes, corner for corner, in every style, where routing them again
+ * in the style's own sizes took other corners and sides (issue 31). Call
+ * bg_geom_bonds again after. */
+void bg_restyle_routes(bg_diagram_layout *L, const bg_diagram_layout *R);
 /* One-ports hanging off a junction at another slant moved to 45 degrees
  * (diagram_diagonals.c, after the bond router). bg_diagonal_choose: those
  * whose box and bond would stay clear of every other box and line, per

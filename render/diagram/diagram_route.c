@@ -35,10 +35,10 @@
 
 /* ---------------------------------------------------------------- the router */
 
-bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int signals) {
+bg_router *bg_router_new(const bg_diagram_layout *L, int nbond, const unsigned char *skip, int ends_clear) {
   bg_router *r = bg_xcalloc(1, sizeof *r);
-  r->L = L, r->group = r->branch_k = r->bond = r->own = -1, r->signals = signals;
-  bg_near_build(L, nbond, skip, signals, &r->ix);
+  r->L = L, r->group = r->branch_k = r->bond = r->own = -1, r->ends_clear = ends_clear;
+  bg_near_build(L, nbond, skip, ends_clear, &r->ix);
   r->fx0 = r->fx1 = r->ix.x0, r->fy0 = r->fy1 = r->ix.y0;
   for (int k = 0; k < L->nnode; k++)
     if (bg_route_node_drawn(L, k)) {

@@ -103,7 +103,7 @@ static double arrow_zone(const bg_router *r, double bond_len) {
  * COST_AT_END among the bond's half arrow or stroke (read as a line
  * through the arrow), else nothing. */
 static double at_end_cost(const bg_router *r, int leg, double at) {
-  if (!r->signals) return 0;
+  if (!r->ends_clear) return 0;
   double along = r->ix.lpos[leg] + at, len = r->ix.llen[leg];
   return fmin(along, len - along) < arrow_zone(r, len) ? COST_AT_END : 0;
 }

@@ -119,7 +119,7 @@ struct bg_router {
   int from_node, to_node; /* their boxes are no obstacle to their own stubs (-1: none);
                              their bonds are the route's own (COST_CROSS_OWN) */
   int bond;               /* the bond being routed (bg_route_blocked_bonds), -1: a signal */
-  int signals;            /* a router of signals (bg_router_new): bonds' ends kept clear */
+  int ends_clear;         /* bonds' ends kept clear (bg_router_new): signals, bonds routed again */
   const double *ring;     /* per bond: the reach of the layer lines beside it (bg_router_rings) */
   double ring_hug;        /* the largest bg_route_leg_hug over the rings */
   int end_zone;           /* a bond route pays COST_END within END_NEAR of another bond's end
