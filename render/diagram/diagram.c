@@ -493,7 +493,6 @@ static void draw_all(bg_diagram *d) {
   if (d->keep_page) keep_page(d);
 }
 
-/* Nodes measured and laid out, where the bonds run. */
 /* What bg_route_blocked_bonds did to a reference layout d, kept for the
  * styles that follow it (bg_restyle_routes): the bonds it drew otherwise
  * than before (bends: d's corners before it; they are freed here) and the
@@ -536,6 +535,7 @@ static int follows_reference(const bg_diagram_layout *d) {
   return R && R->rerouted && R->ref_sized && d->ref_sized && R->nnode == d->nnode;
 }
 
+/* Nodes measured and laid out, where the bonds run. */
 static int lay_out_bonds(bg_diagram_layout *d, bg_diags *dg) {
   if (alloc_nodes(d, dg) != 0) return -1;
   measure_nodes(d);

@@ -2067,9 +2067,9 @@ static void pull_in(grid *g, double xgap, double ygap, const double *cx, const d
   bg_diagram_layout *d = g->d;
   /* in a style that follows the reference style's layout, those it pulled
    * in and no other, each where its box keeps a quarter of a gap off the
-   * others: with half a gap, slides' wider labels kept a capacitor three
-   * rows below its hub that the default style drew beside its neighbour
-   * (issue 31: one arrangement in every style) */
+   * others: with half a gap, slides' wider labels kept a capacitor 124 pt
+   * below its hub that the default style drew 38 pt below it, beside its
+   * neighbour (issue 31: one arrangement in every style) */
   const unsigned char *follow = d->ref && d->ref->pulled && d->ref->nnode == d->nnode ? d->ref->pulled : NULL;
   int nr = 0, *rings = bg_xmalloc(((size_t)g->n + 1) * sizeof(int));
   for (int v = 0; v < g->n; v++)
@@ -2087,7 +2087,7 @@ static void pull_in(grid *g, double xgap, double ygap, const double *cx, const d
      * the cell, and whether the box fits there depends on the style */
     int clear = fabs(x - d->nx[w]) + fabs(y - d->ny[w]) > 0.5 && fabs(x - d->nx[v]) <= fabs(d->nx[w] - d->nx[v]) + 0.01 &&
                 fabs(y - d->ny[v]) <= fabs(d->ny[w] - d->ny[v]) + 0.01;
-    double room = fmin(xgap, ygap) / (follow ? 4 : 2); /* to any other box: half a gap */
+    double room = fmin(xgap, ygap) / (follow ? 4 : 2); /* to any other box: half a gap (a quarter) */
     /* the boxes it could meet: the rings (a ring's one-ports inside its
      * box), and the nodes of the cells near the place (every node was
      * tried: quadratic in a large forest with rings) */

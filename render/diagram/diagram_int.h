@@ -75,7 +75,7 @@ typedef struct bg_diagram_layout {
    * model where the grid pass or rows laid both out in the reference boxes */
   const struct bg_diagram_layout *ref; /* that layout while this one is laid out, or NULL */
   int ref_sized;             /* laid out in the reference style's boxes (the grid pass, rows) */
-  int keeps_routes;          /* a reference: keeps what the passes below decided */
+  int keeps_routes;          /* a reference: keeps what the bond router did (rerouted, mirrored) */
   unsigned char *pulled;     /* per node: moved back towards its hub (the grid pass's pull_in) */
   unsigned char *rerouted;   /* per bond: drawn otherwise by bg_route_blocked_bonds (a reference) */
   unsigned char *mirrored;   /* per node: a one-port mirrored through its hub there (a reference) */
