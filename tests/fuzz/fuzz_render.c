@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzz target: layout and drawing (Graphviz, cairo, pango): the diagram as
  * SVG and DOT with every layer, and redrawn with the first path highlighted
- * (fuzz_common.h). */
+ * (fuzz_common.h), in the default, print or slides style by the input's size. */
 #include "diagram/render.h"
 #include "fuzz_common.h"
 
@@ -12,6 +12,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     bg_render_opts o = {0};
     o.show = size % 2 ? BG_SHOW_ALL : BG_SHOW_DEFAULT | BG_SHOW_VARIABLES;
     o.style_dir = BG_SOURCE_DIR "/styles";
+    /* every built-in style: print and slides lay the reference style's
+     * layout out first and follow its routes (diagram_restyle.c) */
+    static const char *const styles[3] = {NULL, "print", "slides"};
+    o.style = styles[size / 2 % 3];
     bg_diags dg;
     bg_diags_init(&dg, "fuzz", NULL, 0);
     bg_diagram *d = bg_diagram_build(f.model, &f.analysis, &o, &dg);
